@@ -1,0 +1,259 @@
+"""Validity ranges as data, and the one error raised for input outside them.
+
+Every public function of :mod:`linecontact` checks its inputs in physical terms before
+any formula sees them. A value outside its valid range raises :class:`OutOfRangeError`
+(a :class:`ValueError`) whose message names the parameter, the offending value and the
+valid range, for example::
+
+    radius = -0.005 m is outside the valid range (0, inf) m
+
+Nothing is clamped and no NaN is returned silently.
+
+The ranges themselves are :class:`Interval` objects, so that the same data renders the
+Notes section of a docstring and the error message.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = [
+    "OutOfRangeError",
+    "Interval",
+    "check_positive",
+    "check_interval",
+    "POSITIVE_LENGTH",
+    "POSITIVE_FORCE",
+    "POSITIVE_DEPTH",
+    "POSITIVE_MODULUS",
+    "POISSON_RATIO",
+]
+
+
+class OutOfRangeError(ValueError):
+    """An input lies outside the range in which the formula or table is valid.
+
+    Parameters
+    ----------
+    parameter : str
+        Name of the offending parameter, as in the function signature.
+    value : float or str
+        The offending value (the first offending element of an array).
+    valid : str
+        The valid range, e.g. ``"(0, inf) m"`` or ``"[0.1, 6]"``.
+    unit : str, optional
+        Unit of `value`, printed after it.
+    hint : str, optional
+        What to do instead; appended to the message.
+
+    Examples
+    --------
+    >>> err = OutOfRangeError("radius", -0.005, "(0, inf) m", unit="m")
+    >>> str(err)
+    'radius = -0.005 m is outside the valid range (0, inf) m'
+    >>> isinstance(err, ValueError), err.parameter, err.value, err.valid
+    (True, 'radius', -0.005, '(0, inf) m')
+    """
+
+    def __init__(self, parameter, value, valid, *, unit="", hint="", where=""):
+        self.parameter = parameter
+        self.value = value
+        self.valid = valid
+        self.unit = unit
+        self.hint = hint
+        if isinstance(value, (float, int, np.floating, np.integer)):
+            shown = f"{float(value):.6g}"
+        else:
+            shown = repr(value) if isinstance(value, str) else str(value)
+        msg = f"{parameter} = {shown}{' ' + unit if unit else ''}"
+        if where:
+            msg += f" ({where})"
+        msg += f" is outside the valid range {valid}"
+        if hint:
+            msg += f"; {hint}"
+        super().__init__(msg)
+
+    def __reduce__(self):  # keep picklable despite the keyword-only arguments
+        return (_rebuild, (self.parameter, self.value, self.valid, self.unit, self.hint))
+
+
+def _rebuild(parameter, value, valid, unit, hint):
+    return OutOfRangeError(parameter, value, valid, unit=unit, hint=hint)
+
+
+def _fmt(x):
+    x = float(x)
+    if np.isinf(x):
+        return "inf" if x > 0 else "-inf"
+    return f"{x:.6g}"
+
+
+@dataclass(frozen=True)
+class Interval:
+    """A validity range ``low .. high`` with open or closed ends and a unit.
+
+    Parameters
+    ----------
+    name : str
+        The parameter the range applies to (used in messages).
+    low, high : float
+        Ends of the range; ``-inf``/``inf`` for unbounded.
+    low_open, high_open : bool
+        Whether an end is excluded. An infinite end is excluded unless the
+        ``*_open`` flag says otherwise explicitly (a rigid body may have E = inf).
+    unit : str
+        Unit of the quantity, e.g. ``"m"``, ``"Pa"``; empty for dimensionless.
+
+    Examples
+    --------
+    >>> L_over_R = Interval("L/R", 0.1, 6)
+    >>> str(L_over_R)
+    '[0.1, 6]'
+    >>> L_over_R.describe()
+    '0.1 <= L/R <= 6'
+    >>> L_over_R.check([0.5, 2.0])
+    array([0.5, 2. ])
+    >>> L_over_R.check(7.0)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: L/R = 7 is outside the valid range [0.1, 6]
+    """
+
+    name: str
+    low: float
+    high: float
+    low_open: bool = False
+    high_open: bool = False
+    unit: str = ""
+
+    def __str__(self):
+        left = "(" if self.low_open else "["
+        right = ")" if self.high_open else "]"
+        s = f"{left}{_fmt(self.low)}, {_fmt(self.high)}{right}"
+        return f"{s} {self.unit}" if self.unit else s
+
+    def describe(self):
+        """The range as an inequality, for docstrings: ``'0 < radius < inf m'``."""
+        lo = "<" if self.low_open else "<="
+        hi = "<" if self.high_open else "<="
+        s = f"{_fmt(self.low)} {lo} {self.name} {hi} {_fmt(self.high)}"
+        return f"{s} {self.unit}" if self.unit else s
+
+    def contains(self, value):
+        """Elementwise membership (NaN is never inside)."""
+        v = np.asarray(value, dtype=float)
+        above = v > self.low if self.low_open else v >= self.low
+        below = v < self.high if self.high_open else v <= self.high
+        return above & below
+
+    def check(self, value, *, name=None, hint=""):
+        """Return `value` as a float array, or raise :class:`OutOfRangeError`.
+
+        `name` overrides the interval's parameter name in the message.
+        """
+        return check_interval(
+            name or self.name, value, self.low, self.high,
+            low_open=self.low_open, high_open=self.high_open, unit=self.unit, hint=hint,
+        )
+
+
+def _as_float_array(name, value):
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise OutOfRangeError(name, str(value), "real numbers",
+                              hint="it is not a number") from exc
+
+
+def check_interval(name, value, low, high, *, low_open=False, high_open=False, unit="",
+                   hint=""):
+    """Check that every element of `value` lies in the interval low..high.
+
+    `low` and `high` may be arrays that broadcast against `value` (a bound that depends
+    on other inputs, such as the depth bound beta L^2/R). NaN is always outside.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : array_like
+        Values to check.
+    low, high : float or array_like
+        Ends of the range.
+    low_open, high_open : bool, optional
+        Exclude the end points (closed by default).
+    unit : str, optional
+        Unit printed after the value and the range.
+    hint : str, optional
+        Appended to the error message.
+
+    Returns
+    -------
+    ndarray of float
+        `value` converted to a float array (0-d for a scalar).
+
+    Raises
+    ------
+    OutOfRangeError
+        Naming the first offending element, its value and the range.
+
+    Examples
+    --------
+    >>> check_interval("poisson", 0.3, 0.0, 0.5, high_open=True)
+    array(0.3)
+    >>> check_interval("poisson", [0.3, 0.5], 0.0, 0.5, high_open=True)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: poisson = 0.5 (element [1] of shape (2,)) is outside the valid range [0, 0.5)
+    """
+    v = _as_float_array(name, value)
+    lo = np.asarray(low, dtype=float)
+    hi = np.asarray(high, dtype=float)
+    above = v > lo if low_open else v >= lo
+    below = v < hi if high_open else v <= hi
+    ok = above & below
+    if np.all(ok):
+        return v
+    shape = ok.shape
+    idx = tuple(int(i) for i in np.argwhere(~ok)[0]) if shape else ()
+    bv = np.broadcast_to(v, shape)[idx]
+    blo = np.broadcast_to(lo, shape)[idx]
+    bhi = np.broadcast_to(hi, shape)[idx]
+    left = "(" if low_open else "["
+    right = ")" if high_open else "]"
+    valid = f"{left}{_fmt(blo)}, {_fmt(bhi)}{right}" + (f" {unit}" if unit else "")
+    where = f"element {list(idx)} of shape {shape}" if shape else ""
+    raise OutOfRangeError(name, float(bv), valid, unit=unit, hint=hint, where=where)
+
+
+def check_positive(name, value, unit="", *, hint=""):
+    """Check that every element of `value` is finite and > 0; return a float array.
+
+    Examples
+    --------
+    >>> check_positive("radius", 0.005, "m")
+    array(0.005)
+    >>> check_positive("radius", -0.005, "m")
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: radius = -0.005 m is outside the valid range (0, inf) m
+    """
+    return check_interval(name, value, 0.0, np.inf, low_open=True, high_open=True,
+                          unit=unit, hint=hint)
+
+
+def out(x):
+    """Return a Python float for a 0-d result, the array otherwise (internal helper)."""
+    x = np.asarray(x)
+    if x.ndim == 0:
+        return float(x)
+    return x
+
+
+#: Ranges shared by many functions (rendered in their docstrings).
+POSITIVE_LENGTH = Interval("length", 0.0, np.inf, True, True, "m")
+POSITIVE_FORCE = Interval("force", 0.0, np.inf, True, True, "N")
+POSITIVE_DEPTH = Interval("depth", 0.0, np.inf, True, True, "m")
+POSITIVE_MODULUS = Interval("modulus", 0.0, np.inf, True, True, "Pa")
+POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, True, "")

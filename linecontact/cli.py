@@ -1,0 +1,629 @@
+"""Command line: ``linecontact calc``, a spreadsheet-like calculator for one case, a
+sweep, or a CSV file of cases.
+
+Usage (``linecontact calc --help`` has the full list)::
+
+    linecontact calc --radius 5mm --length 10mm --modulus 210GPa --poisson 0.3 --load 1kN
+    linecontact calc --radius 5mm --length 10mm --estar 115GPa --depth 2um
+    linecontact calc ... --load 0.1kN:10kN:20          # sweep, geometric spacing
+    linecontact calc ... --load 100N:1kN:10 --linear   # sweep, linear spacing
+    linecontact calc cases.csv -o results.csv          # batch, one case per row
+    linecontact calc ... --json                        # machine-readable, SI
+
+Inputs
+    Values may carry a unit ("5mm", "0.2 in", "210 GPa", "1kN"), parsed by pint and
+    checked for their dimension; bare numbers are SI (m, N, Pa). The second body
+    (``--modulus2``, ``--poisson2``) is rigid when omitted; ``--estar`` gives the
+    effective modulus of Eq. 3 directly (E*, not E' = 2E*).
+
+Output
+    A table with one row per model (per load or depth of a sweep), in engineering units
+    (F in kN, lengths in um, stiffness in N/um, moduli in GPa), or SI with ``--si``.
+    ``--json`` is always SI and carries the package version and each table-backed
+    model's provenance.
+
+Batch
+    ``linecontact calc FILE.csv`` reads one case per row (columns radius, length,
+    modulus, poisson, modulus2, poisson2, estar, load, depth; cells may carry units;
+    other columns are passed through; options given on the command line fill empty or
+    missing columns). It writes the same rows with result columns appended, for the
+    default model (``linecontact.models.DEFAULT_MODEL``) unless ``--model`` names
+    others. A row that cannot be computed keeps its place and says why in ``error``.
+
+Exit status: 0 on success, 2 on bad input (one line on stderr naming the parameter,
+its value and the valid range; in a batch, when any row failed).
+
+Nothing here runs at import; heavy modules (numpy, scipy, pandas, pint) are imported
+only by the code paths that need them, so a one-case call starts quickly.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+
+__all__ = ["main"]
+
+PROG = "linecontact"
+
+#: Case parameters: option/column name -> (kind, help).
+CASE_PARAMETERS = {
+    "radius": ("length", "cylinder radius R"),
+    "length": ("length", "cylinder length L"),
+    "modulus": ("pressure", "Young's modulus E1 of the half-space"),
+    "poisson": ("dimensionless", "Poisson's ratio nu1 of the half-space"),
+    "modulus2": ("pressure", "Young's modulus E2 of the cylinder (default: rigid)"),
+    "poisson2": ("dimensionless", "Poisson's ratio nu2 of the cylinder"),
+    "estar": ("pressure", "effective modulus E* of Eq. 3 (instead of the moduli)"),
+    "load": ("force", "normal force F"),
+    "depth": ("length", "indentation depth d (rigid-body approach)"),
+}
+
+
+def _poisson_bounds():
+    """(inside, text) for Poisson's ratio, from the library's own range."""
+    from .validity import POISSON_RATIO
+
+    return (lambda v: bool(POISSON_RATIO.contains(v)), POISSON_RATIO.describe())
+
+#: Output units: name -> (SI unit, engineering unit, factor SI -> engineering).
+UNITS = {
+    "force": ("N", "kN", 1e-3),
+    "depth": ("m", "um", 1e6),
+    "stiffness": ("N/m", "N/um", 1e-6),
+    "half_width": ("m", "um", 1e6),
+    "contact_radius": ("m", "um", 1e6),
+    "estar": ("Pa", "GPa", 1e-9),
+    "radius": ("m", "mm", 1e3),
+    "length": ("m", "mm", 1e3),
+}
+
+RESULT_FIELDS = ("force", "depth", "stiffness", "half_width", "contact_radius")
+
+_HEADINGS = {
+    "force": "F",
+    "depth": "d",
+    "stiffness": "k",
+    "half_width": "b (Hertz)",
+    "contact_radius": "a (MDR)",
+}
+
+
+class _Parser(argparse.ArgumentParser):
+    """ArgumentParser whose usage errors are one line on stderr and exit status 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+class Case(dict):
+    """One parsed case, SI floats: radius, length, estar, and the inputs for display."""
+
+
+# ---------------------------------------------------------------------------------------
+# argument parsing
+
+
+def _build_parser():
+    parser = _Parser(
+        prog=PROG,
+        description="Stiffness and deflection of a finite rigid cylinder pressed on its "
+        "side into an elastic half-space.",
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    calc = sub.add_parser(
+        "calc",
+        help="depth, stiffness and contact size for one case, a sweep or a CSV of cases",
+        description="Depth (or force), stiffness, Hertz half-width (Eq. 1) and MDR contact "
+        "radius of a cylinder of radius R and length L on an elastic half-space, one row "
+        "per model. Values may carry units ('5mm', '0.2 in', '210 GPa', '1kN'); bare "
+        "numbers are SI.",
+        epilog="Sweeps: --load START:STOP:N (or --depth) gives N values from START to STOP, "
+        "both included, spaced geometrically (equal ratios: right for loads over decades); "
+        "--linear spaces them evenly. Batch: FILE.csv holds one case per row with columns "
+        "named like the options; results are appended as columns for the default model "
+        "unless --model names others. Exit status 2 on bad input.",
+    )
+    calc.add_argument("csv", nargs="?", metavar="FILE.csv", help="batch: one case per row")
+    for name, (kind, text) in CASE_PARAMETERS.items():
+        calc.add_argument(f"--{name}", metavar="VALUE", help=f"{text} [{kind}]")
+    calc.add_argument(
+        "--linear", action="store_true", help="linear instead of geometric sweep spacing"
+    )
+    calc.add_argument(
+        "--model",
+        metavar="KEY[,KEY...]",
+        help="only these models ('all' for every standard model); batch default: the "
+        "default model",
+    )
+    calc.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")
+    calc.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
+    calc.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    return parser
+
+
+_VALUE_OPTIONS = {f"--{name}" for name in CASE_PARAMETERS}
+_NEGATIVE = re.compile(r"^-(\d|\.\d)")
+
+
+def _join_negative_values(argv):
+    """Turn ``--radius -5mm`` into ``--radius=-5mm`` so argparse does not take the
+    value for an option (and the range check can report it properly)."""
+    out = []
+    i = 0
+    while i < len(argv):
+        tok = argv[i]
+        if tok in _VALUE_OPTIONS and i + 1 < len(argv) and _NEGATIVE.match(argv[i + 1]):
+            out.append(f"{tok}={argv[i + 1]}")
+            i += 2
+        else:
+            out.append(tok)
+            i += 1
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# cases
+
+
+def _parse_case(raw, *, allow_sweep=True, linear=False, label=lambda name: f"--{name}"):
+    """Check and convert one case given as {name: text or None}.
+
+    Returns a :class:`Case` with SI floats and ``given`` ('load' or 'depth') and
+    ``values`` (list: one value, or a sweep). Raises InputError on the first problem.
+    """
+    from ._units import InputError, parse_quantity, parse_sweep
+
+    def present(name):
+        v = raw.get(name)
+        return v is not None and str(v).strip() != ""
+
+    def get(name, **kw):
+        return parse_quantity(label(name), raw[name], CASE_PARAMETERS[name][0], **kw)
+
+    case = Case()
+    for name in ("radius", "length"):
+        if not present(name):
+            raise InputError(label(name), "", "a length > 0 (e.g. 5mm)", "missing")
+        case[name] = get(name)
+
+    elastic = [n for n in ("modulus", "poisson", "modulus2", "poisson2") if present(n)]
+    if present("estar"):
+        if elastic:
+            raise InputError(
+                label(elastic[0]),
+                raw[elastic[0]],
+                f"either {label('estar')} or the moduli and Poisson's ratios, not both",
+                f"conflicts with {label('estar')}",
+            )
+        case["estar"] = get("estar")
+    else:
+        if not present("modulus"):
+            raise InputError(
+                label("modulus"), "", f"a modulus > 0 (e.g. 210GPa), or {label('estar')}", "missing"
+            )
+        if not present("poisson"):
+            raise InputError(label("poisson"), "", _poisson_bounds()[1], f"missing (needed with {label('modulus')})")
+        case["modulus"] = get("modulus")
+        case["poisson"] = get("poisson", bounds=_poisson_bounds())
+        if present("modulus2") != present("poisson2"):
+            have, need = ("modulus2", "poisson2") if present("modulus2") else ("poisson2", "modulus2")
+            raise InputError(
+                label(need), "", f"{label('modulus2')} and {label('poisson2')} together, "
+                "or neither (rigid cylinder)", f"missing (needed with {label(have)})",
+            )
+        if present("modulus2"):
+            case["modulus2"] = get("modulus2")
+            case["poisson2"] = get("poisson2", bounds=_poisson_bounds())
+        case["estar"] = _effective_modulus(
+            case["modulus"], case["poisson"], case.get("modulus2", math.inf), case.get("poisson2", 0.0)
+        )
+
+    has_load, has_depth = present("load"), present("depth")
+    if has_load == has_depth:
+        which = "both given" if has_load else "missing"
+        raise InputError(
+            f"{label('load')}/{label('depth')}",
+            f"{raw.get('load')}/{raw.get('depth')}" if has_load else "",
+            f"exactly one of {label('load')} (a force) or {label('depth')} (a length)",
+            which,
+        )
+    given = "load" if has_load else "depth"
+    kind = CASE_PARAMETERS[given][0]
+    if allow_sweep:
+        case["values"] = parse_sweep(label(given), raw[given], kind, linear=linear)
+    else:
+        if ":" in str(raw[given]):
+            raise InputError(label(given), raw[given], "one value per row in a batch", "a sweep")
+        case["values"] = [parse_quantity(label(given), raw[given], kind)]
+    case["given"] = given
+    return case
+
+
+def _effective_modulus(e1, nu1, e2, nu2):
+    """E* of Eq. 3 from linecontact.classical (E2 = inf: rigid cylinder)."""
+    from . import classical
+
+    return float(classical.effective_modulus(e1, nu1, e2, nu2))
+
+
+# ---------------------------------------------------------------------------------------
+# models and evaluation
+
+
+def _select_models(spec, case, default_only=False):
+    """The models for one case: ``spec`` is None (standard set, or the default model
+    when ``default_only``), 'all', or comma-separated keys."""
+    from . import models
+
+    r, l, e = case["radius"], case["length"], case["estar"]
+    if spec is None and default_only:
+        spec = models.DEFAULT_MODEL
+    if spec is None or spec == "all":
+        return list(models.standard_models(r, l, e))
+    from .validity import OutOfRangeError
+
+    chosen = []
+    for key in _model_keys(spec):
+        try:
+            chosen.append(models.get_model(key, r, l, e))
+        except OutOfRangeError as exc:  # refused for this case: a row with a note
+            chosen.append(_Refused(key, exc))
+    return chosen
+
+
+class _Refused:
+    """Stands in for a model that refused the case when it was built."""
+
+    def __init__(self, key, exc):
+        self.key = key
+        self.label = key
+        self.provenance = None
+        self.exc = exc
+
+
+def _model_keys(spec):
+    """Split and check a --model value; raises InputError naming the valid keys."""
+    from . import models
+    from ._units import InputError
+
+    if spec is None or spec == "all":
+        return None
+    keys = [k.strip() for k in spec.split(",") if k.strip()]
+    valid = sorted(models.MODELS)
+    for key in keys:
+        if key not in models.MODELS:
+            raise InputError("--model", key, "all, or one or more of: " + ", ".join(valid), "unknown model")
+    if not keys:
+        raise InputError("--model", spec, "all, or one or more of: " + ", ".join(valid), "empty")
+    return keys
+
+
+def _hertz_half_width(force, case):
+    """Hertz half-width b of Eq. 1 (linecontact.classical)."""
+    from . import classical
+
+    return float(classical.hertz_half_width(force, case["radius"], case["length"], case["estar"]))
+
+
+def _evaluate(model, case, value):
+    """One row: {force, depth, stiffness, half_width, contact_radius, note} in SI.
+
+    A model outside its validity range gives NaNs and its message as ``note``.
+    """
+    from .validity import OutOfRangeError
+
+    row = dict.fromkeys(RESULT_FIELDS, math.nan)
+    row["note"] = ""
+    try:
+        if isinstance(model, _Refused):
+            raise model.exc
+        if case["given"] == "load":
+            row["force"] = value
+            row["depth"] = float(model.depth(value))
+            row["stiffness"] = float(model.stiffness_at_force(value))
+        else:
+            row["depth"] = value
+            row["force"] = float(model.force(value))
+            row["stiffness"] = float(model.stiffness(value))
+        try:
+            row["contact_radius"] = float(model.contact_radius(row["depth"]))
+        except NotImplementedError:
+            pass
+    except OutOfRangeError as exc:
+        row["note"] = str(exc)
+    if row["force"] > 0:
+        row["half_width"] = _hertz_half_width(row["force"], case)
+    return row
+
+
+def _compute(case, models_):
+    """[(model, [row per value])] for one case."""
+    return [(m, [_evaluate(m, case, v) for v in case["values"]]) for m in models_]
+
+
+# ---------------------------------------------------------------------------------------
+# output
+
+
+def _fmt(value, digits=4):
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "-"
+    return f"{value:.{digits}g}"
+
+
+def _unit(field, si):
+    s, eng, _ = UNITS[field]
+    return s if si else eng
+
+
+def _scale(field, value, si):
+    return value if si else value * UNITS[field][2]
+
+
+def _case_line(case, si):
+    r, l = case["radius"], case["length"]
+    parts = [
+        f"R = {_fmt(_scale('radius', r, si))} {_unit('radius', si)}",
+        f"L = {_fmt(_scale('length', l, si))} {_unit('length', si)}",
+        f"L/R = {_fmt(l / r)}",
+        f"E* = {_fmt(_scale('estar', case['estar'], si))} {_unit('estar', si)}",
+    ]
+    if "modulus" in case:
+        body = f"(E1 = {_fmt(_scale('estar', case['modulus'], si))} {_unit('estar', si)}, nu1 = {_fmt(case['poisson'])}"
+        if "modulus2" in case:
+            body += (
+                f"; E2 = {_fmt(_scale('estar', case['modulus2'], si))} {_unit('estar', si)}, "
+                f"nu2 = {_fmt(case['poisson2'])})"
+            )
+        else:
+            body += "; rigid cylinder)"
+        parts[-1] += " " + body
+    return ", ".join(parts)
+
+
+def _render_table(case, results, si):
+    """Plain-text table: one row per model and value."""
+    first = "force" if case["given"] == "load" else "depth"
+    second = "depth" if first == "force" else "force"
+    fields = [first, second, "stiffness", "half_width", "contact_radius"]
+    header = ["model"] + [f"{_HEADINGS[f]} [{_unit(f, si)}]" for f in fields] + ["note"]
+    body = []
+    for model, rows in results:
+        for row in rows:
+            body.append(
+                [model.key]
+                + [_fmt(_scale(f, row[f], si)) for f in fields]
+                + [row["note"]]
+            )
+    widths = [max(len(r[i]) for r in [header] + body) for i in range(len(header) - 1)]
+    lines = [_case_line(case, si), ""]
+    for r in [header] + body:
+        cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
+        lines.append("  ".join(cells + [r[-1]]).rstrip())
+    labels = list(dict.fromkeys((m.key, m.label) for m, _ in results))
+    lines.append("")
+    lines.extend(f"  {key}: {label}" for key, label in labels)
+    return "\n".join(lines) + "\n"
+
+
+def _nan_to_none(v):
+    return None if isinstance(v, float) and not math.isfinite(v) else v
+
+
+def _model_json(model):
+    return {"key": model.key, "label": model.label, "provenance": _jsonable(getattr(model, "provenance", None))}
+
+
+def _jsonable(obj):
+    """Provenance dicts may hold numpy scalars or paths: make them JSON-safe."""
+    if obj is None or isinstance(obj, (bool, int, str)):
+        return obj
+    if isinstance(obj, float):
+        return _nan_to_none(obj)
+    if isinstance(obj, dict):
+        return {str(k): _jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_jsonable(v) for v in obj]
+    try:
+        return _jsonable(obj.item())  # numpy scalar
+    except AttributeError:
+        return str(obj)
+
+
+def _version():
+    try:
+        from . import __version__
+    except ImportError:
+        from importlib.metadata import version
+
+        return version("linecontact")
+    return __version__
+
+
+def _units_json():
+    return {f: UNITS[f][0] for f in RESULT_FIELDS + ("estar", "radius", "length")}
+
+
+def _render_json(case, results, argv):
+    import json
+
+    inputs = {k: case[k] for k in ("radius", "length", "estar", "modulus", "poisson", "modulus2", "poisson2") if k in case}
+    inputs[case["given"]] = case["values"] if len(case["values"]) > 1 else case["values"][0]
+    doc = {
+        "linecontact_version": _version(),
+        "command": [PROG] + list(argv),
+        "units": _units_json(),
+        "inputs": inputs,
+        "models": [
+            dict(_model_json(m), rows=[{k: _nan_to_none(v) for k, v in r.items()} for r in rows])
+            for m, rows in results
+        ],
+    }
+    return json.dumps(doc, indent=2) + "\n"
+
+
+def _write(text, path):
+    if path is None:
+        sys.stdout.write(text)
+    else:
+        with open(path, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+
+
+# ---------------------------------------------------------------------------------------
+# commands
+
+
+def _calc_one(args, argv):
+    raw = {name: getattr(args, name) for name in CASE_PARAMETERS}
+    case = _parse_case(raw, linear=args.linear)
+    _model_keys(args.model)  # check the keys before building anything
+    results = _compute(case, _select_models(args.model, case))
+    if args.json:
+        _write(_render_json(case, results, argv), args.output)
+    else:
+        _write(_render_table(case, results, args.si), args.output)
+    computed = [r for _, rows in results for r in rows if not r["note"]]
+    if not computed:
+        notes = [r["note"] for _, rows in results for r in rows]
+        _error(notes[0] if notes else "no model selected")
+        return 2
+    return 0
+
+
+def _batch_columns(si):
+    """Result column names: e.g. depth_um, stiffness_N_per_um; suffixed _KEY when
+    several models are reported."""
+    names = {}
+    for f in RESULT_FIELDS:
+        unit = _unit(f, si).replace("/", "_per_")
+        names[f] = f"{f}_{unit}"
+    return names
+
+
+def _calc_batch(args, argv):
+    import pandas as pd
+
+    from ._units import InputError
+
+    try:
+        table = pd.read_csv(args.csv, dtype=str, keep_default_na=False, skipinitialspace=True)
+    except FileNotFoundError:
+        hint = "" if args.csv.lower().endswith(".csv") else (
+            " (a value with a space must be quoted, e.g. --radius '5 mm')"
+        )
+        _error(f"{args.csv!r}: no such file{hint}")
+        return 2
+    except Exception as exc:  # pandas parser errors, empty file, encoding
+        _error(f"{args.csv!r}: cannot read as CSV ({str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__})")
+        return 2
+    table.columns = [str(c).strip() for c in table.columns]
+    lower = {c.lower(): c for c in table.columns}
+    known = [name for name in CASE_PARAMETERS if name in lower]
+    options = {name: getattr(args, name) for name in CASE_PARAMETERS}
+    if not known and not any(v is not None for v in options.values()):
+        _error(
+            f"{args.csv!r}: no case columns; expected some of: " + ", ".join(CASE_PARAMETERS)
+        )
+        return 2
+    keys = _model_keys(args.model)
+    if keys is None and args.model is None:
+        from . import models
+
+        keys = [models.DEFAULT_MODEL]
+    multi = keys is None or len(keys) > 1
+
+    si = args.si or args.json  # JSON is always SI
+    names = _batch_columns(si)
+    out_rows = []
+    n_failed = 0
+    models_seen = {}
+    for i, cells in enumerate(table.to_dict("records")):
+        raw = dict(options)
+        for name in known:
+            cell = cells[lower[name]]
+            if str(cell).strip() != "":
+                raw[name] = cell
+        out = {}
+        try:
+            case = _parse_case(raw, allow_sweep=False, label=lambda n: n)
+            results = _compute(case, _select_models(",".join(keys) if keys else "all", case))
+        except InputError as exc:
+            n_failed += 1
+            out["error"] = str(exc)
+            out_rows.append(out)
+            continue
+        out["estar_" + _unit("estar", si)] = _scale("estar", case["estar"], si)
+        for model, rows in results:
+            models_seen[model.key] = model
+            row = rows[0]
+            sfx = f"_{model.key}" if multi else ""
+            if not multi:
+                out["model"] = model.key
+            for f in RESULT_FIELDS:
+                out[names[f] + sfx] = _scale(f, row[f], si)
+            out["note" + sfx] = row["note"]
+        out["error"] = ""
+        out_rows.append(out)
+
+    results_df = pd.DataFrame(out_rows, index=table.index)
+    # results of an earlier run on the same file are replaced, not duplicated
+    table = table.drop(columns=[c for c in results_df.columns if c in table.columns])
+    # fixed column order: estar, then per model, then error
+    order = [c for c in results_df.columns if c != "error"] + ["error"]
+    merged = pd.concat([table, results_df[order]], axis=1)
+
+    if args.json:
+        import json
+
+        doc = {
+            "linecontact_version": _version(),
+            "command": [PROG] + list(argv),
+            "units": _units_json(),
+            "models": [_model_json(m) for m in models_seen.values()],
+            "rows": [
+                {k: _nan_to_none(v) for k, v in r.items()}
+                for r in merged.astype(object).where(merged.notna(), None).to_dict("records")
+            ],
+        }
+        _write(json.dumps(doc, indent=2) + "\n", args.output)
+    else:
+        text = merged.to_csv(index=False, float_format="%.6g", lineterminator="\n")
+        _write(text, args.output)
+    if n_failed:
+        _error(f"{n_failed} of {len(table)} rows failed; see the 'error' column")
+        return 2
+    return 0
+
+
+def _error(message):
+    print(f"{PROG} calc: error: {message}", file=sys.stderr)
+
+
+def main(argv=None):
+    """Entry point of the ``linecontact`` console script; returns the exit status."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = _build_parser()
+    try:
+        args = parser.parse_args(_join_negative_values(argv))
+    except SystemExit as exc:  # --help (0) or a usage error (2), already printed
+        return exc.code if isinstance(exc.code, int) else 2
+    if args.command is None:
+        parser.print_help(sys.stderr)
+        return 2
+    from ._units import InputError
+    from .validity import OutOfRangeError
+
+    try:
+        if args.csv is not None:
+            return _calc_batch(args, argv)
+        return _calc_one(args, argv)
+    except (InputError, OutOfRangeError) as exc:
+        _error(str(exc))
+        return 2
+    except OSError as exc:  # e.g. -o into a missing directory
+        _error(f"{exc.filename!r}: {exc.strerror}")
+        return 2

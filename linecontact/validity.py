@@ -23,6 +23,7 @@ __all__ = [
     "Interval",
     "check_positive",
     "check_interval",
+    "document",
     "POSITIVE_LENGTH",
     "POSITIVE_FORCE",
     "POSITIVE_DEPTH",
@@ -241,6 +242,31 @@ def check_positive(name, value, unit="", *, hint=""):
     """
     return check_interval(name, value, 0.0, np.inf, low_open=True, high_open=True,
                           unit=unit, hint=hint)
+
+
+def document(**ranges):
+    """Decorator: render validity ranges into a docstring.
+
+    Each ``%(key)s`` in the docstring is replaced by ``ranges[key].describe()`` (an
+    :class:`Interval`) or by ``str(ranges[key])`` for anything else, so the range printed
+    in the Notes is the one the code enforces.
+
+    Examples
+    --------
+    >>> @document(R=Interval("radius", 0, float("inf"), True, True, "m"))
+    ... def f(radius):
+    ...     "Valid for %(R)s."
+    >>> f.__doc__
+    'Valid for 0 < radius < inf m.'
+    """
+    def deco(func):
+        doc = func.__doc__ or ""
+        for key, rng in ranges.items():
+            text = rng.describe() if isinstance(rng, Interval) else str(rng)
+            doc = doc.replace(f"%({key})s", text)
+        func.__doc__ = doc
+        return func
+    return deco
 
 
 def out(x):

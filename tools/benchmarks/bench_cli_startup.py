@@ -1,0 +1,95 @@
+"""Start-up cost of a one-case `linecontact calc`, as a ratio to `python -c "import numpy"`.
+
+The command an engineer types for one case should cost about what any numpy script
+costs, not what pandas or the whole of scipy cost. This script runs, interleaved,
+N times each:
+
+    numpy      python -c "import numpy"                          (the yardstick)
+    si         linecontact calc --radius 0.005 --length 0.01 --modulus 2.1e11 --poisson 0.3 --load 1000
+    units      linecontact calc --radius 5mm --length 10mm --modulus 210GPa --poisson 0.3 --load 1kN
+
+and prints the median wall time of each and its ratio to the yardstick. It uses the
+console script installed next to this Python (``pip install .`` first). A ratio is
+portable where absolute times are not (disk cache, CPU); it is still machine-dependent,
+so record the machine with it in tools/benchmarks/README.md.
+
+Usage::
+
+    python tools/benchmarks/bench_cli_startup.py [-n 20] [--importtime]
+
+``--importtime`` also prints the ten slowest imports of the `units` command
+(``python -X importtime``), to see what a regression pulled in. Runs in about
+N x 2 s.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+EXE = Path(sys.executable).parent / "linecontact"
+
+COMMANDS = {
+    "numpy": [sys.executable, "-c", "import numpy"],
+    "si": [str(EXE), "calc", "--radius", "0.005", "--length", "0.01", "--modulus", "2.1e11",
+           "--poisson", "0.3", "--load", "1000"],
+    "units": [str(EXE), "calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
+              "--poisson", "0.3", "--load", "1kN"],
+}
+
+
+def _time(cmd):
+    t0 = time.perf_counter()
+    r = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    dt = time.perf_counter() - t0
+    if r.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} failed:\n{r.stderr}")
+    return dt
+
+
+def _slowest_imports(cmd, count=10):
+    script = cmd[0]
+    r = subprocess.run([sys.executable, "-X", "importtime", script, *cmd[1:]],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    rows = []
+    for line in r.stderr.splitlines():
+        if line.startswith("import time:") and "|" in line:
+            _, cumulative, name = line.split("|")
+            if cumulative.strip().isdigit() and not name.startswith("  "):  # top level
+                rows.append((int(cumulative), name.strip()))
+    return sorted(rows, reverse=True)[:count]
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("-n", type=int, default=20, help="runs per command (default 20)")
+    parser.add_argument("--importtime", action="store_true", help="show the slowest imports")
+    args = parser.parse_args(argv)
+    if not EXE.exists():
+        sys.exit(f"{EXE} not found: install linecontact in this environment first")
+
+    for cmd in COMMANDS.values():  # warm the disk cache (and pint's registry cache)
+        _time(cmd)
+    times = {name: [] for name in COMMANDS}
+    for _ in range(args.n):
+        for name, cmd in COMMANDS.items():
+            times[name].append(_time(cmd))
+
+    base = statistics.median(times["numpy"])
+    print(f"python {sys.version.split()[0]}, {args.n} runs each, median wall time")
+    for name, ts in times.items():
+        med = statistics.median(ts)
+        print(f"  {name:6s} {med * 1e3:7.1f} ms   ratio to import numpy: {med / base:5.2f}")
+    if args.importtime:
+        print("slowest top-level imports of the 'units' command (cumulative, ms):")
+        for us, name in _slowest_imports(COMMANDS["units"]):
+            print(f"  {us / 1e3:7.1f}  {name}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

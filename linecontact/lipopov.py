@@ -133,11 +133,22 @@ class CoefficientSet:
     _alpha: object = field(repr=False, default=None)
     _beta: object = field(repr=False, default=None)
 
-    def __call__(self, length_over_radius):
-        q = self.valid.check(
-            length_over_radius, name="L/R",
-            hint=f"coefficient set {self.name!r} ({self.label}) covers {self.valid}; "
-                 f"sets available: {', '.join(available_coefficient_sets())}")
+    def __call__(self, length_over_radius, *, extrapolate=False):
+        """(alpha, beta) at L/R; outside :attr:`valid` raise, unless `extrapolate`.
+
+        ``extrapolate=True`` is an explicit request to use the set outside its range:
+        the constants of ``"eq11"`` are used as they are, a table's end values are held
+        constant beyond its first and last row (no polynomial extrapolation).
+        """
+        if extrapolate:
+            q = check_positive("L/R", length_over_radius)
+            q = np.clip(q, self.valid.low, self.valid.high)
+        else:
+            q = self.valid.check(
+                length_over_radius, name="L/R",
+                hint=f"coefficient set {self.name!r} ({self.label}) covers {self.valid}; "
+                     f"sets available: {', '.join(available_coefficient_sets())}; "
+                     "extrapolate=True uses it anyway, on your responsibility")
         if self._alpha is None:  # constants
             return (np.full_like(q, ALPHA_EQ11, dtype=float),
                     np.full_like(q, BETA_EQ11, dtype=float))
@@ -226,7 +237,8 @@ def coefficient_set(name="published"):
     return _CACHE[key]
 
 
-def lipopov_coefficients(length_over_radius, coefficients="published"):
+def lipopov_coefficients(length_over_radius, coefficients="published", *,
+                         extrapolate=False):
     """alpha and beta of Eq. 9 for a cylinder of aspect ratio L/R.
 
     Parameters
@@ -236,6 +248,9 @@ def lipopov_coefficients(length_over_radius, coefficients="published"):
     coefficients : str
         Coefficient set: ``"published"`` (Table 1 spline, 0.1 <= L/R <= 6), ``"eq11"``
         (alpha = pi/2, beta = 0.4573, L/R >= 5) or a table name.
+    extrapolate : bool, optional
+        Use the set outside its L/R range (constants as they are, a table's end values
+        held). Off by default: L/R outside the range raises.
 
     Returns
     -------
@@ -249,8 +264,14 @@ def lipopov_coefficients(length_over_radius, coefficients="published"):
     (1.7086, 0.7936)
     >>> lipopov_coefficients(10.0, "eq11")
     (1.5707963267948966, 0.4573)
+    >>> lipopov_coefficients(2.0, "eq11")
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
+    >>> lipopov_coefficients(2.0, "eq11", extrapolate=True)
+    (1.5707963267948966, 0.4573)
     """
-    a, b = coefficient_set(coefficients)(length_over_radius)
+    a, b = coefficient_set(coefficients)(length_over_radius, extrapolate=extrapolate)
     return out(a), out(b)
 
 

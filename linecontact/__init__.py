@@ -1,0 +1,116 @@
+"""linecontact: stiffness and deflection of a finite rigid cylinder on an elastic half-space.
+
+A rigid cylinder (radius R, length L) lies on its side on an elastic half-space of
+effective modulus E* and is pressed in by a depth d. This package gives F(d), d(F) and
+the contact stiffness k = dF/dd from the Li & Popov (2017) MDR model, the classical
+closed forms it is compared with, and (from :mod:`linecontact.universal`) a BEM-tabulated
+universal curve. SI units in and out (m, N, Pa); everything is vectorised over numpy
+arrays.
+
+Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO/TS 16281),
+:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.mdr` (general MDR transforms),
+:mod:`~linecontact.models` (one interface for all models), :mod:`~linecontact.tables`
+(shipped data), :mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
+
+Examples
+--------
+Steel on steel, R = 5 mm, L = 10 mm, 1 kN:
+
+>>> import linecontact as lc
+>>> estar = lc.effective_modulus(210e9, 0.3, 210e9, 0.3)
+>>> d = lc.depth(1e3, 5e-3, 10e-3, estar, model="li-popov")
+>>> f"{d * 1e6:.2f} um"
+'3.05 um'
+>>> f"{lc.stiffness(d, 5e-3, 10e-3, estar, model='puttock-thwaite'):.3e} N/m"
+'3.209e+08 N/m'
+"""
+from __future__ import annotations
+
+try:
+    from importlib.metadata import PackageNotFoundError, version as _version
+
+    __version__ = _version("linecontact")
+except PackageNotFoundError:  # a source checkout that was never installed
+    __version__ = "0+unknown"
+
+from .classical import (effective_modulus, hertz_half_width, iso16281_depth,
+                        johnson_depth, kunz_force, palmgren_depth,
+                        puttock_thwaite_depth, puttock_thwaite_force,
+                        puttock_thwaite_stiffness)
+from .lipopov import (lipopov_coefficients, lipopov_depth, lipopov_force,
+                      lipopov_profile, lipopov_stiffness)
+from .mdr import (mdr_contact_radius, mdr_force, mdr_profile_from_force,
+                  mdr_profile_from_stiffness, mdr_stiffness)
+from .models import (DEFAULT_MODEL, MODELS, ContactModel, get_model, register,
+                     standard_models)
+from .validity import Interval, OutOfRangeError
+
+__all__ = [
+    "__version__",
+    "force",
+    "depth",
+    "stiffness",
+    "effective_modulus",
+    "get_model",
+    "standard_models",
+    "register",
+    "ContactModel",
+    "MODELS",
+    "DEFAULT_MODEL",
+    "OutOfRangeError",
+    "Interval",
+    "hertz_half_width",
+    "puttock_thwaite_depth",
+    "puttock_thwaite_force",
+    "puttock_thwaite_stiffness",
+    "johnson_depth",
+    "kunz_force",
+    "palmgren_depth",
+    "iso16281_depth",
+    "lipopov_coefficients",
+    "lipopov_profile",
+    "lipopov_force",
+    "lipopov_depth",
+    "lipopov_stiffness",
+    "mdr_contact_radius",
+    "mdr_force",
+    "mdr_stiffness",
+    "mdr_profile_from_force",
+    "mdr_profile_from_stiffness",
+]
+
+
+def force(depth, radius, length, estar, model=DEFAULT_MODEL, **options):
+    """Normal force F [N] of a cylinder (R [m], L [m]) at depth d [m] on E* [Pa].
+
+    `model` is a key of :data:`MODELS` (default :data:`DEFAULT_MODEL`); `options` go
+    to the model (e.g. ``coefficients="eq11"``). Vectorised over `depth`.
+
+    Examples
+    --------
+    >>> round(force(3.0548e-6, 5e-3, 10e-3, 115.38e9, model="li-popov"))
+    1000
+    """
+    return get_model(model, radius, length, estar, **options).force(depth)
+
+
+def depth(force, radius, length, estar, model=DEFAULT_MODEL, **options):
+    """Depth d [m] of a cylinder (R [m], L [m]) under force F [N] on E* [Pa].
+
+    Examples
+    --------
+    >>> f"{depth(1e3, 5e-3, 10e-3, 115.38e9, model='palmgren') * 1e6:.2f} um"
+    '3.05 um'
+    """
+    return get_model(model, radius, length, estar, **options).depth(force)
+
+
+def stiffness(depth, radius, length, estar, model=DEFAULT_MODEL, **options):
+    """Contact stiffness k = dF/dd [N/m] at depth d [m] (R [m], L [m], E* [Pa]).
+
+    Examples
+    --------
+    >>> f"{stiffness(3.0548e-6, 5e-3, 10e-3, 115.38e9, model='li-popov'):.3e} N/m"
+    '3.570e+08 N/m'
+    """
+    return get_model(model, radius, length, estar, **options).stiffness(depth)

@@ -1,0 +1,586 @@
+"""One interface for every line-contact model: force, depth, stiffness, MDR profile.
+
+Each model is a :class:`ContactModel` subclass registered under a key in
+:data:`MODELS`; :func:`get_model` builds one by key, :func:`standard_models` builds the
+row set the CLI prints. All methods are vectorised over depth or force and use SI
+units (m, N, Pa, N/m).
+
+A model is built for one cylinder (radius R, length L, effective modulus E*), which is
+checked at construction (positive, finite). Whether the model *applies* to that
+cylinder (L/R inside its coefficient table, E* of steel for Palmgren) is checked on
+every evaluation, and :meth:`ContactModel.check_applicable` checks it up front; both
+raise :class:`~linecontact.validity.OutOfRangeError`. So the full row set can be built
+for any cylinder and each row reports its own range.
+
+Keys
+----
+``"li-popov"``
+    Li & Popov (2017) MDR model; option ``coefficients`` = ``"published"`` (Table 1
+    spline, default), ``"eq11"`` or a table name (``tables/lipopov_NAME.csv``).
+``"puttock-thwaite"``
+    Eq. 2.
+``"johnson"``
+    Eq. 4; option ``c`` (1 default, 0.72, 0.572, or any number).
+``"kunz"``
+    F = 0.175 E* L d; option ``c``.
+``"palmgren"``, ``"iso16281"``
+    Steel-only empirical formulas (per contact).
+``"universal"``
+    The BEM-tabulated universal curve, registered by :mod:`linecontact.universal`
+    (imported lazily when asked for); the default model, :data:`DEFAULT_MODEL`.
+
+Examples
+--------
+>>> m = get_model("li-popov", 5e-3, 10e-3, 115.38e9)
+>>> m.label
+'Li-Popov (Table 1 spline)'
+>>> f"{m.depth(1e3) * 1e6:.2f} um", f"{m.stiffness_at_force(1e3):.3g} N/m"
+('3.05 um', '3.57e+08 N/m')
+"""
+from __future__ import annotations
+
+import abc
+import importlib
+import importlib.util
+import math
+import warnings
+
+import numpy as np
+
+from . import classical as _c
+from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
+                      lipopov_force, lipopov_profile, lipopov_stiffness,
+                      lipopov_stiffness_at_force)
+from .tables import TableError, available_tables
+from .validity import OutOfRangeError, check_positive, out
+
+__all__ = [
+    "ContactModel",
+    "MODELS",
+    "DEFAULT_MODEL",
+    "register",
+    "get_model",
+    "available_models",
+    "standard_models",
+    "LiPopovModel",
+    "PuttockThwaiteModel",
+    "JohnsonModel",
+    "KunzModel",
+    "PalmgrenModel",
+    "ISO16281Model",
+]
+
+#: Registry: key -> model class. Filled by :func:`register`.
+MODELS: dict = {}
+
+#: Model used by the top-level one-liners and the CLI unless told otherwise.
+DEFAULT_MODEL = "universal"
+
+_PLUGINS = ("linecontact.universal",)
+
+
+def register(cls):
+    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`."""
+    if not (isinstance(cls, type) and issubclass(cls, ContactModel)):
+        raise TypeError(f"{cls!r} is not a ContactModel subclass")
+    if not cls.key:
+        raise TypeError(f"{cls.__name__} has no registry key")
+    MODELS[cls.key] = cls
+    return cls
+
+
+def _scalar(name, value, unit):
+    v = check_positive(name, value, unit)
+    if v.ndim:
+        raise OutOfRangeError(name, f"an array of shape {v.shape}",
+                              f"a single number in (0, inf) {unit}",
+                              hint="build one model per cylinder; evaluations are "
+                                   "vectorised over depth and force")
+    return float(v)
+
+
+class ContactModel(abc.ABC):
+    """Base class: a normal-contact law for one rigid cylinder on an elastic half-space.
+
+    Parameters
+    ----------
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Eq. 3 of Li & Popov 2017), 0 < E* < inf [Pa].
+    **options
+        Model-specific (see the subclass).
+
+    Subclasses set :attr:`key` and implement :meth:`force`, :meth:`depth`,
+    :meth:`stiffness`, :attr:`label` and :attr:`provenance`; the rest have
+    defaults in terms of those.
+    """
+
+    #: Registry key.
+    key: str = ""
+
+    def __init__(self, radius, length, estar, **options):
+        if options:
+            raise TypeError(f"model {self.key!r} takes no option(s) "
+                            f"{', '.join(sorted(options))}")
+        self.radius = _scalar("radius", radius, "m")
+        self.length = _scalar("length", length, "m")
+        self.estar = _scalar("estar", estar, "Pa")
+
+    # ---- description ---------------------------------------------------------------
+    @property
+    @abc.abstractmethod
+    def label(self) -> str:
+        """Human-readable name including options, e.g. ``'Johnson (c = 0.72)'``."""
+
+    @property
+    @abc.abstractmethod
+    def provenance(self) -> dict:
+        """Where the model comes from: table metadata or the equation reference."""
+
+    @property
+    def length_over_radius(self):
+        """L/R [-]."""
+        return self.length / self.radius
+
+    def check_applicable(self):
+        """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
+
+    def __repr__(self):
+        return (f"<{type(self).__name__} {self.label}: R = {self.radius:g} m, "
+                f"L = {self.length:g} m, E* = {self.estar:g} Pa>")
+
+    # ---- the contact law -----------------------------------------------------------
+    @abc.abstractmethod
+    def force(self, depth):
+        """Normal force F(d) [N] at depth d [m]."""
+
+    @abc.abstractmethod
+    def depth(self, force):
+        """Depth d(F) [m] under force F [N]."""
+
+    @abc.abstractmethod
+    def stiffness(self, depth):
+        """Contact stiffness k = dF/dd [N/m] at depth d [m]."""
+
+    def stiffness_at_force(self, force):
+        """Contact stiffness k = dF/dd [N/m] at force F [N]."""
+        return self.stiffness(self.depth(force))
+
+    def contact_radius(self, depth):
+        """MDR contact half-length a = k / (2 E*) [m] at depth d [m]."""
+        return out(np.asarray(self.stiffness(depth)) / (2 * self.estar))
+
+    def profile(self, x):
+        """Equivalent MDR profile g(x) [m] at x >= 0 [m]."""
+        raise NotImplementedError(f"{self.label} has no MDR profile "
+                                  "(an empirical force-depth law)")
+
+
+# --------------------------------------------------------------------------------------
+@register
+class LiPopovModel(ContactModel):
+    """Li & Popov (2017) MDR model, Eq. 7 with coefficients chosen by name.
+
+    Option ``coefficients``: ``"published"`` (Table 1 spline, 0.1 <= L/R <= 6, the
+    default), ``"eq11"`` (alpha = pi/2, beta = 0.4573, L/R >= 5) or the name NAME of a
+    table ``tables/lipopov_NAME.csv``. Table 1 and Eq. 11 differ where both apply
+    (5 <= L/R <= 6); the model never switches between them (see
+    :mod:`linecontact.lipopov`). Option ``extrapolate=True`` uses the set outside its
+    L/R range on request (Eq. 11 constants as they are, a table's end rows held); the
+    label then says "extrapolated".
+
+    Examples
+    --------
+    >>> m = LiPopovModel(5e-3, 10e-3, 115.38e9)
+    >>> m.label, f"{m.depth(1e3) * 1e6:.3f} um"
+    ('Li-Popov (Table 1 spline)', '3.055 um')
+
+    Eq. 11 is given for L/R >= 5; at L/R = 2 it is refused unless asked for:
+
+    >>> LiPopovModel(5e-3, 10e-3, 115.38e9, coefficients="eq11").depth(1e3)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
+    >>> m = LiPopovModel(5e-3, 10e-3, 115.38e9, coefficients="eq11", extrapolate=True)
+    >>> m.label, f"{m.depth(1e3) * 1e6:.3f} um"
+    ('Li-Popov (Eq. 11, extrapolated to L/R = 2)', '3.147 um')
+    """
+
+    key = "li-popov"
+
+    def __init__(self, radius, length, estar, coefficients="published", extrapolate=False):
+        super().__init__(radius, length, estar)
+        self.coefficients = coefficients
+        self.extrapolate = bool(extrapolate)
+        self._set = coefficient_set(coefficients)
+
+    @property
+    def extrapolated(self):
+        """True if L/R is outside the coefficient set's range (only with extrapolate)."""
+        return not bool(self._set.valid.contains(self.length_over_radius))
+
+    @property
+    def label(self):
+        if self.extrapolate and self.extrapolated:
+            return (f"Li-Popov ({self._set.label}, extrapolated to "
+                    f"L/R = {self.length_over_radius:.3g})")
+        return f"Li-Popov ({self._set.label})"
+
+    @property
+    def provenance(self):
+        prov = {"model": self.label,
+                "equation": "Li & Popov 2017, Eq. 7 (profile), Eq. 9 (dimensionless); "
+                            "F, d, k in closed form by the MDR",
+                "coefficients": self._set.name}
+        prov.update(self._set.provenance)
+        if self.extrapolate and self.extrapolated:
+            prov["extrapolated"] = (f"L/R = {self.length_over_radius:.6g} is outside "
+                                    f"{self._set.valid}; used on request")
+        return prov
+
+    @property
+    def alpha_beta(self):
+        """(alpha, beta) of Eq. 9 for this L/R (raises if L/R is outside the set)."""
+        a, b = self._set(self.length_over_radius, extrapolate=self.extrapolate)
+        return float(a), float(b)
+
+    def check_applicable(self):
+        self.alpha_beta
+
+    def _ab(self):
+        a, b = self.alpha_beta
+        return dict(alpha=a, beta=b)
+
+    def force(self, depth):
+        return lipopov_force(depth, self.radius, self.length, self.estar, **self._ab())
+
+    def depth(self, force):
+        return lipopov_depth(force, self.radius, self.length, self.estar, **self._ab())
+
+    def stiffness(self, depth):
+        return lipopov_stiffness(depth, self.radius, self.length, self.estar, **self._ab())
+
+    def stiffness_at_force(self, force):
+        return lipopov_stiffness_at_force(force, self.radius, self.length, self.estar,
+                                          **self._ab())
+
+    def contact_radius(self, depth):
+        return lipopov_contact_radius(depth, self.radius, self.length, **self._ab())
+
+    def profile(self, x):
+        return lipopov_profile(x, self.radius, self.length, **self._ab())
+
+
+@register
+class PuttockThwaiteModel(ContactModel):
+    """Puttock & Thwaite (= Lundberg 1939), Li & Popov 2017 Eq. 2.
+
+    Examples
+    --------
+    >>> m = PuttockThwaiteModel(5e-3, 10e-3, 115.38e9)
+    >>> f"{m.depth(1e3) * 1e6:.2f} um"
+    '3.36 um'
+    """
+
+    key = "puttock-thwaite"
+    label = "Puttock-Thwaite"
+
+    @property
+    def provenance(self):
+        return {"model": self.label,
+                "equation": "Li & Popov 2017, Eq. 2 (Puttock & Thwaite; Lundberg 1939); "
+                            "stiffness: derivative of Eq. 2 (the printed Eq. 13 is "
+                            "inverted)"}
+
+    def force(self, depth):
+        return _c.puttock_thwaite_force(depth, self.radius, self.length, self.estar)
+
+    def depth(self, force):
+        return _c.puttock_thwaite_depth(force, self.radius, self.length, self.estar)
+
+    def stiffness(self, depth):
+        return _c.puttock_thwaite_stiffness_at_depth(depth, self.radius, self.length,
+                                                     self.estar)
+
+    def stiffness_at_force(self, force):
+        return _c.puttock_thwaite_stiffness(force, self.radius, self.length, self.estar)
+
+    def profile(self, x):
+        return _c.puttock_thwaite_profile(x, self.radius, self.length)
+
+
+@register
+class JohnsonModel(ContactModel):
+    """Johnson-type law, Li & Popov 2017 Eq. 4, with constant c (option, default 1).
+
+    Examples
+    --------
+    >>> m = JohnsonModel(5e-3, 10e-3, 115.38e9, c=0.72)
+    >>> m.label, f"{m.depth(1e3) * 1e6:.2f} um"
+    ('Johnson (c = 0.72)', '2.89 um')
+    """
+
+    key = "johnson"
+
+    def __init__(self, radius, length, estar, c=1.0):
+        super().__init__(radius, length, estar)
+        self.c = _c.johnson_constant(c)
+
+    @property
+    def label(self):
+        return f"Johnson (c = {self.c:g})"
+
+    @property
+    def provenance(self):
+        who = "Johnson 1985" if self.c == 1.0 else (
+            "other authors cited by Li & Popov" if self.c in (0.72, 0.572)
+            else "user-given constant")
+        return {"model": self.label,
+                "equation": f"Li & Popov 2017, Eq. 4 with c = {self.c:g} ({who})"}
+
+    def force(self, depth):
+        return _c.johnson_force(depth, self.radius, self.length, self.estar, c=self.c)
+
+    def depth(self, force):
+        return _c.johnson_depth(force, self.radius, self.length, self.estar, c=self.c)
+
+    def stiffness(self, depth):
+        return self.stiffness_at_force(self.force(depth))
+
+    def stiffness_at_force(self, force):
+        return _c.johnson_stiffness(force, self.radius, self.length, self.estar, c=self.c)
+
+    def profile(self, x):
+        beta = _c.johnson_equivalent_beta(self.radius, self.length, self.c)
+        return lipopov_profile(x, self.radius, self.length, alpha=math.pi / 2, beta=beta)
+
+
+@register
+class KunzModel(ContactModel):
+    """Kunz & de Maria's linear law F = c E* L d (option c, default 0.175).
+
+    Examples
+    --------
+    >>> m = KunzModel(5e-3, 10e-3, 115.38e9)
+    >>> f"{m.depth(1e3) * 1e6:.2f} um", f"{m.stiffness(1e-6):.4g} N/m"
+    ('4.95 um', '2.019e+08 N/m')
+    """
+
+    key = "kunz"
+
+    def __init__(self, radius, length, estar, c=_c.KUNZ_C):
+        super().__init__(radius, length, estar)
+        self.c = _scalar("c", c, "")
+
+    @property
+    def label(self):
+        return f"Kunz (c = {self.c:g})"
+
+    @property
+    def provenance(self):
+        return {"model": self.label,
+                "equation": "Kunz & de Maria 2002 (experiment, parallel cylinders), "
+                            "F = c E* L d, as cited by Li & Popov 2017"}
+
+    def force(self, depth):
+        return _c.kunz_force(depth, self.length, self.estar, self.c)
+
+    def depth(self, force):
+        return _c.kunz_depth(force, self.length, self.estar, self.c)
+
+    def stiffness(self, depth):
+        d = check_positive("depth", depth, "m")
+        return out(np.full(d.shape, self.c * self.estar * self.length))
+
+    def stiffness_at_force(self, force):
+        F = check_positive("force", force, "N")
+        return out(np.full(F.shape, self.c * self.estar * self.length))
+
+
+class _SteelModel(ContactModel):
+    _depth_fn = None
+    _force_fn = None
+    _source = ""
+
+    @property
+    def provenance(self):
+        return {"model": self.label, "equation": self._source,
+                "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"}
+
+    def check_applicable(self):
+        _c.STEEL_ESTAR_RANGE.check(self.estar, hint=_c._STEEL_HINT)
+
+    def force(self, depth):
+        return type(self)._force_fn(depth, self.length, self.estar)
+
+    def depth(self, force):
+        return type(self)._depth_fn(force, self.length, self.estar)
+
+    def stiffness(self, depth):
+        # F = C d^(1/0.9)  =>  k = F / (0.9 d)
+        F = np.asarray(self.force(depth))
+        return out(F / (0.9 * np.asarray(depth, dtype=float)))
+
+    def stiffness_at_force(self, force):
+        d = np.asarray(self.depth(force))
+        return out(np.asarray(force, dtype=float) / (0.9 * d))
+
+
+@register
+class PalmgrenModel(_SteelModel):
+    """Palmgren's empirical roller-raceway formula (one contact, steel only).
+
+    Examples
+    --------
+    >>> f"{PalmgrenModel(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
+    '3.05 um'
+    """
+
+    key = "palmgren"
+    label = "Palmgren"
+    _depth_fn = staticmethod(_c.palmgren_depth)
+    _force_fn = staticmethod(_c.palmgren_force)
+    _source = "Palmgren (1959): d [mm] = 3.84e-5 F[N]^0.9 / L[mm]^0.8, one contact"
+
+
+@register
+class ISO16281Model(_SteelModel):
+    """ISO/TS 16281 per-contact roller deflection (steel only).
+
+    Examples
+    --------
+    >>> f"{ISO16281Model(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
+    '3.15 um'
+    """
+
+    key = "iso16281"
+    label = "ISO/TS 16281"
+    _depth_fn = staticmethod(_c.iso16281_depth)
+    _force_fn = staticmethod(_c.iso16281_force)
+    _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
+               "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
+
+
+# --------------------------------------------------------------------------------------
+def _load_plugins():
+    """Import optional model modules (linecontact.universal) if they exist."""
+    for name in _PLUGINS:
+        if importlib.util.find_spec(name) is not None:
+            importlib.import_module(name)
+
+
+def available_models():
+    """Registered model keys (after importing optional model modules), sorted.
+
+    Examples
+    --------
+    >>> {"li-popov", "johnson", "palmgren"} <= set(available_models())
+    True
+    """
+    _load_plugins()
+    return sorted(MODELS)
+
+
+def get_model(key, radius, length, estar, **options):
+    """Build the model registered under `key` for one cylinder.
+
+    Parameters
+    ----------
+    key : str
+        Registry key (see :data:`MODELS`); ``"universal"`` imports
+        :mod:`linecontact.universal` on first use.
+    radius, length : float
+        R, L [m].
+    estar : float
+        E* [Pa].
+    **options
+        Passed to the model, e.g. ``coefficients="eq11"`` or ``c=0.72``.
+
+    Returns
+    -------
+    ContactModel
+
+    Raises
+    ------
+    OutOfRangeError
+        Unknown key (the message lists the valid ones) or bad R, L, E*.
+
+    Examples
+    --------
+    >>> get_model("johnson", 5e-3, 10e-3, 115.38e9, c=0.572).label
+    'Johnson (c = 0.572)'
+    >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
+    """
+    if key not in MODELS:
+        _load_plugins()
+    if key not in MODELS:
+        hint = ""
+        if key == DEFAULT_MODEL:
+            hint = ("the universal model comes from linecontact/universal.py and its "
+                    "BEM table; neither is available in this installation")
+        raise OutOfRangeError("model", key, "one of "
+                              + ", ".join(repr(k) for k in sorted(MODELS)), hint=hint)
+    return MODELS[key](radius, length, estar, **options)
+
+
+def standard_models(radius, length, estar):
+    """The CLI's row set for one cylinder, in display order.
+
+    Universal (only if :mod:`linecontact.universal` is importable and its table
+    exists), Li-Popov Table 1 spline, Li-Popov Eq. 11, Li-Popov regenerated (only if
+    ``tables/lipopov_regenerated.csv`` exists), Puttock-Thwaite, Johnson c = 1, 0.72,
+    0.572, Kunz, Palmgren, ISO/TS 16281.
+
+    Models are built even if they do not apply to this cylinder (L/R out of a table's
+    range, non-steel E*); their evaluations then raise
+    :class:`~linecontact.validity.OutOfRangeError`, which the caller reports per row.
+
+    Examples
+    --------
+    >>> rows = standard_models(5e-3, 10e-3, 115.38e9)
+    >>> [m.label for m in rows if m.key != "universal"][:3]
+    ['Li-Popov (Table 1 spline)', 'Li-Popov (Eq. 11)', 'Puttock-Thwaite']
+    """
+    R = _scalar("radius", radius, "m")
+    L = _scalar("length", length, "m")
+    E = _scalar("estar", estar, "Pa")
+    rows = []
+    universal = _universal(R, L, E)
+    if universal is not None:
+        rows.append(universal)
+    rows.append(LiPopovModel(R, L, E, coefficients="published"))
+    rows.append(LiPopovModel(R, L, E, coefficients="eq11"))
+    if "lipopov_regenerated" in available_tables("lipopov_"):
+        rows.append(LiPopovModel(R, L, E, coefficients="regenerated"))
+    rows.append(PuttockThwaiteModel(R, L, E))
+    rows.extend(JohnsonModel(R, L, E, c=c) for c in (1.0, 0.72, 0.572))
+    rows.append(KunzModel(R, L, E))
+    rows.append(PalmgrenModel(R, L, E))
+    rows.append(ISO16281Model(R, L, E))
+    return rows
+
+
+def _universal(R, L, E):
+    """The universal model, or None (with a warning if it exists but fails)."""
+    try:
+        _load_plugins()
+    except Exception as exc:  # a broken optional module must not take the CLI down
+        warnings.warn(f"linecontact.universal could not be imported: {exc!r}",
+                      RuntimeWarning, stacklevel=3)
+        return None
+    cls = MODELS.get(DEFAULT_MODEL)
+    if cls is None:
+        return None
+    available = getattr(cls, "available", None)
+    if callable(available) and not available():
+        return None
+    try:
+        return cls(R, L, E)
+    except (FileNotFoundError, TableError):
+        return None

@@ -1,0 +1,276 @@
+"""Li-Popov model (Li & Popov 2017, Eqs. 7, 9, 11, 12): closed forms, coefficient sets.
+
+Each test states the fact it checks in its docstring and assertion message.
+"""
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from scipy.integrate import quad
+from scipy.interpolate import CubicSpline
+
+from linecontact.lipopov import (ALPHA_EQ11, BETA_EQ11, available_coefficient_sets,
+                                 coefficient_set, dimensionless_profile,
+                                 lipopov_coefficients, lipopov_contact_radius,
+                                 lipopov_depth, lipopov_depth_limit, lipopov_force,
+                                 lipopov_force_limit, lipopov_profile, lipopov_stiffness,
+                                 lipopov_stiffness_at_force)
+from linecontact.tables import read_table
+from linecontact.validity import OutOfRangeError
+
+STEEL_ESTAR = 210e9 / (2 * (1 - 0.3**2))
+
+# Li & Popov 2017, Table 1, as printed (SPEC.md section 4), typed here independently of
+# tables/lipopov_published.csv: a literature fixture.
+TABLE_1 = [
+    (0.1, 3.8695, 17.1183), (0.2, 2.8664, 6.6132), (0.3, 2.4734, 3.9560),
+    (0.4, 2.2714, 2.8770), (0.5, 2.1455, 2.2975), (0.6, 2.0528, 1.9139),
+    (0.7, 1.9928, 1.6847), (0.8, 1.9400, 1.4963), (0.9, 1.8996, 1.3589),
+    (1.0, 1.8668, 1.2517), (2, 1.7086, 0.7936), (3, 1.6518, 0.6495),
+    (4, 1.6231, 0.5799), (5, 1.6048, 0.5376), (6, 1.5930, 0.5091),
+]
+
+alphas = st.floats(0.5, 5.0)
+betas = st.floats(0.1, 20.0)
+ratios = st.floats(1e-10, 1 - 1e-6)          # d / (beta L^2/R)
+lengths = st.floats(1e-4, 1.0)
+radii = st.floats(1e-4, 1.0)
+
+
+def _geom(R, L, a, b, E=STEEL_ESTAR):
+    return dict(radius=R, length=L, estar=E, alpha=a, beta=b)
+
+
+# ---- closed forms derived from Eq. 7 -------------------------------------------------
+@given(u=st.floats(0.01, 50.0), a=alphas, b=betas)
+def test_force_closed_form_is_the_mdr_integral_of_eq7(u, a, b):
+    """F = 2 alpha beta E* L^3/R exp(-u) equals 2E* int_0^a (d - g) dx with g of Eq. 7,
+    a = alpha L / u and d = g(a) (SPEC section 4, derived, checked by quadrature)."""
+    R, L, E = 5e-3, 10e-3, STEEL_ESTAR
+    a_c = a * L / u
+    g = lambda x: lipopov_profile(x, R, L, alpha=a, beta=b)
+    d = g(a_c)
+    assert d == pytest.approx(b * L**2 / R * (u + 1) * math.exp(-u), rel=1e-12), \
+        "d = g(a) = beta L^2/R (u+1) exp(-u)"
+    integral, _ = quad(lambda x: d - g(x), 0, a_c, epsabs=0, epsrel=1e-12, limit=200)
+    F_quad = 2 * E * integral
+    F_closed = 2 * a * b * E * L**3 / R * math.exp(-u)
+    assert F_quad == pytest.approx(F_closed, rel=1e-8), \
+        "MDR quadrature of Eq. 7 must equal the closed form F = 2 alpha beta E* L^3/R e^-u"
+    if d < b * L**2 / R:
+        assert lipopov_force(d, R, L, E, alpha=a, beta=b) == pytest.approx(F_closed, rel=1e-9)
+
+
+@given(D=ratios, a=alphas, b=betas, R=radii, L=lengths)
+def test_depth_of_force_inverts_force_of_depth(D, a, b, R, L):
+    """Round trip: d(F(d)) = d over 10 decades of d / (beta L^2/R) (Lambert W_-1 branch)."""
+    d = D * b * L**2 / R
+    F = lipopov_force(d, **_geom(R, L, a, b))
+    assert lipopov_depth(F, **_geom(R, L, a, b)) == pytest.approx(d, rel=1e-9), \
+        "lipopov_depth must invert lipopov_force"
+
+
+@given(D=st.floats(1e-9, 0.99), a=alphas, b=betas)
+def test_stiffness_is_the_derivative_of_force(D, a, b):
+    """k(d) = dF/dd: the closed form 2 E* a equals a central difference of F(d)."""
+    R, L = 5e-3, 10e-3
+    g = _geom(R, L, a, b)
+    d = D * b * L**2 / R
+    h = 1e-6 * d
+    numeric = (lipopov_force(d + h, **g) - lipopov_force(d - h, **g)) / (2 * h)
+    assert lipopov_stiffness(d, **g) == pytest.approx(numeric, rel=1e-6), \
+        "stiffness must equal the numerical derivative of force"
+
+
+@given(D=st.floats(1e-9, 0.99), a=alphas, b=betas)
+def test_stiffness_at_force_and_contact_radius_agree(D, a, b):
+    """k(F(d)) = k(d) and k = 2 E* a(d) with g(a) = d (MDR rules)."""
+    R, L, E = 5e-3, 10e-3, STEEL_ESTAR
+    g = _geom(R, L, a, b)
+    d = D * b * L**2 / R
+    k = lipopov_stiffness(d, **g)
+    assert lipopov_stiffness_at_force(lipopov_force(d, **g), **g) == pytest.approx(k, rel=1e-9)
+    radius = lipopov_contact_radius(d, R, L, alpha=a, beta=b)
+    assert 2 * E * radius == pytest.approx(k, rel=1e-12), "k = 2 E* a"
+    assert lipopov_profile(radius, R, L, alpha=a, beta=b) == pytest.approx(d, rel=1e-9), \
+        "the MDR contact radius solves g(a) = d"
+
+
+def test_eq2_is_the_lipopov_form_with_alpha_pi_over_2_and_beta_1():
+    """Eliminating a: d = F/(2 alpha L E*) (1 + ln(2 alpha beta E* L^3/(R F))); with
+    alpha = pi/2, beta = 1 this is Puttock & Thwaite's Eq. 2, typed here independently."""
+    R, L, E = 5e-3, 10e-3, STEEL_ESTAR
+    F = np.geomspace(1e-3, 1e6, 25)
+    eq2 = F / (math.pi * L * E) * (1 + np.log(math.pi * E * L**3 / (R * F)))
+    d = lipopov_depth(F, R, L, E, alpha=math.pi / 2, beta=1.0)
+    np.testing.assert_allclose(d, eq2, rtol=1e-13,
+                               err_msg="Eq. 2 = Li-Popov with alpha = pi/2, beta = 1")
+
+
+def test_sanity_figure_eq11_steel_roller():
+    """Issue sanity figure: steel on steel, R = 5 mm, L = 10 mm, 1 kN, Eq. 11 constants:
+    d is about 3.15 um (the formula; the model refuses Eq. 11 at L/R = 2 unless asked)."""
+    d = lipopov_depth(1e3, 5e-3, 10e-3, STEEL_ESTAR, alpha=ALPHA_EQ11, beta=BETA_EQ11)
+    assert d == pytest.approx(3.15e-6, abs=0.005e-6)
+
+
+def test_profile_is_monotone_bounded_and_dimensionless_form_matches():
+    """Eq. 7 rises from g(0) = 0 to below beta L^2/R; g R/L^2 equals Eq. 9 at x/L."""
+    R, L, a, b = 5e-3, 10e-3, 1.7, 0.8
+    x = np.concatenate([[0.0], np.geomspace(1e-6 * L, 1e4 * L, 400)])
+    g = lipopov_profile(x, R, L, alpha=a, beta=b)
+    assert g[0] == 0.0, "g(0) = 0"
+    assert np.all(np.diff(g) >= 0) and np.all(np.diff(g[g > 0]) > 0), "g increases"
+    assert np.all(g < lipopov_depth_limit(R, L, b)), "g < beta L^2/R"
+    np.testing.assert_allclose(g * R / L**2, dimensionless_profile(x / L, a, b), rtol=1e-14,
+                               atol=1e-300)
+
+
+def test_force_and_stiffness_increase_with_depth():
+    """Monotonicity: F(d) and k(d) increase strictly over the whole admissible range."""
+    R, L, a, b = 5e-3, 10e-3, ALPHA_EQ11, BETA_EQ11
+    d = np.geomspace(1e-12, 0.999, 300) * b * L**2 / R
+    F = lipopov_force(d, R, L, STEEL_ESTAR, alpha=a, beta=b)
+    k = lipopov_stiffness(d, R, L, STEEL_ESTAR, alpha=a, beta=b)
+    assert np.all(np.diff(F) > 0), "F increases with d"
+    assert np.all(np.diff(k) > 0), "k increases with d (F convex)"
+    assert F[-1] < lipopov_force_limit(R, L, STEEL_ESTAR, alpha=a, beta=b), "F < F_max"
+
+
+@given(lam=st.floats(1e-3, 1e3), D=st.floats(1e-8, 0.9))
+def test_scaling_law(lam, D):
+    """Self-similarity: F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*."""
+    R, L, E, a, b = 5e-3, 10e-3, STEEL_ESTAR, 1.7, 0.8
+    d = D * b * L**2 / R
+    F1 = lipopov_force(d, R, L, E, alpha=a, beta=b)
+    F2 = lipopov_force(lam * d, lam * R, lam * L, E, alpha=a, beta=b)
+    assert F2 == pytest.approx(lam**2 * F1, rel=1e-9)
+
+
+# ---- validity --------------------------------------------------------------------------
+def test_depth_at_or_beyond_the_bound_raises():
+    """g < beta L^2/R, so d >= beta L^2/R has no solution: OutOfRangeError naming depth."""
+    R, L, a, b = 5e-3, 10e-3, ALPHA_EQ11, BETA_EQ11
+    bound = b * L**2 / R
+    for d in (bound, 1.5 * bound):
+        with pytest.raises(OutOfRangeError) as err:
+            lipopov_force(d, R, L, STEEL_ESTAR, alpha=a, beta=b)
+        assert err.value.parameter == "depth" and err.value.value == d
+        assert f"{bound:.6g}" in err.value.valid and "beta L^2/R" in str(err.value)
+    with pytest.raises(OutOfRangeError, match="force"):
+        lipopov_depth(lipopov_force_limit(R, L, STEEL_ESTAR, alpha=a, beta=b), R, L,
+                      STEEL_ESTAR, alpha=a, beta=b)
+
+
+@pytest.mark.parametrize("name, value", [("depth", 0.0), ("depth", -1e-6),
+                                         ("depth", np.nan), ("radius", -5e-3),
+                                         ("length", np.inf), ("estar", 0.0)])
+def test_bad_inputs_raise_naming_the_parameter(name, value):
+    """Non-positive or non-finite sizes, moduli, depths raise OutOfRangeError (a
+    ValueError) whose message names the parameter, its value and the valid range."""
+    args = dict(depth=1e-6, radius=5e-3, length=10e-3, estar=STEEL_ESTAR)
+    args[name] = value
+    with pytest.raises(ValueError) as err:
+        lipopov_force(args["depth"], args["radius"], args["length"], args["estar"],
+                      alpha=1.6, beta=0.5)
+    assert isinstance(err.value, OutOfRangeError)
+    assert str(err.value).startswith(f"{name} = ") and "valid range" in str(err.value)
+
+
+def test_array_input_reports_the_offending_element():
+    """An array with one bad element raises, naming that element (nothing is skipped)."""
+    with pytest.raises(OutOfRangeError, match=r"element \[2\]"):
+        lipopov_force([1e-6, 2e-6, -1.0], 5e-3, 10e-3, STEEL_ESTAR, alpha=1.6, beta=0.5)
+
+
+def test_vectorised_broadcast():
+    """Arrays broadcast: a depth vector against a radius column gives a 2D result."""
+    d = np.array([1e-6, 2e-6, 3e-6])
+    R = np.array([[4e-3], [5e-3]])
+    F = lipopov_force(d, R, 10e-3, STEEL_ESTAR, alpha=1.6, beta=0.5)
+    assert F.shape == (2, 3)
+    assert F[1, 2] == lipopov_force(3e-6, 5e-3, 10e-3, STEEL_ESTAR, alpha=1.6, beta=0.5)
+
+
+# ---- coefficient sets --------------------------------------------------------------------
+def test_published_spline_reproduces_table1_at_its_knots():
+    """The 'published' set passes through every row of Li & Popov Table 1 (literature
+    values typed independently here)."""
+    q, a, b = map(np.array, zip(*TABLE_1))
+    alpha, beta = lipopov_coefficients(q, "published")
+    np.testing.assert_allclose(alpha, a, rtol=1e-12, err_msg="alpha at Table 1 knots")
+    np.testing.assert_allclose(beta, b, rtol=1e-12, err_msg="beta at Table 1 knots")
+
+
+def test_shipped_table_equals_table1_and_runtime_spline_is_refit_from_it():
+    """Data and code cannot drift: the CSV holds Table 1 exactly, and a spline refit from
+    the CSV (CubicSpline in log L/R) equals the runtime one between the knots."""
+    t = read_table("lipopov_published")
+    np.testing.assert_array_equal(
+        np.column_stack([t.columns["L_over_R"], t.columns["alpha"], t.columns["beta"]]),
+        np.array(TABLE_1))
+    lq = np.log(t.columns["L_over_R"])
+    q = np.geomspace(0.1, 6, 500)
+    alpha, beta = lipopov_coefficients(q, "published")
+    np.testing.assert_allclose(alpha, CubicSpline(lq, t.columns["alpha"])(np.log(q)), rtol=1e-13)
+    np.testing.assert_allclose(beta, CubicSpline(lq, t.columns["beta"])(np.log(q)), rtol=1e-13)
+
+
+def test_published_spline_is_smooth_monotone_and_positive():
+    """Between the knots the spline neither overshoots nor turns: alpha and beta fall
+    monotonically with L/R on [0.1, 6] and stay within the table's extremes."""
+    q = np.geomspace(0.1, 6, 5000)
+    alpha, beta = lipopov_coefficients(q, "published")
+    assert np.all(np.diff(alpha) < 0) and np.all(np.diff(beta) < 0)
+    assert alpha.min() >= 1.5930 - 1e-12 and beta.min() >= 0.5091 - 1e-12
+
+
+@pytest.mark.parametrize("q", [0.05, 0.0999, 6.001, 20.0])
+def test_published_refuses_L_over_R_outside_0p1_to_6(q):
+    """L/R outside Table 1's range [0.1, 6] raises (no silent extrapolation)."""
+    with pytest.raises(OutOfRangeError) as err:
+        lipopov_coefficients(q, "published")
+    assert err.value.parameter == "L/R" and err.value.valid == "[0.1, 6]"
+    assert "eq11" in str(err.value), "the message points to the other sets"
+
+
+def test_eq11_constants_and_range():
+    """Eq. 11/12: alpha = pi/2, beta = 0.4573 (not the text's 0.4537), for L/R >= 5."""
+    assert lipopov_coefficients(50.0, "eq11") == (math.pi / 2, 0.4573)
+    with pytest.raises(OutOfRangeError, match=r"L/R = 4.9 is outside the valid range \[5, inf\)"):
+        lipopov_coefficients(4.9, "eq11")
+    assert lipopov_coefficients(2.0, "eq11", extrapolate=True) == (math.pi / 2, 0.4573), \
+        "extrapolation only on explicit request"
+
+
+def test_table1_and_eq11_disagree_at_L_over_R_5_and_6():
+    """Regression figures (pinned, documented in lipopov and tables/README.md): Table 1
+    and Eq. 11 differ at L/R = 5; for R = 5 mm, L = 25 mm, steel, the Table 1 depth is
+    0.9 % smaller at 1 kN and 0.6 % smaller at 10 kN than the Eq. 11 depth."""
+    for q in (5.0, 6.0):
+        pub = lipopov_coefficients(q, "published")
+        eq11 = lipopov_coefficients(q, "eq11")
+        assert pub[1] > eq11[1] * 1.1, "beta: Table 1 > Eq. 11 by more than 10 %"
+    a, b = lipopov_coefficients(5.0, "published")
+    for F, rel in ((1e3, -0.0085), (1e4, -0.0061)):
+        dp = lipopov_depth(F, 5e-3, 25e-3, STEEL_ESTAR, alpha=a, beta=b)
+        de = lipopov_depth(F, 5e-3, 25e-3, STEEL_ESTAR, alpha=ALPHA_EQ11, beta=BETA_EQ11)
+        assert dp / de - 1 == pytest.approx(rel, abs=0.0002)
+
+
+def test_unknown_coefficient_set_lists_the_valid_ones():
+    """An unknown set name raises OutOfRangeError listing 'eq11' and 'published'."""
+    with pytest.raises(OutOfRangeError) as err:
+        coefficient_set("tabel1")
+    assert err.value.parameter == "coefficients"
+    assert "'eq11'" in err.value.valid and "'published'" in err.value.valid
+    assert available_coefficient_sets()[:2] == ["eq11", "published"]
+
+
+def test_published_set_provenance():
+    """The published set says where it comes from: 'published, Li & Popov 2017, Table 1'."""
+    prov = coefficient_set("published").provenance
+    assert prov["provenance"] == "published, Li & Popov 2017, Table 1"
+    assert "doi:10.22190/FUME170222003L" in prov["source"]

@@ -1,0 +1,306 @@
+"""Benchmark (not a test): the paper's finite-cylinder sweep, ContactMechanics vs ours.
+
+Solves the same displacement-controlled sweep twice in one run -- with
+ContactMechanics (FreeFFTElasticHalfSpace + constrained_conjugate_gradients, its
+free, non-periodic half-space) and with :func:`tools.cylinder.sweep` -- on the same
+grid, the same depths and the same physical tolerance, and prints wall time and CPU
+time of each, their ratio, the largest relative force difference over the steps and
+the iteration counts. Issue 3, item 6; target: ours >= 3x faster per sweep, forces
+within 0.1 %.
+
+The problem: rigid cylinder, radius R, length L (axis along x), pressed by depth d
+into a half-space of effective modulus E*. nx x ny cells cover |x| <= L/2 and
+|y| <= Y = sqrt(2 R d_max); cell centres x_i = -L/2 + (i + 1/2) dx,
+y_j = -Y + (j + 1/2) dy; initial gap h(y) = y^2 / (2R); d = d_max k / steps,
+k = 1..steps.
+
+How ContactMechanics (1.8.x) is called, and why (read from its source):
+
+* ``FreeFFTElasticHalfSpace((nx, ny), young=E*, physical_sizes=(L, 2Y))``. ``young``
+  is the contact modulus E* (its docstring: "Equiv. Young's modulus E'"; the kernel
+  is multiplied by 1/(pi young), no (1 - nu^2)). Internally 2nx x 2ny (zero padding).
+  Its kernel is Love's / Johnson Eq. 3.25 for uniform pressure on a dx x dy
+  rectangle, in the log form, evaluated at cell-centre offsets in wrap-around order:
+  the same influence coefficients as ours; this script measures the difference.
+* Heights are those of the rigid indenter, positive up: h = -y^2/(2R) (apex at 0);
+  ``offset = d`` pushes it into the substrate. The constraint is u >= h + offset,
+  u = surface displacement positive into the body; gap = u - h - offset.
+* Solver: ``constrained_conjugate_gradients`` (Polonsky & Keer 1999) at fixed
+  ``offset`` (displacement control). Its forces are pixel forces, negative =
+  compressive internally; ``result.jac`` is the (positive) force per cell, so
+  F = sum(result.jac).
+* Convergence, all of which must hold (their meaning -> our setting):
+    - ``pentol`` [length]: rms gap on the contact set, largest penetration on the
+      contact set, and the largest change of displacement in the last iteration,
+      each < pentol.  -> pentol = tol * d, our criterion (largest |gap| on the
+      contact set <= tol * d).
+    - ``forcetol`` [force per cell]: largest tensile cell force produced by the CG
+      step before it is clipped, and largest force in the padding. Default 1e-5
+      in absolute units, meaningless here (a cell carries ~1e-6 E* R^2).
+      -> forcetol = tol * d * dx dy / K00, K00 = self-influence coefficient: a
+      leftover tensile force moves its own cell by less than the gap tolerance.
+    - ``thermotol`` [relative]: change of the total force between iterations.
+      -> thermotol = tol (1e-6 = their default).
+  After each run the script evaluates our criterion, max |gap| / d on cells with
+  force > 0, on ContactMechanics' answer and prints it.
+* Warm start (``--cm-warm forces``, default): ``initial_forces`` = the previous
+  step's (padded) force field; ``none`` starts every step from zero.
+
+Run from the repository root, in an environment that has contactmechanics
+(``pip install contactmechanics`` -- only for this benchmark)::
+
+    python tools/benchmarks/bench_contactmechanics.py --n 128
+    python tools/benchmarks/bench_contactmechanics.py            # 512 x 512, L/R = 5
+
+Results go to tools/benchmarks/results/contactmechanics_<n>[_lr<L/R>].txt.
+"""
+from __future__ import annotations
+
+import argparse
+import inspect
+import io
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+RESULTS = Path(__file__).resolve().parent / "results"
+
+
+# --------------------------------------------------------------------------- problem
+def grid(l_over_r, nx, ny, radius, d_max_over_r):
+    length = l_over_r * radius
+    d_max = d_max_over_r * radius
+    half_width = np.sqrt(2.0 * radius * d_max)
+    dx, dy = length / nx, 2.0 * half_width / ny
+    x = -0.5 * length + (np.arange(nx) + 0.5) * dx
+    y = -half_width + (np.arange(ny) + 0.5) * dy
+    return length, half_width, dx, dy, x, y
+
+
+def depths(steps, d_max_over_r, radius):
+    return d_max_over_r * radius * np.arange(1, steps + 1) / steps
+
+
+# ----------------------------------------------------------------- ContactMechanics
+def run_contactmechanics(args, nx, ny):
+    from ContactMechanics import FreeFFTElasticHalfSpace
+    from ContactMechanics.Optimization.ConstrainedConjugateGradients import (
+        constrained_conjugate_gradients)
+    from SurfaceTopography import Topography
+
+    R, E = args.radius, args.estar
+    length, half_width, dx, dy, x, y = grid(args.l_over_r, nx, ny, R, args.d_max_over_r)
+    ds = depths(args.steps, args.d_max_over_r, R)
+
+    t_wall, t_cpu = time.perf_counter(), time.process_time()
+    substrate = FreeFFTElasticHalfSpace((nx, ny), E, (length, 2.0 * half_width))
+    heights = np.broadcast_to(-y ** 2 / (2.0 * R), (nx, ny)).copy()   # indenter, up
+    topography = Topography(heights, physical_sizes=(length, 2.0 * half_width))
+    area = dx * dy
+    # self-influence coefficient K00 [m/Pa] from the substrate itself
+    unit = np.zeros(substrate.nb_domain_grid_pts)
+    unit[0, 0] = -area                                  # unit compressive pressure
+    k00 = substrate.evaluate_disp(unit)[0, 0]
+
+    force = np.empty(args.steps)
+    cells = np.empty(args.steps, dtype=int)
+    iters = np.empty(args.steps, dtype=int)
+    gap_err = np.empty(args.steps)
+    f_init = None
+    for k, d in enumerate(ds):
+        res = constrained_conjugate_gradients(
+            substrate, topography, offset=d,
+            pentol=args.tol * d,
+            forcetol=args.tol * d * area / k00,
+            thermotol=args.tol,
+            initial_forces=f_init, maxiter=args.maxiter)
+        if not res.success:
+            raise RuntimeError(f"ContactMechanics did not converge at step {k + 1} "
+                               f"(d = {d:g}): {res.message}")
+        p = res.jac                                     # force per cell, >= 0
+        force[k] = p.sum()
+        contact = p > 0
+        cells[k] = contact.sum()
+        iters[k] = res.nit
+        u = res.x[:nx, :ny]
+        gap = u - heights - d
+        gap_err[k] = np.abs(gap[contact]).max() / d if cells[k] else np.nan
+        if args.cm_warm == "forces":
+            f_init = np.zeros(substrate.nb_domain_grid_pts)
+            f_init[:nx, :ny] = -p
+        if args.progress:
+            print(f"\r  ContactMechanics step {k + 1}/{args.steps}  it {res.nit}",
+                  end="", file=sys.stderr, flush=True)
+    if args.progress:
+        print(file=sys.stderr)
+    wall = time.perf_counter() - t_wall
+    cpu = time.process_time() - t_cpu
+    return dict(depth=ds, force=force, cells=cells, iterations=iters, wall=wall,
+                cpu=cpu, gap_err=gap_err, substrate=substrate)
+
+
+# ---------------------------------------------------------------------------- ours
+def run_ours(args, nx, ny):
+    from tools.cylinder import sweep
+
+    params = inspect.signature(sweep).parameters
+    kwargs = dict(n=(nx, ny), steps=args.steps, d_max_over_r=args.d_max_over_r,
+                  radius=args.radius, estar=args.estar, tol=args.tol,
+                  progress=args.progress)
+    kwargs = {k: v for k, v in kwargs.items() if k in params}
+    t_wall, t_cpu = time.perf_counter(), time.process_time()
+    res = sweep(args.l_over_r, **kwargs)
+    wall = time.perf_counter() - t_wall
+    cpu = time.process_time() - t_cpu
+    area = np.asarray(res.area, dtype=float)
+    _, _, dx, dy, _, _ = grid(args.l_over_r, nx, ny, args.radius, args.d_max_over_r)
+    conv = np.asarray(getattr(res, "converged", np.ones(args.steps, bool)))
+    return dict(depth=np.asarray(res.depth, float), force=np.asarray(res.force, float),
+                cells=np.rint(area / (dx * dy)).astype(int),
+                iterations=np.asarray(res.iterations), wall=wall, cpu=cpu,
+                converged=conv, reported_wall=getattr(res, "wall_time", np.nan),
+                res=res)
+
+
+def kernel_difference(substrate, nx, ny, dx, dy, estar):
+    """Largest relative difference between ContactMechanics' kernel and ours."""
+    from tools.influence import kernel_offsets
+
+    unit = np.zeros(substrate.nb_domain_grid_pts)
+    unit[0, 0] = -dx * dy
+    theirs = substrate.evaluate_disp(unit)[:nx, :ny]   # offsets 0..n-1 >= 0
+    ours = kernel_offsets(nx, ny, dx, dy, estar)[:nx, :ny]
+    rel = np.abs(theirs / ours - 1.0)
+    i, j = np.unravel_index(np.argmax(rel), rel.shape)
+    return rel.max(), (int(i), int(j)), np.abs(theirs - ours).max() / ours[0, 0]
+
+
+# ---------------------------------------------------------------------------- main
+def versions():
+    out = {"python": platform.python_version()}
+    for mod in ("numpy", "scipy", "ContactMechanics", "SurfaceTopography", "muGrid",
+                "NuMPI", "pyfftw"):
+        try:
+            m = __import__(mod)
+            out[mod] = getattr(m, "__version__", "?")
+        except ImportError:
+            out[mod] = "not installed"
+    return out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--l-over-r", type=float, default=5.0)
+    ap.add_argument("--n", type=str, default="512",
+                    help="cells per side, or NX,NY (default 512)")
+    ap.add_argument("--steps", type=int, default=100)
+    ap.add_argument("--tol", type=float, default=1e-6,
+                    help="largest |gap| on the contact set / d (default 1e-6)")
+    ap.add_argument("--d-max-over-r", type=float, default=0.15)
+    ap.add_argument("--radius", type=float, default=1.0)
+    ap.add_argument("--estar", type=float, default=1.0)
+    ap.add_argument("--cm-warm", choices=("forces", "none"), default="forces",
+                    help="ContactMechanics warm start between steps (default forces)")
+    ap.add_argument("--maxiter", type=int, default=100000)
+    ap.add_argument("--skip-ours", action="store_true",
+                    help="run ContactMechanics only (no comparison)")
+    ap.add_argument("--no-save", action="store_true")
+    ap.add_argument("--progress", action="store_true")
+    args = ap.parse_args(argv)
+    nx, ny = (int(v) for v in args.n.split(",")) if "," in args.n else (int(args.n),) * 2
+
+    out = io.StringIO()
+
+    def say(*a):
+        print(*a)
+        print(*a, file=out)
+
+    length, half_width, dx, dy, _, _ = grid(args.l_over_r, nx, ny, args.radius,
+                                            args.d_max_over_r)
+    say(f"# finite-cylinder sweep: ContactMechanics vs tools.cylinder.sweep")
+    say(f"# {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; command: "
+        f"python tools/benchmarks/bench_contactmechanics.py "
+        + " ".join(argv if argv is not None else sys.argv[1:]))
+    say(f"# L/R = {args.l_over_r:g}, grid {nx} x {ny} (dx = {dx:.4g} R, dy = {dy:.4g} R),"
+        f" {args.steps} steps to d = {args.d_max_over_r:g} R, tol = {args.tol:g},"
+        f" CM warm start: {args.cm_warm}")
+    say(f"# machine: {platform.machine()}, {os.cpu_count()} cores, "
+        f"{platform.platform()}; load average at start "
+        + " ".join(f"{v:.2f}" for v in os.getloadavg()))
+    say("# versions: " + ", ".join(f"{k} {v}" for k, v in versions().items()))
+
+    cm = run_contactmechanics(args, nx, ny)
+    ours = None if args.skip_ours else run_ours(args, nx, ny)
+
+    if ours is not None:
+        kmax, kat, kabs = kernel_difference(cm["substrate"], nx, ny, dx, dy, args.estar)
+        say(f"# kernels: max |K_CM / K_ours - 1| = {kmax:.2e} at offset {kat};"
+            f" max |K_CM - K_ours| / K_00 = {kabs:.2e}")
+        if not np.allclose(ours["depth"], cm["depth"], rtol=1e-12, atol=0):
+            raise RuntimeError("the two sweeps used different depths")
+
+    say("")
+    say(f"{'solver':18s} {'wall [s]':>9s} {'cpu [s]':>9s} {'iter total':>10s} "
+        f"{'iter/step':>9s} {'max iter':>8s}")
+    rows = [("ContactMechanics", cm)] + ([("ours", ours)] if ours else [])
+    for name, r in rows:
+        it = r["iterations"]
+        say(f"{name:18s} {r['wall']:9.2f} {r['cpu']:9.2f} {it.sum():10d} "
+            f"{it.mean():9.1f} {it.max():8d}")
+    say(f"# CM, our criterion on its answer: max over steps of max|gap|/d on its "
+        f"contact set = {np.nanmax(cm['gap_err']):.2e} (tol {args.tol:g})")
+    if ours is not None:
+        if not np.all(ours["converged"]):
+            say(f"# WARNING: ours did not converge at steps "
+                f"{np.flatnonzero(~ours['converged']) + 1}")
+        rel = np.abs(cm["force"] / ours["force"] - 1.0)
+        k = int(np.argmax(rel))
+        rel2 = rel[1:] if args.steps > 1 else rel
+        k2 = int(np.argmax(rel2)) + (1 if args.steps > 1 else 0)
+        dcells = cm["cells"] - ours["cells"]
+        say("")
+        say(f"wall-time ratio CM / ours      : {cm['wall'] / ours['wall']:.2f}"
+            f"   (cpu-time ratio {cm['cpu'] / ours['cpu']:.2f}; target >= 3)")
+        say(f"max |F_CM / F_ours - 1|, all steps     : {rel[k]:.2e} at step {k + 1}"
+            f" (d = {cm['depth'][k]:.4g} R)   (target <= 1e-3)")
+        say(f"max |F_CM / F_ours - 1|, steps 2..{args.steps:<5d}: {rel2.max():.2e}"
+            f" at step {k2 + 1}")
+        say(f"contact cells at step 1: CM {cm['cells'][0]}, ours {ours['cells'][0]}"
+            f" (of {nx * ny}); steps whose contact sets differ in size: "
+            f"{np.count_nonzero(dcells)}, largest difference {np.abs(dcells).max()} cells")
+        say(f"our sweep's own res.wall_time: {ours['reported_wall']:.2f} s")
+
+    say("")
+    say("# per step")
+    head = f"{'step':>4s} {'d/R':>8s} {'F_CM/(E* R^2)':>14s} {'cells_CM':>8s} {'it_CM':>6s}"
+    if ours is not None:
+        head += f" {'F_ours/(E* R^2)':>15s} {'cells_ours':>10s} {'it_ours':>7s} {'rel diff':>9s}"
+    say(head)
+    scale = args.estar * args.radius ** 2
+    for k in range(args.steps):
+        line = (f"{k + 1:4d} {cm['depth'][k] / args.radius:8.5f} "
+                f"{cm['force'][k] / scale:14.8e} {cm['cells'][k]:8d} {cm['iterations'][k]:6d}")
+        if ours is not None:
+            line += (f" {ours['force'][k] / scale:15.8e} {ours['cells'][k]:10d}"
+                     f" {ours['iterations'][k]:7d} {rel[k]:9.2e}")
+        say(line)
+
+    if not args.no_save:
+        RESULTS.mkdir(exist_ok=True)
+        suffix = "" if args.l_over_r == 5.0 else f"_lr{args.l_over_r:g}"
+        name = f"contactmechanics_{nx}" + ("" if nx == ny else f"x{ny}") + suffix + ".txt"
+        (RESULTS / name).write_text(out.getvalue())
+        print(f"# saved {RESULTS / name}")
+
+
+if __name__ == "__main__":
+    main()

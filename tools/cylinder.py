@@ -35,7 +35,6 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-
 from scipy.fft import next_fast_len
 
 from .halfspace import SymmetricOperator, best_backend
@@ -287,7 +286,7 @@ def solve_depth(d_tilde, n_length=256, n_width=32, margin=1.2, tol=1e-6,
     Y = min(margin * b, y_max)
     while True:
         my = int(np.ceil(n_width * Y / b)) if b > 0 else n_width
-        my = next_fast_len(2 * my, real=True) // 2 if my > 4 else my
+        my = next_fast_len(my)  # 2*my is then 5-smooth too: fast DCTs
         grid, op, sol = run(Y, n_length, my)
         total_its += sol.iterations
         if not sol.converged:

@@ -1,0 +1,47 @@
+"""Regenerate the computed tables in tables/ (the only writer of those files).
+
+Subcommands, each with its own options (``--help``):
+
+``universal``
+    The universal curve Psi(d~), Phi (SPEC section 5) on adapted grids:
+    tables/universal_curve.csv (tools.universal_study).
+``paper``
+    The paper's study (SPEC section 6): BEM sweeps per L/R, fitted alpha, beta:
+    tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+
+Run from the repository root, e.g.::
+
+    python -m tools.build_tables universal
+    python -m tools.build_tables paper --l-over-r 5 --n 128 --out /tmp/check
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+SUBCOMMANDS = {
+    "universal": "tools.universal_study",
+    "paper": "tools.paper_study",
+}
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv or argv[0] not in SUBCOMMANDS:
+        names = ", ".join(SUBCOMMANDS)
+        print(f"usage: python -m tools.build_tables {{{names}}} [options]\n{__doc__}",
+              file=sys.stderr)
+        return 2
+    module = importlib.import_module(SUBCOMMANDS[argv[0]])
+    parser = argparse.ArgumentParser(prog=f"python -m tools.build_tables {argv[0]}",
+                                     description=module.__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    module.add_arguments(parser)
+    args = parser.parse_args(argv[1:])
+    args.command_line = "python -m tools.build_tables " + " ".join(argv)
+    return module.run(args) or 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -98,7 +98,7 @@ ALPHA_EQ11 = math.pi / 2
 #: beta of Eq. 11/12 (the equation's 0.4573; the text once prints 0.4537).
 BETA_EQ11 = 0.4573
 #: Range of L/R in which Li & Popov give the constants of Eq. 11.
-EQ11_RANGE = Interval("L/R", 5.0, np.inf, low_open=False, high_open=True)
+EQ11_RANGE = Interval("L/R", 5.0, np.inf, low_open=False, high_open=True, rtol=1e-12)
 
 _PUBLISHED = "published"
 _EQ11 = "eq11"
@@ -178,7 +178,7 @@ def _table_set(name, stem):
     prov["path"] = str(table.path)
     prov["table"] = stem
     return CoefficientSet(name=name, label=label,
-                          valid=Interval("L/R", float(q[0]), float(q[-1])),
+                          valid=Interval("L/R", float(q[0]), float(q[-1]), rtol=1e-12),
                           provenance=prov,
                           _alpha=CubicSpline(lq, a), _beta=CubicSpline(lq, b))
 

@@ -105,6 +105,11 @@ class Interval:
         ``*_open`` flag says otherwise explicitly (a rigid body may have E = inf).
     unit : str
         Unit of the quantity, e.g. ``"m"``, ``"Pa"``; empty for dimensionless.
+    rtol : float
+        Rounding allowance at finite ends: a value within ``rtol * |end|`` outside an
+        end counts as that end (and is returned as it), so that e.g. L/R computed as
+        (1.9 * 25e-3)/(1.9 * 5e-3) = 4.999999999999999 is accepted at a closed end 5.
+        Default 0 (exact).
 
     Examples
     --------
@@ -127,6 +132,7 @@ class Interval:
     low_open: bool = False
     high_open: bool = False
     unit: str = ""
+    rtol: float = 0.0
 
     def __str__(self):
         left = "(" if self.low_open else "["
@@ -153,10 +159,26 @@ class Interval:
 
         `name` overrides the interval's parameter name in the message.
         """
-        return check_interval(
-            name or self.name, value, self.low, self.high,
-            low_open=self.low_open, high_open=self.high_open, unit=self.unit, hint=hint,
-        )
+        if not self.rtol:
+            return check_interval(
+                name or self.name, value, self.low, self.high,
+                low_open=self.low_open, high_open=self.high_open, unit=self.unit,
+                hint=hint)
+        v = _as_float_array(name or self.name, value)
+        lo, hi = self.low, self.high
+        if np.isfinite(lo) and not self.low_open:
+            v = np.where((v < lo) & (v >= lo - self.rtol * abs(lo)), lo, v)
+        if np.isfinite(hi) and not self.high_open:
+            v = np.where((v > hi) & (v <= hi + self.rtol * abs(hi)), hi, v)
+        try:
+            return check_interval(
+                name or self.name, v, lo, hi, low_open=self.low_open,
+                high_open=self.high_open, unit=self.unit, hint=hint)
+        except OutOfRangeError:
+            # report the value as given, not as rounded
+            return check_interval(
+                name or self.name, value, lo, hi, low_open=self.low_open,
+                high_open=self.high_open, unit=self.unit, hint=hint)
 
 
 def _as_float_array(name, value):

@@ -274,3 +274,15 @@ def test_published_set_provenance():
     prov = coefficient_set("published").provenance
     assert prov["provenance"] == "published, Li & Popov 2017, Table 1"
     assert "doi:10.22190/FUME170222003L" in prov["source"]
+
+
+def test_L_over_R_at_a_range_end_survives_rounding():
+    """L/R computed with rounding just outside a closed end (within 1e-12 relative) counts
+    as the end: (1.902 * 25 mm)/(1.902 * 5 mm) < 5 still gets the Eq. 11 constants;
+    1e-9 outside is refused."""
+    q = (1.902029412465036 * 25e-3) / (1.902029412465036 * 5e-3)
+    assert q < 5.0
+    assert lipopov_coefficients(q, "eq11") == (math.pi / 2, 0.4573)
+    assert lipopov_coefficients(6.0 * (1 + 1e-13), "published")[1] == pytest.approx(0.5091)
+    with pytest.raises(OutOfRangeError):
+        lipopov_coefficients(5.0 * (1 - 1e-9), "eq11")

@@ -1,0 +1,254 @@
+"""The ContactModel interface shared by all models, the registry and the one-liners.
+
+Each test states the fact it checks in its docstring and assertion message.
+"""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+import linecontact
+from linecontact import models as mm
+from linecontact import tables as tb
+from linecontact.mdr import mdr_force
+from linecontact.models import (MODELS, ContactModel, get_model, register,
+                                standard_models)
+from linecontact.tables import read_table, write_table
+from linecontact.validity import OutOfRangeError
+
+E = 210e9 / (2 * (1 - 0.3**2))
+
+# A cylinder for which every model applies: L/R = 5 is inside Table 1 and Eq. 11.
+R5, L5 = 5e-3, 25e-3
+
+ALL = [("li-popov", dict(coefficients="published")), ("li-popov", dict(coefficients="eq11")),
+       ("puttock-thwaite", {}), ("johnson", dict(c=1.0)), ("johnson", dict(c=0.72)),
+       ("johnson", dict(c=0.572)), ("kunz", {}), ("palmgren", {}), ("iso16281", {})]
+IDS = [f"{k}{'-' + '-'.join(map(str, o.values())) if o else ''}" for k, o in ALL]
+DEPTHS = np.geomspace(1e-8, 1e-5, 7)   # m, well inside every model's range at R5, L5
+
+
+def _model(key, opts, R=R5, L=L5, estar=E):
+    return get_model(key, R, L, estar, **opts)
+
+
+# ---- the issue's sanity figures ----------------------------------------------------------
+def test_sanity_figures_steel_roller():
+    """Steel on steel (E = 210 GPa, nu = 0.3), R = 5 mm, L = 10 mm, F = 1 kN:
+    Li-Popov with Eq. 11 about 3.15 um, Puttock-Thwaite about 3.36 um, Palmgren about
+    3.05 um (issue 2). Eq. 11 is outside its L/R >= 5 range here, so it is asked for
+    explicitly (extrapolate=True); without that it is refused."""
+    estar = linecontact.effective_modulus(210e9, 0.3, 210e9, 0.3)
+    R, L, F = 5e-3, 10e-3, 1e3
+    eq11 = get_model("li-popov", R, L, estar, coefficients="eq11", extrapolate=True)
+    assert eq11.depth(F) == pytest.approx(3.15e-6, abs=0.005e-6)
+    assert get_model("puttock-thwaite", R, L, estar).depth(F) == pytest.approx(3.36e-6, abs=0.005e-6)
+    assert get_model("palmgren", R, L, estar).depth(F) == pytest.approx(3.05e-6, abs=0.005e-6)
+    with pytest.raises(OutOfRangeError, match=r"L/R = 2 is outside the valid range \[5, inf\)"):
+        get_model("li-popov", R, L, estar, coefficients="eq11").depth(F)
+
+
+# ---- laws every model obeys ----------------------------------------------------------------
+@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
+def test_depth_inverts_force(key, opts):
+    """Round trip: depth(force(d)) = d for every model."""
+    m = _model(key, opts)
+    np.testing.assert_allclose(m.depth(m.force(DEPTHS)), DEPTHS, rtol=1e-9)
+
+
+@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
+def test_stiffness_is_derivative_of_force(key, opts):
+    """k(d) = dF/dd (central difference) and k(F(d)) = k(d), for every model."""
+    m = _model(key, opts)
+    h = 1e-6 * DEPTHS
+    numeric = (m.force(DEPTHS + h) - m.force(DEPTHS - h)) / (2 * h)
+    k = m.stiffness(DEPTHS)
+    np.testing.assert_allclose(k, numeric, rtol=1e-6, err_msg="k = dF/dd")
+    np.testing.assert_allclose(m.stiffness_at_force(m.force(DEPTHS)), k, rtol=1e-9)
+    np.testing.assert_allclose(m.contact_radius(DEPTHS), k / (2 * E), rtol=1e-12,
+                               err_msg="MDR contact radius a = k/(2E*)")
+
+
+@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
+def test_force_and_stiffness_are_monotone(key, opts):
+    """F(d) increases strictly and k(d) does not decrease (F convex) for every model."""
+    m = _model(key, opts)
+    d = np.geomspace(1e-9, 1e-5, 60)
+    assert np.all(np.diff(m.force(d)) > 0)
+    assert np.all(np.diff(m.stiffness(d)) >= 0)
+
+
+@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
+@given(lam=st.floats(0.01, 100.0))
+def test_scaling_law(key, opts, lam):
+    """F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*, every model
+    (even Palmgren: F ~ (d L^0.8)^(1/0.9) scales as lambda^2)."""
+    d = 1e-6
+    F1 = _model(key, opts).force(d)
+    F2 = _model(key, opts, R=lam * R5, L=lam * L5).force(lam * d)
+    assert F2 == pytest.approx(lam**2 * F1, rel=1e-9)
+
+
+@pytest.mark.parametrize("key, opts", ALL[:6], ids=IDS[:6])
+def test_profile_reproduces_the_force_law_by_mdr(key, opts):
+    """For models with an MDR profile, 2E* int_0^a (d - g) dx of that profile equals the
+    model's F(d): profile and force law are one model."""
+    m = _model(key, opts)
+    for d in (1e-8, 1e-6):
+        assert mdr_force(d, m.profile, E, x_scale=L5) == pytest.approx(m.force(d), rel=1e-8)
+
+
+@pytest.mark.parametrize("key", ["kunz", "palmgren", "iso16281"])
+def test_empirical_laws_have_no_profile(key):
+    """Purely empirical laws raise NotImplementedError for profile()."""
+    with pytest.raises(NotImplementedError):
+        _model(key, {}).profile(1e-3)
+
+
+# ---- validity -----------------------------------------------------------------------------
+@pytest.mark.parametrize("arg, value", [("radius", -0.005), ("length", 0.0), ("estar", np.nan),
+                                        ("radius", np.inf)])
+def test_construction_refuses_bad_cylinder(arg, value):
+    """Non-positive or non-finite R, L, E* raise OutOfRangeError at construction, with
+    a message like 'radius = -0.005 m is outside the valid range (0, inf) m'."""
+    kw = dict(radius=R5, length=L5, estar=E)
+    kw[arg] = value
+    for key in MODELS:
+        if key == "universal":
+            continue
+        with pytest.raises(OutOfRangeError) as err:
+            get_model(key, **kw)
+        assert err.value.parameter == arg and err.value.valid.startswith("(0, inf)")
+    if arg == "radius" and value == -0.005:
+        assert str(err.value) == "radius = -0.005 m is outside the valid range (0, inf) m"
+
+
+@pytest.mark.parametrize("method, value", [("force", 0.0), ("force", -1e-6), ("depth", np.nan),
+                                           ("depth", -1.0), ("stiffness", np.inf)])
+def test_evaluations_refuse_bad_input(method, value):
+    """Non-positive or non-finite depth/force raise OutOfRangeError in every model: no NaN
+    is returned silently."""
+    for key, opts in ALL:
+        with pytest.raises(OutOfRangeError):
+            getattr(_model(key, opts), method)(value)
+
+
+def test_out_of_range_models_are_built_but_refuse_to_evaluate():
+    """L/R = 10 is outside Table 1 and an aluminium E* outside the steel formulas: the
+    models are built (so the CLI can list them), check_applicable and every evaluation
+    raise OutOfRangeError naming the parameter and range."""
+    pub = get_model("li-popov", 1e-3, 10e-3, E)
+    with pytest.raises(OutOfRangeError) as err:
+        pub.check_applicable()
+    assert err.value.parameter == "L/R" and err.value.valid == "[0.1, 6]"
+    with pytest.raises(OutOfRangeError):
+        pub.force(1e-6)
+    get_model("li-popov", 1e-3, 10e-3, E, coefficients="eq11").check_applicable()
+    alu = linecontact.effective_modulus(70e9, 0.33, 210e9, 0.3)
+    palm = get_model("palmgren", R5, L5, alu)
+    with pytest.raises(OutOfRangeError, match="steel"):
+        palm.check_applicable()
+    with pytest.raises(OutOfRangeError, match="estar"):
+        palm.depth(1e3)
+
+
+def test_li_popov_depth_bound_raises():
+    """A depth at or beyond beta L^2/R raises for the model (no clamping)."""
+    m = get_model("li-popov", R5, L5, E, coefficients="eq11")
+    with pytest.raises(OutOfRangeError, match="depth"):
+        m.force(0.4573 * L5**2 / R5)
+
+
+# ---- registry and one-liners ------------------------------------------------------------------
+def test_standard_models_order_and_labels():
+    """The CLI row set, in order: [universal], Li-Popov Table 1 spline, Eq. 11,
+    [regenerated], Puttock-Thwaite, Johnson c = 1, 0.72, 0.572, Kunz, Palmgren, ISO."""
+    rows = [m for m in standard_models(5e-3, 10e-3, E)
+            if m.key != "universal" and getattr(m, "coefficients", "") != "regenerated"]
+    assert [m.label for m in rows] == [
+        "Li-Popov (Table 1 spline)", "Li-Popov (Eq. 11)", "Puttock-Thwaite",
+        "Johnson (c = 1)", "Johnson (c = 0.72)", "Johnson (c = 0.572)", "Kunz (c = 0.175)",
+        "Palmgren", "ISO/TS 16281"]
+    for m in rows:
+        assert isinstance(m, ContactModel) and isinstance(m.provenance, dict)
+
+
+def test_regenerated_table_drops_in_without_code_change(tmp_path, monkeypatch):
+    """A tables/lipopov_regenerated.csv with the columns of Table 1 is used by name
+    (coefficients='regenerated') and joins standard_models after the Eq. 11 row."""
+    src = read_table("lipopov_published")
+    for name in ("lipopov_published", "lipopov_regenerated"):
+        cols = dict(src.columns)
+        if name == "lipopov_regenerated":
+            cols["beta"] = cols["beta"] * 1.01
+        write_table(tmp_path / f"{name}.csv", {**src.meta, "title": name}, cols)
+    monkeypatch.setattr(tb, "tables_dir", lambda: tmp_path)
+    m = get_model("li-popov", 5e-3, 10e-3, E, coefficients="regenerated")
+    assert m.label == "Li-Popov (regenerated table)"
+    assert m.alpha_beta[1] == pytest.approx(0.7936 * 1.01, rel=1e-12)
+    assert m.provenance["title"] == "lipopov_regenerated"
+    labels = [r.label for r in standard_models(5e-3, 10e-3, E) if r.key != "universal"]
+    assert labels[:3] == ["Li-Popov (Table 1 spline)", "Li-Popov (Eq. 11)",
+                          "Li-Popov (regenerated table)"]
+
+
+def test_unknown_model_key_lists_valid_keys():
+    """An unknown key raises OutOfRangeError listing the registered keys."""
+    with pytest.raises(OutOfRangeError) as err:
+        get_model("hertz", R5, L5, E)
+    for key in ("li-popov", "puttock-thwaite", "johnson", "kunz", "palmgren", "iso16281"):
+        assert repr(key) in err.value.valid
+
+
+def test_register_adds_a_model(monkeypatch):
+    """@register makes a ContactModel subclass available to get_model by its key."""
+    monkeypatch.setattr(mm, "MODELS", dict(MODELS))
+
+    @register
+    class Linear(ContactModel):
+        key = "test-linear"
+        label = "Linear"
+        provenance = {"equation": "F = E* L d"}
+
+        def force(self, depth):
+            return self.estar * self.length * np.asarray(depth)
+
+        def depth(self, force):
+            return np.asarray(force) / (self.estar * self.length)
+
+        def stiffness(self, depth):
+            return self.estar * self.length + 0 * np.asarray(depth)
+
+    m = get_model("test-linear", R5, L5, E)
+    assert m.force(1e-6) == pytest.approx(E * L5 * 1e-6)
+    assert m.contact_radius(1e-6) == pytest.approx(L5 / 2), "a = k/(2E*) by default"
+
+
+def test_top_level_one_liners_match_the_models():
+    """linecontact.force/depth/stiffness equal the model methods they wrap."""
+    m = get_model("li-popov", 5e-3, 10e-3, E)
+    assert linecontact.force(1e-6, 5e-3, 10e-3, E, model="li-popov") == m.force(1e-6)
+    assert linecontact.depth(1e3, 5e-3, 10e-3, E, model="li-popov") == m.depth(1e3)
+    assert linecontact.stiffness(1e-6, 5e-3, 10e-3, E, model="johnson", c=0.72) == \
+        get_model("johnson", 5e-3, 10e-3, E, c=0.72).stiffness(1e-6)
+    d = linecontact.depth(np.array([1e2, 1e3]), 5e-3, 10e-3, E, model="puttock-thwaite")
+    assert d.shape == (2,), "vectorised over force"
+
+
+def test_runtime_imports_only_numpy_and_scipy():
+    """Importing linecontact (and building every model) pulls in neither tools/, pandas
+    nor pint."""
+    code = ("import sys, linecontact; from linecontact.models import standard_models; "
+            "standard_models(5e-3, 1e-2, 1.15e11); "
+            "bad = [m for m in ('pandas', 'pint', 'tools') if m in sys.modules]; "
+            "assert not bad, bad")
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_version_is_a_string():
+    """__version__ comes from the installed metadata, or '0+unknown' in a bare checkout."""
+    assert isinstance(linecontact.__version__, str) and linecontact.__version__

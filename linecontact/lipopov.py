@@ -72,7 +72,8 @@ from scipy.interpolate import CubicSpline
 from scipy.special import lambertw
 
 from .tables import available_tables, read_table, table_path
-from .validity import (Interval, OutOfRangeError, check_interval, check_positive, out)
+from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
+                       document, out)
 
 __all__ = [
     "ALPHA_EQ11",
@@ -237,6 +238,7 @@ def coefficient_set(name="published"):
     return _CACHE[key]
 
 
+@document(EQ11=EQ11_RANGE)
 def lipopov_coefficients(length_over_radius, coefficients="published", *,
                          extrapolate=False):
     """alpha and beta of Eq. 9 for a cylinder of aspect ratio L/R.
@@ -256,6 +258,14 @@ def lipopov_coefficients(length_over_radius, coefficients="published", *,
     -------
     alpha, beta : float or ndarray
         [-]
+
+    Notes
+    -----
+    Ranges: ``"eq11"`` %(EQ11)s; ``"published"`` 0.1 <= L/R <= 6 (the rows of Table 1);
+    a table set from its smallest to its largest L/R row. Values within 1e-12 (relative)
+    of a range end count as the end (rounding of L/R). Table 1 and Eq. 11 disagree at
+    L/R = 5 and 6 (beta 0.5376, 0.5091 against 0.4573); the set is never switched for
+    you.
 
     Examples
     --------

@@ -63,6 +63,7 @@ class OutOfRangeError(ValueError):
         self.valid = valid
         self.unit = unit
         self.hint = hint
+        self.where = where
         if isinstance(value, (float, int, np.floating, np.integer)):
             shown = f"{float(value):.6g}"
         else:
@@ -76,11 +77,12 @@ class OutOfRangeError(ValueError):
         super().__init__(msg)
 
     def __reduce__(self):  # keep picklable despite the keyword-only arguments
-        return (_rebuild, (self.parameter, self.value, self.valid, self.unit, self.hint))
+        return (_rebuild, (self.parameter, self.value, self.valid, self.unit, self.hint,
+                           self.where))
 
 
-def _rebuild(parameter, value, valid, unit, hint):
-    return OutOfRangeError(parameter, value, valid, unit=unit, hint=hint)
+def _rebuild(parameter, value, valid, unit, hint, where):
+    return OutOfRangeError(parameter, value, valid, unit=unit, hint=hint, where=where)
 
 
 def _fmt(x):

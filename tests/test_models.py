@@ -252,3 +252,36 @@ def test_runtime_imports_only_numpy_and_scipy():
 def test_version_is_a_string():
     """__version__ comes from the installed metadata, or '0+unknown' in a bare checkout."""
     assert isinstance(linecontact.__version__, str) and linecontact.__version__
+
+
+# ---- the error and the ranges themselves ---------------------------------------------------
+def test_out_of_range_error_message_and_attributes():
+    """OutOfRangeError is a ValueError carrying parameter, value and valid range; its
+    message reads 'NAME = VALUE UNIT is outside the valid range RANGE[; hint]' and it
+    survives pickling (e.g. from worker processes)."""
+    import pickle
+    from linecontact.validity import check_interval, check_positive
+    with pytest.raises(OutOfRangeError) as err:
+        check_positive("force", [1.0, -2.0], "N", hint="loads push")
+    e = err.value
+    assert isinstance(e, ValueError)
+    assert (e.parameter, e.value, e.valid) == ("force", -2.0, "(0, inf) N")
+    assert str(e) == ("force = -2 N (element [1] of shape (2,)) is outside the valid "
+                      "range (0, inf) N; loads push")
+    assert str(pickle.loads(pickle.dumps(e))) == str(e)
+    with pytest.raises(OutOfRangeError, match=r"depth = 3 m .* \(0, 2\) m"):
+        check_interval("depth", [1.0, 3.0], 0.0, [2.0, 2.0], low_open=True,
+                       high_open=True, unit="m")
+
+
+def test_interval_renders_and_checks():
+    """An Interval renders as '[lo, hi)' with its unit and as an inequality for docs, and
+    its check() is what the formulas enforce (NaN is never inside)."""
+    from linecontact.validity import POISSON_RATIO, Interval
+    assert str(POISSON_RATIO) == "[0, 0.5)"
+    assert POISSON_RATIO.describe() == "0 <= poisson < 0.5"
+    iv = Interval("radius", 0.0, np.inf, True, True, "m")
+    assert str(iv) == "(0, inf) m" and iv.describe() == "0 < radius < inf m"
+    assert list(iv.contains([1.0, 0.0, np.nan, np.inf])) == [True, False, False, False]
+    with pytest.raises(OutOfRangeError, match="radius = nan m"):
+        iv.check(np.nan)

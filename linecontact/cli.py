@@ -253,52 +253,87 @@ def _effective_modulus(e1, nu1, e2, nu2):
 # models and evaluation
 
 
-def _select_models(spec, case, default_only=False):
-    """The models for one case: ``spec`` is None (standard set, or the default model
-    when ``default_only``), 'all', or comma-separated keys."""
-    from . import models
+def _select_models(specs, case, *, first_only=False):
+    """The models for one case.
 
-    r, l, e = case["radius"], case["length"], case["estar"]
-    if spec is None and default_only:
-        spec = models.DEFAULT_MODEL
-    if spec is None or spec == "all":
-        return list(models.standard_models(r, l, e))
+    ``specs`` is None (the standard set of :func:`linecontact.models.standard_models`,
+    or only its first model, the default best estimate, when ``first_only``) or the
+    list from :func:`_parse_model_option`. A model that refuses the case when it is
+    built stands in as :class:`_Refused`, so that its row carries the reason.
+    """
+    from . import models
     from .validity import OutOfRangeError
 
+    r, l, e = case["radius"], case["length"], case["estar"]
+    if specs is None:
+        standard = list(models.standard_models(r, l, e))
+        return standard[:1] if first_only else standard
     chosen = []
-    for key in _model_keys(spec):
+    for text, key, options in specs:
         try:
-            chosen.append(models.get_model(key, r, l, e))
+            chosen.append(models.get_model(key, r, l, e, **options))
         except OutOfRangeError as exc:  # refused for this case: a row with a note
-            chosen.append(_Refused(key, exc))
+            chosen.append(_Refused(text, exc))
+        except TypeError as exc:  # an option the model does not take
+            from ._units import InputError
+
+            raise InputError("--model", text, "options the model takes (see its docstring)", str(exc)) from None
     return chosen
 
 
 class _Refused:
     """Stands in for a model that refused the case when it was built."""
 
-    def __init__(self, key, exc):
-        self.key = key
-        self.label = key
+    def __init__(self, text, exc):
+        self.key = text
+        self.label = text
         self.provenance = None
         self.exc = exc
 
 
-def _model_keys(spec):
-    """Split and check a --model value; raises InputError naming the valid keys."""
+def _parse_model_option(spec):
+    """Parse ``--model``: None or 'all' (standard set) or ``KEY[:OPT=VALUE...]``, comma-separated.
+
+    Returns None for the standard set, else a list of (text, key, options); raises
+    InputError naming the valid keys for an unknown one.
+
+    Examples
+    --------
+    >>> _parse_model_option("johnson:c=0.72")
+    [('johnson:c=0.72', 'johnson', {'c': 0.72})]
+    """
+    if spec is None or spec.strip() == "all":
+        return None
     from . import models
     from ._units import InputError
 
-    if spec is None or spec == "all":
-        return None
-    keys = [k.strip() for k in spec.split(",") if k.strip()]
-    valid = sorted(models.MODELS)
-    for key in keys:
+    valid = "all, or comma-separated KEY[:OPTION=VALUE...] with KEY one of: " + ", ".join(
+        models.available_models()
+    )
+    parsed = []
+    for text in (t.strip() for t in spec.split(",")):
+        if not text:
+            raise InputError("--model", spec, valid, "empty model name")
+        key, *opts = text.split(":")
         if key not in models.MODELS:
-            raise InputError("--model", key, "all, or one or more of: " + ", ".join(valid), "unknown model")
-    if not keys:
-        raise InputError("--model", spec, "all, or one or more of: " + ", ".join(valid), "empty")
-    return keys
+            raise InputError("--model", text, valid, "unknown model")
+        options = {}
+        for opt in opts:
+            name, eq, value = opt.partition("=")
+            if not eq or not name.strip():
+                raise InputError("--model", text, valid, f"option {opt!r} is not OPTION=VALUE")
+            try:
+                options[name.strip()] = float(value)
+            except ValueError:
+                options[name.strip()] = value.strip()
+        parsed.append((text, key, options))
+    return parsed
+
+
+def _model_id(model):
+    """A short column-safe name for one row set: the label as a slug
+    ('Johnson (c = 0.72)' -> 'johnson-c-0.72')."""
+    return re.sub(r"[^a-z0-9.]+", "-", model.label.lower()).strip("-")
 
 
 def _hertz_half_width(force, case):
@@ -394,7 +429,7 @@ def _render_table(case, results, si):
     for model, rows in results:
         for row in rows:
             body.append(
-                [model.key]
+                [model.label]
                 + [_fmt(_scale(f, row[f], si)) for f in fields]
                 + [row["note"]]
             )
@@ -403,9 +438,6 @@ def _render_table(case, results, si):
     for r in [header] + body:
         cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
         lines.append("  ".join(cells + [r[-1]]).rstrip())
-    labels = list(dict.fromkeys((m.key, m.label) for m, _ in results))
-    lines.append("")
-    lines.extend(f"  {key}: {label}" for key, label in labels)
     return "\n".join(lines) + "\n"
 
 
@@ -414,7 +446,12 @@ def _nan_to_none(v):
 
 
 def _model_json(model):
-    return {"key": model.key, "label": model.label, "provenance": _jsonable(getattr(model, "provenance", None))}
+    return {
+        "key": model.key,
+        "label": model.label,
+        "id": _model_id(model),
+        "provenance": _jsonable(getattr(model, "provenance", None)),
+    }
 
 
 def _jsonable(obj):
@@ -480,8 +517,7 @@ def _write(text, path):
 def _calc_one(args, argv):
     raw = {name: getattr(args, name) for name in CASE_PARAMETERS}
     case = _parse_case(raw, linear=args.linear)
-    _model_keys(args.model)  # check the keys before building anything
-    results = _compute(case, _select_models(args.model, case))
+    results = _compute(case, _select_models(_parse_model_option(args.model), case))
     if args.json:
         _write(_render_json(case, results, argv), args.output)
     else:
@@ -529,12 +565,10 @@ def _calc_batch(args, argv):
             f"{args.csv!r}: no case columns; expected some of: " + ", ".join(CASE_PARAMETERS)
         )
         return 2
-    keys = _model_keys(args.model)
-    if keys is None and args.model is None:
-        from . import models
-
-        keys = [models.DEFAULT_MODEL]
-    multi = keys is None or len(keys) > 1
+    specs = _parse_model_option(args.model)
+    # default: the first of the standard set (the universal curve when installed)
+    first_only = args.model is None
+    multi = not first_only and (specs is None or len(specs) > 1)
 
     si = args.si or args.json  # JSON is always SI
     names = _batch_columns(si)
@@ -550,7 +584,7 @@ def _calc_batch(args, argv):
         out = {}
         try:
             case = _parse_case(raw, allow_sweep=False, label=lambda n: n)
-            results = _compute(case, _select_models(",".join(keys) if keys else "all", case))
+            results = _compute(case, _select_models(specs, case, first_only=first_only))
         except InputError as exc:
             n_failed += 1
             out["error"] = str(exc)
@@ -558,11 +592,11 @@ def _calc_batch(args, argv):
             continue
         out["estar_" + _unit("estar", si)] = _scale("estar", case["estar"], si)
         for model, rows in results:
-            models_seen[model.key] = model
+            models_seen[_model_id(model)] = model
             row = rows[0]
-            sfx = f"_{model.key}" if multi else ""
+            sfx = f"_{_model_id(model)}" if multi else ""
             if not multi:
-                out["model"] = model.key
+                out["model"] = model.label
             for f in RESULT_FIELDS:
                 out[names[f] + sfx] = _scale(f, row[f], si)
             out["note" + sfx] = row["note"]

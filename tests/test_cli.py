@@ -1,0 +1,403 @@
+"""Tests of the installed ``linecontact`` command (``linecontact calc``).
+
+They run the console script next to ``sys.executable`` in a subprocess, as a user
+would; install the package first (``pip install .`` or ``pip install -e .``).
+Every command is started once, all of them in parallel at the start of the module
+(the start-up of Python, numpy and scipy dominates), and each test then reads the
+result of the command it names.
+"""
+
+from __future__ import annotations
+
+import csv
+import functools
+import io
+import json
+import math
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+EXE = Path(sys.executable).parent / "linecontact"
+DATA = Path(__file__).parent / "data"
+EXAMPLES = Path(__file__).parent.parent / "examples"
+
+STEEL = ["--modulus", "210GPa", "--poisson", "0.3"]
+CASE = ["calc", "--radius", "5mm", "--length", "10mm", *STEEL]
+ONE = [*CASE, "--load", "1kN"]
+SI_ONE = ["calc", "--radius", "0.005", "--length", "0.01", "--modulus", "2.1e11", "--poisson", "0.3", "--load", "1000"]
+
+IMPORTTIME = ["-X", "importtime", "-m", "linecontact"]
+
+#: name -> argv of every command the tests look at (run in parallel, once). Each costs
+#: a Python start-up with numpy and scipy, so related facts share a command.
+COMMANDS = {
+    "one": ONE,
+    "one_json": [*ONE, "--json"],
+    # python -m linecontact, with -X importtime: what a one-case call imports
+    "units_importtime": [*IMPORTTIME, *ONE],
+    "bare_json_importtime": [*IMPORTTIME, *SI_ONE, "--json"],
+    "inch_json": ["calc", "--radius", "0.19685039in", "--length", "0.3937008 in", *STEEL, "--load", "224.80894 lbf", "--json"],
+    "two_bodies_json": [*CASE, "--modulus2", "210GPa", "--poisson2", "0.3", "--load", "1kN", "--json"],
+    "depth_json": [*CASE, "--depth", "2um", "--json"],
+    "depth_sweep_si": [*CASE, "--depth", "1um:4um:3", "--si"],
+    "sweep_geom_json": [*CASE, "--load", "0.1kN:10kN:5", "--json"],
+    "sweep_lin_json": [*CASE, "--load", "100N:500N:5", "--linear", "--json"],
+    "batch": ["calc", str(EXAMPLES / "cases.csv")],
+    "batch_all_json": ["calc", str(EXAMPLES / "cases.csv"), "--model", "all", "--json"],
+    "batch_bad": ["calc", str(DATA / "bad_rows.csv")],
+    "batch_defaults": ["calc", str(DATA / "loads_only.csv"), "--radius", "5mm", "--length", "10mm", *STEEL],
+    # error paths: each must be one line on stderr, exit status 2
+    "err_bad_unit": [*CASE, "--load", "1 kilofoo"],
+    "err_wrong_dimension": ["calc", "--radius", "5N", "--length", "10mm", *STEEL, "--load", "1kN"],
+    "err_negative": ["calc", "--radius", "-5mm", "--length", "10mm", *STEEL, "--load", "1kN"],
+    "err_negative_eq": ["calc", "--radius=-5mm", "--length", "10mm", *STEEL, "--load", "1kN"],
+    "err_no_load": CASE,
+    "err_load_and_depth": [*CASE, "--load", "1kN", "--depth", "1um"],
+    "err_missing_radius": ["calc", "--length", "10mm", *STEEL, "--load", "1kN"],
+    "err_no_poisson": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--load", "1kN"],
+    "err_poisson_range": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.7", "--load", "1kN"],
+    "err_estar_and_modulus": [*CASE, "--estar", "100GPa", "--load", "1kN"],
+    "err_modulus2_alone": [*CASE, "--modulus2", "70GPa", "--load", "1kN"],
+    "err_sweep_fields": [*CASE, "--load", "1kN:2kN"],
+    "err_unknown_model": [*ONE, "--model", "nosuchmodel"],
+    "err_unknown_option": [*ONE, "--radious", "5mm"],
+    "err_no_file": ["calc", str(DATA / "missing.csv")],
+    "err_no_columns": ["calc", str(DATA / "no_case_columns.csv")],
+}
+
+#: error command -> (parameter named in the message, value shown in it)
+ERRORS = {
+    "err_bad_unit": ("--load", "1 kilofoo"),
+    "err_wrong_dimension": ("--radius", "5N"),
+    "err_negative": ("--radius", "-5mm"),
+    "err_negative_eq": ("--radius", "-5mm"),
+    "err_no_load": ("--load", ""),
+    "err_load_and_depth": ("--load", "1kN"),
+    "err_missing_radius": ("--radius", ""),
+    "err_no_poisson": ("--poisson", ""),
+    "err_poisson_range": ("--poisson", "0.7"),
+    "err_estar_and_modulus": ("--modulus", "210GPa"),
+    "err_modulus2_alone": ("--poisson2", ""),
+    "err_sweep_fields": ("--load", "1kN:2kN"),
+    "err_unknown_model": ("--model", "nosuchmodel"),
+    "err_unknown_option": ("--radious", ""),
+    "err_no_file": ("missing.csv", ""),
+    "err_no_columns": ("no_case_columns.csv", ""),
+}
+
+
+def _run(argv, **kw):
+    cmd = [sys.executable, *argv] if argv[0].startswith("-") else [str(EXE), *argv]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=120, **kw)
+
+
+@pytest.fixture(scope="module")
+def results():
+    if not EXE.exists():
+        pytest.fail(
+            f"the console script {EXE} is not installed; run `pip install -e .` "
+            "(or `pip install .`) in this environment first",
+            pytrace=False,
+        )
+    with ThreadPoolExecutor(max_workers=8) as pool:
+        futures = {name: pool.submit(_run, argv) for name, argv in COMMANDS.items()}
+        return {name: f.result() for name, f in futures.items()}
+
+
+def _ok(results, name):
+    r = results[name]
+    assert r.returncode == 0, f"{name} failed (status {r.returncode}):\n{r.stderr}"
+    return r
+
+
+def _json(results, name):
+    return json.loads(_ok(results, name).stdout)
+
+
+def _library(radius=0.005, length=0.01, estar=210e9 / (1 - 0.3**2)):
+    """The models the CLI should report, built in-process from SI inputs."""
+    from linecontact import models
+
+    return models.standard_models(radius, length, estar)
+
+
+@functools.lru_cache(maxsize=None)
+def _quantity():
+    import pint
+
+    return pint.UnitRegistry().Quantity
+
+
+def _si_case(row):
+    """(R, L, E*) in SI of a row of examples/cases.csv, by hand (not by the CLI)."""
+    q = _quantity()
+    R = q(row["radius"]).to("m").magnitude
+    L = q(row["length"]).to("m").magnitude
+    if row["estar"]:
+        return R, L, q(row["estar"]).to("Pa").magnitude
+    inv = (1 - float(row["poisson"]) ** 2) / q(row["modulus"]).to("Pa").magnitude
+    if row["modulus2"]:
+        inv += (1 - float(row["poisson2"]) ** 2) / q(row["modulus2"]).to("Pa").magnitude
+    return R, L, 1 / inv
+
+
+def _close(a, b, rtol=1e-9):
+    if a is None or b is None:
+        return a is b
+    return math.isclose(a, b, rel_tol=rtol, abs_tol=0.0)
+
+
+# ---------------------------------------------------------------------------------------
+# one case
+
+
+def test_table_has_one_row_per_standard_model_in_library_order(results):
+    """One case prints one row per model of standard_models(), in its order (default
+    best estimate first), and nothing on stderr."""
+    r = _ok(results, "one")
+    labels = [m.label for m in _library()]
+    lines = r.stdout.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("model"))
+    rows = lines[head + 1 :]
+    assert len(rows) == len(labels)
+    for row, label in zip(rows, labels):
+        assert row.startswith(label + " "), (row, label)
+    assert r.stderr == ""
+
+
+def test_table_columns_are_in_engineering_units_by_default_and_si_on_request(results):
+    """Default output is kN, um, N/um, GPa; --si gives N, m, N/m, Pa."""
+    eng = _ok(results, "one").stdout
+    si = _ok(results, "depth_sweep_si").stdout
+    for unit in ("[kN]", "[um]", "[N/um]", "GPa"):
+        assert unit in eng
+    for unit in ("[N]", "[m]", "[N/m]", "Pa"):
+        assert unit in si
+
+
+def test_json_results_equal_the_library_called_with_si_inputs(results):
+    """The command converts units and hands SI to the library: its depth, stiffness and
+    MDR radius at F = 1 kN equal those of the models built in-process (R = 5 mm,
+    L = 10 mm, E* = 210 GPa / (1 - 0.3^2) by Eq. 3 with a rigid cylinder)."""
+    from linecontact.validity import OutOfRangeError
+
+    doc = _json(results, "one_json")
+    assert math.isclose(doc["inputs"]["estar"], 210e9 / (1 - 0.09), rel_tol=1e-12)
+    assert [m["label"] for m in doc["models"]] == [m.label for m in _library()]
+    for model, entry in zip(_library(), doc["models"]):
+        row = entry["rows"][0]
+        assert row["force"] == 1000.0
+        try:
+            depth = float(model.depth(1000.0))
+        except OutOfRangeError:
+            assert row["note"] and row["depth"] is None, model.key
+            continue
+        assert _close(row["depth"], depth), model.key
+        assert _close(row["stiffness"], float(model.stiffness_at_force(1000.0))), model.key
+
+
+def test_json_carries_version_units_and_provenance(results):
+    """--json states the package version, SI units, and every model's provenance."""
+    import linecontact
+
+    doc = _json(results, "one_json")
+    assert doc["linecontact_version"] == linecontact.__version__
+    assert doc["units"]["depth"] == "m" and doc["units"]["stiffness"] == "N/m"
+    for model, entry in zip(_library(), doc["models"]):
+        assert entry["provenance"] == json.loads(json.dumps(model.provenance)), entry["label"]
+
+
+def test_bare_numbers_are_si_and_unit_strings_convert(results):
+    """'5mm' equals the bare SI number 0.005, and inch/lbf inputs convert to the same
+    case (0.19685039 in = 5 mm, 224.80894 lbf = 1 kN, to 8 digits)."""
+    with_units = _json(results, "one_json")["models"]
+    bare = _json(results, "bare_json_importtime")["models"]
+    inch = _json(results, "inch_json")["models"]
+    for a, b, c in zip(with_units, bare, inch):
+        for ra, rb, rc in zip(a["rows"], b["rows"], c["rows"]):
+            assert _close(ra["depth"], rb["depth"], 1e-12), a["label"]
+            assert _close(ra["depth"], rc["depth"], 1e-6), a["label"]
+
+
+def test_second_body_follows_eq3(results):
+    """Two equal steel bodies halve E* of a steel half-space under a rigid cylinder
+    (Eq. 3)."""
+    two = _json(results, "two_bodies_json")["inputs"]["estar"]
+    one = _json(results, "one_json")["inputs"]["estar"]
+    assert math.isclose(two, one / 2, rel_tol=1e-12)
+
+
+def test_depth_input_gives_force_and_depth_column_first(results):
+    """With --depth each model returns the force at that depth (its force(d)), and the
+    table's first value column is d."""
+    from linecontact.validity import OutOfRangeError
+
+    doc = _json(results, "depth_json")
+    for model, entry in zip(_library(), doc["models"]):
+        row = entry["rows"][0]
+        assert row["depth"] == 2e-6
+        try:
+            force = float(model.force(2e-6))
+        except OutOfRangeError:
+            assert row["note"], model.label
+            continue
+        assert _close(row["force"], force), model.label
+    header = next(line for line in _ok(results, "depth_sweep_si").stdout.splitlines() if line.startswith("model"))
+    assert header.split()[1] == "d"
+
+
+def _imported(stderr):
+    """Top-level package names in a `python -X importtime` log."""
+    return {line.split("|")[-1].strip().split(".")[0] for line in stderr.splitlines() if line.startswith("import time:")}
+
+
+def test_python_dash_m_is_the_same_command(results):
+    """`python -m linecontact` prints exactly what the console script prints."""
+    assert _ok(results, "units_importtime").stdout == _ok(results, "one").stdout
+
+
+def test_one_case_imports_pint_only_for_unit_strings_and_never_pandas(results):
+    """Start-up: a one-case call in bare SI numbers loads neither pint nor pandas; a
+    call with unit strings loads pint, still no pandas."""
+    bare = _imported(_ok(results, "bare_json_importtime").stderr)
+    units = _imported(_ok(results, "units_importtime").stderr)
+    assert "linecontact" in bare and "numpy" in bare  # the log is really there
+    assert "pint" not in bare and "pandas" not in bare
+    assert "pint" in units and "pandas" not in units
+
+
+# ---------------------------------------------------------------------------------------
+# sweeps
+
+
+def test_sweep_is_geometric_by_default(results):
+    """--load 0.1kN:10kN:5 gives 5 loads per model with equal ratios (10^0.5), both
+    ends included."""
+    doc = _json(results, "sweep_geom_json")
+    expected = [100 * 10 ** (i / 2) for i in range(5)]
+    for entry in doc["models"]:
+        forces = [row["force"] for row in entry["rows"]]
+        assert all(math.isclose(f, e, rel_tol=1e-12) for f, e in zip(forces, expected))
+        assert len(forces) == 5
+
+
+def test_sweep_is_linear_with_flag(results):
+    """--linear spaces the sweep evenly: 100, 200, ..., 500 N."""
+    doc = _json(results, "sweep_lin_json")
+    for entry in doc["models"]:
+        assert [row["force"] for row in entry["rows"]] == pytest.approx([100, 200, 300, 400, 500])
+
+
+def test_sweep_table_has_a_row_per_value_per_model(results):
+    """A 3-point sweep prints 3 rows for every model."""
+    out = _ok(results, "depth_sweep_si").stdout.splitlines()
+    for model in _library():
+        assert sum(1 for line in out if line.startswith(model.label + " ")) == 3, model.label
+
+
+def test_stiffness_grows_with_load_in_a_sweep(results):
+    """Line contact stiffens with load: k increases along a load sweep for every model
+    that covers it."""
+    for entry in _json(results, "sweep_geom_json")["models"]:
+        ks = [row["stiffness"] for row in entry["rows"] if row["stiffness"] is not None]
+        assert all(b >= a for a, b in zip(ks, ks[1:])), entry["key"]
+
+
+# ---------------------------------------------------------------------------------------
+# batch
+
+
+def _csv(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_batch_keeps_rows_and_appends_results_of_the_default_model(results):
+    """A batch writes every input row, its cells unchanged, with result columns
+    appended, computed by the default best estimate (the first standard model), and
+    E* from Eq. 3 or as given."""
+    rows = _csv(_ok(results, "batch").stdout)
+    with open(EXAMPLES / "cases.csv", newline="") as fh:
+        inputs = list(csv.DictReader(fh))
+    assert len(rows) == len(inputs)
+    for out, inp in zip(rows, inputs):
+        assert {k: out[k] for k in inp} == inp
+        first = _library(*_si_case(inp))[0]
+        assert out["model"] == first.label
+        assert out["error"] == ""
+        assert math.isclose(float(out["estar_GPa"]) * 1e9, _si_case(inp)[2], rel_tol=1e-5)
+        for col in ("force_kN", "depth_um", "stiffness_N_per_um", "half_width_um", "contact_radius_um"):
+            assert col in out
+
+
+def test_batch_output_file(tmp_path):
+    """-o FILE writes the CSV to FILE and nothing to stdout."""
+    target = tmp_path / "out.csv"
+    r = _run(["calc", str(EXAMPLES / "cases.csv"), "-o", str(target)])
+    assert r.returncode == 0, r.stderr
+    assert r.stdout == ""
+    assert len(_csv(target.read_text())) == len(_csv((EXAMPLES / "cases.csv").read_text()))
+
+
+def test_batch_all_models_json_has_a_column_set_per_model_and_si(results):
+    """--model all in a batch gives columns suffixed with each model's id (its label as
+    a slug); --json is SI and lists the models with their provenance."""
+    doc = _json(results, "batch_all_json")
+    keys = [m["id"] for m in doc["models"]]
+    assert doc["units"]["depth"] == "m"
+    assert all("provenance" in m for m in doc["models"])
+    for row in doc["rows"]:
+        if row["error"]:
+            continue
+        for key in keys:
+            assert f"depth_m_{key}" in row and f"note_{key}" in row
+
+
+def test_batch_bad_rows_fail_alone_and_say_why(results):
+    """Bad rows get an `error` naming the column, the others are still computed, and
+    the command exits with status 2 and one line on stderr."""
+    r = results["batch_bad"]
+    assert r.returncode == 2
+    assert len(r.stderr.strip().splitlines()) == 1 and "Traceback" not in r.stderr
+    rows = {row["name"]: row for row in _csv(r.stdout)}
+    assert rows["good"]["error"] == "" and float(rows["good"]["depth_um"]) > 0
+    assert rows["good after bad"]["error"] == ""
+    assert "radius" in rows["length given in N"]["error"] or "length" in rows["length given in N"]["error"]
+    assert "length" in rows["length given in N"]["error"] and "5N" in rows["length given in N"]["error"]
+    assert "radius" in rows["negative radius"]["error"] and "-1mm" in rows["negative radius"]["error"]
+    assert "load" in rows["no load"]["error"]
+    assert "load" in rows["sweep in a row"]["error"]
+    assert "foo" in rows["bad unit"]["error"]
+
+
+def test_batch_options_fill_missing_columns(results):
+    """Options on the command line fill columns the CSV lacks (here R, L, E, nu)."""
+    rows = _csv(_ok(results, "batch_defaults").stdout)
+    assert len(rows) == 3 and all(row["error"] == "" for row in rows)
+
+
+# ---------------------------------------------------------------------------------------
+# bad input
+
+
+@pytest.mark.parametrize("name", sorted(ERRORS))
+def test_bad_input_is_one_line_naming_parameter_value_and_range(results, name):
+    """Bad input: exit status 2, no traceback, nothing on stdout, and exactly one line
+    on stderr that names the parameter and the value as typed."""
+    r = results[name]
+    parameter, value = ERRORS[name]
+    assert r.returncode == 2, (name, r.returncode, r.stderr)
+    assert "Traceback" not in r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1, r.stderr
+    assert parameter in lines[0] and value in lines[0], lines[0]
+    assert r.stdout == ""
+
+
+@pytest.mark.parametrize("name", [n for n in sorted(ERRORS) if n.startswith("err_") and n not in {"err_unknown_option", "err_no_file", "err_no_columns"}])
+def test_bad_input_message_states_the_valid_range(results, name):
+    """Every message about a value says what would have been valid."""
+    assert "valid:" in results[name].stderr

@@ -57,8 +57,8 @@ CASE_PARAMETERS = {
     "modulus2": ("pressure", "Young's modulus E2 of the cylinder (default: rigid)"),
     "poisson2": ("dimensionless", "Poisson's ratio nu2 of the cylinder"),
     "estar": ("pressure", "effective modulus E* of Eq. 3 (instead of the moduli)"),
-    "load": ("force", "normal force F"),
-    "depth": ("length", "indentation depth d (rigid-body approach)"),
+    "load": ("force", "normal force F, or a sweep START:STOP:N"),
+    "depth": ("length", "indentation depth d (rigid-body approach), or a sweep START:STOP:N"),
 }
 
 
@@ -123,8 +123,8 @@ def _build_parser():
         epilog="Sweeps: --load START:STOP:N (or --depth) gives N values from START to STOP, "
         "both included, spaced geometrically (equal ratios: right for loads over decades); "
         "--linear spaces them evenly. Batch: FILE.csv holds one case per row with columns "
-        "named like the options; results are appended as columns for the default model "
-        "unless --model names others. Exit status 2 on bad input.",
+        "named like the options; results are appended as columns for the default best "
+        "estimate unless --model names others. Exit status 2 on bad input.",
     )
     calc.add_argument("csv", nargs="?", metavar="FILE.csv", help="batch: one case per row")
     for name, (kind, text) in CASE_PARAMETERS.items():
@@ -134,9 +134,10 @@ def _build_parser():
     )
     calc.add_argument(
         "--model",
-        metavar="KEY[,KEY...]",
-        help="only these models ('all' for every standard model); batch default: the "
-        "default model",
+        metavar="KEY[:OPT=VAL][,...]",
+        help="only these models, e.g. 'li-popov:coefficients=eq11,johnson:c=0.72'; 'all' "
+        "for the standard set. Default: the standard set for one case, its first model "
+        "(the default best estimate) in a batch",
     )
     calc.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")
     calc.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
@@ -546,7 +547,10 @@ def _calc_batch(args, argv):
     from ._units import InputError
 
     try:
-        table = pd.read_csv(args.csv, dtype=str, keep_default_na=False, skipinitialspace=True)
+        table = pd.read_csv(
+            args.csv, dtype=str, keep_default_na=False, skipinitialspace=True,
+            encoding="utf-8-sig",  # spreadsheets often write a byte-order mark
+        )
     except FileNotFoundError:
         hint = "" if args.csv.lower().endswith(".csv") else (
             " (a value with a space must be quoted, e.g. --radius '5 mm')"

@@ -114,7 +114,11 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
     """
     dim, si, examples = DIMENSIONS[kind]
     what = "a number" if kind == "dimensionless" else f"a {kind}"
-    valid = bounds[1] if bounds else f"{what} > 0 (e.g. {examples})" if positive else f"{what} (e.g. {examples})"
+    valid = (
+        bounds[1]
+        if bounds
+        else f"{what} > 0 (e.g. {examples})" if positive else f"{what} (e.g. {examples})"
+    )
     raw = text
     text = str(text).strip()
     value = _bare_float(text)
@@ -122,22 +126,29 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
         if not text:
             raise InputError(parameter, raw, valid, "empty value")
         if not _NUMBER_FIRST.match(text):
-            raise InputError(parameter, raw, valid, "expected a number, optionally followed by a unit")
+            raise InputError(
+                parameter, raw, valid, "expected a number, optionally followed by a unit"
+            )
         ureg = _registry()
         try:
             q = ureg.Quantity(text)
         except Exception as exc:  # pint raises several unrelated types (incl. AssertionError)
             detail = str(exc).strip() or type(exc).__name__
-            raise InputError(parameter, raw, valid, f"cannot read it as a quantity ({detail})") from None
+            raise InputError(
+                parameter, raw, valid, f"cannot read it as a quantity ({detail})"
+            ) from None
         if kind == "dimensionless":
             if not q.dimensionless:
-                raise InputError(parameter, raw, valid, f"expected a pure number, got units of {q.dimensionality}")
+                raise InputError(
+                    parameter,
+                    raw,
+                    valid,
+                    f"expected a pure number, got units of {q.dimensionality}",
+                )
             value = float(q.to("dimensionless").magnitude)
         else:
             if not q.check(dim):
-                raise InputError(
-                    parameter, raw, valid, f"expected {what}, got {_describe_dim(q)}"
-                )
+                raise InputError(parameter, raw, valid, f"expected {what}, got {_describe_dim(q)}")
             value = float(q.to(si).magnitude)
     if not math.isfinite(value):
         raise InputError(parameter, raw, valid, "not a finite number")

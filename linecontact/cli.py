@@ -9,6 +9,7 @@ Usage (``linecontact calc --help`` has the full list)::
     linecontact calc ... --load 100N:1kN:10 --linear   # sweep, linear spacing
     linecontact calc cases.csv -o results.csv          # batch, one case per row
     linecontact calc ... --json                        # machine-readable, SI
+    linecontact calc ... --model li-popov:coefficients=eq11,johnson:c=0.72
 
 Inputs
     Values may carry a unit ("5mm", "0.2 in", "210 GPa", "1kN"), parsed by pint and
@@ -17,21 +18,40 @@ Inputs
     effective modulus of Eq. 3 directly (E*, not E' = 2E*).
 
 Output
-    A table with one row per model (per load or depth of a sweep), in engineering units
-    (F in kN, lengths in um, stiffness in N/um, moduli in GPa), or SI with ``--si``.
-    ``--json`` is always SI and carries the package version and each table-backed
-    model's provenance.
+    A table with one row per model of :func:`linecontact.models.standard_models` (in its
+    order: the default best estimate first), or of ``--model``, and per value of a
+    sweep. Columns: the given F or d, the other one, the stiffness k = dF/dd, the Hertz
+    half-width b of Eq. 1 (at that F), the MDR contact half-length a = k/(2E*), and a
+    note with the model's own message when the case is outside its validity range (its
+    values are then "-"; the other rows are unaffected). Engineering units (F in kN,
+    lengths in um, k in N/um, moduli in GPa, R and L in mm), or SI with ``--si``.
+    ``--json`` is always SI and carries the package version, the command, and each
+    model's provenance (table metadata for the table-backed ones).
+
+Sweeps
+    ``--load START:STOP:N`` (or ``--depth``): N values from START to STOP, both
+    included, spaced geometrically (equal ratios, right for loads over decades);
+    ``--linear`` spaces them evenly.
 
 Batch
     ``linecontact calc FILE.csv`` reads one case per row (columns radius, length,
     modulus, poisson, modulus2, poisson2, estar, load, depth; cells may carry units;
     other columns are passed through; options given on the command line fill empty or
-    missing columns). It writes the same rows with result columns appended, for the
-    default model (``linecontact.models.DEFAULT_MODEL``) unless ``--model`` names
-    others. A row that cannot be computed keeps its place and says why in ``error``.
+    missing columns; header names are case-insensitive). It writes the same rows, cells
+    unchanged, with result columns appended: ``estar_GPa``, ``model``, ``force_kN``,
+    ``depth_um``, ``stiffness_N_per_um``, ``half_width_um``, ``contact_radius_um``,
+    ``note``, ``error`` (SI names such as ``depth_m`` with ``--si`` or ``--json``).
+    The model is the default best estimate, the first of the standard set (the
+    universal curve when installed, else Li-Popov Table 1), unless ``--model`` names
+    others; with several (or ``all``) each result column gets the model's id as a
+    suffix (``depth_um_johnson-c-0.72``). Result columns already in the file (a rerun
+    on its own output) are replaced. A row that cannot be computed keeps its place and
+    says why in ``error``; a row outside the model's range says so in ``note``.
 
 Exit status: 0 on success, 2 on bad input (one line on stderr naming the parameter,
-its value and the valid range; in a batch, when any row failed).
+its value and the valid range; in a batch, when any row failed, after writing all
+rows). A one-case call where no model covers the case prints the table and the first
+model's note on stderr, status 2.
 
 Nothing here runs at import; heavy modules (numpy, scipy, pandas, pint) are imported
 only by the code paths that need them, so a one-case call starts quickly.
@@ -68,6 +88,7 @@ def _poisson_bounds():
 
     return (lambda v: bool(POISSON_RATIO.contains(v)), POISSON_RATIO.describe())
 
+
 #: Output units: name -> (SI unit, engineering unit, factor SI -> engineering).
 UNITS = {
     "force": ("N", "kN", 1e-3),
@@ -96,10 +117,6 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
-
-
-class Case(dict):
-    """One parsed case, SI floats: radius, length, estar, and the inputs for display."""
 
 
 # ---------------------------------------------------------------------------------------
@@ -172,8 +189,10 @@ def _join_negative_values(argv):
 def _parse_case(raw, *, allow_sweep=True, linear=False, label=lambda name: f"--{name}"):
     """Check and convert one case given as {name: text or None}.
 
-    Returns a :class:`Case` with SI floats and ``given`` ('load' or 'depth') and
-    ``values`` (list: one value, or a sweep). Raises InputError on the first problem.
+    Returns a dict of SI floats (radius, length, estar, and the moduli given) with
+    ``given`` ('load' or 'depth') and ``values`` (one value, or a sweep). Raises
+    InputError on the first problem; ``label`` names a parameter in messages
+    (``--radius`` on the command line, ``radius`` for a CSV column).
     """
     from ._units import InputError, parse_quantity, parse_sweep
 
@@ -184,7 +203,7 @@ def _parse_case(raw, *, allow_sweep=True, linear=False, label=lambda name: f"--{
     def get(name, **kw):
         return parse_quantity(label(name), raw[name], CASE_PARAMETERS[name][0], **kw)
 
-    case = Case()
+    case = {}
     for name in ("radius", "length"):
         if not present(name):
             raise InputError(label(name), "", "a length > 0 (e.g. 5mm)", "missing")
@@ -206,20 +225,33 @@ def _parse_case(raw, *, allow_sweep=True, linear=False, label=lambda name: f"--{
                 label("modulus"), "", f"a modulus > 0 (e.g. 210GPa), or {label('estar')}", "missing"
             )
         if not present("poisson"):
-            raise InputError(label("poisson"), "", _poisson_bounds()[1], f"missing (needed with {label('modulus')})")
+            raise InputError(
+                label("poisson"),
+                "",
+                _poisson_bounds()[1],
+                f"missing (needed with {label('modulus')})",
+            )
         case["modulus"] = get("modulus")
         case["poisson"] = get("poisson", bounds=_poisson_bounds())
         if present("modulus2") != present("poisson2"):
-            have, need = ("modulus2", "poisson2") if present("modulus2") else ("poisson2", "modulus2")
+            have, need = (
+                ("modulus2", "poisson2") if present("modulus2") else ("poisson2", "modulus2")
+            )
             raise InputError(
-                label(need), "", f"{label('modulus2')} and {label('poisson2')} together, "
-                "or neither (rigid cylinder)", f"missing (needed with {label(have)})",
+                label(need),
+                "",
+                f"{label('modulus2')} and {label('poisson2')} together, "
+                "or neither (rigid cylinder)",
+                f"missing (needed with {label(have)})",
             )
         if present("modulus2"):
             case["modulus2"] = get("modulus2")
             case["poisson2"] = get("poisson2", bounds=_poisson_bounds())
         case["estar"] = _effective_modulus(
-            case["modulus"], case["poisson"], case.get("modulus2", math.inf), case.get("poisson2", 0.0)
+            case["modulus"],
+            case["poisson"],
+            case.get("modulus2", math.inf),
+            case.get("poisson2", 0.0),
         )
 
     has_load, has_depth = present("load"), present("depth")
@@ -278,7 +310,9 @@ def _select_models(specs, case, *, first_only=False):
         except TypeError as exc:  # an option the model does not take
             from ._units import InputError
 
-            raise InputError("--model", text, "options the model takes (see its docstring)", str(exc)) from None
+            raise InputError(
+                "--model", text, "options the model takes (see its docstring)", str(exc)
+            ) from None
     return chosen
 
 
@@ -400,24 +434,22 @@ def _scale(field, value, si):
 
 
 def _case_line(case, si):
-    r, l = case["radius"], case["length"]
-    parts = [
-        f"R = {_fmt(_scale('radius', r, si))} {_unit('radius', si)}",
-        f"L = {_fmt(_scale('length', l, si))} {_unit('length', si)}",
-        f"L/R = {_fmt(l / r)}",
-        f"E* = {_fmt(_scale('estar', case['estar'], si))} {_unit('estar', si)}",
-    ]
+    """The case in one line: R, L, L/R, E* (and the moduli it came from)."""
+
+    def q(field, key):
+        return f"{_fmt(_scale(field, case[key], si))} {_unit(field, si)}"
+
+    line = (
+        f"R = {q('radius', 'radius')}, L = {q('length', 'length')}, "
+        f"L/R = {_fmt(case['length'] / case['radius'])}, E* = {q('estar', 'estar')}"
+    )
     if "modulus" in case:
-        body = f"(E1 = {_fmt(_scale('estar', case['modulus'], si))} {_unit('estar', si)}, nu1 = {_fmt(case['poisson'])}"
+        line += f" (E1 = {q('estar', 'modulus')}, nu1 = {_fmt(case['poisson'])}; "
         if "modulus2" in case:
-            body += (
-                f"; E2 = {_fmt(_scale('estar', case['modulus2'], si))} {_unit('estar', si)}, "
-                f"nu2 = {_fmt(case['poisson2'])})"
-            )
+            line += f"E2 = {q('estar', 'modulus2')}, nu2 = {_fmt(case['poisson2'])})"
         else:
-            body += "; rigid cylinder)"
-        parts[-1] += " " + body
-    return ", ".join(parts)
+            line += "rigid cylinder)"
+    return line
 
 
 def _render_table(case, results, si):
@@ -430,9 +462,7 @@ def _render_table(case, results, si):
     for model, rows in results:
         for row in rows:
             body.append(
-                [model.label]
-                + [_fmt(_scale(f, row[f], si)) for f in fields]
-                + [row["note"]]
+                [model.label] + [_fmt(_scale(f, row[f], si)) for f in fields] + [row["note"]]
             )
     widths = [max(len(r[i]) for r in [header] + body) for i in range(len(header) - 1)]
     lines = [_case_line(case, si), ""]
@@ -488,7 +518,11 @@ def _units_json():
 def _render_json(case, results, argv):
     import json
 
-    inputs = {k: case[k] for k in ("radius", "length", "estar", "modulus", "poisson", "modulus2", "poisson2") if k in case}
+    inputs = {
+        k: case[k]
+        for k in ("radius", "length", "estar", "modulus", "poisson", "modulus2", "poisson2")
+        if k in case
+    }
     inputs[case["given"]] = case["values"] if len(case["values"]) > 1 else case["values"][0]
     doc = {
         "linecontact_version": _version(),
@@ -548,26 +582,30 @@ def _calc_batch(args, argv):
 
     try:
         table = pd.read_csv(
-            args.csv, dtype=str, keep_default_na=False, skipinitialspace=True,
+            args.csv,
+            dtype=str,
+            keep_default_na=False,
+            skipinitialspace=True,
             encoding="utf-8-sig",  # spreadsheets often write a byte-order mark
         )
     except FileNotFoundError:
-        hint = "" if args.csv.lower().endswith(".csv") else (
-            " (a value with a space must be quoted, e.g. --radius '5 mm')"
+        hint = (
+            ""
+            if args.csv.lower().endswith(".csv")
+            else (" (a value with a space must be quoted, e.g. --radius '5 mm')")
         )
         _error(f"{args.csv!r}: no such file{hint}")
         return 2
     except Exception as exc:  # pandas parser errors, empty file, encoding
-        _error(f"{args.csv!r}: cannot read as CSV ({str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__})")
+        detail = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        _error(f"{args.csv!r}: cannot read as CSV ({detail})")
         return 2
     table.columns = [str(c).strip() for c in table.columns]
     lower = {c.lower(): c for c in table.columns}
     known = [name for name in CASE_PARAMETERS if name in lower]
     options = {name: getattr(args, name) for name in CASE_PARAMETERS}
     if not known and not any(v is not None for v in options.values()):
-        _error(
-            f"{args.csv!r}: no case columns; expected some of: " + ", ".join(CASE_PARAMETERS)
-        )
+        _error(f"{args.csv!r}: no case columns; expected some of: " + ", ".join(CASE_PARAMETERS))
         return 2
     specs = _parse_model_option(args.model)
     # default: the first of the standard set (the universal curve when installed)

@@ -28,7 +28,19 @@ EXAMPLES = Path(__file__).parent.parent / "examples"
 STEEL = ["--modulus", "210GPa", "--poisson", "0.3"]
 CASE = ["calc", "--radius", "5mm", "--length", "10mm", *STEEL]
 ONE = [*CASE, "--load", "1kN"]
-SI_ONE = ["calc", "--radius", "0.005", "--length", "0.01", "--modulus", "2.1e11", "--poisson", "0.3", "--load", "1000"]
+SI_ONE = [
+    "calc",
+    "--radius",
+    "0.005",
+    "--length",
+    "0.01",
+    "--modulus",
+    "2.1e11",
+    "--poisson",
+    "0.3",
+    "--load",
+    "1000",
+]
 
 IMPORTTIME = ["-X", "importtime", "-m", "linecontact"]
 
@@ -40,8 +52,27 @@ COMMANDS = {
     # python -m linecontact, with -X importtime: what a one-case call imports
     "units_importtime": [*IMPORTTIME, *ONE],
     "bare_json_importtime": [*IMPORTTIME, *SI_ONE, "--json"],
-    "inch_json": ["calc", "--radius", "0.19685039in", "--length", "0.3937008 in", *STEEL, "--load", "224.80894 lbf", "--json"],
-    "two_bodies_json": [*CASE, "--modulus2", "210GPa", "--poisson2", "0.3", "--load", "1kN", "--json"],
+    "inch_json": [
+        "calc",
+        "--radius",
+        "0.19685039in",
+        "--length",
+        "0.3937008 in",
+        *STEEL,
+        "--load",
+        "224.80894 lbf",
+        "--json",
+    ],
+    "two_bodies_json": [
+        *CASE,
+        "--modulus2",
+        "210GPa",
+        "--poisson2",
+        "0.3",
+        "--load",
+        "1kN",
+        "--json",
+    ],
     "depth_json": [*CASE, "--depth", "2um", "--json"],
     "depth_sweep_si": [*CASE, "--depth", "1um:4um:3", "--si"],
     "sweep_geom_json": [*CASE, "--load", "0.1kN:10kN:5", "--json"],
@@ -49,7 +80,15 @@ COMMANDS = {
     "batch": ["calc", str(EXAMPLES / "cases.csv")],
     "batch_all_json": ["calc", str(EXAMPLES / "cases.csv"), "--model", "all", "--json"],
     "batch_bad": ["calc", str(DATA / "bad_rows.csv")],
-    "batch_defaults": ["calc", str(DATA / "loads_only.csv"), "--radius", "5mm", "--length", "10mm", *STEEL],
+    "batch_defaults": [
+        "calc",
+        str(DATA / "loads_only.csv"),
+        "--radius",
+        "5mm",
+        "--length",
+        "10mm",
+        *STEEL,
+    ],
     # error paths: each must be one line on stderr, exit status 2
     "err_bad_unit": [*CASE, "--load", "1 kilofoo"],
     "err_wrong_dimension": ["calc", "--radius", "5N", "--length", "10mm", *STEEL, "--load", "1kN"],
@@ -58,8 +97,30 @@ COMMANDS = {
     "err_no_load": CASE,
     "err_load_and_depth": [*CASE, "--load", "1kN", "--depth", "1um"],
     "err_missing_radius": ["calc", "--length", "10mm", *STEEL, "--load", "1kN"],
-    "err_no_poisson": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--load", "1kN"],
-    "err_poisson_range": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.7", "--load", "1kN"],
+    "err_no_poisson": [
+        "calc",
+        "--radius",
+        "5mm",
+        "--length",
+        "10mm",
+        "--modulus",
+        "210GPa",
+        "--load",
+        "1kN",
+    ],
+    "err_poisson_range": [
+        "calc",
+        "--radius",
+        "5mm",
+        "--length",
+        "10mm",
+        "--modulus",
+        "210GPa",
+        "--poisson",
+        "0.7",
+        "--load",
+        "1kN",
+    ],
     "err_estar_and_modulus": [*CASE, "--estar", "100GPa", "--load", "1kN"],
     "err_modulus2_alone": [*CASE, "--modulus2", "70GPa", "--load", "1kN"],
     "err_sweep_fields": [*CASE, "--load", "1kN:2kN"],
@@ -246,13 +307,21 @@ def test_depth_input_gives_force_and_depth_column_first(results):
             assert row["note"], model.label
             continue
         assert _close(row["force"], force), model.label
-    header = next(line for line in _ok(results, "depth_sweep_si").stdout.splitlines() if line.startswith("model"))
+    header = next(
+        line
+        for line in _ok(results, "depth_sweep_si").stdout.splitlines()
+        if line.startswith("model")
+    )
     assert header.split()[1] == "d"
 
 
 def _imported(stderr):
     """Top-level package names in a `python -X importtime` log."""
-    return {line.split("|")[-1].strip().split(".")[0] for line in stderr.splitlines() if line.startswith("import time:")}
+    return {
+        line.split("|")[-1].strip().split(".")[0]
+        for line in stderr.splitlines()
+        if line.startswith("import time:")
+    }
 
 
 def test_python_dash_m_is_the_same_command(results):
@@ -329,7 +398,13 @@ def test_batch_keeps_rows_and_appends_results_of_the_default_model(results):
         assert out["model"] == first.label
         assert out["error"] == ""
         assert math.isclose(float(out["estar_GPa"]) * 1e9, _si_case(inp)[2], rel_tol=1e-5)
-        for col in ("force_kN", "depth_um", "stiffness_N_per_um", "half_width_um", "contact_radius_um"):
+        for col in (
+            "force_kN",
+            "depth_um",
+            "stiffness_N_per_um",
+            "half_width_um",
+            "contact_radius_um",
+        ):
             assert col in out
 
 
@@ -365,9 +440,17 @@ def test_batch_bad_rows_fail_alone_and_say_why(results):
     rows = {row["name"]: row for row in _csv(r.stdout)}
     assert rows["good"]["error"] == "" and float(rows["good"]["depth_um"]) > 0
     assert rows["good after bad"]["error"] == ""
-    assert "radius" in rows["length given in N"]["error"] or "length" in rows["length given in N"]["error"]
-    assert "length" in rows["length given in N"]["error"] and "5N" in rows["length given in N"]["error"]
-    assert "radius" in rows["negative radius"]["error"] and "-1mm" in rows["negative radius"]["error"]
+    assert (
+        "radius" in rows["length given in N"]["error"]
+        or "length" in rows["length given in N"]["error"]
+    )
+    assert (
+        "length" in rows["length given in N"]["error"]
+        and "5N" in rows["length given in N"]["error"]
+    )
+    assert (
+        "radius" in rows["negative radius"]["error"] and "-1mm" in rows["negative radius"]["error"]
+    )
     assert "load" in rows["no load"]["error"]
     assert "load" in rows["sweep in a row"]["error"]
     assert "foo" in rows["bad unit"]["error"]
@@ -397,7 +480,14 @@ def test_bad_input_is_one_line_naming_parameter_value_and_range(results, name):
     assert r.stdout == ""
 
 
-@pytest.mark.parametrize("name", [n for n in sorted(ERRORS) if n.startswith("err_") and n not in {"err_unknown_option", "err_no_file", "err_no_columns"}])
+@pytest.mark.parametrize(
+    "name",
+    [
+        n
+        for n in sorted(ERRORS)
+        if n.startswith("err_") and n not in {"err_unknown_option", "err_no_file", "err_no_columns"}
+    ],
+)
 def test_bad_input_message_states_the_valid_range(results, name):
     """Every message about a value says what would have been valid."""
     assert "valid:" in results[name].stderr

@@ -17,8 +17,9 @@ Usage::
 
     python tools/benchmarks/bench_cli_startup.py [-n 20] [--importtime]
 
-``--importtime`` also prints the ten slowest imports of the `units` command
-(``python -X importtime``), to see what a regression pulled in. Runs in about
+``--importtime`` also prints the ten slowest modules that linecontact imports
+directly in the `units` command (``python -X importtime``), to see what a regression
+pulled in. Runs in about
 N x 2 s.
 """
 
@@ -35,10 +36,34 @@ EXE = Path(sys.executable).parent / "linecontact"
 
 COMMANDS = {
     "numpy": [sys.executable, "-c", "import numpy"],
-    "si": [str(EXE), "calc", "--radius", "0.005", "--length", "0.01", "--modulus", "2.1e11",
-           "--poisson", "0.3", "--load", "1000"],
-    "units": [str(EXE), "calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
-              "--poisson", "0.3", "--load", "1kN"],
+    "si": [
+        str(EXE),
+        "calc",
+        "--radius",
+        "0.005",
+        "--length",
+        "0.01",
+        "--modulus",
+        "2.1e11",
+        "--poisson",
+        "0.3",
+        "--load",
+        "1000",
+    ],
+    "units": [
+        str(EXE),
+        "calc",
+        "--radius",
+        "5mm",
+        "--length",
+        "10mm",
+        "--modulus",
+        "210GPa",
+        "--poisson",
+        "0.3",
+        "--load",
+        "1kN",
+    ],
 }
 
 
@@ -52,15 +77,33 @@ def _time(cmd):
 
 
 def _slowest_imports(cmd, count=10):
-    script = cmd[0]
-    r = subprocess.run([sys.executable, "-X", "importtime", script, *cmd[1:]],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    rows = []
+    """What the command pulls in: modules that linecontact (or the script itself)
+    imports directly, by cumulative import time, from ``python -X importtime``."""
+    r = subprocess.run(
+        [sys.executable, "-X", "importtime", *cmd],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    entries = []  # (nesting level, module, cumulative us), children before parents
     for line in r.stderr.splitlines():
         if line.startswith("import time:") and "|" in line:
             _, cumulative, name = line.split("|")
-            if cumulative.strip().isdigit() and not name.startswith("  "):  # top level
-                rows.append((int(cumulative), name.strip()))
+            if cumulative.strip().isdigit():
+                level = (len(name) - len(name.lstrip())) // 2
+                entries.append((level, name.strip(), int(cumulative)))
+    parent, pending = {}, []
+    for i, (level, _, _) in enumerate(entries):
+        while pending and entries[pending[-1]][0] > level:
+            parent[pending.pop()] = i
+        pending.append(i)
+    rows = []
+    for i, (_, name, cum) in enumerate(entries):
+        by = entries[parent[i]][1] if i in parent else "(top level)"
+        if not name.startswith("linecontact") and (
+            by == "(top level)" or by.startswith("linecontact")
+        ):
+            rows.append((cum, name, by))
     return sorted(rows, reverse=True)[:count]
 
 
@@ -85,9 +128,9 @@ def main(argv=None):
         med = statistics.median(ts)
         print(f"  {name:6s} {med * 1e3:7.1f} ms   ratio to import numpy: {med / base:5.2f}")
     if args.importtime:
-        print("slowest top-level imports of the 'units' command (cumulative, ms):")
-        for us, name in _slowest_imports(COMMANDS["units"]):
-            print(f"  {us / 1e3:7.1f}  {name}")
+        print("what the 'units' command imports, slowest first (cumulative ms, importer):")
+        for us, name, by in _slowest_imports(COMMANDS["units"]):
+            print(f"  {us / 1e3:7.1f}  {name:32s} {by}")
     return 0
 
 

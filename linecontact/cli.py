@@ -540,6 +540,7 @@ def _render_json(case, results, argv):
 def _write(text, path):
     if path is None:
         sys.stdout.write(text)
+        sys.stdout.flush()  # a closed pipe shows here, inside main's error handling
     else:
         with open(path, "w", encoding="utf-8", newline="") as fh:
             fh.write(text)
@@ -700,6 +701,13 @@ def main(argv=None):
     except (InputError, OutOfRangeError) as exc:
         _error(str(exc))
         return 2
+    except BrokenPipeError:  # the reader stopped early (`| head`): stop quietly
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except KeyboardInterrupt:
+        return 130
     except OSError as exc:  # e.g. -o into a missing directory
         _error(f"{exc.filename!r}: {exc.strerror}")
         return 2

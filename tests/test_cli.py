@@ -28,19 +28,7 @@ EXAMPLES = Path(__file__).parent.parent / "examples"
 STEEL = ["--modulus", "210GPa", "--poisson", "0.3"]
 CASE = ["calc", "--radius", "5mm", "--length", "10mm", *STEEL]
 ONE = [*CASE, "--load", "1kN"]
-SI_ONE = [
-    "calc",
-    "--radius",
-    "0.005",
-    "--length",
-    "0.01",
-    "--modulus",
-    "2.1e11",
-    "--poisson",
-    "0.3",
-    "--load",
-    "1000",
-]
+SI_ONE = "calc --radius 0.005 --length 0.01 --modulus 2.1e11 --poisson 0.3 --load 1000".split()
 
 IMPORTTIME = ["-X", "importtime", "-m", "linecontact"]
 
@@ -157,7 +145,11 @@ def _run(argv, **kw):
 
 
 @pytest.fixture(scope="module")
-def results():
+def results(tmp_path_factory):
+    target = tmp_path_factory.mktemp("cli") / "out.csv"
+    commands = dict(
+        COMMANDS, batch_to_file=["calc", str(EXAMPLES / "cases.csv"), "-o", str(target)]
+    )
     if not EXE.exists():
         pytest.fail(
             f"the console script {EXE} is not installed; run `pip install -e .` "
@@ -165,7 +157,7 @@ def results():
             pytrace=False,
         )
     with ThreadPoolExecutor(max_workers=8) as pool:
-        futures = {name: pool.submit(_run, argv) for name, argv in COMMANDS.items()}
+        futures = {name: pool.submit(_run, argv) for name, argv in commands.items()}
         return {name: f.result() for name, f in futures.items()}
 
 
@@ -414,13 +406,12 @@ def test_batch_keeps_rows_and_appends_results_of_the_default_model(results):
             assert col in out
 
 
-def test_batch_output_file(tmp_path):
+def test_batch_output_file(results):
     """-o FILE writes the CSV to FILE and nothing to stdout."""
-    target = tmp_path / "out.csv"
-    r = _run(["calc", str(EXAMPLES / "cases.csv"), "-o", str(target)])
-    assert r.returncode == 0, r.stderr
+    r = _ok(results, "batch_to_file")
     assert r.stdout == ""
-    assert len(_csv(target.read_text())) == len(_csv((EXAMPLES / "cases.csv").read_text()))
+    written = _csv(Path(r.args[-1]).read_text())  # the path after -o
+    assert written == _csv(_ok(results, "batch").stdout)
 
 
 def test_batch_all_models_json_has_a_column_set_per_model_and_si(results):

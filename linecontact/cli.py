@@ -357,12 +357,23 @@ def _parse_model_option(spec):
             name, eq, value = opt.partition("=")
             if not eq or not name.strip():
                 raise InputError("--model", text, valid, f"option {opt!r} is not OPTION=VALUE")
-            try:
-                options[name.strip()] = float(value)
-            except ValueError:
-                options[name.strip()] = value.strip()
+            options[name.strip()] = _option_value(value.strip())
         parsed.append((text, key, options))
     return parsed
+
+
+def _option_value(text):
+    """A --model option value: true/false, a number, or the text itself.
+
+    >>> _option_value("False"), _option_value("0.72"), _option_value("eq11")
+    (False, 0.72, 'eq11')
+    """
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
+    try:
+        return float(text)
+    except ValueError:
+        return text
 
 
 def _model_id(model):
@@ -691,14 +702,18 @@ def main(argv=None):
     if args.command is None:
         parser.print_help(sys.stderr)
         return 2
-    from ._units import InputError
-    from .validity import OutOfRangeError
-
     try:
         if args.csv is not None:
             return _calc_batch(args, argv)
         return _calc_one(args, argv)
-    except (InputError, OutOfRangeError) as exc:
+    except ValueError as exc:
+        # InputError (ours) or the library's OutOfRangeError; the check imports
+        # linecontact.validity (numpy) only now, when it has already been loaded
+        from ._units import InputError
+        from .validity import OutOfRangeError
+
+        if not isinstance(exc, (InputError, OutOfRangeError)):
+            raise
         _error(str(exc))
         return 2
     except BrokenPipeError:  # the reader stopped early (`| head`): stop quietly

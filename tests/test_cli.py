@@ -65,6 +65,7 @@ COMMANDS = {
     "depth_sweep_si": [*CASE, "--depth", "1um:4um:3", "--si"],
     "sweep_geom_json": [*CASE, "--load", "0.1kN:10kN:5", "--json"],
     "sweep_lin_json": [*CASE, "--load", "100N:500N:5", "--linear", "--json"],
+    "model_options_json": [*ONE, "--model", "johnson:c=0.72,li-popov:coefficients=eq11", "--json"],
     "batch": ["calc", str(EXAMPLES / "cases.csv")],
     "batch_all_json": ["calc", str(EXAMPLES / "cases.csv"), "--model", "all", "--json"],
     "batch_bad": ["calc", str(DATA / "bad_rows.csv")],
@@ -268,6 +269,32 @@ def test_json_carries_version_units_and_provenance(results):
     for model, entry in zip(_library(), doc["models"]):
         assert entry["provenance"], entry["label"]
         assert without_path(entry["provenance"]) == without_path(model.provenance), entry["label"]
+
+
+def test_model_outside_its_range_gets_a_note_and_the_other_rows_stay(results):
+    """A steel-only model (Palmgren) refuses E* = 230.8 GPa (steel half-space, rigid
+    cylinder): its row carries the library's message and no values, while the physical
+    models in the same table are computed."""
+    rows = {m["label"]: m["rows"][0] for m in _json(results, "one_json")["models"]}
+    assert rows["Palmgren"]["depth"] is None
+    assert "outside the valid range" in rows["Palmgren"]["note"]
+    assert rows["Puttock-Thwaite"]["note"] == "" and rows["Puttock-Thwaite"]["depth"] > 0
+
+
+def test_model_option_selects_models_with_their_options(results):
+    """--model KEY:OPTION=VALUE builds exactly those models with those options, in that
+    order; a model refused for this cylinder (Eq. 11 needs L/R >= 5, here L/R = 2)
+    keeps its row with the reason."""
+    from linecontact import models
+
+    doc = _json(results, "model_options_json")
+    expected = [
+        models.get_model("johnson", 0.005, 0.01, 1e11, c=0.72).label,
+        models.get_model("li-popov", 0.005, 0.01, 1e11, coefficients="eq11").label,
+    ]
+    assert [m["label"] for m in doc["models"]] == expected
+    assert doc["models"][0]["rows"][0]["depth"] > 0
+    assert "L/R" in doc["models"][1]["rows"][0]["note"]
 
 
 def test_bare_numbers_are_si_and_unit_strings_convert(results):

@@ -1,0 +1,176 @@
+"""The universal-curve model (linecontact.universal) against its table, against the
+mathematics it must obey, and against independent coarse BEM runs (tools/)."""
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import linecontact as lc
+from linecontact.mdr import mdr_force
+from linecontact.tables import read_table
+from linecontact.universal import UniversalModel, universal_curve
+from linecontact.validity import OutOfRangeError
+
+TABLE = read_table("universal_curve")
+CURVE = universal_curve()
+STEEL = 210e9 / (2 * (1 - 0.3 ** 2))   # E* of steel on steel [Pa]
+
+
+def test_table_describes_itself():
+    """The shipped table says what it is, how it was made and how accurate it is."""
+    for key in ("title", "source", "units", "generated_by", "date", "version",
+                "accuracy", "grid", "tolerance", "beta_small", "small_depth_asymptote"):
+        assert TABLE.meta.get(key, "").strip(), f"metadata {key!r} missing"
+    assert TABLE.meta["generated_by"].startswith("python -m tools.build_tables universal")
+    d = TABLE.columns["d_tilde"]
+    assert d[0] <= 1e-9 and d[-1] >= 20, "the issue asks for d~ from 1e-9 to at least 20"
+
+
+def test_runtime_spline_reproduces_the_table_stiffness_column():
+    """Data and code cannot drift apart: the runtime's Psi' at the table's depths is the
+    table's dPsi column (both are the derivative of the same ln-ln cubic spline)."""
+    d = TABLE.columns["d_tilde"]
+    np.testing.assert_allclose(CURVE.psi(d), TABLE.columns["Psi"], rtol=1e-12)
+    np.testing.assert_allclose(CURVE.dpsi(d), TABLE.columns["dPsi"], rtol=1e-9)
+
+
+def test_force_and_stiffness_increase_with_depth():
+    """F(d) is increasing and convex (k = dF/dd increasing: the contact grows), over the
+    table and the small-depth continuation below it."""
+    d = np.geomspace(CURVE.d_min / 1e3, CURVE.d_max, 20000)
+    assert np.all(np.diff(CURVE.psi(d)) > 0)
+    assert np.all(np.diff(CURVE.dpsi(d)) > 0)
+
+
+def test_stiffness_is_the_derivative_of_the_force():
+    """k = dF/dd: the runtime's k against a central difference of its F (step 1e-6
+    relative; truncation and rounding together below 1e-7)."""
+    m = UniversalModel(5e-3, 10e-3, STEEL)
+    for d in np.geomspace(1e-12, 0.9 * m.depth_limit, 25):
+        h = 1e-6 * d
+        num = (m.force(d + h) - m.force(d - h)) / (2 * h)
+        assert m.stiffness(d) == pytest.approx(num, rel=1e-7), f"at d = {d:g} m"
+
+
+def test_depth_inverts_force_and_profile_inverts_contact_radius():
+    """d(F(d)) = d, and the MDR profile satisfies g(a(d)) = d (SPEC section 3)."""
+    m = UniversalModel(2e-3, 30e-3, 70e9)
+    d = np.geomspace(1e-13, 0.99 * m.depth_limit, 300)
+    np.testing.assert_allclose(m.depth(m.force(d)), d, rtol=1e-11)
+    np.testing.assert_allclose(m.profile(m.contact_radius(d)), d, rtol=1e-10)
+
+
+def test_mdr_quadrature_of_the_profile_gives_the_force():
+    """The MDR theorem: F(d) = 2E* int_0^a (d - g(x)) dx with the model's own profile g
+    reproduces its F(d) (quadrature tolerance 1e-6)."""
+    m = UniversalModel(5e-3, 10e-3, STEEL)
+    for d in [1e-9, 1e-6, 1e-4, 1e-3]:
+        F = mdr_force(d, m.profile, m.estar, x_scale=m.length)
+        assert F == pytest.approx(m.force(d), rel=1e-6), f"at d = {d:g} m"
+
+
+def test_continuation_below_the_table_is_continuous():
+    """Below the table the curve continues with Eq. 7 (alpha = pi/2, beta = beta_small):
+    F is continuous at the seam by construction of beta_small; k jumps by less than the
+    table's own accuracy (1e-3)."""
+    lo, hi = CURVE.d_min * (1 - 1e-12), CURVE.d_min * (1 + 1e-12)
+    assert CURVE.psi(lo) == pytest.approx(CURVE.psi(hi), rel=1e-9)
+    assert CURVE.dpsi(lo) == pytest.approx(CURVE.dpsi(hi), rel=1e-3)
+
+
+def test_small_depth_asymptote_holds_within_a_tenth_of_a_percent():
+    """SPEC section 5: as d~ -> 0 the 2D log law (alpha = pi/2) takes over with a beta
+    that still drifts slowly. The continuation uses beta_eff at the table's smallest
+    depth; the drift of beta_eff over the table's last decade, times the sensitivity
+    dF/F = (dbeta/beta) / (pi d~/Psi), must be below 1e-3: the asymptote then holds
+    within 0.1 % in F for at least a decade below the table."""
+    d = TABLE.columns["d_tilde"]
+    beta = TABLE.columns["beta_eff"]
+    psi = TABLE.columns["Psi"]
+    j = np.searchsorted(d, d[0] * 10)
+    drift = abs(beta[j] / beta[0] - 1)
+    sensitivity = psi[0] / (np.pi * d[0])
+    assert drift * sensitivity < 1e-3, f"beta_eff drifts by {drift:.2e} per decade"
+
+
+def test_long_cylinders_follow_the_2d_log_law_with_alpha_pi_over_2():
+    """SPEC section 8: for a long contact strip (small d~) the MDR profile is Eq. 7 with
+    alpha = pi/2: fitting alpha, beta of Eq. 9 to the curve over the table's lowest
+    three decades gives alpha within 3 % of pi/2."""
+    from scipy.optimize import least_squares
+    d = TABLE.columns["d_tilde"]
+    sel = d < d[0] * 1e3
+    x, g = TABLE.columns["x_tilde"][sel], d[sel]
+
+    def res(p):
+        a, b = p
+        return np.log(b * (a / x + 1) * np.exp(-a / x)) - np.log(g)
+
+    a, b = least_squares(res, [1.5, 0.5]).x
+    assert a == pytest.approx(math.pi / 2, rel=0.03), f"fitted alpha {a:.4f}"
+
+
+def test_beyond_the_table_is_refused_with_the_range():
+    """No extrapolation beyond the largest depth: the error names the parameter, the
+    value and the valid range."""
+    m = UniversalModel(5e-3, 10e-3, STEEL)
+    with pytest.raises(OutOfRangeError, match=r"depth = .* m is outside the valid range \(0, .*\] m"):
+        m.force(1.01 * m.depth_limit)
+    with pytest.raises(OutOfRangeError, match="force"):
+        m.depth(1.01 * m.force_limit)
+    with pytest.raises(OutOfRangeError, match="depth"):
+        m.force(-1e-6)
+    with pytest.raises(OutOfRangeError, match="depth"):
+        m.stiffness(np.nan)
+
+
+def test_universal_is_the_default_model():
+    """The one-liners use the universal curve unless told otherwise."""
+    args = (5e-3, 10e-3, STEEL)
+    assert lc.DEFAULT_MODEL == "universal"
+    assert lc.depth(1e3, *args) == UniversalModel(*args).depth(1e3)
+
+
+@given(R=st.floats(1e-4, 1.0), L=st.floats(1e-4, 1.0), E=st.floats(1e6, 1e12),
+       lam=st.floats(1e-3, 1e3), dt=st.floats(1e-10, 10.0))
+def test_scaling_law_is_exact(R, L, E, lam, dt):
+    """F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*, and
+    F R/(E* L^3) depends on d R/L^2 alone (SPEC section 5)."""
+    d = dt * L * L / R
+    F = UniversalModel(R, L, E).force(d)
+    assert UniversalModel(lam * R, lam * L, E).force(lam * d) == pytest.approx(
+        lam ** 2 * F, rel=1e-11)
+    assert F * R / (E * L ** 3) == pytest.approx(float(CURVE.psi(dt)), rel=1e-11)
+
+
+# ---- against independent BEM runs --------------------------------------------------
+
+# Coarse BEM for the comparison: Richardson on 32/64 axial cells, 16 across the
+# width; k is its flat-punch stiffness on the 64-cell grid, which scatters with the
+# staircase contact set. Measured over 40 random (L/R, d/R) draws: largest deviation
+# from the runtime 5.5e-4 in F and 3.5e-3 in k (table accuracy ~5e-5); the tolerances
+# leave a factor of about 2 and 3 for draws not seen.
+F_TOL = 1e-3
+K_TOL = 1e-2
+
+
+@settings(max_examples=8, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(l_over_r=st.floats(0.1, 20.0), log_d_over_r=st.floats(-6.0, math.log10(0.15)))
+def test_runtime_agrees_with_a_coarse_bem_run(l_over_r, log_d_over_r):
+    """For L/R in [0.1, 20] and d/R in [1e-6, 0.15], the runtime's F and k agree with
+    an independent coarse BEM run at that very cylinder within the table's accuracy plus
+    the coarse grid's error (F: 1e-3, k: 1e-2)."""
+    from tools.cylinder import solve_depth
+    R = 1.0
+    L = l_over_r * R
+    d = 10 ** log_d_over_r * R
+    dt = d * R / L ** 2
+    r1 = solve_depth(dt, 32, 16, tol=1e-7)
+    r2 = solve_depth(dt, 64, 16, tol=1e-7)
+    psi_bem = 2 * r2.force - r1.force
+    m = UniversalModel(R, L, 1.0)
+    assert m.force(d) / L ** 3 == pytest.approx(psi_bem, rel=F_TOL), f"d~ = {dt:.3g}"
+    assert m.stiffness(d) / L == pytest.approx(r2.stiffness, rel=K_TOL), f"d~ = {dt:.3g}"

@@ -119,6 +119,9 @@ def add_arguments(parser):
                         help="output folder (default: the repository's tables/)")
     parser.add_argument("--from-curves", type=Path, default=None, metavar="CSV",
                         help="refit from a saved bem_paper_curves.csv; no BEM run")
+    parser.add_argument("--resume", action="store_true",
+                        help="reuse the L/R already saved in OUT/partial/ by an "
+                             "interrupted run with the same grid, steps and d_max")
     parser.add_argument("--backend", choices=("scipy", "pyfftw"), default=None,
                         help="FFT backend (default pyfftw when installed)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
@@ -159,12 +162,32 @@ def _one(task):
                 grid=res.grid.describe(), backend=res.settings["backend"])
 
 
+def _load_checkpoint(folder, q, n, steps, d_max):
+    """The saved sweep of L/R = q in `folder` if it was run with these settings."""
+    path = Path(folder) / f"sweep_L{float(q):g}.npz"
+    if not path.is_file():
+        return None
+    z = np.load(path)
+    nx, ny = (n, n) if np.isscalar(n) else n
+    if (len(z["depth"]) != steps or not np.isclose(z["depth"][-1], d_max)
+            or not str(z["grid"]).startswith(f"{nx} x {ny} cells")):
+        return None
+    r = {k: z[k] for k in z.files}
+    for k in ("l_over_r", "wall_time", "cpu_time"):
+        r[k] = float(r[k])
+    r["grid"], r["backend"] = str(r["grid"]), str(r["backend"])
+    r["resumed"] = True
+    return r
+
+
 def run_sweeps(l_over_r, n, steps, d_max, tol, processes=2, backend=None, progress=True,
-               checkpoint=None):
+               checkpoint=None, resume=False):
     """The BEM sweeps for every L/R, `processes` at a time; results sorted by L/R.
 
     With `checkpoint` (a folder), each finished L/R is also saved there as
-    ``sweep_L<L/R>.npz`` at once, so that an interrupted long run keeps what it did."""
+    ``sweep_L<L/R>.npz`` at once, so that an interrupted long run keeps what it did;
+    L/R found there, saved with the same grid, steps and d_max, are not run again
+    (``--resume``)."""
     def keep(r):
         if checkpoint is not None:
             Path(checkpoint).mkdir(parents=True, exist_ok=True)
@@ -172,15 +195,24 @@ def run_sweeps(l_over_r, n, steps, d_max, tol, processes=2, backend=None, progre
                      **{k: np.asarray(v) for k, v in r.items()})
 
     tasks = [(float(q), n, steps, d_max, tol, backend) for q in l_over_r]
+    results = []
+    if checkpoint is not None and resume:      # resume: L/R already done with these settings
+        for q in list(l_over_r):
+            r = _load_checkpoint(checkpoint, q, n, steps, d_max)
+            if r is not None:
+                results.append(r)
+                tasks = [t for t in tasks if abs(t[0] - float(q)) > 1e-12]
     bar = None
     if progress:
         try:
             from tqdm import tqdm
-            bar = tqdm(total=len(tasks), desc="paper study (L/R done)", unit="L/R")
+            bar = tqdm(total=len(tasks) + len(results), initial=len(results),
+                       desc="paper study (L/R done)", unit="L/R")
         except ImportError:  # pragma: no cover - tqdm is in the tools extra
             bar = None
-    results = []
-    if processes <= 1 or len(tasks) == 1:
+    if not tasks:
+        pass
+    elif processes <= 1 or len(tasks) == 1:
         for t in tasks:
             results.append(_one(t))
             keep(results[-1])
@@ -586,7 +618,8 @@ def run(args):
     else:
         results = run_sweeps(args.l_over_r, args.n, args.steps, args.d_max, args.tol,
                              processes=args.processes, backend=args.backend,
-                             progress=progress, checkpoint=out / "partial")
+                             progress=progress, checkpoint=out / "partial",
+                             resume=args.resume)
         wall = time.perf_counter() - t0
         cols = curves_from_results(results)
         curves = cols
@@ -596,6 +629,7 @@ def run(args):
         except OSError:
             load = "n/a"
         cpu = sum(r["cpu_time"] for r in results)
+        resumed = [r["l_over_r"] for r in results if r.get("resumed")]
         per = "; ".join(f"L/R {r['l_over_r']:g}: {r['wall_time']:.1f} s wall, "
                         f"{r['cpu_time']:.1f} s CPU, "
                         f"{int(r['iterations'].sum())} op"
@@ -613,7 +647,9 @@ def run(args):
             wall_time=f"{wall:.1f} s with {args.processes} processes x 1 FFT thread; "
                       f"CPU time of the sweeps {cpu:.1f} s (on an idle machine about CPU / "
                       f"{args.processes} = {cpu / max(args.processes, 1):.0f} s); load "
-                      f"average after the run {load}; per L/R: {per}",
+                      f"average after the run {load}; per L/R: {per}"
+                      + (f"; resumed from an earlier run (not in this wall time): "
+                         f"L/R {', '.join(f'{q:g}' for q in resumed)}" if resumed else ""),
             machine=f"{platform.machine()}, {os.cpu_count()} CPUs, Python "
                     f"{platform.python_version()}",
         )

@@ -33,17 +33,39 @@ try:
 except PackageNotFoundError:  # a source checkout that was never installed
     __version__ = "0+unknown"
 
-from .classical import (effective_modulus, hertz_half_width, iso16281_depth,
-                        johnson_depth, kunz_force, palmgren_depth,
-                        puttock_thwaite_depth, puttock_thwaite_force,
-                        puttock_thwaite_stiffness)
-from .lipopov import (lipopov_coefficients, lipopov_depth, lipopov_force,
-                      lipopov_profile, lipopov_stiffness)
-from .mdr import (mdr_contact_radius, mdr_force, mdr_profile_from_force,
-                  mdr_profile_from_stiffness, mdr_stiffness)
-from .models import (DEFAULT_MODEL, MODELS, ContactModel, get_model, register,
-                     standard_models)
-from .validity import Interval, OutOfRangeError
+import importlib as _importlib
+
+# Names re-exported from the submodules, imported on first use (PEP 562), so that
+# `import linecontact` (and the CLI) loads only what a computation needs: a one-case
+# call never pays for scipy.integrate (mdr) or the models it does not evaluate.
+_LAZY = {
+    "classical": ("effective_modulus", "hertz_half_width", "iso16281_depth",
+                  "johnson_depth", "kunz_force", "palmgren_depth",
+                  "puttock_thwaite_depth", "puttock_thwaite_force",
+                  "puttock_thwaite_stiffness"),
+    "lipopov": ("lipopov_coefficients", "lipopov_depth", "lipopov_force",
+                "lipopov_profile", "lipopov_stiffness"),
+    "mdr": ("mdr_contact_radius", "mdr_force", "mdr_profile_from_force",
+            "mdr_profile_from_stiffness", "mdr_stiffness"),
+    "models": ("DEFAULT_MODEL", "MODELS", "ContactModel", "get_model", "register",
+               "standard_models"),
+    "validity": ("Interval", "OutOfRangeError"),
+}
+_ORIGIN = {name: module for module, names in _LAZY.items() for name in names}
+
+
+def __getattr__(name):
+    module = _ORIGIN.get(name)
+    if module is None:
+        raise AttributeError(f"module 'linecontact' has no attribute {name!r}")
+    value = getattr(_importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_ORIGIN))
+
 
 __all__ = [
     "__version__",
@@ -80,21 +102,22 @@ __all__ = [
 ]
 
 
-def force(depth, radius, length, estar, model=DEFAULT_MODEL, **options):
+def force(depth, radius, length, estar, model=None, **options):
     """Normal force F [N] of a cylinder (R [m], L [m]) at depth d [m] on E* [Pa].
 
-    `model` is a key of :data:`MODELS` (default :data:`DEFAULT_MODEL`); `options` go
-    to the model (e.g. ``coefficients="eq11"``). Vectorised over `depth`.
+    `model` is a key of :data:`MODELS` (None: :data:`DEFAULT_MODEL`, the universal
+    curve); `options` go to the model (e.g. ``coefficients="eq11"``). Vectorised over
+    `depth`.
 
     Examples
     --------
     >>> round(force(3.0548e-6, 5e-3, 10e-3, 115.38e9, model="li-popov"))
     1000
     """
-    return get_model(model, radius, length, estar, **options).force(depth)
+    return _model(model, radius, length, estar, options).force(depth)
 
 
-def depth(force, radius, length, estar, model=DEFAULT_MODEL, **options):
+def depth(force, radius, length, estar, model=None, **options):
     """Depth d [m] of a cylinder (R [m], L [m]) under force F [N] on E* [Pa].
 
     Examples
@@ -102,10 +125,10 @@ def depth(force, radius, length, estar, model=DEFAULT_MODEL, **options):
     >>> f"{depth(1e3, 5e-3, 10e-3, 115.38e9, model='palmgren') * 1e6:.2f} um"
     '3.05 um'
     """
-    return get_model(model, radius, length, estar, **options).depth(force)
+    return _model(model, radius, length, estar, options).depth(force)
 
 
-def stiffness(depth, radius, length, estar, model=DEFAULT_MODEL, **options):
+def stiffness(depth, radius, length, estar, model=None, **options):
     """Contact stiffness k = dF/dd [N/m] at depth d [m] (R [m], L [m], E* [Pa]).
 
     Examples
@@ -113,4 +136,10 @@ def stiffness(depth, radius, length, estar, model=DEFAULT_MODEL, **options):
     >>> f"{stiffness(3.0548e-6, 5e-3, 10e-3, 115.38e9, model='li-popov'):.3e} N/m"
     '3.570e+08 N/m'
     """
-    return get_model(model, radius, length, estar, **options).stiffness(depth)
+    return _model(model, radius, length, estar, options).stiffness(depth)
+
+
+def _model(key, radius, length, estar, options):
+    from .models import DEFAULT_MODEL, get_model
+    return get_model(DEFAULT_MODEL if key is None else key, radius, length, estar,
+                     **options)

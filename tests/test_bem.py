@@ -62,7 +62,9 @@ def test_symmetric_operator_equals_dcfft_on_mirror_symmetric_fields(backend):
     rng = np.random.default_rng(2)
     mx, my, dx, dy = 13, 7, 0.3, 0.01
     q = rng.random((mx, my))
-    us = SymmetricOperator(mx, my, dx, dy, backend=backend)(q)
+    # one thread, as the studies run it (measuring 2-thread FFTW plans takes seconds
+    # when the cores are busy)
+    us = SymmetricOperator(mx, my, dx, dy, backend=backend, workers=1)(q)
     ud = DCFFTOperator(2 * mx, 2 * my, dx, dy, backend="scipy")(unfold(q))
     np.testing.assert_allclose(us, ud[mx:, my:], rtol=1e-12, atol=1e-15 * np.abs(ud).max())
 

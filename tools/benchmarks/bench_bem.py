@@ -5,7 +5,8 @@
 1. operator: the mirror-symmetric DCT form against the plain zero-padded DC-FFT, same
    physical grid (the paper's 512 x 512), time per application (results agree to 1e-15);
 2. backend: planned FFTW r2r transforms against scipy.fft, for the symmetric operator
-   at the paper's grid and at a long-strip grid of the universal study;
+   at the paper's grid and at a long-strip grid of the universal study, with 1 thread
+   (how the studies run, one process per core) and 2;
 3. warm start: a 20-step sweep (L/R = 5, 256 x 256) solved with each step started
    from the extrapolation of the previous two, against cold starts;
 4. processes: the same four small sweeps in 1 process with 2 FFT threads against
@@ -53,10 +54,11 @@ def bench_operators(repeat):
         return rows
     for shape in [(256, 256), (1024, 40)]:
         q = rng.random(shape)
-        a = SymmetricOperator(*shape, 1.0, 0.01, backend="scipy")
-        b = SymmetricOperator(*shape, 1.0, 0.01, backend="pyfftw")
-        rows.append((f"quarter {shape[0]}x{shape[1]}: scipy / pyfftw",
-                     _time(lambda: a(q), repeat), _time(lambda: b(q), repeat)))
+        for workers in (1, 2):
+            a = SymmetricOperator(*shape, 1.0, 0.01, backend="scipy", workers=workers)
+            b = SymmetricOperator(*shape, 1.0, 0.01, backend="pyfftw", workers=workers)
+            rows.append((f"quarter {shape[0]}x{shape[1]}, {workers} thread(s): scipy / pyfftw",
+                         _time(lambda: a(q), repeat), _time(lambda: b(q), repeat)))
     return rows
 
 

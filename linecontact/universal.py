@@ -44,7 +44,7 @@ from scipy.special import lambertw
 
 from .models import ContactModel, register
 from .tables import read_table, table_path
-from .validity import OutOfRangeError, check_positive, out
+from .validity import OutOfRangeError, check_interval, out
 
 __all__ = ["UniversalCurve", "UniversalModel", "universal_curve"]
 
@@ -278,25 +278,18 @@ class UniversalModel(ContactModel):
         """Force at :attr:`depth_limit` [N]."""
         return self.curve.psi_max * self._fscale
 
+    def _scaled(self, name, value, unit, scale, table_end, symbol):
+        """`value` / `scale` after checking 0 < value <= table_end * scale."""
+        v = check_interval(name, value, 0.0, table_end * scale, low_open=True, unit=unit,
+                           hint=f"the universal table ends at {symbol} = {table_end:.6g}")
+        return v / scale
+
     def _dt(self, depth):
-        d = check_positive("depth", depth, "m")
-        if np.any(d > self.depth_limit):
-            bad = float(d[d > self.depth_limit].flat[0]) if d.ndim else float(d)
-            raise OutOfRangeError(
-                "depth", bad, f"(0, {self.depth_limit:.6g}] m", unit="m",
-                hint=f"d R/L^2 = {bad / self._dscale:.4g} is beyond the universal "
-                     f"table's largest d~ = {self.curve.d_max:g}")
-        return d / self._dscale
+        return self._scaled("depth", depth, "m", self._dscale, self.curve.d_max, "d R/L^2")
 
     def _psi_of_force(self, force):
-        F = check_positive("force", force, "N")
-        if np.any(F > self.force_limit):
-            bad = float(F[F > self.force_limit].flat[0]) if F.ndim else float(F)
-            raise OutOfRangeError(
-                "force", bad, f"(0, {self.force_limit:.6g}] N", unit="N",
-                hint=f"F R/(E* L^3) = {bad / self._fscale:.4g} is beyond the universal "
-                     f"table's largest Psi = {self.curve.psi_max:.6g}")
-        return F / self._fscale
+        return self._scaled("force", force, "N", self._fscale, self.curve.psi_max,
+                            "F R/(E* L^3)")
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""

@@ -31,8 +31,16 @@ from .influence import kernel_offsets
 BACKENDS = ("scipy", "pyfftw")
 
 
-def default_workers():
-    """Threads for the transforms: all cores of this machine."""
+def default_workers(backend="scipy"):
+    """Threads for the transforms: all cores for scipy.fft; one for FFTW.
+
+    FFTW's multi-threaded plans were measured far slower on this 2-core machine
+    whenever anything else ran (128 x 128 quarter: plan 38 s and 8 ms per call with
+    two threads against 0.5 s and 0.9 ms with one; tools/benchmarks/README.md), and
+    the studies run one process per core anyway.
+    """
+    if backend == "pyfftw":
+        return 1
     return os.cpu_count() or 1
 
 
@@ -83,7 +91,7 @@ class DCFFTOperator:
         self.shape = (int(nx), int(ny))
         self.dx, self.dy, self.estar = float(dx), float(dy), float(estar)
         self._fft = _fft_module(backend)
-        self.workers = default_workers() if workers is None else workers
+        self.workers = default_workers(backend) if workers is None else workers
         k = kernel_offsets(nx, ny, dx, dy, estar)          # offsets 0..n
         # wrap-around order on 2n: offsets 0..n-1, then n (either sign), then -(n-1)..-1
         kx = np.concatenate([k, k[-2:0:-1]], axis=0)
@@ -114,7 +122,7 @@ class SymmetricOperator:
         self.shape = (int(mx), int(my))
         self.dx, self.dy, self.estar = float(dx), float(dy), float(estar)
         self.backend = backend
-        self.workers = default_workers() if workers is None else workers
+        self.workers = default_workers(backend) if workers is None else workers
         fft = _fft_module("scipy" if backend == "pyfftw" else backend)
         k = kernel_offsets(2 * mx, 2 * my, dx, dy, estar)  # offsets 0..2m: DCT-I samples
         khat = fft.dctn(k, type=1, workers=self.workers)[:2 * mx, :2 * my]

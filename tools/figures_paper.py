@@ -81,6 +81,7 @@ def fig3(plt, cur, reg, out):
     ax1.set_xlabel(r"$\tilde d = dR/L^2$")
     ax1.set_ylabel(r"$\tilde F = FR/(E^* L^3)$")
     ax1.set_title("(a) force: every L/R on one curve (self-similarity)")
+    ax2.xaxis.set_minor_formatter(plt.matplotlib.ticker.NullFormatter())
     ax2.set_xlabel(r"$\tilde x = k/(2E^*L)$")
     ax2.set_ylabel(r"$\tilde g = dR/L^2$")
     ax2.set_title("(b) MDR profile, BEM points and fits of Eq. 9 (lines)")
@@ -190,15 +191,17 @@ def fig2(plt, out, n=512, l_over_r=5.0, d_over_r=0.1):
     keep = np.abs(y) <= ymax
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 6.5), constrained_layout=True,
                                    gridspec_kw=dict(height_ratios=[1.2, 1]))
+    # colour scale capped below the end singularity (the peak itself is in the line plot)
+    vmax = 2.5 * p[g.mx, g.my] / res.estar
     pm = ax1.pcolormesh(x, y[keep], p[:, keep].T / res.estar, shading="auto",
-                        cmap="magma")
+                        cmap="magma", vmin=0, vmax=vmax)
     ax1.set_xlabel("x/R (along the axis)")
     ax1.set_ylabel("y/R")
     ax1.set_title(f"contact pressure p/E*, L/R = {l_over_r:g}, d = {d_over_r:g} R "
                   f"({2 * g.mx} x {2 * g.my} cells; F = "
                   f"{res.force[-1] / (res.estar * res.radius**2):.4g} E* R^2)")
     ax1.grid(False)
-    fig.colorbar(pm, ax=ax1, label="p/E*")
+    fig.colorbar(pm, ax=ax1, label="p/E* (capped)", extend="max")
     j0 = g.my                                 # first row above y = 0
     ax2.plot(x, p[:, j0] / res.estar, "-", color="C3", label="p on the axis, y = 0")
     ax2.plot(x, p.sum(axis=1) * g.dy / (res.estar * res.radius), "-", color="C0",

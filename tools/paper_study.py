@@ -29,9 +29,12 @@ Writes into ``--out`` (default ``tables/``):
 ``paper_residual_comparison.csv``
     alpha, beta and F, k errors of every residual choice at every L/R.
 
-Run time: the full 512 x 512 study is 29 sweeps of 100 contact + 100 punch solves;
-see tables/README.md for the measured wall time. One L/R on a coarse grid takes
-seconds::
+Run time: the full 512 x 512 study is 29 sweeps of 100 contact + 100 punch solves,
+14 000 - 23 000 operator applications per L/R, 2 180 s of CPU in all: 25.6 min wall with
+2 processes on a shared 2-core machine, about 18 min on an idle one (tables/README.md;
+each run's own timings are in its table header). Each finished L/R is saved in
+OUT/partial/ until the tables are written; ``--resume`` picks them up after an
+interruption. One L/R on a coarse grid takes seconds::
 
     python -m tools.build_tables paper --l-over-r 5 --n 64 --steps 20 --out /tmp/check
 

@@ -78,13 +78,23 @@ def fig3(plt, cur, reg, out):
             a, b = reg.columns["alpha"][i[0]], reg.columns["beta"][i[0]]
             x = np.geomspace(c["x_tilde"][m].min(), c["x_tilde"][m].max(), 200)
             ax2.loglog(x, form_g(x, a, b), "-", lw=0.9, color=col)
+    # the universal curve (tables/universal_curve.csv: adapted grids, Richardson), drawn
+    # over the same range: an independent BEM computation of the one curve
+    from linecontact.tables import read_table
+    u = read_table("universal_curve").columns
+    span = (u["d_tilde"] >= c["d_tilde"].min() / 2) & (u["d_tilde"] <= c["d_tilde"].max() * 2)
+    kw = dict(color="k", lw=1.0, ls="--", label="universal curve (tables/universal_curve.csv)")
+    ax1.loglog(u["d_tilde"][span], u["Psi"][span], **kw)
+    ax2.loglog(u["x_tilde"][span], u["d_tilde"][span], **kw)
+    ax1.legend(fontsize=8, loc="upper left")
+    ax2.legend(fontsize=8, loc="upper left")
     ax1.set_xlabel(r"$\tilde d = dR/L^2$")
     ax1.set_ylabel(r"$\tilde F = FR/(E^* L^3)$")
     ax1.set_title("(a) force: every L/R on one curve (self-similarity)")
     ax2.xaxis.set_minor_formatter(plt.matplotlib.ticker.NullFormatter())
     ax2.set_xlabel(r"$\tilde x = k/(2E^*L)$")
     ax2.set_ylabel(r"$\tilde g = dR/L^2$")
-    ax2.set_title("(b) MDR profile, BEM points and fits of Eq. 9 (lines)")
+    ax2.set_title("(b) MDR profile, BEM points and fits of Eq. 9 (coloured lines)")
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=norm)
     cb = fig.colorbar(sm, ax=[ax1, ax2], shrink=0.9)
     cb.set_label("L/R")

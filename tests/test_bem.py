@@ -219,3 +219,15 @@ def test_adapted_depth_resolves_a_strip_thousands_of_times_longer_than_wide():
     assert a.grid.dx / a.grid.dy > 1000
     assert a.half_width_max < 1e-4
     assert abs(a.force / b.force - 1) < 1e-3
+
+
+def test_no_overlap_means_no_contact_and_nan_never_passes():
+    """A depth that does not reach the surface gives p = 0 exactly (not NaN reported as
+    converged), and a non-finite gap before loading is refused."""
+    op, r2, h, a = _sphere(8)
+    sol = solve_contact(op, r2 / 2 + 1e-3, 1e-3)
+    assert sol.converged and not sol.contact.any() and np.all(sol.pressure == 0)
+    bad = r2 / 2 - 0.01
+    bad[0, 0] = np.nan
+    with pytest.raises(ValueError, match="non-finite"):
+        solve_contact(op, bad, 0.01)

@@ -27,7 +27,8 @@ Two drivers:
 The stiffness k = dF/dd is the force of a rigid flat punch whose footprint is the
 converged contact set, at unit depth (tools.solver.solve_punch): the exact derivative
 of the discrete F(d) while the contact set does not change. ``stiffness='difference'``
-uses centred differences of F(d) instead (sweep only).
+uses ``numpy.gradient`` of F(d) instead (second-order inside, first-order at the first
+and last step; sweep only).
 """
 from __future__ import annotations
 
@@ -193,10 +194,16 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
             pun = solve_punch(op, sol.contact, tol=tol,
                               p0=p_punch if p_punch is not None else sol.pressure / d)
             its[i] += pun.iterations
-            if not pun.converged and raise_on_failure:
-                raise ConvergenceError(f"punch solver did not converge at d/R = {d / R:.6g}")
-            p_punch = pun.pressure
-            K[i] = 4 * pun.pressure.sum() * grid.cell_area
+            errs[i] = max(errs[i], pun.error)
+            if not pun.converged:
+                if raise_on_failure:
+                    raise ConvergenceError(
+                        f"L/R = {l_over_r:g}, d/R = {d / R:.6g}: punch solver stopped with "
+                        f"displacement error {pun.error:.3g} > tol = {tol:g}")
+                conv[i] = False     # k of this step stays NaN
+            else:
+                p_punch = pun.pressure
+                K[i] = 4 * pun.pressure.sum() * grid.cell_area
         if fields:
             from .halfspace import unfold
             pressures.append(unfold(sol.pressure))
@@ -228,7 +235,8 @@ class DepthResult:
 
 
 def _extent(contact, grid):
-    """Outer edge |y| of the contact in each x column of the quarter."""
+    """Contact half-widths of the quarter: (at x = 0, largest over x, index of the
+    outermost contact row)."""
     rows = np.where(contact.any(axis=0))[0]
     if rows.size == 0:
         return 0.0, 0.0, 0

@@ -36,6 +36,13 @@ def _dot(a, b):
     return float(np.einsum("i,i->", a, b))
 
 
+def _gap_error(g, S):
+    """Largest |gap| on the contact set and largest penetration outside it; NaN if any
+    gap is NaN (so that a NaN state can never pass as converged: NaN <= tol is False)."""
+    return float(np.max([np.abs(g[S]).max(initial=0.0), -g[~S].min(initial=0.0),
+                         0.0 if np.all(np.isfinite(g)) else np.nan]))
+
+
 class ConvergenceError(RuntimeError):
     """A solver stopped at its iteration limit without meeting its tolerance."""
 
@@ -78,8 +85,14 @@ def solve_contact(op, separation, scale, tol=1e-6, p0=None, maxiter=None):
     Solution
     """
     s = np.asarray(separation, dtype=float)
+    if not np.all(np.isfinite(s)):
+        raise ValueError("separation has non-finite values")
     if maxiter is None:
         maxiter = 50 + int(10 * np.sqrt(s.size))
+    if not np.any(s < 0):
+        # the indenter does not reach the surface: no contact, exactly
+        zero = np.zeros_like(s)
+        return Solution(zero, zero.copy(), zero > 0, 0, True, 0.0, tol)
     if p0 is None:
         p = np.where(s < 0, 1e-3, 0.0)
         u = op(p)
@@ -98,7 +111,7 @@ def solve_contact(op, separation, scale, tol=1e-6, p0=None, maxiter=None):
     while napply < maxiter:
         g = u + s
         S = p > 0
-        err = max(np.abs(g[S]).max(initial=0.0), -g[~S].min(initial=0.0))
+        err = _gap_error(g, S)
         if err <= tol_abs:
             break
         G = _dot(g[S], g[S])
@@ -134,7 +147,7 @@ def solve_contact(op, separation, scale, tol=1e-6, p0=None, maxiter=None):
     u = op(p)
     g = u + s
     S = p > 0
-    err = max(np.abs(g[S]).max(initial=0.0), -g[~S].min(initial=0.0))
+    err = _gap_error(g, S)
     return Solution(p, u, S, napply + 1, bool(err <= tol_abs), float(err / scale), tol)
 
 

@@ -44,11 +44,15 @@ from scipy.special import lambertw
 
 from .models import ContactModel, register
 from .tables import read_table, table_path
-from .validity import OutOfRangeError, check_interval, out
+from .validity import Interval, OutOfRangeError, check_interval, document, out
 
 __all__ = ["UniversalCurve", "UniversalModel", "universal_curve"]
 
 TABLE = "universal_curve"
+
+#: Depths beyond this fraction of R are refused unless asked for (extrapolate=True): the
+#: range of the accuracy study, where y^2/(2R) stands in for the circle.
+DEPTH_OVER_RADIUS = Interval("d/R", 0.0, 0.15, low_open=True)
 
 
 class UniversalCurve:
@@ -83,20 +87,18 @@ class UniversalCurve:
         self._curv = self._spline.derivative(2)
         self.d_min = float(cols["d_tilde"][0])
         self.d_max = float(cols["d_tilde"][-1])
-        self.psi_min = float(cols["Psi"][0])
-        self.psi_max = float(cols["Psi"][-1])
+        # the spline's own end values (equal to the table's to rounding), so that the
+        # forward and inverse functions share their range exactly
+        self.psi_min = float(np.exp(self._spline(self._z[0])))
+        self.psi_max = float(np.exp(self._spline(self._z[-1])))
         self.beta_small = float(table.meta["beta_small"])
         self.x_min = float(self.dpsi(self.d_min)) / 2
         self.x_max = float(self.dpsi(self.d_max)) / 2
 
     # -- forward -----------------------------------------------------------------
     def _check_depth(self, d_tilde):
-        d = np.asarray(d_tilde, dtype=float)
-        if np.any(d > self.d_max):
-            raise OutOfRangeError("d_tilde", float(d[d > self.d_max].flat[0]),
-                                  f"(0, {self.d_max:g}]",
-                                  hint="beyond the largest depth of the universal table")
-        return d
+        return check_interval("d_tilde", d_tilde, 0.0, self.d_max, low_open=True,
+                              hint="the universal table ends there")
 
     def _small(self, d):
         """Eq. 7 with alpha = pi/2, beta = beta_small: u from d~ = beta (u+1) e^-u."""
@@ -128,25 +130,26 @@ class UniversalCurve:
     # -- inverses ------------------------------------------------------------------
     def _newton(self, target, fun, dfun, z0, lo, hi):
         z = np.clip(z0, lo, hi)
+        floor = 1e-14 * np.maximum(1.0, np.abs(z))   # rounding floor of a step in ln d~
         for _ in range(50):
             step = (fun(z) - target) / dfun(z)
             z = np.clip(z - step, lo, hi)
-            if np.all(np.abs(step) < 1e-14):
-                break
-        return z
+            if np.all(np.abs(step) <= floor):
+                return z
+        if np.max(np.abs(step)) < 1e-10:   # stalled at rounding: d~ good to 1e-10
+            return z
+        raise RuntimeError("Newton inversion of the universal curve did not converge "
+                           f"(last step {np.max(np.abs(step)):.3g} in ln d~)")
 
     def depth_of_psi(self, psi):
         r""":math:`\tilde d` at which :math:`\Psi` takes the given value [-]."""
-        p = np.asarray(psi, dtype=float)
-        if np.any(p > self.psi_max):
-            raise OutOfRangeError("Psi", float(p[p > self.psi_max].flat[0]),
-                                  f"(0, {self.psi_max:g}]",
-                                  hint="beyond the largest depth of the universal table")
+        p = check_interval("Psi", psi, 0.0, self.psi_max, low_open=True,
+                           hint="the universal table ends there")
         small = p < self.psi_min
         lp = np.log(np.where(small, self.psi_min, p))
         z0 = np.interp(lp, self._lnpsi, self._z)
         z = self._newton(lp, self._spline, self._slope, z0, self._z[0], self._z[-1])
-        d = np.exp(z)
+        d = np.minimum(np.exp(z), self.d_max)   # exp(ln d_max) may round above d_max
         if np.any(small):
             ps = np.where(small, p, self.psi_min)
             d_small = ps / (2 * self.alpha_small) * (
@@ -156,12 +159,12 @@ class UniversalCurve:
 
     def depth_of_x(self, x_tilde):
         r"""MDR profile :math:`\Phi(\tilde x) = \tilde d` with :math:`\Psi'(\tilde d)/2 = \tilde x` [-]."""
-        x = np.asarray(x_tilde, dtype=float)
-        if np.any(x > self.x_max):
-            raise OutOfRangeError("x_tilde", float(x[x > self.x_max].flat[0]),
-                                  f"[0, {self.x_max:.6g}]",
-                                  hint="beyond the MDR contact radius at the largest "
-                                       "depth of the universal table")
+        # 1e-12 rounding allowance at the closed end (x~ computed as k/(2 E* L) from
+        # physical values), as validity.Interval's rtol
+        x = check_interval("x_tilde", x_tilde, 0.0, self.x_max * (1 + 1e-12),
+                           hint="beyond the MDR contact radius at the largest depth of "
+                                "the universal table")
+        x = np.minimum(x, self.x_max)
         small = x < self.x_min
         lx = np.log(2 * np.where(small, self.x_min, x))
 
@@ -174,7 +177,7 @@ class UniversalCurve:
         zs = self._z
         z0 = np.interp(lx, ln_dpsi(zs), zs)
         z = self._newton(lx, ln_dpsi, d_ln_dpsi, z0, zs[0], zs[-1])
-        d = np.exp(z)
+        d = np.minimum(np.exp(z), self.d_max)
         if np.any(small):
             xs = np.where(small & (x > 0), x, self.x_min)
             u = self.alpha_small / xs
@@ -190,6 +193,7 @@ def universal_curve(name=TABLE):
 
 
 @register
+@document(DR=DEPTH_OVER_RADIUS)
 class UniversalModel(ContactModel):
     r"""The BEM universal curve for one cylinder (the default model).
 
@@ -209,14 +213,19 @@ class UniversalModel(ContactModel):
         Effective modulus E* (Li & Popov 2017, Eq. 3) [Pa].
     table : str, optional
         Name of the table in tables/ (default ``"universal_curve"``).
+    extrapolate : bool, optional
+        Accept depths beyond %(DR)s, up to the table's end (default False).
 
     Notes
     -----
-    Valid for any L/R and for 0 < d <= d~_max L^2/R, d~_max the table's largest
-    dimensionless depth (30 for the shipped table); below the table's smallest depth
-    the small-depth asymptote continues it (see the module docstring). Accuracy: the
+    Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
+    table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
+    range over which the accuracy study compared the models, within which the parabolic
+    gap y^2/(2R) stands in for the circle (it needs d << R). Beyond it a depth is
+    refused unless ``extrapolate=True``. Below the table's smallest depth the
+    small-depth asymptote continues the curve (see the module docstring). Accuracy: the
     table header's ``accuracy`` line (BEM discretisation) plus the parabolic
-    approximation of the circle, which needs d << R.
+    approximation.
 
     Examples
     --------
@@ -239,9 +248,10 @@ class UniversalModel(ContactModel):
     key = "universal"
     label = "Universal curve (BEM)"
 
-    def __init__(self, radius, length, estar, table=TABLE):
+    def __init__(self, radius, length, estar, table=TABLE, extrapolate=False):
         super().__init__(radius, length, estar)
         self.table_name = table
+        self.extrapolate = bool(extrapolate)
         self.curve = universal_curve(table)
 
     @classmethod
@@ -269,27 +279,41 @@ class UniversalModel(ContactModel):
         return self.estar * self.length ** 3 / self.radius
 
     @property
+    def _radius_limited(self):
+        """True when d <= 0.15 R, not the table's end, bounds the depth."""
+        return (not self.extrapolate
+                and DEPTH_OVER_RADIUS.high * self.radius < self.curve.d_max * self._dscale)
+
+    @property
     def depth_limit(self):
-        """Largest depth covered by the table, d~_max L^2/R [m]."""
+        """Largest accepted depth [m]: the table's end d~_max L^2/R, and (unless
+        ``extrapolate``) 0.15 R."""
+        if self._radius_limited:
+            return DEPTH_OVER_RADIUS.high * self.radius
         return self.curve.d_max * self._dscale
 
     @property
     def force_limit(self):
         """Force at :attr:`depth_limit` [N]."""
-        return self.curve.psi_max * self._fscale
+        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
 
-    def _scaled(self, name, value, unit, scale, table_end, symbol):
-        """`value` / `scale` after checking 0 < value <= table_end * scale."""
-        v = check_interval(name, value, 0.0, table_end * scale, low_open=True, unit=unit,
-                           hint=f"the universal table ends at {symbol} = {table_end:.6g}")
-        return v / scale
+    def _limit_hint(self):
+        if self._radius_limited:
+            return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
+                    "in for the circle only for d << R (extrapolate=True accepts depths up "
+                    f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
+        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
 
     def _dt(self, depth):
-        return self._scaled("depth", depth, "m", self._dscale, self.curve.d_max, "d R/L^2")
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
+                           hint=self._limit_hint())
+        return d / self._dscale
 
     def _psi_of_force(self, force):
-        return self._scaled("force", force, "N", self._fscale, self.curve.psi_max,
-                            "F R/(E* L^3)")
+        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
+                           hint=self._limit_hint())
+        # F <= force_limit was checked; F/scale may still round above psi_max at the end
+        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""
@@ -297,7 +321,8 @@ class UniversalModel(ContactModel):
 
     def depth(self, force):
         """d(F) [m]; force [N]."""
-        return out(self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale)
+        d = self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale
+        return out(np.minimum(d, self.depth_limit))   # rounding at the closed end only
 
     def stiffness(self, depth):
         """k(d) = dF/dd [N/m]; depth [m]."""

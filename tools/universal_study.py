@@ -26,7 +26,7 @@ tools.cylinder.solve_depth with L = R = E* = 1):
    law's alpha), beta_eff = Psi/pi * exp(pi d~/Psi - 1), to show how the small-depth
    asymptote is approached (SPEC section 5). The runtime continues the curve below the
    table with alpha = pi/2 and beta = beta_eff at the smallest tabulated depth; the
-   error of that continuation in F is |delta beta/beta| / (pi d~/Psi), recorded.
+   error of that continuation in F is |delta beta/beta| / (pi d~/Psi - 1), recorded.
 
 Budget: the default run (about 110 depths, 2 processes) is meant to finish within
 10 minutes on a 2-core machine; ``--processes`` and the grid options trade time for
@@ -155,7 +155,8 @@ def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol
     # beta_eff keeps drifting; the drift over the last decade bounds it per decade
     last = depths <= depths[0] * 10 ** 1.0001
     drift_per_decade = abs(beta[last][-1] / beta[0] - 1)
-    sens = psi[0] / (np.pi * depths[0])
+    # at fixed d~: d~ = Psi/pi (1 + ln(pi beta/Psi))  =>  dPsi/Psi = -(dbeta/beta)/(x - 1)
+    sens = 1.0 / (np.pi * depths[0] / psi[0] - 1.0)
     summary = dict(
         wall_time=wall, n=n, richardson_err=float(richardson_err.max(initial=0)),
         width_err=float(width_err.max(initial=0)),

@@ -200,7 +200,8 @@ def read_table(name, directory=None):
         path = Path(directory) / f"{name}.csv"
         if not path.is_file():
             raise FileNotFoundError(f"table {name!r} not found in {directory}")
-    meta, columns = _parse(path.read_text(encoding="utf-8"), str(path))
+    # utf-8-sig: a table re-saved by a spreadsheet may start with a byte-order mark
+    meta, columns = _parse(path.read_text(encoding="utf-8-sig"), str(path))
     return Table(meta=meta, columns=columns, path=path)
 
 

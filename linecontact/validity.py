@@ -103,8 +103,9 @@ class Interval:
     low, high : float
         Ends of the range; ``-inf``/``inf`` for unbounded.
     low_open, high_open : bool
-        Whether an end is excluded. An infinite end is excluded unless the
-        ``*_open`` flag says otherwise explicitly (a rigid body may have E = inf).
+        Whether an end is excluded (default: both ends included, also an infinite
+        one, so that e.g. a rigid body's E = inf can be accepted; pass
+        ``high_open=True`` to exclude inf).
     unit : str
         Unit of the quantity, e.g. ``"m"``, ``"Pa"``; empty for dimensionless.
     rtol : float

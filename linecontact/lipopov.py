@@ -230,7 +230,7 @@ def coefficient_set(name="published"):
     except FileNotFoundError:
         raise OutOfRangeError("coefficients", name, "one of "
                               + ", ".join(repr(n) for n in available_coefficient_sets()),
-                              hint=f"a table set NAME is read from tables/lipopov_NAME.csv"
+                              hint="a table set NAME is read from tables/lipopov_NAME.csv"
                               ) from None
     key = (str(path), os.stat(path).st_mtime_ns)
     if key not in _CACHE:

@@ -2,7 +2,6 @@
 
 Each test states the fact it checks in its docstring and assertion message.
 """
-import math
 import subprocess
 import sys
 

@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from linecontact.models import get_model
+from tools.build_tables import code_version
 from linecontact.tables import available_tables, write_table
 from linecontact.universal import UniversalModel
 from linecontact.validity import OutOfRangeError
@@ -163,7 +164,7 @@ def figure(errs, models, uni, path):
                 ax.set_ylabel("d/R")
     for r, name in enumerate(("F", "k")):
         ax = axes[r, n]
-        sc = ax.scatter(uni[:, 0], uni[:, 1], c=np.abs(uni[:, 2 + r]), cmap=cmap, norm=norm,
+        ax.scatter(uni[:, 0], uni[:, 1], c=np.abs(uni[:, 2 + r]), cmap=cmap, norm=norm,
                         s=60, edgecolors="k")
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -216,7 +217,7 @@ def main(argv=None):
         "models": "; ".join(f"{t} = {l}" for t, l, _, _ in models),
         "generated_by": "python -m tools.accuracy " + " ".join(argv or sys.argv[1:]),
         "date": _dt.date.today().isoformat(),
-        "version": __import__("tools.universal_study", fromlist=["x"]).code_version(),
+        "version": code_version(),
         "accuracy": "reference = tables/universal_curve.csv; universal model vs "
                     f"independent BEM at {len(uni)} off-node points: largest |error| "
                     f"F {np.abs(uni[:, 2]).max():.1e}, k {np.abs(uni[:, 3]).max():.1e} "

@@ -52,7 +52,6 @@ import multiprocessing
 import os
 import platform
 import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -60,6 +59,8 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import least_squares, minimize
 from scipy.special import lambertw
+
+from .build_tables import code_version
 
 PAPER_L_OVER_R = tuple([round(0.1 * i, 1) for i in range(1, 11)] + list(range(2, 21)))
 
@@ -132,19 +133,6 @@ def add_arguments(parser):
 
 def _default_out():
     return Path(__file__).resolve().parent.parent / "tables"
-
-
-def code_version():
-    """'linecontact X, git DESCRIBE' of the checkout that runs this."""
-    import linecontact
-    try:
-        described = subprocess.run(
-            ["git", "describe", "--always", "--dirty", "--tags"],
-            cwd=Path(__file__).resolve().parent, capture_output=True, text=True,
-            timeout=10).stdout.strip() or "unknown"
-    except (OSError, subprocess.SubprocessError):
-        described = "unknown"
-    return f"linecontact {linecontact.__version__}, git {described}"
 
 
 # --------------------------------------------------------------------------------------

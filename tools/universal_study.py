@@ -36,13 +36,13 @@ from __future__ import annotations
 
 import datetime as _dt
 import multiprocessing as mp
-import subprocess
 import time
 from pathlib import Path
 
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from .build_tables import code_version
 from .cylinder import solve_depth
 
 REPO = Path(__file__).resolve().parent.parent
@@ -188,23 +188,12 @@ def _bar(iterable, total, enabled):
     return tqdm(iterable, total=total, desc="universal curve", unit="depth")
 
 
-def code_version():
-    try:
-        rev = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=REPO,
-                             capture_output=True, text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        rev = "unknown"
-    from linecontact import __version__
-    return f"linecontact {__version__}, git {rev}"
-
-
 def run(args):
     from linecontact.tables import write_table
 
     columns, s = compute(args.d_min, args.d_max, args.per_decade, args.n_length,
                          args.n_width, args.tol, args.check_every, args.processes,
                          not args.no_progress)
-    acc = max(s["richardson_err"], s["width_err"])
     meta = {
         "title": "Universal force-depth curve of a rigid parabolic cylinder of finite "
                  "length on an elastic half-space: F R/(E* L^3) = Psi(d R/L^2)",

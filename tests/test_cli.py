@@ -242,6 +242,7 @@ def test_json_results_equal_the_library_called_with_si_inputs(results):
     doc = _json(results, "one_json")
     assert math.isclose(doc["inputs"]["estar"], 210e9 / (1 - 0.09), rel_tol=1e-12)
     assert [m["label"] for m in doc["models"]] == [m.label for m in _library()]
+    compared = 0
     for model, entry in zip(_library(), doc["models"]):
         row = entry["rows"][0]
         assert row["force"] == 1000.0
@@ -252,6 +253,9 @@ def test_json_results_equal_the_library_called_with_si_inputs(results):
             continue
         assert _close(row["depth"], depth), model.key
         assert _close(row["stiffness"], float(model.stiffness_at_force(1000.0))), model.key
+        compared += 1
+    # a rigid cylinder on steel: all but the steel-only Palmgren and ISO rows answer
+    assert compared >= len(doc["models"]) - 2, f"only {compared} rows compared"
 
 
 def test_json_carries_version_units_and_provenance(results):
@@ -323,6 +327,7 @@ def test_depth_input_gives_force_and_depth_column_first(results):
     from linecontact.validity import OutOfRangeError
 
     doc = _json(results, "depth_json")
+    compared = 0
     for model, entry in zip(_library(), doc["models"]):
         row = entry["rows"][0]
         assert row["depth"] == 2e-6
@@ -332,6 +337,8 @@ def test_depth_input_gives_force_and_depth_column_first(results):
             assert row["note"], model.label
             continue
         assert _close(row["force"], force), model.label
+        compared += 1
+    assert compared >= len(doc["models"]) - 2, f"only {compared} rows compared"
     header = next(
         line
         for line in _ok(results, "depth_sweep_si").stdout.splitlines()

@@ -105,27 +105,30 @@ class UniversalCurve:
         w = lambertw(-d / (self.beta_small * math.e), k=-1)
         return -1.0 - np.real(w)
 
-    def psi(self, d_tilde):
-        r""":math:`\Psi = F R/(E^* L^3)` at :math:`\tilde d = d R/L^2` [-]."""
+    def _evaluate(self, d_tilde, on_table, below_table):
+        """on_table(d) where d~ >= d_min, below_table(d) under it; any input shape."""
         d = self._check_depth(d_tilde)
         flat = np.atleast_1d(d).ravel()
         res = np.empty_like(flat)
         small = flat < self.d_min
-        res[~small] = np.exp(self._spline(np.log(flat[~small])))
-        u = self._small(flat[small])
-        res[small] = 2 * self.alpha_small * self.beta_small * np.exp(-u)
+        res[~small] = on_table(flat[~small])
+        res[small] = below_table(flat[small])
         return res.reshape(d.shape)
+
+    def psi(self, d_tilde):
+        r""":math:`\Psi = F R/(E^* L^3)` at :math:`\tilde d = d R/L^2` [-]."""
+        return self._evaluate(
+            d_tilde, lambda d: np.exp(self._spline(np.log(d))),
+            lambda d: 2 * self.alpha_small * self.beta_small * np.exp(-self._small(d)))
 
     def dpsi(self, d_tilde):
         r""":math:`\Psi' = k/(E^* L)` at :math:`\tilde d` [-]."""
-        d = self._check_depth(d_tilde)
-        flat = np.atleast_1d(d).ravel()
-        res = np.empty_like(flat)
-        small = flat < self.d_min
-        z = np.log(flat[~small])
-        res[~small] = np.exp(self._spline(z) - z) * self._slope(z)
-        res[small] = 2 * self.alpha_small / self._small(flat[small])
-        return res.reshape(d.shape)
+        def on_table(d):
+            z = np.log(d)
+            return np.exp(self._spline(z) - z) * self._slope(z)
+
+        return self._evaluate(d_tilde, on_table,
+                              lambda d: 2 * self.alpha_small / self._small(d))
 
     # -- inverses ------------------------------------------------------------------
     def _newton(self, target, fun, dfun, z0, lo, hi):

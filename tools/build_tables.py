@@ -18,28 +18,14 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import subprocess
 import sys
-from pathlib import Path
+
+from .runner import code_version  # noqa: F401  (re-exported: tools.accuracy uses it)
 
 SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",
 }
-
-
-def code_version():
-    """'linecontact X, git DESCRIBE' of the checkout that runs this: the ``version`` /
-    ``code_version`` line of every table the tools write."""
-    import linecontact
-    try:
-        described = subprocess.run(
-            ["git", "describe", "--always", "--dirty", "--tags"],
-            cwd=Path(__file__).resolve().parent, capture_output=True, text=True,
-            timeout=10).stdout.strip() or "unknown"
-    except (OSError, subprocess.SubprocessError):
-        described = "unknown"
-    return f"linecontact {linecontact.__version__}, git {described}"
 
 
 def main(argv=None):

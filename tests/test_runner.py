@@ -163,3 +163,25 @@ def test_study_through_separate_scheduler_and_worker(tmp_path, scheduler_and_wor
     assert [r["y"] for r in out] == [4, 9]
     assert all(r["pid"] != os.getpid() for r in out)
     assert len(list((tmp_path / "ck").glob("*.pkl"))) == 2
+
+
+def test_universal_study_cli_through_the_scheduler(tmp_path, scheduler_and_worker):
+    """`python -m tools.build_tables universal --scheduler ADDRESS` on a tiny grid: the
+    BEM tasks run on the separate worker and the table records where they ran; the
+    result equals a LocalCluster run of the same study (same tasks, same solver)."""
+    from linecontact.tables import read_table
+    from tools.build_tables import main as build_tables
+    tiny = ["--d-min", "1e-3", "--d-max", "1e-1", "--per-decade", "1", "--n-length", "8",
+            "--n-width", "4", "--check-every", "0", "--no-progress"]
+    assert build_tables(["universal", *tiny, "--out", str(tmp_path / "remote"),
+                         "--scheduler", scheduler_and_worker]) == 0
+    assert build_tables(["universal", *tiny, "--out", str(tmp_path / "local"),
+                         "--workers", "1"]) == 0
+    remote = read_table("universal_curve", directory=tmp_path / "remote")
+    local = read_table("universal_curve", directory=tmp_path / "local")
+    assert scheduler_and_worker in remote.meta["wall_time"]
+    assert remote.meta["generated_by"].endswith(scheduler_and_worker)
+    assert len(remote) == 3
+    for name in ("Psi", "dPsi", "beta_eff"):
+        assert remote.columns[name].tolist() == local.columns[name].tolist(), name
+    assert not (tmp_path / "remote" / "partial_universal").exists()

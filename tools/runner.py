@@ -130,7 +130,7 @@ def _client(scheduler, workers):
         return Client(scheduler, timeout="60s"), None
     cluster = LocalCluster(n_workers=int(workers or DEFAULT_WORKERS),
                            threads_per_worker=1, processes=True,
-                           dashboard_address=None)
+                           dashboard_address=":0")   # a free port: never clashes
     return Client(cluster), cluster
 
 

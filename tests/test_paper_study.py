@@ -79,11 +79,11 @@ def test_stated_errors_are_those_of_the_shipped_curves(regenerated, curves):
 
 
 def test_curves_cover_the_paper_study(curves):
-    """29 L/R, 0.1..1.0 and 2..20, depths up to 0.15 R (SPEC section 6)."""
+    """29 L/R, 0.1..1.0 and 2..20, depths up to 0.15 R (Li & Popov 2017, section 3)."""
     c = curves.columns
     np.testing.assert_allclose(np.unique(c["L_over_R"]), paper_study.PAPER_L_OVER_R)
     np.testing.assert_allclose(c["d_over_R"].max(), 0.15)
-    # self-similar columns are the SI ones rescaled (SPEC section 5)
+    # self-similar columns are the SI ones rescaled (Li & Popov 2017, Eq. 8)
     L = c["L_over_R"]
     np.testing.assert_allclose(c["d_tilde"], c["d_over_R"] / L**2, rtol=1e-12)
     np.testing.assert_allclose(c["F_tilde"], c["F_over_EstarR2"] / L**3, rtol=1e-12)

@@ -3,10 +3,10 @@
 Subcommands, each with its own options (``--help``):
 
 ``universal``
-    The universal curve Psi(d~), Phi (SPEC section 5) on adapted grids:
+    The universal curve Psi(d~), Phi (docs/theory.md, section 'Self-similarity') on adapted grids:
     tables/universal_curve.csv (tools.universal_study).
 ``paper``
-    The paper's study (SPEC section 6): BEM sweeps per L/R, fitted alpha, beta:
+    The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha, beta:
     tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
 
 Run from the repository root, e.g.::

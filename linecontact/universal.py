@@ -39,9 +39,8 @@ import functools
 import math
 
 import numpy as np
-from scipy.interpolate import CubicSpline
-from scipy.special import lambertw
-
+from ._numerics import NotAKnotSpline
+from .lipopov import _u_from_depth_ratio
 from .models import ContactModel, register
 from .tables import read_table, table_path
 from .validity import Interval, OutOfRangeError, check_interval, document, out
@@ -82,9 +81,10 @@ class UniversalCurve:
         self.table = table
         self._z = np.log(cols["d_tilde"])
         self._lnpsi = np.log(cols["Psi"])
-        self._spline = CubicSpline(self._z, self._lnpsi)
-        self._slope = self._spline.derivative(1)
-        self._curv = self._spline.derivative(2)
+        spline = NotAKnotSpline(self._z, self._lnpsi)
+        self._spline = spline
+        self._slope = lambda z: spline(z, 1)
+        self._curv = lambda z: spline(z, 2)
         self.d_min = float(cols["d_tilde"][0])
         self.d_max = float(cols["d_tilde"][-1])
         # the spline's own end values (equal to the table's to rounding), so that the
@@ -102,8 +102,7 @@ class UniversalCurve:
 
     def _small(self, d):
         """Eq. 7 with alpha = pi/2, beta = beta_small: u from d~ = beta (u+1) e^-u."""
-        w = lambertw(-d / (self.beta_small * math.e), k=-1)
-        return -1.0 - np.real(w)
+        return _u_from_depth_ratio(d / self.beta_small)
 
     def _evaluate(self, d_tilde, on_table, below_table):
         """on_table(d) where d~ >= d_min, below_table(d) under it; any input shape."""

@@ -36,6 +36,20 @@ def test_runtime_spline_reproduces_the_table_stiffness_column():
     np.testing.assert_allclose(CURVE.dpsi(d), TABLE.columns["dPsi"], rtol=1e-9)
 
 
+def test_runtime_spline_is_scipys_cubic_spline_of_the_table():
+    """The runtime evaluates the table's spline in numpy (no scipy import at run time);
+    it is scipy's CubicSpline(ln d~, ln Psi) to 1e-12 (relative to the largest value), in
+    value, slope and curvature, between the knots where the inversions and k use them."""
+    from scipy.interpolate import CubicSpline
+    z, lp = np.log(TABLE.columns["d_tilde"]), np.log(TABLE.columns["Psi"])
+    ref = CubicSpline(z, lp)
+    zq = np.linspace(z[0], z[-1], 20001)
+    for nu, got in ((0, CURVE._spline(zq)), (1, CURVE._slope(zq)), (2, CURVE._curv(zq))):
+        r = ref(zq, nu)
+        np.testing.assert_allclose(got, r, rtol=0, atol=1e-12 * np.abs(r).max(),
+                                   err_msg=f"derivative order {nu}")
+
+
 def test_force_and_stiffness_increase_with_depth():
     """F(d) is increasing and convex (k = dF/dd increasing: the contact grows), over the
     table and the small-depth continuation below it."""

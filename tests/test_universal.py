@@ -10,7 +10,8 @@ from hypothesis import strategies as st
 import linecontact as lc
 from linecontact.mdr import mdr_force
 from linecontact.tables import read_table
-from linecontact.universal import UniversalModel, universal_curve
+from linecontact.models import UniversalModel
+from linecontact.universal import universal_curve
 from linecontact.validity import OutOfRangeError
 
 TABLE = read_table("universal_curve")

@@ -31,7 +31,7 @@ import numpy as np
 from linecontact.models import get_model
 from tools.build_tables import code_version
 from linecontact.tables import available_tables, write_table
-from linecontact.universal import UniversalModel
+from linecontact.models import UniversalModel
 from linecontact.validity import OutOfRangeError
 
 REPO = Path(__file__).resolve().parent.parent

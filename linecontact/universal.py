@@ -2,7 +2,7 @@ r"""The universal curve: the default model of a straight finite cylinder.
 
 With the parabolic gap :math:`h = y^2/(2R)` the contact problem of a rigid cylinder of
 radius R and length L depends on the dimensionless depth :math:`\tilde d = d R/L^2`
-alone (SPEC section 5), so that for every L/R
+alone (docs/theory.md, section 'Self-similarity'), so that for every L/R
 
 .. math::
 

@@ -25,7 +25,7 @@ from linecontact.validity import OutOfRangeError
 
 STEEL_ESTAR = 210e9 / (2 * (1 - 0.3**2))
 
-# Li & Popov 2017, Table 1, as printed (SPEC.md section 4), typed here independently of
+# Li & Popov 2017, Table 1, as printed in the paper, typed here independently of
 # tables/lipopov_published.csv: a literature fixture.
 TABLE_1 = [
     (0.1, 3.8695, 17.1183), (0.2, 2.8664, 6.6132), (0.3, 2.4734, 3.9560),
@@ -50,7 +50,9 @@ def _geom(R, L, a, b, E=STEEL_ESTAR):
 @given(u=st.floats(0.01, 50.0), a=alphas, b=betas)
 def test_force_closed_form_is_the_mdr_integral_of_eq7(u, a, b):
     """F = 2 alpha beta E* L^3/R exp(-u) equals 2E* int_0^a (d - g) dx with g of Eq. 7,
-    a = alpha L / u and d = g(a) (SPEC section 4, derived, checked by quadrature)."""
+    a = alpha L / u and d = g(a) (Li & Popov (2017), Eq. 7 integrated by the MDR rules,
+    docs/theory.md, section 'MDR'; derived in linecontact/lipopov.py, checked here by
+    quadrature)."""
     R, L, E = 5e-3, 10e-3, STEEL_ESTAR
     a_c = a * L / u
     g = lambda x: lipopov_profile(x, R, L, alpha=a, beta=b)

@@ -401,4 +401,6 @@ POSITIVE_LENGTH = Interval("length", 0.0, np.inf, True, True, "m")
 POSITIVE_FORCE = Interval("force", 0.0, np.inf, True, True, "N")
 POSITIVE_DEPTH = Interval("depth", 0.0, np.inf, True, True, "m")
 POSITIVE_MODULUS = Interval("modulus", 0.0, np.inf, True, True, "Pa")
-POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, True, "")
+#: Poisson's ratio: 0.5 (incompressible: rubber, elastomer coatings) is included; E* of
+#: Eq. 3 stays finite there, 1 - nu^2 = 0.75 (Li & Popov (2017), Eq. 3).
+POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, False, "")

@@ -274,6 +274,7 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
 
     n = len(values)
     out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
+    out["force" if given == "load" else "depth"][:] = values  # given, even where refused
     if isinstance(model, Refused):
         for i in idx:
             notes[i] = str(model.exc)

@@ -76,7 +76,8 @@ _N_SAMPLES = 4097
 
 
 def _drop_function(profile):
-    """P(x) [m] from None (straight), an object with ``drop(x)`` or a callable."""
+    """P(x) [m] from None (straight), an object with ``drop(x)`` or a callable.
+    P may be +inf where the roller can never touch (a logarithmic profile's ends)."""
     if profile is None:
         return lambda x: np.zeros_like(np.asarray(x, dtype=float))
     fn = getattr(profile, "drop", profile)
@@ -89,8 +90,9 @@ def _drop_function(profile):
 def _drop_values(drop, x):
     v = np.asarray(drop(np.asarray(x, dtype=float)), dtype=float)
     v = np.broadcast_to(v, np.shape(x)).astype(float)
-    if not np.all(np.isfinite(v)):
-        i = int(np.flatnonzero(~np.isfinite(v))[0])
+    # +inf is a drop that never touches (a logarithmic profile at its ends)
+    if np.any(np.isnan(v)):
+        i = int(np.flatnonzero(np.isnan(v))[0])
         raise OutOfRangeError("profile drop", float(v.flat[i]), "[0, inf) m", unit="m",
                               where=f"at x = {float(np.ravel(x)[i]):.6g} m")
     if np.any(v < 0):

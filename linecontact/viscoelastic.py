@@ -362,22 +362,34 @@ def _times(time):
 
 def _hereditary(kinf, k, theta, t, g):
     """y(t_n) = int_{t0-}^{t_n} K(t_n - s) dg(s), K = kinf + sum k_i exp(-t/theta_i),
-    g piecewise linear between samples, g = 0 before t_0 (a step there)."""
-    y = np.empty(t.size)
-    h = k * g[0]
-    y[0] = kinf * g[0] + h.sum()
-    for n in range(1, t.size):
-        dt = t[n] - t[n - 1]
-        dg = g[n] - g[n - 1]
-        if dt == 0.0:
-            h = h + k * dg
-        else:
-            x = dt / theta
-            decay = np.exp(-x)
-            # int_0^dt k e^{-(dt - s)/theta} (dg/dt) ds = k (dg/dt) theta (1 - e^{-x})
-            h = decay * h + k * dg * (-np.expm1(-x)) / x
-        y[n] = kinf * g[n] + h.sum()
-    return y
+    g piecewise linear between samples, g = 0 before t_0 (a step there).
+
+    Per term the memory h_i obeys h_i(t_n) = e^{-x} h_i(t_{n-1}) + k_i dg (1 - e^{-x})/x,
+    x = dt/theta_i (the exact integral over a linear piece; a step where dt = 0). On an
+    even time grid the recursion is a first-order linear filter (scipy.signal.lfilter).
+    """
+    k = np.asarray(k, dtype=float)
+    theta = np.asarray(theta, dtype=float)
+    dt = np.diff(t)[:, None]
+    dg = np.diff(g)[:, None]
+    x = dt / theta
+    with np.errstate(invalid="ignore", divide="ignore"):
+        gain = np.where(x > 0, -np.expm1(-x) / np.where(x > 0, x, 1.0), 1.0)
+    decay = np.exp(-x)
+    inc = k * dg * gain
+    h = np.empty((t.size, k.size))
+    h[0] = k * g[0]
+    if t.size > 1 and np.all(dt == dt[0]):
+        from scipy.signal import lfilter
+
+        for i in range(k.size):
+            a = decay[0, i]
+            b = np.concatenate([[h[0, i]], inc[:, i]])
+            h[:, i] = lfilter([1.0], [1.0, -a], b)
+    else:
+        for n in range(1, t.size):
+            h[n] = decay[n - 1] * h[n - 1] + inc[n - 1]
+    return kinf * g + h.sum(axis=1)
 
 
 def _unit_law(model, depth):

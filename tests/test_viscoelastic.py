@@ -117,10 +117,15 @@ def test_recursive_update_is_exact_for_ramps():
     """Linear law F1 = 2 a d: a depth ramp d = v t gives F = 2 a v [E_inf t +
     sum E_i tau_i (1 - exp(-t/tau_i))] and a force ramp F = r t gives
     d = r/(2a) [t/E_inf - sum c_k lam_k (1 - exp(-t/lam_k))]; both exact with 6
-    uneven samples over 5 decades (rtol 1e-12)."""
+    uneven samples over 5 decades, and on an even grid (rtol 1e-12)."""
     a, v, rate = 2e-3, 1e-7, 3.0
     m = FlatPunch(1.0, a, 1.0)
-    t = np.array([0.0, 1e-3, 0.2, 3.0, 50.0, 1e3])
+    for t in (np.array([0.0, 1e-3, 0.2, 3.0, 50.0, 1e3]),   # uneven: the step loop
+              np.linspace(0.0, 100.0, 11)):                 # even: the linear filter
+        _check_ramps(m, a, v, rate, t)
+
+
+def _check_ramps(m, a, v, rate, t):
     F = force_history(m, PRONY, t, v * t)
     exact = 2 * a * v * (PRONY.long_term * t + np.sum(
         PRONY.moduli * PRONY.times * (1 - np.exp(-t[:, None] / PRONY.times)), axis=1))

@@ -566,10 +566,13 @@ class TangentialContact:
     2/3 < G*/E* <= 1 (Poisson ratios in [0, 0.5)), and in the model's depth range.
     Exact for axisymmetric shapes and for any shape at nu = 0; for the finite cylinder
     see docs/tangential.md for the MDR's measured error and ``method="bem"``.
-    Energies are integrated by 64-point Gauss-Legendre quadrature in
-    :math:`z = d - (d - z_0) t^2` (smooth at the gross-slip end where the contact law
-    starts from zero); against Mindlin-Deresiewicz's closed form for the sphere the
-    relative error is below 1e-9 (tests/test_tangential.py).
+    Energies are integrated, in the form :math:`W = 4r\int_0^{u_0} (u_0 - 2s)
+    [k_n(d - rs/\mu) - k_n(d)]\,ds` (by parts; free of the cancellation of the
+    :math:`O(u_0^2)` terms), by 64-point Gauss-Legendre quadrature in
+    :math:`s = u_0(1 - t^2)`, smooth at gross slip where the normal stiffness starts
+    from zero; they need the model's k_n to be the derivative of its F. Against
+    Mindlin-Deresiewicz's closed form for the sphere the relative error is below 1e-11
+    for Q*/(mu P) from 0.01 to 1 (tests/test_tangential.py).
 
     Examples
     --------
@@ -766,18 +769,28 @@ class TangentialContact:
                              self.reloading(up, u0, beyond=beyond)])
         return u, ft
 
-    def _integral(self, amplitude):
-        """int_0^u0 f(s) ds [J] for u0 <= u* (law without slip correction)."""
+    def _masing_energy(self, amplitude):
+        """W [J] for amplitudes u0 <= u* [m], law without slip correction.
+
+        Integrating by parts, W = 8 int_0^u0 f - 4 u0 f(u0) = 4 int_0^u0 (u0 - 2s) f'(s) ds
+        with f'(s) = r k_n(d - r s/mu); as int_0^u0 (u0 - 2s) ds = 0, k_n(d) may be
+        subtracted, which removes the cancellation of the O(u0^2) terms (W ~ u0^3 at
+        small amplitude). 64-point Gauss-Legendre in s = u0 (1 - t^2), smooth at
+        s = u* where k_n(z) ~ sqrt(z) (sphere) starts.
+        """
         u0 = np.asarray(amplitude, dtype=float)
         mu, r, d = self.friction, self.ratio, self.depth
-        z0 = np.maximum(d - r * u0 / mu, 0.0)
-        # int_{z0}^{d} F(z) dz with z = d - (d - z0) t^2, t in [0, 1]
         t = 0.5 * (_GL_T + 1.0)
         w = 0.5 * _GL_W
-        span = (d - z0)[..., None]
-        z = d - span * t ** 2
-        integral = np.sum(_law(self.model, z) * 2 * span * t * w, axis=-1)
-        return mu * self.normal_force * u0 - mu ** 2 / r * integral
+        u = u0[..., None]
+        s = u * (1.0 - t ** 2)
+        z = np.maximum(d - r * s / mu, 0.0)
+        kz = np.zeros(z.shape)
+        pos = z > 0
+        kz[pos] = self.model.stiffness(z[pos])
+        kd = float(self.model.stiffness(d))
+        integrand = (u - 2 * s) * (kz - kd) * 2 * u * t
+        return 4 * r * np.sum(integrand * w, axis=-1)
 
     def dissipated_energy(self, amplitude, *, beyond="raise"):
         r"""Energy dissipated per full cycle of amplitude u0 [m]: W [J] (Masing).
@@ -793,8 +806,7 @@ class TangentialContact:
                 "available; use slip_correction=False (stiffness-corrected law)")
         u0 = self._amplitude(amplitude, beyond)
         ustar = self.gross_slip_shift
-        us = np.minimum(u0, ustar)
-        W = 8 * self._integral(us) - 4 * us * np.asarray(self.force(us))
+        W = self._masing_energy(np.minimum(u0, ustar))
         W = W + 4 * self.gross_slip_force * np.maximum(u0 - ustar, 0.0)
         return out(W)
 

@@ -227,6 +227,11 @@ class StandardLinearSolid(PronySeries):
         super().__init__(Einf, [E0 - Einf], [tau])
         self.tau = float(self.times[0])
 
+    def scaled(self, factor):
+        """The same solid with both moduli times `factor` [-] (E -> E* = E/(1 - nu^2))."""
+        f = float(_one(check_positive("factor", factor), "factor"))
+        return StandardLinearSolid(self.instantaneous * f, self.long_term * f, self.tau)
+
     @property
     def retardation_time(self):
         """Creep time tau_r = tau E_0/E_inf [s]."""

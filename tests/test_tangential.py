@@ -317,6 +317,11 @@ def test_optional_slip_correction_scales_the_shift(tmp_path):
     assert bem.shift(Ft) == pytest.approx(plain.shift(Ft) * [1.05, 1.1, 1.2], rel=1e-12, abs=0)
     assert bem.force(bem.shift(Ft)) == pytest.approx(Ft, rel=1e-12, abs=0)
     assert bem.gross_slip_shift == pytest.approx(1.2 * plain.gross_slip_shift, rel=1e-12, abs=0)
+    # the Masing energy of the corrected law, by direct quadrature, against the
+    # trapezoidal area of its loop (2001 points per branch: 1e-5 relative)
+    u0 = 0.5 * bem.gross_slip_shift
+    u, ft = bem.loop(u0, n=2001)
+    assert np.trapezoid(ft, u) == pytest.approx(bem.dissipated_energy(u0), rel=1e-5, abs=0)
 
 
 def test_shipped_table_at_nu_zero_is_the_normal_problem():

@@ -95,8 +95,8 @@ STRAIGHT_CYLINDER_MODELS = frozenset({"universal", "li-popov", "puttock-thwaite"
 
 MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=False,
                             unit="Pa")
-#: G*/E* for Poisson ratios in [0, 0.5): 2(1-nu)/(2-nu) lies in (2/3, 1].
-SHEAR_RATIO = Interval("gstar/estar", 2.0 / 3.0, 1.0, low_open=True, unit="", rtol=1e-12)
+#: G*/E* for Poisson ratios in [0, 0.5]: 2(1-nu)/(2-nu) lies in [2/3, 1].
+SHEAR_RATIO = Interval("gstar/estar", 2.0 / 3.0, 1.0, unit="", rtol=1e-12)
 FRICTION = Interval("friction", 0.0, np.inf, low_open=True, high_open=True)
 _DIRECTIONS = ("across", "along")
 _METHODS = ("mdr", "bem")
@@ -168,7 +168,7 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     -----
     Valid for %(E)s (``inf`` = rigid) and %(NU)s for each body, not both rigid.
     With :func:`linecontact.classical.effective_modulus` the ratio G*/E* lies in
-    (2/3, 1]; it is 2(1-nu)/(2-nu) for a rigid indenter (0.8235 at nu = 0.3).
+    [2/3, 1]; it is 2(1-nu)/(2-nu) for a rigid indenter (0.8235 at nu = 0.3).
 
     Examples
     --------
@@ -207,16 +207,16 @@ def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     modulus1, modulus2 : float or array_like
         Young's moduli [Pa]; ``inf`` for a rigid body (not both).
     poisson1, poisson2 : float or array_like
-        Poisson ratios in [0, 0.5) [-].
+        Poisson ratios in [0, 0.5] [-].
 
     Returns
     -------
     float or ndarray
-        G*/E* in (2/3, 1] [-].
+        G*/E* in [2/3, 1] [-].
 
     Notes
     -----
-    Valid for moduli in (0, inf] Pa and Poisson ratios in [0, 0.5). It is 1 at
+    Valid for moduli in (0, inf] Pa and Poisson ratios in [0, 0.5]. It is 1 at
     nu = 0, where the tangential problem is the normal one.
 
     Examples
@@ -257,11 +257,11 @@ def equivalent_poisson(gstar, estar):
     Returns
     -------
     float or ndarray
-        The equivalent Poisson ratio [-], in [0, 0.5).
+        The equivalent Poisson ratio [-], in [0, 0.5].
 
     Notes
     -----
-    Valid for 2/3 < G*/E* <= 1 (Poisson ratios of both bodies in [0, 0.5)).
+    Valid for 2/3 <= G*/E* <= 1 (Poisson ratios of both bodies in [0, 0.5]).
 
     Examples
     --------
@@ -279,6 +279,7 @@ def equivalent_poisson(gstar, estar):
     return out(2.0 * (1.0 - r) / (2.0 - r))
 
 
+@document(NU=POISSON_RATIO)
 def mdr_stiffness_ratio(poisson):
     r"""The MDR's full-stick k_t/k_n = G*/E* = 2(1-nu)/(2-nu) of one elastic body.
 
@@ -296,7 +297,7 @@ def mdr_stiffness_ratio(poisson):
 
     Notes
     -----
-    Valid for 0 <= nu < 0.5. Exact for axisymmetric contacts; for an elongated one the
+    Valid for %(NU)s. Exact for axisymmetric contacts; for an elongated one the
     true ratio depends on the direction (see :func:`cylinder_stiffness_ratios`).
 
     Examples
@@ -316,7 +317,7 @@ def mdr_stiffness_ratio(poisson):
 def _ratio(gstar, estar):
     g = check_positive("gstar", gstar, "Pa")
     e = check_positive("estar", estar, "Pa")
-    return SHEAR_RATIO.check(g / e, hint="G*/E* of bodies with Poisson ratios in [0, 0.5) "
+    return SHEAR_RATIO.check(g / e, hint="G*/E* of bodies with Poisson ratios in [0, 0.5] "
                                          "(effective_shear_modulus, effective_modulus)")
 
 
@@ -360,7 +361,7 @@ def gross_slip_shift(depth, friction, gstar, estar):
 
     Notes
     -----
-    Valid for d > 0, mu > 0, 2/3 < G*/E* <= 1 (Poisson ratios in [0, 0.5)).
+    Valid for d > 0, mu > 0, 2/3 <= G*/E* <= 1 (Poisson ratios in [0, 0.5]).
 
     Examples
     --------
@@ -405,7 +406,7 @@ def tangential_stiffness(model, depth, gstar, *, method="mdr", direction="across
 
     Notes
     -----
-    Valid where the model is (its depth range), for 2/3 < G*/E* <= 1; with
+    Valid where the model is (its depth range), for 2/3 <= G*/E* <= 1; with
     ``method="bem"`` also inside the table's range of nu and d R/L^2.
 
     Examples
@@ -469,7 +470,7 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     Notes
     -----
     Valid for |u| <= u* (all u with ``beyond="saturate"``), mu > 0,
-    2/3 < G*/E* <= 1, and the model's depth range. Exact for axisymmetric contacts
+    2/3 <= G*/E* <= 1, and the model's depth range. Exact for axisymmetric contacts
     (uncoupled normal and tangential problems) and for any shape at nu = 0.
 
     Examples
@@ -563,7 +564,7 @@ class TangentialContact:
     Notes
     -----
     Valid for 0 < |u| <= u* (beyond: ``beyond="saturate"`` on request), mu > 0,
-    2/3 < G*/E* <= 1 (Poisson ratios in [0, 0.5)), and in the model's depth range.
+    2/3 <= G*/E* <= 1 (Poisson ratios in [0, 0.5]), and in the model's depth range.
     Exact for axisymmetric shapes and for any shape at nu = 0; for the finite cylinder
     see docs/tangential.md for the MDR's measured error and ``method="bem"``.
     Energies are integrated, in the form :math:`W = 4r\int_0^{u_0} (u_0 - 2s)

@@ -851,8 +851,9 @@ class CylinderTangentialTable:
     (nu, d~) alone, for any L/R.
 
     Interpolated is the correction factor of the MDR, :math:`c = (k_t/k_n) /
-    [2(1-\nu)/(2-\nu)]` (exactly 1 at nu = 0, smooth in nu), linearly in nu and by a
-    cubic (or, with fewer than 4 depths, linear) interpolant in ln d~. Points outside
+    [2(1-\nu)/(2-\nu)]` (exactly 1 at nu = 0, smooth in nu), by the interpolating
+    tensor-product spline in (nu, ln d~) (bicubic with 4 or more values per axis; of
+    degree n - 1 with n = 2 or 3 values). It passes through every node. Points outside
     the grid are refused.
 
     Optional partial-slip correction: columns ``shift_ratio_{across|along}_q{Q}``
@@ -921,7 +922,12 @@ class CylinderTangentialTable:
         self.nu_range = Interval("nu", float(self.nus[0]), float(self.nus[-1]))
         self.d_tilde_range = Interval("d_tilde", float(self.d_tildes[0]),
                                       float(self.d_tildes[-1]), rtol=1e-12)
-        self._method = "cubic" if n2 >= 4 else "linear"
+        from scipy.interpolate import RectBivariateSpline
+
+        z = np.log(self.d_tildes)
+        kx, ky = min(3, n1 - 1), min(3, n2 - 1)
+        self._splines = {name: RectBivariateSpline(self.nus, z, vals, kx=kx, ky=ky, s=0)
+                         for name, vals in self._grid.items()}
         self._shift_q = {}
         for name in cols:
             m = _SHIFT_COLUMN.match(name)
@@ -938,23 +944,11 @@ class CylinderTangentialTable:
         return dict(self.table.meta)
 
     def _interp(self, name, nu, d_tilde):
-        from scipy.interpolate import RegularGridInterpolator
-
         nu = self.nu_range.check(nu, hint="outside the BEM table of the cylinder")
         dt = self.d_tilde_range.check(d_tilde, name="d_tilde",
                                       hint="d R/L^2 outside the BEM table of the cylinder")
         nu, dt = np.broadcast_arrays(nu, dt)
-        f_nu = RegularGridInterpolator((self.nus,), self._grid[name], method="linear")
-        rows = f_nu(nu.ravel()[:, None])                       # (n, n_depths)
-        z = np.log(self.d_tildes)
-        if self._method == "cubic":
-            from scipy.interpolate import CubicSpline
-
-            res = np.array([CubicSpline(z, row)(zi) for row, zi in
-                            zip(rows, np.log(dt.ravel()))])
-        else:
-            res = np.array([np.interp(zi, z, row) for row, zi in
-                            zip(rows, np.log(dt.ravel()))])
+        res = self._splines[name].ev(nu.ravel(), np.log(dt.ravel()))
         return res.reshape(nu.shape)
 
     def ratio(self, direction, nu, d_tilde):

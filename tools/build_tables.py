@@ -26,6 +26,7 @@ SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",
     "roller": "tools.roller_study",
+    "tangential": "tools.tangential_study",
 }
 
 

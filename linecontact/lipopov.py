@@ -68,9 +68,7 @@ import os
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.interpolate import CubicSpline
-from scipy.special import lambertw
-
+from ._numerics import NotAKnotSpline, log1p_excess_root
 from .tables import available_tables, read_table, table_path
 from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
                        document, out)
@@ -181,7 +179,7 @@ def _table_set(name, stem):
     return CoefficientSet(name=name, label=label,
                           valid=Interval("L/R", float(q[0]), float(q[-1]), rtol=1e-12),
                           provenance=prov,
-                          _alpha=CubicSpline(lq, a), _beta=CubicSpline(lq, b))
+                          _alpha=NotAKnotSpline(lq, a), _beta=NotAKnotSpline(lq, b))
 
 
 _CACHE: dict = {}
@@ -297,9 +295,12 @@ def _coeffs(alpha, beta):
 
 
 def _u_from_depth_ratio(D):
-    """u = alpha L / a from D = d R / (beta L^2) in (0, 1): (u + 1) exp(-u) = D."""
-    w = lambertw(-D / np.e, k=-1)
-    return -1.0 - np.real(w)
+    """u = alpha L / a from D = d R / (beta L^2) in (0, 1]: (u + 1) exp(-u) = D.
+
+    u = -1 - W_-1(-D/e), computed from t = -ln D = u - ln(1 + u), which keeps u
+    accurate also as D -> 1 (see :func:`linecontact._numerics.log1p_excess_root`).
+    """
+    return log1p_excess_root(-np.log(D))
 
 
 def lipopov_depth_limit(radius, length, beta):

@@ -25,6 +25,8 @@ from .runner import code_version  # noqa: F401  (re-exported: tools.accuracy use
 SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",
+    "roller": "tools.roller_study",
+    "tangential": "tools.tangential_study",
 }
 
 

@@ -664,10 +664,8 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -711,10 +709,8 @@ def dimensionless_force(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -759,10 +755,8 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -804,10 +798,8 @@ def dimensionless_depth(f_tilde, alpha, beta):
     ----------
     f_tilde : float or array_like
         Dimensionless force F R/(E* L^3), 0 < F~ < 2 alpha beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------

@@ -21,7 +21,10 @@ References
 ----------
 .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
    Friction, Springer (2015).
-.. [2] Q. Li, V. L. Popov, Facta Universitatis ME 15(1) (2017) 63-71, section 3.
+.. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+   Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71,
+   doi:10.22190/FUME170222003L, section 3.
+.. [3] docs/theory.md, section 'MDR'.
 """
 from __future__ import annotations
 
@@ -29,7 +32,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from .validity import OutOfRangeError, check_interval, check_positive, out
+from .validity import Interval, OutOfRangeError, document, out
 
 __all__ = [
     "mdr_contact_radius",
@@ -40,6 +43,16 @@ __all__ = [
 ]
 
 _MAX_DOUBLINGS = 200
+
+#: Validity ranges checked by the functions below and rendered into their Notes (one
+#: object for both, so the documented range is the enforced one).
+_DEPTH = Interval("depth", 0.0, np.inf, low_open=True, high_open=True, unit="m")
+_ESTAR = Interval("estar", 0.0, np.inf, low_open=True, high_open=True, unit="Pa")
+_X_SCALE = Interval("x_scale", 0.0, np.inf, low_open=True, high_open=True, unit="m")
+#: Sampled curves (profile extraction): zero is a valid first sample (first contact).
+_SAMPLED_DEPTH = Interval("depth", 0.0, np.inf, high_open=True, unit="m")
+_SAMPLED_FORCE = Interval("force", 0.0, np.inf, high_open=True, unit="N")
+_SAMPLED_STIFFNESS = Interval("stiffness", 0.0, np.inf, high_open=True, unit="N/m")
 
 
 def _radius_one(d, profile, x_scale):
@@ -69,30 +82,42 @@ def _radius_one(d, profile, x_scale):
                   rtol=4 * np.finfo(float).eps, maxiter=500)
 
 
+@document(D=_DEPTH, X=_X_SCALE)
 def mdr_contact_radius(depth, profile, *, x_scale=1.0):
-    r"""MDR contact half-length a, the root of g(a) = d, for any 1D profile.
+    r"""MDR contact half-length a at depth d: the root of g(a) = d for any 1D profile.
 
     .. math:: g(a) = d
 
     Parameters
     ----------
     depth : float or array_like
-        Depth d, 0 < d < sup g [m].
+        Depth d (rigid-body approach), 0 < d < sup g [m].
     profile : callable
-        g(x) [m] for a scalar x >= 0 [m]; monotone increasing, g(0) = 0.
+        The MDR profile g(x), in m for a scalar x >= 0 in m; monotone increasing,
+        g(0) = 0.
     x_scale : float, optional
-        A typical x [m] where the bracket search starts (any positive value works;
-        a good one saves evaluations).
+        A typical contact half-length, where the bracket search for a starts (any
+        positive value works; one near the answer saves evaluations) [m].
 
     Returns
     -------
     float or ndarray
-        a [m].
+        Contact half-length a in the MDR plane [m] (same shape as `depth`).
 
     Raises
     ------
     OutOfRangeError
-        Non-positive depth, or one the (bounded) profile never reaches.
+        A depth or x_scale outside its range, or a depth the (bounded) profile never
+        reaches.
+
+    Notes
+    -----
+    Valid for %(D)s and %(X)s; a bounded profile also needs d < sup g: the search
+    doubles x from `x_scale` up to 200 times, and a depth still not reached (or a
+    non-finite g) raises :class:`~linecontact.validity.OutOfRangeError` instead of
+    returning a clamped or NaN value. The root is found by Brent's method to a relative
+    tolerance of about 1e-14 in a. For a non-monotone g the root is one of several and
+    the MDR itself does not apply.
 
     Examples
     --------
@@ -102,13 +127,20 @@ def mdr_contact_radius(depth, profile, *, x_scale=1.0):
     >>> a = mdr_contact_radius(1e-6, lambda x: x**2 / 10e-3)
     >>> f"{a * 1e6:.6f} um"
     '100.000000 um'
+
+    References
+    ----------
+    .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [2] docs/theory.md, section 'MDR'.
     """
-    d = check_positive("depth", depth, "m")
-    xs = float(check_positive("x_scale", x_scale, "m"))
+    d = _DEPTH.check(depth)
+    xs = float(_X_SCALE.check(x_scale))
     flat = np.array([_radius_one(float(v), profile, xs) for v in d.ravel()])
     return out(flat.reshape(d.shape))
 
 
+@document(D=_DEPTH, E=_ESTAR, X=_X_SCALE)
 def mdr_force(depth, profile, estar, *, x_scale=1.0):
     r"""Normal force of an MDR profile at depth d, by quadrature.
 
@@ -117,34 +149,50 @@ def mdr_force(depth, profile, estar, *, x_scale=1.0):
     Parameters
     ----------
     depth : float or array_like
-        Depth d, 0 < d < sup g [m].
+        Depth d (rigid-body approach), 0 < d < sup g [m].
     profile : callable
-        g(x) [m], monotone increasing, g(0) = 0.
+        The MDR profile g(x), in m for a scalar x >= 0 in m; monotone increasing,
+        g(0) = 0.
     estar : float
-        Effective modulus E*, 0 < E* < inf [Pa].
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
     x_scale : float, optional
-        Start of the bracket search for a [m] (see :func:`mdr_contact_radius`).
+        Start of the bracket search for a (see :func:`mdr_contact_radius`) [m].
 
     Returns
     -------
     float or ndarray
-        F [N].
+        Normal force F [N] (same shape as `depth`).
+
+    Raises
+    ------
+    OutOfRangeError
+        An input outside its range, or a depth the (bounded) profile never reaches.
 
     Notes
     -----
-    Adaptive quadrature (QUADPACK) to a relative tolerance of 1e-10.
+    Valid for %(D)s, %(E)s and %(X)s, with d < sup g for a bounded profile (see
+    :func:`mdr_contact_radius`). Adaptive quadrature (QUADPACK) to a relative tolerance
+    of 1e-10. F is the total force of the 3D contact whose MDR profile is g: for a
+    cylinder of length L the profile already carries L (Li & Popov 2017, Eq. 7).
 
     Examples
     --------
-    Sphere (g = x^2/R) reproduces Hertz, F = 4/3 E* R^1/2 d^3/2:
+    Sphere (g = x^2/R) reproduces Hertz, F = 4/3 E* R^1/2 d^3/2 (Johnson 1985, ch. 4):
 
     >>> E, R, d = 100e9, 10e-3, 1e-6
     >>> F = mdr_force(d, lambda x: x**2 / R, E)
     >>> round(F / (4 / 3 * E * R**0.5 * d**1.5), 10)
     1.0
+
+    References
+    ----------
+    .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
+    .. [3] docs/theory.md, section 'MDR'.
     """
-    d = check_positive("depth", depth, "m")
-    E = check_positive("estar", estar, "Pa")
+    d = _DEPTH.check(depth)
+    E = _ESTAR.check(estar)
     a = np.atleast_1d(np.asarray(mdr_contact_radius(d, profile, x_scale=x_scale)))
     forces = []
     for dv, av in zip(d.ravel(), a.ravel()):
@@ -154,37 +202,61 @@ def mdr_force(depth, profile, estar, *, x_scale=1.0):
     return out(2 * E * np.array(forces).reshape(d.shape))
 
 
+@document(D=_DEPTH, E=_ESTAR, X=_X_SCALE)
 def mdr_stiffness(depth, profile, estar, *, x_scale=1.0):
-    r"""Normal stiffness of an MDR profile at depth d.
+    r"""Normal contact stiffness k = dF/dd of an MDR profile at depth d.
 
     .. math:: k = \frac{dF}{dd} = 2E^* a, \qquad g(a) = d
 
     Parameters
     ----------
     depth : float or array_like
-        0 < d < sup g [m].
+        Depth d (rigid-body approach), 0 < d < sup g [m].
     profile : callable
-        g(x) [m].
+        The MDR profile g(x), in m for a scalar x >= 0 in m; monotone increasing,
+        g(0) = 0.
     estar : float
-        E* [Pa].
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
+    x_scale : float, optional
+        Start of the bracket search for a (see :func:`mdr_contact_radius`) [m].
 
     Returns
     -------
     float or ndarray
-        k [N/m].
+        Stiffness k [N/m] (same shape as `depth`).
+
+    Raises
+    ------
+    OutOfRangeError
+        An input outside its range, or a depth the (bounded) profile never reaches.
+
+    Notes
+    -----
+    Valid for %(D)s, %(E)s and %(X)s, with d < sup g for a bounded profile (see
+    :func:`mdr_contact_radius`). Exact given a: no differentiation and no quadrature.
 
     Examples
     --------
+    Parabola g = x^2/R, R = 10 mm, d = 1 um, E* = 100 GPa: a = 100 um, so
+    k = 2 E* a = 2e7 N/m.
+
     >>> f"{mdr_stiffness(1e-6, lambda x: x**2 / 10e-3, 100e9):.6e}"
     '2.000000e+07'
+
+    References
+    ----------
+    .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [2] docs/theory.md, section 'MDR'.
     """
-    E = check_positive("estar", estar, "Pa")
+    E = _ESTAR.check(estar)
     return out(2 * E * np.asarray(mdr_contact_radius(depth, profile, x_scale=x_scale)))
 
 
-def _samples(depth, values, name, unit):
-    d = np.asarray(check_interval("depth", depth, 0.0, np.inf, high_open=True, unit="m"))
-    v = np.asarray(check_interval(name, values, 0.0, np.inf, high_open=True, unit=unit))
+def _samples(depth, values, valid):
+    d = np.asarray(_SAMPLED_DEPTH.check(depth))
+    v = np.asarray(valid.check(values))
+    name = valid.name
     if d.ndim != 1 or v.shape != d.shape:
         raise OutOfRangeError(name, f"shape {v.shape}", f"1D, the shape of depth {d.shape}")
     if d.size < 3:
@@ -206,6 +278,7 @@ def _check_monotone_x(x, d, what):
                  "with depth (F(d) convex)")
 
 
+@document(SD=_SAMPLED_DEPTH, SK=_SAMPLED_STIFFNESS, E=_ESTAR)
 def mdr_profile_from_stiffness(depth, stiffness, estar):
     r"""MDR profile from sampled stiffness k(d): x = k/(2E*), g(x) = d (exact).
 
@@ -214,32 +287,55 @@ def mdr_profile_from_stiffness(depth, stiffness, estar):
     Parameters
     ----------
     depth : array_like
-        Strictly increasing depths, >= 0 [m] (1D, at least 3).
+        Strictly increasing depths d, 1D, at least 3 samples, 0 <= d < inf [m].
     stiffness : array_like
-        k = dF/dd at those depths, increasing, >= 0 [N/m].
+        Stiffness k = dF/dd at those depths, strictly increasing, 0 <= k < inf [N/m].
     estar : float
-        E* [Pa].
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
 
     Returns
     -------
     x : ndarray
-        MDR coordinate (contact half-length) [m].
+        MDR coordinate, the contact half-length at each depth [m].
     g : ndarray
-        Profile values g(x) [m] (= depth).
+        Profile values g(x), a copy of `depth` [m].
+
+    Raises
+    ------
+    OutOfRangeError
+        Samples outside their range, of different shapes, fewer than 3, depths not
+        strictly increasing, or a stiffness that does not increase with depth (no
+        monotone profile exists).
+
+    Notes
+    -----
+    Valid for %(SD)s, %(SK)s and %(E)s, with the sample conditions above. Exact at the
+    samples: the inversion of k = 2 E* a needs no differentiation.
 
     Examples
     --------
+    Samples of the parabola g = x^2/R with R = 10 mm (k = 2 E* sqrt(R d)):
+
     >>> x, g = mdr_profile_from_stiffness([1e-6, 4e-6, 9e-6], [2e7, 4e7, 6e7], 100e9)
     >>> x * 1e6, g * 1e6
     (array([100., 200., 300.]), array([1., 4., 9.]))
+
+    References
+    ----------
+    .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [3] docs/theory.md, section 'MDR'.
     """
-    d, k = _samples(depth, stiffness, "stiffness", "N/m")
-    E = check_positive("estar", estar, "Pa")
+    d, k = _samples(depth, stiffness, _SAMPLED_STIFFNESS)
+    E = _ESTAR.check(estar)
     x = k / (2 * E)
     _check_monotone_x(x, d, "stiffness")
     return x, d.copy()
 
 
+@document(SD=_SAMPLED_DEPTH, SF=_SAMPLED_FORCE, E=_ESTAR)
 def mdr_profile_from_force(depth, force, estar):
     r"""MDR profile from a sampled force-depth curve (the paper's extraction step).
 
@@ -252,23 +348,28 @@ def mdr_profile_from_force(depth, force, estar):
     Parameters
     ----------
     depth : array_like
-        Strictly increasing depths, >= 0 [m] (1D, at least 3).
+        Strictly increasing depths d, 1D, at least 3 samples, 0 <= d < inf [m].
     force : array_like
-        F at those depths, >= 0 [N]; F(d) must be convex (k increasing).
+        Force F at those depths, 0 <= F < inf [N]; F(d) must be convex (k increasing).
     estar : float
-        E* [Pa].
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
 
     Returns
     -------
     x : ndarray
-        MDR coordinate [m].
+        MDR coordinate, the contact half-length at each depth [m].
     g : ndarray
-        Profile values g(x) [m] (= depth).
+        Profile values g(x), a copy of `depth` [m].
 
     Raises
     ------
     OutOfRangeError
         Bad samples, or a k that does not increase (no monotone profile exists).
+
+    Notes
+    -----
+    Valid for %(SD)s, %(SF)s and %(E)s, with the sample conditions above. The error of
+    k, hence of x, is second order in the depth step (``edge_order=2`` at both ends).
 
     Examples
     --------
@@ -280,9 +381,17 @@ def mdr_profile_from_force(depth, force, estar):
     >>> x, g = mdr_profile_from_force(d, 4 / 3 * E * R**0.5 * d**1.5, E)
     >>> bool(np.allclose(g, x**2 / R, rtol=1e-4))
     True
+
+    References
+    ----------
+    .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [3] docs/theory.md, section 'MDR'.
     """
-    d, F = _samples(depth, force, "force", "N")
-    E = check_positive("estar", estar, "Pa")
+    d, F = _samples(depth, force, _SAMPLED_FORCE)
+    E = _ESTAR.check(estar)
     k = np.gradient(F, d, edge_order=2)
     x = k / (2 * E)
     _check_monotone_x(x, d, "force")

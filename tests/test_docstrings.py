@@ -75,13 +75,6 @@ ALLOWED = {
         "i11a (validity.py), fixed in merge",
     ("linecontact.validity", "a validity range"):
         "owned by i11a (validity.py), fixed in merge",
-    ("linecontact.mdr", "Parameters entries for"):
-        "mdr_stiffness(x_scale): mdr.py has no owner this round, the coordinator "
-        "assigns it",
-    ("linecontact.mdr", "a References section"):
-        "mdr.py has no owner this round, the coordinator assigns it",
-    ("linecontact.mdr", "a validity range"):
-        "mdr_profile_from_*: mdr.py has no owner this round, the coordinator assigns it",
     ("linecontact.tables", "a Parameters section"):
         "tables.py has no owner this round, the coordinator assigns it",
     ("linecontact.tables", "an Examples section"):

@@ -51,16 +51,28 @@ class TableError(ValueError):
 
 @dataclass
 class Table:
-    """A table read from ``tables/``.
+    """A self-describing table: its metadata, its columns and the file it came from.
 
-    Attributes
+    Made by :func:`read_table`, which checks the file; constructing one directly checks
+    nothing (write it with :func:`write_table` to get the checks).
+
+    Parameters
     ----------
     meta : dict[str, str]
-        The ``# key: value`` metadata, in file order.
+        The ``# key: value`` metadata, in file order; the units of the columns are in
+        ``meta["units"]``.
     columns : dict[str, ndarray]
-        One float array per column, in file order.
-    path : pathlib.Path
-        The file it was read from.
+        One float array per column, in file order, all of the same length.
+    path : pathlib.Path, optional
+        The file it was read from (None for a table built in memory).
+
+    Examples
+    --------
+    >>> t = read_table("lipopov_published")
+    >>> t.name, len(t), t.path.suffix
+    ('lipopov_published', 15, '.csv')
+    >>> t.meta["units"]
+    'L_over_R [-], alpha [-], beta [-]'
     """
 
     meta: dict
@@ -101,6 +113,16 @@ def tables_dir():
 def available_tables(prefix=""):
     """Stems of the tables in :func:`tables_dir` whose name starts with `prefix`.
 
+    Parameters
+    ----------
+    prefix : str, optional
+        Start of the file stem (default: every table).
+
+    Returns
+    -------
+    list of str
+        Sorted file stems (no ``.csv``).
+
     Examples
     --------
     >>> "lipopov_published" in available_tables("lipopov_")
@@ -110,7 +132,28 @@ def available_tables(prefix=""):
 
 
 def table_path(name):
-    """Path of table `name` (file stem) in :func:`tables_dir`; raise if absent."""
+    """Path of the shipped table `name` (a file stem) in :func:`tables_dir`.
+
+    Parameters
+    ----------
+    name : str
+        File stem, e.g. ``"lipopov_published"``.
+
+    Returns
+    -------
+    pathlib.Path
+        ``tables_dir() / (name + ".csv")``.
+
+    Raises
+    ------
+    FileNotFoundError
+        No such table; the message lists the available ones.
+
+    Examples
+    --------
+    >>> table_path("lipopov_published").name
+    'lipopov_published.csv'
+    """
     path = tables_dir() / f"{name}.csv"
     if not path.is_file():
         raise FileNotFoundError(

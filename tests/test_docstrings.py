@@ -75,11 +75,6 @@ ALLOWED = {
         "i11a (validity.py), fixed in merge",
     ("linecontact.validity", "a validity range"):
         "owned by i11a (validity.py), fixed in merge",
-    ("linecontact.tables", "a Parameters section"):
-        "tables.py has no owner this round, the coordinator assigns it",
-    ("linecontact.tables", "an Examples section"):
-        "Table, table_path: tables.py has no owner this round, the coordinator assigns "
-        "it",
 }
 
 #: Type words of a numeric parameter (which must carry a unit).

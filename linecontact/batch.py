@@ -211,7 +211,8 @@ def _result_layout(results, cases, si, multi):
     getters.append(("num", estar))
     if np.any(cases["radius_eff"] != cases["radius"]):
         cols.append(_col_name("radius_eff", si))
-        getters.append(("num", render.scale("radius_eff", cases["radius_eff"], si)))
+        reff = np.where(cases["raceways"], np.nan, cases["radius_eff"])  # per contact there
+        getters.append(("num", render.scale("radius_eff", reff, si)))
     fields = render.columns_of(results, "load")
     # in a batch the force comes first whatever is given
     for s in results.sets:

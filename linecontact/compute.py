@@ -275,6 +275,11 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
     n = len(values)
     out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
     out["force" if given == "load" else "depth"][:] = values  # given, even where refused
+    if not isinstance(model, Refused):
+        try:
+            model.check_applicable()  # refused for the whole cylinder: one message
+        except OutOfRangeError as exc:
+            model = Refused(model.label, exc)
     if isinstance(model, Refused):
         for i in idx:
             notes[i] = str(model.exc)

@@ -46,6 +46,11 @@ def fmt(value, digits=4):
     return f"{value:.{digits}g}"
 
 
+def _fmt_column(values):
+    """:func:`fmt` of every element of a float array (a list of str)."""
+    return [format(v, ".4g") if v == v else "-" for v in np.asarray(values, float).tolist()]
+
+
 def unit(field, si):
     """Unit of a field's column: SI or engineering."""
     f = FIELDS[field]
@@ -155,17 +160,19 @@ def table_text(cases, present, results, si):
     given = str(cases["given"][0])
     cols = columns_of(results, given)
     header = ["model"] + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols] + ["note"]
-    body = []
     n = len(cases["value"])
+    columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
-        for i in range(n):
-            note = "; ".join(t for t in (s["flags"][i], s["note"][i]) if t)
-            body.append([s["label"][i]] + [fmt(scale(c, float(f[c][i]), si)) for c in cols]
-                        + [note])
-    widths = [max(len(r[i]) for r in [header] + body) for i in range(len(header) - 1)]
+        columns[0] += s["label"][:n]
+        for k, c in enumerate(cols, start=1):
+            columns[k] += _fmt_column(scale(c, f[c], si))
+        columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
+    widths = [max(len(h), max(map(len, col), default=0))
+              for h, col in zip(header[:-1], columns[:-1])]
     lines = [_case_line(cases, present, si), ""]
-    for r in [header] + body:
+    rows = [header] + [list(r) for r in zip(*columns)]
+    for r in rows:
         cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
         lines.append("  ".join(cells + [r[-1]]).rstrip())
     lines += ["", "Note: " + P0_NOTE]

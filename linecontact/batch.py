@@ -233,24 +233,19 @@ def _result_layout(results, cases, si, multi):
 
 
 def _format_numbers(values):
-    """'%.6g' of every element, '' for NaN (vectorised through numpy's formatting)."""
-    v = np.asarray(values, dtype=float)
-    out = np.char.mod("%.6g", np.where(np.isfinite(v), v, 0.0)).astype(object)
-    out[~np.isfinite(v)] = ""
-    return out
+    """'%.6g' of every element, '' for NaN or inf (a list of str)."""
+    return [format(v, ".6g") if v - v == 0 else ""
+            for v in np.asarray(values, dtype=float).tolist()]
 
 
 def _csv(header, body, out_names, getters, width):
-    cols = []
-    for kind, data in getters:
-        cols.append(_format_numbers(data) if kind == "num" else data)
+    cols = [_format_numbers(data) if kind == "num" else data for kind, data in getters]
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)
     pad = [""] * width
-    for i, r in enumerate(body):
-        row = r + pad[len(r):] if len(r) < width else r
-        w.writerow(row + [c[i] for c in cols])
+    padded = (r + pad[len(r):] if len(r) < width else r for r in body)
+    w.writerows(r + list(t) for r, t in zip(padded, zip(*cols)))
     return buf.getvalue()
 
 

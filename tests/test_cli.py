@@ -769,3 +769,18 @@ def test_batch_rows_equal_one_case_calls(capsys, tmp_path):
         ref = one["models"][0]["rows"][0]
         assert _close(float(g["depth_m"]), ref["depth"], 1e-5)  # CSV keeps 6 digits
         assert _close(float(g["force_N"]), ref["force"], 1e-5)
+
+
+def test_missing_table_is_named_not_none(capsys, monkeypatch):
+    """A table file that cannot be found while building a model: one line that names
+    it (it used to read 'None: None')."""
+    from linecontact import models
+
+    def missing(*a, **k):
+        raise FileNotFoundError("table 'universal_curve' not found in /nowhere/tables")
+
+    monkeypatch.setattr(models, "get_model", missing)
+    status, out, err = _main(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN",
+                             "--model", "universal")
+    assert status == 2 and "universal_curve" in err and "None" not in err
+    assert len(err.strip().splitlines()) == 1

@@ -467,6 +467,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
         per_set.append(per_contact)
         s = results.sets[j]
         label = sets[0][j].label
+        if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
+            s["model"] = sets[0][j]
         for i in g:
             s["label"][i] = label
     ref_q = None

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS
+from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS, _model_id
 
 __all__ = ["PROG", "fmt", "unit", "scale", "columns_of", "json_header", "table_text",
            "one_json", "write"]
@@ -202,9 +202,6 @@ def one_json(argv, cases, present, results):
     inputs[given] = values if len(values) > 1 else values[0]
     doc = json_header(argv, results)
     doc["inputs"] = inputs
-    by_id = {}
-    for s in results.sets:
-        by_id[s["id"]] = s
     entries = []
     for entry, s in zip(_entries(doc["models"], results), results.sets):
         rows = []
@@ -223,7 +220,8 @@ def _entries(model_docs, results):
     by_id = {m["id"]: m for m in model_docs}
     out = []
     for s in results.sets:
-        m = by_id.get(s["id"])
+        model = s.get("model")
+        m = by_id.get(_model_id(model) if model is not None else s["id"])
         if m is None:
             label = s["label"][0] or s["id"]
             m = {"key": label, "label": label, "id": s["id"], "provenance": None}

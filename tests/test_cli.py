@@ -784,3 +784,14 @@ def test_missing_table_is_named_not_none(capsys, monkeypatch):
                              "--model", "universal")
     assert status == 2 and "universal_curve" in err and "None" not in err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
+    """--progress shows a bar on stderr (tqdm, or a plain line without it) and changes
+    nothing on stdout."""
+    path = _write_csv(tmp_path / "p.csv", ["load"], [[f"{100 + i}N"] for i in range(50)])
+    argv = ("calc", path, "--radius", "5mm", *STEEL_CASE[1:])
+    status, with_bar, err = _main(capsys, *argv, "--progress")
+    assert status == 0 and "50" in err
+    status, plain, err = _main(capsys, *argv, "--no-progress")
+    assert status == 0 and err == "" and plain == with_bar

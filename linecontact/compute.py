@@ -238,13 +238,20 @@ def _model_id(model):
     return re.sub(r"[^a-z0-9.]+", "-", model.label.lower()).strip("-")
 
 
-def _build(specs, R, L, E, first_only):
-    """The models for one cylinder (Refused stand-ins for those refused at build)."""
+def _build(specs, R, L, E, first_only, default_key=None):
+    """The models for one cylinder (Refused stand-ins for those refused at build).
+
+    `default_key`: the registry key of the standard set's first model when it is
+    known (from a first call) to be the default model: with `first_only` only that
+    model is built, not the whole standard set (a batch of distinct cylinders).
+    """
     from . import models
     from ._units import InputError
     from .validity import OutOfRangeError
 
     if specs is None:
+        if first_only and default_key is not None:
+            return [models.get_model(default_key, R, L, E)]
         standard = list(models.standard_models(R, L, E))
         return standard[:1] if first_only else standard
     chosen = []
@@ -408,7 +415,12 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         groups = np.split(rows[order], bounds)
     else:
         groups = []
+    from .models import DEFAULT_MODEL
+
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
+    # the default model alone when it heads the standard set (it does when installed)
+    default_key = (DEFAULT_MODEL if specs is None and first_only
+                   and probe[0].key == DEFAULT_MODEL else None)
     results = Results(n, len(probe), errors)
     for s, m in zip(results.sets, probe):
         s["id"] = _model_id(m)
@@ -424,7 +436,8 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                 contacts = [R_in, R_out]
             else:
                 contacts = [Reff[i0]]
-            sets = [_build(specs, R, L[i0], E[i0], first_only) for R in contacts]
+            sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
+                    for R in contacts]
             refs = ([list(_build(None, R, L[i0], E[i0], True)) for R in contacts]
                     if reference else None)
         except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost

@@ -737,19 +737,29 @@ def test_unexpected_exception_in_one_row_is_reported_in_that_row(capsys, tmp_pat
 
 
 def test_batch_builds_one_model_per_distinct_cylinder(capsys, tmp_path, monkeypatch):
-    """Speed by construction: 300 rows on 3 distinct cylinders build the standard set
-    3 times (plus once to name the columns), not 300."""
+    """Speed by construction: 300 rows on 3 distinct cylinders build each model 3 times
+    (plus a probe at R = 1 m that names the columns), not 300 times: the default model
+    alone in a default batch, the whole set with --model all."""
     from linecontact import models
 
     calls = []
-    original = models.standard_models
-    monkeypatch.setattr(models, "standard_models",
-                        lambda *a, **k: calls.append(a) or original(*a, **k))
+    original = models.ContactModel.__init__
+
+    def counting(self, radius, length, estar, **kw):
+        calls.append(radius)
+        original(self, radius, length, estar, **kw)
+
+    monkeypatch.setattr(models.ContactModel, "__init__", counting)
     rows = [[r, f"{100 + i}N"] for i in range(100) for r in ("4mm", "5mm", "6mm")]
     path = _write_csv(tmp_path / "c.csv", ["radius", "load"], rows)
-    status, out, err = _main(capsys, "calc", path, *STEEL_CASE[1:])
-    assert status == 0, err and len(_csv(out)) == 300
-    assert len(calls) == 4
+    for extra, per_set in (((), 1), (("--model", "all"), len(_library()))):
+        calls.clear()
+        status, out, err = _main(capsys, "calc", path, *STEEL_CASE[1:], *extra)
+        assert status == 0, err
+        assert len(_csv(out)) == 300
+        built = [r for r in calls if r != 1.0]  # R = 1 m: the probe naming the columns
+        assert sorted(set(built)) == [0.004, 0.005, 0.006]
+        assert len(built) == 3 * per_set, len(built)
 
 
 def test_batch_rows_equal_one_case_calls(capsys, tmp_path):

@@ -44,8 +44,8 @@ import sys
 import numpy as np
 
 from . import render
-from ._units import InputError
-from .cases import BY_NAME, PARAMETERS, parse_cases
+from ._units import InputError, parse_quantity
+from .cases import BY_NAME, PARAMETERS, bounds_of, option_name, parse_cases
 from .compute import compute
 
 __all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
@@ -161,7 +161,11 @@ def run_batch(args, argv, specs, options):
         col = [r[j] if j is not None and j < len(r) else "" for r in body]
         if opt is not None:
             if ":" in str(opt):
-                raise InputError(f"--{p.name}", opt, "one value per row in a batch", "a sweep")
+                raise InputError(option_name(p.name), opt, "one value per row in a batch",
+                                 "a sweep")
+            # a bad option is the command line's error (exit 2), not every row's
+            parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
+                           bounds=bounds_of(p))
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)

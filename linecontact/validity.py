@@ -194,8 +194,8 @@ def _as_float_array(name, value, unit=""):
 
     Refused (:class:`OutOfRangeError`): complex numbers with a nonzero imaginary part,
     masked arrays with masked elements (the mask would be dropped), booleans,
-    datetimes and timedeltas, and strings (the library takes numbers in SI; the command
-    line parses units, and refuses subnormal numbers there).
+    datetimes and timedeltas, strings (the library takes numbers in SI; the command
+    line parses units), and subnormal numbers (nonzero below 2.2e-308: precision lost).
     A pint Quantity is converted to `unit` (SI), or refused if its dimension differs;
     the check does not import pint (it recognises a Quantity by its attributes).
     """
@@ -266,6 +266,13 @@ def _as_float_array(name, value, unit=""):
     except (TypeError, ValueError) as exc:
         raise OutOfRangeError(name, str(value), "real numbers",
                               hint="it is not a number") from exc
+    tiny = np.finfo(float).tiny
+    with np.errstate(invalid="ignore"):
+        sub = (v != 0) & (np.abs(v) < tiny)
+    if np.any(sub):
+        bad = float(v[sub].ravel()[0]) if v.ndim else float(v)
+        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {tiny:.6g}",
+                              unit=unit, hint="a subnormal number has lost precision")
     return v
 
 

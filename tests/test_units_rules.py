@@ -217,3 +217,11 @@ def _ureg():
     import pint
 
     return pint.UnitRegistry()
+
+
+@given(st.floats(min_value=5e-324, max_value=sys.float_info.min, exclude_max=True))
+def test_api_refuses_subnormal_numbers(x):
+    """A subnormal force (one returned the clamp limit as the depth) is refused by the
+    library's checks too, naming the parameter."""
+    with pytest.raises(OutOfRangeError, match="subnormal"):
+        check_positive("force", x, "N")

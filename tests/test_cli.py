@@ -40,6 +40,8 @@ COMMANDS = {
     # python -m linecontact, with -X importtime: what a one-case call imports
     "units_importtime": [*IMPORTTIME, *ONE],
     "bare_json_importtime": [*IMPORTTIME, *SI_ONE, "--json"],
+    # a unit name outside the built-in table (1e8 dyn = 1 kN): pint is asked for it
+    "dyne_json_importtime": [*IMPORTTIME, *CASE, "--load", "1e8 dyn", "--json"],
     "inch_json": [
         "calc",
         "--radius",
@@ -365,14 +367,21 @@ def test_python_dash_m_is_the_same_command(results):
     assert _ok(results, "units_importtime").stdout == _ok(results, "one").stdout
 
 
-def test_one_case_imports_pint_only_for_unit_strings_and_never_pandas(results):
-    """Start-up: a one-case call in bare SI numbers loads neither pint nor pandas; a
-    call with unit strings loads pint, still no pandas."""
+def test_one_case_imports_pint_only_for_unusual_units_and_never_pandas(results):
+    """Start-up: a one-case call in bare SI numbers or in the built-in units (mm, GPa,
+    kN) loads neither pint nor pandas; a unit outside the built-in table (dyn) loads
+    pint, still no pandas, and converts to the same case (1e8 dyn = 1 kN)."""
     bare = _imported(_ok(results, "bare_json_importtime").stderr)
     units = _imported(_ok(results, "units_importtime").stderr)
+    dyne = _imported(_ok(results, "dyne_json_importtime").stderr)
     assert "linecontact" in bare and "numpy" in bare  # the log is really there
     assert "pint" not in bare and "pandas" not in bare
-    assert "pint" in units and "pandas" not in units
+    assert "pint" not in units and "pandas" not in units
+    assert "pint" in dyne and "pandas" not in dyne
+    a = json.loads(_ok(results, "dyne_json_importtime").stdout)["models"]
+    b = _json(results, "one_json")["models"]
+    for ma, mb in zip(a, b):
+        assert _close(ma["rows"][0]["depth"], mb["rows"][0]["depth"], 1e-12), ma["label"]
 
 
 # ---------------------------------------------------------------------------------------

@@ -225,3 +225,16 @@ def test_api_refuses_subnormal_numbers(x):
     library's checks too, naming the parameter."""
     with pytest.raises(OutOfRangeError, match="subnormal"):
         check_positive("force", x, "N")
+
+
+def test_built_in_unit_factors_equal_pints():
+    """Every unit converted without pint has pint's factor (to 1e-15, rounding of the
+    prefix powers), so the fast path and pint agree on every name both know."""
+    from linecontact._units import BUILTIN_UNITS, DIMENSIONS
+
+    ureg = _ureg()
+    for kind, table in BUILTIN_UNITS.items():
+        si = DIMENSIONS[kind][1]
+        for name, factor in table.items():
+            expected = ureg.Quantity(1.0, name).to(si).magnitude
+            assert math.isclose(factor, expected, rel_tol=1e-15), (kind, name)

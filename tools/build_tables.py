@@ -25,6 +25,7 @@ from pathlib import Path
 SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",
+    "accuracy": "tools.accuracy",
 }
 
 

@@ -27,11 +27,10 @@ import numpy as np
 
 from .lipopov import (lipopov_depth, lipopov_force, lipopov_profile,
                       lipopov_stiffness, lipopov_stiffness_at_force)
-from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
+from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval, check_positive,
                        document, out)
 
 __all__ = [
-    "POISSON_RANGE",
     "effective_modulus",
     "hertz_half_width",
     "puttock_thwaite_depth",
@@ -67,13 +66,12 @@ MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=Fal
 #: Poisson's ratio of an isotropic elastic body accepted by Eq. 3: 0 <= nu <= 0.5, the
 #: end 0.5 included (incompressible rubber or elastomer coatings: 1 - nu^2 = 0.75, E*
 #: stays finite).
-POISSON_RANGE = Interval("poisson", 0.0, 0.5, low_open=False, high_open=False)
 
 
 # --------------------------------------------------------------------------------------
 # Eq. 3
 # --------------------------------------------------------------------------------------
-@document(E=MODULUS_OR_RIGID, NU=POISSON_RANGE)
+@document(E=MODULUS_OR_RIGID, NU=POISSON_RATIO)
 def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     r"""Effective (contact) modulus E* of two elastic bodies (Li & Popov 2017, Eq. 3).
 
@@ -135,15 +133,15 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     """
     E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
     E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
-    nu1 = POISSON_RANGE.check(poisson1, name="poisson1")
+    nu1 = POISSON_RATIO.check(poisson1, name="poisson1")
     if poisson2 is None:
         if np.any(np.isfinite(E2)):
             raise OutOfRangeError(
-                "poisson2", "missing", str(POISSON_RANGE),
+                "poisson2", "missing", str(POISSON_RATIO),
                 hint="modulus2 is given (an elastic second body), so its Poisson ratio "
                      "is needed too; leave modulus2 out for a rigid second body")
         poisson2 = 0.0   # rigid second body: its Poisson ratio does not enter Eq. 3
-    nu2 = POISSON_RANGE.check(poisson2, name="poisson2")
+    nu2 = POISSON_RATIO.check(poisson2, name="poisson2")
     both = np.isinf(E1) & np.isinf(E2)
     if np.any(both):
         raise OutOfRangeError("modulus1", math.inf, "(0, inf) Pa", unit="Pa",

@@ -200,6 +200,70 @@ class ContactModel(abc.ABC):
         raise NotImplementedError(f"{self.label} has no MDR profile "
                                   "(an empirical force-depth law)")
 
+    def evaluate(self, *, force=None, depth=None):
+        """The contact state at given forces OR depths, in one vectorised call.
+
+        With `force` F: d = depth(F), k = stiffness_at_force(F); with `depth` d:
+        F = force(d), k = stiffness(d). Both: the MDR contact half-length
+        a = k / (2 E*) (docs/theory.md, section 'MDR'; Li & Popov (2017), Eq. 5-6:
+        the MDR spring bed of modulus E* over |x| <= a has stiffness 2 E* a).
+        Each model's own law is called once per quantity, so a model whose
+        stiffness is a function of force (Johnson, Eq. 4) is not evaluated through
+        a force -> depth -> force round trip.
+
+        Parameters
+        ----------
+        force : array_like, optional
+            Normal force F > 0 [N] (or a pint Quantity of force).
+        depth : array_like, optional
+            Indentation depth d > 0 [m] (or a pint Quantity of length).
+
+        Returns
+        -------
+        dict
+            ``force`` [N], ``depth`` [m], ``stiffness`` [N/m], ``contact_radius`` [m]:
+            float arrays of the input's shape (floats for a scalar input).
+
+        Raises
+        ------
+        TypeError
+            Neither or both of `force` and `depth` given.
+        OutOfRangeError
+            An input outside the model's range (the first offending element named).
+
+        Notes
+        -----
+        Valid wherever the model's force/depth/stiffness are (see the subclass): it
+        adds no approximation.
+
+        Examples
+        --------
+        >>> m = get_model("johnson", 5e-3, 10e-3, 115.38e9)
+        >>> r = m.evaluate(force=[500.0, 1000.0])
+        >>> [f"{d * 1e6:.3f}" for d in r["depth"]]
+        ['1.501', '2.812']
+        >>> bool(r["stiffness"][1] == m.stiffness_at_force(1000.0))
+        True
+
+        References
+        ----------
+        Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
+        Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+        """
+        if (force is None) == (depth is None):
+            raise TypeError("evaluate() takes exactly one of force= or depth=")
+        if force is not None:
+            F = check_positive("force", force, "N")
+            d = np.asarray(self.depth(F), dtype=float)
+            k = np.asarray(self.stiffness_at_force(F), dtype=float)
+        else:
+            d = check_positive("depth", depth, "m")
+            F = np.asarray(self.force(d), dtype=float)
+            k = np.asarray(self.stiffness(d), dtype=float)
+        a = k / (2 * self.estar)
+        return {"force": out(F), "depth": out(d),
+                "stiffness": out(k), "contact_radius": out(a)}
+
 
 # --------------------------------------------------------------------------------------
 @register

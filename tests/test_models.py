@@ -327,10 +327,9 @@ def test_out_of_range_error_message_and_attributes():
 def test_interval_renders_and_checks():
     """An Interval renders as '[lo, hi)' with its unit and as an inequality for docs, and
     its check() is what the formulas enforce (NaN is never inside)."""
-    from linecontact.classical import POISSON_RANGE
-    from linecontact.validity import Interval
-    assert str(POISSON_RANGE) == "[0, 0.5]"
-    assert POISSON_RANGE.describe() == "0 <= poisson <= 0.5"
+    from linecontact.validity import POISSON_RATIO, Interval
+    assert str(POISSON_RATIO) == "[0, 0.5]"  # 0.5: incompressible (issue 11.4)
+    assert POISSON_RATIO.describe() == "0 <= poisson <= 0.5"
     iv = Interval("radius", 0.0, np.inf, True, True, "m")
     assert str(iv) == "(0, inf) m" and iv.describe() == "0 < radius < inf m"
     assert list(iv.contains([1.0, 0.0, np.nan, np.inf])) == [True, False, False, False]

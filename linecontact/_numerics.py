@@ -88,13 +88,18 @@ class NotAKnotSpline:
         self.x = x
         #: Coefficients, shape (4, n - 1), highest power first (scipy's PPoly layout).
         self.c = np.stack([t / h, (m - s[:-1]) / h - t, s[:-1], y[:-1]])
+        # interval lookup: searchsorted over the interior knots gives the interval index
+        # directly, the end intervals continued outside; one gather per evaluation
+        self._inner = x[1:-1]
+        self._rows = np.ascontiguousarray(self.c.T)
 
     def __call__(self, xq, nu=0):
         """Value (nu = 0) or derivative of order nu = 1, 2 of the spline at xq."""
         xq = np.asarray(xq, dtype=float)
-        i = np.clip(np.searchsorted(self.x, xq, side="right") - 1, 0, self.x.size - 2)
+        i = np.searchsorted(self._inner, xq, side="right")
         t = xq - self.x[i]
-        c0, c1, c2, c3 = (c[i] for c in self.c)
+        c = self._rows[i]
+        c0, c1, c2, c3 = c[..., 0], c[..., 1], c[..., 2], c[..., 3]
         if nu == 0:
             return ((c0 * t + c1) * t + c2) * t + c3
         if nu == 1:
@@ -141,11 +146,14 @@ def _slopes_not_a_knot(x, h, m):
 # coefficients of u - ln(1 + u) = sum_{k>=2} (-1)^k u^k / k, for |u| <= 0.3: terms up
 # to k = 40 leave a relative remainder below 2 * 0.3^39 / 41 ~ 2e-22
 _SERIES = np.array([(-1.0) ** k / k for k in range(40, 1, -1)])
+_SERIES_LIST = _SERIES.tolist()
 
 
 def _excess(u):
     """u - ln(1 + u) without cancellation for small u (series for |u| <= 0.3)."""
     small = np.abs(u) <= 0.3
+    if not small.any():
+        return u - np.log1p(u)
     us = np.where(small, u, 0.0)
     acc = np.zeros_like(us)
     for coef in _SERIES:
@@ -196,6 +204,10 @@ def log1p_excess_root(t):
     t = np.asarray(t, dtype=float)
     if np.any(~(t >= 0)) or np.any(np.isinf(t)):
         raise ValueError("log1p_excess_root: t must be finite and >= 0")
+    if t.size == 0:
+        return t.copy()
+    if t.ndim == 0:
+        return np.asarray(_root_scalar(float(t)))
     pos = t > 0
     tp = np.where(pos, t, 1.0)            # t = 0 (u = 0) is set at the end
     with np.errstate(over="ignore"):      # the series is not used at large t
@@ -215,6 +227,38 @@ def log1p_excess_root(t):
     else:
         raise RuntimeError("log1p_excess_root: Newton iteration did not converge")
     return np.where(pos, up, 0.0)
+
+
+def _series_start(t):
+    """Starting guess of u from t: the inverse series (t < 1) or the fixed point."""
+    if t < 1.0:
+        s = math.sqrt(2 * t)
+        return s * (1 + s * (1 / 3 + s * (1 / 36 + s * (-1 / 270 + s / 4320))))
+    return t + math.log1p(t + math.log1p(t + math.log1p(t)))
+
+
+def _excess_scalar(u):
+    """:func:`_excess` for one Python float."""
+    if abs(u) > 0.3:
+        return u - math.log1p(u)
+    acc = 0.0
+    for coef in _SERIES_LIST:
+        acc = acc * u + coef
+    return acc * u * u
+
+
+def _root_scalar(t):
+    """:func:`log1p_excess_root` for one number, in Python floats (about 20 times
+    faster than 0-d arrays): the same start, Newton step and stopping rule."""
+    if t == 0.0:
+        return 0.0
+    u = _series_start(t)
+    for _ in range(40):
+        step = (_excess_scalar(u) - t) * (1 + u) / u
+        u -= step
+        if abs(step) <= 1e-9 * u:
+            return u - (_excess_scalar(u) - t) * (1 + u) / u
+    raise RuntimeError("log1p_excess_root: Newton iteration did not converge")
 
 
 def lambertw_m1(x):

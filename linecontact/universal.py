@@ -111,8 +111,10 @@ class UniversalCurve:
         flat = np.atleast_1d(d).ravel()
         res = np.empty_like(flat)
         small = flat < self.d_min
-        res[~small] = on_table(flat[~small])
-        res[small] = below_table(flat[small])
+        if not small.all():
+            res[~small] = on_table(flat[~small])
+        if small.any():
+            res[small] = below_table(flat[small])
         return res.reshape(d.shape)
 
     def psi(self, d_tilde):

@@ -3,14 +3,16 @@
 A rigid cylinder (radius R, length L) lies on its side on an elastic half-space of
 effective modulus E* and is pressed in by a depth d. This package gives F(d), d(F) and
 the contact stiffness k = dF/dd from the Li & Popov (2017) MDR model, the classical
-closed forms it is compared with, and (from :mod:`linecontact.universal`) a BEM-tabulated
-universal curve. SI units in and out (m, N, Pa); everything is vectorised over numpy
-arrays.
+closed forms it is compared with, and the BEM-tabulated universal curve (the default
+model; docs/theory.md, section 'Self-similarity'). SI units in and out (m, N, Pa);
+everything is vectorised over numpy arrays. Each model states its error against the BEM
+(``model.measured_error``, from tables/model_accuracy.csv).
 
 Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO/TS 16281),
-:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.mdr` (general MDR transforms),
-:mod:`~linecontact.models` (one interface for all models), :mod:`~linecontact.tables`
-(shipped data), :mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
+:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.universal` (the universal
+curve), :mod:`~linecontact.mdr` (general MDR transforms), :mod:`~linecontact.models` (one
+interface for all models), :mod:`~linecontact.tables` (shipped data),
+:mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
 
 Examples
 --------

@@ -78,7 +78,27 @@ DEFAULT_MODEL = "universal"
 
 
 def register(cls):
-    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`."""
+    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`.
+
+    Parameters
+    ----------
+    cls : type
+        A :class:`ContactModel` subclass with a non-empty ``key``.
+
+    Returns
+    -------
+    type
+        `cls`, unchanged (so it works as a decorator).
+
+    Examples
+    --------
+    >>> "li-popov" in MODELS and MODELS["li-popov"] is LiPopovModel
+    True
+    >>> register(int)
+    Traceback (most recent call last):
+    ...
+    TypeError: <class 'int'> is not a ContactModel subclass
+    """
     if not (isinstance(cls, type) and issubclass(cls, ContactModel)):
         raise TypeError(f"{cls!r} is not a ContactModel subclass")
     if not cls.key:
@@ -114,6 +134,14 @@ class ContactModel(abc.ABC):
     Subclasses set :attr:`key` and implement :meth:`force`, :meth:`depth`,
     :meth:`stiffness`, :attr:`label` and :attr:`provenance`; the rest have
     defaults in terms of those.
+
+    Examples
+    --------
+    Every model answers the same questions; a subclass implements the law:
+
+    >>> m = get_model("puttock-thwaite", 5e-3, 10e-3, 115.38e9)
+    >>> isinstance(m, ContactModel), f"{m.length_over_radius:g}"
+    (True, '2')
     """
 
     #: Registry key.
@@ -278,6 +306,16 @@ class LiPopovModel(ContactModel):
     L/R range on request (Eq. 11 constants as they are, a table's end rows held); the
     label then says "extrapolated".
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    coefficients : str, optional
+        ``"published"`` (default), ``"eq11"`` or a table name (see above).
+    extrapolate : bool, optional
+        Use the set outside its L/R range on request (default False).
+
     Examples
     --------
     >>> m = LiPopovModel(5e-3, 10e-3, 115.38e9)
@@ -376,6 +414,12 @@ class LiPopovModel(ContactModel):
 class PuttockThwaiteModel(ContactModel):
     """Puttock & Thwaite (= Lundberg 1939), Li & Popov 2017 Eq. 2.
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> m = PuttockThwaiteModel(5e-3, 10e-3, 115.38e9)
@@ -414,6 +458,14 @@ class PuttockThwaiteModel(ContactModel):
 @register
 class JohnsonModel(ContactModel):
     """Johnson-type law, Li & Popov 2017 Eq. 4, with constant c (option, default 1).
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float or str, optional
+        The constant of Eq. 4 (default 1, Johnson 1985; 0.72, 0.572 or any number) [-].
 
     Examples
     --------
@@ -465,6 +517,14 @@ class JohnsonModel(ContactModel):
 @register
 class KunzModel(ContactModel):
     """Kunz & de Maria's linear law F = c E* L d (option c, default 0.175).
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float, optional
+        Coefficient of F = c E* L d, 0 < c < inf (default 0.175) [-].
 
     Examples
     --------
@@ -543,6 +603,12 @@ class _SteelModel(ContactModel):
 class PalmgrenModel(_SteelModel):
     """Palmgren's empirical roller-raceway formula (one contact, steel only).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> f"{PalmgrenModel(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
@@ -560,6 +626,12 @@ class PalmgrenModel(_SteelModel):
 @register
 class ISO16281Model(_SteelModel):
     """ISO/TS 16281 per-contact roller deflection (steel only).
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
 
     Examples
     --------
@@ -603,8 +675,8 @@ class UniversalModel(ContactModel):
 
     Notes
     -----
-    The curve :math:`\Psi` and its inverses are :class:`linecontact.universal.UniversalCurve`
-    (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
+    The curve :math:`\Psi` and its inverses are
+    :class:`linecontact.universal.UniversalCurve` (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
     Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
     table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
     range over which the accuracy study compared the models, within which the parabolic
@@ -815,6 +887,11 @@ def get_model(key, radius, length, estar, **options):
     FileNotFoundError
         The model's table is missing (the message names the file).
 
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
+
     Examples
     --------
     >>> get_model("johnson", 5e-3, 10e-3, 115.38e9, c=0.572).label
@@ -854,6 +931,11 @@ def standard_models(radius, length, estar):
     Returns
     -------
     list of ContactModel
+
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
 
     Examples
     --------

@@ -4,8 +4,12 @@ Writes tables/model_accuracy.csv and docs/figures/model_accuracy.png, and prints
 summary tables (one per region and depth band, and the rows of the README's "Which model
 to trust where"). Run from the repository root::
 
-    python -m tools.build_tables accuracy          # about a minute
-    python -m tools.build_tables accuracy --bem-points 0 0   # skip the BEM check (2 s)
+    python -m tools.build_tables accuracy          # about 2 minutes on 2 cores
+    python -m tools.build_tables accuracy --bem-points 0 0   # skip the BEM check (5 s)
+
+The 30 independent BEM solutions of the check run on the study runner (tools/runner.py:
+a local Dask cluster by default, ``--scheduler ADDRESS`` for an existing one,
+``--checkpoint DIR --resume`` to continue an interrupted run).
 
 Reference: the BEM. The universal curve *is* the BEM (exact scaling, docs/theory.md,
 section 'Self-similarity'; table accuracy in its header), so the other models are
@@ -37,7 +41,7 @@ from linecontact.classical import STEEL_ESTAR
 from linecontact.models import UniversalModel, get_model
 from linecontact.tables import available_tables, write_table
 from linecontact.validity import OutOfRangeError
-from tools.build_tables import code_version
+from tools.runner import add_runner_arguments, run_study_from_args, table_meta
 
 REPO = Path(__file__).resolve().parent.parent
 L_OVER_R = np.concatenate([np.round(np.arange(0.1, 1.0, 0.1), 1),
@@ -103,23 +107,35 @@ def model_errors(models, l_over_r=L_OVER_R, d_over_r=D_OVER_R):
     return out
 
 
-def universal_errors(n_l=6, n_d=5, seed=0):
-    """Universal model against independent BEM solutions off the table's nodes:
-    rows (L/R, d/R, error of F, error of k)."""
+def bem_check_tasks(n_l=6, n_d=5, seed=0):
+    """Tasks of the universal model's check: n_l L/R values (0.1 ... 20, log-spaced) x
+    n_d depths d/R (1e-6 ... 0.15, jittered by up to 0.1 decade so that they miss the
+    table's nodes), each clipped to the table's end d~_max."""
+    from linecontact.universal import universal_curve
+    d_max = universal_curve().d_max
+    rng = np.random.default_rng(seed)
+    tasks = []
+    for lr in np.geomspace(0.1, 20, n_l) if n_l else []:
+        for ldr in np.linspace(-6, math.log10(0.15), n_d) + rng.uniform(-0.1, 0.1, n_d):
+            dt = min(10 ** ldr / lr ** 2, d_max)
+            tasks.append({"key": f"lr={lr:.6g}_dr={10 ** ldr:.6g}", "l_over_r": float(lr),
+                          "d_over_r": float(10 ** ldr), "d_tilde": float(dt)})
+    return tasks
+
+
+def bem_check(task):
+    """One independent BEM solution at d~ (grids 256 and 512 cells along L/2, the
+    table's Richardson step for F) against the universal model: (L/R, d/R, error of F,
+    error of k)."""
     from linecontact.universal import universal_curve
     from tools.cylinder import solve_depth
     curve = universal_curve()
-    rng = np.random.default_rng(seed)
-    rows = []
-    for lr in np.geomspace(0.1, 20, n_l) if n_l else []:
-        for ldr in np.linspace(-6, math.log10(0.15), n_d) + rng.uniform(-0.1, 0.1, n_d):
-            dt = min(10 ** ldr / lr ** 2, curve.d_max)
-            r1 = solve_depth(dt, 256, 32, tol=1e-7)
-            r2 = solve_depth(dt, 512, 32, tol=1e-7)
-            psi = 2 * r2.force - r1.force
-            rows.append((lr, 10 ** ldr, float(curve.psi(dt)) / psi - 1,
-                         float(curve.dpsi(dt)) / r2.stiffness - 1))
-    return np.array(rows).reshape(-1, 4)
+    dt = task["d_tilde"]
+    r1 = solve_depth(dt, 256, 32, tol=1e-7)
+    r2 = solve_depth(dt, 512, 32, tol=1e-7)
+    psi = 2 * r2.force - r1.force
+    return (task["l_over_r"], task["d_over_r"], float(curve.psi(dt)) / psi - 1,
+            float(curve.dpsi(dt)) / r2.stiffness - 1)
 
 
 def _pct(x):
@@ -262,13 +278,17 @@ def add_arguments(parser):
                         metavar=("N_L", "N_D"),
                         help="independent BEM checks of the universal model: L/R values, "
                              "d/R values (default 6 5; 0 0 skips them)")
+    add_runner_arguments(parser)
 
 
 def run(args):
     """Compute the error grid, write the table and the figure, print the summaries."""
     models = comparison_models()
     errs = model_errors(models)
-    uni = universal_errors(*args.bem_points)
+    tasks = bem_check_tasks(*args.bem_points)
+    uni = np.array(run_study_from_args(bem_check, tasks, args,
+                                       desc="universal model vs BEM") if tasks else [],
+                   dtype=float).reshape(-1, 4)
     cols = {"L_over_R": np.repeat(L_OVER_R, len(D_OVER_R)),
             "d_over_R": np.tile(D_OVER_R, len(L_OVER_R))}
     for tag, _, _, _ in models:
@@ -283,24 +303,20 @@ def run(args):
                  "scatters by ~0.5 %)")
     else:
         check = "universal model not re-checked against the BEM in this run"
-    meta = {
-        "title": "Relative error of each model's F(d) and k(d) against the BEM "
-                 "(universal curve), model/BEM - 1",
-        "source": "python -m tools.build_tables accuracy (tools/accuracy.py, this "
-                  "repository)",
-        "units": "L_over_R [-], d_over_R [-], F_err_<model>, k_err_<model> [-] signed "
-                 f"relative errors; {NOT_APPLICABLE:g} = the model does not apply at this "
-                 f"L/R (outside its coefficient table), {NO_ANSWER:g} = it gives no "
-                 "answer at this depth (beyond its bound beta L^2/R)",
-        "models": "; ".join(f"{t} = {lab}" for t, lab, _, _ in models),
-        "conditions": f"R = {R_REF:g} m, E* = {E_REF:.6g} Pa (steel on steel); the "
-                      "errors depend on L/R and d/R only",
-        "generated_by": getattr(args, "command_line",
-                                "python -m tools.build_tables accuracy"),
-        "date": __import__("datetime").date.today().isoformat(),
-        "version": code_version(),
-        "accuracy": "reference = tables/universal_curve.csv; " + check,
-    }
+    meta = table_meta(
+        getattr(args, "command_line", "python -m tools.build_tables accuracy"),
+        title="Relative error of each model's F(d) and k(d) against the BEM (universal "
+              "curve), model/BEM - 1",
+        source="python -m tools.build_tables accuracy (tools/accuracy.py, this "
+               "repository)",
+        units="L_over_R [-], d_over_R [-], F_err_<model>, k_err_<model> [-] signed "
+              f"relative errors; {NOT_APPLICABLE:g} = the model does not apply at this "
+              f"L/R (outside its coefficient table), {NO_ANSWER:g} = it gives no answer "
+              "at this depth (beyond its bound beta L^2/R)",
+        models="; ".join(f"{t} = {lab}" for t, lab, _, _ in models),
+        conditions=f"R = {R_REF:g} m, E* = {E_REF:.6g} Pa (steel on steel); the errors "
+                   "depend on L/R and d/R only",
+        accuracy="reference = tables/universal_curve.csv; " + check)
     args.out.mkdir(parents=True, exist_ok=True)
     write_table(args.out / "model_accuracy.csv", meta, cols)
     figure(errs, models, uni, args.figure)

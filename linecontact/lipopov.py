@@ -781,10 +781,8 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -828,10 +826,8 @@ def dimensionless_force(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -876,10 +872,8 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -908,6 +902,54 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
     return lipopov_stiffness(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+
+
+def dimensionless_depth(f_tilde, alpha, beta):
+    r"""Dimensionless depth d~ = d R/L^2 under the dimensionless force F~ (Eq. 9 form).
+
+    .. math::
+        \tilde d = \frac{\tilde F}{2\alpha}\left(1 + \ln\frac{2\alpha\beta}{\tilde F}
+                    \right), \qquad \tilde F = \frac{F R}{E^* L^3}
+
+    Parameters
+    ----------
+    f_tilde : float or array_like
+        Dimensionless force F R/(E* L^3), 0 < F~ < 2 alpha beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        d R / L^2 [-]; the inverse of :func:`dimensionless_force`.
+
+    Raises
+    ------
+    OutOfRangeError
+        F~ outside (0, 2 alpha beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < F~ < 2 alpha beta (the form saturates there). It is
+    :func:`lipopov_depth` with R = L = E* = 1; with alpha = pi/2, beta = 1 it is
+    Eq. 2 in dimensionless form.
+
+    Examples
+    --------
+    >>> d = dimensionless_depth(dimensionless_force(0.1, 1.5708, 0.4573), 1.5708, 0.4573)
+    >>> round(float(d), 12)
+    0.1
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    """
+    a, b = _coeffs(alpha, beta)
+    f = check_interval(
+        "f_tilde", f_tilde, 0.0, 2 * a * b, low_open=True, high_open=True,
+        hint="the Li-Popov form saturates at F~ = 2 alpha beta")
+    return lipopov_depth(f, 1.0, 1.0, 1.0, alpha=a, beta=b)
 
 
 def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):
@@ -1034,5 +1076,5 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
     return float(a), float(b)
 
 
-__all__ += ["dimensionless_contact_radius", "dimensionless_force",
+__all__ += ["dimensionless_contact_radius", "dimensionless_force", "dimensionless_depth",
             "dimensionless_stiffness", "effective_beta", "fit_dimensionless_profile"]

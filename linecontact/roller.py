@@ -349,46 +349,48 @@ class _Slices:
         return A, D, J
 
     def newton(self, S, q, c, over, tol):
+        """Damped Newton on (q, c) over the slice set S; slices that keep being driven to
+        q <= 0 leave S (they are outside the contact)."""
         R = self.R
-        for _ in range(200):
-            for _ in range(60):
-                self.iterations += 1
-                A, D, J = self.jacobian(S, q, c)
-                qs, cs = q[S], c[S]
-                ns = len(S)
-                res = np.concatenate([A @ qs - over[S], D @ cs + 1.0 / R])
-                qsc = np.max(qs)
-                colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / R)])
-                rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, R)])
-                step = -np.linalg.solve(J * rowsc[:, None] * colsc[None, :],
-                                        res * rowsc) * colsc
-                dq, dc = step[:ns], step[ns:]
-                alpha = 1.0
-                low = cs + dc <= 0.2 * cs
-                if np.any(low):       # keep q/b^2 positive (it is 1/(4R) in 2D)
-                    alpha = float(np.min(0.8 * cs[low] / -dc[low]))
-                    dq, dc = alpha * dq, alpha * dc
-                qn = qs + dq
-                bad = qn <= 0
-                if np.any(bad):
-                    # these slices leave the contact; go on with the others
-                    q[S[bad]] = 0.0
-                    keep = ~bad
-                    q[S[keep]] = np.maximum(qn[keep], 1e-3 * qs[keep])
-                    c[S[keep]] = cs[keep] + dc[keep]
-                    S = S[keep]
-                    if len(S) == 0:
-                        raise ConvergenceError("every slice left the contact")
-                    break
-                q[S] = qn
-                c[S] = cs + dc
-                if alpha == 1.0 and np.max(np.abs(dq)) <= tol * qsc \
-                        and np.max(np.abs(dc)) * R <= tol:
+        blocked = np.zeros(self.n, int)
+        for _ in range(400):
+            self.iterations += 1
+            A, D, J = self.jacobian(S, q, c)
+            qs, cs = q[S], c[S]
+            ns = len(S)
+            res = np.concatenate([A @ qs - over[S], D @ cs + 1.0 / R])
+            qsc = np.max(qs)
+            colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / R)])
+            rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, R)])
+            step = -np.linalg.solve(J * rowsc[:, None] * colsc[None, :],
+                                    res * rowsc) * colsc
+            dq, dc = step[:ns], step[ns:]
+            # fraction to the boundary: q and c = q/b^2 stay positive
+            alpha = 1.0
+            hit_q = qs + dq <= 0.05 * qs
+            if np.any(hit_q):
+                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
+            hit_c = cs + dc <= 0.2 * cs
+            if np.any(hit_c):
+                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            q[S] = qs + alpha * dq
+            c[S] = cs + alpha * dc
+            if alpha == 1.0:
+                blocked[S] = 0
+                if np.max(np.abs(dq)) <= tol * qsc and np.max(np.abs(dc)) * R <= tol:
                     return S
-            else:
-                raise ConvergenceError("Newton iteration on the slice loads did not "
-                                       "converge in 60 steps")
-        raise ConvergenceError("the slices kept leaving the contact (200 restarts)")
+                continue
+            blocked[S[hit_q]] += 1
+            blocked[S[~hit_q]] = 0
+            leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
+            if np.any(leave):
+                q[S[leave]] = 0.0
+                blocked[S[leave]] = 0
+                S = S[~leave]
+                if len(S) == 0:
+                    raise ConvergenceError("every slice left the contact")
+        raise ConvergenceError("Newton iteration on the slice loads did not converge "
+                               "in 400 steps")
 
     def solve(self, d, theta, warm=None, tol=1e-11):
         """Active-set solution at depth d and tilt theta; returns (S, q, c)."""
@@ -402,12 +404,16 @@ class _Slices:
             c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
             S = S[q[S] > 0]
         else:
+            # cold start: the linear problem with frozen strip widths, twice (the second
+            # time with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)
             b0 = np.sqrt(R * over[S])
-            for _ in range(n):
-                qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
-                if np.all(qs > 0):
-                    break
-                S, b0 = S[qs > 0], b0[qs > 0]
+            for sweep in range(2):
+                for _ in range(n):
+                    qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
+                    if np.all(qs > 0):
+                        break
+                    S, b0 = S[qs > 0], b0[qs > 0]
+                b0 = np.sqrt(4 * R * qs)
             q[S] = qs
         for _ in range(n + 1):
             S = self.newton(S, q, c, over, tol)
@@ -650,6 +656,7 @@ class ProfiledRoller:
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = _drop_at(self.profile, L, self._fx, ends_may_be_inf=True)
         self._warm = None
+        self._memo = None
         self.iterations = 0
 
     def first_contact_depth(self, tilt=0.0):
@@ -689,15 +696,23 @@ class ProfiledRoller:
         return hmin
 
     def _grid(self, d, th):
+        """Slices over the overlap interval, its ends interpolated between grid points.
+
+        The ends move continuously with d and theta, so that F(d) is continuous.
+        """
         fx = self._fx
         over = d + th * fx - self._fP
         on = np.flatnonzero(over > 0)
         if len(on) == 0:
             k = int(np.argmax(over))
-            on = np.array([k])
-        lo = fx[max(on[0] - 1, 0)]
-        hi = fx[min(on[-1] + 1, len(fx) - 1)]
-        return _Slices(self.radius, self.estar, lo, hi, self.n_slices,
+            lo, hi = fx[max(k - 1, 0)], fx[min(k + 1, len(fx) - 1)]
+        else:
+            i, j = on[0], on[-1]
+            lo = fx[0] if i == 0 else fx[i - 1] + (fx[i] - fx[i - 1]) * (
+                -over[i - 1] / (over[i] - over[i - 1]) if np.isfinite(over[i - 1]) else 1.0)
+            hi = fx[-1] if j == len(fx) - 1 else fx[j] + (fx[j + 1] - fx[j]) * (
+                over[j] / (over[j] - over[j + 1]) if np.isfinite(over[j + 1]) else 0.0)
+        return _Slices(self.radius, self.estar, float(lo), float(hi), self.n_slices,
                        lambda x: _drop_at(self.profile, self.length, x))
 
     # -- depth control ---------------------------------------------------------------
@@ -737,16 +752,20 @@ class ProfiledRoller:
                                           "no contact").item()
         return self._solution(*self._forces(d, th))
 
-    def _forces(self, d, th):
+    def _forces(self, d, th, tol=1e-11):
         s = self._grid(d, th)
         warm = None
         if self._warm is not None:
-            xo, qo, co = self._warm
-            qn = np.interp(s.x, xo, qo, left=0.0, right=0.0)
-            cn = np.interp(s.x, xo, co, left=co[0], right=co[-1])
-            warm = (qn, cn)
-        S, q, c = s.solve(d, th, warm=warm)
-        self._warm = (s.x.copy(), q.copy(), c.copy())
+            xo, qo, co, do, to = self._warm
+            span = s.hi - s.lo
+            # a warm start only for a nearby state (else the cold start is more robust)
+            if (abs(d - do) <= 0.02 * abs(do) + 1e-3 * span * abs(th - to) and
+                    abs((xo[-1] - xo[0]) / (s.x[-1] - s.x[0]) - 1) <= 0.02):
+                qn = np.interp(s.x, xo, qo, left=0.0, right=0.0)
+                cn = np.interp(s.x, xo, co, left=co[0], right=co[-1])
+                warm = (qn, cn)
+        S, q, c = s.solve(d, th, warm=warm, tol=tol)
+        self._warm = (s.x.copy(), q.copy(), c.copy(), d, th)
         self.iterations += s.iterations
         scale = math.pi * self.estar * s.w
         F = scale * q.sum()
@@ -796,26 +815,31 @@ class ProfiledRoller:
         """Newton on ln(d - d0) for F(d) = F0 at fixed tilt (F increases with d)."""
         d0 = self.first_contact_depth(th)
         L, R, E = self.length, self.radius, self.estar
-        if self._warm is not None and getattr(self, "_last", None) is not None \
-                and self._last[0] - d0 > 0:
-            e = self._last[0] - d0
+        if self._memo is not None and self._memo[0] == th:
+            # from the last solution of this roller: F ~ e^slope
+            _, e_last, F_last, slope = self._memo
+            e = e_last * (F0 / F_last) ** (1.0 / slope)
         else:
             # the straight roller's 2D estimate (a lower bound for a profiled roller)
             e = F0 / (math.pi * E * L) * max(
                 1.0 + math.log(max(math.pi * E * L**3 / (R * F0), math.e)), 2.0)
         lo, hi = 0.0, math.inf
+        err = math.inf
         for _ in range(100):
-            st = self._forces(d0 + e, th)
+            # solve loosely while far from the force (inexact Newton), tightly at the end
+            inner = 1e-11 if err < 1e-3 else 1e-7
+            st = self._forces(d0 + e, th, tol=inner)
             F, K = st[2], st[4]
-            self._last = (d0 + e, F)
-            if abs(F / F0 - 1) <= tol:
+            slope = min(max(K[0, 0] * e / F, 0.5), 3.0)  # d ln F/d ln e, 1 to about 1.5
+            err = abs(F / F0 - 1)
+            if err <= tol and inner == 1e-11:
+                self._memo = (th, e, F, slope)
                 return st
             if F < F0:
                 lo = max(lo, e)
             else:
                 hi = min(hi, e)
-            slope = K[0, 0] * e / F          # d ln F / d ln e, between 1 and about 1.5
-            en = e * math.exp(math.log(F0 / F) / max(slope, 0.25))
+            en = e * (F0 / F) ** (1.0 / slope)
             if not lo < en < hi:
                 en = math.sqrt(lo * hi) if (lo > 0 and math.isfinite(hi)) else (
                     e * 4 if F < F0 else e / 4)
@@ -849,7 +873,6 @@ class ProfiledRoller:
         'M/F = 1.000 mm'
         """
         F0 = float(check_positive("force", force, "N"))
-        self._last = None
         if tilt is not None:
             th = TILT_RANGE.check(tilt).item()
             return self._solution(*self._depth_at_force(F0, th, tol))
@@ -865,7 +888,6 @@ class ProfiledRoller:
             while abs(th + step) >= TILT_RANGE.high:
                 step /= 2
             th = th + step
-            self._last = None
         raise ConvergenceError(f"no zero-moment tilt found for force {F0:g} N")
 
 

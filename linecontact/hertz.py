@@ -59,13 +59,35 @@ def _special():
     return special
 
 
-def _ratio_of_axes(kprime):
-    """B/A as a function of k' = b/a in (0, 1], from Johnson (1985) Eq. 4.27."""
+_SERIES_M = 1e-2
+_C = [math.comb(2 * n, n) ** 2 / 16.0 ** n for n in range(12)]
+
+
+def _KE(kprime):
+    """K(e), E(e) with m = e^2 = 1 - k'^2: scipy, or their power series for m < 0.01
+    (where K - E would lose digits): K = pi/2 sum c_n m^n, E = pi/2 sum c_n m^n/(1-2n),
+    c_n = (C(2n, n)/4^n)^2, truncated at m^12 (error below 1e-24)."""
+    m1 = kprime * kprime
+    m = (1.0 - kprime) * (1.0 + kprime)
+    if m < _SERIES_M:
+        K = sum(c * m**n for n, c in enumerate(_C)) * math.pi / 2
+        # K - E = pi/2 sum c_n m^n (1 - 1/(1-2n)) = pi/2 sum c_n m^n 2n/(2n-1)
+        KmE = sum(c * m**n * 2 * n / (2 * n - 1) for n, c in enumerate(_C) if n) * math.pi / 2
+        return K, K - KmE, KmE
     sp = _special()
-    m1 = kprime * kprime                 # 1 - e^2
-    K = sp.ellipkm1(m1)                  # K(m) with m = e^2, accurate as m -> 1
-    E = sp.ellipe(1.0 - m1)
-    return (E / m1 - K) / (K - E)
+    K = float(sp.ellipkm1(m1))          # K(m), accurate as m -> 1
+    E = float(sp.ellipe(m))
+    return K, E, K - E
+
+
+def _ratio_of_axes(kprime):
+    """B/A as a function of k' = b/a in (0, 1), from Johnson (1985) Eq. 4.27."""
+    m = (1.0 - kprime) * (1.0 + kprime)
+    if m <= 0.0:
+        return 1.0
+    K, E, KmE = _KE(kprime)
+    # E/k'^2 - K = (E - K k'^2)/k'^2 with E - K (1 - m) = K m - (K - E)
+    return (K * m - KmE) / (kprime * kprime * KmE)
 
 
 def hertz_eccentricity(radius_x, radius_y):
@@ -120,17 +142,15 @@ def hertz_eccentricity(radius_x, radius_y):
 
     # k' -> 1: B/A -> 1; k' -> 0: B/A ~ 1/(k'^2 ln(4/k')) -> inf; monotone between
     lo = math.log(1e-300 ** 0.25)
-    hi = 0.0
 
     def f(z):
         if z == 0.0:
             return 1.0 - ratio
         return _ratio_of_axes(math.exp(z)) - ratio
 
-    z = brentq(f, lo, -1e-12 if f(-1e-12) > 0 else hi, xtol=1e-15, rtol=1e-15,
-               maxiter=200)
+    z = brentq(f, lo, 0.0, xtol=1e-16, rtol=1e-15, maxiter=500)
     k = math.exp(z)
-    return k, math.sqrt(1.0 - k * k)
+    return k, math.sqrt((1.0 - k) * (1.0 + k))
 
 
 @dataclass(frozen=True)
@@ -171,16 +191,14 @@ def _contact(F, rx, ry, E):
     swapped = ry > rx
     big, small = (ry, rx) if swapped else (rx, ry)
     k, e = hertz_eccentricity(big, small)
-    sp = _special()
     A = 1.0 / (2.0 * big)
     if e == 0.0:
         # circle: K - E ~ (pi/4) e^2, so a^3 = 3 F R/(4 E*), delta = a^2/R
         a = np.cbrt(3.0 * F * big / (4.0 * E))
         K = math.pi / 2
     else:
-        K = float(sp.ellipkm1(k * k))
-        Ee = float(sp.ellipe(e * e))
-        a = np.cbrt(3.0 * F * (K - Ee) / (2.0 * math.pi * e * e * E * A))
+        K, _, KmE = _KE(k)
+        a = np.cbrt(3.0 * F * KmE / (2.0 * math.pi * e * e * E * A))
     b = a * k
     p0 = 3.0 * F / (2.0 * math.pi * a * b)
     delta = p0 * b * K / E

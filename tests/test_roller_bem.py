@@ -237,3 +237,12 @@ def test_straight_roller_reproduces_the_universal_curve():
         assert g["fine"].ends == (True, True) and g["order"] == 1.0
         assert abs(g["fine"].force / exact - 1) < 1.5e-3
         assert abs(g["richardson_force"] / exact - 1) < 5e-4
+
+
+def test_tool_docstring_examples_run():
+    """The Examples blocks of tools/roller_bem.py are doctests (tools/ is outside the
+    default doctest paths)."""
+    import doctest
+    import tools.roller_bem
+    result = doctest.testmod(tools.roller_bem, optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0 and result.attempted >= 5

@@ -42,6 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from .roller_bem import grid_convergence, solve_roller_force
+from .runner import add_runner_arguments, run_study_from_args, table_meta
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -225,20 +226,7 @@ def add_arguments(parser):
     parser.add_argument("--figure", type=Path,
                         default=REPO / "docs" / "figures" / "roller_accuracy.png",
                         help="where to write the figure ('' for none)")
-    try:
-        from .runner import add_runner_arguments
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        parser.add_argument("--no-progress", action="store_true")
-    else:
-        add_runner_arguments(parser)
-
-
-def _run_tasks(tasks, args):
-    try:
-        from .runner import run_study_from_args
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        return [run_case(t) for t in tasks]
-    return run_study_from_args(run_case, tasks, args, desc="roller study")
+    add_runner_arguments(parser)
 
 
 COLUMNS_UNITS = {
@@ -386,19 +374,10 @@ def figure(col, path):
 
 def run(args):
     from linecontact.tables import write_table
-    try:
-        from .runner import table_meta
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        from .build_tables import code_version
-
-        def table_meta(command_line, **fields):
-            import datetime
-            return {**fields, "generated_by": command_line,
-                    "date": datetime.date.today().isoformat(), "version": code_version()}
 
     tasks = study_tasks(args.n_x, args.n_y, args.tol, args.check_every, args.quick)
     t0 = time.perf_counter()
-    results = _run_tasks(tasks, args)
+    results = run_study_from_args(run_case, tasks, args, desc="roller study")
     wall = time.perf_counter() - t0
     col = tabulate(tasks, results)
     s = summarise(col, tasks, results)

@@ -52,12 +52,17 @@ ROLLERS = {"A": 0.014, "B": 0.030}   #: roller lengths [m]
 LINE_LOADS = (1e5, 3e5, 8e5, 2e6)     #: mean line loads F/L [N/m]
 TILTS = (0.0, 5e-4, 1e-3, 2e-3)       #: [rad]
 CROWN_RADIUS = 0.5                    #: circular crown [m]
+CROWN_OFFSET = 0.002                  #: offset crown (free tilt: theta = -x0/Rc) [m]
+CROWN_RADII_ASYM = (0.5, 0.25)        #: asymmetric crown: Rc for x < 0 and x > 0 [m]
 DESIGN_LINE_LOAD = 8e5                #: Lundberg / Johns-Gohar design load F0/L [N/m]
 RELIEF = dict(relief_fraction=0.15, corner_radius=0.05)  #: relief length / L, arc [m]
 
 #: profile codes of the table (numeric columns only)
 PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
-            5: "straight with end relief"}
+            5: "straight with end relief", 6: "offset circular crown",
+            7: "asymmetric crown"}
+#: profiles of the zero-moment (free tilt) cases
+FREE_TILT = ("offset circular crown", "asymmetric crown")
 CODES = {v: k for k, v in PROFILES.items()}
 
 
@@ -76,6 +81,15 @@ def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR):
     if name == "straight with end relief":
         return lp.EndReliefProfile(length, corner_radius=RELIEF["corner_radius"],
                                    relief_length=RELIEF["relief_fraction"] * length)
+    if name == "offset circular crown":
+        return lp.CircularCrownProfile(length, crown_radius=CROWN_RADIUS,
+                                       offset=CROWN_OFFSET)
+    if name == "asymmetric crown":
+        # a user table (the CSV route): two crown radii meeting at x = 0, 2001 points
+        # (linear interpolation changes the drop by < 1e-4 of its end value)
+        x = np.linspace(-length / 2, length / 2, 2001)
+        rc = np.where(x < 0, CROWN_RADII_ASYM[0], CROWN_RADII_ASYM[1])
+        return lp.TabulatedProfile(x, x ** 2 / (2 * rc), source="asymmetric crown")
     raise ValueError(f"profile {name!r} is not one of {sorted(CODES)}")
 
 
@@ -83,15 +97,19 @@ def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=7, quick=False):
     """The list of cases (picklable dicts with a unique 'key'); every `check_every`-th
     case is also solved on a third grid (4 n_x x 4 n_y) to measure the order."""
     tasks = []
-    combos = [("A", p) for p in PROFILES.values()] + [("B", "iso16281")]
+    combos = ([("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
+              + [("A", p) for p in FREE_TILT])
     loads = LINE_LOADS[1::2] if quick else LINE_LOADS
-    tilts = TILTS[::2] if quick else TILTS
     for roller, prof in combos:
         L = ROLLERS[roller]
+        # the FREE_TILT profiles are free to tilt (tilt None: zero moment)
+        tilts = (None,) if prof in FREE_TILT else (
+            TILTS[::2] if quick else TILTS)
         for q in loads:
             for th in tilts:
+                tag = "free" if th is None else f"{th * 1e3:g}"
                 tasks.append(dict(
-                    key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}-t{th * 1e3:g}",
+                    key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}-t{tag}",
                     roller=roller, profile=prof, radius=DIAMETER / 2, length=L,
                     estar=ESTAR, force=q * L, tilt=th, n_x=n_x, n_y=n_y, tol=tol))
     for i, t in enumerate(tasks):
@@ -128,8 +146,9 @@ def bem_case(task):
         contact_length=f.contact_length, stiffness=f.stiffness,
         tilt_stiffness=f.tilt_stiffness, edge=edge,
         end_gap=task["length"] / 2 - max(abs(f.contact_x[0]), abs(f.contact_x[1])),
-        delta=_largest_approach(f.depth, task["tilt"], prof, task["length"]),
+        delta=_largest_approach(f.depth, f.tilt, prof, task["length"]), tilt=f.tilt,
         change_depth=f.depth - c.depth, change_moment=f.moment - c.moment,
+        change_tilt=f.tilt - c.tilt,
         change_p_max=f.p_max / c.p_max - 1,
         richardson_depth=g["richardson_depth"], richardson_moment=g["richardson_moment"],
         nx=f.grid.nx, ny=f.grid.ny, dx=f.grid.dx, dy=f.grid.dy,
@@ -163,7 +182,7 @@ def runtime_case(task, n_slices=100):
     r = model.at_force(task["force"], tilt=task["tilt"])
     dt = time.perf_counter() - t0
     return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
-                seconds=dt)
+                tilt=r.tilt, seconds=dt)
 
 
 def iso_case(task, n_slices=30):
@@ -173,19 +192,22 @@ def iso_case(task, n_slices=30):
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     r = iso_slicing(task["radius"], task["length"], task["estar"], prof,
                     force=task["force"], tilt=task["tilt"], n_slices=n_slices)
-    return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded))
+    return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
+                tilt=r.tilt)
 
 
 def errors(ref, got, task):
-    """Deflection, moment and peak-pressure errors of `got` against the BEM `ref` [-]
-    (definitions: module docstring, item 3)."""
+    """Deflection, moment, peak-pressure and tilt errors of `got` against the BEM `ref`
+    [-] (definitions: module docstring, item 3); the tilt error is 0 where the tilt is
+    given."""
     e_d = (got["depth"] - ref["depth"]) / ref["delta"]
-    if task["tilt"] != 0:
+    if task["tilt"]:
         e_m = got["moment"] / ref["moment"] - 1
     else:
         e_m = (got["moment"] - ref["moment"]) / (task["force"] * task["length"] / 2)
     e_p = got["p_max"] / ref["p_max"] - 1
-    return e_d, e_m, e_p
+    e_t = got["tilt"] / ref["tilt"] - 1 if task["tilt"] is None else 0.0
+    return e_d, e_m, e_p, e_t
 
 
 def run_case(task):
@@ -195,11 +217,12 @@ def run_case(task):
     out = {f"bem_{k}": v for k, v in ref.items()}
     for name, fn in (("rt", runtime_case), ("iso", iso_case)):
         got = fn(task)
-        e_d, e_m, e_p = errors(ref, got, task)
+        e_d, e_m, e_p, e_t = errors(ref, got, task)
         out.update({f"{name}_depth": got["depth"], f"{name}_moment": got["moment"],
                     f"{name}_p_max": got["p_max"], f"{name}_edge": got["edge"],
-                    f"{name}_err_depth": e_d, f"{name}_err_moment": e_m,
-                    f"{name}_err_p_max": e_p})
+                    f"{name}_tilt": got["tilt"], f"{name}_err_depth": e_d,
+                    f"{name}_err_moment": e_m, f"{name}_err_p_max": e_p,
+                    f"{name}_err_tilt": e_t})
         if "seconds" in got:
             out[f"{name}_seconds"] = got["seconds"]
     return out
@@ -231,14 +254,17 @@ def add_arguments(parser):
 
 COLUMNS_UNITS = {
     "roller_length": "m", "profile": "-", "force": "N", "line_load": "N/m", "tilt": "rad",
+    "free_tilt": "-",
     "bem_depth": "m", "bem_delta": "m", "bem_moment": "N m", "bem_p_max": "Pa",
     "bem_x_at_p_max": "m", "bem_contact_length": "m", "bem_end_gap": "m", "bem_edge": "-",
     "bem_stiffness": "N/m", "bem_tilt_stiffness": "N m/rad", "bem_change_depth": "-",
-    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_nx": "-", "bem_ny": "-",
+    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_change_tilt": "-", "bem_nx": "-", "bem_ny": "-",
     "rt_depth": "m", "rt_moment": "N m", "rt_p_max": "Pa", "rt_edge": "-",
-    "rt_err_depth": "-", "rt_err_moment": "-", "rt_err_p_max": "-", "rt_seconds": "s",
+    "rt_err_depth": "-", "rt_err_moment": "-", "rt_err_p_max": "-", "rt_tilt": "rad",
+    "rt_err_tilt": "-", "rt_seconds": "s",
     "iso_depth": "m", "iso_moment": "N m", "iso_p_max": "Pa", "iso_edge": "-",
-    "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-",
+    "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-", "iso_tilt": "rad",
+    "iso_err_tilt": "-",
     "bem_seconds": "s",
 }
 
@@ -247,10 +273,11 @@ def tabulate(tasks, results):
     """Table columns (dict of arrays) from the tasks and their results."""
     rows = []
     for t, r in zip(tasks, results):
-        scale_m = abs(r["bem_moment"]) if t["tilt"] != 0 else t["force"] * t["length"] / 2
+        scale_m = abs(r["bem_moment"]) if t["tilt"] else t["force"] * t["length"] / 2
         rows.append({
             "roller_length": t["length"], "profile": CODES[t["profile"]],
-            "force": t["force"], "line_load": t["force"] / t["length"], "tilt": t["tilt"],
+            "force": t["force"], "line_load": t["force"] / t["length"],
+            "tilt": r["bem_tilt"], "free_tilt": float(t["tilt"] is None),
             **{k: float(r[k]) for k in ("bem_depth", "bem_delta", "bem_moment", "bem_p_max",
                                         "bem_x_at_p_max", "bem_contact_length",
                                         "bem_end_gap", "bem_stiffness",
@@ -259,9 +286,11 @@ def tabulate(tasks, results):
             "bem_change_depth": r["bem_change_depth"] / r["bem_delta"],
             "bem_change_moment": r["bem_change_moment"] / scale_m,
             "bem_change_p_max": r["bem_change_p_max"],
+            "bem_change_tilt": r["bem_change_tilt"] / r["bem_tilt"] if t["tilt"] is None
+            else 0.0,
             **{f"{m}_{k}": float(r[f"{m}_{k}"]) for m in ("rt", "iso")
                for k in ("depth", "moment", "p_max", "edge", "err_depth", "err_moment",
-                         "err_p_max")},
+                         "err_p_max", "tilt", "err_tilt")},
             "rt_seconds": r["rt_seconds"], "bem_seconds": r["bem_seconds"],
         })
     return {k: np.array([row[k] for row in rows], dtype=float) for k in COLUMNS_UNITS}
@@ -270,7 +299,8 @@ def tabulate(tasks, results):
 def summarise(col, tasks, results):
     """The accuracy statements of the header (largest errors by class)."""
     edge = col["bem_edge"] > 0
-    tilted = col["tilt"] != 0
+    free = col["free_tilt"] > 0
+    tilted = (col["tilt"] != 0) & ~free
     s = {}
 
     def mx(a, mask):
@@ -283,6 +313,8 @@ def summarise(col, tasks, results):
         s[f"{m}_off_p"] = mx(col[f"{m}_err_p_max"], ~edge)
         s[f"{m}_edge_d"] = mx(col[f"{m}_err_depth"], edge)
         s[f"{m}_edge_m"] = mx(col[f"{m}_err_moment"], edge & tilted)
+        s[f"{m}_off_t"] = mx(col[f"{m}_err_tilt"], ~edge & free)
+        s[f"{m}_edge_t"] = mx(col[f"{m}_err_tilt"], edge & free)
     s["bem_off_d"] = mx(col["bem_change_depth"], ~edge)
     s["bem_off_m"] = mx(col["bem_change_moment"], ~edge)
     s["bem_off_p"] = mx(col["bem_change_p_max"], ~edge)
@@ -292,7 +324,7 @@ def summarise(col, tasks, results):
     om = np.array([r["bem_order_moment"] for r in results], dtype=float)
     edge_t = np.array([bool(r["bem_edge"]) for r in results])
     s["orders"] = "; ".join(
-        f"{label}: d {_span(od[mask])}, M {_span(om[mask & (col['tilt'] != 0)])}"
+        f"{label}: d {_span(od[mask])}, M {_span(om[mask & tilted])}"
         for label, mask in (("off the ends", ~edge_t), ("edge loaded", edge_t)))
     s["n_off"], s["n_edge"] = int((~edge).sum()), int(edge.sum())
     q = col["line_load"][~edge]
@@ -319,16 +351,23 @@ def figure(col, path):
     from matplotlib.lines import Line2D
 
     edge = col["bem_edge"] > 0
-    tilted = col["tilt"] != 0
+    free = col["free_tilt"] > 0
+    tilted = (col["tilt"] != 0) & ~free
+    # the middle panel: the moment at a given tilt, the tilt itself where it is free
+    col = dict(col)
+    for m in ("rt", "iso"):
+        col[f"{m}_err_mt"] = np.where(free, col[f"{m}_err_tilt"], col[f"{m}_err_moment"])
+    col["bem_change_mt"] = np.where(free, col["bem_change_tilt"], col["bem_change_moment"])
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.8), sharex=True)
     panels = [("err_depth", "change_depth", np.ones_like(edge), "deflection", 1.0),
-              ("err_moment", "change_moment", tilted, "moment (tilted cases)", 1.0),
+              ("err_mt", "change_mt", tilted | free,
+               "moment (given tilt) or tilt (zero moment)", 1.0),
               ("err_p_max", "change_p_max", ~edge, "peak pressure (off the ends)", 5.0)]
-    markers = {1: "o", 2: "s", 3: "^", 4: "D", 5: "v"}
+    markers = {1: "o", 2: "s", 3: "^", 4: "D", 5: "v", 6: "P"}
     models = (("rt", "C0", "runtime (coupled slices)"),
               ("iso", "C1", "ISO/TS 16281 slicing"))
     # spread the cases of one load sideways: profile and tilt
-    shift = np.exp(0.05 * (col["profile"] - 3) + 20 * col["tilt"])
+    shift = np.exp(0.04 * (col["profile"] - 3.5) + 20 * np.abs(col["tilt"]) * ~free)
     x = col["line_load"] / 1e3 * shift
     floor = 1e-4
     for ax, (key, chg, mask, title, target) in zip(axes, panels):
@@ -360,7 +399,7 @@ def figure(col, path):
                 for code, mk in markers.items()]
     handles.append(Line2D([], [], ls="", marker="o", markerfacecolor="none",
                           markeredgecolor="0.3", label="edge loaded (hollow)"))
-    fig.legend(handles=handles, loc="lower center", ncol=5, fontsize=8, frameon=False)
+    fig.legend(handles=handles, loc="lower center", ncol=6, fontsize=8, frameon=False)
     fig.suptitle("Profiled and tilted rollers (D = 10 mm, L = 14 and 30 mm, tilt 0-2 mrad): "
                  "runtime model and ISO slicing against the 3D BEM; dashed: targets "
                  "1 %, 1 %, 5 %", fontsize=10)
@@ -393,13 +432,18 @@ def run(args):
         columns="profile codes: " + ", ".join(f"{k} = {v}" for k, v in PROFILES.items())
                 + "; *_edge = 1 where the contact reaches a roller end (BEM: an end cell "
                   "on either grid); err_depth = (d - d_bem)/delta_bem with delta_bem = "
-                  "max_x (d + theta x - P(x)); err_moment = M/M_bem - 1 (tilt != 0), "
-                  "(M - M_bem)/(F L/2) (tilt = 0); err_p_max = p/p_bem - 1 (a grid-"
+                  "max_x (d + theta x - P(x)); err_moment = M/M_bem - 1 (given tilt "
+                  "!= 0), (M - M_bem)/(F L/2) (tilt 0 or free); free_tilt = 1: the tilt is "
+                  "solved for zero moment (tilt column: the BEM's), err_tilt = "
+                  "theta/theta_bem - 1 there (0 elsewhere); err_p_max = p/p_bem - 1 (a grid-"
                   "dependent singular end peak on edge-loaded rows: not a physical "
                   "number); bem_change_* = BEM change from the coarser to the finer grid "
-                  "(depth over delta, moment over |M| or F L/2)",
-        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: all five "
-              f"profiles, L = 30 mm: iso16281; crown radius {CROWN_RADIUS * 1e3:g} mm; "
+                  "(depth over delta, moment over |M| or F L/2, tilt over the tilt)",
+        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: profiles "
+              f"1-5 at the tilts below and the offset crown (x0 = {CROWN_OFFSET * 1e3:g} "
+              f"mm, zero moment: theta = -x0/Rc) and an asymmetric crown (Rc = "
+              f"{CROWN_RADII_ASYM[0] * 1e3:g} mm for x < 0, {CROWN_RADII_ASYM[1] * 1e3:g} mm "
+              f"for x > 0, a 2001-point user table; zero moment), L = 30 mm: iso16281; crown radius {CROWN_RADIUS * 1e3:g} mm; "
               f"Lundberg and Johns-Gohar designed for F0/L = {DESIGN_LINE_LOAD / 1e3:g} "
               f"N/mm; end relief: {RELIEF['relief_fraction']:g} L at each end, tangent "
               f"corner radius {RELIEF['corner_radius'] * 1e3:g} mm; line loads "
@@ -418,11 +462,14 @@ def run(args):
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "
-                      f"{s['rt_off_p']:.2%}; edge loaded ({s['n_edge']} cases): deflection "
-                      f"{s['rt_edge_d']:.2%}, moment {s['rt_edge_m']:.2%}",
+                      f"{s['rt_off_p']:.2%}, zero-moment tilt {s['rt_off_t']:.2%}; edge "
+                      f"loaded ({s['n_edge']} cases): deflection {s['rt_edge_d']:.2%}, "
+                      f"moment {s['rt_edge_m']:.2%}, tilt {s['rt_edge_t']:.2%}",
         iso_error=f"largest |error| off the ends: deflection {s['iso_off_d']:.2%}, moment "
-                  f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}; edge "
-                  f"loaded: deflection {s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}",
+                  f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}, zero-moment "
+                  f"tilt {s['iso_off_t']:.2%}; edge loaded: deflection "
+                  f"{s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}, tilt "
+                  f"{s['iso_edge_t']:.2%}",
         wall_time=f"{wall:.0f} s for {len(tasks)} cases; median per case: BEM "
                   f"{s['bem_seconds']:.2f} s (both grids), runtime solve "
                   f"{s['rt_seconds'] * 1e3:.2f} ms",

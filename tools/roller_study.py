@@ -3,36 +3,43 @@
 Writes tables/roller_accuracy.csv and docs/figures/roller_accuracy.png
 (``python -m tools.build_tables roller``).
 
-What it computes, per case (a roller, a profile, a force F and a tilt theta):
+What it computes, per case (a roller, a profile, a force F and a tilt theta, or no
+tilt: the roller free to tilt, zero moment):
 
 1. The reference: the 3D boundary-element solution of tools.roller_bem at the force F
-   and the given tilt (Newton on the approach d), on an adapted window with
-   ``n_x`` x ``n_y`` cells and again with twice as many in each direction on the same
-   window (tools.roller_bem.grid_convergence). The reference is the finer grid; the
-   change between the two grids is its stated uncertainty (columns ``bem_change_*``),
-   and the Richardson value (order 2 off the ends, measured for a Hertz field in
-   tests/test_roller_bem.py) is kept beside it. A case is *edge loaded* when the
-   contact reaches a roller end cell on either grid: its peak pressure is then a
-   singular end peak that depends on the grid (reported, never used as a target).
-2. The runtime coupled-slice model of linecontact.roller (``ProfiledRollerModel``) at
-   the same F and theta, and the ISO/TS 16281 slicing method (``iso_slicing``) with its
-   misalignment term; each gives an approach d, a moment M and a peak pressure.
+   and the given tilt (Newton on the approach d; on (d, theta) where the tilt is free),
+   on an adapted window with ``n_x`` x ``n_y`` cells and again with twice as many in
+   each direction on the same window (tools.roller_bem.grid_convergence). The
+   reference is the finer grid; the change between the two grids is its stated
+   resolution (columns ``bem_change_*``); every ``check_every``-th case is also solved
+   on a third grid (4x) and the observed orders go to the header. A case is *edge
+   loaded* when the contact reaches a roller end cell on either grid: its peak
+   pressure is then a singular end peak that depends on the grid (reported, never
+   used as a target).
+2. The runtime coupled-slice model of linecontact.roller (``ProfiledRoller.at_force``,
+   100 slices) at the same F and theta, and the ISO/TS 16281 slicing method
+   (``iso_slicing``, 30 slices) with its misalignment term; each gives an approach d,
+   a moment M, a peak pressure and, where free, the tilt.
 3. Errors against the reference: deflection (d - d_ref)/delta_ref with delta_ref the
    largest approach along the roller, max_x (d + theta x - P(x)) (= d for an untilted
    symmetric profile; the approach at the roller centre alone can be near zero for a
-   tilted crowned roller); moment (M - M_ref)/M_ref where theta != 0 and
-   M/(F L/2) where theta = 0; peak pressure (p - p_ref)/p_ref off the ends.
+   tilted crowned roller); moment M/M_ref - 1 at a given tilt theta != 0 and
+   (M - M_ref)/(F L/2) otherwise; tilt theta/theta_ref - 1 where it is free; peak
+   pressure p/p_ref - 1 (a target only off the ends).
 
-The cases: two steel rollers of diameter D = 10 mm (E* = 115.385 GPa, steel on steel),
+The cases: steel rollers of diameter D = 10 mm (E* = 115.385 GPa, steel on steel).
 L = 14 mm (ISO's L <= 2.5 D branch) with five profiles -- circular crown (Rc = 500 mm),
-ISO/TS 16281 logarithmic, Lundberg's for a design load, Johns-Gohar, straight with
-tangent circular end relief (0.15 L at each end, arc radius 50 mm) -- and L = 30 mm with the ISO profile (its L > 2.5 D branch,
-flat middle); mean line loads F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact
-pressure 0.6-2.9 GPa); tilts 0, 0.5, 1, 2 mrad.
+ISO/TS 16281 logarithmic, Lundberg's and Johns-Gohar's for a design load of 800 N/mm,
+straight with tangent circular end relief (0.15 L at each end, arc radius 50 mm) -- at
+tilts 0, 0.5, 1, 2 mrad; L = 30 mm with the ISO profile (its L > 2.5 D branch, flat
+middle) at the same tilts; and two free-tilt cases on L = 14 mm: a crown offset by
+x0 = 2 mm (exact zero-moment tilt -x0/Rc) and an asymmetric crown (Rc = 500 mm for
+x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
+F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure 0.6-2.9 GPa). 104 cases.
 
-Budget: about 10 minutes on 2 shared cores with the default grids (measured: see the
-table's header line ``wall_time``); each BEM solve is independent, so the study runs
-through tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster).
+Budget: under 10 minutes on 2 shared cores with the default grids (the measured wall
+time is the table's header line ``wall_time``); the cases are independent, so the study
+runs through tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster).
 """
 from __future__ import annotations
 

@@ -59,6 +59,7 @@ __all__ = [
     "read_prony_series",
     "force_history",
     "creep_depth",
+    "step_creep_depth",
 ]
 
 
@@ -544,3 +545,51 @@ def creep_depth(model, material, time, force, *, unloading="raise"):
         d[pos] = model.depth(y[pos] * model.estar)
     _shrinking(t, d, unloading, "the force decreases faster than the material creeps")
     return d
+
+
+def step_creep_depth(model, material, force, time):
+    r"""Depth at time t under a force F applied at t = 0 and held (creep), vectorised.
+
+    .. math:: d(t) = F_1^{-1}\bigl(F\,J^*(t)\bigr)
+
+    the closed form of Lee & Radok's creep integral for a step (any model, exact while
+    the contact grows, which it does under a held force: J* increases).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model; F1 = F/E* of its law, inverted by its d(F).
+    material : object
+        Anything with ``creep(t)`` returning J*(t) [1/Pa], e.g. a :class:`PronySeries`.
+    force : float or array_like
+        Held normal force F > 0 [N].
+    time : float or array_like
+        Time since the load was applied, t >= 0 [s]; broadcasts with force.
+
+    Returns
+    -------
+    float or ndarray
+        d(t) [m].
+
+    Notes
+    -----
+    Valid for t >= 0, F > 0 and while F E*_model J*(t) stays inside the model's force
+    range (at long times the depth is that of the elastic law at E* = E_inf).
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("universal", 5e-3, 10e-3, 1e9)
+    >>> d = step_creep_depth(m, StandardLinearSolid(3e9, 1e9, 10.0), 1e3, [0.0, 30.0])
+    >>> [f"{x * 1e6:.2f} um" for x in d]
+    ['82.58 um', '168.03 um']
+
+    References
+    ----------
+    E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444.
+    """
+    F = check_positive("force", force, "N")
+    t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+    F, t = np.broadcast_arrays(F, t)
+    J = np.asarray(material.creep(t), dtype=float)
+    return out(np.asarray(model.depth(F * J * model.estar), dtype=float))

@@ -26,13 +26,6 @@ Steel on steel, R = 5 mm, L = 10 mm, 1 kN:
 """
 from __future__ import annotations
 
-try:
-    from importlib.metadata import PackageNotFoundError, version as _version
-
-    __version__ = _version("linecontact")
-except PackageNotFoundError:  # a source checkout that was never installed
-    __version__ = "0+unknown"
-
 import importlib as _importlib
 
 # Names re-exported from the submodules, imported on first use (PEP 562), so that
@@ -54,7 +47,23 @@ _LAZY = {
 _ORIGIN = {name: module for module, names in _LAZY.items() for name in names}
 
 
+def _installed_version():
+    """The installed distribution's version, or '0+unknown' in a bare source checkout.
+
+    Read on first access of ``linecontact.__version__`` only: importlib.metadata scans
+    the environment's distributions, which a one-case calculation need not pay for.
+    """
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version("linecontact")
+    except PackageNotFoundError:
+        return "0+unknown"
+
+
 def __getattr__(name):
+    if name == "__version__":
+        value = globals()["__version__"] = _installed_version()
+        return value
     module = _ORIGIN.get(name)
     if module is None:
         raise AttributeError(f"module 'linecontact' has no attribute {name!r}")
@@ -64,7 +73,7 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_ORIGIN))
+    return sorted(set(globals()) | set(_ORIGIN) | {"__version__"})
 
 
 __all__ = [

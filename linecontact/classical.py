@@ -27,8 +27,8 @@ import numpy as np
 
 from .lipopov import (lipopov_depth, lipopov_force, lipopov_profile,
                       lipopov_stiffness, lipopov_stiffness_at_force)
-from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval,
-                       check_positive, document, out)
+from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval, check_positive,
+                       document, out)
 
 __all__ = [
     "effective_modulus",
@@ -63,12 +63,16 @@ __all__ = [
 MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=False,
                             unit="Pa")
 
+#: Poisson's ratio of an isotropic elastic body accepted by Eq. 3: 0 <= nu <= 0.5, the
+#: end 0.5 included (incompressible rubber or elastomer coatings: 1 - nu^2 = 0.75, E*
+#: stays finite).
+
 
 # --------------------------------------------------------------------------------------
 # Eq. 3
 # --------------------------------------------------------------------------------------
 @document(E=MODULUS_OR_RIGID, NU=POISSON_RATIO)
-def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
+def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     r"""Effective (contact) modulus E* of two elastic bodies (Li & Popov 2017, Eq. 3).
 
     .. math::
@@ -83,7 +87,9 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     modulus2 : float or array_like, optional
         Young's modulus E2 of the second body [Pa]; ``inf`` (default) for a rigid body.
     poisson2 : float or array_like, optional
-        Poisson ratio nu2 of the second body [-] (irrelevant when E2 = inf).
+        Poisson ratio nu2 of the second body [-]; required with a finite `modulus2`
+        (as on the command line: an elastic body without its Poisson ratio is refused,
+        not given a default), ignored for a rigid one.
 
     Returns
     -------
@@ -93,12 +99,13 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     Raises
     ------
     OutOfRangeError
-        A modulus outside its range, a Poisson ratio outside its range, or both bodies
-        rigid.
+        A modulus outside its range, a Poisson ratio outside its range, a finite
+        `modulus2` without `poisson2`, or both bodies rigid.
 
     Notes
     -----
     Valid for %(E)s (``inf`` = rigid) and %(NU)s for each body, not both rigid.
+    nu = 0.5 (incompressible) is allowed: E* = 4 E / 3 for rubber on a rigid body.
 
     Examples
     --------
@@ -111,10 +118,29 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
 
     >>> f"{effective_modulus(210e9, 0.3) / 1e9:.2f} GPa"
     '230.77 GPa'
+
+    Rubber (E = 5 MPa, nu = 0.5) on a rigid cylinder:
+
+    >>> f"{effective_modulus(5e6, 0.5) / 1e6:.3f} MPa"
+    '6.667 MPa'
+
+    A second modulus needs its Poisson ratio:
+
+    >>> effective_modulus(210e9, 0.3, 70e9)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: poisson2 = 'missing' is outside the valid range [0, 0.5]; ...
     """
     E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
     E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
     nu1 = POISSON_RATIO.check(poisson1, name="poisson1")
+    if poisson2 is None:
+        if np.any(np.isfinite(E2)):
+            raise OutOfRangeError(
+                "poisson2", "missing", str(POISSON_RATIO),
+                hint="modulus2 is given (an elastic second body), so its Poisson ratio "
+                     "is needed too; leave modulus2 out for a rigid second body")
+        poisson2 = 0.0   # rigid second body: its Poisson ratio does not enter Eq. 3
     nu2 = POISSON_RATIO.check(poisson2, name="poisson2")
     both = np.isinf(E1) & np.isinf(E2)
     if np.any(both):

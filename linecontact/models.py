@@ -26,8 +26,8 @@ Keys
 ``"palmgren"``, ``"iso16281"``
     Steel-only empirical formulas (per contact).
 ``"universal"``
-    The BEM-tabulated universal curve, registered by :mod:`linecontact.universal`
-    (imported lazily when asked for); the default model, :data:`DEFAULT_MODEL`.
+    The BEM-tabulated universal curve (:mod:`linecontact.universal` holds the curve,
+    ``tables/universal_curve.csv`` its data); the default model, :data:`DEFAULT_MODEL`.
 
 Examples
 --------
@@ -40,10 +40,7 @@ Examples
 from __future__ import annotations
 
 import abc
-import importlib
-import importlib.util
 import math
-import warnings
 
 import numpy as np
 
@@ -51,8 +48,9 @@ from . import classical as _c
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import TableError, available_tables
-from .validity import OutOfRangeError, check_positive, out
+from .tables import available_tables
+from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
+from .validity import OutOfRangeError, check_interval, check_positive, document, out
 
 __all__ = [
     "ContactModel",
@@ -68,6 +66,7 @@ __all__ = [
     "KunzModel",
     "PalmgrenModel",
     "ISO16281Model",
+    "UniversalModel",
 ]
 
 #: Registry: key -> model class. Filled by :func:`register`.
@@ -75,8 +74,6 @@ MODELS: dict = {}
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
-
-_PLUGINS = ("linecontact.universal",)
 
 
 def register(cls):
@@ -177,6 +174,70 @@ class ContactModel(abc.ABC):
         """Equivalent MDR profile g(x) [m] at x >= 0 [m]."""
         raise NotImplementedError(f"{self.label} has no MDR profile "
                                   "(an empirical force-depth law)")
+
+    def evaluate(self, *, force=None, depth=None):
+        """The contact state at given forces OR depths, in one vectorised call.
+
+        With `force` F: d = depth(F), k = stiffness_at_force(F); with `depth` d:
+        F = force(d), k = stiffness(d). Both: the MDR contact half-length
+        a = k / (2 E*) (docs/theory.md, section 'MDR'; Li & Popov (2017), Eq. 5-6:
+        the MDR spring bed of modulus E* over |x| <= a has stiffness 2 E* a).
+        Each model's own law is called once per quantity, so a model whose
+        stiffness is a function of force (Johnson, Eq. 4) is not evaluated through
+        a force -> depth -> force round trip.
+
+        Parameters
+        ----------
+        force : array_like, optional
+            Normal force F > 0 [N] (or a pint Quantity of force).
+        depth : array_like, optional
+            Indentation depth d > 0 [m] (or a pint Quantity of length).
+
+        Returns
+        -------
+        dict
+            ``force`` [N], ``depth`` [m], ``stiffness`` [N/m], ``contact_radius`` [m]:
+            float arrays of the input's shape (floats for a scalar input).
+
+        Raises
+        ------
+        TypeError
+            Neither or both of `force` and `depth` given.
+        OutOfRangeError
+            An input outside the model's range (the first offending element named).
+
+        Notes
+        -----
+        Valid wherever the model's force/depth/stiffness are (see the subclass): it
+        adds no approximation.
+
+        Examples
+        --------
+        >>> m = get_model("johnson", 5e-3, 10e-3, 115.38e9)
+        >>> r = m.evaluate(force=[500.0, 1000.0])
+        >>> [f"{d * 1e6:.3f}" for d in r["depth"]]
+        ['1.501', '2.812']
+        >>> bool(r["stiffness"][1] == m.stiffness_at_force(1000.0))
+        True
+
+        References
+        ----------
+        Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
+        Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+        """
+        if (force is None) == (depth is None):
+            raise TypeError("evaluate() takes exactly one of force= or depth=")
+        if force is not None:
+            F = check_positive("force", force, "N")
+            d = np.asarray(self.depth(F), dtype=float)
+            k = np.asarray(self.stiffness_at_force(F), dtype=float)
+        else:
+            d = check_positive("depth", depth, "m")
+            F = np.asarray(self.force(d), dtype=float)
+            k = np.asarray(self.stiffness(d), dtype=float)
+        a = k / (2 * self.estar)
+        return {"force": out(F), "depth": out(d),
+                "stiffness": out(k), "contact_radius": out(a)}
 
 
 # --------------------------------------------------------------------------------------
@@ -464,23 +525,165 @@ class ISO16281Model(_SteelModel):
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
-# --------------------------------------------------------------------------------------
-def _load_plugins():
-    """Import optional model modules (linecontact.universal) if they exist."""
-    for name in _PLUGINS:
-        if importlib.util.find_spec(name) is not None:
-            importlib.import_module(name)
+@register
+@document(DR=DEPTH_OVER_RADIUS)
+class UniversalModel(ContactModel):
+    r"""The BEM universal curve for one cylinder (the default model).
 
+    .. math::
 
-def available_models():
-    """Registered model keys (after importing optional model modules), sorted.
+        F = \frac{E^* L^3}{R}\Psi\!\left(\frac{dR}{L^2}\right),\quad
+        k = E^* L\,\Psi'\!\left(\frac{dR}{L^2}\right),\quad
+        a = \frac{k}{2E^*},\quad g(x) = \frac{L^2}{R}\Phi\!\left(\frac{x}{L}\right)
+
+    Parameters
+    ----------
+    radius : float
+        Cylinder radius R [m].
+    length : float
+        Cylinder length L [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3) [Pa].
+    table : str, optional
+        Name of the table in tables/ (default ``"universal_curve"``); a missing table
+        raises FileNotFoundError naming the file.
+    extrapolate : bool, optional
+        Accept depths beyond %(DR)s, up to the table's end (default False).
+
+    Notes
+    -----
+    The curve :math:`\Psi` and its inverses are :class:`linecontact.universal.UniversalCurve`
+    (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
+    Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
+    table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
+    range over which the accuracy study compared the models, within which the parabolic
+    gap y^2/(2R) stands in for the circle (it needs d << R). Beyond it a depth is
+    refused unless ``extrapolate=True``. Below the table's smallest depth the
+    small-depth asymptote continues the curve (see the module docstring). Accuracy: the
+    table header's ``accuracy`` line (BEM discretisation) plus the parabolic
+    approximation.
 
     Examples
     --------
-    >>> {"li-popov", "johnson", "palmgren"} <= set(available_models())
+    Steel on steel (E* = 115.4 GPa), R = 5 mm, L = 10 mm, F = 1 kN (a value of the
+    shipped table; the Li-Popov form gives 3.055 um with Table 1, 3.147 um with Eq. 11,
+    Eq. 2 gives 3.363 um):
+
+    >>> m = UniversalModel(5e-3, 10e-3, 115.38e9)
+    >>> f"{m.depth(1e3) * 1e6:.3f} um", f"{m.stiffness_at_force(1e3) / 1e6:.1f} N/um"
+    ('3.154 um', '347.9 N/um')
+    >>> bool(abs(m.force(m.depth(1e3)) / 1e3 - 1) < 1e-12)
+    True
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
+    Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+    """
+
+    key = "universal"
+    label = "Universal curve (BEM)"
+
+    def __init__(self, radius, length, estar, table=_UNIVERSAL_TABLE, extrapolate=False):
+        super().__init__(radius, length, estar)
+        self.table_name = table
+        self.extrapolate = bool(extrapolate)
+        self.curve = universal_curve(table)
+
+    @property
+    def provenance(self):
+        meta = dict(self.curve.table.meta)
+        meta["model"] = self.label
+        meta["table"] = str(self.curve.table.path.name)
+        return meta
+
+    # scales
+    @property
+    def _dscale(self):
+        return self.length ** 2 / self.radius
+
+    @property
+    def _fscale(self):
+        return self.estar * self.length ** 3 / self.radius
+
+    @property
+    def _radius_limited(self):
+        """True when d <= 0.15 R, not the table's end, bounds the depth."""
+        return (not self.extrapolate
+                and DEPTH_OVER_RADIUS.high * self.radius < self.curve.d_max * self._dscale)
+
+    @property
+    def depth_limit(self):
+        """Largest accepted depth [m]: the table's end d~_max L^2/R, and (unless
+        ``extrapolate``) 0.15 R."""
+        if self._radius_limited:
+            return DEPTH_OVER_RADIUS.high * self.radius
+        return self.curve.d_max * self._dscale
+
+    @property
+    def force_limit(self):
+        """Force at :attr:`depth_limit` [N]."""
+        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
+
+    def _limit_hint(self):
+        if self._radius_limited:
+            return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
+                    "in for the circle only for d << R (extrapolate=True accepts depths up "
+                    f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
+        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+
+    def _dt(self, depth):
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
+                           hint=self._limit_hint())
+        return d / self._dscale
+
+    def _psi_of_force(self, force):
+        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
+                           hint=self._limit_hint())
+        # F <= force_limit was checked; F/scale may still round above psi_max at the end
+        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
+
+    def force(self, depth):
+        """F(d) [N]; depth [m]."""
+        return out(self.curve.psi(self._dt(depth)) * self._fscale)
+
+    def depth(self, force):
+        """d(F) [m]; force [N]."""
+        d = self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale
+        return out(np.minimum(d, self.depth_limit))   # rounding at the closed end only
+
+    def stiffness(self, depth):
+        """k(d) = dF/dd [N/m]; depth [m]."""
+        return out(self.curve.dpsi(self._dt(depth)) * self.estar * self.length)
+
+    def profile(self, x):
+        """MDR profile g(x) [m] for 0 <= x <= the MDR radius at the table's end [m]."""
+        xv = np.asarray(x, dtype=float)
+        if np.any(~np.isfinite(xv)) or np.any(xv < 0):
+            bad = float(xv[~(np.isfinite(xv) & (xv >= 0))].flat[0]) if xv.ndim else float(xv)
+            raise OutOfRangeError("x", bad, "[0, inf) m", unit="m")
+        try:
+            return out(self.curve.depth_of_x(xv / self.length) * self._dscale)
+        except OutOfRangeError as exc:
+            raise OutOfRangeError("x", float(exc.value) * self.length,
+                                  f"[0, {self.curve.x_max * self.length:.6g}] m", unit="m",
+                                  hint=exc.hint) from None
+
+
+# --------------------------------------------------------------------------------------
+def available_models():
+    """Registered model keys, sorted.
+
+    Returns
+    -------
+    list of str
+        The keys of :data:`MODELS` [-].
+
+    Examples
+    --------
+    >>> {"universal", "li-popov", "johnson", "palmgren"} <= set(available_models())
     True
     """
-    _load_plugins()
     return sorted(MODELS)
 
 
@@ -490,8 +693,7 @@ def get_model(key, radius, length, estar, **options):
     Parameters
     ----------
     key : str
-        Registry key (see :data:`MODELS`); ``"universal"`` imports
-        :mod:`linecontact.universal` on first use.
+        Registry key (see :data:`MODELS`) [-].
     radius, length : float
         R, L [m].
     estar : float
@@ -507,6 +709,8 @@ def get_model(key, radius, length, estar, **options):
     ------
     OutOfRangeError
         Unknown key (the message lists the valid ones) or bad R, L, E*.
+    FileNotFoundError
+        The model's table is missing (the message names the file).
 
     Examples
     --------
@@ -518,28 +722,35 @@ def get_model(key, radius, length, estar, **options):
     linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
     """
     if key not in MODELS:
-        _load_plugins()
-    if key not in MODELS:
-        hint = ""
-        if key == DEFAULT_MODEL:
-            hint = ("the universal model comes from linecontact/universal.py and its "
-                    "BEM table; neither is available in this installation")
         raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in sorted(MODELS)), hint=hint)
+                              + ", ".join(repr(k) for k in sorted(MODELS)))
     return MODELS[key](radius, length, estar, **options)
 
 
 def standard_models(radius, length, estar):
     """The CLI's row set for one cylinder, in display order.
 
-    Universal (only if :mod:`linecontact.universal` is importable and its table
-    exists), Li-Popov Table 1 spline, Li-Popov Eq. 11, Li-Popov regenerated (only if
-    ``tables/lipopov_regenerated.csv`` exists), Puttock-Thwaite, Johnson c = 1, 0.72,
-    0.572, Kunz, Palmgren, ISO/TS 16281.
+    Universal curve (the best estimate, :data:`DEFAULT_MODEL`), Li-Popov Table 1 spline,
+    Li-Popov Eq. 11, Li-Popov regenerated (only if ``tables/lipopov_regenerated.csv``
+    exists: an optional coefficient set), Puttock-Thwaite, Johnson c = 1, 0.72, 0.572,
+    Kunz, Palmgren, ISO/TS 16281.
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise
     :class:`~linecontact.validity.OutOfRangeError`, which the caller reports per row.
+    A missing universal table is an error (FileNotFoundError naming the file), never a
+    silently shorter row set.
+
+    Parameters
+    ----------
+    radius, length : float
+        R, L [m].
+    estar : float
+        E* [Pa].
+
+    Returns
+    -------
+    list of ContactModel
 
     Examples
     --------
@@ -550,12 +761,9 @@ def standard_models(radius, length, estar):
     R = _scalar("radius", radius, "m")
     L = _scalar("length", length, "m")
     E = _scalar("estar", estar, "Pa")
-    rows = []
-    universal = _universal(R, L, E)
-    if universal is not None:
-        rows.append(universal)
-    rows.append(LiPopovModel(R, L, E, coefficients="published"))
-    rows.append(LiPopovModel(R, L, E, coefficients="eq11"))
+    rows = [UniversalModel(R, L, E),
+            LiPopovModel(R, L, E, coefficients="published"),
+            LiPopovModel(R, L, E, coefficients="eq11")]
     if "lipopov_regenerated" in available_tables("lipopov_"):
         rows.append(LiPopovModel(R, L, E, coefficients="regenerated"))
     rows.append(PuttockThwaiteModel(R, L, E))
@@ -564,23 +772,3 @@ def standard_models(radius, length, estar):
     rows.append(PalmgrenModel(R, L, E))
     rows.append(ISO16281Model(R, L, E))
     return rows
-
-
-def _universal(R, L, E):
-    """The universal model, or None (with a warning if it exists but fails)."""
-    try:
-        _load_plugins()
-    except Exception as exc:  # a broken optional module must not take the CLI down
-        warnings.warn(f"linecontact.universal could not be imported: {exc!r}",
-                      RuntimeWarning, stacklevel=3)
-        return None
-    cls = MODELS.get(DEFAULT_MODEL)
-    if cls is None:
-        return None
-    available = getattr(cls, "available", None)
-    if callable(available) and not available():
-        return None
-    try:
-        return cls(R, L, E)
-    except (FileNotFoundError, TableError):
-        return None

@@ -5,7 +5,8 @@ summary table of tables/README.md. Run from the repository root::
 
     python -m tools.accuracy            # about a minute
 
-Reference: the BEM. The universal curve *is* the BEM (exact scaling, SPEC section 5;
+Reference: the BEM. The universal curve *is* the BEM (exact scaling, docs/theory.md, section
+'Self-similarity';
 table accuracy in its header), so the other models are compared with it on a dense
 grid of L/R (0.1 ... 20) and d/R (1e-6 ... 0.15). The universal model itself is compared
 with independent BEM solutions (tools.cylinder.solve_depth, the table's own grids and
@@ -31,7 +32,7 @@ import numpy as np
 from linecontact.models import get_model
 from tools.build_tables import code_version
 from linecontact.tables import available_tables, write_table
-from linecontact.universal import UniversalModel
+from linecontact.models import UniversalModel
 from linecontact.validity import OutOfRangeError
 
 REPO = Path(__file__).resolve().parent.parent

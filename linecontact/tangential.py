@@ -78,6 +78,7 @@ __all__ = [
     "gross_slip_shift",
     "tangential_stiffness",
     "tangential_force",
+    "tangential_shift",
     "TangentialContact",
     "CylinderTangentialTable",
     "cylinder_tangential_table",
@@ -489,6 +490,77 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     d = check_positive("depth", depth, "m")
     r = _ratio(gstar, model.estar)
     return out(_ft(model, d, shift, _friction(friction), r, beyond))
+
+
+def tangential_shift(model, depth, tangential_force, friction, gstar, *, ratio=None):
+    r"""Shift u(F_t) of the Cattaneo-Mindlin law of any model at constant normal depth.
+
+    .. math::
+        u = \frac{\mu}{r}\left[d - d\!\left(F(d) - \frac{|F_t|}{\mu}\right)\right]
+            \operatorname{sign} F_t, \qquad r = \frac{G^*}{E^*}
+
+    the inverse of :func:`tangential_force` through the model's d(F); u* = mu d/r at
+    |F_t| = mu F(d).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model.
+    depth : float or array_like
+        Normal depth d [m].
+    tangential_force : float or array_like
+        Tangential force F_t, |F_t| <= mu F(d) [N]; broadcasts with depth.
+    friction : float or array_like
+        Coulomb friction coefficient mu [-].
+    gstar : float
+        Effective shear modulus G* [Pa].
+    ratio : float or array_like, optional
+        Stiffness ratio k_t/k_n to use instead of G*/E* (e.g. the cylinder's BEM
+        value in one direction, :func:`cylinder_stiffness_ratios`) [-].
+
+    Returns
+    -------
+    float or ndarray
+        u [m].
+
+    Raises
+    ------
+    OutOfRangeError
+        |F_t| > mu F(d): no static equilibrium, the contact slides (gross slip).
+
+    Notes
+    -----
+    Valid for |F_t| <= mu F(d), mu > 0, 2/3 <= G*/E* <= 1 and the model's depth range.
+    Exact for axisymmetric contacts and for any shape at nu = 0.
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, 1e11)
+    >>> u = tangential_shift(m, 1e-6, 0.25 * 0.2 * m.force(1e-6), 0.2, 1e11)
+    >>> f"{u * 1e9:.1f} nm"
+    '50.0 nm'
+
+    References
+    ----------
+    R. D. Mindlin (1949); Popov & Hess (2015), chapter 4.
+    """
+    d = check_positive("depth", depth, "m")
+    mu = _friction(friction)
+    r = _ratio(gstar, model.estar) if ratio is None else check_positive("ratio", ratio)
+    Ft = np.asarray(tangential_force, dtype=float)
+    d, Ft, mu, r = np.broadcast_arrays(d, Ft, mu, r)
+    F = _law(model, d)
+    fmax = mu * F
+    check_interval("tangential_force", np.abs(Ft), 0.0, fmax * (1 + 1e-12), unit="N",
+                   hint="more than mu F: the contact slides (gross slip), no static "
+                        "equilibrium")
+    rest = F - np.minimum(np.abs(Ft), fmax) / mu
+    z = np.zeros(rest.shape)
+    pos = rest > F * 1e-15
+    if np.any(pos):
+        z[pos] = model.depth(rest[pos])
+    return out(np.sign(Ft) * mu * (d - np.minimum(z, d)) / r)
 
 
 def _check_beyond(beyond):

@@ -1031,6 +1031,17 @@ class CylinderTangentialTable:
         nu = np.asarray(nu, dtype=float)
         return out(c * 2 * (1 - nu) / (2 - nu))
 
+    def value(self, column, nu, d_tilde):
+        """Any column of the table [its unit] interpolated at (nu, d~) (e.g. the study's
+        measured partial-slip error ``ft_err_scaled_across``)."""
+        if column not in self._grid:
+            raise OutOfRangeError("column", column, "one of " + ", ".join(self._grid))
+        v = self._interp(column, nu, d_tilde)
+        if column.startswith("kt_kn_"):
+            nu = np.asarray(nu, dtype=float)
+            v = v * 2 * (1 - nu) / (2 - nu)
+        return out(v)
+
     @property
     def has_slip_correction(self):
         """True if the table carries a partial-slip correction (both directions)."""
@@ -1118,7 +1129,10 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
     -------
     dict
         ``across``, ``along``, ``mdr`` (k_t/k_n [-]), ``mdr_error_across``,
-        ``mdr_error_along`` (MDR/BEM - 1 [-]), ``nu`` and ``d_tilde`` [-].
+        ``mdr_error_along`` (MDR/BEM - 1 [-]), ``nu`` and ``d_tilde`` [-]; if the table
+        has the study's columns ``ft_err_scaled_{across,along}``, also
+        ``slip_error_across``, ``slip_error_along``: the largest difference between
+        the BEM's partial-slip curve and the law with this ratio, over mu F [-].
 
     Notes
     -----
@@ -1162,7 +1176,12 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
     across = table.ratio("across", nu, d_tilde)
     along = table.ratio("along", nu, d_tilde)
     mdr = mdr_stiffness_ratio(nu)
-    return {"across": across, "along": along, "mdr": out(np.broadcast_to(mdr, np.shape(d))),
-            "mdr_error_across": out(mdr / np.asarray(across) - 1),
-            "mdr_error_along": out(mdr / np.asarray(along) - 1),
-            "nu": nu, "d_tilde": out(d_tilde)}
+    res = {"across": across, "along": along, "mdr": out(np.broadcast_to(mdr, np.shape(d))),
+           "mdr_error_across": out(mdr / np.asarray(across) - 1),
+           "mdr_error_along": out(mdr / np.asarray(along) - 1),
+           "nu": nu, "d_tilde": out(d_tilde)}
+    for side in _DIRECTIONS:   # the study's measured error of the partial-slip law
+        column = f"ft_err_scaled_{side}"
+        if column in table._grid:
+            res[f"slip_error_{side}"] = table.value(column, nu, d_tilde)
+    return res

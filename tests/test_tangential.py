@@ -349,6 +349,19 @@ def test_bem_method_uses_the_table_ratio_and_reports_the_mdr_error(tmp_path):
             shear_ratio(E, NU) / r[direction] - 1, rel=1e-12, abs=0)
     with pytest.raises(OutOfRangeError, match="model"):
         cylinder_stiffness_ratios(HertzSphere(R, R, ESTAR), d, GSTAR, table=t)
+    assert "slip_error_across" not in r
+
+
+def test_measured_slip_error_is_reported_when_the_table_has_it(tmp_path):
+    """Columns ft_err_scaled_{across,along} (the study's measured partial-slip error)
+    come back interpolated; a constant column is reproduced exactly (rtol 1e-12)."""
+    t, _ = _write(tmp_path, {"ft_err_scaled_across": 0.012, "ft_err_scaled_along": 0.007})
+    m = standard_models(5e-3, 10e-3, ESTAR)[0]
+    r = cylinder_stiffness_ratios(m, 2e-6, GSTAR, table=t)
+    assert r["slip_error_across"] == pytest.approx(0.012, rel=1e-12, abs=0)
+    assert r["slip_error_along"] == pytest.approx(0.007, rel=1e-12, abs=0)
+    with pytest.raises(OutOfRangeError, match="column"):
+        t.value("no_such_column", 0.3, 1e-4)
 
 
 def test_optional_slip_correction_scales_the_shift(tmp_path):

@@ -114,7 +114,7 @@ def shear_modulus(modulus, poisson):
     Parameters
     ----------
     modulus : float or array_like
-        Young's modulus E [Pa]; ``inf`` for a rigid body.
+        Young's modulus E, ``inf`` for a rigid body [Pa].
     poisson : float or array_like
         Poisson ratio nu [-].
 
@@ -156,9 +156,9 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     poisson1 : float or array_like
         Poisson ratio nu1 of the first body [-].
     modulus2 : float or array_like, optional
-        Young's modulus E2 of the second body [Pa]; ``inf`` (default) for a rigid body.
+        Young's modulus E2 of the second body, ``inf`` (default) for a rigid body [Pa].
     poisson2 : float or array_like, optional
-        Poisson ratio nu2 of the second body [-] (irrelevant when E2 = inf).
+        Poisson ratio nu2 of the second body (irrelevant when E2 = inf) [-].
 
     Returns
     -------
@@ -206,7 +206,7 @@ def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     Parameters
     ----------
     modulus1, modulus2 : float or array_like
-        Young's moduli [Pa]; ``inf`` for a rigid body (not both).
+        Young's moduli, ``inf`` for a rigid body (not both) [Pa].
     poisson1, poisson2 : float or array_like
         Poisson ratios in [0, 0.5] [-].
 
@@ -289,7 +289,7 @@ def mdr_stiffness_ratio(poisson):
     Parameters
     ----------
     poisson : float or array_like
-        Poisson ratio nu [-] (or :func:`equivalent_poisson` of two bodies).
+        Poisson ratio nu (or :func:`equivalent_poisson` of two bodies) [-].
 
     Returns
     -------
@@ -452,9 +452,9 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     model : linecontact.models.ContactModel
         Any normal-contact model F(d).
     depth : float or array_like
-        Normal depth d [m] (held constant while shifting).
+        Normal depth d, held constant while shifting [m].
     shift : float or array_like
-        Monotonic tangential shift u from the unloaded state [m]; broadcasts with depth.
+        Monotonic tangential shift u from the unloaded state; broadcasts with depth [m].
     friction : float
         Coulomb friction coefficient mu [-].
     gstar : float
@@ -509,7 +509,7 @@ def tangential_shift(model, depth, tangential_force, friction, gstar, *, ratio=N
     depth : float or array_like
         Normal depth d [m].
     tangential_force : float or array_like
-        Tangential force F_t, |F_t| <= mu F(d) [N]; broadcasts with depth.
+        Tangential force F_t, |F_t| <= mu F(d); broadcasts with depth [N].
     friction : float or array_like
         Coulomb friction coefficient mu [-].
     gstar : float
@@ -618,9 +618,9 @@ class TangentialContact:
     gstar : float
         Effective shear modulus G* (:func:`effective_shear_modulus`) [Pa].
     depth : float, optional
-        Normal depth d [m] (give depth or force).
+        Normal depth d (give depth or force) [m].
     force : float, optional
-        Normal force F [N]; the depth is the model's d(F).
+        Normal force F; the depth is the model's d(F) [N].
     method : {"mdr", "bem"}, optional
         ``"mdr"`` (default): r = G*/E*. ``"bem"``: r = the cylinder's k_t/k_n in
         `direction` from the BEM table (straight-cylinder models only), and the
@@ -1063,7 +1063,11 @@ def _cached_table(name):
 
 
 def cylinder_tangential_table(name=TANGENTIAL_TABLE, directory=None):
-    """The :class:`CylinderTangentialTable` of ``tables/<name>.csv`` (cached).
+    r"""The :class:`CylinderTangentialTable` of ``tables/<name>.csv`` (cached).
+
+    .. math:: \frac{k_t}{k_n} = c(\nu, \ln\tilde d)\,\frac{2(1-\nu)}{2-\nu}
+
+    with c the table's correction factor of the MDR, interpolated.
 
     Parameters
     ----------

@@ -257,7 +257,9 @@ def _one(v, name):
 
 
 def read_prony_series(path, long_term=None):
-    """Read a Prony series from a CSV file with columns ``tau_s`` and ``E_Pa``.
+    r"""Read a Prony series from a CSV file with columns ``tau_s`` and ``E_Pa``.
+
+    .. math:: E(t) = E_\infty + \sum_i E_i\,e^{-t/\tau_i}
 
     File format: optional ``# key: value`` comment lines (among them, optionally,
     ``# E_inf: VALUE`` in Pa), then a header row naming the columns ``tau_s`` and
@@ -268,8 +270,8 @@ def read_prony_series(path, long_term=None):
     path : path-like
         The CSV file.
     long_term : float, optional
-        Long-term modulus E_inf [Pa]; needed if the file has no ``# E_inf:`` line
-        (if both are given they must agree to 1e-12).
+        Long-term modulus E_inf, needed if the file has no ``# E_inf:`` line (if
+        both are given they must agree to 1e-12) [Pa].
 
     Returns
     -------
@@ -440,10 +442,10 @@ def force_history(model, material, time, depth, *, unloading="raise"):
     material : PronySeries
         Relaxation function E*(t) (:class:`StandardLinearSolid` or a Prony series).
     time : array_like
-        Sample times t_0 <= t_1 <= ... [s]; the depth is 0 before t_0.
+        Sample times t_0 <= t_1 <= ...; the depth is 0 before t_0 [s].
     depth : array_like
-        Depth d at those times [m] (same length; a single value = held constant from
-        t_0, a step).
+        Depth d at those times (same length; a single value = held constant from
+        t_0, a step) [m].
     unloading : {"raise", "warn"}, optional
         A decreasing depth (shrinking contact) is refused (default) or continued by
         the Lee-Radok integral with a :class:`RuntimeWarning` (then not exact).
@@ -498,10 +500,10 @@ def creep_depth(model, material, time, force, *, unloading="raise"):
     material : PronySeries
         The material; its creep function J*(t) is used.
     time : array_like
-        Sample times t_0 <= t_1 <= ... [s]; the force is 0 before t_0.
+        Sample times t_0 <= t_1 <= ...; the force is 0 before t_0 [s].
     force : float or array_like
-        Normal force F [N]: one value (applied at t_0 and held: creep) or one per
-        sample (piecewise linear between samples).
+        Normal force F: one value (applied at t_0 and held: creep) or one per
+        sample (piecewise linear between samples) [N].
     unloading : {"raise", "warn"}, optional
         A decreasing depth (when the force drops faster than the material creeps) is
         refused (default) or continued by Lee-Radok with a :class:`RuntimeWarning`.
@@ -564,7 +566,7 @@ def step_creep_depth(model, material, force, time):
     force : float or array_like
         Held normal force F > 0 [N].
     time : float or array_like
-        Time since the load was applied, t >= 0 [s]; broadcasts with force.
+        Time since the load was applied, t >= 0; broadcasts with force [s].
 
     Returns
     -------

@@ -290,7 +290,7 @@ def read_prony_series(path, long_term=None):
     Examples
     --------
     >>> import os, tempfile
-    >>> text = "# material: test\\n# E_inf: 1e9\\ntau_s,E_Pa\\n0.1,2e9\\n10,1e9\\n"
+    >>> text = "# material: test\n# E_inf: 1e9\ntau_s,E_Pa\n0.1,2e9\n10,1e9\n"
     >>> with tempfile.TemporaryDirectory() as d:
     ...     p = os.path.join(d, "prony.csv")
     ...     _ = open(p, "w").write(text)

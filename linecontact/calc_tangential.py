@@ -11,8 +11,8 @@ and "viscoelastic second body"):
     the table is not installed or the case is outside it). G* needs the moduli and
     Poisson's ratios (not ``--estar``).
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
-    The tangential shift u of the Cattaneo-Mindlin law at constant normal force
-    (:func:`linecontact.tangential.tangential_shift`) with the MDR's G*/E* and with the
+    The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
+    depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's G*/E* and with the
     BEM's ratio in each direction, Q/(mu F), and the slip state in the flags: partial
     slip for Q < mu F, gross slip (no static solution: u is "-") for Q > mu F.
 ``--instantaneous-modulus E0 --long-term-modulus EINF --relaxation-time TAU``, or
@@ -128,9 +128,6 @@ def resolve(v, P, raw, fail, label, n):
          f"{label('estar')}", "G* unknown", lambda i: raw["friction"][i])
     fail(P["tangential_load"] & ~P["friction"], "tangential_load",
          f"with {label('friction')}", "no friction coefficient given",
-         lambda i: raw["tangential_load"][i])
-    fail(P["tangential_load"] & ~P["load"], "tangential_load",
-         f"with {label('load')} (constant normal force)", "no normal force given",
          lambda i: raw["tangential_load"][i])
 
     E0 = np.full(n, np.nan)

@@ -279,7 +279,9 @@ def add_fields(fields, flags, g, model, r, cases, present):
                             cases["friction"][rows3[good]], gs[good], ratio=ratio[good])
     materials = cases.get("material")
     if materials is not None:
-        vis = np.array([materials[i] is not None for i in g], bool) & ok
+        # creep under a held force (with a given depth the force would relax instead)
+        vis = (np.array([materials[i] is not None for i in g], bool) & ok
+               & (cases["given"][g] == "load"))
         for j in np.flatnonzero(vis):
             i = g[j]
             mat = _Material(materials[i], cases["poisson"][i],

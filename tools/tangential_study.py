@@ -22,7 +22,8 @@ Per depth d~ (one task of tools.runner.run_study, L = R = E* = 1):
    Love's kernel (k_n) and Cerruti's (k_t, across = shift along y, the rolling
    direction; along = shift along x, the axis) for every nu. The table's
    kt_kn_across/along are the 2N values; the N values and the change are kept.
-2. Partial slip with Coulomb friction on the N grid, shift across and along, for
+2. Partial slip with Coulomb friction on a coarser grid (``--slip-n-length``,
+   ``--slip-n-width``: BEM and laws are compared on the same grid), across and along, for
    every nu: the BEM curve F_t(u) (monotonic, from the virgin state, ``--slip-points``
    steps up to past gross slip) against two laws that need only F(d') (from normal
    solutions on the same grid, d' = d (j/J)):
@@ -70,6 +71,13 @@ def add_arguments(parser):
                              "(default 256; 2N is also solved)")
     parser.add_argument("--n-width", type=int, default=32,
                         help="cells across the contact half-width on N (default 32)")
+    parser.add_argument("--slip-n-length", type=int, default=128,
+                        help="cells along the half-length for the partial-slip curves "
+                             "(default 128; their errors are differences between BEM "
+                             "and law on the same grid)")
+    parser.add_argument("--slip-n-width", type=int, default=16,
+                        help="cells across the contact half-width for partial slip "
+                             "(default 16)")
     parser.add_argument("--slip-points", type=int, default=24,
                         help="shift steps of each partial-slip curve (default 24)")
     parser.add_argument("--slip-depths", type=int, default=32,
@@ -144,7 +152,9 @@ def solve_task(task):
                            task["n_width"], task["tol"])
     coarse = cylinder_full_stick(d, nus, nl, nw, tol=tol)
     fine = cylinder_full_stick(d, nus, 2 * nl, 2 * nw, tol=tol)
-    normal = coarse.normal
+    kappa = cylinder_full_stick(d, nus, task["slip_n_length"], task["slip_n_width"],
+                                tol=tol)
+    normal = kappa.normal
     J = task["slip_depths"]
     dprime = d * np.arange(J, 0, -1) / J                      # deepest first: warm starts
     Fd = normal_force_on_grid(normal.grid, dprime, tol=tol, workers=1)
@@ -157,9 +167,9 @@ def solve_task(task):
                grid_N=normal.grid.describe(), grid_2N=fine.normal.grid.describe(),
                force_check=float(abs(Fd[0] / (4 * normal.pressure.sum()
                                               * normal.grid.cell_area) - 1)))
-    iters = coarse.iterations + fine.iterations
+    iters = coarse.iterations + fine.iterations + kappa.iterations
     slip = {}
-    for direction, ratios in (("y", coarse.ratio_across), ("x", coarse.ratio_along)):
+    for direction, ratios in (("y", kappa.ratio_across), ("x", kappa.ratio_along)):
         for nu, kappa in zip(nus, ratios):
             m = partial_slip_measures(normal, nu, direction, float(kappa),
                                       task["slip_points"], J, tol, f_of)
@@ -194,11 +204,12 @@ def self_similarity_check(d_tilde=1e-3, nu=0.3, tol=1e-11):
 
 
 def tasks_for(d_min=1e-10, d_max=15.0, per_decade=2.0, nus=NUS, n_length=256, n_width=32,
-              slip_points=24, slip_depths=32, tol=1e-8):
+              slip_points=24, slip_depths=32, tol=1e-8, slip_n_length=128, slip_n_width=16):
     """The study's tasks, one per depth (log-spaced d~)."""
     n = int(round(np.log10(d_max / d_min) * per_decade)) + 1
     return [dict(key=f"d{d:.6e}", d_tilde=float(d), nus=[float(v) for v in nus],
                  n_length=n_length, n_width=n_width, slip_points=slip_points,
+                 slip_n_length=slip_n_length, slip_n_width=slip_n_width,
                  slip_depths=slip_depths, tol=tol)
             for d in np.geomspace(d_min, d_max, n)]
 
@@ -284,7 +295,8 @@ def run(args):
 
     t0 = time.perf_counter()
     tasks = tasks_for(args.d_min, args.d_max, args.per_decade, args.nu, args.n_length,
-                      args.n_width, args.slip_points, args.slip_depths, args.tol)
+                      args.n_width, args.slip_points, args.slip_depths, args.tol,
+                      args.slip_n_length, args.slip_n_width)
     if getattr(args, "checkpoint", None) is None:
         args.checkpoint = args.out / ".checkpoints" / "tangential"
     results = run_study_from_args(solve_task, tasks, args, desc="tangential study")
@@ -317,7 +329,7 @@ def run(args):
               "[-], ft_err_mdr_* = largest |F_t,BEM - F_t,MDR|/(mu F) over the monotonic "
               "partial-slip curve with F_t,MDR = mu [F(d) - F(d - G* u/(mu E*))] [-], "
               "ft_err_scaled_* = the same for the scaled law F_t = mu [F(d) - F(d - "
-              "kappa u/mu)], kappa = k_t/k_n of the BEM on N [-], ugs_* = BEM gross-slip "
+              "kappa u/mu)], kappa = k_t/k_n of the BEM on the partial-slip grid [-], ugs_* = BEM gross-slip "
               "shift / (mu d/kappa) [-], w_ratio_mdr_* = W_BEM/W_MDR and w_ratio_scaled_* = "
               "W_BEM/W_scaled, the energy dissipated per fretting cycle (Masing) at "
               "amplitude u0 = half the law's gross-slip shift [-]",
@@ -346,7 +358,8 @@ def run(args):
         grid=f"per depth: adapted grids of tools.cylinder.solve_depth, N = {args.n_length} "
              f"cells along the half-length and {args.n_width} across the contact "
              f"half-width, 2N = {2 * args.n_length} and {2 * args.n_width}; quarter grids "
-             f"by symmetry; partial slip on N with {args.slip_points} shift steps and "
+             f"by symmetry; partial slip on {args.slip_n_length} along the half-length and "
+             f"{args.slip_n_width} across the half-width (kappa = k_t/k_n on that grid) with {args.slip_points} shift steps and "
              f"{args.slip_depths} normal depths for F(d')",
         tolerance=f"{args.tol:g} (gap error / d; punch displacement error / shift; partial "
                   "slip optimality / largest shift)",

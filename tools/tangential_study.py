@@ -297,8 +297,10 @@ def run(args):
     tasks = tasks_for(args.d_min, args.d_max, args.per_decade, args.nu, args.n_length,
                       args.n_width, args.slip_points, args.slip_depths, args.tol,
                       args.slip_n_length, args.slip_n_width)
-    if getattr(args, "checkpoint", None) is None:
-        args.checkpoint = args.out / ".checkpoints" / "tangential"
+    own_checkpoint = getattr(args, "checkpoint", None) is None
+    if own_checkpoint:
+        # out/ is git-ignored; removed once the table is written
+        args.checkpoint = REPO / "out" / "partial_tangential"
     results = run_study_from_args(solve_task, tasks, args, desc="tangential study")
     cols, s = assemble(results)
     similar = self_similarity_check()
@@ -371,6 +373,9 @@ def run(args):
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "tangential_cylinder.csv"
     write_table(path, meta, cols)
+    if own_checkpoint:
+        import shutil
+        shutil.rmtree(args.checkpoint, ignore_errors=True)
     print(f"wrote {path}: {len(cols['nu'])} rows in {wall:.0f} s")
     for k, v in s.items():
         print(f"  {k}: {v}")

@@ -9,7 +9,7 @@ import sys
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import linecontact
@@ -91,13 +91,14 @@ def test_stiffness_is_derivative_of_force(key, opts):
 def test_force_and_stiffness_are_monotone(key, opts):
     """F(d) increases strictly and k(d) does not decrease (F convex) for every model."""
     m = _model(key, opts)
-    d = np.geomspace(1e-9, 1e-5, 60)
+    d = np.geomspace(1e-9, 1e-5, 25)   # 6 points a decade over four decades
     assert np.all(np.diff(m.force(d)) > 0)
     assert np.all(np.diff(m.stiffness(d)) >= 0)
 
 
 @pytest.mark.parametrize("key, opts", ALL, ids=IDS)
-@given(lam=st.floats(0.01, 100.0))
+@settings(max_examples=15, deadline=None)   # models that solve a BEM/slicing problem per
+@given(lam=st.floats(0.01, 100.0))          # call join this test too: keep it affordable
 def test_scaling_law(key, opts, lam):
     """F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*, every model
     (even Palmgren: F ~ (d L^0.8)^(1/0.9) scales as lambda^2)."""

@@ -231,13 +231,14 @@ class ContactModel(abc.ABC):
     def evaluate(self, *, force=None, depth=None):
         """The contact state at given forces OR depths, in one vectorised call.
 
-        With `force` F: d = depth(F), k = stiffness_at_force(F); with `depth` d:
-        F = force(d), k = stiffness(d). Both: the MDR contact half-length
-        a = k / (2 E*) (docs/theory.md, section 'MDR'; Li & Popov (2017), Eq. 5-6:
-        the MDR spring bed of modulus E* over |x| <= a has stiffness 2 E* a).
-        Each model's own law is called once per quantity, so a model whose
-        stiffness is a function of force (Johnson, Eq. 4) is not evaluated through
-        a force -> depth -> force round trip.
+        With `force` F: d = depth(F), and k = stiffness_at_force(F) where the model
+        has its own (a closed form in F), else stiffness(d) (no second inversion of
+        F). With `depth` d: F = force(d), and k = stiffness(d), or
+        stiffness_at_force(F) for a model whose class sets
+        ``stiffness_explicit_in_force = True`` (a law written as d(F), Johnson's Eq. 4:
+        no depth -> force -> stiffness detour). Both: the MDR contact half-length
+        a = k / (2 E*) (docs/theory.md, section 'MDR': the MDR spring bed of modulus
+        E* over |x| <= a has stiffness 2 E* a).
 
         Parameters
         ----------
@@ -280,14 +281,18 @@ class ContactModel(abc.ABC):
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
+        own = type(self).stiffness_at_force is not ContactModel.stiffness_at_force
         if force is not None:
             F = check_positive("force", force, "N")
             d = np.asarray(self.depth(F), dtype=float)
-            k = np.asarray(self.stiffness_at_force(F), dtype=float)
+            k = self.stiffness_at_force(F) if own else self.stiffness(d)
         else:
             d = check_positive("depth", depth, "m")
             F = np.asarray(self.force(d), dtype=float)
-            k = np.asarray(self.stiffness(d), dtype=float)
+            k = (self.stiffness_at_force(F)
+                 if own and getattr(self, "stiffness_explicit_in_force", False)
+                 else self.stiffness(d))
+        k = np.asarray(k, dtype=float)
         a = k / (2 * self.estar)
         return {"force": out(F), "depth": out(d),
                 "stiffness": out(k), "contact_radius": out(a)}

@@ -133,9 +133,10 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 3.
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press, ch. 4.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 3.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
+       chapter 4.
     """
     E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
     E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
@@ -197,9 +198,10 @@ def hertz_half_width(force, radius, length, estar):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 1.
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press, ch. 4.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
+       chapter 4.
     """
     F = check_positive("force", force, "N")
     R, L, E = _inputs(radius, length, estar)
@@ -252,12 +254,13 @@ def puttock_thwaite_depth(force, radius, length, estar):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2.
-    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
-    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
-    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
-    Gebiete des Ingenieurwesens 10, 201-211.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
+       point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
+       Melbourne (1969).
+    .. [3] G. Lundberg, "Elastische Beruehrung zweier Halbraeume", Forschung auf dem
+       Gebiete des Ingenieurwesens 10 (1939) 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
@@ -297,13 +300,14 @@ def puttock_thwaite_force(depth, radius, length, estar):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 (inverted
-    in closed form by the MDR, docs/theory.md, section 'MDR').
-    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
-    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
-    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
-    Gebiete des Ingenieurwesens 10, 201-211.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (inverted
+       in closed form by the MDR, docs/theory.md, section 'MDR').
+    .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
+       point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
+       Melbourne (1969).
+    .. [3] G. Lundberg, "Elastische Beruehrung zweier Halbraeume", Forschung auf dem
+       Gebiete des Ingenieurwesens 10 (1939) 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
@@ -343,13 +347,14 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 and Eq. 13
-    (corrected).
-    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
-    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
-    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
-    Gebiete des Ingenieurwesens 10, 201-211.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 and Eq. 13
+       (corrected).
+    .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
+       point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
+       Melbourne (1969).
+    .. [3] G. Lundberg, "Elastische Beruehrung zweier Halbraeume", Forschung auf dem
+       Gebiete des Ingenieurwesens 10 (1939) 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
@@ -384,13 +389,14 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 (k = 2 E* a by the
-    MDR, docs/theory.md, section 'MDR').
-    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
-    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
-    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
-    Gebiete des Ingenieurwesens 10, 201-211.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (k = 2 E*
+       a by the MDR, docs/theory.md, section 'MDR').
+    .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
+       point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
+       Melbourne (1969).
+    .. [3] G. Lundberg, "Elastische Beruehrung zweier Halbraeume", Forschung auf dem
+       Gebiete des Ingenieurwesens 10 (1939) 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
@@ -428,9 +434,9 @@ def puttock_thwaite_profile(x, radius, length):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with alpha = pi/2,
-    beta = 1 (Eq. 2).
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 with alpha
+       = pi/2, beta = 1 (Eq. 2).
     """
     return lipopov_profile(x, radius, length, **_PT)
 
@@ -510,9 +516,9 @@ def johnson_equivalent_beta(radius, length, c=1.0):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4 and Eq. 7 (the
-    identity is derived here).
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4 and Eq. 7
+       (the identity is derived here).
     """
     R = check_positive("radius", radius, "m")
     L = check_positive("length", length, "m")
@@ -568,9 +574,9 @@ def johnson_depth(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("force", force, 0.0, 4 * math.pi * E * L * R * math.exp(-(1 + cc)),
@@ -607,9 +613,9 @@ def johnson_force(depth, radius, length, estar, c=1.0):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("depth", depth, 0.0, 4 * R * math.exp(-(1 + cc)), low_open=True,
@@ -645,9 +651,9 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("force", force, 0.0, 4 * math.pi * E * L * R * math.exp(-(1 + cc)),
@@ -695,9 +701,10 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
 
     References
     ----------
-    Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li, Q.,
-    Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, section 1.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
+       Popov (2017) [1].
     """
     d = check_positive("depth", depth, "m")
     L = check_positive("length", length, "m")
@@ -734,9 +741,10 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
 
     References
     ----------
-    Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li, Q.,
-    Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, section 1.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
+       Popov (2017) [1].
     """
     F = check_positive("force", force, "N")
     L = check_positive("length", length, "m")
@@ -824,7 +832,7 @@ def palmgren_depth(force, length, estar):
 
     References
     ----------
-    Palmgren, A. (1959). Ball and Roller Bearing Engineering. SKF, Philadelphia.
+    .. [1] A. Palmgren, Ball and Roller Bearing Engineering, SKF, Philadelphia (1959).
     """
     return _steel_depth(force, length, estar, PALMGREN_C)
 
@@ -861,7 +869,7 @@ def palmgren_force(depth, length, estar):
 
     References
     ----------
-    Palmgren, A. (1959). Ball and Roller Bearing Engineering. SKF, Philadelphia.
+    .. [1] A. Palmgren, Ball and Roller Bearing Engineering, SKF, Philadelphia (1959).
     """
     return _steel_force(depth, length, estar, PALMGREN_C)
 
@@ -901,8 +909,8 @@ def iso16281_depth(force, length, estar):
 
     References
     ----------
-    ISO/TS 16281:2008. Rolling bearings - Methods for calculating the modified reference
-    rating life for universally loaded bearings.
+    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded bearings.
     """
     return _steel_depth(force, length, estar, ISO16281_C)
 
@@ -939,7 +947,7 @@ def iso16281_force(depth, length, estar):
 
     References
     ----------
-    ISO/TS 16281:2008. Rolling bearings - Methods for calculating the modified reference
-    rating life for universally loaded bearings.
+    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)

@@ -147,8 +147,9 @@ class CoefficientSet:
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Table 1 and Eq. 11.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Table 1 and
+       Eq. 11.
     """
 
     name: str
@@ -369,10 +370,10 @@ def lipopov_depth_limit(radius, length, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     b = check_positive("beta", beta)
@@ -407,11 +408,11 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (MDR force at the
-    bound).
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 (MDR force
+       at the bound).
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -446,10 +447,10 @@ def dimensionless_profile(x_tilde, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 8 and 9.
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8 and 9.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     xt = check_interval("x_tilde", x_tilde, 0.0, np.inf, high_open=True)
     a, b = _coeffs(alpha, beta)
@@ -494,10 +495,10 @@ def lipopov_profile(x, radius, length, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     xv = check_interval("x", x, 0.0, np.inf, high_open=True, unit="m")
@@ -561,11 +562,11 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with the MDR rules
-    (docs/theory.md, section 'MDR').
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 with the
+       MDR rules (docs/theory.md, section 'MDR').
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -619,11 +620,11 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and 9 (Eq. 2 for
-    alpha = pi/2, beta = 1).
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 and 9
+       (Eq. 2 for alpha = pi/2, beta = 1).
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -660,10 +661,10 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     a, b = _coeffs(alpha, beta)
@@ -701,10 +702,11 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (k = 2 E* a).
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 (k = 2 E*
+       a).
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     E = check_positive("estar", estar, "Pa")
     return out(2 * E * np.asarray(lipopov_contact_radius(depth, radius, length,
@@ -745,10 +747,11 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
-    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and Eq. 13 (corrected).
-    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
-    Mechanics and Friction. Springer.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 and Eq. 13
+       (corrected).
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015).
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")

@@ -276,8 +276,8 @@ class ContactModel(abc.ABC):
 
         References
         ----------
-        Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
-        Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+        .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+           Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
@@ -705,8 +705,8 @@ class UniversalModel(ContactModel):
 
     References
     ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
-    Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
     """
 
     key = "universal"

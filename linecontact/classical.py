@@ -293,6 +293,12 @@ def puttock_thwaite_force(depth, radius, length, estar):
     float or ndarray
         F [N].
 
+    Notes
+    -----
+    Valid for 0 < d < L^2/R, the supremum of the MDR profile of Eq. 2 (Eq. 7 with
+    alpha = pi/2, beta = 1); a larger depth is refused. F tends to pi E* L^3/R as d
+    tends to L^2/R.
+
     Examples
     --------
     >>> round(puttock_thwaite_force(3.3634e-6, 5e-3, 10e-3, 115.38e9))
@@ -340,6 +346,11 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
     float or ndarray
         k [N/m].
 
+    Notes
+    -----
+    Valid for 0 < F < pi E* L^3/R, where d(F) of Eq. 2 increases; k grows without
+    bound as F approaches that limit (the logarithm vanishes).
+
     Examples
     --------
     >>> f"{puttock_thwaite_stiffness(1e3, 5e-3, 10e-3, 115.38e9):.4e} N/m"
@@ -381,6 +392,11 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
     -------
     float or ndarray
         k [N/m].
+
+    Notes
+    -----
+    Eq. 2 is Eq. 7 with alpha = pi/2, beta = 1, so k = 2 E* a with the MDR contact
+    half-length a = alpha L/u. Valid for 0 < d < L^2/R, the supremum of that profile.
 
     Examples
     --------
@@ -500,14 +516,14 @@ def johnson_equivalent_beta(radius, length, c=1.0):
     c : float or str, optional
         Constant of Eq. 4 (see :func:`johnson_depth`) [-].
 
-    Notes
-    -----
-    Valid for 0 < R, L < inf and any finite c.
-
     Returns
     -------
     float or ndarray
-        [-]
+        beta of Eq. 9 equivalent to Eq. 4 [-].
+
+    Notes
+    -----
+    Valid for 0 < R, L < inf and any finite c.
 
     Examples
     --------
@@ -606,6 +622,11 @@ def johnson_force(depth, radius, length, estar, c=1.0):
     float or ndarray
         F [N].
 
+    Notes
+    -----
+    Valid for 0 < d < 4 R exp(-(1 + c)), the largest depth of Eq. 4 (reached at
+    F = 4 pi E* L R exp(-(1 + c))); a larger depth is refused.
+
     Examples
     --------
     >>> round(johnson_force(2.8116e-6, 5e-3, 10e-3, 115.38e9, c=1))
@@ -643,6 +664,12 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
     -------
     float or ndarray
         k [N/m].
+
+    Notes
+    -----
+    The derivative of Eq. 4 at the given force, k = 1/(dd/dF). Valid for
+    0 < F < 4 pi E* L R exp(-(1 + c)), where dd/dF > 0 (k grows without bound at the
+    upper end).
 
     Examples
     --------
@@ -733,6 +760,10 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
     -------
     float or ndarray
         d [m].
+
+    Notes
+    -----
+    The inverse of :func:`kunz_force`, valid where it is: 0 < F, L, E*, c < inf.
 
     Examples
     --------

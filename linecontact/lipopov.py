@@ -292,7 +292,7 @@ def lipopov_coefficients(length_over_radius, coefficients="published", *,
     Returns
     -------
     alpha, beta : float or ndarray
-        [-]
+        Coefficients of Eq. 9 [-].
 
     Notes
     -----
@@ -399,7 +399,12 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
     Returns
     -------
     float or ndarray
-        [N]
+        F_max [N].
+
+    Notes
+    -----
+    Valid for 0 < R, L, E*, alpha, beta < inf. The force functions of this module
+    refuse F >= F_max, the limit of the closed form as d tends to beta L^2/R.
 
     Examples
     --------
@@ -439,6 +444,10 @@ def dimensionless_profile(x_tilde, alpha, beta):
     -------
     float or ndarray
         g R / L^2 [-]; 0 at x~ = 0, increasing, below beta.
+
+    Notes
+    -----
+    Valid for 0 <= x~ < inf and 0 < alpha, beta < inf; g~ tends to beta as x~ -> inf.
 
     Examples
     --------
@@ -610,6 +619,11 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
     float or ndarray
         d [m].
 
+    Notes
+    -----
+    Valid for 0 < F < 2 alpha beta E* L^3/R (:func:`lipopov_force_limit`), where d
+    increases with F; same assumptions as :func:`lipopov_force`.
+
     Examples
     --------
     Steel on steel, R = 5 mm, L = 10 mm, 1 kN, Eq. 11 constants (about 3.15 um):
@@ -653,6 +667,11 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
     float or ndarray
         a [m]; equals k / (2 E*).
 
+    Notes
+    -----
+    Valid for 0 < d < beta L^2/R (:func:`lipopov_depth_limit`); a grows without bound
+    as d approaches that limit.
+
     Examples
     --------
     >>> a = lipopov_contact_radius(3.147e-6, 5e-3, 10e-3, alpha=1.5707963, beta=0.4573)
@@ -693,6 +712,11 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
     -------
     float or ndarray
         k [N/m].
+
+    Notes
+    -----
+    Valid for 0 < d < beta L^2/R (:func:`lipopov_depth_limit`); k = 2 E* a grows without
+    bound as d approaches that limit.
 
     Examples
     --------
@@ -737,6 +761,11 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
     -------
     float or ndarray
         k [N/m].
+
+    Notes
+    -----
+    Valid for 0 < F < 2 alpha beta E* L^3/R (:func:`lipopov_force_limit`); k grows
+    without bound as F approaches that limit.
 
     Examples
     --------

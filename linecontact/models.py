@@ -135,6 +135,12 @@ class ContactModel(abc.ABC):
     :meth:`stiffness`, :attr:`label` and :attr:`provenance`; the rest have
     defaults in terms of those.
 
+    Notes
+    -----
+    R, L and E* are checked at construction: single numbers, 0 < R, L, E* < inf (an
+    array raises: one model per cylinder). The range of depth and force is the
+    subclass's, checked on every evaluation.
+
     Examples
     --------
     Every model answers the same questions; a subclass implements the law:
@@ -313,13 +319,23 @@ class LiPopovModel(ContactModel):
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
     coefficients : str, optional
         ``"published"`` (default), ``"eq11"`` or a table name (see above).
     extrapolate : bool, optional
         Use the set outside its L/R range on request (default False).
+
+    Notes
+    -----
+    Valid for L/R inside the coefficient set's range (0.1 <= L/R <= 6 for
+    ``"published"``, L/R >= 5 for ``"eq11"``), depths 0 < d < beta L^2/R and forces
+    0 < F < 2 alpha beta E* L^3/R (the supremum of the profile of Eq. 7). L/R is checked
+    on every evaluation, or up front by :meth:`check_applicable`.
 
     Examples
     --------
@@ -336,6 +352,15 @@ class LiPopovModel(ContactModel):
     >>> m = LiPopovModel(5e-3, 10e-3, 115.38e9, coefficients="eq11", extrapolate=True)
     >>> m.label, f"{m.depth(1e3) * 1e6:.3f} um"
     ('Li-Popov (Eq. 11, extrapolated to L/R = 2)', '3.147 um')
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7, 9,
+       11 and Table 1.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    .. [3] docs/theory.md, section 'MDR'.
     """
 
     key = "li-popov"
@@ -421,15 +446,32 @@ class PuttockThwaiteModel(ContactModel):
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
+
+    Notes
+    -----
+    Valid for 0 < d < L^2/R and 0 < F < pi E* L^3/R, where Eq. 2 increases; any L/R.
 
     Examples
     --------
     >>> m = PuttockThwaiteModel(5e-3, 10e-3, 115.38e9)
     >>> f"{m.depth(1e3) * 1e6:.2f} um"
     '3.36 um'
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
+       point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
+       Melbourne (1969).
+    .. [3] G. Lundberg, "Elastische Beruehrung zweier Halbraeume", Forschung auf dem
+       Gebiete des Ingenieurwesens 10 (1939) 201-211.
     """
 
     key = "puttock-thwaite"
@@ -466,17 +508,31 @@ class JohnsonModel(ContactModel):
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
     c : float or str, optional
         The constant of Eq. 4 (default 1, Johnson 1985; 0.72, 0.572 or any number) [-].
+
+    Notes
+    -----
+    Valid for 0 < F < 4 pi E* L R exp(-(1 + c)) and 0 < d < 4 R exp(-(1 + c)), where
+    Eq. 4 increases; any L/R.
 
     Examples
     --------
     >>> m = JohnsonModel(5e-3, 10e-3, 115.38e9, c=0.72)
     >>> m.label, f"{m.depth(1e3) * 1e6:.2f} um"
     ('Johnson (c = 0.72)', '2.89 um')
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
     """
 
     key = "johnson"
@@ -525,17 +581,32 @@ class KunzModel(ContactModel):
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
     c : float, optional
         Coefficient of F = c E* L d, 0 < c < inf (default 0.175) [-].
+
+    Notes
+    -----
+    Valid for 0 < d < inf and 0 < F < inf (a linear law: constant k = c E* L); no
+    radius dependence.
 
     Examples
     --------
     >>> m = KunzModel(5e-3, 10e-3, 115.38e9)
     >>> f"{m.depth(1e3) * 1e6:.2f} um", f"{m.stiffness(1e-6):.4g} N/m"
     ('4.95 um', '2.019e+08 N/m')
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
+       Popov (2017) [1].
     """
 
     key = "kunz"
@@ -605,19 +676,34 @@ class _SteelModel(ContactModel):
 
 
 @register
+@document(STEEL=_c.STEEL_ESTAR_RANGE)
 class PalmgrenModel(_SteelModel):
     """Palmgren's empirical roller-raceway formula (one contact, steel only).
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
+
+    Notes
+    -----
+    Steel on steel only, E* within 10 % of 115.38 GPa:
+    %(STEEL)s
+    (E* is used for nothing else). Any 0 < F < inf and 0 < d < inf; k = F/(0.9 d),
+    the derivative of the power law d ~ F^0.9.
 
     Examples
     --------
     >>> f"{PalmgrenModel(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
     '3.05 um'
+
+    References
+    ----------
+    .. [1] A. Palmgren, Ball and Roller Bearing Engineering, SKF, Philadelphia (1959).
     """
 
     key = "palmgren"
@@ -629,19 +715,35 @@ class PalmgrenModel(_SteelModel):
 
 
 @register
+@document(STEEL=_c.STEEL_ESTAR_RANGE)
 class ISO16281Model(_SteelModel):
     """ISO/TS 16281 per-contact roller deflection (steel only).
 
     Parameters
     ----------
-    radius, length, estar : float
-        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
-        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
+
+    Notes
+    -----
+    Steel on steel only, E* within 10 % of 115.38 GPa:
+    %(STEEL)s
+    (E* is used for nothing else). Any 0 < F < inf and 0 < d < inf; k = F/(0.9 d),
+    the derivative of the power law d ~ F^0.9.
 
     Examples
     --------
     >>> f"{ISO16281Model(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
     '3.15 um'
+
+    References
+    ----------
+    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the
+       modified reference rating life for universally loaded bearings.
     """
 
     key = "iso16281"

@@ -66,6 +66,15 @@ class UniversalCurve:
     table : linecontact.tables.Table
         A table with columns ``d_tilde``, ``Psi`` and metadata ``beta_small``.
 
+    Notes
+    -----
+    Valid for 0 < d~ <= d_max, the table's largest dimensionless depth (30 for the
+    shipped table); a larger d~ raises
+    :class:`~linecontact.validity.OutOfRangeError`. Between the table's smallest depth
+    d_min and d_max, Psi is the cubic spline of ln Psi
+    against ln d~; below d_min, Eq. 7 with alpha = pi/2 and beta = ``beta_small``
+    continues it (see the module docstring).
+
     Examples
     --------
     >>> c = universal_curve()
@@ -73,6 +82,12 @@ class UniversalCurve:
     True
     >>> float(c.depth_of_psi(c.psi(0.01)))  # doctest: +ELLIPSIS
     0.01...
+
+    References
+    ----------
+    .. [1] docs/theory.md, sections 'Self-similarity' and 'BEM'.
+    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
     """
 
     alpha_small = math.pi / 2

@@ -69,10 +69,9 @@ class UniversalCurve:
     Notes
     -----
     Valid for 0 < d~ <= d_max, the table's largest dimensionless depth (30 for the
-    shipped table); a larger d~ raises
-    :class:`~linecontact.validity.OutOfRangeError`. Between the table's smallest depth
-    d_min and d_max, Psi is the cubic spline of ln Psi
-    against ln d~; below d_min, Eq. 7 with alpha = pi/2 and beta = ``beta_small``
+    shipped table); a larger d~ raises :class:`~linecontact.validity.OutOfRangeError`.
+    Between the table's smallest depth d_min and d_max, Psi is the cubic spline of
+    ln Psi against ln d~; below d_min, Eq. 7 with alpha = pi/2 and beta = ``beta_small``
     continues it (see the module docstring).
 
     Examples

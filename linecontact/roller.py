@@ -307,6 +307,7 @@ class _Slices:
         self.E = estar
         self.n = n
         self.lo, self.hi = x_lo, x_hi
+        self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
         self.w = (x_hi - x_lo) / n
         self.x = x_lo + self.w * (np.arange(n) + 0.5)
         self.P = drop(self.x)
@@ -433,18 +434,41 @@ class _Slices:
             raise ConvergenceError("the active set did not settle")
         return S, q, c
 
-    def sensitivities(self, S, q, c):
-        """d(qt)/dd and d(qt)/dtheta on S from the converged Jacobian."""
+    def sensitivities(self, S, q, c, th, slope):
+        """The 2x2 stiffness matrix d(F, M)/d(d, theta) of the discrete model.
+
+        Implicit differentiation of the converged equations R(z; d, theta, lo, hi) = 0
+        on the active set, including the motion of the slice grid (its ends lo, hi are
+        the overlap ends, which move with d and theta), so that the result is the
+        exact derivative of the computed F(d, theta) and M(d, theta).
+        """
+        A, D, EA, ED = self.kernels(S, np.sqrt(q[S] / c[S]))
         _, _, J = self.jacobian(S, q, c)
-        ns = len(S)
-        rhs = np.zeros((2 * ns, 2))
+        ns, n, w = len(S), self.n, self.w
+        qs, cs, xs = q[S], c[S], self.x[S]
+        k = S + 0.5
+        # columns: d, theta, lo, hi ; rows: -dR/dp
+        rhs = np.zeros((2 * ns, 4))
         rhs[:ns, 0] = 1.0
-        rhs[:ns, 1] = self.x[S]
-        qsc = np.max(q[S])
+        rhs[:ns, 1] = xs
+        dlnw = np.array([-1.0, 1.0]) / (n * w)                 # d ln w / d(lo, hi)
+        dx = np.stack([1.0 - k / n, k / n], axis=1)            # d x_k / d(lo, hi)
+        ea_q, ed_c = EA @ qs, ED @ cs
+        for g in range(2):
+            rhs[:ns, 2 + g] = -(ea_q * dlnw[g] - (th - slope[S]) * dx[:, g])
+            rhs[ns:, 2 + g] = -ed_c * dlnw[g]
+        qsc = np.max(qs)
         colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / self.R)])
         rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, self.R)])
         z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], rhs * rowsc[:, None])
-        return z[:ns] * qsc
+        dq = z[:ns] * qsc                                     # d qt / d(d, th, lo, hi)
+        dw = np.array([0.0, 0.0, -1.0 / n, 1.0 / n])
+        dxk = np.zeros((ns, 4))
+        dxk[:, 2:] = dx
+        dF = w * dq.sum(0) + dw * qs.sum()
+        dM = w * (xs[:, None] * dq).sum(0) + dw * (qs * xs).sum() + w * (qs[:, None] * dxk).sum(0)
+        G = np.array([[1.0, 0.0], [0.0, 1.0], self.dlo, self.dhi])   # d(d, th, lo, hi)/d(d, th)
+        return math.pi * self.E * np.array([dF @ G, dM @ G])
 
 
 # --------------------------------------------------------------------------------------
@@ -485,7 +509,8 @@ class RollerSolution:
     contact_length : float
         contact_end - contact_start [m].
     edge_loaded : bool
-        True if the contact reaches an end of the roller.
+        True if the contact reaches an end of the roller (within a slice width or
+        L/1000 of it).
     edge : str or None
         ``"-x"``, ``"+x"``, ``"both"`` or None.
     message : str
@@ -496,6 +521,11 @@ class RollerSolution:
         Number of slices [-].
     iterations : int
         Newton iterations used [-].
+    notes : tuple of str
+        Warnings about the validity of this solution.
+    p_max_resolved : bool
+        False if the peak sits within two slices of the contact's end (a concentration
+        narrower than the slices, e.g. at a sharp relief): then p_max is not converged.
     """
 
     depth: float
@@ -521,6 +551,7 @@ class RollerSolution:
     n_slices: int
     iterations: int = 0
     notes: tuple = field(default_factory=tuple)
+    p_max_resolved: bool = True
 
     def to_dict(self, arrays=True):
         """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
@@ -691,29 +722,55 @@ class ProfiledRoller:
         hmin = float(h[k])
         if 0 < k < len(h) - 1 and np.all(np.isfinite(h[k - 1:k + 2])):
             den = h[k - 1] - 2 * h[k] + h[k + 1]
-            if den > 0:          # vertex of the parabola through the three smallest
-                hmin = min(hmin, float(h[k] - (h[k + 1] - h[k - 1]) ** 2 / (8 * den)))
+            corr = (h[k + 1] - h[k - 1]) ** 2 / (8 * den) if den > 0 else 0.0
+            if corr > 1e-12 * max(abs(h[k - 1]), abs(h[k + 1])):
+                # vertex of the parabola through the three smallest values
+                hmin = float(h[k] - corr)
         return hmin
 
     def _grid(self, d, th):
         """Slices over the overlap interval, its ends interpolated between grid points.
 
-        The ends move continuously with d and theta, so that F(d) is continuous.
+        The ends move continuously (piecewise linearly) with d and theta, so that F(d)
+        is continuous; their derivatives enter the stiffness matrix.
         """
         fx = self._fx
         over = d + th * fx - self._fP
         on = np.flatnonzero(over > 0)
+        dlo = dhi = (0.0, 0.0)
         if len(on) == 0:
             k = int(np.argmax(over))
             lo, hi = fx[max(k - 1, 0)], fx[min(k + 1, len(fx) - 1)]
         else:
             i, j = on[0], on[-1]
-            lo = fx[0] if i == 0 else fx[i - 1] + (fx[i] - fx[i - 1]) * (
-                -over[i - 1] / (over[i] - over[i - 1]) if np.isfinite(over[i - 1]) else 1.0)
-            hi = fx[-1] if j == len(fx) - 1 else fx[j] + (fx[j + 1] - fx[j]) * (
-                over[j] / (over[j] - over[j + 1]) if np.isfinite(over[j + 1]) else 0.0)
-        return _Slices(self.radius, self.estar, float(lo), float(hi), self.n_slices,
-                       lambda x: _drop_at(self.profile, self.length, x))
+            lo, hi = fx[0], fx[-1]
+            h = fx[1] - fx[0]
+            if i > 0 and np.isfinite(over[i - 1]):
+                o0, o1, x0, x1 = over[i - 1], over[i], fx[i - 1], fx[i]
+                delta = o1 - o0
+                lo = x0 + h * (-o0 / delta)
+                dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
+            elif i > 0:
+                lo = fx[i]
+            if j < len(fx) - 1 and np.isfinite(over[j + 1]):
+                o0, o1, x0, x1 = over[j], over[j + 1], fx[j], fx[j + 1]
+                delta = o0 - o1
+                hi = x0 + h * (o0 / delta)
+                dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+            elif j < len(fx) - 1:
+                hi = fx[j]
+        s = _Slices(self.radius, self.estar, float(lo), float(hi), self.n_slices,
+                    lambda x: _drop_at(self.profile, self.length, x))
+        s.dlo, s.dhi = dlo, dhi
+        return s
+
+    def _slope(self, x):
+        """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""
+        h = 1e-7 * self.length
+        lo, hi = -self.length / 2, self.length / 2
+        xp, xm = np.minimum(x + h, hi), np.maximum(x - h, lo)
+        return (_drop_at(self.profile, self.length, xp)
+                - _drop_at(self.profile, self.length, xm)) / (xp - xm)
 
     # -- depth control ---------------------------------------------------------------
     def at_depth(self, depth, tilt=0.0):
@@ -770,10 +827,7 @@ class ProfiledRoller:
         scale = math.pi * self.estar * s.w
         F = scale * q.sum()
         M = scale * (q * s.x).sum()
-        z = s.sensitivities(S, q, c)
-        xs = s.x[S]
-        K = scale * np.array([[z[:, 0].sum(), z[:, 1].sum()],
-                              [(xs * z[:, 0]).sum(), (xs * z[:, 1]).sum()]])
+        K = s.sensitivities(S, q, c, th, self._slope(s.x))
         return d, th, F, M, K, (s, S, q, c)
 
     def _solution(self, d, th, F, M, K, state):
@@ -785,13 +839,25 @@ class ProfiledRoller:
         p[S] = 2.0 * self.estar * np.sqrt(q[S] * c[S])       # 2 q/(pi b)
         start, stop, lo_edge, hi_edge = _contact_extent(s.x, q, s.w, self.length,
                                                         s.lo, s.hi)
+        # within a slice width (or L/1000) of an end counts as reaching it: a log
+        # profile's contact approaches the end without touching it exactly
+        near = max(s.w, 1e-3 * self.length)
+        lo_edge = lo_edge or start <= -self.length / 2 + near
+        hi_edge = hi_edge or stop >= self.length / 2 - near
         edge = {(True, True): "both", (True, False): "-x", (False, True): "+x"}.get(
             (lo_edge, hi_edge))
         notes = []
+        resolved = False
         if edge is None:
             pm, xm = _peak(s.x, p)
+            on = np.flatnonzero(q > 0)
+            k = int(np.argmax(p))
+            resolved = bool(on[0] + 2 <= k <= on[-1] - 2)
             msg = ("peak of the Hertz strips (coupled slices, interpolated); the contact "
                    "stays inside the roller")
+            if not resolved:
+                msg += ("; the peak sits at the end of the contact, a concentration "
+                        "narrower than a few slices: not converged, refine n_slices")
         else:
             pm = None
             xm = {"-x": -self.length / 2, "+x": self.length / 2}.get(edge, self.length / 2)
@@ -808,7 +874,8 @@ class ProfiledRoller:
             x=s.x.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,
             contact_start=start, contact_end=stop, contact_length=stop - start,
             edge_loaded=edge is not None, edge=edge, message=msg, method="coupled slices",
-            n_slices=self.n_slices, iterations=its, notes=tuple(notes))
+            n_slices=self.n_slices, iterations=its, notes=tuple(notes),
+            p_max_resolved=resolved)
 
     # -- force control -----------------------------------------------------------------
     def _depth_at_force(self, F0, th, tol):

@@ -1,21 +1,50 @@
-"""Unit parsing for the command line (the only place in linecontact that parses units).
+"""Unit parsing for the command line and CSV cells (the only place in linecontact that
+parses units).
 
-The library itself is SI in and SI out; this module turns what a user types
-("5mm", "0.2 in", "210 GPa", "1kN", or a bare number meaning SI) into SI floats.
-Strings with a unit go through pint (https://pint.readthedocs.io); pint is imported
-lazily, on the first string that is not a bare number, so a call with plain SI numbers
-does not pay for it.
+The library itself is SI in and SI out; this module turns what a user types into SI
+floats. The rule, for the command line and for every CSV cell alike, is *a number with
+a unit, and nothing more*:
 
-Every failure raises :class:`InputError`, which names the parameter, the value as typed
-and what would have been valid; the CLI prints it as one line.
+- the number is a plain decimal: optional sign, digits with a decimal POINT, optional
+  exponent (``5``, ``0.2``, ``.5``, ``2.1e11``); a decimal comma (``1,5mm``), thousands
+  separators, ``inf``, ``nan``, hexadecimal and non-ASCII digits are refused;
+- the unit is ONE unit name, letters only, with or without a space before it (``mm``,
+  ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``); products, quotients,
+  powers, sums and any other expression are refused, never evaluated. The common
+  names (:data:`BUILTIN_UNITS`: SI prefixes of m, N, Pa, and inch-pound units) have
+  their exact factors here; for any other name pint (https://pint.readthedocs.io) is
+  asked only for the size of that one unit in SI, once per distinct unit, so a wrong
+  dimension or an unknown name is still refused by name;
+- a bare number is SI (m, N, Pa); neither it nor a built-in unit imports pint;
+- the value must be a normal, finite float before and after the conversion: a number
+  that overflows to inf, or underflows to zero or a subnormal (below 2.2e-308), is
+  refused, never clamped.
+
+:func:`parse_quantity` parses one value and :func:`parse_column` a whole column of a
+CSV file with the same rules (the same regular expression and the same per-unit SI
+factor: one value typed in a cell or on the command line converts to the same float);
+the column version parses the numbers with numpy and asks pint once per distinct unit,
+which is what makes a 100 000-row batch fast.
+
+Every failure raises (or, for a column, reports per cell) :class:`InputError`, which
+names the parameter, the value as typed and what would have been valid; the CLI prints
+it as one line and exits with status 2.
 """
 
 from __future__ import annotations
 
-import math
 import re
+import sys
 
-__all__ = ["InputError", "DIMENSIONS", "parse_quantity", "parse_sweep"]
+__all__ = [
+    "InputError",
+    "DIMENSIONS",
+    "BUILTIN_UNITS",
+    "parse_quantity",
+    "parse_column",
+    "parse_sweep",
+    "parse_bool",
+]
 
 #: Physical kinds the CLI understands: pint dimensionality, SI unit, examples for messages.
 DIMENSIONS = {
@@ -23,15 +52,27 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
+    "time": ("[time]", "s", "10s, 5min, 2h, 100"),
 }
 
-_NUMBER_FIRST = re.compile(r"^\s*[-+]?(\d|\.\d)")
+#: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
+_QUANTITY = re.compile(
+    r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
+    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc]+)?\s*$",
+    re.ASCII,
+)
+# re.ASCII: \s and the class above never match other scripts' digits or spaces; the
+# micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm").
+
+#: Smallest positive normal float: below it a value has lost precision (subnormal).
+_TINY = sys.float_info.min
 
 _REGISTRY = None
+_FACTORS: dict = {}
 
 
 class InputError(ValueError):
-    """A command-line value that cannot be used.
+    """A command-line value or CSV cell that cannot be used.
 
     Attributes
     ----------
@@ -41,6 +82,8 @@ class InputError(ValueError):
         The value as typed.
     valid : str
         What would have been accepted (a range, a dimension, a format).
+    reason : str
+        What is wrong with it.
     """
 
     def __init__(self, parameter, value, valid, reason=""):
@@ -67,12 +110,101 @@ def _registry():
     return _REGISTRY
 
 
-def _bare_float(text):
-    """float(text) for a plain number (no unit), else None."""
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return None
+def _valid_text(kind, positive, bounds):
+    dim, si, examples = DIMENSIONS[kind]
+    what = "a number" if kind == "dimensionless" else f"a {kind}"
+    if bounds:
+        return bounds[1]
+    if positive:
+        return f"{what} > 0 (e.g. {examples})"
+    return f"{what} (e.g. {examples})"
+
+
+_PREFIXES = {"p": 1e-12, "n": 1e-9, "u": 1e-6, "\u00b5": 1e-6, "\u03bc": 1e-6, "m": 1e-3,
+             "c": 1e-2, "d": 1e-1, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12}
+_INCH = 0.0254  # m, exact by definition (1959)
+_LBF = 4.4482216152605  # N, exact: 0.45359237 kg x 9.80665 m/s^2
+
+#: Unit names converted without pint: the SI prefixes of m, N and Pa, and the inch-pound
+#: units of engineering drawings, with their exact definitions. Each factor equals
+#: pint's to rounding (a test holds it); any other unit name is asked of pint.
+BUILTIN_UNITS = {
+    "length": {**{p + "m": f for p, f in _PREFIXES.items()},
+               "in": _INCH, "inch": _INCH, "ft": 12 * _INCH, "foot": 12 * _INCH,
+               "thou": _INCH / 1000},
+    "force": {**{p + "N": f for p, f in _PREFIXES.items()},
+              "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
+    "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
+                 "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
+}
+
+
+def _unit_factor(unit, kind):
+    """SI factor of ONE unit name for a quantity of `kind`, or a reason string.
+
+    From :data:`BUILTIN_UNITS`, else asks pint for the unit alone (never for an
+    expression), once per (unit, kind).
+    """
+    key = (unit, kind)
+    if key in _FACTORS:
+        return _FACTORS[key]
+    dim, si, _ = DIMENSIONS[kind]
+    if kind == "dimensionless":
+        result = f"expected a pure number, got the unit {unit!r}"
+    elif unit in BUILTIN_UNITS[kind]:
+        result = BUILTIN_UNITS[kind][unit]
+    else:
+        ureg = _registry()
+        try:
+            u = ureg.Unit(unit)
+        except Exception:  # pint raises several unrelated types for unknown names
+            result = f"unknown unit {unit!r}"
+        else:
+            if not u.is_compatible_with(si):
+                result = f"expected a {kind}, got {_describe_unit(u)}"
+            else:
+                result = float(ureg.Quantity(1.0, u).to(si).magnitude)
+    _FACTORS[key] = result
+    return result
+
+
+def _describe_unit(u):
+    """Name the dimension of a pint unit in words when it is a common one."""
+    for name, (dim, si, _) in DIMENSIONS.items():
+        if dim and u.is_compatible_with(si):
+            return f"a {name} ({u:~})"
+    if u.dimensionless:
+        return f"a pure number ({u})"
+    return f"units of {u.dimensionality} ({u:~})"
+
+
+def _format_reason(text):
+    """Why a string is not 'a number with a unit': the commonest mistakes by name."""
+    s = text.strip()
+    if not s:
+        return "empty value"
+    if "," in s:
+        return "a decimal comma or thousands separator (write 1.5mm, not 1,5mm)"
+    low = s.lower()
+    if re.search(r"\b(inf|infinity|nan)\b", low):
+        return "not a finite number"
+    if any(c in s for c in "*/^+()") or "**" in s or re.search(r"[A-Za-z]\s+[A-Za-z0-9]", s):
+        return "an expression; give one number and one unit name (e.g. 5mm, 210GPa)"
+    return "expected a number, optionally followed by one unit name"
+
+
+def _check_magnitude(value, nonzero):
+    """None if `value` is a usable float, else a reason; `nonzero`: the number as
+    typed is not zero (so 0.0 means it underflowed)."""
+    if value != value:  # NaN (cannot come from the regex, kept for safety)
+        return "not a finite number"
+    if value in (float("inf"), float("-inf")):
+        return "too large: overflows a double-precision number (above 1.8e308)"
+    if value == 0.0 and nonzero:
+        return "too small: underflows to zero (below 2.2e-308)"
+    if value != 0.0 and abs(value) < _TINY:
+        return "too small: a subnormal number (below 2.2e-308) has lost precision"
+    return None
 
 
 def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
@@ -101,83 +233,177 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
     Raises
     ------
     InputError
-        Unparseable text, unknown unit, wrong dimension, non-finite, or out of range.
+        Not a number with one unit name, unknown unit, wrong dimension, overflow,
+        underflow, or out of range.
 
     Examples
     --------
     >>> parse_quantity("--radius", "0.005", "length")
     0.005
+    >>> parse_quantity("--radius", "5 mm", "length")
+    0.005
+    >>> parse_quantity("--radius", "1,5mm", "length")
+    Traceback (most recent call last):
+    ...
+    linecontact._units.InputError: --radius = '1,5mm': a decimal comma or thousands separator (write 1.5mm, not 1,5mm); valid: a length > 0 (e.g. 5mm, 0.2 in, 0.005)
     >>> parse_quantity("--radius", "-1", "length")
     Traceback (most recent call last):
     ...
     linecontact._units.InputError: --radius = '-1': -1 m is not positive; valid: a length > 0 (e.g. 5mm, 0.2 in, 0.005)
     """
-    dim, si, examples = DIMENSIONS[kind]
-    what = "a number" if kind == "dimensionless" else f"a {kind}"
-    valid = (
-        bounds[1]
-        if bounds
-        else f"{what} > 0 (e.g. {examples})" if positive else f"{what} (e.g. {examples})"
-    )
-    raw = text
-    text = str(text).strip()
-    value = _bare_float(text)
-    if value is None:
-        if not text:
-            raise InputError(parameter, raw, valid, "empty value")
-        if not _NUMBER_FIRST.match(text):
-            raise InputError(
-                parameter, raw, valid, "expected a number, optionally followed by a unit"
-            )
-        ureg = _registry()
-        try:
-            q = ureg.Quantity(text)
-        except Exception as exc:  # pint raises several unrelated types (incl. AssertionError)
-            detail = str(exc).strip() or type(exc).__name__
-            raise InputError(
-                parameter, raw, valid, f"cannot read it as a quantity ({detail})"
-            ) from None
-        if kind == "dimensionless":
-            if not q.dimensionless:
-                raise InputError(
-                    parameter,
-                    raw,
-                    valid,
-                    f"expected a pure number, got units of {q.dimensionality}",
-                )
-            value = float(q.to("dimensionless").magnitude)
-        else:
-            if not q.check(dim):
-                raise InputError(parameter, raw, valid, f"expected {what}, got {_describe_dim(q)}")
-            value = float(q.to(si).magnitude)
-    if not math.isfinite(value):
-        raise InputError(parameter, raw, valid, "not a finite number")
+    valid = _valid_text(kind, positive, bounds)
+    value, reason = _parse_one(str(text), kind)
+    if reason is None:
+        reason = _range_reason(value, kind, positive, bounds)
+    if reason is not None:
+        raise InputError(parameter, text, valid, reason)
+    return value
+
+
+def _parse_one(text, kind):
+    """(SI value, None) or (None, reason) for one string: the rule of the module."""
+    m = _QUANTITY.match(text)
+    if m is None:
+        return None, _format_reason(text)
+    number, unit = m.group("number"), m.group("unit")
+    value = float(number)
+    nonzero = re.search(r"[1-9]", re.split(r"[eE]", number)[0]) is not None
+    reason = _check_magnitude(value, nonzero)
+    if reason is not None:
+        return None, reason
+    if unit is not None:
+        factor = _unit_factor(unit, kind)
+        if isinstance(factor, str):
+            return None, factor
+        value = value * factor
+        reason = _check_magnitude(value, nonzero)
+        if reason is not None:
+            return None, reason + f" after conversion of {unit} to SI"
+    return value, None
+
+
+def _range_reason(value, kind, positive, bounds):
+    si = DIMENSIONS[kind][1]
     unit = f" {si}" if si else ""
     if bounds is not None:
         inside, _ = bounds
         if not inside(value):
-            raise InputError(parameter, raw, valid, f"{value:g}{unit} is out of range")
+            return f"{value:g}{unit} is out of range"
     elif positive and not value > 0:
-        raise InputError(parameter, raw, valid, f"{value:g}{unit} is not positive")
-    return value
+        return f"{value:g}{unit} is not positive"
+    return None
 
 
-def _describe_dim(q):
-    """Name the dimension of a pint quantity in words when it is a common one."""
-    for name, (dim, _, _) in DIMENSIONS.items():
-        if dim and q.check(dim):
-            return f"a {name} ({q.units:~})"
-    if q.dimensionless:
-        return "a pure number"
-    return f"units of {q.dimensionality} ({q.units:~})"
+def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
+    """Parse a column of CSV cells with the rules of :func:`parse_quantity`.
+
+    Parameters
+    ----------
+    parameter : str
+        Column name for messages.
+    cells : sequence of str
+        The cells as read (empty cells must be filtered out by the caller).
+    kind, positive, bounds
+        As for :func:`parse_quantity`.
+
+    Returns
+    -------
+    values : ndarray of float
+        SI values; NaN where the cell was refused.
+    errors : list of str
+        ``""`` for a good cell, else the one-line message of the :class:`InputError`
+        that :func:`parse_quantity` raises for it.
+
+    Notes
+    -----
+    The numbers are converted by numpy in one call and pint is asked once per distinct
+    unit, so a column costs one regular-expression match per cell. The result equals
+    ``parse_quantity`` cell by cell (tested property).
+
+    Examples
+    --------
+    >>> v, e = parse_column("radius", ["5mm", "0.005", "1,5mm"], "length")
+    >>> v[:2].tolist(), e[:2], e[2].split(":")[0]
+    ([0.005, 0.005], ['', ''], "radius = '1,5mm'")
+    """
+    import numpy as np
+
+    valid = _valid_text(kind, positive, bounds)
+    n = len(cells)
+    numbers = [""] * n
+    units = [None] * n
+    errors = [""] * n
+    match = _QUANTITY.match
+    for i, cell in enumerate(cells):
+        m = match(cell)
+        if m is None:
+            errors[i] = str(InputError(parameter, cell, valid, _format_reason(str(cell))))
+            numbers[i] = "nan"
+        else:
+            numbers[i], units[i] = m.group("number"), m.group("unit")
+    raw = np.array(numbers, dtype=float) if n else np.zeros(0)
+    factors = np.ones(n)
+    for unit in set(units) - {None}:
+        f = _unit_factor(unit, kind)
+        idx = [i for i, u in enumerate(units) if u == unit]
+        if isinstance(f, str):
+            for i in idx:
+                if not errors[i]:
+                    errors[i] = str(InputError(parameter, cells[i], valid, f))
+            factors[idx] = np.nan
+        else:
+            factors[idx] = f
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        values = raw * factors
+    # slow path only for the cells whose magnitude or range is suspect
+    tiny = _TINY
+    ok = np.isfinite(values) & (np.abs(values) >= tiny)
+    if bounds is not None:
+        ok &= np.asarray(bounds[0](values), dtype=bool)
+    elif positive:
+        ok &= values > 0
+    for i in np.flatnonzero(~ok):
+        if errors[i]:
+            continue
+        value, reason = _parse_one(str(cells[i]), kind)
+        if reason is None:
+            reason = _range_reason(value, kind, positive, bounds)
+        if reason is not None:
+            errors[i] = str(InputError(parameter, cells[i], valid, reason))
+        else:
+            values[i] = value  # an exact zero where zero is allowed
+    bad = np.array([bool(e) for e in errors], dtype=bool) if n else np.zeros(0, bool)
+    values[bad] = np.nan
+    return values, errors
 
 
-def parse_sweep(parameter, text, kind, *, linear=False, max_points=10000):
+def parse_bool(parameter, text):
+    """A yes/no option: exactly true/false, yes/no, 1/0 (any case), nothing else.
+
+    Examples
+    --------
+    >>> parse_bool("extrapolate", "no"), parse_bool("extrapolate", "True")
+    (False, True)
+    >>> parse_bool("extrapolate", "nope")
+    Traceback (most recent call last):
+    ...
+    linecontact._units.InputError: extrapolate = 'nope': not a yes/no value; valid: true/false, yes/no or 1/0
+    """
+    s = str(text).strip().lower()
+    if s in ("true", "yes", "1"):
+        return True
+    if s in ("false", "no", "0"):
+        return False
+    raise InputError(parameter, text, "true/false, yes/no or 1/0", "not a yes/no value")
+
+
+def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, positive=True):
     """Parse a value or a range ``START:STOP:N`` into a list of SI floats.
 
     ``N`` values from ``START`` to ``STOP``, both included, spaced geometrically
     (equal ratios, as one wants for loads spanning decades) unless ``linear`` is true.
-    Without a colon the result is a one-element list.
+    Without a colon the result is a one-element list. ``positive=False`` accepts
+    START or STOP <= 0 (a time sweep from 0) in a linear sweep only.
 
     Examples
     --------
@@ -188,17 +414,19 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=10000):
     """
     text = str(text)
     if ":" not in text:
-        return [parse_quantity(parameter, text, kind)]
+        return [parse_quantity(parameter, text, kind, positive=positive)]
     parts = text.split(":")
     fmt = f"START:STOP:N with START, STOP > 0 and 2 <= N <= {max_points}, e.g. 0.1kN:10kN:20"
     if len(parts) != 3:
         raise InputError(parameter, text, fmt, "a range needs exactly three fields")
-    start = parse_quantity(f"{parameter} (START)", parts[0], kind)
-    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind)
-    try:
-        n = int(parts[2].strip())
-    except ValueError:
-        raise InputError(parameter, text, fmt, f"N = {parts[2]!r} is not an integer") from None
+    start = parse_quantity(f"{parameter} (START)", parts[0], kind, positive=positive)
+    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind, positive=positive)
+    if not linear and not (start > 0 and stop > 0):
+        raise InputError(parameter, text, fmt + " (or --linear for a range through 0)",
+                         "a geometric sweep needs START, STOP > 0")
+    if not re.fullmatch(r"\s*[0-9]+\s*", parts[2], re.ASCII):
+        raise InputError(parameter, text, fmt, f"N = {parts[2]!r} is not an integer")
+    n = int(parts[2])
     if not 2 <= n <= max_points:
         raise InputError(parameter, text, fmt, f"N = {n} is out of range")
     if linear:

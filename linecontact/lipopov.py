@@ -50,8 +50,9 @@ any other ``NAME``
 Table 1 and Eq. 11 disagree where both apply: at L/R = 5 Table 1 has alpha = 1.6048,
 beta = 0.5376 against pi/2 and 0.4573. For a steel roller R = 5 mm, L = 25 mm
 (E* = 115.4 GPa) the "published" depth is 0.9 % smaller than the "eq11" one at 1 kN and
-0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is chosen for you: the model uses ``"published"`` unless
-told ``coefficients="eq11"``, and the CLI lists both.
+0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is
+chosen for you: the model uses ``"published"`` unless told ``coefficients="eq11"``, and
+the CLI lists both.
 
 References
 ----------
@@ -68,9 +69,7 @@ import os
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.interpolate import CubicSpline
-from scipy.special import lambertw
-
+from ._numerics import NotAKnotSpline, log1p_excess_root
 from .tables import available_tables, read_table, table_path
 from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
                        document, out)
@@ -115,6 +114,20 @@ class CoefficientSet:
     Call it with L/R to get ``(alpha, beta)``; L/R outside :attr:`valid` raises
     :class:`~linecontact.validity.OutOfRangeError`.
 
+    Parameters
+    ----------
+    name : str
+        ``"published"``, ``"eq11"`` or a table name.
+    label : str
+        Human-readable, e.g. ``"Table 1 spline"``.
+    valid : Interval
+        Range of L/R.
+    provenance : dict
+        Table metadata (table-backed sets) or the equation reference.
+    _alpha, _beta : NotAKnotSpline or None
+        alpha and beta as splines of ln(L/R) (table-backed sets); None for the
+        constants of Eq. 11.
+
     Attributes
     ----------
     name : str
@@ -125,6 +138,17 @@ class CoefficientSet:
         Range of L/R.
     provenance : dict
         Table metadata (table-backed sets) or the equation reference.
+
+    Examples
+    --------
+    >>> s = coefficient_set("eq11")
+    >>> s(10.0)
+    (array(1.57079633), array(0.4573))
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Table 1 and Eq. 11.
     """
 
     name: str
@@ -181,7 +205,7 @@ def _table_set(name, stem):
     return CoefficientSet(name=name, label=label,
                           valid=Interval("L/R", float(q[0]), float(q[-1]), rtol=1e-12),
                           provenance=prov,
-                          _alpha=CubicSpline(lq, a), _beta=CubicSpline(lq, b))
+                          _alpha=NotAKnotSpline(lq, a), _beta=NotAKnotSpline(lq, b))
 
 
 _CACHE: dict = {}
@@ -202,6 +226,16 @@ def available_coefficient_sets():
 
 def coefficient_set(name="published"):
     """The coefficient set `name`: ``"published"``, ``"eq11"`` or a table name.
+
+    Parameters
+    ----------
+    name : str
+        ``"published"`` (Li & Popov 2017, Table 1, spline in ln(L/R)), ``"eq11"``
+        (Eq. 11) or the name NAME of a table ``tables/lipopov_NAME.csv``.
+
+    Returns
+    -------
+    CoefficientSet
 
     A table set is re-read when its file changes (so a table regenerated while a
     process runs is picked up).
@@ -297,9 +331,12 @@ def _coeffs(alpha, beta):
 
 
 def _u_from_depth_ratio(D):
-    """u = alpha L / a from D = d R / (beta L^2) in (0, 1): (u + 1) exp(-u) = D."""
-    w = lambertw(-D / np.e, k=-1)
-    return -1.0 - np.real(w)
+    """u = alpha L / a from D = d R / (beta L^2) in (0, 1]: (u + 1) exp(-u) = D.
+
+    u = -1 - W_-1(-D/e), computed from t = -ln D = u - ln(1 + u), which keeps u
+    accurate also as D -> 1 (see :func:`linecontact._numerics.log1p_excess_root`).
+    """
+    return log1p_excess_root(-np.log(D))
 
 
 def lipopov_depth_limit(radius, length, beta):
@@ -321,10 +358,21 @@ def lipopov_depth_limit(radius, length, beta):
     float or ndarray
         beta L^2 / R [m].
 
+    Notes
+    -----
+    Valid for 0 < R, L, beta < inf.
+
     Examples
     --------
     >>> lipopov_depth_limit(5e-3, 10e-3, 0.4573)
     0.009146
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     b = check_positive("beta", beta)
@@ -336,6 +384,17 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
 
     .. math:: F_{max} = 2\alpha\beta E^* L^3 / R
 
+    Parameters
+    ----------
+    radius : float or array_like
+        Cylinder radius R, 0 < R < inf [m].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+    estar : float or array_like
+        Effective modulus E*, 0 < E* < inf [Pa].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
     Returns
     -------
     float or ndarray
@@ -345,6 +404,14 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
     --------
     >>> f"{lipopov_force_limit(5e-3, 10e-3, 115.4e9, alpha=1.5708, beta=0.4573):.4g}"
     '3.316e+07'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (MDR force at the
+    bound).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -376,6 +443,13 @@ def dimensionless_profile(x_tilde, alpha, beta):
     --------
     >>> round(dimensionless_profile(1.0, 1.5708, 0.4573), 6)
     0.244388
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 8 and 9.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     xt = check_interval("x_tilde", x_tilde, 0.0, np.inf, high_open=True)
     a, b = _coeffs(alpha, beta)
@@ -417,6 +491,13 @@ def lipopov_profile(x, radius, length, *, alpha, beta):
     --------
     >>> f"{lipopov_profile(10e-3, 5e-3, 10e-3, alpha=1.5708, beta=0.4573):.4e}"
     '4.8878e-03'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     xv = check_interval("x", x, 0.0, np.inf, high_open=True, unit="m")
@@ -477,6 +558,14 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
     >>> F = lipopov_force(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> round(F)
     1000
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with the MDR rules
+    (docs/theory.md, section 'MDR').
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -527,6 +616,14 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
     >>> d = lipopov_depth(1e3, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{d * 1e6:.3f} um"
     '3.147 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and 9 (Eq. 2 for
+    alpha = pi/2, beta = 1).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -560,6 +657,13 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
     >>> a = lipopov_contact_radius(3.147e-6, 5e-3, 10e-3, alpha=1.5707963, beta=0.4573)
     >>> f"{a * 1e3:.4f} mm"
     '1.5091 mm'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     a, b = _coeffs(alpha, beta)
@@ -594,6 +698,13 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
     >>> k = lipopov_stiffness(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (k = 2 E* a).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     E = check_positive("estar", estar, "Pa")
     return out(2 * E * np.asarray(lipopov_contact_radius(depth, radius, length,
@@ -631,9 +742,339 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
     ...                                beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and Eq. 13 (corrected).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
     a, b = _coeffs(alpha, beta)
     F, fmax = _force_checked(force, R, L, E, a, b)
     return out(2 * a * E * L / np.log(fmax / F))
+
+
+# --------------------------------------------------------------------------------------
+# dimensionless closed forms of Eq. 8-9 and the fit of Eq. 9: their one home. The BEM
+# studies in tools/ and the tests call these; each evaluates the SI function above with
+# R = L = E* = 1, so there is one Lambert-W inverse in the package.
+# --------------------------------------------------------------------------------------
+def _d_tilde_checked(d_tilde, beta):
+    return check_interval(
+        "d_tilde", d_tilde, 0.0, beta, low_open=True, high_open=True,
+        hint="the dimensionless profile of Eq. 9 is bounded by beta, so no larger "
+             "d~ = d R/L^2 has a solution in this form")
+
+
+def dimensionless_contact_radius(d_tilde, alpha, beta):
+    r"""MDR contact half-length x~ = a/L at the dimensionless depth d~ (inverse of Eq. 9).
+
+    .. math::
+        \tilde x = \frac{\alpha}{u}, \qquad
+        u = -1 - W_{-1}\left(-\frac{\tilde d}{e\,\beta}\right), \qquad
+        \tilde d = \frac{d R}{L^2} \quad \text{(Eq. 8)}
+
+    Parameters
+    ----------
+    d_tilde : float or array_like
+        Dimensionless depth d R / L^2, 0 < d~ < beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        x~ = a/L = k/(2 E* L) [-], the root of g~(x~) = d~.
+
+    Raises
+    ------
+    OutOfRangeError
+        d~ outside (0, beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < d~ < beta (the profile of Eq. 9 saturates at beta); x~ grows without
+    bound as d~ -> beta. It is :func:`lipopov_contact_radius` with R = L = 1.
+
+    Examples
+    --------
+    >>> x = dimensionless_contact_radius(0.1, 1.5708, 0.4573)
+    >>> round(float(x), 6), round(float(dimensionless_profile(x, 1.5708, 0.4573)), 12)
+    (0.546438, 0.1)
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    """
+    a, b = _coeffs(alpha, beta)
+    d = _d_tilde_checked(d_tilde, b)
+    return lipopov_contact_radius(d, 1.0, 1.0, alpha=a, beta=b)
+
+
+def dimensionless_force(d_tilde, alpha, beta):
+    r"""Dimensionless force F~ = F R/(E* L^3) at the dimensionless depth d~ (Eq. 9 form).
+
+    .. math::
+        \tilde F = 2\alpha\beta\,e^{-u}, \qquad
+        u = -1 - W_{-1}\left(-\frac{\tilde d}{e\,\beta}\right)
+
+    Parameters
+    ----------
+    d_tilde : float or array_like
+        Dimensionless depth d R / L^2, 0 < d~ < beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        F R / (E* L^3) [-]; below 2 alpha beta.
+
+    Raises
+    ------
+    OutOfRangeError
+        d~ outside (0, beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < d~ < beta. It is :func:`lipopov_force` with R = L = E* = 1, so
+    F = E* L^3/R * F~ for every L/R (the self-similarity of Eq. 8).
+
+    Examples
+    --------
+    >>> round(float(dimensionless_force(0.1, 1.5708, 0.4573)), 6)
+    0.081082
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
+       Mechanics and Friction, Springer (2015).
+    """
+    a, b = _coeffs(alpha, beta)
+    d = _d_tilde_checked(d_tilde, b)
+    return lipopov_force(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+
+
+def dimensionless_stiffness(d_tilde, alpha, beta):
+    r"""Dimensionless stiffness k~ = k/(E* L) = 2 x~ at the dimensionless depth d~.
+
+    .. math::
+        \tilde k = \frac{d\tilde F}{d\tilde d} = 2\tilde x = \frac{2\alpha}{u}, \qquad
+        u = -1 - W_{-1}\left(-\frac{\tilde d}{e\,\beta}\right)
+
+    Parameters
+    ----------
+    d_tilde : float or array_like
+        Dimensionless depth d R / L^2, 0 < d~ < beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        k / (E* L) [-].
+
+    Raises
+    ------
+    OutOfRangeError
+        d~ outside (0, beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < d~ < beta. It is :func:`lipopov_stiffness` with R = L = E* = 1.
+
+    Examples
+    --------
+    >>> round(float(dimensionless_stiffness(0.1, 1.5708, 0.4573)), 6)
+    1.092876
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    """
+    a, b = _coeffs(alpha, beta)
+    d = _d_tilde_checked(d_tilde, b)
+    return lipopov_stiffness(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+
+
+def dimensionless_depth(f_tilde, alpha, beta):
+    r"""Dimensionless depth d~ = d R/L^2 under the dimensionless force F~ (Eq. 9 form).
+
+    .. math::
+        \tilde d = \frac{\tilde F}{2\alpha}\left(1 + \ln\frac{2\alpha\beta}{\tilde F}
+                    \right), \qquad \tilde F = \frac{F R}{E^* L^3}
+
+    Parameters
+    ----------
+    f_tilde : float or array_like
+        Dimensionless force F R/(E* L^3), 0 < F~ < 2 alpha beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        d R / L^2 [-]; the inverse of :func:`dimensionless_force`.
+
+    Raises
+    ------
+    OutOfRangeError
+        F~ outside (0, 2 alpha beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < F~ < 2 alpha beta (the form saturates there). It is
+    :func:`lipopov_depth` with R = L = E* = 1; with alpha = pi/2, beta = 1 it is
+    Eq. 2 in dimensionless form.
+
+    Examples
+    --------
+    >>> d = dimensionless_depth(dimensionless_force(0.1, 1.5708, 0.4573), 1.5708, 0.4573)
+    >>> round(float(d), 12)
+    0.1
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    """
+    a, b = _coeffs(alpha, beta)
+    f = check_interval(
+        "f_tilde", f_tilde, 0.0, 2 * a * b, low_open=True, high_open=True,
+        hint="the Li-Popov form saturates at F~ = 2 alpha beta")
+    return lipopov_depth(f, 1.0, 1.0, 1.0, alpha=a, beta=b)
+
+
+def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):
+    r"""The beta of Eq. 9 that puts the form with the given alpha through (d~, F~).
+
+    From :math:`\tilde F = 2\alpha\beta e^{-u}` and
+    :math:`\tilde d = \beta(u + 1)e^{-u}`, eliminating u:
+
+    .. math::
+        \beta = \frac{\tilde F}{2\alpha}\exp\left(\frac{2\alpha\tilde d}{\tilde F}
+                - 1\right)
+
+    With alpha = pi/2 (the 2D log law) this is the effective beta of a computed curve
+    Psi(d~), which tends to a constant as d~ -> 0 (docs/theory.md, section
+    'Self-similarity').
+
+    Parameters
+    ----------
+    d_tilde : float or array_like
+        Dimensionless depth d R / L^2, 0 < d~ < inf [-].
+    f_tilde : float or array_like
+        Dimensionless force F R/(E* L^3) at that depth, 0 < F~ < inf [-].
+    alpha : float or array_like, optional
+        Coefficient of Eq. 9, 0 < alpha < inf (default pi/2) [-].
+
+    Returns
+    -------
+    float or ndarray
+        beta [-].
+
+    Raises
+    ------
+    OutOfRangeError
+        A non-positive or non-finite input.
+
+    Notes
+    -----
+    Valid for any positive d~, F~; a point (d~, F~) lies on a curve of Eq. 9 with
+    this alpha only if u = 2 alpha d~/F~ - 1 > 0, i.e. F~ < 2 alpha d~ (true of every
+    convex force curve from the origin).
+
+    Examples
+    --------
+    The point of the form itself gives back its beta:
+
+    >>> d = 0.1
+    >>> F = dimensionless_force(d, 1.5708, 0.4573)
+    >>> round(float(effective_beta(d, F, 1.5708)), 12)
+    0.4573
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7-9.
+    """
+    d = check_positive("d_tilde", d_tilde)
+    f = check_positive("f_tilde", f_tilde)
+    a = check_positive("alpha", alpha)
+    return out(f / (2 * a) * np.exp(2 * a * d / f - 1.0))
+
+
+def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
+    r"""alpha, beta of Eq. 9 fitted to MDR profile points (x~_i, g~_i) by least squares.
+
+    Minimises :math:`\sum_i [\ln \tilde g(\tilde x_i; \alpha, \beta) - \ln \tilde g_i]^2`
+    (relative residual in g~) over ln alpha, ln beta, with g~ of
+    :func:`dimensionless_profile`.
+
+    Parameters
+    ----------
+    x_tilde : array_like
+        Profile abscissae x/L = k/(2 E* L), 0 < x~ < inf, at least 2 points [-].
+    g_tilde : array_like
+        Profile values g R/L^2 (= d~ of the MDR), 0 < g~ < inf, same shape [-].
+    start : tuple of float, optional
+        Starting alpha, beta (default pi/2, 0.5) [-].
+
+    Returns
+    -------
+    tuple of float
+        (alpha, beta) [-].
+
+    Raises
+    ------
+    OutOfRangeError
+        Non-positive or non-finite points.
+    ValueError
+        Fewer than two points or shapes that differ.
+
+    Notes
+    -----
+    Valid for any positive points; the fit is exact on points of Eq. 9 itself. alpha
+    and beta are strongly correlated, so fit over the depths where the form is to be
+    used (the paper's study compares other residuals in tools/paper_fit.py).
+
+    Examples
+    --------
+    >>> x = np.geomspace(0.2, 2.0, 20)
+    >>> a, b = fit_dimensionless_profile(x, dimensionless_profile(x, 1.7, 0.8))
+    >>> round(a, 8), round(b, 8)
+    (1.7, 0.8)
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 9.
+    """
+    from scipy.optimize import least_squares
+    x = np.ravel(check_positive("x_tilde", x_tilde))
+    g = np.ravel(check_positive("g_tilde", g_tilde))
+    if x.shape != g.shape or x.size < 2:
+        raise ValueError(f"need at least 2 points (x~, g~) of one shape; got {x.size} "
+                         f"x~ and {g.size} g~")
+    lg = np.log(g)
+
+    def residual(p):
+        a, b = np.exp(p)
+        u = a / x
+        return np.log(b) + np.log1p(u) - u - lg
+
+    sol = least_squares(residual, np.log(np.asarray(start, dtype=float)), method="lm",
+                        xtol=1e-15, ftol=1e-15, gtol=1e-15)
+    a, b = np.exp(sol.x)
+    return float(a), float(b)
+
+
+__all__ += ["dimensionless_contact_radius", "dimensionless_force", "dimensionless_depth",
+            "dimensionless_stiffness", "effective_beta", "fit_dimensionless_profile"]

@@ -26,8 +26,8 @@ Keys
 ``"palmgren"``, ``"iso16281"``
     Steel-only empirical formulas (per contact).
 ``"universal"``
-    The BEM-tabulated universal curve, registered by :mod:`linecontact.universal`
-    (imported lazily when asked for); the default model, :data:`DEFAULT_MODEL`.
+    The BEM-tabulated universal curve (:mod:`linecontact.universal` holds the curve,
+    ``tables/universal_curve.csv`` its data); the default model, :data:`DEFAULT_MODEL`.
 
 Examples
 --------
@@ -40,10 +40,8 @@ Examples
 from __future__ import annotations
 
 import abc
-import importlib
-import importlib.util
 import math
-import warnings
+import os
 
 import numpy as np
 
@@ -51,8 +49,9 @@ from . import classical as _c
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import TableError, available_tables
-from .validity import OutOfRangeError, check_positive, out
+from .tables import available_tables, read_table, table_path
+from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
+from .validity import OutOfRangeError, check_interval, check_positive, document, out
 
 __all__ = [
     "ContactModel",
@@ -68,6 +67,7 @@ __all__ = [
     "KunzModel",
     "PalmgrenModel",
     "ISO16281Model",
+    "UniversalModel",
 ]
 
 #: Registry: key -> model class. Filled by :func:`register`.
@@ -76,11 +76,29 @@ MODELS: dict = {}
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
 
-_PLUGINS = ("linecontact.universal",)
-
 
 def register(cls):
-    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`."""
+    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`.
+
+    Parameters
+    ----------
+    cls : type
+        A :class:`ContactModel` subclass with a non-empty ``key``.
+
+    Returns
+    -------
+    type
+        `cls`, unchanged (so it works as a decorator).
+
+    Examples
+    --------
+    >>> "li-popov" in MODELS and MODELS["li-popov"] is LiPopovModel
+    True
+    >>> register(int)
+    Traceback (most recent call last):
+    ...
+    TypeError: <class 'int'> is not a ContactModel subclass
+    """
     if not (isinstance(cls, type) and issubclass(cls, ContactModel)):
         raise TypeError(f"{cls!r} is not a ContactModel subclass")
     if not cls.key:
@@ -116,6 +134,14 @@ class ContactModel(abc.ABC):
     Subclasses set :attr:`key` and implement :meth:`force`, :meth:`depth`,
     :meth:`stiffness`, :attr:`label` and :attr:`provenance`; the rest have
     defaults in terms of those.
+
+    Examples
+    --------
+    Every model answers the same questions; a subclass implements the law:
+
+    >>> m = get_model("puttock-thwaite", 5e-3, 10e-3, 115.38e9)
+    >>> isinstance(m, ContactModel), f"{m.length_over_radius:g}"
+    (True, '2')
     """
 
     #: Registry key.
@@ -144,6 +170,30 @@ class ContactModel(abc.ABC):
     def length_over_radius(self):
         """L/R [-]."""
         return self.length / self.radius
+
+    #: Column tag of this model in tables/model_accuracy.csv (``F_err_<tag>``), or None
+    #: where the accuracy study does not cover it (an option value it did not run).
+    accuracy_tag = None
+
+    @property
+    def measured_error(self):
+        """The measured error of this model against the BEM at this cylinder's L/R.
+
+        One line of text: the range of the signed relative error of F(d) and k(d)
+        over the depths of the accuracy study (d/R 1e-6 ... 0.15), at the study's L/R
+        rows that bracket this cylinder's, read from tables/model_accuracy.csv
+        (``python -m tools.build_tables accuracy``); or why there is none. None for a
+        model the study does not cover (``accuracy_tag`` None).
+        """
+        if self.accuracy_tag is None:
+            return None
+        return _measured_error(self.accuracy_tag, self.length_over_radius)
+
+    def _with_measured_error(self, prov):
+        text = self.measured_error
+        if text is not None:
+            prov["measured_error"] = text
+        return prov
 
     def check_applicable(self):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
@@ -178,6 +228,75 @@ class ContactModel(abc.ABC):
         raise NotImplementedError(f"{self.label} has no MDR profile "
                                   "(an empirical force-depth law)")
 
+    def evaluate(self, *, force=None, depth=None):
+        """The contact state at given forces OR depths, in one vectorised call.
+
+        With `force` F: d = depth(F), and k = stiffness_at_force(F) where the model
+        has its own (a closed form in F), else stiffness(d) (no second inversion of
+        F). With `depth` d: F = force(d), and k = stiffness(d), or
+        stiffness_at_force(F) for a model whose class sets
+        ``stiffness_explicit_in_force = True`` (a law written as d(F), Johnson's Eq. 4:
+        no depth -> force -> stiffness detour). Both: the MDR contact half-length
+        a = k / (2 E*) (docs/theory.md, section 'MDR': the MDR spring bed of modulus
+        E* over |x| <= a has stiffness 2 E* a).
+
+        Parameters
+        ----------
+        force : array_like, optional
+            Normal force F > 0 [N] (or a pint Quantity of force).
+        depth : array_like, optional
+            Indentation depth d > 0 [m] (or a pint Quantity of length).
+
+        Returns
+        -------
+        dict
+            ``force`` [N], ``depth`` [m], ``stiffness`` [N/m], ``contact_radius`` [m]:
+            float arrays of the input's shape (floats for a scalar input).
+
+        Raises
+        ------
+        TypeError
+            Neither or both of `force` and `depth` given.
+        OutOfRangeError
+            An input outside the model's range (the first offending element named).
+
+        Notes
+        -----
+        Valid wherever the model's force/depth/stiffness are (see the subclass): it
+        adds no approximation.
+
+        Examples
+        --------
+        >>> m = get_model("johnson", 5e-3, 10e-3, 115.38e9)
+        >>> r = m.evaluate(force=[500.0, 1000.0])
+        >>> [f"{d * 1e6:.3f}" for d in r["depth"]]
+        ['1.501', '2.812']
+        >>> bool(r["stiffness"][1] == m.stiffness_at_force(1000.0))
+        True
+
+        References
+        ----------
+        Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
+        Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+        """
+        if (force is None) == (depth is None):
+            raise TypeError("evaluate() takes exactly one of force= or depth=")
+        own = type(self).stiffness_at_force is not ContactModel.stiffness_at_force
+        if force is not None:
+            F = check_positive("force", force, "N")
+            d = np.asarray(self.depth(F), dtype=float)
+            k = self.stiffness_at_force(F) if own else self.stiffness(d)
+        else:
+            d = check_positive("depth", depth, "m")
+            F = np.asarray(self.force(d), dtype=float)
+            k = (self.stiffness_at_force(F)
+                 if own and getattr(self, "stiffness_explicit_in_force", False)
+                 else self.stiffness(d))
+        k = np.asarray(k, dtype=float)
+        a = k / (2 * self.estar)
+        return {"force": out(F), "depth": out(d),
+                "stiffness": out(k), "contact_radius": out(a)}
+
 
 # --------------------------------------------------------------------------------------
 @register
@@ -191,6 +310,16 @@ class LiPopovModel(ContactModel):
     :mod:`linecontact.lipopov`). Option ``extrapolate=True`` uses the set outside its
     L/R range on request (Eq. 11 constants as they are, a table's end rows held); the
     label then says "extrapolated".
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    coefficients : str, optional
+        ``"published"`` (default), ``"eq11"`` or a table name (see above).
+    extrapolate : bool, optional
+        Use the set outside its L/R range on request (default False).
 
     Examples
     --------
@@ -239,7 +368,19 @@ class LiPopovModel(ContactModel):
         if self.extrapolate and self.extrapolated:
             prov["extrapolated"] = (f"L/R = {self.length_over_radius:.6g} is outside "
                                     f"{self._set.valid}; used on request")
-        return prov
+        return self._with_measured_error(prov)
+
+    @property
+    def accuracy_tag(self):
+        return f"lp_{self.coefficients}" if isinstance(self.coefficients, str) else None
+
+    @property
+    def measured_error(self):
+        text = super().measured_error
+        if text is not None and self.extrapolated and not self.extrapolate:
+            text = (f"not applicable at L/R = {self.length_over_radius:.3g} (outside "
+                    f"{self._set.valid}); extrapolated on request it measures " + text)
+        return text
 
     @property
     def alpha_beta(self):
@@ -278,6 +419,12 @@ class LiPopovModel(ContactModel):
 class PuttockThwaiteModel(ContactModel):
     """Puttock & Thwaite (= Lundberg 1939), Li & Popov 2017 Eq. 2.
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> m = PuttockThwaiteModel(5e-3, 10e-3, 115.38e9)
@@ -287,13 +434,14 @@ class PuttockThwaiteModel(ContactModel):
 
     key = "puttock-thwaite"
     label = "Puttock-Thwaite"
+    accuracy_tag = "eq2"
 
     @property
     def provenance(self):
-        return {"model": self.label,
+        return self._with_measured_error({"model": self.label,
                 "equation": "Li & Popov 2017, Eq. 2 (Puttock & Thwaite; Lundberg 1939); "
                             "stiffness: derivative of Eq. 2 (the printed Eq. 13 is "
-                            "inverted)"}
+                            "inverted)"})
 
     def force(self, depth):
         return _c.puttock_thwaite_force(depth, self.radius, self.length, self.estar)
@@ -315,6 +463,14 @@ class PuttockThwaiteModel(ContactModel):
 @register
 class JohnsonModel(ContactModel):
     """Johnson-type law, Li & Popov 2017 Eq. 4, with constant c (option, default 1).
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float or str, optional
+        The constant of Eq. 4 (default 1, Johnson 1985; 0.72, 0.572 or any number) [-].
 
     Examples
     --------
@@ -338,8 +494,13 @@ class JohnsonModel(ContactModel):
         who = "Johnson 1985" if self.c == 1.0 else (
             "other authors cited by Li & Popov" if self.c in (0.72, 0.572)
             else "user-given constant")
-        return {"model": self.label,
-                "equation": f"Li & Popov 2017, Eq. 4 with c = {self.c:g} ({who})"}
+        return self._with_measured_error(
+            {"model": self.label,
+             "equation": f"Li & Popov 2017, Eq. 4 with c = {self.c:g} ({who})"})
+
+    @property
+    def accuracy_tag(self):
+        return "johnson_c" + f"{self.c:g}".replace(".", "p")
 
     def force(self, depth):
         return _c.johnson_force(depth, self.radius, self.length, self.estar, c=self.c)
@@ -362,6 +523,14 @@ class JohnsonModel(ContactModel):
 class KunzModel(ContactModel):
     """Kunz & de Maria's linear law F = c E* L d (option c, default 0.175).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float, optional
+        Coefficient of F = c E* L d, 0 < c < inf (default 0.175) [-].
+
     Examples
     --------
     >>> m = KunzModel(5e-3, 10e-3, 115.38e9)
@@ -381,9 +550,14 @@ class KunzModel(ContactModel):
 
     @property
     def provenance(self):
-        return {"model": self.label,
-                "equation": "Kunz & de Maria 2002 (experiment, parallel cylinders), "
-                            "F = c E* L d, as cited by Li & Popov 2017"}
+        return self._with_measured_error(
+            {"model": self.label,
+             "equation": "Kunz & de Maria 2002 (experiment, parallel cylinders), "
+                         "F = c E* L d, as cited by Li & Popov 2017"})
+
+    @property
+    def accuracy_tag(self):
+        return "kunz" if self.c == _c.KUNZ_C else None
 
     def force(self, depth):
         return _c.kunz_force(depth, self.length, self.estar, self.c)
@@ -407,8 +581,9 @@ class _SteelModel(ContactModel):
 
     @property
     def provenance(self):
-        return {"model": self.label, "equation": self._source,
-                "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"}
+        return self._with_measured_error(
+            {"model": self.label, "equation": self._source,
+             "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"})
 
     def check_applicable(self):
         _c.STEEL_ESTAR_RANGE.check(self.estar, hint=_c._STEEL_HINT)
@@ -433,6 +608,12 @@ class _SteelModel(ContactModel):
 class PalmgrenModel(_SteelModel):
     """Palmgren's empirical roller-raceway formula (one contact, steel only).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> f"{PalmgrenModel(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
@@ -441,6 +622,7 @@ class PalmgrenModel(_SteelModel):
 
     key = "palmgren"
     label = "Palmgren"
+    accuracy_tag = "palmgren"
     _depth_fn = staticmethod(_c.palmgren_depth)
     _force_fn = staticmethod(_c.palmgren_force)
     _source = "Palmgren (1959): d [mm] = 3.84e-5 F[N]^0.9 / L[mm]^0.8, one contact"
@@ -450,6 +632,12 @@ class PalmgrenModel(_SteelModel):
 class ISO16281Model(_SteelModel):
     """ISO/TS 16281 per-contact roller deflection (steel only).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> f"{ISO16281Model(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
@@ -458,29 +646,224 @@ class ISO16281Model(_SteelModel):
 
     key = "iso16281"
     label = "ISO/TS 16281"
+    accuracy_tag = "iso16281"
     _depth_fn = staticmethod(_c.iso16281_depth)
     _force_fn = staticmethod(_c.iso16281_force)
     _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
-# --------------------------------------------------------------------------------------
-def _load_plugins():
-    """Import optional model modules (linecontact.universal) if they exist."""
-    for name in _PLUGINS:
-        if importlib.util.find_spec(name) is not None:
-            importlib.import_module(name)
+@register
+@document(DR=DEPTH_OVER_RADIUS)
+class UniversalModel(ContactModel):
+    r"""The BEM universal curve for one cylinder (the default model).
 
+    .. math::
 
-def available_models():
-    """Registered model keys (after importing optional model modules), sorted.
+        F = \frac{E^* L^3}{R}\Psi\!\left(\frac{dR}{L^2}\right),\quad
+        k = E^* L\,\Psi'\!\left(\frac{dR}{L^2}\right),\quad
+        a = \frac{k}{2E^*},\quad g(x) = \frac{L^2}{R}\Phi\!\left(\frac{x}{L}\right)
+
+    Parameters
+    ----------
+    radius : float
+        Cylinder radius R [m].
+    length : float
+        Cylinder length L [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3) [Pa].
+    table : str, optional
+        Name of the table in tables/ (default ``"universal_curve"``); a missing table
+        raises FileNotFoundError naming the file.
+    extrapolate : bool, optional
+        Accept depths beyond %(DR)s, up to the table's end (default False).
+
+    Notes
+    -----
+    The curve :math:`\Psi` and its inverses are
+    :class:`linecontact.universal.UniversalCurve` (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
+    Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
+    table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
+    range over which the accuracy study compared the models, within which the parabolic
+    gap y^2/(2R) stands in for the circle (it needs d << R). Beyond it a depth is
+    refused unless ``extrapolate=True``. Below the table's smallest depth the
+    small-depth asymptote continues the curve (see the module docstring). Accuracy: the
+    table header's ``accuracy`` line (BEM discretisation) plus the parabolic
+    approximation.
 
     Examples
     --------
-    >>> {"li-popov", "johnson", "palmgren"} <= set(available_models())
+    Steel on steel (E* = 115.4 GPa), R = 5 mm, L = 10 mm, F = 1 kN (a value of the
+    shipped table; the Li-Popov form gives 3.055 um with Table 1, 3.147 um with Eq. 11,
+    Eq. 2 gives 3.363 um):
+
+    >>> m = UniversalModel(5e-3, 10e-3, 115.38e9)
+    >>> f"{m.depth(1e3) * 1e6:.3f} um", f"{m.stiffness_at_force(1e3) / 1e6:.1f} N/um"
+    ('3.154 um', '347.9 N/um')
+    >>> bool(abs(m.force(m.depth(1e3)) / 1e3 - 1) < 1e-12)
+    True
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
+    Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+    """
+
+    key = "universal"
+    label = "Universal curve (BEM)"
+
+    def __init__(self, radius, length, estar, table=_UNIVERSAL_TABLE, extrapolate=False):
+        super().__init__(radius, length, estar)
+        self.table_name = table
+        self.extrapolate = bool(extrapolate)
+        self.curve = universal_curve(table)
+
+    @property
+    def provenance(self):
+        meta = dict(self.curve.table.meta)
+        meta["model"] = self.label
+        meta["table"] = str(self.curve.table.path.name)
+        return meta
+
+    # scales
+    @property
+    def _dscale(self):
+        return self.length ** 2 / self.radius
+
+    @property
+    def _fscale(self):
+        return self.estar * self.length ** 3 / self.radius
+
+    @property
+    def _radius_limited(self):
+        """True when d <= 0.15 R, not the table's end, bounds the depth."""
+        return (not self.extrapolate
+                and DEPTH_OVER_RADIUS.high * self.radius < self.curve.d_max * self._dscale)
+
+    @property
+    def depth_limit(self):
+        """Largest accepted depth [m]: the table's end d~_max L^2/R, and (unless
+        ``extrapolate``) 0.15 R."""
+        if self._radius_limited:
+            return DEPTH_OVER_RADIUS.high * self.radius
+        return self.curve.d_max * self._dscale
+
+    @property
+    def force_limit(self):
+        """Force at :attr:`depth_limit` [N]."""
+        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
+
+    def _limit_hint(self):
+        if self._radius_limited:
+            return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
+                    "in for the circle only for d << R (extrapolate=True accepts depths up "
+                    f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
+        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+
+    def _dt(self, depth):
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
+                           hint=self._limit_hint())
+        return d / self._dscale
+
+    def _psi_of_force(self, force):
+        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
+                           hint=self._limit_hint())
+        # F <= force_limit was checked; F/scale may still round above psi_max at the end
+        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
+
+    def force(self, depth):
+        """F(d) [N]; depth [m]."""
+        return out(self.curve.psi(self._dt(depth)) * self._fscale)
+
+    def depth(self, force):
+        """d(F) [m]; force [N]."""
+        d = self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale
+        return out(np.minimum(d, self.depth_limit))   # rounding at the closed end only
+
+    def stiffness(self, depth):
+        """k(d) = dF/dd [N/m]; depth [m]."""
+        return out(self.curve.dpsi(self._dt(depth)) * self.estar * self.length)
+
+    def profile(self, x):
+        """MDR profile g(x) [m] for 0 <= x <= the MDR radius at the table's end [m]."""
+        xv = np.asarray(x, dtype=float)
+        if np.any(~np.isfinite(xv)) or np.any(xv < 0):
+            bad = float(xv[~(np.isfinite(xv) & (xv >= 0))].flat[0]) if xv.ndim else float(xv)
+            raise OutOfRangeError("x", bad, "[0, inf) m", unit="m")
+        try:
+            return out(self.curve.depth_of_x(xv / self.length) * self._dscale)
+        except OutOfRangeError as exc:
+            raise OutOfRangeError("x", float(exc.value) * self.length,
+                                  f"[0, {self.curve.x_max * self.length:.6g}] m", unit="m",
+                                  hint=exc.hint) from None
+
+
+# --------------------------------------------------------------------------------------
+ACCURACY_TABLE = "model_accuracy"
+_NOT_APPLICABLE, _NO_ANSWER = 98.0, 99.0   # flags of tables/model_accuracy.csv
+_ACCURACY_CACHE: dict = {}
+
+
+def _accuracy_table():
+    """tables/model_accuracy.csv, read once per file version; None if absent."""
+    try:
+        path = table_path(ACCURACY_TABLE)
+    except FileNotFoundError:
+        return None
+    key = (str(path), os.stat(path).st_mtime_ns)
+    if key not in _ACCURACY_CACHE:
+        _ACCURACY_CACHE[key] = read_table(ACCURACY_TABLE)
+    return _ACCURACY_CACHE[key]
+
+
+def _measured_error(tag, length_over_radius):
+    """Text: range of the measured F and k errors of model `tag` at the study's L/R
+    rows bracketing `length_over_radius` (see :attr:`ContactModel.measured_error`)."""
+    table = _accuracy_table()
+    if table is None:
+        return (f"not measured: tables/{ACCURACY_TABLE}.csv is missing "
+                "(python -m tools.build_tables accuracy)")
+    cols = table.columns
+    if f"F_err_{tag}" not in cols:
+        return f"not measured: tables/{ACCURACY_TABLE}.csv has no column F_err_{tag}"
+    grid = np.unique(cols["L_over_R"])
+    q = length_over_radius
+    if not grid[0] * (1 - 1e-9) <= q <= grid[-1] * (1 + 1e-9):
+        return (f"not measured at L/R = {q:.3g}: the accuracy study covers "
+                f"L/R {grid[0]:g} to {grid[-1]:g}")
+    lo = grid[grid <= q * (1 + 1e-9)].max()
+    hi = grid[grid >= q * (1 - 1e-9)].min()
+    rows = (cols["L_over_R"] == lo) | (cols["L_over_R"] == hi)
+    eF, ek = cols[f"F_err_{tag}"][rows], cols[f"k_err_{tag}"][rows]
+    valid = eF < _NOT_APPLICABLE
+    where = f"L/R = {lo:g}" + (f" and {hi:g}" if hi != lo else "")
+    if not valid.any():
+        return f"not measured: the model does not apply (or has no answer) at {where}"
+    d = cols["d_over_R"][rows][valid]
+
+    def rng(e):
+        return f"{e.min() * 100:+.2g} % to {e.max() * 100:+.2g} %"
+
+    text = (f"against the BEM at {where}, d/R {d.min():.2g} to {d.max():.2g}: "
+            f"F {rng(eF[valid])}, k {rng(ek[valid])}")
+    if np.any(eF == _NO_ANSWER):
+        text += "; no answer at the other depths"
+    return text + f" (tables/{ACCURACY_TABLE}.csv)"
+
+
+def available_models():
+    """Registered model keys, sorted.
+
+    Returns
+    -------
+    list of str
+        The keys of :data:`MODELS` [-].
+
+    Examples
+    --------
+    >>> {"universal", "li-popov", "johnson", "palmgren"} <= set(available_models())
     True
     """
-    _load_plugins()
     return sorted(MODELS)
 
 
@@ -490,8 +873,7 @@ def get_model(key, radius, length, estar, **options):
     Parameters
     ----------
     key : str
-        Registry key (see :data:`MODELS`); ``"universal"`` imports
-        :mod:`linecontact.universal` on first use.
+        Registry key (see :data:`MODELS`) [-].
     radius, length : float
         R, L [m].
     estar : float
@@ -507,6 +889,13 @@ def get_model(key, radius, length, estar, **options):
     ------
     OutOfRangeError
         Unknown key (the message lists the valid ones) or bad R, L, E*.
+    FileNotFoundError
+        The model's table is missing (the message names the file).
+
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
 
     Examples
     --------
@@ -518,28 +907,40 @@ def get_model(key, radius, length, estar, **options):
     linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
     """
     if key not in MODELS:
-        _load_plugins()
-    if key not in MODELS:
-        hint = ""
-        if key == DEFAULT_MODEL:
-            hint = ("the universal model comes from linecontact/universal.py and its "
-                    "BEM table; neither is available in this installation")
         raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in sorted(MODELS)), hint=hint)
+                              + ", ".join(repr(k) for k in sorted(MODELS)))
     return MODELS[key](radius, length, estar, **options)
 
 
 def standard_models(radius, length, estar):
     """The CLI's row set for one cylinder, in display order.
 
-    Universal (only if :mod:`linecontact.universal` is importable and its table
-    exists), Li-Popov Table 1 spline, Li-Popov Eq. 11, Li-Popov regenerated (only if
-    ``tables/lipopov_regenerated.csv`` exists), Puttock-Thwaite, Johnson c = 1, 0.72,
-    0.572, Kunz, Palmgren, ISO/TS 16281.
+    Universal curve (the best estimate, :data:`DEFAULT_MODEL`), Li-Popov Table 1 spline,
+    Li-Popov Eq. 11, Li-Popov regenerated (only if ``tables/lipopov_regenerated.csv``
+    exists: an optional coefficient set), Puttock-Thwaite, Johnson c = 1, 0.72, 0.572,
+    Kunz, Palmgren, ISO/TS 16281.
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise
     :class:`~linecontact.validity.OutOfRangeError`, which the caller reports per row.
+    A missing universal table is an error (FileNotFoundError naming the file), never a
+    silently shorter row set.
+
+    Parameters
+    ----------
+    radius, length : float
+        R, L [m].
+    estar : float
+        E* [Pa].
+
+    Returns
+    -------
+    list of ContactModel
+
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
 
     Examples
     --------
@@ -550,12 +951,9 @@ def standard_models(radius, length, estar):
     R = _scalar("radius", radius, "m")
     L = _scalar("length", length, "m")
     E = _scalar("estar", estar, "Pa")
-    rows = []
-    universal = _universal(R, L, E)
-    if universal is not None:
-        rows.append(universal)
-    rows.append(LiPopovModel(R, L, E, coefficients="published"))
-    rows.append(LiPopovModel(R, L, E, coefficients="eq11"))
+    rows = [UniversalModel(R, L, E),
+            LiPopovModel(R, L, E, coefficients="published"),
+            LiPopovModel(R, L, E, coefficients="eq11")]
     if "lipopov_regenerated" in available_tables("lipopov_"):
         rows.append(LiPopovModel(R, L, E, coefficients="regenerated"))
     rows.append(PuttockThwaiteModel(R, L, E))
@@ -564,23 +962,3 @@ def standard_models(radius, length, estar):
     rows.append(PalmgrenModel(R, L, E))
     rows.append(ISO16281Model(R, L, E))
     return rows
-
-
-def _universal(R, L, E):
-    """The universal model, or None (with a warning if it exists but fails)."""
-    try:
-        _load_plugins()
-    except Exception as exc:  # a broken optional module must not take the CLI down
-        warnings.warn(f"linecontact.universal could not be imported: {exc!r}",
-                      RuntimeWarning, stacklevel=3)
-        return None
-    cls = MODELS.get(DEFAULT_MODEL)
-    if cls is None:
-        return None
-    available = getattr(cls, "available", None)
-    if callable(available) and not available():
-        return None
-    try:
-        return cls(R, L, E)
-    except (FileNotFoundError, TableError):
-        return None

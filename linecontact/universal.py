@@ -2,7 +2,7 @@ r"""The universal curve: the default model of a straight finite cylinder.
 
 With the parabolic gap :math:`h = y^2/(2R)` the contact problem of a rigid cylinder of
 radius R and length L depends on the dimensionless depth :math:`\tilde d = d R/L^2`
-alone (SPEC section 5), so that for every L/R
+alone (docs/theory.md, section 'Self-similarity'), so that for every L/R
 
 .. math::
 
@@ -30,23 +30,26 @@ Outside the table:
 - beyond its largest depth, every function raises
   :class:`~linecontact.validity.OutOfRangeError`.
 
+The model built on the curve, registered under ``"universal"`` like every other model,
+is :class:`linecontact.models.UniversalModel`.
+
 The parabolic gap is exact only for d << R (soft rollers pressed deep need the
 circular profile); the accuracy study in tables/README.md covers d/R <= 0.15.
 """
 from __future__ import annotations
 
-import functools
 import math
+import os
 
 import numpy as np
-from scipy.interpolate import CubicSpline
-from scipy.special import lambertw
 
-from .models import ContactModel, register
+from . import tables as _tables
+from ._numerics import NotAKnotSpline
+from .lipopov import _u_from_depth_ratio
 from .tables import read_table, table_path
-from .validity import Interval, OutOfRangeError, check_interval, document, out
+from .validity import Interval, check_interval
 
-__all__ = ["UniversalCurve", "UniversalModel", "universal_curve"]
+__all__ = ["DEPTH_OVER_RADIUS", "TABLE", "UniversalCurve", "universal_curve"]
 
 TABLE = "universal_curve"
 
@@ -82,9 +85,10 @@ class UniversalCurve:
         self.table = table
         self._z = np.log(cols["d_tilde"])
         self._lnpsi = np.log(cols["Psi"])
-        self._spline = CubicSpline(self._z, self._lnpsi)
-        self._slope = self._spline.derivative(1)
-        self._curv = self._spline.derivative(2)
+        spline = NotAKnotSpline(self._z, self._lnpsi)
+        self._spline = spline
+        self._slope = lambda z: spline(z, 1)
+        self._curv = lambda z: spline(z, 2)
         self.d_min = float(cols["d_tilde"][0])
         self.d_max = float(cols["d_tilde"][-1])
         # the spline's own end values (equal to the table's to rounding), so that the
@@ -102,8 +106,7 @@ class UniversalCurve:
 
     def _small(self, d):
         """Eq. 7 with alpha = pi/2, beta = beta_small: u from d~ = beta (u+1) e^-u."""
-        w = lambertw(-d / (self.beta_small * math.e), k=-1)
-        return -1.0 - np.real(w)
+        return _u_from_depth_ratio(d / self.beta_small)
 
     def _evaluate(self, d_tilde, on_table, below_table):
         """on_table(d) where d~ >= d_min, below_table(d) under it; any input shape."""
@@ -111,8 +114,10 @@ class UniversalCurve:
         flat = np.atleast_1d(d).ravel()
         res = np.empty_like(flat)
         small = flat < self.d_min
-        res[~small] = on_table(flat[~small])
-        res[small] = below_table(flat[small])
+        if not small.all():
+            res[~small] = on_table(flat[~small])
+        if small.any():
+            res[small] = below_table(flat[small])
         return res.reshape(d.shape)
 
     def psi(self, d_tilde):
@@ -189,157 +194,57 @@ class UniversalCurve:
         return d
 
 
-@functools.lru_cache(maxsize=None)
+_CACHE: dict = {}
+
+
 def universal_curve(name=TABLE):
-    """The :class:`UniversalCurve` of ``tables/<name>.csv``, read once and cached."""
-    return UniversalCurve(read_table(name))
-
-
-@register
-@document(DR=DEPTH_OVER_RADIUS)
-class UniversalModel(ContactModel):
-    r"""The BEM universal curve for one cylinder (the default model).
-
-    .. math::
-
-        F = \frac{E^* L^3}{R}\Psi\!\left(\frac{dR}{L^2}\right),\quad
-        k = E^* L\,\Psi'\!\left(\frac{dR}{L^2}\right),\quad
-        a = \frac{k}{2E^*},\quad g(x) = \frac{L^2}{R}\Phi\!\left(\frac{x}{L}\right)
+    """The :class:`UniversalCurve` of ``tables/<name>.csv``, read once per file version.
 
     Parameters
     ----------
-    radius : float
-        Cylinder radius R [m].
-    length : float
-        Cylinder length L [m].
-    estar : float
-        Effective modulus E* (Li & Popov 2017, Eq. 3) [Pa].
-    table : str, optional
-        Name of the table in tables/ (default ``"universal_curve"``).
-    extrapolate : bool, optional
-        Accept depths beyond %(DR)s, up to the table's end (default False).
+    name : str
+        Table stem in tables/ (default ``"universal_curve"``) [-].
+
+    Returns
+    -------
+    UniversalCurve
+
+    Raises
+    ------
+    FileNotFoundError
+        The table file is missing; the message names the file and how to regenerate it.
 
     Notes
     -----
-    Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
-    table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
-    range over which the accuracy study compared the models, within which the parabolic
-    gap y^2/(2R) stands in for the circle (it needs d << R). Beyond it a depth is
-    refused unless ``extrapolate=True``. Below the table's smallest depth the
-    small-depth asymptote continues the curve (see the module docstring). Accuracy: the
-    table header's ``accuracy`` line (BEM discretisation) plus the parabolic
-    approximation.
+    Cached per (path, modification time), so a table regenerated while a process runs
+    is picked up, as for the Li-Popov coefficient tables.
 
     Examples
     --------
-    Steel on steel (E* = 115.4 GPa), R = 5 mm, L = 10 mm, F = 1 kN (a value of the
-    shipped table; the Li-Popov form gives 3.055 um with Table 1, 3.147 um with Eq. 11,
-    Eq. 2 gives 3.363 um):
-
-    >>> m = UniversalModel(5e-3, 10e-3, 115.38e9)
-    >>> f"{m.depth(1e3) * 1e6:.3f} um", f"{m.stiffness_at_force(1e3) / 1e6:.1f} N/um"
-    ('3.154 um', '347.9 N/um')
-    >>> bool(abs(m.force(m.depth(1e3)) / 1e3 - 1) < 1e-12)
-    True
-
-    References
-    ----------
-    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders.
-    Facta Universitatis, Series Mechanical Engineering 15(1), 63-71.
+    >>> universal_curve().table.path.name
+    'universal_curve.csv'
     """
-
-    key = "universal"
-    label = "Universal curve (BEM)"
-
-    def __init__(self, radius, length, estar, table=TABLE, extrapolate=False):
-        super().__init__(radius, length, estar)
-        self.table_name = table
-        self.extrapolate = bool(extrapolate)
-        self.curve = universal_curve(table)
-
-    @classmethod
-    def available(cls, table=TABLE):
-        """True if the table exists in this installation."""
+    try:
+        path = table_path(name)
+    except FileNotFoundError:
         try:
-            return table_path(table).is_file()
-        except (FileNotFoundError, OSError):
-            return False
+            where = str(_tables.tables_dir() / f"{name}.csv")
+        except FileNotFoundError as exc:   # no tables directory at all
+            where = f"{name}.csv ({exc})"
+        raise FileNotFoundError(
+            f"table file {where} not found: the universal-curve model (the default) "
+            "needs it; regenerate it with 'python -m tools.build_tables universal' "
+            "or reinstall linecontact") from None
+    key = (str(path), os.stat(path).st_mtime_ns)
+    if key not in _CACHE:
+        _CACHE[key] = UniversalCurve(read_table(name))
+    return _CACHE[key]
 
-    @property
-    def provenance(self):
-        meta = dict(self.curve.table.meta)
-        meta["model"] = self.label
-        meta["table"] = str(self.curve.table.path.name)
-        return meta
 
-    # scales
-    @property
-    def _dscale(self):
-        return self.length ** 2 / self.radius
-
-    @property
-    def _fscale(self):
-        return self.estar * self.length ** 3 / self.radius
-
-    @property
-    def _radius_limited(self):
-        """True when d <= 0.15 R, not the table's end, bounds the depth."""
-        return (not self.extrapolate
-                and DEPTH_OVER_RADIUS.high * self.radius < self.curve.d_max * self._dscale)
-
-    @property
-    def depth_limit(self):
-        """Largest accepted depth [m]: the table's end d~_max L^2/R, and (unless
-        ``extrapolate``) 0.15 R."""
-        if self._radius_limited:
-            return DEPTH_OVER_RADIUS.high * self.radius
-        return self.curve.d_max * self._dscale
-
-    @property
-    def force_limit(self):
-        """Force at :attr:`depth_limit` [N]."""
-        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
-
-    def _limit_hint(self):
-        if self._radius_limited:
-            return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
-                    "in for the circle only for d << R (extrapolate=True accepts depths up "
-                    f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
-        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
-
-    def _dt(self, depth):
-        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
-                           hint=self._limit_hint())
-        return d / self._dscale
-
-    def _psi_of_force(self, force):
-        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
-                           hint=self._limit_hint())
-        # F <= force_limit was checked; F/scale may still round above psi_max at the end
-        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
-
-    def force(self, depth):
-        """F(d) [N]; depth [m]."""
-        return out(self.curve.psi(self._dt(depth)) * self._fscale)
-
-    def depth(self, force):
-        """d(F) [m]; force [N]."""
-        d = self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale
-        return out(np.minimum(d, self.depth_limit))   # rounding at the closed end only
-
-    def stiffness(self, depth):
-        """k(d) = dF/dd [N/m]; depth [m]."""
-        return out(self.curve.dpsi(self._dt(depth)) * self.estar * self.length)
-
-    def profile(self, x):
-        """MDR profile g(x) [m] for 0 <= x <= the MDR radius at the table's end [m]."""
-        xv = np.asarray(x, dtype=float)
-        if np.any(~np.isfinite(xv)) or np.any(xv < 0):
-            bad = float(xv[~(np.isfinite(xv) & (xv >= 0))].flat[0]) if xv.ndim else float(xv)
-            raise OutOfRangeError("x", bad, "[0, inf) m", unit="m")
-        try:
-            return out(self.curve.depth_of_x(xv / self.length) * self._dscale)
-        except OutOfRangeError as exc:
-            raise OutOfRangeError("x", float(exc.value) * self.length,
-                                  f"[0, {self.curve.x_max * self.length:.6g}] m", unit="m",
-                                  hint=exc.hint) from None
+def __getattr__(name):
+    # UniversalModel lives in linecontact.models with every other model; the old import
+    # path linecontact.universal.UniversalModel keeps working
+    if name == "UniversalModel":
+        from .models import UniversalModel
+        return UniversalModel
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -167,7 +167,7 @@ class Interval:
                 name or self.name, value, self.low, self.high,
                 low_open=self.low_open, high_open=self.high_open, unit=self.unit,
                 hint=hint)
-        v = _as_float_array(name or self.name, value)
+        v = _as_float_array(name or self.name, value, self.unit)
         lo, hi = self.low, self.high
         if np.isfinite(lo) and not self.low_open:
             v = np.where((v < lo) & (v >= lo - self.rtol * abs(lo)), lo, v)
@@ -184,12 +184,106 @@ class Interval:
                 high_open=self.high_open, unit=self.unit, hint=hint)
 
 
-def _as_float_array(name, value):
+#: pint unit of each unit string used in the checks (the library's SI units).
+_PINT_UNITS = {"m": "meter", "N": "newton", "Pa": "pascal", "N/m": "newton / meter",
+               "": "dimensionless"}
+
+
+def _as_float_array(name, value, unit=""):
+    """`value` as a float array in SI, refusing what would silently lose information.
+
+    Refused (:class:`OutOfRangeError`): complex numbers with a nonzero imaginary part,
+    masked arrays with masked elements (the mask would be dropped), booleans,
+    datetimes and timedeltas, strings (the library takes numbers in SI; the command
+    line parses units), and subnormal numbers (nonzero below 2.2e-308: precision lost).
+    A pint Quantity is converted to `unit` (SI), or refused if its dimension differs;
+    the check does not import pint (it recognises a Quantity by its attributes).
+    """
+    if hasattr(value, "dimensionality") and hasattr(value, "magnitude") \
+            and hasattr(value, "to"):
+        target = _PINT_UNITS.get(unit, unit)
+        try:
+            value = value.to(target).magnitude
+        except Exception as exc:  # pint's DimensionalityError or an unknown unit
+            raise OutOfRangeError(
+                name, str(value), f"a quantity in {unit or 'dimensionless units'}",
+                hint=f"its dimension {value.dimensionality} is not that of "
+                     f"{target}") from exc
+    if np.ma.isMaskedArray(value) and np.ma.getmaskarray(value).any():
+        raise OutOfRangeError(
+            name, "a masked array with masked elements", "an array of real numbers",
+            hint="the mask would be lost; fill or drop the masked values first "
+                 "(numpy.ma.filled or .compressed())")
+    if isinstance(value, (bool, np.bool_)) or (
+            isinstance(value, (list, tuple)) and _has_bool(value)):
+        raise OutOfRangeError(name, repr(value), "real numbers, not booleans")
+    if isinstance(value, (str, bytes)):
+        raise OutOfRangeError(name, value, f"a number in {unit or '[-]'} (SI)",
+                              hint="the library takes numbers in SI; units are parsed "
+                                   "by the command line")
+    import datetime as _dt
+    if isinstance(value, (_dt.date, _dt.time, _dt.timedelta, np.datetime64,
+                          np.timedelta64)):
+        raise OutOfRangeError(name, str(value), "real numbers, not dates or durations")
     try:
-        return np.asarray(value, dtype=float)
+        arr = np.asarray(value)
     except (TypeError, ValueError) as exc:
         raise OutOfRangeError(name, str(value), "real numbers",
                               hint="it is not a number") from exc
+    kind = arr.dtype.kind
+    if kind == "b":
+        raise OutOfRangeError(name, "an array of booleans", "real numbers, not booleans")
+    if kind in "mM":
+        raise OutOfRangeError(name, f"an array of {arr.dtype}",
+                              "real numbers, not dates or durations")
+    if kind in "USa":
+        raise OutOfRangeError(name, "an array of strings", f"numbers in {unit or '[-]'}"
+                              " (SI)", hint="the library takes numbers in SI; units are "
+                              "parsed by the command line")
+    if kind == "c":
+        if np.any(arr.imag != 0):
+            raise OutOfRangeError(name, "a complex value with a nonzero imaginary part",
+                                  "real numbers",
+                                  hint="the imaginary part would be dropped")
+        arr = arr.real
+    if kind == "O":
+        flat = arr.ravel()
+        if any(isinstance(x, (bool, np.bool_)) for x in flat):
+            raise OutOfRangeError(name, repr(value), "real numbers, not booleans")
+        if any(isinstance(x, complex) and x.imag != 0 for x in flat):
+            raise OutOfRangeError(name, "a complex value with a nonzero imaginary part",
+                                  "real numbers", hint="the imaginary part would be dropped")
+        if any(hasattr(x, "dimensionality") for x in flat):
+            raise OutOfRangeError(name, "an array of pint Quantities", "real numbers in SI, "
+                                  "or one Quantity holding an array")
+        if any(isinstance(x, (str, bytes, _dt.date, _dt.timedelta, np.datetime64,
+                              np.timedelta64)) for x in flat):
+            raise OutOfRangeError(name, repr(value), "real numbers")
+        flat = [x.real if isinstance(x, complex) else x for x in flat]
+        arr = np.asarray(flat).reshape(arr.shape)
+    try:
+        v = np.asarray(arr, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise OutOfRangeError(name, str(value), "real numbers",
+                              hint="it is not a number") from exc
+    tiny = np.finfo(float).tiny
+    with np.errstate(invalid="ignore"):
+        sub = (v != 0) & (np.abs(v) < tiny)
+    if np.any(sub):
+        bad = float(v[sub].ravel()[0]) if v.ndim else float(v)
+        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {tiny:.6g}",
+                              unit=unit, hint="a subnormal number has lost precision")
+    return v
+
+
+def _has_bool(seq):
+    """True if a (nested) list or tuple holds a bool anywhere."""
+    for x in seq:
+        if isinstance(x, (bool, np.bool_)):
+            return True
+        if isinstance(x, (list, tuple)) and _has_bool(x):
+            return True
+    return False
 
 
 def check_interval(name, value, low, high, *, low_open=False, high_open=False, unit="",
@@ -233,7 +327,7 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     ...
     linecontact.validity.OutOfRangeError: poisson = 0.5 (element [1] of shape (2,)) is outside the valid range [0, 0.5)
     """
-    v = _as_float_array(name, value)
+    v = _as_float_array(name, value, unit)
     lo = np.asarray(low, dtype=float)
     hi = np.asarray(high, dtype=float)
     above = v > lo if low_open else v >= lo
@@ -307,4 +401,6 @@ POSITIVE_LENGTH = Interval("length", 0.0, np.inf, True, True, "m")
 POSITIVE_FORCE = Interval("force", 0.0, np.inf, True, True, "N")
 POSITIVE_DEPTH = Interval("depth", 0.0, np.inf, True, True, "m")
 POSITIVE_MODULUS = Interval("modulus", 0.0, np.inf, True, True, "Pa")
-POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, True, "")
+#: Poisson's ratio: 0.5 (incompressible: rubber, elastomer coatings) is included; E* of
+#: Eq. 3 stays finite there, 1 - nu^2 = 0.75 (Li & Popov (2017), Eq. 3).
+POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, False, "")

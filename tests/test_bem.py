@@ -1,5 +1,5 @@
 """Verification of the boundary-element solver in tools/ against exact answers
-(SPEC section 8). Each test states the fact it checks and why its tolerance is what
+(docs/theory.md, section 'Verification'). Each test states the fact it checks and why its tolerance is what
 it is; grids are small so the whole file runs in seconds."""
 import numpy as np
 import pytest
@@ -197,7 +197,7 @@ def test_cylinder_force_converges_with_the_grid():
 
 
 def test_universal_scaling_holds_in_the_bem():
-    """SPEC section 5: with h = y^2/(2R) the problem depends on d R/L^2 alone, so
+    """docs/theory.md, section 'Self-similarity': with h = y^2/(2R) the problem depends on d R/L^2 alone, so
     F R/(E* L^3) at equal d R/L^2 is the same for any L/R, E*, R when the grid scales
     with the problem (identical discrete systems: agreement to solver tolerance)."""
     base = sweep(2.0, n=(24, 16), steps=2, d_max_over_r=0.02, progress=False,

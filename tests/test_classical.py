@@ -35,8 +35,8 @@ def test_effective_modulus_steel_on_steel():
     assert STEEL_ESTAR == pytest.approx(E_STEEL, rel=1e-15)
 
 
-@given(E1=st.floats(1e6, 1e12), n1=st.floats(0, 0.499), E2=st.floats(1e6, 1e12),
-       n2=st.floats(0, 0.499))
+@given(E1=st.floats(1e6, 1e12), n1=st.floats(0, 0.5, allow_subnormal=False), E2=st.floats(1e6, 1e12),
+       n2=st.floats(0, 0.5, allow_subnormal=False))
 def test_effective_modulus_is_symmetric_and_rigid_limit(E1, n1, E2, n2):
     """Eq. 3 is symmetric in the two bodies; a rigid body (E = inf) adds no compliance."""
     assert effective_modulus(E1, n1, E2, n2) == pytest.approx(
@@ -45,17 +45,41 @@ def test_effective_modulus_is_symmetric_and_rigid_limit(E1, n1, E2, n2):
     assert effective_modulus(np.inf, 0.2, E1, n1) == pytest.approx(E1 / (1 - n1**2), rel=1e-14)
 
 
-@pytest.mark.parametrize("args, name", [((210e9, 0.5), "poisson1"), ((210e9, -0.1), "poisson1"),
+@pytest.mark.parametrize("args, name", [((210e9, 0.51), "poisson1"), ((210e9, -0.1), "poisson1"),
                                         ((-1.0, 0.3), "modulus1"), ((np.nan, 0.3), "modulus1"),
                                         ((210e9, 0.3, 0.0, 0.3), "modulus2"),
                                         ((210e9, 0.3, 210e9, 0.7), "poisson2"),
                                         ((np.inf, 0.3, np.inf, 0.3), "modulus1")])
 def test_effective_modulus_refuses_bad_input(args, name):
-    """Poisson ratio outside [0, 0.5), non-positive/NaN moduli, two rigid bodies: raise
+    """Poisson ratio outside [0, 0.5], non-positive/NaN moduli, two rigid bodies: raise
     OutOfRangeError naming the parameter."""
     with pytest.raises(OutOfRangeError) as err:
         effective_modulus(*args)
     assert err.value.parameter == name
+
+
+def test_incompressible_poisson_ratio_gives_a_finite_modulus():
+    """nu = 0.5 (rubber, incompressible coatings) is a valid material: Eq. 3 gives
+    1/E* = 0.75/E1 + 0.75/E2, finite; e.g. rubber on rubber E* = E / 1.5, rubber on a
+    rigid body E* = 4 E / 3 (exact in binary up to one rounding)."""
+    E = 5e6
+    assert effective_modulus(E, 0.5, E, 0.5) == pytest.approx(E / 1.5, rel=1e-15)
+    assert effective_modulus(E, 0.5) == pytest.approx(4 * E / 3, rel=1e-15)
+    assert effective_modulus(210e9, 0.3, E, 0.5) == pytest.approx(
+        1 / ((1 - 0.09) / 210e9 + 0.75 / E), rel=1e-15)
+
+
+def test_second_modulus_without_its_poisson_ratio_is_refused():
+    """A finite modulus2 without poisson2 raises (as the CLI does) instead of taking a
+    default nu2 = 0, which would make E* up to 25 % too small (1 - nu2^2 = 0.75 at
+    nu2 = 0.5); a rigid second
+    body (modulus2 omitted or inf) needs none."""
+    with pytest.raises(OutOfRangeError) as err:
+        effective_modulus(210e9, 0.3, 70e9)
+    assert err.value.parameter == "poisson2" and "modulus2" in str(err.value)
+    with pytest.raises(OutOfRangeError):
+        effective_modulus(210e9, 0.3, np.array([np.inf, 70e9]))
+    assert effective_modulus(210e9, 0.3, np.inf) == effective_modulus(210e9, 0.3)
 
 
 # ---- Eq. 1, Eq. 2 ------------------------------------------------------------------------

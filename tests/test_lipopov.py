@@ -10,6 +10,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scipy.integrate import quad
 from scipy.interpolate import CubicSpline
+from scipy.special import lambertw
+
+from linecontact._numerics import NotAKnotSpline, lambertw_m1, log1p_excess_root
 
 from linecontact.lipopov import (ALPHA_EQ11, BETA_EQ11, available_coefficient_sets,
                                  coefficient_set, dimensionless_profile,
@@ -22,7 +25,7 @@ from linecontact.validity import OutOfRangeError
 
 STEEL_ESTAR = 210e9 / (2 * (1 - 0.3**2))
 
-# Li & Popov 2017, Table 1, as printed (SPEC.md section 4), typed here independently of
+# Li & Popov 2017, Table 1, as printed in the paper, typed here independently of
 # tables/lipopov_published.csv: a literature fixture.
 TABLE_1 = [
     (0.1, 3.8695, 17.1183), (0.2, 2.8664, 6.6132), (0.3, 2.4734, 3.9560),
@@ -47,7 +50,9 @@ def _geom(R, L, a, b, E=STEEL_ESTAR):
 @given(u=st.floats(0.01, 50.0), a=alphas, b=betas)
 def test_force_closed_form_is_the_mdr_integral_of_eq7(u, a, b):
     """F = 2 alpha beta E* L^3/R exp(-u) equals 2E* int_0^a (d - g) dx with g of Eq. 7,
-    a = alpha L / u and d = g(a) (SPEC section 4, derived, checked by quadrature)."""
+    a = alpha L / u and d = g(a) (Li & Popov (2017), Eq. 7 integrated by the MDR rules,
+    docs/theory.md, section 'MDR'; derived in linecontact/lipopov.py, checked here by
+    quadrature)."""
     R, L, E = 5e-3, 10e-3, STEEL_ESTAR
     a_c = a * L / u
     g = lambda x: lipopov_profile(x, R, L, alpha=a, beta=b)
@@ -286,3 +291,52 @@ def test_L_over_R_at_a_range_end_survives_rounding():
     assert lipopov_coefficients(6.0 * (1 + 1e-13), "published")[1] == pytest.approx(0.5091)
     with pytest.raises(OutOfRangeError):
         lipopov_coefficients(5.0 * (1 - 1e-9), "eq11")
+
+
+# ---- the numpy spline and W_-1 that replace scipy at run time -----------------------------
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 15, 123])
+def test_numpy_spline_is_scipys_not_a_knot_spline(n):
+    """NotAKnotSpline is scipy's CubicSpline (default not-a-knot ends, also its 2- and
+    3-point special cases): coefficients and values, first and second derivatives agree
+    to 1e-12 of the largest magnitude on random, unevenly spaced knots, inside the knots
+    and on the continued end polynomials. The tolerance is the conditioning of the slope
+    system (knot spacings down to ~1e-3 of the span) times rounding, with a margin."""
+    rng = np.random.default_rng(n)
+    x = np.sort(rng.uniform(-3.0, 3.0, n))
+    y = rng.normal(size=n)
+    ref, got = CubicSpline(x, y), NotAKnotSpline(x, y)
+    np.testing.assert_allclose(got.c, ref.c, rtol=0, atol=1e-12 * np.abs(ref.c).max())
+    xq = np.linspace(x[0] - 0.5, x[-1] + 0.5, 3001)
+    for nu in (0, 1, 2):
+        r = ref(xq, nu)
+        np.testing.assert_allclose(got(xq, nu), r, rtol=0, atol=1e-12 * np.abs(r).max(),
+                                   err_msg=f"derivative order {nu}")
+
+
+def test_numpy_lambert_w_minus_1_agrees_with_scipy():
+    """lambertw_m1 equals scipy.special.lambertw(x, k=-1) to 1e-12 relative over
+    x = -D/e, D from 1e-300 to 1 - 1e-6. Nearer the branch point x = -1/e no
+    implementation can agree to 1e-12: the rounding of x alone moves W by eps/|1 + W|
+    relative (dW/dx = W / (x (1 + W))), 1.6e-12 at D = 1 - 1e-8; at 1 - 1e-6 it is
+    1.6e-13. The next test covers that end in a well-conditioned variable."""
+    D = np.concatenate([np.geomspace(1e-300, 0.5, 3000), 1 - np.geomspace(0.5, 1e-6, 3000)])
+    x = -D / np.e
+    np.testing.assert_allclose(lambertw_m1(x), lambertw(x, k=-1).real, rtol=1e-12)
+
+
+def test_numpy_lambert_w_solves_its_equation_to_rounding_near_the_branch_point():
+    """Where D = (u+1) e^-u -> 1 the root u of u - ln(1+u) = -ln D is found to rounding:
+    the residual is below 1e-14 relative to t, from t = 1e-30 to 700 (D from 1e-304 to
+    1 - 1e-30), and t = 0 gives u = 0 (D = 1: the depth bound). 1e-14: the residual is
+    itself evaluated with the series below u = 0.3 and as u - log1p(u) above, which
+    loses up to ~15 ulp to cancellation at u = 0.3 (t = 0.038)."""
+    from linecontact._numerics import _excess
+    t = np.concatenate([np.geomspace(1e-30, 700, 4000), [0.0]])
+    u = log1p_excess_root(t)
+    np.testing.assert_allclose(_excess(u[:-1]), t[:-1], rtol=1e-14)
+    assert u[-1] == 0.0 and np.all(u[:-1] > 0)
+    one_by_one = np.array([float(log1p_excess_root(x)) for x in t[::40]])
+    np.testing.assert_allclose(one_by_one, u[::40], rtol=2e-15,
+                               err_msg="the scalar path is the array path (to rounding)")
+    with pytest.raises(ValueError):
+        lambertw_m1(0.1)

@@ -1,4 +1,4 @@
-"""General MDR transforms (SPEC section 3; Popov & Hess 2015).
+"""General MDR transforms (docs/theory.md, section 'MDR'; Popov & Hess 2015).
 
 Each test states the fact it checks in its docstring and assertion message.
 """
@@ -20,7 +20,7 @@ R, L = 5e-3, 10e-3
 
 
 def test_sphere_profile_gives_hertz():
-    """Known answer (SPEC section 8): the MDR profile of a sphere, g = x^2/R, gives Hertz,
+    """Known answer (docs/theory.md, section 'Verification'): the MDR profile of a sphere, g = x^2/R, gives Hertz,
     F = 4/3 E* sqrt(R) d^(3/2), and a = sqrt(R d)."""
     Rs = 10e-3
     d = np.geomspace(1e-9, 1e-4, 6)

@@ -10,7 +10,8 @@ from hypothesis import strategies as st
 import linecontact as lc
 from linecontact.mdr import mdr_force
 from linecontact.tables import read_table
-from linecontact.universal import UniversalModel, universal_curve
+from linecontact.models import UniversalModel
+from linecontact.universal import universal_curve
 from linecontact.validity import OutOfRangeError
 
 TABLE = read_table("universal_curve")
@@ -36,6 +37,20 @@ def test_runtime_spline_reproduces_the_table_stiffness_column():
     np.testing.assert_allclose(CURVE.dpsi(d), TABLE.columns["dPsi"], rtol=1e-9)
 
 
+def test_runtime_spline_is_scipys_cubic_spline_of_the_table():
+    """The runtime evaluates the table's spline in numpy (no scipy import at run time);
+    it is scipy's CubicSpline(ln d~, ln Psi) to 1e-12 (relative to the largest value), in
+    value, slope and curvature, between the knots where the inversions and k use them."""
+    from scipy.interpolate import CubicSpline
+    z, lp = np.log(TABLE.columns["d_tilde"]), np.log(TABLE.columns["Psi"])
+    ref = CubicSpline(z, lp)
+    zq = np.linspace(z[0], z[-1], 20001)
+    for nu, got in ((0, CURVE._spline(zq)), (1, CURVE._slope(zq)), (2, CURVE._curv(zq))):
+        r = ref(zq, nu)
+        np.testing.assert_allclose(got, r, rtol=0, atol=1e-12 * np.abs(r).max(),
+                                   err_msg=f"derivative order {nu}")
+
+
 def test_force_and_stiffness_increase_with_depth():
     """F(d) is increasing and convex (k = dF/dd increasing: the contact grows), over the
     table and the small-depth continuation below it."""
@@ -55,7 +70,7 @@ def test_stiffness_is_the_derivative_of_the_force():
 
 
 def test_depth_inverts_force_and_profile_inverts_contact_radius():
-    """d(F(d)) = d, and the MDR profile satisfies g(a(d)) = d (SPEC section 3)."""
+    """d(F(d)) = d, and the MDR profile satisfies g(a(d)) = d (the MDR rules, docs/theory.md, section 'MDR')."""
     m = UniversalModel(2e-3, 30e-3, 70e9)
     d = np.geomspace(1e-13, 0.99 * m.depth_limit, 300)
     np.testing.assert_allclose(m.depth(m.force(d)), d, rtol=1e-11)
@@ -81,7 +96,7 @@ def test_continuation_below_the_table_is_continuous():
 
 
 def test_small_depth_asymptote_holds_within_a_tenth_of_a_percent():
-    """SPEC section 5: as d~ -> 0 the 2D log law (alpha = pi/2) takes over with a beta
+    """docs/theory.md, section 'Self-similarity': as d~ -> 0 the 2D log law (alpha = pi/2) takes over with a beta
     that still drifts slowly. The continuation uses beta_eff at the table's smallest
     depth; the drift of beta_eff over the table's last decade, times the sensitivity
     dF/F, must be below 1e-3: the asymptote then holds
@@ -98,7 +113,7 @@ def test_small_depth_asymptote_holds_within_a_tenth_of_a_percent():
 
 
 def test_long_cylinders_follow_the_2d_log_law_with_alpha_pi_over_2():
-    """SPEC section 8: for a long contact strip (small d~) the MDR profile is Eq. 7 with
+    """docs/theory.md, section 'Verification': for a long contact strip (small d~) the MDR profile is Eq. 7 with
     alpha = pi/2: fitting alpha, beta of Eq. 9 to the curve over the table's lowest
     three decades gives alpha within 3 % of pi/2."""
     from scipy.optimize import least_squares
@@ -170,7 +185,7 @@ def test_universal_is_the_default_model():
        lam=st.floats(1e-3, 1e3), dt=st.floats(1e-10, 10.0))
 def test_scaling_law_is_exact(R, L, E, lam, dt):
     """F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*, and
-    F R/(E* L^3) depends on d R/L^2 alone (SPEC section 5)."""
+    F R/(E* L^3) depends on d R/L^2 alone (docs/theory.md, section 'Self-similarity')."""
     d = dt * L * L / R
     F = UniversalModel(R, L, E, extrapolate=True).force(d)   # d/R may exceed 0.15 here
     assert UniversalModel(lam * R, lam * L, E, extrapolate=True).force(lam * d) == \
@@ -210,7 +225,7 @@ def test_runtime_agrees_with_a_coarse_bem_run(l_over_r, log_d_over_r):
 
 
 def test_paper_sweeps_collapse_onto_the_universal_curve():
-    """SPEC section 5, checked on two independent BEM computations: the paper study's
+    """docs/theory.md, section 'Self-similarity', checked on two independent BEM computations: the paper study's
     2900 points (29 L/R, fixed 512^2 grids, tables/bem_paper_curves.csv) in the form
     F R/(E* L^3) against d R/L^2 lie on the universal curve (adapted grids, Richardson)
     within the 512^2 grids' own error: measured 5.7e-4 in F, 3.5e-3 in k."""

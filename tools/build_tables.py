@@ -1,45 +1,43 @@
 """Regenerate the computed tables in tables/ (the only writer of those files).
 
-Subcommands, each with its own options (``--help``):
+Subcommands, each with its own options (``--help``); every study runs its tasks through
+tools.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoints and
+``--resume``) and writes headers with tools.runner.table_meta:
 
 ``universal``
-    The universal curve Psi(d~), Phi (SPEC section 5) on adapted grids:
-    tables/universal_curve.csv (tools.universal_study).
+    The universal curve Psi(d~), Phi (docs/theory.md, section 'Self-similarity') on
+    adapted grids: tables/universal_curve.csv (tools.universal_study).
 ``paper``
-    The paper's study (SPEC section 6): BEM sweeps per L/R, fitted alpha, beta:
-    tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+    The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
+    beta: tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+``roller``
+    Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
+    tables/roller_accuracy.csv (tools.roller_study).
+``tangential``
+    Tangential stiffness and partial slip of the finite cylinder:
+    tables/tangential_cylinder.csv (tools.tangential_study).
 
 Run from the repository root, e.g.::
 
     python -m tools.build_tables universal
     python -m tools.build_tables paper --l-over-r 5 --n 128 --out /tmp/check
+    python -m tools.build_tables universal --scheduler tcp://HOST:8786
 """
 from __future__ import annotations
 
 import argparse
 import importlib
-import subprocess
 import sys
-from pathlib import Path
+
+from .runner import code_version  # noqa: F401  (re-exported: tools.accuracy uses it)
 
 SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",
+    "roller": "tools.roller_study",
+    "tangential": "tools.tangential_study",
+    "accuracy": "tools.accuracy",
 }
-
-
-def code_version():
-    """'linecontact X, git DESCRIBE' of the checkout that runs this: the ``version`` /
-    ``code_version`` line of every table the tools write."""
-    import linecontact
-    try:
-        described = subprocess.run(
-            ["git", "describe", "--always", "--dirty", "--tags"],
-            cwd=Path(__file__).resolve().parent, capture_output=True, text=True,
-            timeout=10).stdout.strip() or "unknown"
-    except (OSError, subprocess.SubprocessError):
-        described = "unknown"
-    return f"linecontact {linecontact.__version__}, git {described}"
 
 
 def main(argv=None):

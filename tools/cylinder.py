@@ -1,6 +1,6 @@
 """Drivers for the finite cylinder: the paper's sweep and depths on adapted grids.
 
-The problem (Li & Popov 2017, section 2; SPEC section 1): a rigid cylinder of radius R
+The problem (Li & Popov 2017, section 2; docs/theory.md, section 'BEM'): a rigid cylinder of radius R
 and length L, axis along x, pressed by a depth d into an elastic half-space of
 effective modulus E*. The gap before loading is h(y) = y^2/(2R) for |x| <= L/2 and
 there is no indenter beyond the flat ends, so the grid covers the cylinder's
@@ -16,7 +16,7 @@ Two drivers:
     positive), depths d_max/steps, ..., d_max, each step warm-started from the
     extrapolation of the previous two.
 ``solve_depth``
-    One dimensionless depth d~ = d R/L^2 (SPEC section 5) on a grid adapted to its
+    One dimensionless depth d~ = d R/L^2 (docs/theory.md, section 'Self-similarity') on a grid adapted to its
     own contact: n_length cells along the half-length and n_width across the
     contact half-width b, with the strip |y| <= margin * b. b comes from a coarse
     first pass; the fine pass is repeated on a wider strip if its contact reaches

@@ -8,7 +8,7 @@ pressure field (Fig. 2) runs the BEM (one sweep to d = 0.1 R, about half a minut
 512 x 512). matplotlib is an optional dependency (the ``tools`` extra).
 
 ``paper_fig3_collapse.png``
-    All 29 L/R in dimensionless form (SPEC section 5): F R/(E* L^3) against d R/L^2,
+    All 29 L/R in dimensionless form (docs/theory.md, section 'Self-similarity'): F R/(E* L^3) against d R/L^2,
     and the extracted MDR profiles g~ against x~ (Eq. 8) with their fits of Eq. 9
     (the paper's Fig. 3b).
 ``paper_fig4_coefficients.png``
@@ -45,12 +45,12 @@ def _plt():
 
 def _load(tables):
     from linecontact.tables import read_table
-    from tools import paper_study
-    cur = read_table(paper_study.CURVES, directory=tables)
-    reg = read_table(paper_study.REGENERATED, directory=tables)
+    from tools.paper_tables import CURVES, REGENERATED, RESIDUAL_COMPARISON
+    cur = read_table(CURVES, directory=tables)
+    reg = read_table(REGENERATED, directory=tables)
     pub = read_table("lipopov_published")
     try:
-        comp = read_table(paper_study.RESIDUAL_COMPARISON, directory=tables)
+        comp = read_table(RESIDUAL_COMPARISON, directory=tables)
     except FileNotFoundError:
         comp = None
     return cur, reg, pub, comp
@@ -63,7 +63,7 @@ def _colors(plt, qs):
 
 
 def fig3(plt, cur, reg, out):
-    from tools.paper_study import form_g
+    from linecontact.lipopov import dimensionless_profile
     c = cur.columns
     qs = np.unique(c["L_over_R"])
     cmap, norm = _colors(plt, qs)
@@ -77,7 +77,7 @@ def fig3(plt, cur, reg, out):
         if i.size:
             a, b = reg.columns["alpha"][i[0]], reg.columns["beta"][i[0]]
             x = np.geomspace(c["x_tilde"][m].min(), c["x_tilde"][m].max(), 200)
-            ax2.loglog(x, form_g(x, a, b), "-", lw=0.9, color=col)
+            ax2.loglog(x, dimensionless_profile(x, a, b), "-", lw=0.9, color=col)
     # the universal curve (tables/universal_curve.csv: adapted grids, Richardson), drawn
     # over the same range: an independent BEM computation of the one curve
     from linecontact.tables import read_table
@@ -115,11 +115,12 @@ def fig4(plt, reg, pub, comp, out):
     from scipy.interpolate import CubicSpline
 
     from linecontact.lipopov import ALPHA_EQ11, BETA_EQ11
-    from tools.paper_study import RESIDUALS
+    from tools.paper_fit import RESIDUALS
     r, p = reg.columns, pub.columns
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), constrained_layout=True)
     q = np.geomspace(r["L_over_R"].min(), r["L_over_R"].max(), 300)
-    # the runtime's interpolation (linecontact.lipopov: cubic spline in log(L/R))
+    # the runtime's interpolation of a table in any folder: the not-a-knot cubic spline in
+    # log(L/R) (tests/test_paper_study.py asserts the runtime's equals it to 1e-13)
     lq = np.log(r["L_over_R"])
     spline = (CubicSpline(lq, r["alpha"])(np.log(q)), CubicSpline(lq, r["beta"])(np.log(q)))
     shipped = reg.meta.get("residual", "").split(":")[0]
@@ -152,7 +153,7 @@ def fig4(plt, reg, pub, comp, out):
 
 def fig7(plt, cur, reg, out):
     from linecontact.lipopov import ALPHA_EQ11, BETA_EQ11
-    from tools.paper_study import form_g
+    from linecontact.lipopov import dimensionless_profile
     c = cur.columns
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.4), constrained_layout=True)
     for ax, sel in ((ax1, (5.0, 10.0, 20.0)), (ax2, (0.5, 1.0, 2.0))):
@@ -167,12 +168,12 @@ def fig7(plt, cur, reg, out):
             x = np.linspace(1e-3, c["x_tilde"][m].max() * 1.05, 300)
             xs.append(x[-1])
             if i.size:
-                ax.plot(x, form_g(x, reg.columns["alpha"][i[0]], reg.columns["beta"][i[0]]),
+                ax.plot(x, dimensionless_profile(x, reg.columns["alpha"][i[0]], reg.columns["beta"][i[0]]),
                         "-", lw=1, color=f"C{k}")
         x = np.linspace(1e-3, max(xs), 400)
-        ax.plot(x, form_g(x, math.pi / 2, 1.0), "k--", lw=1.2,
+        ax.plot(x, dimensionless_profile(x, math.pi / 2, 1.0), "k--", lw=1.2,
                 label=r"Eq. 2 (P&T): $\alpha=\pi/2$, $\beta=1$")
-        ax.plot(x, form_g(x, ALPHA_EQ11, BETA_EQ11), "k:", lw=1.2,
+        ax.plot(x, dimensionless_profile(x, ALPHA_EQ11, BETA_EQ11), "k:", lw=1.2,
                 label=r"Eq. 11: $\alpha=\pi/2$, $\beta=0.4573$")
         top = max(c["d_tilde"][np.isin(c["L_over_R"], sel)].max() * 1.15, 1e-3)
         ax.set_ylim(0, top)

@@ -1,11 +1,11 @@
 """The universal curve of the finite cylinder: tables/universal_curve.csv.
 
-SPEC section 5: with the parabolic gap h = y^2/(2R) the contact problem depends on the
+docs/theory.md, section 'Self-similarity': with the parabolic gap h = y^2/(2R) the contact problem depends on the
 dimensionless depth d~ = d R / L^2 alone, so for every L/R
 
     F = E* L^3/R * Psi(d~),     k = dF/dd = E* L * Psi'(d~),
 
-and the MDR profile (SPEC section 3: x = k/(2E*), g = d) is g = (L^2/R) Phi(x/L) with
+and the MDR profile (docs/theory.md, section 'MDR': x = k/(2E*), g = d) is g = (L^2/R) Phi(x/L) with
 x~ = Psi'(d~)/2 and g~ = d~ (one Phi for all L/R).
 
 What this computes, per depth (log-spaced in d~, each on its own adapted grid,
@@ -18,32 +18,37 @@ tools.cylinder.solve_depth with L = R = E* = 1):
    shipped Psi is the Richardson extrapolation 2 Psi_2N - Psi_N. Every ``check_every``-th
    depth is also solved with 4 n_length (and 2 n_width) to measure how good that
    extrapolation is; the table's accuracy line is the largest such difference.
-2. Psi' = dPsi/dd~ as the derivative of the cubic spline of ln Psi against ln d~ (the
-   same spline the runtime builds), because the flat-punch stiffness of a staircase
+2. Psi' = dPsi/dd~ as the derivative of the cubic spline of ln Psi against ln d~,
+   evaluated by the runtime itself (linecontact.universal.UniversalCurve), because the flat-punch stiffness of a staircase
    contact set scatters by up to 0.5 %; the punch value on the finer grid is kept as
    an independent check (column k_punch) and its largest deviation is reported.
 3. The effective beta of the Li-Popov form with alpha = pi/2 (Eq. 7 with the 2D log
-   law's alpha), beta_eff = Psi/pi * exp(pi d~/Psi - 1), to show how the small-depth
-   asymptote is approached (SPEC section 5). The runtime continues the curve below the
+   law's alpha), beta_eff = Psi/pi * exp(pi d~/Psi - 1)
+   (linecontact.lipopov.effective_beta), to show how the small-depth asymptote is
+   approached (docs/theory.md, section 'Self-similarity'). The runtime continues the curve below the
    table with alpha = pi/2 and beta = beta_eff at the smallest tabulated depth; the
    error of that continuation in F is |delta beta/beta| / (pi d~/Psi - 1), recorded.
 
-Budget: the default run (about 110 depths, 2 processes) is meant to finish within
-10 minutes on a 2-core machine; ``--processes`` and the grid options trade time for
-accuracy.
+Budget: the default run (about 110 depths, 2 workers) is meant to finish within
+10 minutes on a 2-core machine; ``--workers`` (or ``--scheduler`` for a cluster) and the
+grid options trade time for accuracy. The depths are tasks of tools.runner: each
+finished depth is checkpointed (default OUT/partial_universal/) and ``--resume`` picks
+them up after an interruption.
 """
 from __future__ import annotations
 
-import datetime as _dt
-import multiprocessing as mp
+import shutil
 import time
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
-from .build_tables import code_version
+from linecontact.lipopov import effective_beta, fit_dimensionless_profile
+from linecontact.tables import Table
+from linecontact.universal import UniversalCurve
+
 from .cylinder import solve_depth
+from .runner import DEFAULT_WORKERS, add_runner_arguments, run_study, table_meta
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -65,15 +70,16 @@ def add_arguments(parser):
     parser.add_argument("--check-every", type=int, default=6,
                         help="every k-th depth is also solved on finer grids to "
                              "measure the error (default 6; 0: never)")
-    parser.add_argument("--processes", type=int, default=2,
-                        help="worker processes (default 2, the machine's cores)")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for universal_curve.csv (default tables/)")
-    parser.add_argument("--no-progress", action="store_true")
+    add_runner_arguments(parser)
 
 
-def _solve_one(job):
-    d, nl, nw, tol, check = job
+def _solve_one(task):
+    """One depth (a task of tools.runner): Psi on the grids N and 2N, and on the check
+    grids where asked."""
+    d, nl, nw, tol, check = (task[k] for k in ("d_tilde", "n_length", "n_width", "tol",
+                                                 "check"))
     t0 = time.perf_counter()
     r1 = solve_depth(d, nl, nw, tol=tol, workers=1)
     r2 = solve_depth(d, 2 * nl, nw, tol=tol, workers=1)
@@ -91,38 +97,35 @@ def _solve_one(job):
     return out
 
 
-def beta_effective(d_tilde, psi):
-    """beta of Eq. 7 with alpha = pi/2 that reproduces (d~, Psi) exactly [-].
-
-    From d~ = Psi/pi (1 + ln(pi beta/Psi)) (the closed form of SPEC section 4 in
-    dimensionless form with alpha = pi/2).
-    """
-    return psi / np.pi * np.exp(np.pi * d_tilde / psi - 1.0)
+def depth_tasks(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32,
+                tol=1e-7, check_every=6):
+    """The tasks of the study: one per depth, log-spaced, every `check_every`-th (and
+    the last) also solved on the check grids."""
+    n = int(round(np.log10(d_max / d_min) * per_decade)) + 1
+    depths = np.geomspace(d_min, d_max, n)
+    return [dict(key=f"{i:04d}_d_tilde={d:.6e}", d_tilde=float(d), n_length=int(n_length),
+                 n_width=int(n_width), tol=float(tol),
+                 check=bool(check_every) and (i % check_every == 0 or i == n - 1))
+            for i, d in enumerate(depths)]
 
 
 def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol=1e-7,
-            check_every=6, processes=2, progress=True):
-    """Run the study; returns (columns dict, summary dict)."""
-    n = int(round(np.log10(d_max / d_min) * per_decade)) + 1
-    depths = np.geomspace(d_min, d_max, n)
-    jobs = [(float(d), n_length, n_width, tol,
-             bool(check_every) and (i % check_every == 0 or i == n - 1))
-            for i, d in enumerate(depths)]
+            check_every=6, **runner):
+    """Run the study through tools.runner.run_study (keyword options `runner`:
+    scheduler, workers, checkpoint, resume, progress); returns (columns, summary)."""
+    tasks = depth_tasks(d_min, d_max, per_decade, n_length, n_width, tol, check_every)
+    depths = np.array([t["d_tilde"] for t in tasks])
+    n = len(tasks)
     t0 = time.perf_counter()
-    if processes > 1:
-        ctx = mp.get_context("fork")
-        with ctx.Pool(processes) as pool:
-            it = pool.imap(_solve_one, jobs)
-            rows = list(_bar(it, len(jobs), progress))
-    else:
-        rows = [_solve_one(j) for j in _bar(jobs, len(jobs), progress)]
+    rows = run_study(_solve_one, tasks, desc="universal curve (depths)", **runner)
     wall = time.perf_counter() - t0
-    col = {k: np.array([r[k] for r in rows]) for k in rows[0]}
+    col = {k: np.array([r[k] for r in rows]) for k in rows[0] if k != "resumed"}
     psi = 2 * col["psi_2n"] - col["psi_n"]          # Richardson, order 1
-    spline = CubicSpline(np.log(depths), np.log(psi))
-    slope = spline(np.log(depths), 1)
-    dpsi = psi / depths * slope
-    beta = beta_effective(depths, psi)
+    beta = effective_beta(depths, psi)               # alpha = pi/2
+    # Psi' from the runtime's own spline of ln Psi against ln d~ (on the table's knots)
+    curve = UniversalCurve(Table(meta={"beta_small": repr(float(beta[0]))},
+                                 columns={"d_tilde": depths, "Psi": psi}))
+    dpsi = np.asarray(curve.dpsi(depths))
     checked = np.isfinite(col["psi_4n"])
     psi_fine = 2 * col["psi_4n"] - col["psi_2n"]
     richardson_err = np.abs(psi[checked] / psi_fine[checked] - 1)
@@ -145,7 +148,7 @@ def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol
     # the small-depth limit: a free fit of Eq. 9 over the lowest three decades (alpha
     # should be pi/2), and beta_eff extrapolated in 1/x, x = pi d~/Psi ~ ln(1/d~)
     low = depths <= depths[0] * 1e3
-    alpha_fit, beta_fit = fit_eq9(dpsi[low] / 2, depths[low])
+    alpha_fit, beta_fit = fit_dimensionless_profile(dpsi[low] / 2, depths[low])
     x = np.pi * depths / psi
     tail = depths <= 1e-8
     beta_limit = [float(np.linalg.lstsq(
@@ -164,37 +167,25 @@ def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol
         beta_small=float(beta[0]), drift_per_decade=float(drift_per_decade),
         continuation_err_per_decade=float(drift_per_decade * sens),
         alpha_fit=float(alpha_fit), beta_fit=float(beta_fit), beta_limit=beta_limit,
-        checked=int(checked.sum()), monotone=bool(np.all(np.diff(psi) > 0)
+        checked=int(checked.sum()), resumed=sum(bool(r.get("resumed")) for r in rows),
+        monotone=bool(np.all(np.diff(psi) > 0)
                                                    and np.all(np.diff(dpsi) > 0)),
     )
     return columns, summary
 
 
-def fit_eq9(x_tilde, g_tilde):
-    """Least-squares alpha, beta of Eq. 9 (relative residual in g~) [-]."""
-    from scipy.optimize import least_squares
-
-    def res(p):
-        a, b = p
-        return np.log(b * (a / x_tilde + 1) * np.exp(-a / x_tilde)) - np.log(g_tilde)
-
-    return least_squares(res, [np.pi / 2, 0.5]).x
-
-
-def _bar(iterable, total, enabled):
-    if not enabled:
-        return iterable
-    from tqdm import tqdm
-    return tqdm(iterable, total=total, desc="universal curve", unit="depth")
-
-
 def run(args):
     from linecontact.tables import write_table
 
+    checkpoint = args.checkpoint or args.out / "partial_universal"
     columns, s = compute(args.d_min, args.d_max, args.per_decade, args.n_length,
-                         args.n_width, args.tol, args.check_every, args.processes,
-                         not args.no_progress)
-    meta = {
+                         args.n_width, args.tol, args.check_every,
+                         scheduler=args.scheduler, workers=args.workers,
+                         checkpoint=checkpoint, resume=args.resume,
+                         progress=not args.no_progress)
+    where = (f"on the dask cluster at {args.scheduler}" if args.scheduler else
+             f"with {args.workers or DEFAULT_WORKERS} processes (local dask cluster)")
+    meta = table_meta(args.command_line, **{
         "title": "Universal force-depth curve of a rigid parabolic cylinder of finite "
                  "length on an elastic half-space: F R/(E* L^3) = Psi(d R/L^2)",
         "source": "computed by the linecontact boundary-element solver (tools/), "
@@ -207,9 +198,6 @@ def run(args):
                  "area = contact area / L^2 [-], Psi_N, Psi_2N = raw BEM forces on the two "
                  "grids [-], k_punch = flat-punch stiffness on the finer grid / (E* L) [-], "
                  "seconds = wall time of that depth [s]",
-        "generated_by": args.command_line,
-        "date": _dt.date.today().isoformat(),
-        "version": code_version(),
         "grid": f"per depth: {args.n_length} and {2 * args.n_length} cells along the "
                 f"half-length L/2, {args.n_width} across the largest contact half-width "
                 f"(strip |y| <= 1.2 b), quarter grids by symmetry; checks every "
@@ -219,7 +207,8 @@ def run(args):
                      "outside it, relative to d)",
         "method": "Psi = 2 Psi_2N - Psi_N (Richardson, first order in the axial cell "
                   "length, measured); dPsi from the cubic spline of ln Psi against "
-                  "ln d_tilde (not-a-knot), the spline the runtime uses",
+                  "ln d_tilde (not-a-knot), evaluated by the runtime "
+                  "(linecontact.universal.UniversalCurve)",
         "accuracy": f"Psi: largest difference from the extrapolation one grid finer "
                     f"{s['richardson_err']:.1e}, largest effect of doubling the cells "
                     f"across the width {s['width_err']:.1e} ({s['checked']} depths "
@@ -243,11 +232,15 @@ def run(args):
                                "used by the runtime",
         "beta_small": f"{s['beta_small']:.8f}",
         "d_tilde_range": f"[{columns['d_tilde'][0]:.6g}, {columns['d_tilde'][-1]:.6g}]",
-        "wall_time": f"{s['wall_time']:.0f} s with {args.processes} processes",
-    }
+        "wall_time": f"{s['wall_time']:.0f} s {where}"
+                     + (f" ({s['resumed']} depths resumed from an earlier run, not in "
+                        "this wall time)" if s["resumed"] else ""),
+    })
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "universal_curve.csv"
     write_table(path, meta, columns)
+    if args.checkpoint is None:
+        shutil.rmtree(checkpoint, ignore_errors=True)   # all kept in the table
     print(f"wrote {path}: {s['n']} depths in {s['wall_time']:.0f} s")
     for k, v in s.items():
         print(f"  {k}: {v}")

@@ -1,0 +1,305 @@
+r"""The two pieces of numerical analysis the runtime needs, in numpy alone.
+
+A cubic spline with not-a-knot ends (the interpolant of the shipped tables) and the
+lower branch :math:`W_{-1}` of the Lambert W function (the closed forms of the Li-Popov
+model). Both used to come from scipy (``scipy.interpolate.CubicSpline``,
+``scipy.special.lambertw``), whose import alone costs several hundred milliseconds,
+more than the whole one-case computation; tests/test_lipopov.py checks that both agree
+with scipy to 1e-12.
+
+References
+----------
+.. [1] C. de Boor, A Practical Guide to Splines, Springer (1978), ch. IV (cubic spline
+   interpolation, the not-a-knot end condition).
+.. [2] R. M. Corless, G. H. Gonnet, D. E. G. Hare, D. J. Jeffrey, D. E. Knuth, "On the
+   Lambert W function", Adv. Comput. Math. 5 (1996) 329-359.
+.. [3] N. M. Temme, Special Functions, Wiley (1996), section 11.2.3 (inversion of
+   t = u - ln(1 + u) near u = 0).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["NotAKnotSpline", "lambertw_m1", "log1p_excess_root"]
+
+
+class NotAKnotSpline:
+    r"""Cubic spline through (x_i, y_i) with not-a-knot end conditions.
+
+    On the interval :math:`[x_i, x_{i+1}]`, with :math:`t = x - x_i`,
+
+    .. math:: s(x) = c_{0,i} t^3 + c_{1,i} t^2 + c_{2,i} t + c_{3,i},
+
+    twice continuously differentiable, and the third derivative continuous across
+    :math:`x_1` and :math:`x_{n-2}` (not-a-knot). The coefficients are computed once,
+    from the knot slopes solved by one tridiagonal system (de Boor 1978, ch. IV); they are the
+    coefficients ``scipy.interpolate.CubicSpline(x, y).c`` holds (the same end rule,
+    also for 2 points: a line, and 3 points: a parabola).
+
+    Parameters
+    ----------
+    x : array_like
+        Knots, strictly increasing, at least 2 [same unit as the argument].
+    y : array_like
+        Values at the knots [any unit].
+
+    Notes
+    -----
+    Outside [x_0, x_{n-1}] the end polynomials are continued, as scipy does; callers
+    check their own ranges first. Evaluation: searchsorted + Horner, O(log n) per point.
+
+    Examples
+    --------
+    A cubic is reproduced exactly (not-a-knot has no end error for cubics):
+
+    >>> s = NotAKnotSpline([0.0, 1.0, 2.0, 3.0, 5.0], [0.0, 1.0, 8.0, 27.0, 125.0])
+    >>> float(s(4.0)), float(s(4.0, 1)), float(s(4.0, 2))
+    (64.0, 48.0, 24.0)
+
+    References
+    ----------
+    C. de Boor, A Practical Guide to Splines, Springer (1978), ch. IV.
+    """
+
+    def __init__(self, x, y):
+        x = np.asarray(x, dtype=float)
+        y = np.asarray(y, dtype=float)
+        if x.ndim != 1 or x.shape != y.shape or x.size < 2:
+            raise ValueError("spline knots: x and y must be 1-D of the same length >= 2")
+        if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
+            raise ValueError("spline knots must be finite")
+        h = np.diff(x)
+        if np.any(h <= 0):
+            raise ValueError("spline knots x must be strictly increasing")
+        m = np.diff(y) / h
+        n = x.size
+        if n == 2:
+            s = np.array([m[0], m[0]])
+        elif n == 3:
+            # not-a-knot at both ends of a single interior knot: the parabola through
+            # the three points, p'(x) = m_0 + c (2 x - x_0 - x_1)
+            c = (m[1] - m[0]) / (x[2] - x[0])
+            s = m[0] + c * (2 * x - x[0] - x[1])
+        else:
+            s = _slopes_not_a_knot(x, h, m)
+        t = (s[:-1] + s[1:] - 2 * m) / h
+        self.x = x
+        #: Coefficients, shape (4, n - 1), highest power first (scipy's PPoly layout).
+        self.c = np.stack([t / h, (m - s[:-1]) / h - t, s[:-1], y[:-1]])
+        # interval lookup: searchsorted over the interior knots gives the interval index
+        # directly, the end intervals continued outside; one gather per evaluation
+        self._inner = x[1:-1]
+        self._rows = np.ascontiguousarray(self.c.T)
+
+    def __call__(self, xq, nu=0):
+        """Value (nu = 0) or derivative of order nu = 1, 2 of the spline at xq."""
+        xq = np.asarray(xq, dtype=float)
+        i = np.searchsorted(self._inner, xq, side="right")
+        t = xq - self.x[i]
+        c = self._rows[i]
+        c0, c1, c2, c3 = c[..., 0], c[..., 1], c[..., 2], c[..., 3]
+        if nu == 0:
+            return ((c0 * t + c1) * t + c2) * t + c3
+        if nu == 1:
+            return (3 * c0 * t + 2 * c1) * t + c2
+        if nu == 2:
+            return 6 * c0 * t + 2 * c1
+        raise ValueError(f"derivative order nu = {nu!r}: 0, 1 or 2")
+
+
+def _slopes_not_a_knot(x, h, m):
+    """Knot slopes of the not-a-knot spline (n >= 4): a tridiagonal system (the
+    not-a-knot rows couple only s_0, s_1 and s_{n-2}, s_{n-1}, as scipy's banded
+    system does), solved by Gaussian elimination without pivoting in O(n).
+
+    Elimination runs in Python floats: for the tables' 15-130 knots it takes well under
+    a millisecond, where a first LAPACK call (numpy.linalg) costs 40 ms of start-up.
+    The interior rows are diagonally dominant; the first row is not (|h_1| < x_2 - x_0),
+    but eliminating it against the dominant second row is stable (the multiplier
+    h_1 / h_1 = 1 is bounded); tests/test_lipopov.py checks against scipy to 1e-12.
+    """
+    n = x.size
+    h, m = h.tolist(), m.tolist()
+    lower, diag, upper, rhs = [0.0] * n, [0.0] * n, [0.0] * n, [0.0] * n
+    for i in range(1, n - 1):
+        lower[i], diag[i], upper[i] = h[i], 2 * (h[i - 1] + h[i]), h[i - 1]
+        rhs[i] = 3 * (h[i] * m[i - 1] + h[i - 1] * m[i])
+    d = float(x[2] - x[0])
+    diag[0], upper[0] = h[1], d
+    rhs[0] = ((h[0] + 2 * d) * h[1] * m[0] + h[0] ** 2 * m[1]) / d
+    d = float(x[-1] - x[-3])
+    lower[-1], diag[-1] = d, h[-2]
+    rhs[-1] = (h[-1] ** 2 * m[-2] + (2 * d + h[-1]) * h[-2] * m[-1]) / d
+    for i in range(1, n):                      # forward elimination
+        w = lower[i] / diag[i - 1]
+        diag[i] -= w * upper[i - 1]
+        rhs[i] -= w * rhs[i - 1]
+    s = [0.0] * n
+    s[-1] = rhs[-1] / diag[-1]
+    for i in range(n - 2, -1, -1):             # back substitution
+        s[i] = (rhs[i] - upper[i] * s[i + 1]) / diag[i]
+    return np.array(s)
+
+
+# coefficients of u - ln(1 + u) = sum_{k>=2} (-1)^k u^k / k, for |u| <= 0.3: terms up
+# to k = 40 leave a relative remainder below 2 * 0.3^39 / 41 ~ 2e-22
+_SERIES = np.array([(-1.0) ** k / k for k in range(40, 1, -1)])
+_SERIES_LIST = _SERIES.tolist()
+
+
+def _excess(u):
+    """u - ln(1 + u) without cancellation for small u (series for |u| <= 0.3)."""
+    small = np.abs(u) <= 0.3
+    if not small.any():
+        return u - np.log1p(u)
+    us = np.where(small, u, 0.0)
+    acc = np.zeros_like(us)
+    for coef in _SERIES:
+        acc = acc * us + coef
+    series = acc * us * us
+    with np.errstate(invalid="ignore", divide="ignore"):
+        direct = u - np.log1p(u)
+    return np.where(small, series, direct)
+
+
+def log1p_excess_root(t):
+    r"""The root u >= 0 of :math:`u - \ln(1 + u) = t`, for t >= 0.
+
+    .. math:: u = -1 - W_{-1}\left(-e^{-1-t}\right)
+
+    the quantity the Li-Popov closed forms need with :math:`t = -\ln D` (Li & Popov
+    2017, Eq. 7 at the contact radius: :math:`(u + 1)e^{-u} = D`). Solved by Newton's
+    method from the series :math:`u = s + s^2/3 + s^3/36 - s^4/270 + s^5/4320`,
+    :math:`s = \sqrt{2t}` (small t; Temme 1996) or the fixed point
+    :math:`u = t + \ln(1 + u)` (large t), to rounding (relative error about 1e-16).
+
+    Parameters
+    ----------
+    t : float or array_like
+        0 <= t < inf [-]; t = 0 gives u = 0.
+
+    Returns
+    -------
+    ndarray
+        u >= 0 [-].
+
+    Notes
+    -----
+    Valid for 0 <= t <= 1.7e308. Working in t keeps full relative accuracy in u near
+    u = 0 (D -> 1), where :math:`W_{-1}` as a function of its argument is
+    ill-conditioned.
+
+    Examples
+    --------
+    >>> u = float(log1p_excess_root(1.0))
+    >>> round(u, 12), abs(u - math.log1p(u) - 1.0) < 1e-15
+    (2.146193220621, True)
+
+    References
+    ----------
+    N. M. Temme, Special Functions, Wiley (1996), section 11.2.3.
+    """
+    t = np.asarray(t, dtype=float)
+    if np.any(~(t >= 0)) or np.any(np.isinf(t)):
+        raise ValueError("log1p_excess_root: t must be finite and >= 0")
+    if t.size == 0:
+        return t.copy()
+    if t.ndim == 0:
+        return np.asarray(_root_scalar(float(t)))
+    pos = t > 0
+    tp = np.where(pos, t, 1.0)            # t = 0 (u = 0) is set at the end
+    with np.errstate(over="ignore"):      # the series is not used at large t
+        s = np.sqrt(2 * tp)
+        series = s * (1 + s * (1 / 3 + s * (1 / 36 + s * (-1 / 270 + s / 4320))))
+    fixed = tp + np.log1p(tp + np.log1p(tp + np.log1p(tp)))
+    up = np.where(tp < 1.0, series, fixed)
+    # Newton on h(u) = u - ln(1 + u) - t, h' = u / (1 + u). Its relative error obeys
+    # e' <= e^2 / 2, so one more step after a relative step below 1e-9 reaches rounding
+    # (a tighter stopping test would wait on the rounding noise of h).
+    for _ in range(40):
+        step = (_excess(up) - tp) * (1 + up) / up
+        up = up - step
+        if np.all(np.abs(step) <= 1e-9 * up):
+            up = up - (_excess(up) - tp) * (1 + up) / up
+            break
+    else:
+        raise RuntimeError("log1p_excess_root: Newton iteration did not converge")
+    return np.where(pos, up, 0.0)
+
+
+def _series_start(t):
+    """Starting guess of u from t: the inverse series (t < 1) or the fixed point."""
+    if t < 1.0:
+        s = math.sqrt(2 * t)
+        return s * (1 + s * (1 / 3 + s * (1 / 36 + s * (-1 / 270 + s / 4320))))
+    return t + math.log1p(t + math.log1p(t + math.log1p(t)))
+
+
+def _excess_scalar(u):
+    """:func:`_excess` for one Python float."""
+    if abs(u) > 0.3:
+        return u - math.log1p(u)
+    acc = 0.0
+    for coef in _SERIES_LIST:
+        acc = acc * u + coef
+    return acc * u * u
+
+
+def _root_scalar(t):
+    """:func:`log1p_excess_root` for one number, in Python floats (about 20 times
+    faster than 0-d arrays): the same start, Newton step and stopping rule."""
+    if t == 0.0:
+        return 0.0
+    u = _series_start(t)
+    for _ in range(40):
+        step = (_excess_scalar(u) - t) * (1 + u) / u
+        u -= step
+        if abs(step) <= 1e-9 * u:
+            return u - (_excess_scalar(u) - t) * (1 + u) / u
+    raise RuntimeError("log1p_excess_root: Newton iteration did not converge")
+
+
+def lambertw_m1(x):
+    r"""Lower real branch :math:`W_{-1}(x)` of the Lambert W function, -1/e <= x < 0.
+
+    .. math:: W e^{W} = x, \qquad W \le -1
+
+    Computed as :math:`-1 - u` with u from :func:`log1p_excess_root` at
+    :math:`t = -1 - \ln(-x)`.
+
+    Parameters
+    ----------
+    x : float or array_like
+        -1/e <= x < 0 [-] (values within rounding of -1/e count as -1/e).
+
+    Returns
+    -------
+    ndarray
+        :math:`W_{-1}(x) \le -1` [-].
+
+    Notes
+    -----
+    Valid for -1/e <= x < 0; outside it raises ValueError. Agrees with
+    ``scipy.special.lambertw(x, -1).real`` to 1e-12 relative for x <= -(1 - 1e-6)/e
+    (tests/test_lipopov.py); closer to the branch point the rounding of x alone moves W
+    by eps/|1 + W| relative, and below 1/e - x ~ 2e-9 scipy's residual
+    :math:`W e^W - x` grows to 1e-9 while this one stays at rounding.
+
+    Examples
+    --------
+    >>> w = float(lambertw_m1(-0.1))
+    >>> round(w, 12), abs(w * math.exp(w) + 0.1) < 1e-16
+    (-3.577152063957, True)
+
+    References
+    ----------
+    R. M. Corless et al., "On the Lambert W function", Adv. Comput. Math. 5 (1996)
+    329-359.
+    """
+    x = np.asarray(x, dtype=float)
+    if np.any(~((x >= -1 / math.e * (1 + 1e-15)) & (x < 0))):
+        raise ValueError("lambertw_m1: x must lie in [-1/e, 0)")
+    t = np.maximum(-1.0 - np.log(-x), 0.0)
+    return -1.0 - log1p_excess_root(t)

@@ -1,0 +1,274 @@
+"""Batch: ``linecontact calc FILE.csv``, one case per row, results appended as columns.
+
+Reading
+    The file is read with the csv module (UTF-8, a byte-order mark allowed), every cell
+    as the text it is. Columns named like a parameter of :mod:`linecontact.cases`
+    (case-insensitive, surrounding spaces ignored) are inputs; options on the command
+    line fill empty or missing cells. Cells follow the rules of
+    :mod:`linecontact._units` (a number with one unit name), parsed once per column.
+
+Writing: no user data is ever lost
+    Every input row is written, in its place, with all its cells exactly as read
+    (a short row is padded with empty cells), followed by the result columns:
+    ``estar_GPa``, then per model ``model``, ``force_kN``, ``depth_um``,
+    ``stiffness_N_per_um``, ``half_width_um``, ``peak_pressure_MPa``,
+    ``contact_radius_um`` (whole rollers: ``roller_deflection_um``,
+    ``roller_stiffness_N_per_um``, ``depth_inner_um``, ...), ``deviation_pct`` (when
+    several models are asked for), ``flags``, ``note``, and at the end ``error`` (SI
+    names such as ``depth_m`` with ``--si`` or ``--json``). With several models (or
+    ``--model all``) each result column gets the model's id as a suffix
+    (``depth_um_johnson-c-0.72``).
+    If a result column's name is already a column of the file (a rerun on its own
+    output, or a user column called ``model`` or ``note``), the user's column is kept
+    untouched and ALL result columns get the prefix ``result_`` (``result2_``, ... if
+    that collides too), so the result columns stay one consistent set.
+    A row that cannot be computed keeps its place and says why in ``error`` (its input
+    problem in one line, or an unexpected exception of a model); a row outside a
+    model's range says so in ``note``; all other rows are computed and written.
+
+Speed
+    Rows are grouped by distinct cylinder; one model object per cylinder and model
+    evaluates all its rows at once (:func:`linecontact.compute.compute`). A progress bar
+    (tqdm when installed, else a plain line) is shown on stderr for batches of at
+    least :data:`PROGRESS_ROWS` rows when stderr is a terminal, or always with
+    ``--progress``; ``--no-progress`` hides it.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import sys
+
+import numpy as np
+
+from . import render
+from ._units import InputError, parse_quantity
+from .cases import BY_NAME, PARAMETERS, bounds_of, option_name, parse_cases
+from .compute import compute
+
+__all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
+
+#: Batches of this many rows or more show a progress bar (on a terminal).
+PROGRESS_ROWS = 10000
+
+
+class BatchError(ValueError):
+    """The file as a whole cannot be used (one line, naming the file)."""
+
+
+def read_table(path):
+    """(header, rows) of a CSV file as text cells; BatchError with the reason."""
+    try:
+        with open(path, encoding="utf-8-sig", newline="") as fh:
+            text = fh.read()
+    except FileNotFoundError:
+        hint = "" if str(path).lower().endswith(".csv") else (
+            " (a value with a space must be quoted, e.g. --radius '5 mm')")
+        raise BatchError(f"{str(path)!r}: no such file{hint}") from None
+    except UnicodeDecodeError as exc:
+        raise BatchError(f"{str(path)!r}: not UTF-8 text ({exc.reason} at byte "
+                         f"{exc.start})") from None
+    except OSError as exc:
+        raise BatchError(f"{str(path)!r}: cannot read ({exc.strerror or exc})") from None
+    try:
+        rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
+    except csv.Error as exc:
+        raise BatchError(f"{str(path)!r}: cannot read as CSV ({exc})") from None
+    rows = [r for r in rows if r]  # blank lines
+    if not rows:
+        raise BatchError(f"{str(path)!r}: the file is empty; expected a header row and "
+                         "one case per row")
+    header, body = rows[0], rows[1:]
+    if not body:
+        raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
+                         "per row under the header")
+    return header, body
+
+
+def result_columns(names, taken):
+    """Rename result columns that collide with the user's: prefix them all.
+
+    >>> result_columns(["model", "error"], {"name", "model"})
+    ['result_model', 'result_error']
+    >>> result_columns(["model"], {"model", "result_model"})
+    ['result2_model']
+    """
+    taken = {t.strip().lower() for t in taken}
+    if not any(n.lower() in taken for n in names):
+        return list(names)
+    k = 1
+    while True:
+        prefix = "result_" if k == 1 else f"result{k}_"
+        out = [prefix + n for n in names]
+        if not any(n.lower() in taken for n in out):
+            return out
+        k += 1
+
+
+class _Progress:
+    def __init__(self, total, enabled):
+        self.total = total
+        self.bar = None
+        self.enabled = enabled
+        self.last = -1
+        if not enabled:
+            return
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            return
+        self.bar = tqdm(total=total, unit="row", file=sys.stderr, desc=render.PROG)
+
+    def __call__(self, done):
+        if not self.enabled:
+            return
+        if self.bar is not None:
+            self.bar.update(done - self.bar.n)
+            return
+        pct = int(100 * done / self.total)
+        if pct // 10 != self.last // 10:
+            print(f"{render.PROG}: {done}/{self.total} rows ({pct} %)", file=sys.stderr)
+            self.last = pct
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def run_batch(args, argv, specs, options):
+    """The batch command; returns the exit status (2 if any row failed)."""
+    header, body = read_table(args.csv)
+    n = len(body)
+    names = [h.strip().lower() for h in header]
+    known = {}
+    for j, h in enumerate(names):
+        if h in BY_NAME:
+            if h in known:
+                raise BatchError(f"{str(args.csv)!r}: column {header[j]!r} appears twice")
+            known[h] = j
+    if not known and not any(v is not None for v in options.values()):
+        raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
+                         + ", ".join(p.name for p in PARAMETERS))
+    width = len(header)
+    cells = {}
+    for p in PARAMETERS:
+        j = known.get(p.name)
+        opt = options.get(p.name)
+        if j is None and opt is None:
+            continue
+        col = [r[j] if j is not None and j < len(r) else "" for r in body]
+        if opt is not None:
+            if ":" in str(opt):
+                raise InputError(option_name(p.name), opt, "one value per row in a batch",
+                                 "a sweep")
+            # a bad option is the command line's error (exit 2), not every row's
+            parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
+                           bounds=bounds_of(p))
+            col = [c if c.strip() else opt for c in col]
+        cells[p.name] = col
+    cases, present, errors = parse_cases(cells, n, label=lambda name: name)
+    for name in ("load", "depth"):  # a sweep in a cell: say so, not just "not a number"
+        col = cells.get(name)
+        if col is None:
+            continue
+        for i, c in enumerate(col):
+            if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):
+                errors[i] = str(InputError(name, c, "one value per row in a batch",
+                                           "a sweep"))
+    first_only = args.model is None
+    progress = _Progress(n, args.progress if args.progress is not None
+                         else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
+    try:
+        results = compute(cases, errors, specs, first_only=first_only, progress=progress)
+    finally:
+        progress.close()
+    si = args.si or args.json
+    multi = len(results.sets) > 1
+    out_cols, getters = _result_layout(results, cases, si, multi)
+    out_names = result_columns(out_cols, header)
+    if args.json:
+        text = _json(argv, results, header, body, out_names, getters, width)
+    else:
+        text = _csv(header, body, out_names, getters, width)
+    render.write(text, args.output)
+    n_failed = sum(1 for e in errors if e)
+    if n_failed:
+        print(f"{render.PROG} calc: error: {n_failed} of {n} rows failed; see the "
+              "'error' column", file=sys.stderr)
+        return 2
+    return 0
+
+
+def _col_name(field, si):
+    u = render.unit(field, si)
+    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_")
+    return f"{field}_{u}"
+
+
+def _result_layout(results, cases, si, multi):
+    """Result column names and, for each, a function row index -> cell value."""
+    cols, getters = [], []
+    estar = render.scale("estar", cases["estar"], si)
+    cols.append(_col_name("estar", si))
+    getters.append(("num", estar))
+    if np.any(cases["radius_eff"] != cases["radius"]):
+        cols.append(_col_name("radius_eff", si))
+        reff = np.where(cases["raceways"], np.nan, cases["radius_eff"])  # per contact there
+        getters.append(("num", render.scale("radius_eff", reff, si)))
+    fields = render.columns_of(results, "load")
+    # in a batch the force comes first whatever is given
+    for s in results.sets:
+        sfx = f"_{s['id']}" if multi else ""
+        if not multi:
+            cols.append("model")
+            getters.append(("text", s["label"]))
+        for f in fields:
+            cols.append(_col_name(f, si) + sfx)
+            getters.append(("num", render.scale(f, s["fields"][f], si)))
+        cols.append("flags" + sfx)
+        getters.append(("text", s["flags"]))
+        cols.append("note" + sfx)
+        getters.append(("text", s["note"]))
+    cols.append("error")
+    getters.append(("text", results.errors))
+    return cols, getters
+
+
+def _format_numbers(values):
+    """'%.6g' of every element, '' for NaN or inf (a list of str)."""
+    return [format(v, ".6g") if v - v == 0 else ""
+            for v in np.asarray(values, dtype=float).tolist()]
+
+
+def _csv(header, body, out_names, getters, width):
+    cols = [_format_numbers(data) if kind == "num" else data for kind, data in getters]
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(list(header) + out_names)
+    pad = [""] * width
+    padded = (r + pad[len(r):] if len(r) < width else r for r in body)
+    w.writerows(r + list(t) for r, t in zip(padded, zip(*cols)))
+    return buf.getvalue()
+
+
+def _json(argv, results, header, body, out_names, getters, width):
+    import json
+
+    doc = render.json_header(argv, results)
+    rows = []
+    for i, r in enumerate(body):
+        row = {}
+        cells = r + [""] * (width - len(r)) if len(r) < width else r
+        for h, c in zip(header, cells):
+            row[h] = c
+        for name, (kind, data) in zip(out_names, getters):
+            if kind == "num":
+                v = float(data[i])
+                row[name] = v if math.isfinite(v) else None
+            else:
+                row[name] = data[i]
+        rows.append(row)
+    doc["rows"] = rows
+    return json.dumps(doc, indent=2) + "\n"

@@ -1,0 +1,1191 @@
+r"""Tangential contact of any model: full stick, Cattaneo-Mindlin partial slip, fretting.
+
+The method of dimensionality reduction (Popov & Hess 2015, chapter 4) gives every
+normal-contact law F(d) a tangential companion. The 1D springs of the MDR profile carry
+a tangential stiffness :math:`G^*\,dx` besides the normal one :math:`E^*\,dx`, with
+
+.. math::
+
+    \frac{1}{G^*} = \frac{2-\nu_1}{4G_1} + \frac{2-\nu_2}{4G_2}, \qquad
+    G_i = \frac{E_i}{2(1+\nu_i)},
+
+and each spring sticks while :math:`G^*|u(x)| \le \mu E^*(d - g(x))`. With the shear
+ratio :math:`r = G^*/E^*` and the friction coefficient :math:`\mu` this gives, from the
+normal law alone (no profile needed):
+
+- full stick: :math:`k_t = r\,k_n(d)`;
+- monotonic shift u at constant normal depth d (Cattaneo 1938, Mindlin 1949):
+  :math:`F_t(u) = \mu\,[F(d) - F(d - r u/\mu)]` up to gross slip at
+  :math:`u^* = \mu d/r`, where :math:`F_t = \mu F(d)`; at constant normal force the
+  same law holds at :math:`d = d(F)` (the normal and tangential problems are
+  uncoupled, Goodman's approximation);
+- unloading from :math:`(u_0, F_0)` and reloading by the Masing rule
+  (Mindlin & Deresiewicz 1953): :math:`F_t = F_0 - 2 f((u_0 - u)/2)` and
+  :math:`F_t = -F_0 + 2 f((u_0 + u)/2)`, f the monotonic law;
+- energy dissipated per full cycle of amplitude :math:`u_0` (fretting):
+  :math:`W = 8\int_0^{u_0} f(s)\,ds - 4 u_0 f(u_0)`.
+
+Where these are exact, and where not
+------------------------------------
+Exact for axisymmetric contacts (a sphere gives Mindlin's and Mindlin-Deresiewicz's
+results, which the tests check) under the Cattaneo-Mindlin assumptions: the normal
+and tangential problems uncoupled (exact for elastically similar bodies, or with
+:math:`(1-2\nu_1)/G_1 = (1-2\nu_2)/G_2`; for a rigid indenter on a compressible body it
+is Goodman's approximation) and the slip parallel to the load. At :math:`\nu = 0`
+(:math:`G^* = E^*`) the tangential kernel equals the normal one and the laws hold
+exactly for *any* shape. For an elongated contact (a finite roller) the true full-stick
+stiffness depends on the direction of the shift; ``method="bem"`` reads it from the
+boundary-element table ``tables/tangential_cylinder.csv`` (across the axis, the
+rolling direction, and along it), and the partial-slip law then uses that stiffness
+ratio in place of :math:`G^*/E^*` (and the table's partial-slip correction, if the
+table carries one). See docs/tangential.md for the measured error of the plain MDR.
+
+All functions take SI units (m, N, Pa) and broadcast over numpy arrays.
+
+References
+----------
+.. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+   and Friction, Springer (2015), chapters 3-4.
+.. [2] C. Cattaneo, Sul contatto di due corpi elastici: distribuzione locale degli
+   sforzi, Rend. Accad. Naz. Lincei 27 (1938) 342-348, 434-436, 474-478.
+.. [3] R. D. Mindlin, Compliance of elastic bodies in contact, J. Appl. Mech. 16
+   (1949) 259-268.
+.. [4] R. D. Mindlin, H. Deresiewicz, Elastic spheres in contact under varying oblique
+   forces, J. Appl. Mech. 20 (1953) 327-344.
+.. [5] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section 7.
+.. [6] L. E. Goodman, Contact stress analysis of normally loaded rough spheres, J. Appl.
+   Mech. 29 (1962) 515-522.
+"""
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import numpy as np
+
+from .classical import effective_modulus
+from .tables import TableError, read_table
+from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval,
+                       check_positive, document, out)
+
+__all__ = [
+    "shear_modulus",
+    "effective_shear_modulus",
+    "shear_ratio",
+    "equivalent_poisson",
+    "mdr_stiffness_ratio",
+    "gross_slip_shift",
+    "tangential_stiffness",
+    "tangential_force",
+    "tangential_shift",
+    "TangentialContact",
+    "CylinderTangentialTable",
+    "cylinder_tangential_table",
+    "cylinder_stiffness_ratios",
+    "STRAIGHT_CYLINDER_MODELS",
+    "TANGENTIAL_TABLE",
+]
+
+#: Name of the BEM table of the finite cylinder's tangential stiffness (tables/).
+TANGENTIAL_TABLE = "tangential_cylinder"
+
+#: Models of a straight (unprofiled, aligned) cylinder, to which the BEM table applies.
+STRAIGHT_CYLINDER_MODELS = frozenset({"universal", "li-popov", "puttock-thwaite",
+                                      "johnson", "kunz", "palmgren", "iso16281"})
+
+MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=False,
+                            unit="Pa")
+#: G*/E* for Poisson ratios in [0, 0.5]: 2(1-nu)/(2-nu) lies in [2/3, 1].
+SHEAR_RATIO = Interval("gstar/estar", 2.0 / 3.0, 1.0, unit="", rtol=1e-12)
+FRICTION = Interval("friction", 0.0, np.inf, low_open=True, high_open=True)
+_DIRECTIONS = ("across", "along")
+_METHODS = ("mdr", "bem")
+_GL_T, _GL_W = np.polynomial.legendre.leggauss(64)
+
+
+# --------------------------------------------------------------------------------------
+# moduli
+# --------------------------------------------------------------------------------------
+@document(E=MODULUS_OR_RIGID, NU=POISSON_RATIO)
+def shear_modulus(modulus, poisson):
+    r"""Shear modulus of an isotropic elastic body, :math:`G = E/(2(1+\nu))`.
+
+    Parameters
+    ----------
+    modulus : float or array_like
+        Young's modulus E, ``inf`` for a rigid body [Pa].
+    poisson : float or array_like
+        Poisson ratio nu [-].
+
+    Returns
+    -------
+    float or ndarray
+        G [Pa].
+
+    Notes
+    -----
+    Valid for %(E)s and %(NU)s.
+
+    Examples
+    --------
+    >>> f"{shear_modulus(210e9, 0.3) / 1e9:.2f} GPa"
+    '80.77 GPa'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 2.
+    """
+    E = MODULUS_OR_RIGID.check(modulus, name="modulus")
+    nu = POISSON_RATIO.check(poisson, name="poisson")
+    return out(E / (2.0 * (1.0 + nu)))
+
+
+@document(E=MODULUS_OR_RIGID, NU=POISSON_RATIO)
+def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
+    r"""Effective tangential modulus G* of two bodies (Popov & Hess 2015, chapter 4).
+
+    .. math::
+        \frac{1}{G^*} = \frac{2-\nu_1}{4G_1} + \frac{2-\nu_2}{4G_2}, \qquad
+        G_i = \frac{E_i}{2(1+\nu_i)}
+
+    Parameters
+    ----------
+    modulus1 : float or array_like
+        Young's modulus E1 of the first body [Pa].
+    poisson1 : float or array_like
+        Poisson ratio nu1 of the first body [-].
+    modulus2 : float or array_like, optional
+        Young's modulus E2 of the second body, ``inf`` (default) for a rigid body [Pa].
+    poisson2 : float or array_like, optional
+        Poisson ratio nu2 of the second body (irrelevant when E2 = inf) [-].
+
+    Returns
+    -------
+    float or ndarray
+        G* [Pa]. For a rigid second body G* = 4 G1/(2 - nu1).
+
+    Notes
+    -----
+    Valid for %(E)s (``inf`` = rigid) and %(NU)s for each body, not both rigid.
+    With :func:`linecontact.classical.effective_modulus` the ratio G*/E* lies in
+    [2/3, 1]; it is 2(1-nu)/(2-nu) for a rigid indenter (0.8235 at nu = 0.3).
+
+    Examples
+    --------
+    Rigid roller on steel, and steel on steel:
+
+    >>> f"{effective_shear_modulus(210e9, 0.3) / 1e9:.2f} GPa"
+    '190.05 GPa'
+    >>> f"{effective_shear_modulus(210e9, 0.3, 210e9, 0.3) / 1e9:.2f} GPa"
+    '95.02 GPa'
+
+    References
+    ----------
+    V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
+    Friction, Springer (2015); R. D. Mindlin, J. Appl. Mech. 16 (1949) 259-268.
+    """
+    E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
+    E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
+    nu1 = POISSON_RATIO.check(poisson1, name="poisson1")
+    nu2 = POISSON_RATIO.check(poisson2, name="poisson2")
+    if np.any(np.isinf(E1) & np.isinf(E2)):
+        raise OutOfRangeError("modulus1", math.inf, "(0, inf) Pa", unit="Pa",
+                              hint="both bodies are rigid; at least one must be elastic")
+    compliance = (2 - nu1) * (1 + nu1) / (2 * E1) + (2 - nu2) * (1 + nu2) / (2 * E2)
+    return out(1.0 / compliance)
+
+
+def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
+    r"""The MDR's shear ratio G*/E* of two bodies, :math:`2(1-\nu)/(2-\nu)` if one is rigid.
+
+    .. math::
+        \frac{G^*}{E^*} = \frac{(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2}
+                               {(2-\nu_1)(1+\nu_1)/(2E_1) + (2-\nu_2)(1+\nu_2)/(2E_2)}
+
+    Parameters
+    ----------
+    modulus1, modulus2 : float or array_like
+        Young's moduli, ``inf`` for a rigid body (not both) [Pa].
+    poisson1, poisson2 : float or array_like
+        Poisson ratios in [0, 0.5] [-].
+
+    Returns
+    -------
+    float or ndarray
+        G*/E* in [2/3, 1] [-].
+
+    Notes
+    -----
+    Valid for moduli in (0, inf] Pa and Poisson ratios in [0, 0.5]. It is 1 at
+    nu = 0, where the tangential problem is the normal one.
+
+    Examples
+    --------
+    >>> f"{shear_ratio(210e9, 0.3):.4f}", f"{shear_ratio(210e9, 0.0):.4f}"
+    ('0.8235', '1.0000')
+
+    References
+    ----------
+    V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
+    Friction, Springer (2015).
+    """
+    g = effective_shear_modulus(modulus1, poisson1, modulus2, poisson2)
+    e = effective_modulus(modulus1, poisson1, modulus2, poisson2)
+    return out(np.asarray(g) / np.asarray(e))
+
+
+def equivalent_poisson(gstar, estar):
+    r"""Poisson ratio of the one-body problem with the same G*/E*: :math:`2(1-r)/(2-r)`.
+
+    .. math::
+        r = \frac{G^*}{E^*} = \frac{2(1-\nu)}{2-\nu}
+        \;\Longleftrightarrow\; \nu = \frac{2(1-r)}{2-r}
+
+    In the uncoupled (Goodman) problem two bodies act as one half-space with
+    :math:`1/G = \sum 1/G_i` and :math:`1-\nu = \sum[(1-\nu_i)/G_i] / \sum 1/G_i`
+    (both the normal and the tangential Boussinesq-Cerruti kernels add up that way),
+    and that body has the same G*/E*. This is the Poisson ratio at which the cylinder's
+    BEM table is read.
+
+    Parameters
+    ----------
+    gstar : float or array_like
+        Effective shear modulus G* [Pa].
+    estar : float or array_like
+        Effective modulus E* [Pa].
+
+    Returns
+    -------
+    float or ndarray
+        The equivalent Poisson ratio [-], in [0, 0.5].
+
+    Notes
+    -----
+    Valid for 2/3 <= G*/E* <= 1 (Poisson ratios of both bodies in [0, 0.5]).
+
+    Examples
+    --------
+    >>> f"{equivalent_poisson(shear_ratio(210e9, 0.3), 1.0):.6f}"
+    '0.300000'
+    >>> f"{equivalent_poisson(shear_ratio(210e9, 0.3, 70e9, 0.33), 1.0):.4f}"
+    '0.3226'
+
+    References
+    ----------
+    L. E. Goodman, J. Appl. Mech. 29 (1962) 515-522; K. L. Johnson, Contact
+    Mechanics (1985), section 7.1.
+    """
+    r = _ratio(gstar, estar)
+    return out(2.0 * (1.0 - r) / (2.0 - r))
+
+
+@document(NU=POISSON_RATIO)
+def mdr_stiffness_ratio(poisson):
+    r"""The MDR's full-stick k_t/k_n = G*/E* = 2(1-nu)/(2-nu) of one elastic body.
+
+    .. math:: \frac{k_t}{k_n} = \frac{2(1-\nu)}{2-\nu}
+
+    Parameters
+    ----------
+    poisson : float or array_like
+        Poisson ratio nu (or :func:`equivalent_poisson` of two bodies) [-].
+
+    Returns
+    -------
+    float or ndarray
+        k_t/k_n [-].
+
+    Notes
+    -----
+    Valid for %(NU)s. Exact for axisymmetric contacts; for an elongated one the
+    true ratio depends on the direction (see :func:`cylinder_stiffness_ratios`).
+
+    Examples
+    --------
+    >>> f"{mdr_stiffness_ratio(0.3):.4f}", f"{mdr_stiffness_ratio(0.0):.4f}"
+    ('0.8235', '1.0000')
+
+    References
+    ----------
+    V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
+    Friction, Springer (2015).
+    """
+    nu = POISSON_RATIO.check(poisson, name="poisson")
+    return out(2.0 * (1.0 - nu) / (2.0 - nu))
+
+
+def _ratio(gstar, estar):
+    g = check_positive("gstar", gstar, "Pa")
+    e = check_positive("estar", estar, "Pa")
+    return SHEAR_RATIO.check(g / e, hint="G*/E* of bodies with Poisson ratios in [0, 0.5] "
+                                         "(effective_shear_modulus, effective_modulus)")
+
+
+# --------------------------------------------------------------------------------------
+# the generic laws
+# --------------------------------------------------------------------------------------
+def _law(model, depth):
+    """F(z) of the model with F(0) = 0 (every contact law starts at zero force)."""
+    z = np.asarray(depth, dtype=float)
+    res = np.zeros(z.shape)
+    pos = z > 0
+    if np.any(pos):
+        res[pos] = model.force(z[pos])
+    return res
+
+
+def _friction(friction):
+    return FRICTION.check(friction, name="friction")
+
+
+def gross_slip_shift(depth, friction, gstar, estar):
+    r"""Tangential shift at which the whole contact slides: :math:`u^* = \mu E^* d/G^*`.
+
+    .. math:: u^* = \frac{\mu E^* d}{G^*}
+
+    Parameters
+    ----------
+    depth : float or array_like
+        Normal depth d [m].
+    friction : float or array_like
+        Coulomb friction coefficient mu [-].
+    gstar : float or array_like
+        Effective shear modulus G* (:func:`effective_shear_modulus`) [Pa].
+    estar : float or array_like
+        Effective modulus E* [Pa].
+
+    Returns
+    -------
+    float or ndarray
+        u* [m], the same for every shape (the outermost MDR spring sticks until then).
+
+    Notes
+    -----
+    Valid for d > 0, mu > 0, 2/3 <= G*/E* <= 1 (Poisson ratios in [0, 0.5]).
+
+    Examples
+    --------
+    >>> f"{gross_slip_shift(2e-6, 0.1, 190.05e9, 230.77e9) * 1e9:.1f} nm"
+    '242.9 nm'
+
+    References
+    ----------
+    R. D. Mindlin, J. Appl. Mech. 16 (1949) 259-268; Popov & Hess (2015), chapter 4.
+    """
+    d = check_positive("depth", depth, "m")
+    mu = _friction(friction)
+    r = _ratio(gstar, estar)
+    return out(mu * d / r)
+
+
+def tangential_stiffness(model, depth, gstar, *, method="mdr", direction="across"):
+    r"""Full-stick tangential stiffness of any model, :math:`k_t = (G^*/E^*)\,k_n(d)`.
+
+    .. math:: k_t = \frac{G^*}{E^*}\,k_n(d) = 2 G^* a(d)
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model (its E* is the E* above).
+    depth : float or array_like
+        Normal depth d [m].
+    gstar : float
+        Effective shear modulus G* (:func:`effective_shear_modulus`) [Pa].
+    method : {"mdr", "bem"}, optional
+        ``"mdr"`` (default): the MDR ratio G*/E*, exact for axisymmetric contacts;
+        ``"bem"``: the finite cylinder's direction-dependent ratio from the BEM table
+        (straight-cylinder models only, see :func:`cylinder_stiffness_ratios`).
+    direction : {"across", "along"}, optional
+        With ``method="bem"``: shift across the axis (rolling direction, default) or
+        along it.
+
+    Returns
+    -------
+    float or ndarray
+        k_t [N/m].
+
+    Notes
+    -----
+    Valid where the model is (its depth range), for 2/3 <= G*/E* <= 1; with
+    ``method="bem"`` also inside the table's range of nu and d R/L^2.
+
+    Examples
+    --------
+    Linear (flat-punch-like) law of Kunz, rigid roller on steel (k_t/k_n = 0.8235):
+
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, effective_modulus(210e9, 0.3))
+    >>> g = effective_shear_modulus(210e9, 0.3)
+    >>> f"{tangential_stiffness(m, 1e-6, g) / m.stiffness(1e-6):.4f}"
+    '0.8235'
+
+    References
+    ----------
+    Popov & Hess (2015), chapter 4; R. D. Mindlin, J. Appl. Mech. 16 (1949) 259-268.
+    """
+    ratio = _stiffness_ratio(model, depth, gstar, method, direction)
+    return out(ratio * np.asarray(model.stiffness(depth)))
+
+
+def _stiffness_ratio(model, depth, gstar, method, direction):
+    if method not in _METHODS:
+        raise OutOfRangeError("method", method, "one of 'mdr', 'bem'")
+    if method == "mdr":
+        return _ratio(gstar, model.estar)
+    if direction not in _DIRECTIONS:
+        raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+    return cylinder_stiffness_ratios(model, depth, gstar)[direction]
+
+
+def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
+    r"""Cattaneo-Mindlin tangential force of any model at constant normal depth.
+
+    .. math::
+        F_t(u) = \mu\left[F(d) - F\!\left(d - \frac{G^* u}{\mu E^*}\right)\right],
+        \qquad |u| \le u^* = \frac{\mu E^* d}{G^*}
+
+    (odd in u: a shift in the negative direction gives the negative force).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model F(d).
+    depth : float or array_like
+        Normal depth d, held constant while shifting [m].
+    shift : float or array_like
+        Monotonic tangential shift u from the unloaded state; broadcasts with depth [m].
+    friction : float
+        Coulomb friction coefficient mu [-].
+    gstar : float
+        Effective shear modulus G* [Pa].
+    beyond : {"raise", "saturate"}, optional
+        Beyond gross slip (|u| > u*): ``"raise"`` (default) refuses with
+        :class:`OutOfRangeError`; ``"saturate"`` returns the sliding force mu F(d).
+
+    Returns
+    -------
+    float or ndarray
+        F_t [N].
+
+    Notes
+    -----
+    Valid for |u| <= u* (all u with ``beyond="saturate"``), mu > 0,
+    2/3 <= G*/E* <= 1, and the model's depth range. Exact for axisymmetric contacts
+    (uncoupled normal and tangential problems) and for any shape at nu = 0.
+
+    Examples
+    --------
+    A linear law F = k d gives a linear tangential law up to gross slip:
+
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, 1e11)
+    >>> f"{tangential_force(m, 1e-6, 0.05e-6, 0.2, 1e11) / (0.2 * m.force(1e-6)):.3f}"
+    '0.250'
+
+    References
+    ----------
+    C. Cattaneo (1938); R. D. Mindlin (1949); Popov & Hess (2015), chapter 4.
+    """
+    d = check_positive("depth", depth, "m")
+    r = _ratio(gstar, model.estar)
+    return out(_ft(model, d, shift, _friction(friction), r, beyond))
+
+
+def tangential_shift(model, depth, tangential_force, friction, gstar, *, ratio=None):
+    r"""Shift u(F_t) of the Cattaneo-Mindlin law of any model at constant normal depth.
+
+    .. math::
+        u = \frac{\mu}{r}\left[d - d\!\left(F(d) - \frac{|F_t|}{\mu}\right)\right]
+            \operatorname{sign} F_t, \qquad r = \frac{G^*}{E^*}
+
+    the inverse of :func:`tangential_force` through the model's d(F); u* = mu d/r at
+    |F_t| = mu F(d).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model.
+    depth : float or array_like
+        Normal depth d [m].
+    tangential_force : float or array_like
+        Tangential force F_t, |F_t| <= mu F(d); broadcasts with depth [N].
+    friction : float or array_like
+        Coulomb friction coefficient mu [-].
+    gstar : float
+        Effective shear modulus G* [Pa].
+    ratio : float or array_like, optional
+        Stiffness ratio k_t/k_n to use instead of G*/E* (e.g. the cylinder's BEM
+        value in one direction, :func:`cylinder_stiffness_ratios`) [-].
+
+    Returns
+    -------
+    float or ndarray
+        u [m].
+
+    Raises
+    ------
+    OutOfRangeError
+        |F_t| > mu F(d): no static equilibrium, the contact slides (gross slip).
+
+    Notes
+    -----
+    Valid for |F_t| <= mu F(d), mu > 0, 2/3 <= G*/E* <= 1 and the model's depth range.
+    Exact for axisymmetric contacts and for any shape at nu = 0.
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, 1e11)
+    >>> u = tangential_shift(m, 1e-6, 0.25 * 0.2 * m.force(1e-6), 0.2, 1e11)
+    >>> f"{u * 1e9:.1f} nm"
+    '50.0 nm'
+
+    References
+    ----------
+    R. D. Mindlin (1949); Popov & Hess (2015), chapter 4.
+    """
+    d = check_positive("depth", depth, "m")
+    mu = _friction(friction)
+    r = _ratio(gstar, model.estar) if ratio is None else check_positive("ratio", ratio)
+    Ft = np.asarray(tangential_force, dtype=float)
+    d, Ft, mu, r = np.broadcast_arrays(d, Ft, mu, r)
+    F = _law(model, d)
+    fmax = mu * F
+    check_interval("tangential_force", np.abs(Ft), 0.0, fmax * (1 + 1e-12), unit="N",
+                   hint="more than mu F: the contact slides (gross slip), no static "
+                        "equilibrium")
+    rest = F - np.minimum(np.abs(Ft), fmax) / mu
+    z = np.zeros(rest.shape)
+    pos = rest > F * 1e-15
+    if np.any(pos):
+        z[pos] = model.depth(rest[pos])
+    return out(np.sign(Ft) * mu * (d - np.minimum(z, d)) / r)
+
+
+def _check_beyond(beyond):
+    if beyond not in ("raise", "saturate"):
+        raise OutOfRangeError("beyond", beyond, "one of 'raise', 'saturate'")
+
+
+def _ft(model, d, shift, mu, r, beyond):
+    """F_t(u) = mu [F(d) - F(d - r|u|/mu)] sign(u) with the gross-slip policy."""
+    _check_beyond(beyond)
+    u = np.asarray(shift, dtype=float)
+    if not np.all(np.isfinite(u)):
+        raise OutOfRangeError("shift", float(u[~np.isfinite(u)].flat[0]) if u.ndim
+                              else float(u), "finite values", unit="m")
+    d, u, mu, r = np.broadcast_arrays(d, u, mu, r)
+    ustar = mu * d / r
+    a = np.abs(u)
+    over = a > ustar * (1 + 1e-12)
+    if beyond == "raise" and np.any(over):
+        i = np.argwhere(over)[0] if over.ndim else ()
+        i = tuple(int(k) for k in i)
+        raise OutOfRangeError(
+            "shift", float(u[i]), f"[-{ustar[i]:.6g}, {ustar[i]:.6g}] m", unit="m",
+            hint="beyond gross slip u* = mu E* d/G* the contact slides at mu F(d); "
+                 "beyond='saturate' returns that force")
+    z = np.maximum(d - r * np.minimum(a, ustar) / mu, 0.0)
+    ft = mu * (_law(model, d) - _law(model, z))
+    return np.sign(u) * ft
+
+
+# --------------------------------------------------------------------------------------
+class TangentialContact:
+    r"""One normal contact state under tangential load: stick, partial slip, fretting.
+
+    The normal depth d (or force F, converted with the model's d(F)) is held constant
+    while the tangential shift u varies; the normal and tangential problems are
+    uncoupled (Goodman). With the stiffness ratio r (= G*/E* for the MDR, or the BEM
+    table's direction-dependent k_t/k_n of the cylinder):
+
+    .. math::
+
+        f(u) = \mu\,[F(d) - F(d - r u/\mu)],\quad k_t = r k_n(d),\quad
+        u^* = \mu d/r,
+
+        F_t^{\downarrow}(u) = F_0 - 2f\!\left(\tfrac{u_0-u}{2}\right),\quad
+        F_t^{\uparrow}(u) = -F_0 + 2f\!\left(\tfrac{u_0+u}{2}\right),\quad
+        W = 8\int_0^{u_0} f\,ds - 4u_0 f(u_0).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model.
+    friction : float
+        Coulomb friction coefficient mu [-].
+    gstar : float
+        Effective shear modulus G* (:func:`effective_shear_modulus`) [Pa].
+    depth : float, optional
+        Normal depth d (give depth or force) [m].
+    force : float, optional
+        Normal force F; the depth is the model's d(F) [N].
+    method : {"mdr", "bem"}, optional
+        ``"mdr"`` (default): r = G*/E*. ``"bem"``: r = the cylinder's k_t/k_n in
+        `direction` from the BEM table (straight-cylinder models only), and the
+        table's partial-slip correction if it carries one and `slip_correction`.
+    direction : {"across", "along"}, optional
+        With ``method="bem"``: across the axis (rolling direction, default) or along.
+    slip_correction : bool, optional
+        With ``method="bem"``: apply the table's partial-slip correction when the table
+        has one (default True); without one the law is the stiffness-corrected MDR law.
+    table : CylinderTangentialTable, optional
+        The BEM table (default :func:`cylinder_tangential_table`).
+
+    Notes
+    -----
+    Valid for 0 < |u| <= u* (beyond: ``beyond="saturate"`` on request), mu > 0,
+    2/3 <= G*/E* <= 1 (Poisson ratios in [0, 0.5]), and in the model's depth range.
+    Exact for axisymmetric shapes and for any shape at nu = 0; for the finite cylinder
+    see docs/tangential.md for the MDR's measured error and ``method="bem"``.
+    Energies are integrated, in the form :math:`W = 4r\int_0^{u_0} (u_0 - 2s)
+    [k_n(d - rs/\mu) - k_n(d)]\,ds` (by parts; free of the cancellation of the
+    :math:`O(u_0^2)` terms), by 64-point Gauss-Legendre quadrature in
+    :math:`s = u_0(1 - t^2)`, smooth at gross slip where the normal stiffness starts
+    from zero; they need the model's k_n to be the derivative of its F. Against
+    Mindlin-Deresiewicz's closed form for the sphere the relative error is below 1e-11
+    for Q*/(mu P) from 0.01 to 1 (tests/test_tangential.py).
+
+    Examples
+    --------
+    Rigid roller (R = 5 mm, L = 10 mm) on steel, 1 kN normal load, mu = 0.1:
+
+    >>> from linecontact.models import get_model
+    >>> E = effective_modulus(210e9, 0.3); G = effective_shear_modulus(210e9, 0.3)
+    >>> c = TangentialContact(get_model("universal", 5e-3, 10e-3, E), 0.1, G, force=1e3)
+    >>> f"{c.stiffness / 1e6:.1f} N/um", f"{c.gross_slip_shift * 1e9:.1f} nm"
+    ('536.7 N/um', '203.3 nm')
+    >>> f"{c.force(0.5 * c.gross_slip_shift):.2f} N", str(c.slip_state(1e-7))
+    ('52.96 N', 'partial slip')
+    >>> f"{c.dissipated_energy(50e-9) * 1e9:.2f} nJ"
+    '24.20 nJ'
+
+    References
+    ----------
+    C. Cattaneo (1938); R. D. Mindlin (1949); R. D. Mindlin, H. Deresiewicz (1953);
+    K. L. Johnson, Contact Mechanics (1985), section 7.2; Popov & Hess (2015), ch. 4.
+    """
+
+    def __init__(self, model, friction, gstar, *, depth=None, force=None, method="mdr",
+                 direction="across", slip_correction=True, table=None):
+        if (depth is None) == (force is None):
+            raise TypeError("give exactly one of depth and force")
+        self.model = model
+        self.friction = float(_scalar_check(_friction(friction), "friction"))
+        self.gstar = float(_scalar_check(check_positive("gstar", gstar, "Pa"), "gstar"))
+        if depth is None:
+            self.normal_force = float(_scalar_check(check_positive("force", force, "N"),
+                                                    "force"))
+            self.depth = float(model.depth(self.normal_force))
+        else:
+            self.depth = float(_scalar_check(check_positive("depth", depth, "m"), "depth"))
+            self.normal_force = float(model.force(self.depth))
+        if method not in _METHODS:
+            raise OutOfRangeError("method", method, "one of 'mdr', 'bem'")
+        self.method = method
+        self.direction = direction
+        self.mdr_ratio = float(_ratio(self.gstar, model.estar))
+        self._correction = None
+        if method == "mdr":
+            self.ratio = self.mdr_ratio
+        else:
+            if direction not in _DIRECTIONS:
+                raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+            table = table if table is not None else cylinder_tangential_table()
+            ratios = cylinder_stiffness_ratios(model, self.depth, self.gstar, table=table)
+            self.ratio = float(ratios[direction])
+            if slip_correction:
+                self._correction = table.shift_correction(
+                    direction, float(ratios["nu"]), float(ratios["d_tilde"]))
+
+    # -- single numbers ------------------------------------------------------------
+    @property
+    def normal_stiffness(self):
+        """Normal stiffness k_n = dF/dd at the depth [N/m]."""
+        return float(self.model.stiffness(self.depth))
+
+    @property
+    def stiffness(self):
+        """Full-stick tangential stiffness k_t = r k_n [N/m]."""
+        return self.ratio * self.normal_stiffness
+
+    @property
+    def gross_slip_shift(self):
+        """Shift at gross slip u* = mu d / r [m] (before any slip correction)."""
+        return self.friction * self.depth / self.ratio * self._q_factor(1.0)
+
+    @property
+    def gross_slip_force(self):
+        """Sliding force mu F [N]."""
+        return self.friction * self.normal_force
+
+    # -- monotonic loading ---------------------------------------------------------
+    def _q_factor(self, q):
+        """Slip correction: BEM shift / law shift at load fraction q (1 without one)."""
+        if self._correction is None:
+            return np.ones_like(np.asarray(q, dtype=float)) if np.ndim(q) else 1.0
+        qs, cs = self._correction
+        return np.interp(q, qs, cs)
+
+    def _law_force(self, shift, beyond):
+        return _ft(self.model, self.depth, shift, self.friction, self.ratio, beyond)
+
+    def _law_shift(self, q):
+        """Law shift at load fraction q in [0, 1]: d - r u/mu = d(F(1 - q))."""
+        q = np.asarray(q, dtype=float)
+        rest = self.normal_force * (1.0 - q)
+        z = np.zeros(q.shape)
+        pos = rest > 0
+        if np.any(pos):
+            z[pos] = self.model.depth(rest[pos])
+        return self.friction * (self.depth - z) / self.ratio
+
+    def force(self, shift, *, beyond="raise"):
+        r"""Tangential force F_t(u) [N] under a monotonic shift u [m] from zero.
+
+        ``beyond="saturate"`` returns mu F beyond gross slip (|u| > u*) instead of
+        raising :class:`OutOfRangeError`.
+        """
+        if self._correction is None:
+            return out(self._law_force(shift, beyond))
+        _check_beyond(beyond)
+        u = np.asarray(shift, dtype=float)
+        a = np.abs(u)
+        ustar = self.gross_slip_shift
+        if beyond == "raise" and np.any(a > ustar * (1 + 1e-12)):
+            raise OutOfRangeError("shift", float(a.max()), f"[-{ustar:.6g}, {ustar:.6g}] m",
+                                  unit="m", hint="beyond gross slip; beyond='saturate'")
+        # corrected shift u(q) = u_law(q) c(q) is increasing in q: bisection on q
+        lo, hi = np.zeros(a.shape), np.ones(a.shape)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            below = self._law_shift(mid) * self._q_factor(mid) < a
+            lo = np.where(below, mid, lo)
+            hi = np.where(below, hi, mid)
+        q = np.where(a >= ustar, 1.0, 0.5 * (lo + hi))
+        return out(np.sign(u) * q * self.gross_slip_force)
+
+    def shift(self, tangential_force):
+        r"""Inverse law u(F_t) [m] for |F_t| <= mu F [N] (u* at mu F; beyond: refused).
+
+        .. math:: u = \frac{\mu}{r}\left[d - d\!\left(F - |F_t|/\mu\right)\right]
+                  \operatorname{sign} F_t
+        """
+        Ft = np.asarray(tangential_force, dtype=float)
+        fmax = self.gross_slip_force
+        check_interval("tangential_force", Ft, -fmax * (1 + 1e-12), fmax * (1 + 1e-12),
+                       unit="N", hint="more than mu F: the contact slides (no static "
+                                      "equilibrium)")
+        q = np.minimum(np.abs(Ft) / fmax, 1.0)
+        return out(np.sign(Ft) * self._law_shift(q) * self._q_factor(q))
+
+    def stick_radius(self, shift):
+        r"""MDR stick radius c = a(z) [m] with F(z) = F - |F_t(u)|/mu (0 at gross slip).
+
+        The radius of the stick zone of the MDR profile, exact for axisymmetric
+        contacts; `shift` u [m], beyond gross slip refused.
+        """
+        q = np.abs(np.asarray(self.force(shift), dtype=float)) / self.gross_slip_force
+        rest = self.normal_force * (1.0 - q)
+        res = np.zeros(q.shape)
+        pos = rest > self.normal_force * 1e-14
+        if np.any(pos):
+            res[pos] = self.model.contact_radius(self.model.depth(rest[pos]))
+        return out(res)
+
+    def slip_state(self, shift):
+        """``"stick"`` (u = 0), ``"partial slip"`` (0 < |u| < u*) or ``"gross slip"``."""
+        a = np.abs(np.asarray(shift, dtype=float))
+        state = np.where(a == 0, "stick",
+                         np.where(a < self.gross_slip_shift, "partial slip", "gross slip"))
+        return state[()] if state.ndim == 0 else state
+
+    # -- cyclic loading (Masing) ----------------------------------------------------
+    def _amplitude(self, amplitude, beyond):
+        u0 = check_positive("amplitude", amplitude, "m")
+        _check_beyond(beyond)
+        if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
+            raise OutOfRangeError("amplitude", float(np.max(u0)),
+                                  f"(0, {self.gross_slip_shift:.6g}] m", unit="m",
+                                  hint="beyond gross slip; beyond='saturate' adds the "
+                                       "sliding (Coulomb) part of the loop")
+        return u0
+
+    def unloading(self, shift, amplitude, *, beyond="raise"):
+        r"""Masing unloading branch from (u0, F0): F_t = F0 - 2 f((u0 - u)/2) [N].
+
+        `shift` u in [-u0, u0] [m], `amplitude` u0 [m].
+        """
+        u0 = self._amplitude(amplitude, beyond)
+        u = check_interval("shift", shift, -u0 * (1 + 1e-12), u0 * (1 + 1e-12), unit="m")
+        F0 = self.force(u0, beyond=beyond)
+        return out(F0 - 2 * np.asarray(self.force((u0 - u) / 2, beyond=beyond)))
+
+    def reloading(self, shift, amplitude, *, beyond="raise"):
+        r"""Masing reloading branch from (-u0, -F0): F_t = -F0 + 2 f((u0 + u)/2) [N]."""
+        u0 = self._amplitude(amplitude, beyond)
+        u = check_interval("shift", shift, -u0 * (1 + 1e-12), u0 * (1 + 1e-12), unit="m")
+        F0 = self.force(u0, beyond=beyond)
+        return out(-F0 + 2 * np.asarray(self.force((u0 + u) / 2, beyond=beyond)))
+
+    def loop(self, amplitude, n=101, *, beyond="raise"):
+        """Closed hysteresis loop of amplitude u0 [m]: (u [m], F_t [N]), 2n - 1 points.
+
+        Unloading from (u0, F0) to (-u0, -F0), then reloading back to (u0, F0).
+        """
+        u0 = float(_scalar_check(self._amplitude(amplitude, beyond), "amplitude"))
+        down = np.linspace(u0, -u0, int(n))
+        up = down[::-1][1:]
+        u = np.concatenate([down, up])
+        ft = np.concatenate([self.unloading(down, u0, beyond=beyond),
+                             self.reloading(up, u0, beyond=beyond)])
+        return u, ft
+
+    def _masing_energy(self, amplitude):
+        """W [J] for amplitudes u0 <= u* [m], law without slip correction.
+
+        Integrating by parts, W = 8 int_0^u0 f - 4 u0 f(u0) = 4 int_0^u0 (u0 - 2s) f'(s) ds
+        with f'(s) = r k_n(d - r s/mu); as int_0^u0 (u0 - 2s) ds = 0, k_n(d) may be
+        subtracted, which removes the cancellation of the O(u0^2) terms (W ~ u0^3 at
+        small amplitude). 64-point Gauss-Legendre in s = u0 (1 - t^2), smooth at
+        s = u* where k_n(z) ~ sqrt(z) (sphere) starts.
+        """
+        u0 = np.asarray(amplitude, dtype=float)
+        mu, r, d = self.friction, self.ratio, self.depth
+        t = 0.5 * (_GL_T + 1.0)
+        w = 0.5 * _GL_W
+        u = u0[..., None]
+        s = u * (1.0 - t ** 2)
+        z = np.maximum(d - r * s / mu, 0.0)
+        kz = np.zeros(z.shape)
+        pos = z > 0
+        kz[pos] = self.model.stiffness(z[pos])
+        kd = float(self.model.stiffness(d))
+        integrand = (u - 2 * s) * (kz - kd) * 2 * u * t
+        return 4 * r * np.sum(integrand * w, axis=-1)
+
+    def _masing_energy_direct(self, amplitude):
+        """W = 8 int_0^u0 f - 4 u0 f(u0) [J] by quadrature of f itself (any law, e.g. with
+        the BEM slip correction; relative cancellation ~ u*/u0 at small amplitude)."""
+        u0 = np.asarray(amplitude, dtype=float)
+        t = 0.5 * (_GL_T + 1.0)
+        w = 0.5 * _GL_W
+        u = u0[..., None]
+        s = u * (1.0 - t ** 2)
+        f = np.asarray(self.force(s))
+        integral = np.sum(f * 2 * u * t * w, axis=-1)
+        return 8 * integral - 4 * u0 * np.asarray(self.force(u0))
+
+    def dissipated_energy(self, amplitude, *, beyond="raise"):
+        r"""Energy dissipated per full cycle of amplitude u0 [m]: W [J] (Masing).
+
+        .. math:: W = 8\int_0^{u_0} f(s)\,ds - 4 u_0 f(u_0)
+
+        Beyond gross slip (``beyond="saturate"``) the sliding part adds
+        4 mu F (u0 - u*). With a BEM slip correction the formula is integrated with
+        the corrected f directly.
+        """
+        u0 = self._amplitude(amplitude, beyond)
+        ustar = self.gross_slip_shift
+        if self._correction is None:
+            W = self._masing_energy(np.minimum(u0, ustar))
+        else:
+            W = self._masing_energy_direct(np.minimum(u0, ustar))
+        W = W + 4 * self.gross_slip_force * np.maximum(u0 - ustar, 0.0)
+        return out(W)
+
+
+def _scalar_check(value, name):
+    v = np.asarray(value)
+    if v.ndim:
+        raise OutOfRangeError(name, f"an array of shape {v.shape}", "a single number",
+                              hint="one TangentialContact per normal state; its methods "
+                                   "are vectorised over the shift")
+    return v
+
+
+# --------------------------------------------------------------------------------------
+# the finite cylinder's BEM table
+# --------------------------------------------------------------------------------------
+_SHIFT_COLUMN = re.compile(r"^shift_ratio_(across|along)_q([0-9.]+)$")
+
+
+class CylinderTangentialTable:
+    r"""The BEM table of the finite cylinder's full-stick k_t/k_n, interpolated.
+
+    The table (``tables/tangential_cylinder.csv``, written by
+    ``python -m tools.build_tables`` from the tangential BEM study) has one row per
+    (nu, d~ = d R/L^2) on a regular grid, with columns ``nu``, ``d_tilde``,
+    ``kt_kn_across`` (shift across the axis, the rolling direction) and
+    ``kt_kn_along`` (along the axis) [-]. The self-similarity of the parabolic-gap
+    cylinder (docs/theory.md, section 'Self-similarity') makes the ratios functions of
+    (nu, d~) alone, for any L/R.
+
+    Interpolated is the correction factor of the MDR, :math:`c = (k_t/k_n) /
+    [2(1-\nu)/(2-\nu)]` (exactly 1 at nu = 0, smooth in nu), by the interpolating
+    tensor-product spline in (nu, ln d~) (bicubic with 4 or more values per axis; of
+    degree n - 1 with n = 2 or 3 values). It passes through every node. Points outside
+    the grid are refused.
+
+    Optional partial-slip correction: columns ``shift_ratio_{across|along}_q{Q}``
+    (e.g. ``shift_ratio_across_q0.5``) give the BEM's tangential shift over the
+    stiffness-corrected law's (:class:`TangentialContact` with this ratio) at the load
+    fraction F_t/(mu F) = Q in (0, 1]; between Q values the factor is interpolated
+    linearly, from 1 at Q = 0 (equal full-stick stiffness). Without such columns the
+    runtime uses the stiffness-corrected law.
+
+    Parameters
+    ----------
+    table : linecontact.tables.Table
+        The table as read by :func:`linecontact.tables.read_table`.
+
+    Notes
+    -----
+    Valid inside the table's grid: its nu and d~ ranges (the header states grid,
+    tolerance and L/R used).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from linecontact.tables import read_table, write_table
+    >>> meta = dict(title="demo", source="doctest", units="[-]", generated_by="doctest",
+    ...             date="2026-01-01", version="0", accuracy="none")
+    >>> cols = dict(nu=[0, 0, 0.5, 0.5], d_tilde=[1e-4, 1e-2, 1e-4, 1e-2],
+    ...             kt_kn_across=[1, 1, 0.8, 0.9], kt_kn_along=[1, 1, 0.6, 0.6])
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     write_table(os.path.join(d, "t.csv"), meta, cols)
+    ...     t = CylinderTangentialTable(read_table("t", directory=d))
+    >>> f"{t.ratio('along', 0.25, 1e-3):.4f}"
+    '0.8143'
+
+    References
+    ----------
+    Popov & Hess (2015), chapter 4 (the MDR value the factor refers to).
+    """
+
+    def __init__(self, table):
+        cols = table.columns
+        where = str(table.path) if table.path is not None else "table"
+        for name in ("nu", "d_tilde", "kt_kn_across", "kt_kn_along"):
+            if name not in cols:
+                raise TableError(f"{where}: no column {name!r}")
+        self.table = table
+        nu, dt = cols["nu"], cols["d_tilde"]
+        self.nus = np.unique(nu)
+        self.d_tildes = np.unique(dt)
+        n1, n2 = self.nus.size, self.d_tildes.size
+        if n1 * n2 != nu.size or n1 < 2 or n2 < 2:
+            raise TableError(f"{where}: (nu, d_tilde) must form a full regular grid of at "
+                             f"least 2 x 2 points; got {nu.size} rows for {n1} nu and "
+                             f"{n2} d_tilde values")
+        if np.any(self.d_tildes <= 0) or np.any(self.nus < 0) or np.any(self.nus > 0.5):
+            raise TableError(f"{where}: nu must lie in [0, 0.5] and d_tilde be > 0")
+        order = np.lexsort((dt, nu))
+        self._grid = {}
+        mdr = 2 * (1 - nu[order]) / (2 - nu[order])
+        for name in cols:
+            if name in ("nu", "d_tilde"):
+                continue
+            vals = cols[name][order].reshape(n1, n2)
+            if name.startswith("kt_kn_"):
+                vals = vals / mdr.reshape(n1, n2)
+            self._grid[name] = vals
+        self.nu_range = Interval("nu", float(self.nus[0]), float(self.nus[-1]))
+        self.d_tilde_range = Interval("d_tilde", float(self.d_tildes[0]),
+                                      float(self.d_tildes[-1]), rtol=1e-12)
+        from scipy.interpolate import RectBivariateSpline
+
+        z = np.log(self.d_tildes)
+        kx, ky = min(3, n1 - 1), min(3, n2 - 1)
+        self._splines = {name: RectBivariateSpline(self.nus, z, vals, kx=kx, ky=ky, s=0)
+                         for name, vals in self._grid.items()}
+        self._shift_q = {}
+        for name in cols:
+            m = _SHIFT_COLUMN.match(name)
+            if m:
+                self._shift_q.setdefault(m.group(1), []).append((float(m.group(2)), name))
+        for direction, items in self._shift_q.items():
+            items.sort()
+            if not all(0 < q <= 1 for q, _ in items):
+                raise TableError(f"{where}: shift_ratio columns need 0 < Q <= 1")
+
+    @property
+    def provenance(self):
+        """The table's metadata (title, source, generated_by, grid, accuracy, ...)."""
+        return dict(self.table.meta)
+
+    def _interp(self, name, nu, d_tilde):
+        nu = self.nu_range.check(nu, hint="outside the BEM table of the cylinder")
+        dt = self.d_tilde_range.check(d_tilde, name="d_tilde",
+                                      hint="d R/L^2 outside the BEM table of the cylinder")
+        nu, dt = np.broadcast_arrays(nu, dt)
+        res = self._splines[name].ev(nu.ravel(), np.log(dt.ravel()))
+        return res.reshape(nu.shape)
+
+    def ratio(self, direction, nu, d_tilde):
+        """Full-stick k_t/k_n [-] in `direction` ("across"/"along") at (nu, d~)."""
+        if direction not in _DIRECTIONS:
+            raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+        c = self._interp(f"kt_kn_{direction}", nu, d_tilde)
+        nu = np.asarray(nu, dtype=float)
+        return out(c * 2 * (1 - nu) / (2 - nu))
+
+    def value(self, column, nu, d_tilde):
+        """Any column of the table [its unit] interpolated at (nu, d~) (e.g. the study's
+        measured partial-slip error ``ft_err_scaled_across``)."""
+        if column not in self._grid:
+            raise OutOfRangeError("column", column, "one of " + ", ".join(self._grid))
+        v = self._interp(column, nu, d_tilde)
+        if column.startswith("kt_kn_"):
+            nu = np.asarray(nu, dtype=float)
+            v = v * 2 * (1 - nu) / (2 - nu)
+        return out(v)
+
+    @property
+    def has_slip_correction(self):
+        """True if the table carries a partial-slip correction (both directions)."""
+        return all(d in self._shift_q for d in _DIRECTIONS)
+
+    def shift_correction(self, direction, nu, d_tilde):
+        """(Q nodes, shift factors) at (nu, d~) including (0, 1), or None if absent."""
+        items = self._shift_q.get(direction)
+        if not items:
+            return None
+        qs = [0.0] + [q for q, _ in items]
+        cs = [1.0] + [float(self._interp(name, nu, d_tilde)) for _, name in items]
+        return np.array(qs), np.array(cs)
+
+
+@functools.lru_cache(maxsize=None)
+def _cached_table(name):
+    return CylinderTangentialTable(read_table(name))
+
+
+def cylinder_tangential_table(name=TANGENTIAL_TABLE, directory=None):
+    r"""The :class:`CylinderTangentialTable` of ``tables/<name>.csv`` (cached).
+
+    .. math:: \frac{k_t}{k_n} = c(\nu, \ln\tilde d)\,\frac{2(1-\nu)}{2-\nu}
+
+    with c the table's correction factor of the MDR, interpolated.
+
+    Parameters
+    ----------
+    name : str, optional
+        Table stem (default ``"tangential_cylinder"``).
+    directory : path-like, optional
+        Read from this folder instead of ``tables/`` (not cached).
+
+    Returns
+    -------
+    CylinderTangentialTable
+
+    Raises
+    ------
+    FileNotFoundError
+        The table is not there (the BEM study has not been run).
+
+    Notes
+    -----
+    Valid for tables with the columns nu, d_tilde, kt_kn_across, kt_kn_along on a
+    regular (nu, d~) grid.
+
+    Examples
+    --------
+    >>> cylinder_tangential_table("no_such_table")
+    Traceback (most recent call last):
+    ...
+    FileNotFoundError: table 'no_such_table' not found in ...
+
+    References
+    ----------
+    Popov & Hess (2015), chapter 4.
+    """
+    if directory is not None:
+        return CylinderTangentialTable(read_table(name, directory=directory))
+    return _cached_table(name)
+
+
+def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
+    r"""The finite cylinder's full-stick k_t/k_n across and along the axis, and the MDR's.
+
+    .. math::
+
+        \frac{k_t}{k_n}\Big|_{dir} = T_{dir}\!\left(\nu_{eq}, \frac{dR}{L^2}\right),
+        \qquad \frac{k_t}{k_n}\Big|_{MDR} = \frac{G^*}{E^*}
+        = \frac{2(1-\nu_{eq})}{2-\nu_{eq}}
+
+    with T the BEM table and :math:`\nu_{eq}` = :func:`equivalent_poisson` (G*, E*).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        A straight-cylinder model (:data:`STRAIGHT_CYLINDER_MODELS`); its R, L and E*
+        are used.
+    depth : float or array_like
+        Normal depth d [m].
+    gstar : float
+        Effective shear modulus G* [Pa].
+    table : CylinderTangentialTable, optional
+        Default :func:`cylinder_tangential_table`.
+
+    Returns
+    -------
+    dict
+        ``across``, ``along``, ``mdr`` (k_t/k_n [-]), ``mdr_error_across``,
+        ``mdr_error_along`` (MDR/BEM - 1 [-]), ``nu`` and ``d_tilde`` [-]; if the table
+        has the study's columns ``ft_err_scaled_{across,along}``, also
+        ``slip_error_across``, ``slip_error_along``: the largest difference between
+        the BEM's partial-slip curve and the law with this ratio, over mu F [-].
+
+    Notes
+    -----
+    Valid inside the table's (nu, d R/L^2) grid; refused outside. The ratios belong
+    to the BEM's normal contact of a rigid straight cylinder with the parabolic gap
+    (d/R <= 0.15 in the study), any L/R.
+
+    Examples
+    --------
+    With a made-up 2 x 2 table (the shipped one comes from the BEM study):
+
+    >>> import os, tempfile
+    >>> from linecontact.models import get_model
+    >>> from linecontact.tables import read_table, write_table
+    >>> meta = dict(title="demo", source="doctest", units="[-]", generated_by="doctest",
+    ...             date="2026-01-01", version="0", accuracy="none")
+    >>> cols = dict(nu=[0, 0, 0.5, 0.5], d_tilde=[1e-4, 1e-2, 1e-4, 1e-2],
+    ...             kt_kn_across=[1, 1, 0.8, 0.9], kt_kn_along=[1, 1, 0.6, 0.6])
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     write_table(os.path.join(d, "t.csv"), meta, cols)
+    ...     t = CylinderTangentialTable(read_table("t", directory=d))
+    >>> m = get_model("kunz", 5e-3, 10e-3, effective_modulus(210e9, 0.3))
+    >>> r = cylinder_stiffness_ratios(m, 1e-5, effective_shear_modulus(210e9, 0.3), table=t)
+    >>> f"{r['across']:.4f} {r['along']:.4f} {r['mdr']:.4f} d~ = {r['d_tilde']:.0e}"
+    '0.9483 0.7741 0.8235 d~ = 5e-04'
+
+    References
+    ----------
+    Popov & Hess (2015), chapter 4 (MDR value); the BEM table's header (its source).
+    """
+    key = getattr(model, "key", "")
+    if key not in STRAIGHT_CYLINDER_MODELS:
+        raise OutOfRangeError("model", key or type(model).__name__,
+                              "one of " + ", ".join(sorted(STRAIGHT_CYLINDER_MODELS)),
+                              hint="the BEM table is for a straight, aligned cylinder; "
+                                   "use method='mdr' for other shapes")
+    table = table if table is not None else cylinder_tangential_table()
+    d = check_positive("depth", depth, "m")
+    nu = equivalent_poisson(gstar, model.estar)
+    d_tilde = d * model.radius / model.length ** 2
+    across = table.ratio("across", nu, d_tilde)
+    along = table.ratio("along", nu, d_tilde)
+    mdr = mdr_stiffness_ratio(nu)
+    res = {"across": across, "along": along, "mdr": out(np.broadcast_to(mdr, np.shape(d))),
+           "mdr_error_across": out(mdr / np.asarray(across) - 1),
+           "mdr_error_along": out(mdr / np.asarray(along) - 1),
+           "nu": nu, "d_tilde": out(d_tilde)}
+    for side in _DIRECTIONS:   # the study's measured error of the partial-slip law
+        column = f"ft_err_scaled_{side}"
+        if column in table._grid:
+            res[f"slip_error_{side}"] = table.value(column, nu, d_tilde)
+    return res

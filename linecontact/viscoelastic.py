@@ -1,0 +1,597 @@
+r"""Viscoelastic normal contact of any model by the correspondence principle.
+
+A linear viscoelastic half-space is described by the relaxation function
+:math:`E^*(t)` of its effective modulus (a Prony series, the standard linear solid
+being its one-term case) or by the creep function :math:`J^*(t)`, related by the
+Volterra equation :math:`\int_0^t E^*(t-s)\,dJ^*(s) = 1`. For any shape with the
+elastic law :math:`F = E^* F_1(d)` (F1 the law at unit modulus: the model's
+F(d)/E*), Lee & Radok (1960) give, while the contact area does not shrink,
+
+.. math::
+
+    F(t) = \int_{0^-}^t E^*(t-t')\,\frac{d}{dt'}F_1\bigl(d(t')\bigr)\,dt'
+    \quad\text{(prescribed depth)},\qquad
+    F_1\bigl(d(t)\bigr) = \int_{0^-}^t J^*(t-t')\,\frac{dF}{dt'}\,dt'
+    \quad\text{(prescribed force: creep)}.
+
+Both integrals are evaluated by a recursive exponential update, one step per sample
+and per Prony term (exact when the integrand's history, F1(d(t)) or F(t), is
+piecewise linear between the samples; a step at the first sample is exact too). The
+history is zero before the first time and jumps to its first value there.
+
+Unloading
+---------
+When the contact shrinks (the depth decreases) the correspondence principle no longer
+holds: the stress under a receding contact edge remembers the earlier, larger contact.
+Ting (1966) solved this for axisymmetric indenters (the MDR reproduces it for those),
+not for a finite roller. Here a decreasing depth is refused (``unloading="raise"``,
+the default) or, on request (``unloading="warn"``), the Lee-Radok integral is
+continued with a :class:`RuntimeWarning` naming the first time the contact shrinks:
+from there on the values are Lee-Radok's, not the true ones.
+
+Moduli here are those of the effective modulus: for a rigid roller on a viscoelastic
+body with a constant Poisson ratio nu, :math:`E^*(t) = E(t)/(1-\nu^2)`
+(:meth:`PronySeries.scaled`).
+
+References
+----------
+.. [1] E. H. Lee, J. R. M. Radok, The contact problem for viscoelastic bodies, J. Appl.
+   Mech. 27 (1960) 438-444.
+.. [2] T. C. T. Ting, The contact stresses between a rigid indenter and a viscoelastic
+   half-space, J. Appl. Mech. 33 (1966) 845-854.
+.. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section 6.5.
+.. [4] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+   and Friction, Springer (2015), chapter 6.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from .validity import OutOfRangeError, check_interval, check_positive, out
+
+__all__ = [
+    "PronySeries",
+    "StandardLinearSolid",
+    "read_prony_series",
+    "force_history",
+    "creep_depth",
+    "step_creep_depth",
+]
+
+
+class PronySeries:
+    r"""Relaxation function of the effective modulus as a Prony series.
+
+    .. math::
+        E^*(t) = E_\infty + \sum_i E_i\,e^{-t/\tau_i}, \qquad
+        J^*(t) = \frac{1}{E_\infty} - \sum_k c_k\,e^{-t/\lambda_k}
+
+    The creep function is the exact solution of the Volterra equation
+    :math:`\int_0^t E^*(t-s)\,dJ^*(s) = 1`: in Laplace space
+    :math:`\bar J(s) = 1/(s\,h(s))` with :math:`h(s) = s\bar E(s) = E_\infty + \sum_i
+    E_i s/(s + 1/\tau_i)`; h has one real root :math:`-1/\lambda_k` below each
+    :math:`-1/\tau_i` (h decreases between its poles), found by Brent's method, and
+    :math:`c_k = \lambda_k / h'(-1/\lambda_k)` are the residues. The retardation
+    times :math:`\lambda_k` interlace the relaxation times, and
+    :math:`J^*(0) = 1/E_0`, :math:`E_0 = E_\infty + \sum E_i`.
+
+    Parameters
+    ----------
+    long_term : float
+        Long-term (relaxed) modulus E_inf > 0 [Pa].
+    moduli : array_like
+        Prony moduli E_i > 0 [Pa].
+    times : array_like
+        Relaxation times tau_i > 0, distinct [s].
+
+    Notes
+    -----
+    Valid for 0 < E_inf < inf, E_i > 0, 0 < tau_i < inf distinct, t >= 0. A fluid
+    (E_inf = 0) is refused: its creep is unbounded.
+
+    Examples
+    --------
+    >>> p = PronySeries(1e9, [2e9, 1e9], [0.1, 10.0])
+    >>> f"{p.instantaneous / 1e9:.1f} GPa", f"{p.relaxation(1.0) / 1e9:.4f} GPa"
+    ('4.0 GPa', '1.9049 GPa')
+    >>> f"{p.creep(0.0) * 1e9:.4f} /GPa", f"{p.creep(1e6) * 1e9:.4f} /GPa"
+    ('0.2500 /GPa', '1.0000 /GPa')
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 6.5; E. H. Lee, J. R. M. Radok,
+    J. Appl. Mech. 27 (1960) 438-444.
+    """
+
+    def __init__(self, long_term, moduli, times):
+        self.long_term = float(_one(check_positive("long_term", long_term, "Pa"),
+                                    "long_term"))
+        E = np.atleast_1d(np.asarray(moduli, dtype=float))
+        tau = np.atleast_1d(np.asarray(times, dtype=float))
+        if E.ndim != 1 or E.shape != tau.shape:
+            raise OutOfRangeError("moduli", f"{E.size} values for {tau.size} times",
+                                  "one modulus per relaxation time")
+        check_positive("moduli", E, "Pa")
+        check_positive("times", tau, "s")
+        if np.unique(tau).size != tau.size:
+            raise OutOfRangeError("times", "repeated values", "distinct relaxation times",
+                                  hint="merge terms with the same time")
+        order = np.argsort(tau)
+        self.moduli = E[order]
+        self.times = tau[order]
+        self._creep = None
+
+    @property
+    def instantaneous(self):
+        """Instantaneous (glassy) modulus E_0 = E_inf + sum E_i [Pa]."""
+        return self.long_term + float(np.sum(self.moduli))
+
+    def scaled(self, factor):
+        """The same series times `factor` [-] (e.g. 1/(1 - nu^2) for E -> E*)."""
+        f = float(_one(check_positive("factor", factor), "factor"))
+        return PronySeries(self.long_term * f, self.moduli * f, self.times)
+
+    def relaxation(self, time):
+        """Relaxation function E*(t) [Pa] at t >= 0 [s]."""
+        t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+        terms = self.moduli * np.exp(-t[..., None] / self.times)
+        return out(self.long_term + np.sum(terms, axis=-1))
+
+    @property
+    def creep_terms(self):
+        """(1/E_inf [1/Pa], c_k [1/Pa], lambda_k [s]) of J*(t) = 1/E_inf - sum c_k e^(-t/lambda_k)."""
+        if self._creep is None:
+            self._creep = self._invert()
+        return self._creep
+
+    def _invert(self):
+        from scipy.optimize import brentq
+
+        a = 1.0 / self.times[::-1]            # relaxation rates, increasing
+        E = self.moduli[::-1]
+        Einf = self.long_term
+
+        def h(x):                             # h(-x) for x > 0, decreasing between poles
+            return Einf + np.sum(E * x / (x - a))
+
+        def dh(x):                            # h'(s) at s = -x
+            return np.sum(E * a / (a - x) ** 2)
+
+        rates = []
+        lows = np.concatenate([[0.0], a[:-1]])
+        for lo, hi in zip(lows, a):
+            eps = 1e-14 * hi
+            rates.append(brentq(h, lo + eps if lo else 0.0, hi - eps, xtol=1e-300,
+                                rtol=4 * np.finfo(float).eps, maxiter=500))
+        rates = np.array(rates)
+        c = np.array([1.0 / (x * dh(x)) for x in rates])
+        return 1.0 / Einf, c[::-1], 1.0 / rates[::-1]     # retardation times increasing
+
+    def creep(self, time):
+        """Creep function J*(t) [1/Pa] at t >= 0 [s] (exact inversion, see the class)."""
+        t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+        jinf, c, lam = self.creep_terms
+        return out(jinf - np.sum(c * np.exp(-t[..., None] / lam), axis=-1))
+
+    def __repr__(self):
+        return (f"<{type(self).__name__}: E_inf = {self.long_term:g} Pa, "
+                f"{self.moduli.size} term(s), E_0 = {self.instantaneous:g} Pa>")
+
+
+class StandardLinearSolid(PronySeries):
+    r"""Standard linear solid (Zener): one Prony term, creep in closed form.
+
+    .. math::
+        E^*(t) = E_\infty + (E_0 - E_\infty)\,e^{-t/\tau}, \qquad
+        J^*(t) = \frac{1}{E_\infty} - \left(\frac{1}{E_\infty} - \frac{1}{E_0}\right)
+                 e^{-t/\tau_r}, \quad \tau_r = \tau\,\frac{E_0}{E_\infty}
+
+    Parameters
+    ----------
+    instantaneous : float
+        Instantaneous modulus E_0 [Pa].
+    long_term : float
+        Long-term modulus E_inf, 0 < E_inf < E_0 [Pa].
+    tau : float
+        Relaxation time tau > 0 (at constant strain) [s].
+
+    Notes
+    -----
+    Valid for 0 < E_inf < E_0 < inf and 0 < tau < inf. The creep (retardation) time
+    tau_r = tau E_0/E_inf is longer than the relaxation time.
+
+    Examples
+    --------
+    POM-like effective moduli, 3 GPa instantaneous, 1 GPa long-term, tau = 10 s:
+
+    >>> m = StandardLinearSolid(3e9, 1e9, 10.0)
+    >>> f"{m.retardation_time:.0f} s", f"{m.creep(30.0) * 1e9:.4f} /GPa"
+    ('30 s', '0.7547 /GPa')
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 6.5 (eq. 6.49 ff.).
+    """
+
+    def __init__(self, instantaneous, long_term, tau):
+        E0 = float(_one(check_positive("instantaneous", instantaneous, "Pa"),
+                        "instantaneous"))
+        Einf = float(_one(check_positive("long_term", long_term, "Pa"), "long_term"))
+        if not Einf < E0:
+            raise OutOfRangeError("long_term", Einf, f"(0, {E0:.6g}) Pa", unit="Pa",
+                                  hint="the long-term modulus must be below the "
+                                       "instantaneous one (equal: an elastic body)")
+        super().__init__(Einf, [E0 - Einf], [tau])
+        self.tau = float(self.times[0])
+
+    def scaled(self, factor):
+        """The same solid with both moduli times `factor` [-] (E -> E* = E/(1 - nu^2))."""
+        f = float(_one(check_positive("factor", factor), "factor"))
+        return StandardLinearSolid(self.instantaneous * f, self.long_term * f, self.tau)
+
+    @property
+    def retardation_time(self):
+        """Creep time tau_r = tau E_0/E_inf [s]."""
+        return self.tau * self.instantaneous / self.long_term
+
+    def creep(self, time):
+        """J*(t) [1/Pa], closed form, t >= 0 [s]."""
+        t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+        j0, jinf = 1.0 / self.instantaneous, 1.0 / self.long_term
+        return out(jinf - (jinf - j0) * np.exp(-t / self.retardation_time))
+
+    @property
+    def creep_terms(self):
+        j0, jinf = 1.0 / self.instantaneous, 1.0 / self.long_term
+        return jinf, np.array([jinf - j0]), np.array([self.retardation_time])
+
+
+def _one(v, name):
+    if np.ndim(v):
+        raise OutOfRangeError(name, f"an array of shape {np.shape(v)}", "a single number")
+    return v
+
+
+def read_prony_series(path, long_term=None):
+    r"""Read a Prony series from a CSV file with columns ``tau_s`` and ``E_Pa``.
+
+    .. math:: E(t) = E_\infty + \sum_i E_i\,e^{-t/\tau_i}
+
+    File format: optional ``# key: value`` comment lines (among them, optionally,
+    ``# E_inf: VALUE`` in Pa), then a header row naming the columns ``tau_s`` and
+    ``E_Pa`` (other columns ignored, case-insensitive), then one row per term.
+
+    Parameters
+    ----------
+    path : path-like
+        The CSV file.
+    long_term : float, optional
+        Long-term modulus E_inf, needed if the file has no ``# E_inf:`` line (if
+        both are given they must agree to 1e-12) [Pa].
+
+    Returns
+    -------
+    PronySeries
+
+    Raises
+    ------
+    OutOfRangeError
+        Missing or non-positive values, repeated times, no E_inf.
+
+    Notes
+    -----
+    Valid for files whose terms satisfy the :class:`PronySeries` ranges
+    (tau_s > 0 distinct, E_Pa > 0, E_inf > 0).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> text = "# material: test\n# E_inf: 1e9\ntau_s,E_Pa\n0.1,2e9\n10,1e9\n"
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = os.path.join(d, "prony.csv")
+    ...     _ = open(p, "w").write(text)
+    ...     s = read_prony_series(p)
+    >>> f"{s.instantaneous / 1e9:.1f} GPa", s.times.tolist()
+    ('4.0 GPa', [0.1, 10.0])
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 6.5.
+    """
+    path = Path(path)
+    lines = path.read_text(encoding="utf-8-sig").splitlines()
+    meta, body = {}, []
+    for line in lines:
+        s = line.strip()
+        if not s:
+            continue
+        if s.startswith("#"):
+            key, sep, value = s[1:].partition(":")
+            if sep:
+                meta[key.strip().lower()] = value.strip()
+            continue
+        body.append(s)
+    if not body:
+        raise OutOfRangeError("prony file", str(path), "a header row and terms")
+    names = [c.strip().lower() for c in body[0].split(",")]
+    for need in ("tau_s", "e_pa"):
+        if need not in names:
+            raise OutOfRangeError("prony file", str(path),
+                                  "columns tau_s and E_Pa (header row)",
+                                  hint=f"the header row is {body[0]!r}")
+    it, ie = names.index("tau_s"), names.index("e_pa")
+    tau, E = [], []
+    for k, row in enumerate(body[1:], start=2):
+        cells = [c.strip() for c in row.split(",")]
+        try:
+            tau.append(float(cells[it]))
+            E.append(float(cells[ie]))
+        except (ValueError, IndexError):
+            raise OutOfRangeError("prony file", f"{path}, data line {k - 1}: {row!r}",
+                                  "two numbers tau_s, E_Pa per row") from None
+    if not tau:
+        raise OutOfRangeError("prony file", str(path), "at least one term")
+    file_einf = None
+    for key in ("e_inf", "e_inf_pa"):
+        if key in meta:
+            try:
+                file_einf = float(meta[key].split()[0])
+            except (ValueError, IndexError):
+                raise OutOfRangeError("E_inf", meta[key], "a number in Pa") from None
+    if long_term is None and file_einf is None:
+        raise OutOfRangeError("long_term", "missing", "(0, inf) Pa",
+                              hint=f"give it, or write '# E_inf: VALUE' in {path}")
+    if long_term is not None and file_einf is not None and not math.isclose(
+            float(long_term), file_einf, rel_tol=1e-12):
+        raise OutOfRangeError("long_term", float(long_term), f"{file_einf:g} Pa (the "
+                              f"file's E_inf)", unit="Pa")
+    return PronySeries(long_term if long_term is not None else file_einf, E, tau)
+
+
+# --------------------------------------------------------------------------------------
+# hereditary integrals
+# --------------------------------------------------------------------------------------
+def _times(time):
+    t = np.asarray(time, dtype=float)
+    if t.ndim != 1 or t.size < 1:
+        raise OutOfRangeError("time", f"an array of shape {t.shape}",
+                              "a 1D array of at least one time", unit="s")
+    check_interval("time", t, 0.0, np.inf, high_open=True, unit="s")
+    if np.any(np.diff(t) < 0):
+        i = int(np.argmax(np.diff(t) < 0)) + 1
+        raise OutOfRangeError("time", float(t[i]), f"[{t[i - 1]:.6g}, inf) s", unit="s",
+                              where=f"element [{i}]", hint="times must not decrease")
+    return t
+
+
+def _hereditary(kinf, k, theta, t, g):
+    """y(t_n) = int_{t0-}^{t_n} K(t_n - s) dg(s), K = kinf + sum k_i exp(-t/theta_i),
+    g piecewise linear between samples, g = 0 before t_0 (a step there).
+
+    Per term the memory h_i obeys h_i(t_n) = e^{-x} h_i(t_{n-1}) + k_i dg (1 - e^{-x})/x,
+    x = dt/theta_i (the exact integral over a linear piece; a step where dt = 0). On an
+    even time grid the recursion is a first-order linear filter (scipy.signal.lfilter).
+    """
+    k = np.asarray(k, dtype=float)
+    theta = np.asarray(theta, dtype=float)
+    dt = np.diff(t)[:, None]
+    dg = np.diff(g)[:, None]
+    x = dt / theta
+    with np.errstate(invalid="ignore", divide="ignore"):
+        gain = np.where(x > 0, -np.expm1(-x) / np.where(x > 0, x, 1.0), 1.0)
+    decay = np.exp(-x)
+    inc = k * dg * gain
+    h = np.empty((t.size, k.size))
+    h[0] = k * g[0]
+    if t.size > 1 and np.all(dt == dt[0]):
+        from scipy.signal import lfilter
+
+        for i in range(k.size):
+            a = decay[0, i]
+            b = np.concatenate([[h[0, i]], inc[:, i]])
+            h[:, i] = lfilter([1.0], [1.0, -a], b)
+    else:
+        for n in range(1, t.size):
+            h[n] = decay[n - 1] * h[n - 1] + inc[n - 1]
+    return kinf * g + h.sum(axis=1)
+
+
+def _unit_law(model, depth):
+    d = np.asarray(depth, dtype=float)
+    res = np.zeros(d.shape)
+    pos = d > 0
+    if np.any(pos):
+        res[pos] = np.asarray(model.force(d[pos])) / model.estar
+    return res
+
+
+def _shrinking(t, depth, unloading, what):
+    if unloading not in ("raise", "warn"):
+        raise OutOfRangeError("unloading", unloading, "one of 'raise', 'warn'")
+    dd = np.diff(depth)
+    bad = dd < -1e-12 * np.maximum(np.abs(depth[1:]), np.abs(depth[:-1]))
+    if not np.any(bad):
+        return
+    i = int(np.argmax(bad)) + 1
+    msg = (f"the contact shrinks at t = {t[i]:.6g} s ({what}): the correspondence "
+           "principle (Lee & Radok 1960) holds only while the contact grows; Ting's "
+           "(1966) unloading solution is known for axisymmetric indenters only")
+    if unloading == "raise":
+        raise OutOfRangeError("depth", float(depth[i]), f"[{depth[i - 1]:.6g}, inf) m",
+                              unit="m", where=f"t = {t[i]:.6g} s",
+                              hint=msg + "; unloading='warn' continues with Lee-Radok")
+    warnings.warn(msg + "; values from there on are Lee-Radok's, not exact",
+                  RuntimeWarning, stacklevel=3)
+
+
+def force_history(model, material, time, depth, *, unloading="raise"):
+    r"""Force under a prescribed depth history (Lee & Radok 1960), any model.
+
+    .. math::
+        F(t) = \int_{0^-}^{t} E^*(t-t')\,\frac{d}{dt'}F_1\bigl(d(t')\bigr)\,dt',
+        \qquad F_1(d) = F_{model}(d)/E^*_{model}
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model; only the shape of its law is used (its E* cancels).
+    material : PronySeries
+        Relaxation function E*(t) (:class:`StandardLinearSolid` or a Prony series).
+    time : array_like
+        Sample times t_0 <= t_1 <= ...; the depth is 0 before t_0 [s].
+    depth : array_like
+        Depth d at those times (same length; a single value = held constant from
+        t_0, a step) [m].
+    unloading : {"raise", "warn"}, optional
+        A decreasing depth (shrinking contact) is refused (default) or continued by
+        the Lee-Radok integral with a :class:`RuntimeWarning` (then not exact).
+
+    Returns
+    -------
+    ndarray
+        F(t) [N] at the sample times.
+
+    Notes
+    -----
+    Valid for non-decreasing depth histories inside the model's depth range.
+    Exact (to rounding) when F1(d(t)) is piecewise linear between the samples, so a
+    step and hold gives the relaxation F = F1(d) E*(t) exactly; otherwise the error
+    is second order in the time step.
+
+    Examples
+    --------
+    Relaxation of a roller held at 2 um (the force follows E*(t)):
+
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, 1.0)
+    >>> sls = StandardLinearSolid(3e9, 1e9, 10.0)
+    >>> F = force_history(m, sls, [0.0, 10.0, 1e4], 2e-6)
+    >>> [f"{f:.2f}" for f in F]
+    ['10.50', '6.08', '3.50']
+
+    References
+    ----------
+    E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444; K. L. Johnson,
+    Contact Mechanics (1985), section 6.5.
+    """
+    t = _times(time)
+    d = np.broadcast_to(np.asarray(depth, dtype=float), t.shape).astype(float)
+    check_interval("depth", d, 0.0, np.inf, high_open=True, unit="m")
+    _shrinking(t, d, unloading, "the prescribed depth decreases")
+    g = _unit_law(model, d)
+    return _hereditary(material.long_term, material.moduli, material.times, t, g)
+
+
+def creep_depth(model, material, time, force, *, unloading="raise"):
+    r"""Depth under a constant force or a force history (creep), any model.
+
+    .. math::
+        F_1\bigl(d(t)\bigr) = \int_{0^-}^{t} J^*(t-t')\,\frac{dF}{dt'}\,dt',
+        \qquad d(t) = F_1^{-1}(\cdot)
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model; F1 = F/E* of its law, inverted by its d(F).
+    material : PronySeries
+        The material; its creep function J*(t) is used.
+    time : array_like
+        Sample times t_0 <= t_1 <= ...; the force is 0 before t_0 [s].
+    force : float or array_like
+        Normal force F: one value (applied at t_0 and held: creep) or one per
+        sample (piecewise linear between samples) [N].
+    unloading : {"raise", "warn"}, optional
+        A decreasing depth (when the force drops faster than the material creeps) is
+        refused (default) or continued by Lee-Radok with a :class:`RuntimeWarning`.
+
+    Returns
+    -------
+    ndarray
+        d(t) [m] at the sample times.
+
+    Notes
+    -----
+    Valid while the depth does not decrease, forces >= 0, inside the model's depth
+    range (the depth grows by up to E_0/E_inf in force-equivalent terms: the model
+    must accept the force F E_model*/E_inf). Exact (to rounding) for forces piecewise
+    linear between the samples (a step and hold included).
+
+    Examples
+    --------
+    A rigid roller on a polymer (E*_0 = 3 GPa, E*_inf = 1 GPa, tau = 10 s) under 1 kN:
+
+    >>> from linecontact.models import get_model
+    >>> m = get_model("universal", 5e-3, 10e-3, 1e9)
+    >>> d = creep_depth(m, StandardLinearSolid(3e9, 1e9, 10.0), [0.0, 30.0, 1e4], 1e3)
+    >>> [f"{x * 1e6:.2f} um" for x in d]
+    ['82.58 um', '168.03 um', '214.13 um']
+
+    References
+    ----------
+    E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444; K. L. Johnson,
+    Contact Mechanics (1985), section 6.5.
+    """
+    t = _times(time)
+    F = np.broadcast_to(np.asarray(force, dtype=float), t.shape).astype(float)
+    check_interval("force", F, 0.0, np.inf, high_open=True, unit="N")
+    jinf, c, lam = material.creep_terms
+    y = _hereditary(jinf, -c, lam, t, F)              # F1(d(t)) [m^2 ... per unit E*]
+    y = np.maximum(y, 0.0) if unloading == "warn" else y
+    d = np.zeros(t.shape)
+    pos = y > 0
+    if np.any(pos):
+        d[pos] = model.depth(y[pos] * model.estar)
+    _shrinking(t, d, unloading, "the force decreases faster than the material creeps")
+    return d
+
+
+def step_creep_depth(model, material, force, time):
+    r"""Depth at time t under a force F applied at t = 0 and held (creep), vectorised.
+
+    .. math:: d(t) = F_1^{-1}\bigl(F\,J^*(t)\bigr)
+
+    the closed form of Lee & Radok's creep integral for a step (any model, exact while
+    the contact grows, which it does under a held force: J* increases).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model; F1 = F/E* of its law, inverted by its d(F).
+    material : object
+        Anything with ``creep(t)`` returning J*(t) [1/Pa], e.g. a :class:`PronySeries`.
+    force : float or array_like
+        Held normal force F > 0 [N].
+    time : float or array_like
+        Time since the load was applied, t >= 0; broadcasts with force [s].
+
+    Returns
+    -------
+    float or ndarray
+        d(t) [m].
+
+    Notes
+    -----
+    Valid for t >= 0, F > 0 and while F E*_model J*(t) stays inside the model's force
+    range (at long times the depth is that of the elastic law at E* = E_inf).
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("universal", 5e-3, 10e-3, 1e9)
+    >>> d = step_creep_depth(m, StandardLinearSolid(3e9, 1e9, 10.0), 1e3, [0.0, 30.0])
+    >>> [f"{x * 1e6:.2f} um" for x in d]
+    ['82.58 um', '168.03 um']
+
+    References
+    ----------
+    E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444.
+    """
+    F = check_positive("force", force, "N")
+    t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+    F, t = np.broadcast_arrays(F, t)
+    J = np.asarray(material.creep(t), dtype=float)
+    return out(np.asarray(model.depth(F * J * model.estar), dtype=float))

@@ -1,0 +1,270 @@
+"""The 3D roller BEM (tools/roller_bem.py) against exact answers.
+
+Each test states the fact it checks and why its tolerance is what it is. Grids are
+small (32 x 32 cells over the contact window, 64 x 64 for the DC-FFT), so the file
+runs in a few seconds.
+
+Exact reference: a circular crown P = x^2/(2 Rc) on a roller of radius R is Hertz's
+elliptical contact with principal relative curvatures 1/Rc (along the axis) and 1/R
+(across it) while the contact stays inside the roller (Johnson 1985, section 4.2).
+"""
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
+
+from tools.roller_bem import (first_contact_depth, grid_convergence, solve_roller,
+                              solve_roller_force, tilt_punch)
+
+R, L, ESTAR = 0.010, 0.020, 115.385e9     # steel on steel: E = 210 GPa, nu = 0.3
+N = 32                                     # cells per direction of the contact window
+
+
+def hertz_ellipse(radius, crown_radius, estar, force):
+    """Exact Hertz contact of the gap x^2/(2 Rc) + y^2/(2 R), Rc > R.
+
+    Johnson (1985), Eqs. 3.63-3.66 with p = p0 sqrt(1 - x^2/a^2 - y^2/b^2): inside the
+    ellipse the displacement is (L - M x^2 - N y^2)/E* with L = p0 b K(e),
+    M = p0 b (K - E)/(e^2 a^2), N = p0 b (a^2 E/b^2 - K)/(e^2 a^2), e^2 = 1 - b^2/a^2;
+    contact needs M = E*/(2 Rc), N = E*/(2 R), approach = L/E*, F = 2/3 pi a b p0.
+    Returns (a, b, p0, approach) [m, m, Pa, m]."""
+    A, B = 1 / (2 * crown_radius), 1 / (2 * radius)
+
+    def ratio(e2):
+        K, E = ellipk(e2), ellipe(e2)
+        return (E / (1 - e2) - K) / (K - E) - B / A
+
+    e2 = brentq(ratio, 1e-12, 1 - 1e-15, xtol=1e-16)
+    K, E = ellipk(e2), ellipe(e2)
+    a = (3 * force * (K - E) / (2 * np.pi * estar * e2 * A)) ** (1 / 3)
+    b = a * np.sqrt(1 - e2)
+    p0 = 3 * force / (2 * np.pi * a * b)
+    return a, b, p0, p0 * b * K / estar
+
+
+def crown(rc, offset=0.0):
+    return lambda x: (x - offset) ** 2 / (2 * rc)
+
+
+def moment_semi_axes(res):
+    """Semi-axes of the Hertz ellipse with the same second moments of pressure:
+    for p = p0 sqrt(1 - x^2/a^2 - y^2/b^2), int p x^2 / int p = a^2/5 (and b^2/5)."""
+    g, p = res.grid, res.pressure
+    X, Y = np.meshgrid(g.x - res.mean_x, g.y, indexing="ij")
+    return np.sqrt(5 * np.sum(p * X ** 2) / p.sum()), np.sqrt(5 * np.sum(p * Y ** 2) / p.sum())
+
+
+CHECKS = [  # SPEC check values, R = 10 mm, E* = 115.385 GPa: (Rc, F, a, b, p0, approach)
+    (0.500, 1000.0, 2.287e-3, 0.1895e-3, 1102e6, 7.02e-6),
+    (0.200, 2000.0, 1.983e-3, 0.2861e-3, 1684e6, 13.92e-6),
+]
+
+
+@pytest.mark.parametrize("rc, force, a, b, p0, approach", CHECKS)
+def test_exact_hertz_reference_reproduces_the_published_check_values(rc, force, a, b, p0,
+                                                                     approach):
+    """The reference (complete elliptic integrals) gives the check values to their
+    quoted digits or 0.05 %. They are quoted to 4 digits, but not all of them are rounded from the exact
+    solution: for Rc = 200 mm the exact a = 1.98247 mm and p0 = 1683.48 MPa (quoted
+    1.983 mm, 1684 MPa: 0.03 % off; 3F/(2 pi a b) with the quoted a, b gives
+    1683.1 MPa, so the quoted set is not self-consistent at its last digit either)."""
+    ha, hb, hp, hd = hertz_ellipse(R, rc, ESTAR, force)
+    # half a unit in the last quoted digit (approach: 3 digits, 7.02 um), or 0.05 %
+    for got, quoted, half_unit in [(ha, a, 0.5e-6), (hb, b, 0.5e-7), (hp, p0, 0.5e6),
+                                   (hd, approach, 0.005e-6)]:
+        assert abs(got - quoted) <= max(half_unit, 5e-4 * quoted), (got, quoted)
+    # and p0 = 3F/(2 pi a b), approach from Johnson's L: the returned set is consistent
+    assert hp == pytest.approx(3 * force / (2 * np.pi * ha * hb), rel=1e-14)
+
+
+@pytest.mark.parametrize("rc, force", [(c[0], c[1]) for c in CHECKS])
+def test_circular_crown_is_exact_hertz_within_half_a_percent(rc, force):
+    """A crowned roller whose contact stays inside it is Hertz's ellipse: approach, p0
+    and semi-axes within 0.5 % on 32 x 32 cells (measured: approach 2e-4, p0 5e-4,
+    semi-axes 1.2e-3; the force error of a Hertz field falls at second order,
+    test_grid_convergence_order_*). The contact set is a staircase: its length is 2a
+    to within one cell on each side."""
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    res = solve_roller_force(R, L, ESTAR, force, tilt=0.0, profile=crown(rc), n_x=N,
+                             n_y=N, fields=True)
+    assert not res.edge_loaded
+    assert res.depth == pytest.approx(approach, rel=5e-3), "approach is not Hertz's"
+    assert res.p_max == pytest.approx(p0, rel=5e-3), "peak pressure is not Hertz's p0"
+    am, bm = moment_semi_axes(res)
+    assert am == pytest.approx(a, rel=5e-3) and bm == pytest.approx(b, rel=5e-3), \
+        "pressure is not Hertz's ellipse"
+    assert abs(res.contact_length - 2 * a) <= 2 * res.grid.dx
+    assert abs(res.force / force - 1) <= 1e-6, "force control missed the force"
+
+
+def test_stiffnesses_on_the_contact_set_are_the_hertz_derivatives():
+    """With smooth contact edges the incremental problem is a rigid punch on the
+    current contact set (flat: dF/dd; tilted: dM/dtheta). Hertz: F ~ approach^(3/2)
+    gives dF/dd = 3F/(2 approach), and M = F Rc theta gives dM/dtheta = F Rc at
+    theta = 0; dF/dtheta = 0 by symmetry. Tolerance 1 %: the punch force on a staircase
+    footprint converges at first order (tests/test_bem.py; measured here 0.4 %)."""
+    rc, force = 0.5, 1000.0
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    res = solve_roller_force(R, L, ESTAR, force, tilt=0.0, profile=crown(rc), n_x=N, n_y=N)
+    assert res.stiffness == pytest.approx(1.5 * force / approach, rel=1e-2)
+    assert res.tilt_stiffness == pytest.approx(force * rc, rel=1e-2)
+    assert abs(res.coupling) < 1e-6 * res.stiffness * a
+
+
+@pytest.mark.parametrize("theta", [0.004, 0.012])
+def test_tilted_crown_moves_the_hertz_contact_to_rc_theta(theta):
+    """P - theta x = (x - Rc theta)^2/(2 Rc) - Rc theta^2/2: the same Hertz contact
+    centred at x* = Rc theta (while Rc theta + a < L/2: here 2 mm and 6 mm + 2.3 mm
+    < 10 mm), so M = F Rc theta, p_max is the untilted p0 and the approach at x = 0
+    is the Hertz approach less Rc theta^2/2. The grid moves with the contact, so the
+    tilted and untilted solutions agree to the solver tolerance; against Hertz 0.5 %
+    as above. x* from the interpolated peak: within 1 % of a cell."""
+    rc, force = 0.5, 1000.0
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    flat = solve_roller_force(R, L, ESTAR, force, tilt=0.0, profile=crown(rc), n_x=N, n_y=N)
+    res = solve_roller_force(R, L, ESTAR, force, tilt=theta, profile=crown(rc), n_x=N,
+                             n_y=N)
+    assert not res.edge_loaded
+    assert res.moment == pytest.approx(force * rc * theta, rel=1e-4)
+    assert abs(res.x_at_p_max - rc * theta) < 0.01 * res.grid.dx
+    assert res.p_max == pytest.approx(flat.p_max, rel=1e-4)
+    assert res.p_max == pytest.approx(p0, rel=5e-3)
+    assert res.depth + rc * theta ** 2 / 2 == pytest.approx(approach, rel=5e-3)
+
+
+def test_force_control_returns_zero_moment_and_the_aligning_tilt():
+    """A crown centred off the middle, P = (x - c)^2/(2 Rc), free to tilt: the moment
+    about the roller centre vanishes where the Hertz contact is centred at x = 0,
+    i.e. c + Rc theta = 0, theta = -c/Rc exactly; the approach is then Hertz's plus
+    c^2/(2 Rc). Tolerances: M to the Newton tolerance (1e-6 F L/2), theta to 0.1 %
+    (a shift of a small fraction of a cell), approach 0.5 % as above."""
+    rc, force, c = 0.5, 1000.0, 0.003
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    res = solve_roller_force(R, L, ESTAR, force, profile=crown(rc, c), n_x=N, n_y=N)
+    assert abs(res.moment) <= 1e-6 * force * L / 2
+    assert res.tilt == pytest.approx(-c / rc, rel=1e-3)
+    assert res.depth - c ** 2 / (2 * rc) == pytest.approx(approach, rel=5e-3)
+
+
+def test_grid_convergence_order_of_a_hertz_contact_is_two():
+    """On nested grids over one window, the error of F(d) against Hertz,
+    F = F0 (d/approach)^(3/2), falls at second order (cell-centred collocation of a
+    field that vanishes like a square root at its edge; measured errors 2.4e-3,
+    4.0e-4, 8.4e-5 at 16, 32, 64 cells: orders 2.6 and 2.3). Accepted: 1.7 to 3."""
+    rc, force = 0.5, 1000.0
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    base = solve_roller(R, L, ESTAR, approach, profile=crown(rc), n_x=16, n_y=16,
+                        stiffness=False)
+    errs = [abs(solve_roller(R, L, ESTAR, approach, profile=crown(rc), n_x=n, n_y=n,
+                             window=base.grid, stiffness=False).force / force - 1)
+            for n in (16, 32, 64)]
+    orders = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
+    assert np.all((orders > 1.7) & (orders < 3.0)), f"errors {errs}, orders {orders}"
+
+
+def test_grid_convergence_of_an_edge_loaded_roller_is_first_order_at_best():
+    """A straight roller tilted so that both ends carry load (edge loaded) has a
+    singular end pressure: F converges at order ~0.7-0.9 in the cell length (the
+    flat-ended cylinder's order, tests/test_bem.py), and its peak pressure grows
+    without bound under refinement (it is reported as edge loading, not a number).
+    Measured changes of F: 0.28 %, 0.17 %, 0.09 % from 32 to 256 cells."""
+    d, theta = 3e-6, 2e-4
+    runs = [solve_roller(R, L, ESTAR, d, tilt=theta, n_x=n, n_y=16, stiffness=False)
+            for n in (32, 64, 128, 256)]
+    assert all(r.ends == (True, True) for r in runs)
+    F = np.array([r.force for r in runs])
+    ch = np.abs(np.diff(F))
+    orders = np.log2(ch[:-1] / ch[1:])
+    assert np.all((orders > 0.5) & (orders < 1.2)), f"F {F}, orders {orders}"
+    p = [r.p_max for r in runs]
+    assert p[-1] > 1.5 * p[0], "the singular end peak should grow with refinement"
+
+
+def test_grid_convergence_report_extrapolates_with_the_known_order():
+    """grid_convergence: N and 2N on the same window; for the Hertz contact the
+    Richardson value (order 2) is closer to the exact force than either grid."""
+    rc, force = 0.5, 1000.0
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    g = grid_convergence(solve_roller, R, L, ESTAR, approach, profile=crown(rc), n_x=16,
+                         n_y=16, stiffness=False)
+    assert g["order"] == 2.0 and not g["fine"].edge_loaded
+    err_fine = abs(g["fine"].force / force - 1)
+    assert abs(g["richardson_force"] / force - 1) < err_fine
+
+
+def test_tilt_punch_solves_the_tilted_rigid_punch():
+    """K_SS p = x on S from the symmetric scaled system: the displacement of the
+    returned pressure is x on the footprint (to the solver tolerance)."""
+    from tools.halfspace import DCFFTOperator
+    op = DCFFTOperator(12, 6, 1.0, 0.5)
+    S = np.zeros((12, 6), dtype=bool)
+    S[2:11, 1:5] = True
+    x = np.arange(12) + 0.5 + 3.0          # off-centre window: x in [3.5, 14.5]
+    p1, px, err, its = tilt_punch(op, S, x, tol=1e-11)
+    np.testing.assert_allclose(op(px)[S], np.broadcast_to(x[:, None], S.shape)[S],
+                               rtol=1e-9)
+    np.testing.assert_allclose(op(p1)[S], 1.0, rtol=1e-9)
+
+
+def test_no_contact_and_negative_drop_are_refused_with_the_range():
+    """A depth below first contact, or a profile with a negative drop, gets the
+    one-line error naming the parameter, its value and the valid range."""
+    dc = first_contact_depth(L, tilt=0.0, profile=crown(0.5))
+    assert dc == 0.0
+    with pytest.raises(ValueError, match=r"depth = -1e-06 m .*outside the valid range"):
+        solve_roller(R, L, ESTAR, -1e-6, profile=crown(0.5))
+    with pytest.raises(ValueError, match=r"profile drop = -1e-06 m .*\[0, inf\) m"):
+        solve_roller(R, L, ESTAR, 1e-6, profile=lambda x: np.full_like(x, -1e-6))
+
+
+def test_straight_roller_reproduces_the_universal_curve():
+    """A straight, untilted roller is the finite cylinder of the universal curve
+    F = E* L^3/R Psi(d R/L^2) (tables/universal_curve.csv, computed with the
+    mirror-symmetric operator on quarter grids: an independent discretisation).
+    The full DC-FFT solution converges at first order in the axial cell (the end
+    singularity): on 128 x 32 and 256 x 64 cells it is 1.7e-3 to 2.0e-3 and 1.0e-3
+    low, and its first-order Richardson value agrees with the table to 5e-4 (measured
+    3.2e-4 and 1.8e-5 at d = 2 and 10 um: the cells across the axis are refined too,
+    and that part converges faster than first order; the table's own accuracy is
+    5e-5)."""
+    from linecontact.universal import universal_curve
+    curve = universal_curve()
+    r, length = 0.005, 0.014
+    for d in (2e-6, 1e-5):
+        exact = ESTAR * length ** 3 / r * float(curve.psi(d * r / length ** 2))
+        g = grid_convergence(solve_roller, r, length, ESTAR, d, n_x=128, n_y=32,
+                             stiffness=False)
+        assert g["fine"].ends == (True, True) and g["order"] == 1.0
+        assert abs(g["fine"].force / exact - 1) < 1.5e-3
+        assert abs(g["richardson_force"] / exact - 1) < 5e-4
+
+
+def test_tool_docstring_examples_run():
+    """The Examples blocks of tools/roller_bem.py are doctests (tools/ is outside the
+    default doctest paths)."""
+    import doctest
+    import tools.roller_bem
+    result = doctest.testmod(tools.roller_bem, optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0 and result.attempted >= 5
+
+
+# --- the accuracy study (tools/roller_study.py) ---------------------------------------
+
+def test_study_case_compares_runtime_and_iso_with_the_bem():
+    """One study case end to end on a small grid (32 x 16 and 64 x 32): a crowned
+    roller tilted by 1 mrad, contact off the ends. The runtime coupled-slice model
+    meets issue 9's targets against the BEM (1 % deflection and moment, 5 % peak
+    pressure; measured 0.01 %, 0.04 %, 0.01 % at the study's grids), and ISO slicing's
+    uncoupled slices miss the crowned roller's deflection by more than 1 % (measured
+    3.2 % at this load: issue 9 quotes 6-15 % at light load against exact Hertz)."""
+    pytest.importorskip("linecontact.roller")
+    import tools.roller_study as rs
+    task = next(t for t in rs.study_tasks(n_x=32, n_y=16, check_every=0)
+                if t["key"] == "A-circular_crown-q800-t1")
+    out = rs.run_case(task)
+    assert not out["bem_edge"]
+    assert abs(out["bem_change_depth"]) < 1e-3 * out["bem_delta"]
+    assert abs(out["rt_err_depth"]) < 0.01
+    assert abs(out["rt_err_moment"]) < 0.01
+    assert abs(out["rt_err_p_max"]) < 0.05
+    assert abs(out["iso_err_depth"]) > 0.01

@@ -1,0 +1,185 @@
+"""Viscoelastic contact (linecontact.viscoelastic): exact oracles of the correspondence
+principle (Lee & Radok 1960) and of the relaxation-creep interconversion.
+
+Facts checked:
+- the standard linear solid's creep function J = 1/E_inf - (1/E_inf - 1/E_0)
+  exp(-t/tau_r), tau_r = tau E_0/E_inf (Johnson 1985, section 6.5), is what the general
+  Prony inversion gives for one term;
+- a many-term Prony series' J solves the Volterra equation int_0^t E(t-s) dJ(s) = 1
+  (checked by adaptive quadrature, independent of the Laplace-space inversion);
+- Lee-Radok for the Hertz sphere under a constant force: d(t)^(3/2) =
+  3 F J(t)/(4 sqrt(R)); relaxation at constant depth F(t) = F1(d) E(t);
+- the recursive update is exact for piecewise-linear histories (ramps of a linear law,
+  in closed form), with coarse steps;
+- a shrinking contact is refused, or continued with a warning on request.
+"""
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+from linecontact.models import ContactModel
+from linecontact.validity import OutOfRangeError
+from linecontact.viscoelastic import (PronySeries, StandardLinearSolid, creep_depth,
+                                      force_history, read_prony_series,
+                                      step_creep_depth)
+
+
+class HertzSphere(ContactModel):
+    """Rigid sphere on a half-space, F = 4/3 E* sqrt(R) d^(3/2) (test-only law)."""
+
+    key = ""
+    label = "Hertz sphere (test)"
+    provenance = {"equation": "Johnson 1985, eq. 4.23"}
+
+    def force(self, depth):
+        return 4 / 3 * self.estar * math.sqrt(self.radius) * np.asarray(depth) ** 1.5
+
+    def depth(self, force):
+        return (3 * np.asarray(force) / (4 * self.estar * math.sqrt(self.radius))) ** (2 / 3)
+
+    def stiffness(self, depth):
+        return 2 * self.estar * np.sqrt(self.radius * np.asarray(depth))
+
+
+class FlatPunch(ContactModel):
+    """Flat punch of radius a = `length`: F = 2 E* a d, linear in d (test-only law)."""
+
+    key = ""
+    label = "flat punch (test)"
+    provenance = {"equation": "Johnson 1985, section 3.8"}
+
+    def force(self, depth):
+        return 2 * self.estar * self.length * np.asarray(depth, dtype=float)
+
+    def depth(self, force):
+        return np.asarray(force, dtype=float) / (2 * self.estar * self.length)
+
+    def stiffness(self, depth):
+        return np.full(np.shape(depth), 2 * self.estar * self.length)
+
+
+SLS = StandardLinearSolid(3e9, 1e9, 10.0)
+PRONY = PronySeries(0.5e9, [1e9, 2e9, 0.7e9, 0.3e9], [1e-3, 0.1, 5.0, 300.0])
+T = np.array([0.0, 1e-3, 0.05, 1.0, 7.0, 30.0, 100.0, 1e3, 1e5])
+
+
+def test_sls_creep_equals_the_general_inversion():
+    """One-term Prony series inverted through Laplace residues = the SLS closed form
+    (rtol 1e-12: Brent's root to machine precision)."""
+    general = PronySeries(1e9, [2e9], [10.0])
+    assert general.creep(T) == pytest.approx(SLS.creep(T), rel=1e-12, abs=0)
+    assert general.creep_terms[2][0] == pytest.approx(SLS.retardation_time, rel=1e-12, abs=0)
+    assert SLS.retardation_time == pytest.approx(10.0 * 3e9 / 1e9, rel=1e-15, abs=0)
+
+
+def test_prony_creep_solves_the_volterra_equation():
+    """E(t) J(0) + int_0^t E(t-s) J'(s) ds = 1 for a 4-term series spanning 5 decades,
+    with J(0) = 1/E_0 and J(inf) = 1/E_inf; quad to 1e-12, asserted to 1e-9; the
+    retardation times interlace the relaxation times (longer than each)."""
+    jinf, c, lam = PRONY.creep_terms
+    assert PRONY.creep(0.0) == pytest.approx(1 / PRONY.instantaneous, rel=1e-12, abs=0)
+    assert PRONY.creep(1e9) == pytest.approx(1 / PRONY.long_term, rel=1e-12, abs=0)
+    assert np.all(lam > PRONY.times) and np.all(lam[:-1] < PRONY.times[1:])
+
+    def dJ(s):
+        return np.sum(c / lam * np.exp(-s / lam))
+
+    for t in [1e-4, 0.02, 1.0, 40.0, 2e3]:
+        pts = [p for p in list(PRONY.times) + list(lam) if p < t]
+        integral, _ = quad(lambda s: PRONY.relaxation(t - s) * dJ(s), 0.0, t,
+                           points=pts or None, limit=400, epsabs=0, epsrel=1e-12)
+        total = PRONY.relaxation(t) * PRONY.creep(0.0) + integral
+        assert total == pytest.approx(1.0, rel=1e-9, abs=0), f"Volterra identity at t = {t}"
+
+
+def test_sphere_creep_under_constant_force_is_lee_radok():
+    """Lee & Radok (1960): d(t)^(3/2) = 3 F J(t)/(4 sqrt R) for a step force held; the
+    recursive update is exact for a step: rtol 1e-12."""
+    R, F = 5e-3, 50.0
+    m = HertzSphere(R, R, 1.0)
+    for material in (SLS, PRONY):
+        d = creep_depth(m, material, T, F)
+        expected = (3 * F * material.creep(T) / (4 * math.sqrt(R))) ** (2 / 3)
+        assert d == pytest.approx(expected, rel=1e-12, abs=0)
+
+
+def test_step_creep_equals_the_hereditary_integral():
+    """step_creep_depth (closed form d = F1^-1(F J(t))) and creep_depth (the recursive
+    update for a step) are the same Lee-Radok solution: rtol 1e-13."""
+    m = HertzSphere(5e-3, 5e-3, 3.0)
+    assert step_creep_depth(m, PRONY, 40.0, T) == pytest.approx(
+        creep_depth(m, PRONY, T, 40.0), rel=1e-13, abs=0)
+
+
+def test_relaxation_at_constant_depth_follows_the_modulus():
+    """F(t) = F1(d) E(t) for a depth stepped and held (rtol 1e-13), any law."""
+    R, d = 5e-3, 3e-6
+    m = HertzSphere(R, R, 7.0)
+    F = force_history(m, PRONY, T, d)
+    F1 = 4 / 3 * math.sqrt(R) * d ** 1.5
+    assert F == pytest.approx(F1 * PRONY.relaxation(T), rel=1e-13, abs=0)
+
+
+def test_recursive_update_is_exact_for_ramps():
+    """Linear law F1 = 2 a d: a depth ramp d = v t gives F = 2 a v [E_inf t +
+    sum E_i tau_i (1 - exp(-t/tau_i))] and a force ramp F = r t gives
+    d = r/(2a) [t/E_inf - sum c_k lam_k (1 - exp(-t/lam_k))]; both exact with 6
+    uneven samples over 5 decades, and on an even grid (rtol 1e-12)."""
+    a, v, rate = 2e-3, 1e-7, 3.0
+    m = FlatPunch(1.0, a, 1.0)
+    for t in (np.array([0.0, 1e-3, 0.2, 3.0, 50.0, 1e3]),   # uneven: the step loop
+              np.linspace(0.0, 100.0, 11)):                 # even: the linear filter
+        _check_ramps(m, a, v, rate, t)
+
+
+def _check_ramps(m, a, v, rate, t):
+    F = force_history(m, PRONY, t, v * t)
+    exact = 2 * a * v * (PRONY.long_term * t + np.sum(
+        PRONY.moduli * PRONY.times * -np.expm1(-t[:, None] / PRONY.times), axis=1))
+    assert F[1:] == pytest.approx(exact[1:], rel=1e-12, abs=0)
+    jinf, c, lam = PRONY.creep_terms
+    d = creep_depth(m, PRONY, t, rate * t)
+    exact = rate / (2 * a) * (jinf * t - np.sum(
+        c * lam * -np.expm1(-t[:, None] / lam), axis=1))
+    assert d[1:] == pytest.approx(exact[1:], rel=1e-12, abs=0)
+
+
+def test_shrinking_contact_is_refused_or_flagged():
+    """Decreasing depth, or a force dropping faster than the creep, is outside the
+    correspondence principle: OutOfRangeError by default, RuntimeWarning on request."""
+    m = HertzSphere(5e-3, 5e-3, 1.0)
+    t = np.array([0.0, 1.0, 2.0])
+    with pytest.raises(OutOfRangeError, match="Ting"):
+        force_history(m, SLS, t, [2e-6, 3e-6, 1e-6])
+    with pytest.warns(RuntimeWarning, match="shrinks"):
+        force_history(m, SLS, t, [2e-6, 3e-6, 1e-6], unloading="warn")
+    with pytest.raises(OutOfRangeError, match="contact shrinks"):
+        creep_depth(m, SLS, t, [10.0, 10.0, 1.0])
+    # a force held or raised keeps the contact growing: no error
+    creep_depth(m, SLS, t, [10.0, 10.0, 12.0])
+
+
+def test_sls_and_prony_inputs_are_checked(tmp_path):
+    """Physical checks: E_inf < E_0, positive moduli and times, distinct times; the
+    CSV reader needs tau_s, E_Pa and E_inf (file or argument, agreeing)."""
+    with pytest.raises(OutOfRangeError, match="long_term"):
+        StandardLinearSolid(1e9, 2e9, 1.0)
+    with pytest.raises(OutOfRangeError, match="times"):
+        PronySeries(1e9, [1e9, 1e9], [1.0, 1.0])
+    with pytest.raises(OutOfRangeError, match="moduli"):
+        PronySeries(1e9, [-1e9], [1.0])
+    p = tmp_path / "p.csv"
+    p.write_text("tau_s,E_Pa\n0.1,2e9\n10,1e9\n")
+    with pytest.raises(OutOfRangeError, match="long_term"):
+        read_prony_series(p)
+    s = read_prony_series(p, long_term=1e9)
+    assert s.instantaneous == 4e9 and list(s.times) == [0.1, 10.0]
+    p.write_text("# E_inf: 1e9 Pa\nTau_s,E_Pa,comment\n10,1e9,x\n0.1,2e9,y\n")
+    assert read_prony_series(p).creep(5.0) == pytest.approx(s.creep(5.0), rel=1e-15, abs=0)
+    with pytest.raises(OutOfRangeError, match="long_term"):
+        read_prony_series(p, long_term=2e9)
+    p.write_text("tau,E\n1,1\n")
+    with pytest.raises(OutOfRangeError, match="tau_s and E_Pa"):
+        read_prony_series(p, long_term=1e9)

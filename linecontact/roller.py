@@ -476,16 +476,21 @@ class _Slices:
 class RollerSolution:
     """The state of a profiled, tilted roller in contact: loads, stiffness, pressure.
 
-    Attributes
+    Returned by :meth:`ProfiledRoller.at_depth`, :meth:`ProfiledRoller.at_force`,
+    :func:`roller_contact` and :func:`iso_slicing`; not built by hand.
+
+    .. math:: F = \\sum_k q_k w, \\qquad M = \\sum_k q_k x_k w
+
+    Parameters
     ----------
     depth : float
-        Depth (approach) d of the roller reference point x = 0 [m].
+        Depth (approach) d of the roller point x = 0 [m].
     tilt : float
-        Tilt theta [rad] (positive: the +x end goes deeper).
+        Tilt theta, positive when the +x end goes deeper [rad].
     force : float
-        Normal force F = sum q_k w [N].
+        Normal force F [N].
     moment : float
-        Moment about x = 0, M = sum q_k x_k w [N m] (positive when +x carries more).
+        Moment about x = 0, positive when +x carries more [N m].
     stiffness : float
         dF/dd at fixed tilt [N/m].
     tilt_stiffness : float
@@ -495,17 +500,19 @@ class RollerSolution:
     x : ndarray
         Slice centres [m].
     q : ndarray
-        Line load q(x_k) [N/m] (0 outside the contact).
+        Line load q(x_k), 0 outside the contact [N/m].
     half_width : ndarray
-        Contact half-width b_k across the roller [m] (0 outside the contact).
+        Contact half-width b_k across the roller, 0 outside the contact [m].
     pressure : ndarray
         Peak pressure of each slice, 2 q_k/(pi b_k) [Pa].
     p_max : float or None
-        Peak pressure [Pa] (interpolated between slices); None when edge loaded.
+        Peak pressure, interpolated between slices; None when edge loaded [Pa].
     x_at_p_max : float
-        Where the peak sits [m] (the loaded end when edge loaded).
-    contact_start, contact_end : float
-        Ends of the contact along x [m] (interpolated where q falls to zero).
+        Where the peak sits, the loaded end when edge loaded [m].
+    contact_start : float
+        Start of the contact along x, where q falls to zero [m].
+    contact_end : float
+        End of the contact along x [m].
     contact_length : float
         contact_end - contact_start [m].
     edge_loaded : bool
@@ -514,7 +521,7 @@ class RollerSolution:
     edge : str or None
         ``"-x"``, ``"+x"``, ``"both"`` or None.
     message : str
-        What p_max means here (or why it is None).
+        What p_max means here, or why it is None.
     method : str
         ``"coupled slices"`` or ``"ISO/TS 16281 slicing"``.
     n_slices : int
@@ -526,6 +533,21 @@ class RollerSolution:
     p_max_resolved : bool
         False if the peak sits within two slices of the contact's end (a concentration
         narrower than the slices, e.g. at a sharp relief): then p_max is not converged.
+
+    Notes
+    -----
+    Valid as the model that produced it (see :class:`ProfiledRoller`): |theta| < 0.1
+    rad, b << R; q, half_width and pressure are per slice, 0 <= q < inf.
+
+    Examples
+    --------
+    >>> s = roller_contact(10e-3, 20e-3, 115.385e9, "circular:Rc=0.5", force=1000.0)
+    >>> f"{s.force:.0f} N, {abs(s.moment):.0f} N m, {s.contact_length * 1e3:.1f} mm"
+    '1000 N, 0 N m, 4.6 mm'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 4.2 (Hertz pressure across).
     """
 
     depth: float

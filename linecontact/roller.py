@@ -1262,6 +1262,8 @@ class ProfiledRollerModel(ContactModel):
 
     Notes
     -----
+    The roller's profile drop is :attr:`axial_profile` (``profile()`` is the
+    ContactModel's MDR profile, which this model does not have).
     ``depth`` is the depth d of the roller point x = 0 (as in :class:`RollerSolution`);
     it must exceed the first-contact depth min_x(P - theta x), which is negative for a
     tilted roller. :meth:`at_depth` and :meth:`at_force` return the full
@@ -1286,11 +1288,11 @@ class ProfiledRollerModel(ContactModel):
         self.tilt = TILT_RANGE.check(tilt).item()
         self.roller = ProfiledRoller(self.radius, self.length, self.estar, profile,
                                      n_slices=n_slices)
-        self.profile = self.roller.profile
+        self.axial_profile = self.roller.profile
 
     @property
     def label(self):
-        s = f"Profiled roller ({self.profile.label}"
+        s = f"Profiled roller ({self.axial_profile.label}"
         if self.tilt:
             s += f", tilt {self.tilt * 1e3:.4g} mrad"
         return s + f", {self.roller.n_slices} coupled slices)"
@@ -1298,7 +1300,7 @@ class ProfiledRollerModel(ContactModel):
     @property
     def provenance(self):
         return {"model": self.label, "method": "coupled slices with Hertz strips "
-                "(linecontact.roller)", "profile": self.profile.provenance,
+                "(linecontact.roller)", "profile": self.axial_profile.provenance,
                 "tilt_rad": self.tilt, "n_slices": self.roller.n_slices}
 
     def at_depth(self, depth):
@@ -1364,11 +1366,11 @@ class ISOSlicingModel(ContactModel):
         super().__init__(radius, length, estar)
         self.tilt = TILT_RANGE.check(tilt).item()
         self.n_slices = n_slices
-        self.profile = _profile(profile, self.radius, self.length, self.estar)
+        self.axial_profile = _profile(profile, self.radius, self.length, self.estar)
 
     @property
     def label(self):
-        s = f"ISO/TS 16281 slicing ({self.profile.label}"
+        s = f"ISO/TS 16281 slicing ({self.axial_profile.label}"
         if self.tilt:
             s += f", tilt {self.tilt * 1e3:.4g} mrad"
         return s + f", {self.n_slices} slices)"
@@ -1376,14 +1378,14 @@ class ISOSlicingModel(ContactModel):
     @property
     def provenance(self):
         return {"model": self.label, "method": "ISO/TS 16281:2008 slicing, uncoupled "
-                "slices", "profile": self.profile.provenance, "tilt_rad": self.tilt}
+                "slices", "profile": self.axial_profile.provenance, "tilt_rad": self.tilt}
 
     def check_applicable(self):
         from .classical import STEEL_ESTAR_RANGE, _STEEL_HINT
         STEEL_ESTAR_RANGE.check(self.estar, hint=_STEEL_HINT)
 
     def _solve(self, **kw):
-        return iso_slicing(self.radius, self.length, self.estar, self.profile,
+        return iso_slicing(self.radius, self.length, self.estar, self.axial_profile,
                            tilt=self.tilt, n_slices=self.n_slices, **kw)
 
     def at_depth(self, depth):

@@ -913,17 +913,19 @@ class ProfiledRoller:
             e = F0 / (math.pi * E * L) * max(
                 1.0 + math.log(max(math.pi * E * L**3 / (R * F0), math.e)), 2.0)
         lo, hi = 0.0, math.inf
-        err = math.inf
+        err = 0.0 if self._memo is not None else math.inf   # a memo start is close
         for _ in range(100):
-            # solve loosely while far from the force (inexact Newton), tightly at the end
+            # solve loosely while far from the force (inexact Newton), tightly near it
             inner = 1e-11 if err < 1e-3 else 1e-7
             st = self._forces(d0 + e, th, tol=inner)
             F, K = st[2], st[4]
             slope = min(max(K[0, 0] * e / F, 0.5), 3.0)  # d ln F/d ln e, 1 to about 1.5
             err = abs(F / F0 - 1)
-            if err <= tol and inner == 1e-11:
-                self._memo = (th, e, F, slope)
-                return st
+            if err <= tol:
+                if inner == 1e-11:
+                    self._memo = (th, e, F, slope)
+                    return st
+                continue                      # the same depth once more, solved tightly
             if F < F0:
                 lo = max(lo, e)
             else:

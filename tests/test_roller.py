@@ -283,3 +283,14 @@ def test_models_are_registered_and_obey_the_model_laws():
     assert big.force(lam * 6e-6) == pytest.approx(lam**2 * F[1], rel=1e-9)
     iso = get_model("iso16281-slicing", 5e-3, 10e-3, E)
     assert iso.depth(1e3) == pytest.approx(iso16281_depth(1e3, 10e-3, E), rel=1e-12)
+
+
+def test_lundberg_profile_makes_the_line_load_uniform():
+    """Lundberg (1939) designed his logarithmic profile so that, at the design load F0,
+    the line load is uniform, q = F0/L. The coupled slices reproduce that over the
+    middle 80 % of the roller to within 1 % (measured 0.1 %; Lundberg's own derivation
+    is approximate near the ends, which are excluded)."""
+    s = ProfiledRoller(5e-3, 10e-3, E, "lundberg:F0=2000", n_slices=100).at_force(2000.0,
+                                                                                 tilt=0.0)
+    mid = np.abs(s.x) < 0.4 * 10e-3
+    np.testing.assert_allclose(s.q[mid], 2000.0 / 10e-3, rtol=1e-2)

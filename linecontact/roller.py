@@ -56,9 +56,10 @@ wrap it in a Newton iteration on d and theta using the exact stiffness matrix
 (implicit differentiation of the converged equations).
 
 Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md): circular crown
-against exact Hertz within 0.1 % in depth, p0 and b at 100 slices, converging as
-(L/n)^2; a straight roller within 0.4 % of the universal curve at 100 slices, the
-error falling as about n^(-0.75) (the end singularity).
+against exact Hertz within 0.01 % in approach, p0, b and stiffness and 0.25 % in the
+contact half-length at 100 slices, converging at second order in the slice width; a
+straight roller within 0.4 % of the universal curve at 100 slices, approaching it from
+below as about n^(-0.75) (the end singularity).
 
 Edge loading: on a half-space the pressure at a sharp roller end touched by the contact
 is singular (a rigid flat-ended punch, Johnson 1985 section 5.6); the per-slice peak

@@ -136,6 +136,7 @@ BUILTIN_UNITS = {
               "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
     "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
+    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
 }
 
 
@@ -151,7 +152,7 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
-    elif unit in BUILTIN_UNITS[kind]:
+    elif unit in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][unit]
     else:
         ureg = _registry()

@@ -191,14 +191,13 @@ def _near_table():
     2701 nodes, h = 0.005 in ln tau, values from the quadrature (tau < 2.5) and the
     series (tau >= 2.5): interpolation error below 1e-10 of the function's scale
     (checked against the direct evaluation in tests). Evaluating the spline is several
-    times cheaper than the 28-term series or the quadrature.
+    times cheaper than the 28-term series or the quadrature. Returns a function of
+    ln(tau) (1D array) giving an array of shape (len, 4).
     """
     if not _NEAR_TABLE:
         from scipy.interpolate import CubicSpline
         z = np.linspace(math.log(_TAB_MIN), math.log(_TAB_MAX), 2701)
-        tau = np.exp(z)
-        vals = np.column_stack(_direct(tau))
-        _NEAR_TABLE.append(CubicSpline(z, vals))
+        _NEAR_TABLE.append(CubicSpline(z, np.column_stack(_direct(np.exp(z)))))
     return _NEAR_TABLE[0]
 
 
@@ -348,6 +347,7 @@ class _Slices:
         J[:ns, ns:] = EA * (0.5 * b * b)[None, :]
         J[ns:, :ns] = -ED * (0.5 / (b * b))[None, :]
         J[ns:, ns:] = D + 0.5 * ED
+        self._last_kernels = (A, D, EA, ED)
         return A, D, J
 
     def newton(self, S, q, c, over, tol):
@@ -443,8 +443,8 @@ class _Slices:
         the overlap ends, which move with d and theta), so that the result is the
         exact derivative of the computed F(d, theta) and M(d, theta).
         """
-        A, D, EA, ED = self.kernels(S, np.sqrt(q[S] / c[S]))
         _, _, J = self.jacobian(S, q, c)
+        A, D, EA, ED = self._last_kernels
         ns, n, w = len(S), self.n, self.w
         qs, cs, xs = q[S], c[S], self.x[S]
         k = S + 0.5

@@ -834,18 +834,19 @@ class ProfiledRoller:
 
     def _forces(self, d, th, tol=1e-11):
         s = self._grid(d, th)
+        e = float(np.max(d + th * s.x - s.P))          # largest overlap on the slices
         warm = None
         if self._warm is not None:
-            xo, qo, co, do, to = self._warm
-            span = s.hi - s.lo
-            # a warm start only for a nearby state (else the cold start is more robust)
-            if (abs(d - do) <= 0.02 * abs(do) + 1e-3 * span * abs(th - to) and
-                    abs((xo[-1] - xo[0]) / (s.x[-1] - s.x[0]) - 1) <= 0.02):
-                qn = np.interp(s.x, xo, qo, left=0.0, right=0.0)
-                cn = np.interp(s.x, xo, co, left=co[0], right=co[-1])
-                warm = (qn, cn)
+            # the last solution, mapped onto this grid by the relative position in the
+            # overlap interval and scaled with the largest overlap (q ~ overlap)
+            xi_o, qo, co, eo = self._warm
+            ratio = e / eo if eo > 0 else 0.0
+            if 0.5 < ratio < 2.0:
+                xi = (s.x - s.lo) / (s.hi - s.lo)
+                warm = (np.interp(xi, xi_o, qo, left=0.0, right=0.0) * ratio,
+                        np.interp(xi, xi_o, co))
         S, q, c = s.solve(d, th, warm=warm, tol=tol)
-        self._warm = (s.x.copy(), q.copy(), c.copy(), d, th)
+        self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(), e)
         self.iterations += s.iterations
         scale = math.pi * self.estar * s.w
         F = scale * q.sum()

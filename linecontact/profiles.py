@@ -41,7 +41,6 @@ References
 """
 from __future__ import annotations
 
-import csv
 import math
 import re
 from pathlib import Path

@@ -13,8 +13,10 @@ and "viscoelastic second body"):
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's G*/E* and with the
-    BEM's ratio in each direction, Q/(mu F), and the slip state in the flags: partial
-    slip for Q < mu F, gross slip (no static solution: u is "-") for Q > mu F.
+    BEM's ratio in each direction (times the table's partial-slip correction of the
+    shift, when it has one: as ``TangentialContact(..., method="bem")``), Q/(mu F),
+    and the slip state in the flags: partial slip for Q < mu F, gross slip (no static
+    solution: u is "-") for Q > mu F.
 ``--instantaneous-modulus E0 --long-term-modulus EINF --relaxation-time TAU``, or
 ``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line)
     A viscoelastic second body (instead of ``--modulus``; needs ``--poisson``) with the
@@ -274,9 +276,12 @@ def add_fields(fields, flags, g, model, r, cases, present):
                     ratio = bem[direction][tl][partial]
                     good = np.isfinite(ratio)
                     if good.any():
-                        fields[f"shift_{direction}"][rows3[good]] = tg.tangential_shift(
+                        u = np.atleast_1d(tg.tangential_shift(
                             model, d[s3][good], cases["tangential_load"][rows3[good]],
-                            cases["friction"][rows3[good]], gs[good], ratio=ratio[good])
+                            cases["friction"][rows3[good]], gs[good], ratio=ratio[good]))
+                        u = u * _slip_correction(model, direction, d[s3][good], gs[good],
+                                                 frac[partial][good])
+                        fields[f"shift_{direction}"][rows3[good]] = u
     materials = cases.get("material")
     if materials is not None:
         # creep under a held force (with a given depth the force would relax instead)
@@ -304,6 +309,22 @@ def add_fields(fields, flags, g, model, r, cases, present):
     for j, i in enumerate(g):
         if notes[j]:
             flags[i] = "; ".join(t for t in (flags[i], notes[j]) if t)
+
+
+def _slip_correction(model, direction, depth, gstar, q):
+    """The BEM table's partial-slip shift factor at load fractions q (1 without one),
+    as in :class:`linecontact.tangential.TangentialContact` with method="bem"."""
+    from . import tangential as tg
+
+    table = tg.cylinder_tangential_table()
+    factor = np.ones(depth.size)
+    for k in range(depth.size):
+        nu = tg.equivalent_poisson(gstar[k], model.estar)
+        corr = table.shift_correction(direction, nu, depth[k] * model.radius
+                                      / model.length ** 2)
+        if corr is not None:
+            factor[k] = np.interp(min(q[k], 1.0), corr[0], corr[1])
+    return factor
 
 
 def _short(text):

@@ -10,10 +10,12 @@ a unit, and nothing more*:
   separators, ``inf``, ``nan``, hexadecimal and non-ASCII digits are refused;
 - the unit is ONE unit name, letters only, with or without a space before it (``mm``,
   ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``); products, quotients,
-  powers, sums and any other expression are refused, never evaluated. pint
-  (https://pint.readthedocs.io) is asked only for the size of that one unit in SI, and
-  only once per distinct unit;
-- a bare number is SI (m, N, Pa) and does not import pint;
+  powers, sums and any other expression are refused, never evaluated. The common
+  names (:data:`BUILTIN_UNITS`: SI prefixes of m, N, Pa, and inch-pound units) have
+  their exact factors here; for any other name pint (https://pint.readthedocs.io) is
+  asked only for the size of that one unit in SI, once per distinct unit, so a wrong
+  dimension or an unknown name is still refused by name;
+- a bare number is SI (m, N, Pa); neither it nor a built-in unit imports pint;
 - the value must be a normal, finite float before and after the conversion: a number
   that overflows to inf, or underflows to zero or a subnormal (below 2.2e-308), is
   refused, never clamped.
@@ -37,6 +39,7 @@ import sys
 __all__ = [
     "InputError",
     "DIMENSIONS",
+    "BUILTIN_UNITS",
     "parse_quantity",
     "parse_column",
     "parse_sweep",
@@ -117,10 +120,31 @@ def _valid_text(kind, positive, bounds):
     return f"{what} (e.g. {examples})"
 
 
+_PREFIXES = {"p": 1e-12, "n": 1e-9, "u": 1e-6, "\u00b5": 1e-6, "\u03bc": 1e-6, "m": 1e-3,
+             "c": 1e-2, "d": 1e-1, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12}
+_INCH = 0.0254  # m, exact by definition (1959)
+_LBF = 4.4482216152605  # N, exact: 0.45359237 kg x 9.80665 m/s^2
+
+#: Unit names converted without pint: the SI prefixes of m, N and Pa, and the inch-pound
+#: units of engineering drawings, with their exact definitions. Each factor equals
+#: pint's to rounding (a test holds it); any other unit name is asked of pint.
+BUILTIN_UNITS = {
+    "length": {**{p + "m": f for p, f in _PREFIXES.items()},
+               "in": _INCH, "inch": _INCH, "ft": 12 * _INCH, "foot": 12 * _INCH,
+               "thou": _INCH / 1000},
+    "force": {**{p + "N": f for p, f in _PREFIXES.items()},
+              "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
+    "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
+                 "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
+    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
+}
+
+
 def _unit_factor(unit, kind):
     """SI factor of ONE unit name for a quantity of `kind`, or a reason string.
 
-    Asks pint for the unit alone (never for an expression), once per (unit, kind).
+    From :data:`BUILTIN_UNITS`, else asks pint for the unit alone (never for an
+    expression), once per (unit, kind).
     """
     key = (unit, kind)
     if key in _FACTORS:
@@ -128,6 +152,8 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
+    elif unit in BUILTIN_UNITS.get(kind, ()):
+        result = BUILTIN_UNITS[kind][unit]
     else:
         ureg = _registry()
         try:

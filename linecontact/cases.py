@@ -36,7 +36,7 @@ import numpy as np
 
 from ._units import InputError, parse_column
 
-__all__ = ["Parameter", "PARAMETERS", "parse_cases", "option_name"]
+__all__ = ["Parameter", "PARAMETERS", "BY_NAME", "parse_cases", "option_name", "bounds_of"]
 
 
 @dataclass(frozen=True)
@@ -131,7 +131,8 @@ def option_name(name):
     return "--" + name.replace("_", "-")
 
 
-def _bounds(p):
+def bounds_of(p):
+    """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
     from . import validity
@@ -204,7 +205,7 @@ def parse_cases(cells, n, label=option_name):
 def _parse_unique(name, cells, p):
     """parse_column over the distinct cells only (a batch repeats its cylinders)."""
     uniq = list(dict.fromkeys(cells))
-    v, e = parse_column(name, uniq, p.kind, positive=p.positive, bounds=_bounds(p))
+    v, e = parse_column(name, uniq, p.kind, positive=p.positive, bounds=bounds_of(p))
     if len(uniq) == len(cells):
         return v, e
     where = {c: i for i, c in enumerate(uniq)}
@@ -242,7 +243,7 @@ def _resolve(v, present, raw, errors, n, label):
         fail(P["estar"] & P[name], name,
              f"either {label('estar')} or the moduli and Poisson's ratios, not both",
              f"conflicts with {label('estar')}", lambda i, nm=name: cell(nm, i))
-    nu_range = _bounds(BY_NAME["poisson"])[1]
+    nu_range = bounds_of(BY_NAME["poisson"])[1]
     from .calc_tangential import resolve as _resolve_tangential
 
     visco, E0, materials = _resolve_tangential(v, P, raw, fail, label, n)

@@ -250,13 +250,20 @@ def _model_id(model):
     return re.sub(r"[^a-z0-9.]+", "-", model.label.lower()).strip("-")
 
 
-def _build(specs, R, L, E, first_only):
-    """The models for one cylinder (Refused stand-ins for those refused at build)."""
+def _build(specs, R, L, E, first_only, default_key=None):
+    """The models for one cylinder (Refused stand-ins for those refused at build).
+
+    `default_key`: the registry key of the standard set's first model when it is
+    known (from a first call) to be the default model: with `first_only` only that
+    model is built, not the whole standard set (a batch of distinct cylinders).
+    """
     from . import models
     from ._units import InputError
     from .validity import OutOfRangeError
 
     if specs is None:
+        if first_only and default_key is not None:
+            return [models.get_model(default_key, R, L, E)]
         standard = list(models.standard_models(R, L, E))
         return standard[:1] if first_only else standard
     chosen = []
@@ -287,6 +294,11 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
     n = len(values)
     out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
     out["force" if given == "load" else "depth"][:] = values  # given, even where refused
+    if not isinstance(model, Refused):
+        try:
+            model.check_applicable()  # refused for the whole cylinder: one message
+        except OutOfRangeError as exc:
+            model = Refused(model.label, exc)
     if isinstance(model, Refused):
         for i in idx:
             notes[i] = str(model.exc)
@@ -418,7 +430,12 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         groups = np.split(rows[order], bounds)
     else:
         groups = []
+    from .models import DEFAULT_MODEL
+
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
+    # the default model alone when it heads the standard set (it does when installed)
+    default_key = (DEFAULT_MODEL if specs is None and first_only
+                   and probe[0].key == DEFAULT_MODEL else None)
     results = Results(n, len(probe), errors)
     for s, m in zip(results.sets, probe):
         s["id"] = _model_id(m)
@@ -434,7 +451,8 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                 contacts = [R_in, R_out]
             else:
                 contacts = [Reff[i0]]
-            sets = [_build(specs, R, L[i0], E[i0], first_only) for R in contacts]
+            sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
+                    for R in contacts]
             refs = ([list(_build(None, R, L[i0], E[i0], True)) for R in contacts]
                     if reference else None)
         except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
@@ -481,6 +499,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
         per_set.append(per_contact)
         s = results.sets[j]
         label = sets[0][j].label
+        if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
+            s["model"] = sets[0][j]
         for i in g:
             s["label"][i] = label
     ref_q = None

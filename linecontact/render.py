@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from .calc_tangential import NOTES as _TANGENTIAL_NOTES
-from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS
+from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS, _model_id
 
 __all__ = ["PROG", "fmt", "unit", "scale", "columns_of", "json_header", "table_text",
            "one_json", "write"]
@@ -47,6 +47,11 @@ def fmt(value, digits=4):
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return "-"
     return f"{value:.{digits}g}"
+
+
+def _fmt_column(values):
+    """:func:`fmt` of every element of a float array (a list of str)."""
+    return [format(v, ".4g") if v == v else "-" for v in np.asarray(values, float).tolist()]
 
 
 def unit(field, si):
@@ -174,17 +179,19 @@ def table_text(cases, present, results, si):
     given = str(cases["given"][0])
     cols = columns_of(results, given)
     header = ["model"] + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols] + ["note"]
-    body = []
     n = len(cases["value"])
+    columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
-        for i in range(n):
-            note = "; ".join(t for t in (s["flags"][i], s["note"][i]) if t)
-            body.append([s["label"][i]] + [fmt(scale(c, float(f[c][i]), si)) for c in cols]
-                        + [note])
-    widths = [max(len(r[i]) for r in [header] + body) for i in range(len(header) - 1)]
+        columns[0] += s["label"][:n]
+        for k, c in enumerate(cols, start=1):
+            columns[k] += _fmt_column(scale(c, f[c], si))
+        columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
+    widths = [max(len(h), max(map(len, col), default=0))
+              for h, col in zip(header[:-1], columns[:-1])]
     lines = [_case_line(cases, present, si), ""]
-    for r in [header] + body:
+    rows = [header] + [list(r) for r in zip(*columns)]
+    for r in rows:
         cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
         lines.append("  ".join(cells + [r[-1]]).rstrip())
     lines += ["", "Note: " + P0_NOTE]
@@ -229,9 +236,6 @@ def one_json(argv, cases, present, results):
     inputs[given] = values if len(values) > 1 else values[0]
     doc = json_header(argv, results)
     doc["inputs"] = inputs
-    by_id = {}
-    for s in results.sets:
-        by_id[s["id"]] = s
     entries = []
     for entry, s in zip(_entries(doc["models"], results), results.sets):
         rows = []
@@ -250,7 +254,8 @@ def _entries(model_docs, results):
     by_id = {m["id"]: m for m in model_docs}
     out = []
     for s in results.sets:
-        m = by_id.get(s["id"])
+        model = s.get("model")
+        m = by_id.get(_model_id(model) if model is not None else s["id"])
         if m is None:
             label = s["label"][0] or s["id"]
             m = {"key": label, "label": label, "id": s["id"], "provenance": None}

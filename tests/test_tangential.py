@@ -400,3 +400,24 @@ def test_shipped_table_at_nu_zero_is_the_normal_problem():
     for dt in t.d_tildes:
         assert t.ratio("across", 0.0, dt) == pytest.approx(1.0, abs=1e-3)
         assert t.ratio("along", 0.0, dt) == pytest.approx(1.0, abs=1e-3)
+
+
+def test_shipped_table_meets_the_one_percent_target_between_its_nodes():
+    """Issue 10's target: the runtime's full-stick k_t/k_n within 1 % of the BEM. An
+    independent BEM solve (tools.tangential_bem, the study's N grid) at points between
+    the table's nodes in both nu and d~: measured worst 1.0e-4; asserted 3e-3 = the
+    table's N-to-2N grid change (1e-3) plus interpolation, with margin."""
+    try:
+        t = CylinderTangentialTable(read_table("tangential_cylinder"))
+    except FileNotFoundError:
+        pytest.skip("tables/tangential_cylinder.csv not generated yet")
+    from tools.tangential_bem import cylinder_full_stick
+
+    nus = (0.2, 0.35, 0.45)
+    for dt in (5.5e-6, 0.56):
+        r = cylinder_full_stick(dt, nus=nus, n_length=256, n_width=32)
+        for i, nu in enumerate(nus):
+            assert t.ratio("across", nu, dt) == pytest.approx(r.ratio_across[i], rel=3e-3,
+                                                              abs=0)
+            assert t.ratio("along", nu, dt) == pytest.approx(r.ratio_along[i], rel=3e-3,
+                                                             abs=0)

@@ -51,8 +51,9 @@ NOTES = {
                   "exact for axisymmetric contacts); across (rolling direction) and along "
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
                   "tangential_cylinder.csv) times k; u: tangential shift under Q at "
-                  "constant normal force, u = (mu/r) [d - d(F - Q/mu)] with r = G*/E* "
-                  "(MDR) or the BEM ratio (Cattaneo 1938, Mindlin 1949); gross slip at "
+                  "constant normal force or depth, u = (mu/r) [d - d(F - Q/mu)] with "
+                  "r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
+                  "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "
                   "Q = mu F. Uncoupled normal and tangential problems (Goodman).",
     "creep": "d(t): depth after the normal load has been held for t (Lee & Radok 1960, "
              "exact while the contact grows), d(t) = F1^-1(F J*(t)); d(inf): long-term "

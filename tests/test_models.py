@@ -9,7 +9,7 @@ import sys
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import linecontact
@@ -91,13 +91,14 @@ def test_stiffness_is_derivative_of_force(key, opts):
 def test_force_and_stiffness_are_monotone(key, opts):
     """F(d) increases strictly and k(d) does not decrease (F convex) for every model."""
     m = _model(key, opts)
-    d = np.geomspace(1e-9, 1e-5, 60)
+    d = np.geomspace(1e-9, 1e-5, 25)   # 6 points a decade over four decades
     assert np.all(np.diff(m.force(d)) > 0)
     assert np.all(np.diff(m.stiffness(d)) >= 0)
 
 
 @pytest.mark.parametrize("key, opts", ALL, ids=IDS)
-@given(lam=st.floats(0.01, 100.0))
+@settings(max_examples=15, deadline=None)   # models that solve a BEM/slicing problem per
+@given(lam=st.floats(0.01, 100.0))          # call join this test too: keep it affordable
 def test_scaling_law(key, opts, lam):
     """F(lambda R, lambda L, lambda d) = lambda^2 F(R, L, d) at fixed E*, every model
     (even Palmgren: F ~ (d L^0.8)^(1/0.9) scales as lambda^2)."""
@@ -107,12 +108,34 @@ def test_scaling_law(key, opts, lam):
     assert F2 == pytest.approx(lam**2 * F1, rel=1e-9)
 
 
-@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
+#: Known breaches of the shared interface, as (key, test) -> who fixes it. Each runs as a
+#: strict xfail: once fixed it passes, the xfail fails, and the entry must go.
+KNOWN_GAPS = {
+    ("profiled-roller", "profile"):
+        "linecontact/roller.py stores the axial crown profile as the attribute .profile, "
+        "which shadows ContactModel.profile(x), the MDR profile (i9rt: rename it, and "
+        "raise NotImplementedError from profile(x) if there is no single MDR profile)",
+    ("iso16281-slicing", "profile"):
+        "the same attribute clash (linecontact/roller.py, i9rt)",
+}
+
+
+def _with_gaps(test):
+    return [pytest.param(k, o, id=i, marks=pytest.mark.xfail(
+                strict=True, reason=KNOWN_GAPS[(i, test)]))
+            if (i, test) in KNOWN_GAPS else pytest.param(k, o, id=i)
+            for (k, o), i in zip(ALL, IDS)]
+
+
+@pytest.mark.parametrize("key, opts", _with_gaps("profile"))
 def test_profile_reproduces_the_force_law_by_mdr(key, opts):
     """For models with an MDR profile, 2E* int_0^a (d - g) dx of that profile equals the
-    model's F(d): profile and force law are one model. (Empirical laws have no profile:
-    see the next test.)"""
+    model's F(d): profile and force law are one model. (Empirical laws have no profile
+    and say so with NotImplementedError: see the next test.)"""
     m = _model(key, opts)
+    assert callable(m.profile), (
+        f"{m.label}: ContactModel.profile(x) is the MDR profile method; an attribute "
+        f"of type {type(m.profile).__name__} shadows it")
     try:
         m.profile(1e-3)
     except NotImplementedError:

@@ -186,23 +186,25 @@ def columns(cases, present):
     return cols
 
 
-def _each(func, idx, notes):
-    """func(sub-index array) -> array, element by element where a call is refused."""
+def _each(func, idx, notes, width=1):
+    """func(sub-index array) -> values (`width` per element, flattened), element by
+    element where a call is refused; returns shape (n,) or (n, width)."""
     from .validity import OutOfRangeError
 
+    shape = (idx.size,) if width == 1 else (idx.size, width)
     try:
-        return np.atleast_1d(np.asarray(func(idx), dtype=float)), None
+        return np.asarray(func(idx), dtype=float).reshape(shape), None
     except FileNotFoundError:
         for k in range(idx.size):
             notes[k] = ("the BEM table tangential_cylinder is not installed (python -m "
                         "tools.build_tables tangential)")
-        return np.full(idx.size, np.nan), notes
+        return np.full(shape, np.nan), notes
     except OutOfRangeError:
         pass
-    res = np.full(idx.size, np.nan)
+    res = np.full(shape, np.nan)
     for k in range(idx.size):
         try:
-            res[k] = float(np.asarray(func(idx[k:k + 1]), dtype=float).ravel()[0])
+            res[k] = np.asarray(func(idx[k:k + 1]), dtype=float).ravel()[:width]
         except OutOfRangeError as exc:
             notes[k] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
     return res, notes
@@ -244,10 +246,12 @@ def add_fields(fields, flags, g, model, r, cases, present):
         fields["kt_mdr"][rows] = ratio_mdr * k[sel]
         bem = {"across": np.full(sel.size, np.nan), "along": np.full(sel.size, np.nan)}
         sub_notes = [""] * sel.size
-        for direction in ("across", "along"):
-            vals, _ = _each(lambda ii, dr=direction: tg.cylinder_stiffness_ratios(
-                model, d[sel][ii], gstar[ii])[dr], np.arange(sel.size), sub_notes)
-            bem[direction] = vals
+        def ratios(ii):
+            r = tg.cylinder_stiffness_ratios(model, d[sel][ii], gstar[ii])
+            return np.stack([np.atleast_1d(r["across"]), np.atleast_1d(r["along"])], axis=1)
+
+        both, _ = _each(ratios, np.arange(sel.size), sub_notes, width=2)
+        bem["across"], bem["along"] = both[:, 0], both[:, 1]
         for j, t in zip(sel, sub_notes):
             note(j, "kt across/along: " + _short(t) if t else "")
         fields["kt_across"][rows] = bem["across"] * k[sel]
@@ -318,14 +322,9 @@ def _slip_correction(model, direction, depth, gstar, q):
     from . import tangential as tg
 
     table = tg.cylinder_tangential_table()
-    factor = np.ones(depth.size)
-    for k in range(depth.size):
-        nu = tg.equivalent_poisson(gstar[k], model.estar)
-        corr = table.shift_correction(direction, nu, depth[k] * model.radius
-                                      / model.length ** 2)
-        if corr is not None:
-            factor[k] = np.interp(min(q[k], 1.0), corr[0], corr[1])
-    return factor
+    nu = tg.equivalent_poisson(gstar, model.estar)
+    return np.atleast_1d(table.shift_factor(direction, nu,
+                                            depth * model.radius / model.length ** 2, q))
 
 
 def _short(text):

@@ -379,6 +379,10 @@ def test_optional_slip_correction_scales_the_shift(tmp_path):
     Ft = np.array([0.25, 0.5, 1.0]) * bem.gross_slip_force
     assert bem.shift(Ft) == pytest.approx(plain.shift(Ft) * [1.05, 1.1, 1.2], rel=1e-12, abs=0)
     assert bem.force(bem.shift(Ft)) == pytest.approx(Ft, rel=1e-12, abs=0)
+    # the vectorised factor is the same piecewise-linear interpolation in Q
+    q = np.array([0.0, 0.2, 0.5, 0.8, 1.0])
+    assert t.shift_factor("across", 0.3, 1e-3, q) == pytest.approx(
+        np.interp(q, *t.shift_correction("across", 0.3, 1e-3)), rel=1e-14, abs=0)
     assert bem.gross_slip_shift == pytest.approx(1.2 * plain.gross_slip_shift, rel=1e-12, abs=0)
     # the Masing energy of the corrected law, by direct quadrature, against the
     # trapezoidal area of its loop (2001 points per branch: 1e-5 relative)

@@ -292,25 +292,34 @@ def add_fields(fields, flags, g, model, r, cases, present):
         # creep under a held force (with a given depth the force would relax instead)
         vis = (np.array([materials[i] is not None for i in g], bool) & ok
                & (cases["given"][g] == "load"))
+        # rows with the same body and second-body constants are evaluated together
+        keys = {}
         for j in np.flatnonzero(vis):
             i = g[j]
-            mat = _Material(materials[i], cases["poisson"][i],
-                            cases["modulus2"][i] if present["modulus2"][i] else np.inf,
-                            cases["poisson2"][i] if present["poisson2"][i] else 0.0)
-            one = [""]
-            val, _ = _each(lambda ii, m=mat, f=F[j]: model.depth(
-                f * m.long_term_compliance * model.estar), np.arange(1), one)
-            fields["depth_long_term"][i] = val[0]
-            if one[0]:
-                note(j, "d(inf): " + _short(one[0]))
-            if present["time"][i]:
-                fields["time"][i] = cases["time"][i]
-                one = [""]
-                val, _ = _each(lambda ii, m=mat, f=F[j], t=cases["time"][i]:
-                               step_creep_depth(model, m, f, t), np.arange(1), one)
-                fields["creep_depth"][i] = val[0]
-                if one[0]:
-                    note(j, "d(t): " + _short(one[0]))
+            e2 = cases["modulus2"][i] if present["modulus2"][i] else np.inf
+            n2 = cases["poisson2"][i] if present["poisson2"][i] else 0.0
+            keys.setdefault((id(materials[i]), cases["poisson"][i], e2, n2), []).append(j)
+        for (_, nu1, e2, n2), js in keys.items():
+            js = np.array(js)
+            rows = g[js]
+            mat = _Material(materials[rows[0]], nu1, e2, n2)
+            sub = [""] * js.size
+            val, _ = _each(lambda ii: model.depth(
+                F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
+            fields["depth_long_term"][rows] = val
+            for j, t in zip(js, sub):
+                note(j, "d(inf): " + _short(t) if t else "")
+            timed = present["time"][rows]
+            if timed.any():
+                jt, rt = js[timed], rows[timed]
+                fields["time"][rt] = cases["time"][rt]
+                sub = [""] * jt.size
+                val, _ = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
+                                                           cases["time"][rt][ii]),
+                               np.arange(jt.size), sub)
+                fields["creep_depth"][rt] = val
+                for j, t in zip(jt, sub):
+                    note(j, "d(t): " + _short(t) if t else "")
     for j, i in enumerate(g):
         if notes[j]:
             flags[i] = "; ".join(t for t in (flags[i], notes[j]) if t)

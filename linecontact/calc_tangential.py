@@ -204,7 +204,8 @@ def _each(func, idx, notes, width=1):
     res = np.full(shape, np.nan)
     for k in range(idx.size):
         try:
-            res[k] = np.asarray(func(idx[k:k + 1]), dtype=float).ravel()[:width]
+            v = np.asarray(func(idx[k:k + 1]), dtype=float).ravel()
+            res[k] = v[0] if width == 1 else v[:width]
         except OutOfRangeError as exc:
             notes[k] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
     return res, notes
@@ -308,7 +309,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
                 F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
             fields["depth_long_term"][rows] = val
             for j, t in zip(js, sub):
-                note(j, "d(inf): " + _short(t) if t else "")
+                note(j, _creep_note("d(inf)", "E*_0/E*_inf", t))
             timed = present["time"][rows]
             if timed.any():
                 jt, rt = js[timed], rows[timed]
@@ -319,7 +320,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
                                np.arange(jt.size), sub)
                 fields["creep_depth"][rt] = val
                 for j, t in zip(jt, sub):
-                    note(j, "d(t): " + _short(t) if t else "")
+                    note(j, _creep_note("d(t)", "E*_0 J*(t)", t))
     for j, i in enumerate(g):
         if notes[j]:
             flags[i] = "; ".join(t for t in (flags[i], notes[j]) if t)
@@ -334,6 +335,17 @@ def _slip_correction(model, direction, depth, gstar, q):
     nu = tg.equivalent_poisson(gstar, model.estar)
     return np.atleast_1d(table.shift_factor(direction, nu,
                                             depth * model.radius / model.length ** 2, q))
+
+
+def _creep_note(column, factor, text):
+    """The model's refusal of a creep depth, said in terms of the creep."""
+    if not text:
+        return ""
+    text = _short(text).replace(" (element [0] of shape (1,))", "")
+    if text.startswith("force = "):
+        text = (f"beyond the model's range: its elastic-equivalent force F {factor} = "
+                + text[len("force = "):])
+    return f"{column}: {text}"
 
 
 def _short(text):

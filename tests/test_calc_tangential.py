@@ -124,6 +124,19 @@ def test_creep_sweep_runs_from_the_instantaneous_to_the_long_term_depth(capsys):
     assert np.all(np.diff(d) > 0) and d[-1] < d_inf
 
 
+def test_creep_beyond_the_models_range_is_a_note_not_a_failure(capsys):
+    """A soft body creeping past the universal model's range (d > 0.15 R): those
+    times get '-' and the model's message in the note; the others their values."""
+    rows = _json(capsys, CASE[:-4] + ["--load", "100N", "--model", "universal",
+                                      "--instantaneous-modulus", "30MPa",
+                                      "--long-term-modulus", "3MPa",
+                                      "--relaxation-time", "10s", "--poisson", "0.45",
+                                      "--time", "1s:1000s:3"])
+    assert rows[0]["creep_depth"] is not None and rows[0]["creep_depth"] > 0
+    assert rows[-1]["creep_depth"] is None
+    assert "d(t): beyond the model's range" in rows[-1]["flags"]
+
+
 def test_prony_file_and_an_elastic_roller(capsys, tmp_path):
     """A Prony CSV, and a steel roller on the polymer: the compliances add,
     J*(t) = (1 - nu1^2) J1(t) + (1 - nu2^2)/E2 (rtol 1e-12)."""

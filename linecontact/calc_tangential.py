@@ -34,6 +34,8 @@ roller), the friction options with a viscoelastic body.
 """
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 __all__: list = []
@@ -341,7 +343,7 @@ def _creep_note(column, factor, text):
     """The model's refusal of a creep depth, said in terms of the creep."""
     if not text:
         return ""
-    text = _short(text).replace(" (element [0] of shape (1,))", "")
+    text = _short(text)
     if text.startswith("force = "):
         text = (f"beyond the model's range: its elastic-equivalent force F {factor} = "
                 + text[len("force = "):])
@@ -349,5 +351,6 @@ def _creep_note(column, factor, text):
 
 
 def _short(text):
-    """First clause of a library message (the parameter, value and range)."""
-    return text.split("; ")[0]
+    """First clause of a library message (the parameter, value and range), without
+    the element index of the one-element array it was evaluated on."""
+    return re.sub(r" \(element \[\d+\] of shape \(\d+,\)\)", "", text.split("; ")[0])

@@ -712,7 +712,8 @@ class TangentialContact:
 
     @property
     def gross_slip_shift(self):
-        """Shift at gross slip u* = mu d / r [m] (before any slip correction)."""
+        """Shift at gross slip u* = c(1) mu d / r [m] (c(1): the BEM table's slip
+        correction at gross slip with ``method="bem"``, else 1)."""
         return self.friction * self.depth / self.ratio * self._q_factor(1.0)
 
     @property
@@ -769,8 +770,10 @@ class TangentialContact:
     def shift(self, tangential_force):
         r"""Inverse law u(F_t) [m] for |F_t| <= mu F [N] (u* at mu F; beyond: refused).
 
-        .. math:: u = \frac{\mu}{r}\left[d - d\!\left(F - |F_t|/\mu\right)\right]
-                  \operatorname{sign} F_t
+        .. math:: u = c(q)\,\frac{\mu}{r}\left[d - d\!\left(F - |F_t|/\mu\right)\right]
+                  \operatorname{sign} F_t, \qquad q = \frac{|F_t|}{\mu F}
+
+        with c the BEM table's slip correction (``method="bem"``), else c = 1.
         """
         Ft = np.asarray(tangential_force, dtype=float)
         fmax = self.gross_slip_force

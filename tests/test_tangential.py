@@ -425,3 +425,27 @@ def test_shipped_table_meets_the_one_percent_target_between_its_nodes():
                                                               abs=0)
             assert t.ratio("along", nu, dt) == pytest.approx(r.ratio_along[i], rel=3e-3,
                                                              abs=0)
+
+
+def test_corrected_law_reproduces_the_bem_fretting_energy():
+    """With the shipped table's slip correction, the runtime's Masing energy at
+    u0 = half the stiffness-scaled law's gross-slip shift relative to that law's equals
+    the study's W_BEM/W_scaled (the uncorrected law is off by 4-7 % there); measured
+    within 0.5 %, asserted 1 % (the study's partial-slip grid differs from the table's
+    full-stick grid by up to 1e-3 in k_t, and its W is a quadrature of 24 steps)."""
+    try:
+        t = CylinderTangentialTable(read_table("tangential_cylinder"))
+    except FileNotFoundError:
+        pytest.skip("tables/tangential_cylinder.csv not generated yet")
+    m = standard_models(5e-3, 10e-3, ESTAR)[0]
+    for dt in (1.08e-8, 1.2e-5, 1.34e-2):
+        d = dt * 10e-3 ** 2 / 5e-3
+        for side in ("across", "along"):
+            corr = TangentialContact(m, MU, GSTAR, depth=d, method="bem", direction=side,
+                                     table=t)
+            plain = TangentialContact(m, MU, GSTAR, depth=d, method="bem", direction=side,
+                                      table=t, slip_correction=False)
+            u0 = 0.5 * plain.gross_slip_shift
+            ratio = corr.dissipated_energy(u0) / plain.dissipated_energy(u0)
+            assert ratio == pytest.approx(t.value(f"w_ratio_scaled_{side}", NU, dt),
+                                          rel=1e-2, abs=0), (dt, side)

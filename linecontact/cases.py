@@ -78,6 +78,7 @@ _LOAD = "load (exactly one)"
 _RACE = "whole roller between two raceways (instead of --radius2)"
 _TAN = "tangential contact (one contact; see linecontact.calc_tangential)"
 _VISCO = "viscoelastic second body (instead of --modulus; creep)"
+_PROFILE = "profiled and tilted roller (one contact; see linecontact.calc_roller)"
 
 #: Every input, in ``--help`` order.
 PARAMETERS = (
@@ -121,6 +122,15 @@ PARAMETERS = (
               "above)", _VISCO),
     Parameter("time", "time", "time t the load has been held, or a sweep START:STOP:N: "
               "the creep depth d(t) (with --load)", _VISCO, positive=False, sweep=True),
+    Parameter("crown_radius", "length", "crown radius Rc of a circular crown, drop "
+              "x^2/(2 Rc): adds the profiled-roller rows (coupled slices, ISO/TS 16281 "
+              "slicing)", _PROFILE),
+    Parameter("profile", "text", "roller profile NAME[:OPT=VAL,...]: iso16281[:D=..], "
+              "lundberg[:F0=..], johns-gohar[:F0=..], circular:Rc=.., end-relief:r=.. or "
+              "end-relief:l=..,angle=.. (or drop=..), file:PATH.csv (x, drop in m)",
+              _PROFILE),
+    Parameter("tilt", "angle", "tilt of the roller axis, e.g. 1mrad, 0.05deg (bare: rad); "
+              "positive loads the +x end", _PROFILE, positive=False),
 )
 
 BY_NAME = {p.name: p for p in PARAMETERS}
@@ -185,7 +195,7 @@ def parse_cases(cells, n, label=option_name):
         raw[p.name] = col
         given = np.array([c.strip() != "" for c in col], dtype=bool)
         present[p.name] = given
-        if p.kind == "path":  # a file name, read where it is used
+        if p.kind in ("path", "text", "angle"):  # read where it is used
             values[p.name] = np.full(n, np.nan)
             continue
         v = np.full(n, np.nan)
@@ -309,9 +319,14 @@ def _resolve(v, present, raw, errors, n, label):
         nu2 = np.where(P["poisson2"], v["poisson2"], 0.0)[eq3]
         e1 = np.where(visco, E0, v["modulus"])[eq3]   # viscoelastic: instantaneous E0
         estar[eq3] = effective_modulus(e1, v["poisson"][eq3], e2, nu2)
+    from .calc_roller import resolve as _resolve_roller
+
+    roller_rows, roller_specs, roller_tilts = _resolve_roller(v, P, raw, fail, label, n)
     given = np.where(P["load"], "load", "depth")
     value = np.where(P["load"], v["load"], v["depth"])
     cases = dict(v)
+    cases.update(_roller_rows=roller_rows, _roller_spec=roller_specs,
+                 _roller_tilt=roller_tilts)
     cases.update(radius=radius, radius_eff=radius_eff, estar=estar, given=given,
                  value=value, raceways=raceways, material=materials, _present=present)
     return cases

@@ -42,6 +42,7 @@ from __future__ import annotations
 import abc
 import math
 import os
+from importlib import import_module
 
 import numpy as np
 
@@ -72,6 +73,14 @@ __all__ = [
 
 #: Registry: key -> model class. Filled by :func:`register`.
 MODELS: dict = {}
+
+#: Models defined in other modules of this package (key -> module), imported the first
+#: time one of them is asked for by key, so that a one-case calculation does not pay
+#: for their import. A test checks that each module registers its keys.
+DEFINED_IN = {
+    "profiled-roller": "linecontact.roller",
+    "iso16281-slicing": "linecontact.roller",
+}
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
@@ -864,7 +873,7 @@ def available_models():
     >>> {"universal", "li-popov", "johnson", "palmgren"} <= set(available_models())
     True
     """
-    return sorted(MODELS)
+    return sorted(set(MODELS) | set(DEFINED_IN))
 
 
 def get_model(key, radius, length, estar, **options):
@@ -906,9 +915,11 @@ def get_model(key, radius, length, estar, **options):
     ...
     linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
     """
+    if key not in MODELS and key in DEFINED_IN:
+        import_module(DEFINED_IN[key])
     if key not in MODELS:
         raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in sorted(MODELS)))
+                              + ", ".join(repr(k) for k in available_models()))
     return MODELS[key](radius, length, estar, **options)
 
 

@@ -41,7 +41,6 @@ References
 """
 from __future__ import annotations
 
-import csv
 import math
 import re
 from pathlib import Path
@@ -99,6 +98,12 @@ class Profile:
         Roller length L the profile was built for [m] (None for a user table).
     x_min, x_max : float
         The range of x over which ``drop`` is defined [m].
+
+    Examples
+    --------
+    >>> p = StraightProfile(10e-3)
+    >>> isinstance(p, Profile), p.x_min, p.x_max
+    (True, -0.005, 0.005)
     """
 
     key = ""

@@ -210,8 +210,11 @@ def _num(v):
     return v if math.isfinite(v) else None
 
 
-def one_json(argv, cases, present, results):
-    """JSON of one case or a sweep: the header, the inputs [SI], rows per model."""
+def one_json(argv, cases, present, results, extra=None):
+    """JSON of one case or a sweep: the header, the inputs [SI], rows per model.
+
+    `extra`: further top-level entries (e.g. ``profiled_roller`` of
+    :mod:`linecontact.calc_roller`)."""
     import json
 
     given = str(cases["given"][0])
@@ -246,6 +249,8 @@ def one_json(argv, cases, present, results):
             rows.append(row)
         entries.append(dict(entry, rows=rows))
     doc["models"] = entries
+    if extra:
+        doc.update(extra)
     return json.dumps(doc, indent=2) + "\n"
 
 

@@ -108,26 +108,7 @@ def test_scaling_law(key, opts, lam):
     assert F2 == pytest.approx(lam**2 * F1, rel=1e-9)
 
 
-#: Known breaches of the shared interface, as (key, test) -> who fixes it. Each runs as a
-#: strict xfail: once fixed it passes, the xfail fails, and the entry must go.
-KNOWN_GAPS = {
-    ("profiled-roller", "profile"):
-        "linecontact/roller.py stores the axial crown profile as the attribute .profile, "
-        "which shadows ContactModel.profile(x), the MDR profile (i9rt: rename it, and "
-        "raise NotImplementedError from profile(x) if there is no single MDR profile)",
-    ("iso16281-slicing", "profile"):
-        "the same attribute clash (linecontact/roller.py, i9rt)",
-}
-
-
-def _with_gaps(test):
-    return [pytest.param(k, o, id=i, marks=pytest.mark.xfail(
-                strict=True, reason=KNOWN_GAPS[(i, test)]))
-            if (i, test) in KNOWN_GAPS else pytest.param(k, o, id=i)
-            for (k, o), i in zip(ALL, IDS)]
-
-
-@pytest.mark.parametrize("key, opts", _with_gaps("profile"))
+@pytest.mark.parametrize("key, opts", ALL, ids=IDS)
 def test_profile_reproduces_the_force_law_by_mdr(key, opts):
     """For models with an MDR profile, 2E* int_0^a (d - g) dx of that profile equals the
     model's F(d): profile and force law are one model. (Empirical laws have no profile
@@ -303,6 +284,18 @@ def test_universal_is_registered_by_importing_models():
     alone registers it (no plugin loading on first use)."""
     code = ("import linecontact.models as m; import sys; "
             "assert 'universal' in m.MODELS and m.DEFAULT_MODEL == 'universal'")
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_models_defined_elsewhere_are_built_by_key_in_a_fresh_process():
+    """Every key of DEFINED_IN is listed by available_models() and built by get_model()
+    without the caller importing its module first, and that module registers exactly
+    the keys the table says (so the table cannot drift from the code)."""
+    code = ("import importlib, linecontact.models as m\n"
+            "assert set(m.DEFINED_IN) <= set(m.available_models())\n"
+            "for key, mod in m.DEFINED_IN.items():\n"
+            "    model = m.get_model(key, 5e-3, 10e-3, 115.38e9)\n"
+            "    assert type(model).__module__ == mod and model.key == key, (key, mod)\n")
     subprocess.run([sys.executable, "-c", code], check=True)
 
 

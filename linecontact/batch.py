@@ -59,7 +59,12 @@ class BatchError(ValueError):
 
 
 def read_table(path):
-    """(header, rows) of a CSV file as text cells; BatchError with the reason."""
+    """(header, rows, lines) of a CSV file, cells as text; BatchError with the reason.
+
+    ``lines`` is the text of each row as in the file (line ends aside) when no cell is
+    quoted, so that the output repeats the user's cells byte for byte; else None (the
+    csv module then writes them back with minimal quoting).
+    """
     try:
         with open(path, encoding="utf-8-sig", newline="") as fh:
             text = fh.read()
@@ -72,11 +77,17 @@ def read_table(path):
                          f"{exc.start})") from None
     except OSError as exc:
         raise BatchError(f"{str(path)!r}: cannot read ({exc.strerror or exc})") from None
-    try:
-        rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
-    except csv.Error as exc:
-        raise BatchError(f"{str(path)!r}: cannot read as CSV ({exc})") from None
-    rows = [r for r in rows if r]  # blank lines
+    lines = None
+    if '"' not in text:  # no quoting: one line per row, cells split at commas
+        lines = [ln for ln in text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+                 if ln]
+        rows = [ln.split(",") for ln in lines]
+    else:
+        try:
+            rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
+        except csv.Error as exc:
+            raise BatchError(f"{str(path)!r}: cannot read as CSV ({exc})") from None
+        rows = [r for r in rows if r]  # blank lines
     if not rows:
         raise BatchError(f"{str(path)!r}: the file is empty; expected a header row and "
                          "one case per row")
@@ -84,7 +95,7 @@ def read_table(path):
     if not body:
         raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
                          "per row under the header")
-    return header, body
+    return header, body, (lines[1:] if lines is not None else None)
 
 
 def result_columns(names, taken):
@@ -139,7 +150,7 @@ class _Progress:
 
 def run_batch(args, argv, specs, options):
     """The batch command; returns the exit status (2 if any row failed)."""
-    header, body = read_table(args.csv)
+    header, body, lines = read_table(args.csv)
     n = len(body)
     names = [h.strip().lower() for h in header]
     known = {}
@@ -191,7 +202,7 @@ def run_batch(args, argv, specs, options):
     if args.json:
         text = _json(argv, results, header, body, out_names, getters, width)
     else:
-        text = _csv(header, body, out_names, getters, width)
+        text = _csv(header, body, lines, out_names, getters, width)
     render.write(text, args.output)
     n_failed = sum(1 for e in errors if e)
     if n_failed:
@@ -242,14 +253,37 @@ def _format_numbers(values):
             for v in np.asarray(values, dtype=float).tolist()]
 
 
-def _csv(header, body, out_names, getters, width):
-    cols = [_format_numbers(data) if kind == "num" else data for kind, data in getters]
+def _quote(text):
+    """A CSV cell with minimal quoting (as the csv module writes it)."""
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+def _csv(header, body, lines, out_names, getters, width):
+    """The output CSV: the user's rows (their original text when unquoted) followed by
+    the result cells."""
+    cols = []
+    for kind, data in getters:
+        if kind == "num":
+            cols.append(_format_numbers(data))
+        else:
+            cache = {}
+            cols.append([cache[t] if t in cache else cache.setdefault(t, _quote(t))
+                         for t in data])
+    results = [",".join(t) for t in zip(*cols)]
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)
+    if lines is not None:
+        out = [ln + "," * (width - len(r)) + "," + res if len(r) < width
+               else ln + "," + res for ln, r, res in zip(lines, body, results)]
+        buf.write("\n".join(out) + "\n")
+        return buf.getvalue()
     pad = [""] * width
-    padded = (r + pad[len(r):] if len(r) < width else r for r in body)
-    w.writerows(r + list(t) for r, t in zip(padded, zip(*cols)))
+    for r, res in zip(body, results):
+        row = r + pad[len(r):] if len(r) < width else r
+        buf.write(",".join(_quote(c) for c in row) + "," + res + "\n")
     return buf.getvalue()
 
 

@@ -366,7 +366,9 @@ class Results:
 
     def __init__(self, n, n_sets, errors):
         self.sets = [
-            {"fields": {}, "note": [""] * n, "flags": [""] * n, "label": [""] * n, "id": ""}
+            {"fields": {}, "note": np.full(n, "", dtype=object),
+             "flags": np.full(n, "", dtype=object), "label": np.full(n, "", dtype=object),
+             "id": ""}
             for _ in range(n_sets)
         ]
         for s in self.sets:
@@ -407,11 +409,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                     np.where(race, R1, -1.0)], axis=1)
     rows = np.flatnonzero(ok)
     if rows.size:
-        _, first, inverse = np.unique(key[rows], axis=0, return_index=True,
-                                      return_inverse=True)
-        inverse = inverse.ravel()
-        order = np.argsort(inverse, kind="stable")
-        bounds = np.flatnonzero(np.diff(inverse[order])) + 1
+        k = key[rows]
+        order = np.lexsort(k.T[::-1])  # rows of one cylinder become neighbours
+        ks = k[order]
+        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
         groups = np.split(rows[order], bounds)
     else:
         groups = []
@@ -482,8 +483,7 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
         label = sets[0][j].label
         if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
             s["model"] = sets[0][j]
-        for i in g:
-            s["label"][i] = label
+        s["label"][g] = label
     ref_q = None
     if refs is not None:
         ref_contacts = []
@@ -507,7 +507,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
             for k in ("force", "depth", "stiffness", "half_width", "peak_pressure",
                       "contact_radius"):
                 f[k][g] = r[k]
-            flags = [_flag_text(a, b) for a, b in zip(r["_deep"], r["_wide"])]
+            for k in np.flatnonzero(r["_deep"] | r["_wide"]):
+                s["flags"][g[k]] = _flag_text(r["_deep"][k], r["_wide"][k])
         else:
             ri, ro = per_contact
             f["force"][g] = ri["force"]
@@ -518,13 +519,10 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
                 f["roller_stiffness"][g] = 1 / (1 / ri["stiffness"] + 1 / ro["stiffness"])
             f["peak_pressure_inner"][g] = ri["peak_pressure"]
             f["peak_pressure_outer"][g] = ro["peak_pressure"]
-            flags = [
-                "; ".join(t for t in (_flag_text(a, b, " (inner)"), _flag_text(c, d, " (outer)"))
-                          if t)
-                for a, b, c, d in zip(ri["_deep"], ri["_wide"], ro["_deep"], ro["_wide"])
-            ]
-        for i, t in zip(g, flags):
-            s["flags"][i] = t
+            for k in np.flatnonzero(ri["_deep"] | ri["_wide"] | ro["_deep"] | ro["_wide"]):
+                s["flags"][g[k]] = "; ".join(
+                    t for t in (_flag_text(ri["_deep"][k], ri["_wide"][k], " (inner)"),
+                                _flag_text(ro["_deep"][k], ro["_wide"][k], " (outer)")) if t)
         if ref_q is not None:
             with np.errstate(divide="ignore", invalid="ignore"):
                 f["deviation"][g] = _quantity(per_contact, given) / ref_q - 1

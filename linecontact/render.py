@@ -164,7 +164,7 @@ def table_text(cases, present, results, si):
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
-        columns[0] += s["label"][:n]
+        columns[0].extend(s["label"][:n].tolist())
         for k, c in enumerate(cols, start=1):
             columns[k] += _fmt_column(scale(c, f[c], si))
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]

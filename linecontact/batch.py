@@ -247,10 +247,31 @@ def _result_layout(results, cases, si, multi):
     return cols, getters
 
 
-def _format_numbers(values):
-    """'%.6g' of every element, '' for NaN or inf (a list of str)."""
-    return [format(v, ".6g") if v - v == 0 else ""
-            for v in np.asarray(values, dtype=float).tolist()]
+def _result_cells(getters):
+    """The result part of every output line: numbers as '%.6g' ('' for none), text
+    minimally quoted; one C-level format per row where all numbers are finite."""
+    cols, finite = [], None
+    for kind, data in getters:
+        if kind == "num":
+            v = np.asarray(data, dtype=float)
+            ok = np.isfinite(v)
+            finite = ok if finite is None else finite & ok
+            cols.append(v.tolist())
+        else:
+            cache = {}
+            cols.append([cache[t] if t in cache else cache.setdefault(t, _quote(str(t)))
+                         for t in data])
+    template = ",".join("%.6g" if kind == "num" else "%s" for kind, _ in getters)
+    kinds = [kind for kind, _ in getters]
+
+    def slow(row):
+        return ",".join((format(x, ".6g") if x - x == 0 else "") if k == "num" else x
+                        for k, x in zip(kinds, row))
+
+    n = len(cols[0]) if cols else 0
+    finite = np.ones(n, bool) if finite is None else finite
+    return [template % row if ok else slow(row)
+            for row, ok in zip(zip(*cols), finite.tolist())]
 
 
 def _quote(text):
@@ -263,15 +284,7 @@ def _quote(text):
 def _csv(header, body, lines, out_names, getters, width):
     """The output CSV: the user's rows (their original text when unquoted) followed by
     the result cells."""
-    cols = []
-    for kind, data in getters:
-        if kind == "num":
-            cols.append(_format_numbers(data))
-        else:
-            cache = {}
-            cols.append([cache[t] if t in cache else cache.setdefault(t, _quote(t))
-                         for t in data])
-    results = [",".join(t) for t in zip(*cols)]
+    results = _result_cells(getters)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)

@@ -163,13 +163,19 @@ def run_batch(args, argv, specs, options):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
     width = len(header)
+    full = min(map(len, body)) >= width  # no short row (the usual case)
     cells = {}
     for p in PARAMETERS:
         j = known.get(p.name)
         opt = options.get(p.name)
         if j is None and opt is None:
             continue
-        col = [r[j] if j is not None and j < len(r) else "" for r in body]
+        if j is None:
+            col = [""] * n
+        elif full:
+            col = [r[j] for r in body]
+        else:
+            col = [r[j] if j < len(r) else "" for r in body]
         if opt is not None:
             if ":" in str(opt):
                 raise InputError(option_name(p.name), opt, "one value per row in a batch",

@@ -166,10 +166,13 @@ def parse_cases(cells, n, label=option_name):
             col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
         # distinct cells only: a batch repeats its cylinders (and its empty cells)
-        where = {}
-        inv = np.fromiter((where.setdefault(c, len(where)) for c in col), dtype=np.intp,
-                          count=n)
-        uniq = list(where)
+        if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
+            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)
+        else:
+            where = {}
+            inv = np.fromiter((where.setdefault(c, len(where)) for c in col),
+                              dtype=np.intp, count=n)
+            uniq = list(where)
         u_given = np.array([c.strip() != "" for c in uniq], dtype=bool)
         u_values = np.full(len(uniq), np.nan)
         u_errors = [""] * len(uniq)

@@ -353,7 +353,9 @@ class Results:
     ----------
     sets : list of dict
         One per model column set: ``fields`` (name -> float array [SI]), ``note`` and
-        ``flags`` (lists of str), ``label`` (list of str: the model per row), ``id``.
+        ``flags`` (object arrays of str), ``label`` (object array of str: the model per
+        row), ``id`` (the column suffix) and ``model`` (the model built for the first
+        cylinder, for the JSON header).
     models : dict
         Model id -> a model object (for provenance).
     errors : list of str

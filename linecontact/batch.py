@@ -9,7 +9,8 @@ Reading
 
 Writing: no user data is ever lost
     Every input row is written, in its place, with all its cells exactly as read
-    (a short row is padded with empty cells), followed by the result columns:
+    (a short row is padded with empty cells; cells beyond the header go under unnamed
+    columns), followed by the result columns:
     ``estar_GPa``, then per model ``model``, ``force_kN``, ``depth_um``,
     ``stiffness_N_per_um``, ``half_width_um``, ``peak_pressure_MPa``,
     ``contact_radius_um`` (whole rollers: ``roller_deflection_um``,
@@ -162,7 +163,10 @@ def run_batch(args, argv, specs, options):
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
-    width = len(header)
+    # a row longer than the header keeps its extra cells under unnamed columns, so the
+    # result columns stay aligned; a shorter row is padded with empty cells
+    width = max(len(header), max(map(len, body)))
+    header = list(header) + [""] * (width - len(header))
     full = min(map(len, body)) >= width  # no short row (the usual case)
     cells = {}
     for p in PARAMETERS:

@@ -794,3 +794,23 @@ def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
     assert status == 0 and "50" in err
     status, plain, err = _main(capsys, *argv, "--no-progress")
     assert status == 0 and err == "" and plain == with_bar
+
+
+def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
+    """A row with more cells than the header keeps them (under an unnamed column), a
+    shorter row is padded; the result columns line up under their names in both the
+    unquoted (line-copy) and the quoted (csv module) paths; CRLF line ends are read."""
+    for quote in ("", '"'):
+        path = tmp_path / f"r{len(quote)}.csv"
+        path.write_text(f"name,load\r\n{quote}a{quote},1kN,extra\r\nb\r\nc,2kN\r\n",
+                        encoding="utf-8")
+        status, out, err = _main(capsys, "calc", str(path), "--radius", "5mm",
+                                 *STEEL_CASE[1:])
+        rows = list(csv.reader(io.StringIO(out)))
+        head = rows[0]
+        assert head[:3] == ["name", "load", ""] and status == 2  # row b has no load
+        assert [r[:3] for r in rows[1:]] == [["a", "1kN", "extra"], ["b", "", ""],
+                                             ["c", "2kN", ""]]
+        depth = head.index("depth_um")
+        assert float(rows[1][depth]) > 0 and rows[2][depth] == "" and float(rows[3][depth]) > 0
+        assert all(len(r) == len(head) for r in rows)

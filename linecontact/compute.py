@@ -428,6 +428,12 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
     for s, m in zip(results.sets, probe):
         s["id"] = _model_id(m)
     reference = specs is not None and not first_only
+    ref_key = None
+    if reference:  # the best estimate alone per cylinder, as for a default batch
+        from .models import standard_models
+
+        first = standard_models(1.0, 1.0, 1.0)[0]
+        ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
     done = 0
     for g in groups:
@@ -441,7 +447,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                 contacts = [Reff[i0]]
             sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
                     for R in contacts]
-            refs = ([list(_build(None, R, L[i0], E[i0], True)) for R in contacts]
+            refs = ([_build(None, R, L[i0], E[i0], True, ref_key) for R in contacts]
                     if reference else None)
         except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
             for i in g:
@@ -455,11 +461,18 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
     return results
 
 
+class _Sink:
+    """Swallows per-row messages (item assignment) that nobody reads."""
+
+    def __setitem__(self, key, value):
+        pass
+
+
 def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
     given = cases["given"][g]
     values = cases["value"][g]
     errors = results.errors
-    notes_tmp = [""] * len(errors)
+    sink = _Sink()  # the reference model's own notes are not reported
     per_set = []  # j -> list over contacts of field dicts (arrays over g)
     for j in range(len(sets[0])):
         per_contact = []
@@ -494,8 +507,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
             for which in ("load", "depth"):
                 sel = np.flatnonzero(given == which)
                 if sel.size:
-                    rr = _safe_evaluate(refs[c][0], which, values[sel], notes_tmp,
-                                        notes_tmp, g[sel])
+                    rr = _safe_evaluate(refs[c][0], which, values[sel], sink, sink,
+                                        g[sel])
                     r["force"][sel], r["depth"][sel] = rr["force"], rr["depth"]
             ref_contacts.append(r)
         ref_q = _quantity(ref_contacts, given)

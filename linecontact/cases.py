@@ -48,8 +48,10 @@ class Parameter:
     name : str
         Column name (``_`` becomes ``-`` in the option).
     kind : str
-        ``length``, ``force``, ``pressure`` or ``dimensionless`` (see
-        :data:`linecontact._units.DIMENSIONS`).
+        A kind of :data:`linecontact._units.DIMENSIONS` (``length``, ``force``,
+        ``pressure``, ``dimensionless``, ``angle``, ``time``), parsed to SI floats; or
+        ``text`` (a name or spec, e.g. a profile), passed on stripped as an object
+        array for the code that reads it to check.
     help : str
         One line for ``--help``.
     group : str
@@ -165,6 +167,11 @@ def parse_cases(cells, n, label=option_name):
         if not all(type(c) is str for c in col):
             col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
+        if p.kind == "text":  # a name or a spec (e.g. a profile): the caller reads it
+            text = np.array([c.strip() for c in col], dtype=object)
+            values[p.name] = text
+            present[p.name] = text != ""
+            continue
         # distinct cells only: a batch repeats its cylinders (and its empty cells)
         if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
             uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)

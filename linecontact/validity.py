@@ -199,6 +199,10 @@ def _as_float_array(name, value, unit=""):
     A pint Quantity is converted to `unit` (SI), or refused if its dimension differs;
     the check does not import pint (it recognises a Quantity by its attributes).
     """
+    kind = type(value)
+    if kind is float or (kind is np.ndarray and value.dtype == np.float64):
+        v = np.asarray(value)  # the common case: nothing to refuse but subnormals
+        return _refuse_subnormal(name, v, unit)
     if hasattr(value, "dimensionality") and hasattr(value, "magnitude") \
             and hasattr(value, "to"):
         target = _PINT_UNITS.get(unit, unit)
@@ -266,12 +270,19 @@ def _as_float_array(name, value, unit=""):
     except (TypeError, ValueError) as exc:
         raise OutOfRangeError(name, str(value), "real numbers",
                               hint="it is not a number") from exc
-    tiny = np.finfo(float).tiny
+    return _refuse_subnormal(name, v, unit)
+
+
+_TINY = float(np.finfo(float).tiny)
+
+
+def _refuse_subnormal(name, v, unit):
+    """`v`, or OutOfRangeError for its first subnormal element (precision lost)."""
     with np.errstate(invalid="ignore"):
-        sub = (v != 0) & (np.abs(v) < tiny)
-    if np.any(sub):
+        sub = (v != 0) & (np.abs(v) < _TINY)
+    if sub.any():
         bad = float(v[sub].ravel()[0]) if v.ndim else float(v)
-        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {tiny:.6g}",
+        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {_TINY:.6g}",
                               unit=unit, hint="a subnormal number has lost precision")
     return v
 

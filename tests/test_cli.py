@@ -1,10 +1,12 @@
-"""Tests of the installed ``linecontact`` command (``linecontact calc``).
+"""Tests of the ``linecontact calc`` command.
 
-They run the console script next to ``sys.executable`` in a subprocess, as a user
-would; install the package first (``pip install .`` or ``pip install -e .``).
-Every command is started once, all of them in parallel at the start of the module
-(the start-up of Python, numpy and scipy dominates), and each test then reads the
-result of the command it names.
+The first part runs ``python -m linecontact`` from this checkout's root in a
+subprocess, as a user would (start-up, imports, exit status, stdout/stderr). Every such
+command is started once, all of them in parallel at the start of the module (the
+start-up of Python and numpy dominates), and each test then reads the result of the
+command it names. The second part calls :func:`linecontact.cli.main` in-process (the
+same code without a start-up per test) for the input rules, the batch's guarantees and
+the new output columns.
 """
 
 from __future__ import annotations
@@ -21,7 +23,6 @@ from pathlib import Path
 
 import pytest
 
-EXE = Path(sys.executable).parent / "linecontact"
 DATA = Path(__file__).parent / "data"
 EXAMPLES = Path(__file__).parent.parent / "examples"
 

@@ -164,7 +164,7 @@ def parse_cases(cells, n, label=option_name):
             present[p.name] = ~np.isnan(col)
             raw[p.name] = [repr(float(v)) for v in col] if n <= 10 else None
             continue
-        if not all(type(c) is str for c in col):
+        if n and type(col[0]) is not str:  # cells as read are str; others converted
             col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
         if p.kind == "text":  # a name or a spec (e.g. a profile): the caller reads it

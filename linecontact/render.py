@@ -34,8 +34,9 @@ NOTES = {
              "(beyond the range of the BEM study behind the tables and the parabolic "
              "gap) or Hertz half-width b > L/2 (not a line contact).",
     "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
-              "the same force, roller_stiffness the two contacts in series; the depth "
-              "columns of one contact are per contact.",
+              "the same force, roller_stiffness the two contacts in series; depth_inner "
+              "and depth_outer are the two contacts' own depths (what a single-contact "
+              "row reports as its depth).",
 }
 
 

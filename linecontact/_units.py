@@ -53,7 +53,7 @@ DIMENSIONS = {
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
     "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
-    "time": ("[time]", "s", "10ms, 2 min, 0.5"),
+    "time": ("[time]", "s", "10s, 5min, 2h, 100"),
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
@@ -138,7 +138,7 @@ BUILTIN_UNITS = {
     "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
     "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180},
-    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0},
+    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
 }
 
 
@@ -161,7 +161,7 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
-    elif unit in BUILTIN_UNITS[kind]:
+    elif unit in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][unit]
     else:
         ureg = _registry()
@@ -407,12 +407,13 @@ def parse_bool(parameter, text):
     raise InputError(parameter, text, "true/false, yes/no or 1/0", "not a yes/no value")
 
 
-def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000):
+def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, positive=True):
     """Parse a value or a range ``START:STOP:N`` into a list of SI floats.
 
     ``N`` values from ``START`` to ``STOP``, both included, spaced geometrically
     (equal ratios, as one wants for loads spanning decades) unless ``linear`` is true.
-    Without a colon the result is a one-element list.
+    Without a colon the result is a one-element list. ``positive=False`` accepts
+    START or STOP <= 0 (a time sweep from 0) in a linear sweep only.
 
     Examples
     --------
@@ -423,13 +424,16 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000):
     """
     text = str(text)
     if ":" not in text:
-        return [parse_quantity(parameter, text, kind)]
+        return [parse_quantity(parameter, text, kind, positive=positive)]
     parts = text.split(":")
     fmt = f"START:STOP:N with START, STOP > 0 and 2 <= N <= {max_points}, e.g. 0.1kN:10kN:20"
     if len(parts) != 3:
         raise InputError(parameter, text, fmt, "a range needs exactly three fields")
-    start = parse_quantity(f"{parameter} (START)", parts[0], kind)
-    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind)
+    start = parse_quantity(f"{parameter} (START)", parts[0], kind, positive=positive)
+    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind, positive=positive)
+    if not linear and not (start > 0 and stop > 0):
+        raise InputError(parameter, text, fmt + " (or --linear for a range through 0)",
+                         "a geometric sweep needs START, STOP > 0")
     if not re.fullmatch(r"\s*[0-9]+\s*", parts[2], re.ASCII):
         raise InputError(parameter, text, fmt, f"N = {parts[2]!r} is not an integer")
     n = int(parts[2])

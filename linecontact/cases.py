@@ -49,9 +49,10 @@ class Parameter:
         Column name (``_`` becomes ``-`` in the option).
     kind : str
         A kind of :data:`linecontact._units.DIMENSIONS` (``length``, ``force``,
-        ``pressure``, ``dimensionless``, ``angle``, ``time``), parsed to SI floats; or
-        ``text`` (a name or spec, e.g. a profile), passed on stripped as an object
-        array for the code that reads it to check.
+        ``pressure``, ``dimensionless``, ``time``), parsed here to SI floats; or
+        ``text``, ``path`` or ``angle``, not parsed here (``present`` marks where given;
+        the code that uses them reads the raw cells and checks them, e.g. the tilt in
+        :mod:`linecontact.calc_roller`).
     help : str
         One line for ``--help``.
     group : str
@@ -78,6 +79,9 @@ _CYL = "cylinder (roller)"
 _BODY = "second body and materials"
 _LOAD = "load (exactly one)"
 _RACE = "whole roller between two raceways (instead of --radius2)"
+_TAN = "tangential contact (one contact; see linecontact.calc_tangential)"
+_VISCO = "viscoelastic second body (instead of --modulus; creep)"
+_PROFILE = "profiled and tilted roller (one contact; see linecontact.calc_roller)"
 
 #: Every input, in ``--help`` order.
 PARAMETERS = (
@@ -104,6 +108,32 @@ PARAMETERS = (
     Parameter("inner_raceway", "length", "radius Ri of the inner raceway (convex)", _RACE),
     Parameter("outer_raceway", "length", "radius Ro of the outer raceway (concave; "
               "give it positive)", _RACE),
+    Parameter("friction", "dimensionless", "Coulomb friction coefficient mu: adds the "
+              "full-stick tangential stiffness across and along the axis (BEM) and the "
+              "MDR's", _TAN),
+    Parameter("tangential_load", "force", "tangential force Q at constant normal load, or a "
+              "sweep START:STOP:N: the shift and the slip state (needs --friction)", _TAN,
+              sweep=True),
+    Parameter("instantaneous_modulus", "pressure", "instantaneous Young's modulus E0 of a "
+              "standard linear solid", _VISCO),
+    Parameter("long_term_modulus", "pressure", "long-term Young's modulus E_inf < E0",
+              _VISCO),
+    Parameter("relaxation_time", "time", "relaxation time tau (at constant strain)",
+              _VISCO),
+    Parameter("prony", "path", "Prony series of the Young's modulus: a CSV file with "
+              "columns tau_s, E_Pa and a line '# E_inf: VALUE' (instead of the three "
+              "above)", _VISCO),
+    Parameter("time", "time", "time t the load has been held, or a sweep START:STOP:N: "
+              "the creep depth d(t) (with --load)", _VISCO, positive=False, sweep=True),
+    Parameter("crown_radius", "length", "crown radius Rc of a circular crown, drop "
+              "x^2/(2 Rc): adds the profiled-roller rows (coupled slices, ISO/TS 16281 "
+              "slicing)", _PROFILE),
+    Parameter("profile", "text", "roller profile NAME[:OPT=VAL,...]: iso16281[:D=..], "
+              "lundberg[:F0=..], johns-gohar[:F0=..], circular:Rc=.., end-relief:r=.. or "
+              "end-relief:l=..,angle=.. (or drop=..), file:PATH.csv (x, drop in m)",
+              _PROFILE),
+    Parameter("tilt", "angle", "tilt of the roller axis, e.g. 1mrad, 0.05deg (bare: rad); "
+              "positive loads the +x end", _PROFILE, positive=False),
 )
 
 BY_NAME = {p.name: p for p in PARAMETERS}
@@ -167,10 +197,9 @@ def parse_cases(cells, n, label=option_name):
         if n and type(col[0]) is not str:  # cells as read are str; others converted
             col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
-        if p.kind == "text":  # a name or a spec (e.g. a profile): the caller reads it
-            text = np.array([c.strip() for c in col], dtype=object)
-            values[p.name] = text
-            present[p.name] = text != ""
+        if p.kind in ("path", "text", "angle"):  # read where it is used (raw cells)
+            present[p.name] = np.array([c.strip() != "" for c in col], dtype=bool)
+            values[p.name] = np.full(n, np.nan)
             continue
         # distinct cells only: a batch repeats its cylinders (and its empty cells)
         if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
@@ -232,7 +261,10 @@ def _resolve(v, present, raw, errors, n, label):
              f"either {label('estar')} or the moduli and Poisson's ratios, not both",
              f"conflicts with {label('estar')}", lambda i, nm=name: cell(nm, i))
     nu_range = bounds_of(BY_NAME["poisson"])[1]
-    fail(~P["estar"] & ~P["modulus"], "modulus",
+    from .calc_tangential import resolve as _resolve_tangential
+
+    visco, E0, materials = _resolve_tangential(v, P, raw, fail, label, n)
+    fail(~P["estar"] & ~P["modulus"] & ~visco, "modulus",
          f"a modulus > 0 (e.g. 210GPa), or {label('estar')}", "missing")
     fail(~P["estar"] & P["modulus"] & ~P["poisson"], "poisson", nu_range,
          f"missing (needed with {label('modulus')})")
@@ -292,10 +324,16 @@ def _resolve(v, present, raw, errors, n, label):
 
         e2 = np.where(P["modulus2"], v["modulus2"], np.inf)[eq3]
         nu2 = np.where(P["poisson2"], v["poisson2"], 0.0)[eq3]
-        estar[eq3] = effective_modulus(v["modulus"][eq3], v["poisson"][eq3], e2, nu2)
+        e1 = np.where(visco, E0, v["modulus"])[eq3]   # viscoelastic: instantaneous E0
+        estar[eq3] = effective_modulus(e1, v["poisson"][eq3], e2, nu2)
+    from .calc_roller import resolve as _resolve_roller
+
+    roller_rows, roller_specs, roller_tilts = _resolve_roller(v, P, raw, fail, label, n)
     given = np.where(P["load"], "load", "depth")
     value = np.where(P["load"], v["load"], v["depth"])
     cases = dict(v)
+    cases.update(_roller_rows=roller_rows, _roller_spec=roller_specs,
+                 _roller_tilt=roller_tilts)
     cases.update(radius=radius, radius_eff=radius_eff, estar=estar, given=given,
-                 value=value, raceways=raceways)
+                 value=value, raceways=raceways, material=materials, _present=present)
     return cases

@@ -12,6 +12,8 @@ Usage (``linecontact calc --help`` has the full list)::
     linecontact calc cases.csv -o results.csv          # batch, one case per row
     linecontact calc ... --json                        # machine-readable, SI
     linecontact calc ... --model li-popov:coefficients=eq11,johnson:c=0.72
+    linecontact calc ... --load 1kN --crown-radius 500mm --tilt 1mrad  # profiled roller
+    linecontact calc ... --load 1kN --profile iso16281 --json          # ... with q(x)
 
 Where things are
     :mod:`linecontact.cases`   the inputs (options = CSV columns) and their checks;
@@ -170,12 +172,22 @@ def _calc_one(args, argv, specs):
 
     raw = {p.name: getattr(args, p.name) for p in PARAMETERS}
     n = 1
-    for name, other in (("load", "depth"), ("depth", "load")):
-        if raw[name] is not None and ":" in raw[name] and raw[other] is None:
-            sweep = np.array(parse_sweep(option_name(name), raw[name], BY_NAME[name].kind,
-                                         linear=args.linear))
-            n = len(sweep)
-            raw[name] = sweep
+    swept = None
+    for p in PARAMETERS:
+        name = p.name
+        other = {"load": "depth", "depth": "load"}.get(name)
+        if not (p.sweep and raw[name] is not None and ":" in raw[name]):
+            continue
+        if other is not None and raw[other] is not None:
+            continue  # load and depth together: parse_cases says so
+        if swept is not None:
+            raise _Failed(f"{option_name(name)} = {raw[name]!r}: a second sweep; valid: "
+                          f"one sweep at a time (already {option_name(swept)})")
+        sweep = np.array(parse_sweep(option_name(name), raw[name], BY_NAME[name].kind,
+                                     linear=args.linear, positive=p.positive))
+        n = len(sweep)
+        raw[name] = sweep
+        swept = name
     cells = {
         k: (v if isinstance(v, np.ndarray) else [v] * n) for k, v in raw.items() if v is not None
     }
@@ -185,10 +197,20 @@ def _calc_one(args, argv, specs):
     results = compute(cases, errors, specs)
     if errors[0]:  # an unexpected failure of a model: said, not hidden
         raise _Failed(errors[0])
+    from . import calc_roller
+
+    rollers = calc_roller.solve(cases, errors)  # profiled roller (issue 9), if asked
+    bad = next((e for e in errors if e), "")
+    if bad:
+        raise _Failed(bad)
     if args.json:
-        render.write(render.one_json(argv, cases, present, results), args.output)
+        extra = {"profiled_roller": calc_roller.json_blocks(rollers)} if rollers else None
+        render.write(render.one_json(argv, cases, present, results, extra=extra),
+                     args.output)
     else:
-        render.write(render.table_text(cases, present, results, args.si), args.output)
+        text = render.table_text(cases, present, results, args.si)
+        text += calc_roller.table_text(rollers, str(cases["given"][0]), args.si)
+        render.write(text, args.output)
     computed = any(not note for s in results.sets for note in s["note"])
     if not computed:
         notes = [s["note"][0] for s in results.sets]

@@ -74,6 +74,18 @@ FIELDS = {
     "radius": Field("R", "m", "mm", 1e3),
     "radius_eff": Field("R eff", "m", "mm", 1e3),
     "length": Field("L", "m", "mm", 1e3),
+    # tangential and viscoelastic (linecontact.calc_tangential)
+    "kt_mdr": Field("kt MDR", "N/m", "N/um", 1e-6),
+    "kt_across": Field("kt across", "N/m", "N/um", 1e-6),
+    "kt_along": Field("kt along", "N/m", "N/um", 1e-6),
+    "tangential_load": Field("Q", "N", "kN", 1e-3),
+    "slip_fraction": Field("Q/(mu F)", "-", "%", 100.0),
+    "shift_mdr": Field("u MDR", "m", "um", 1e6),
+    "shift_across": Field("u across", "m", "um", 1e6),
+    "shift_along": Field("u along", "m", "um", 1e6),
+    "time": Field("t", "s", "s", 1.0),
+    "creep_depth": Field("d(t)", "m", "um", 1e6),
+    "depth_long_term": Field("d(inf)", "m", "um", 1e6),
 }
 
 #: Columns of one contact, in order (the given quantity, F or d, comes first).
@@ -373,13 +385,16 @@ class Results:
              "id": ""}
             for _ in range(n_sets)
         ]
+        from .calc_tangential import ALL_COLUMNS
+
         for s in self.sets:
-            for f in set(CONTACT_COLUMNS) | set(ROLLER_COLUMNS):
+            for f in set(CONTACT_COLUMNS) | set(ROLLER_COLUMNS) | set(ALL_COLUMNS):
                 s["fields"][f] = np.full(n, np.nan)
         self.models = {}
         self.errors = errors
         self.roller = False
         self.deviation = False
+        self.extra = []  # tangential/viscoelastic columns (linecontact.calc_tangential)
 
 
 def compute(cases, errors, specs, *, first_only=False, progress=None):
@@ -458,6 +473,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         if progress is not None:
             progress(done)
     results.roller = bool(np.any(race & ok))
+    from .calc_tangential import columns as _extra_columns
+
+    results.extra = list(_extra_columns(cases, cases["_present"])) if "_present" in cases \
+        else []
     return results
 
 
@@ -524,6 +543,10 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
                 f[k][g] = r[k]
             for k in np.flatnonzero(r["_deep"] | r["_wide"]):
                 s["flags"][g[k]] = _flag_text(r["_deep"][k], r["_wide"][k])
+            if "_present" in cases:  # tangential / viscoelastic columns and flags
+                from .calc_tangential import add_fields
+
+                add_fields(f, s["flags"], g, sets[0][j], r, cases, cases["_present"])
         else:
             ri, ro = per_contact
             f["force"][g] = ri["force"]

@@ -50,8 +50,9 @@ any other ``NAME``
 Table 1 and Eq. 11 disagree where both apply: at L/R = 5 Table 1 has alpha = 1.6048,
 beta = 0.5376 against pi/2 and 0.4573. For a steel roller R = 5 mm, L = 25 mm
 (E* = 115.4 GPa) the "published" depth is 0.9 % smaller than the "eq11" one at 1 kN and
-0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is chosen for you: the model uses ``"published"`` unless
-told ``coefficients="eq11"``, and the CLI lists both.
+0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is
+chosen for you: the model uses ``"published"`` unless told ``coefficients="eq11"``, and
+the CLI lists both.
 
 References
 ----------
@@ -113,6 +114,20 @@ class CoefficientSet:
     Call it with L/R to get ``(alpha, beta)``; L/R outside :attr:`valid` raises
     :class:`~linecontact.validity.OutOfRangeError`.
 
+    Parameters
+    ----------
+    name : str
+        ``"published"``, ``"eq11"`` or a table name.
+    label : str
+        Human-readable, e.g. ``"Table 1 spline"``.
+    valid : Interval
+        Range of L/R.
+    provenance : dict
+        Table metadata (table-backed sets) or the equation reference.
+    _alpha, _beta : NotAKnotSpline or None
+        alpha and beta as splines of ln(L/R) (table-backed sets); None for the
+        constants of Eq. 11.
+
     Attributes
     ----------
     name : str
@@ -123,6 +138,17 @@ class CoefficientSet:
         Range of L/R.
     provenance : dict
         Table metadata (table-backed sets) or the equation reference.
+
+    Examples
+    --------
+    >>> s = coefficient_set("eq11")
+    >>> s(10.0)
+    (array(1.57079633), array(0.4573))
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Table 1 and Eq. 11.
     """
 
     name: str
@@ -200,6 +226,16 @@ def available_coefficient_sets():
 
 def coefficient_set(name="published"):
     """The coefficient set `name`: ``"published"``, ``"eq11"`` or a table name.
+
+    Parameters
+    ----------
+    name : str
+        ``"published"`` (Li & Popov 2017, Table 1, spline in ln(L/R)), ``"eq11"``
+        (Eq. 11) or the name NAME of a table ``tables/lipopov_NAME.csv``.
+
+    Returns
+    -------
+    CoefficientSet
 
     A table set is re-read when its file changes (so a table regenerated while a
     process runs is picked up).
@@ -303,6 +339,24 @@ def _u_from_depth_ratio(D):
     return log1p_excess_root(-np.log(D))
 
 
+# The closed forms in dimensionless variables (Eq. 8: d~ = d R/L^2, F~ = F R/(E* L^3),
+# x~ = a/L), unchecked: their one home. The SI functions and the dimensionless_*
+# functions below check their inputs once and scale these.
+def _force_tilde(d, a, b):
+    """F~ = 2 alpha beta e^-u with (u + 1) e^-u = d~/beta."""
+    return 2 * a * b * np.exp(-_u_from_depth_ratio(d / b))
+
+
+def _radius_tilde(d, a, b):
+    """x~ = alpha/u with (u + 1) e^-u = d~/beta."""
+    return a / _u_from_depth_ratio(d / b)
+
+
+def _depth_tilde(f, a, b):
+    """d~ = F~/(2 alpha) (1 + ln(2 alpha beta/F~)), the inverse of _force_tilde."""
+    return f / (2 * a) * (1.0 + np.log(2 * a * b / f))
+
+
 def lipopov_depth_limit(radius, length, beta):
     r"""Supremum of the Li-Popov profile, the largest depth the form can describe.
 
@@ -322,10 +376,21 @@ def lipopov_depth_limit(radius, length, beta):
     float or ndarray
         beta L^2 / R [m].
 
+    Notes
+    -----
+    Valid for 0 < R, L, beta < inf.
+
     Examples
     --------
     >>> lipopov_depth_limit(5e-3, 10e-3, 0.4573)
     0.009146
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     b = check_positive("beta", beta)
@@ -337,6 +402,17 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
 
     .. math:: F_{max} = 2\alpha\beta E^* L^3 / R
 
+    Parameters
+    ----------
+    radius : float or array_like
+        Cylinder radius R, 0 < R < inf [m].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+    estar : float or array_like
+        Effective modulus E*, 0 < E* < inf [Pa].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
     Returns
     -------
     float or ndarray
@@ -346,6 +422,14 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
     --------
     >>> f"{lipopov_force_limit(5e-3, 10e-3, 115.4e9, alpha=1.5708, beta=0.4573):.4g}"
     '3.316e+07'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (MDR force at the
+    bound).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -377,6 +461,13 @@ def dimensionless_profile(x_tilde, alpha, beta):
     --------
     >>> round(dimensionless_profile(1.0, 1.5708, 0.4573), 6)
     0.244388
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 8 and 9.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     xt = check_interval("x_tilde", x_tilde, 0.0, np.inf, high_open=True)
     a, b = _coeffs(alpha, beta)
@@ -418,6 +509,13 @@ def lipopov_profile(x, radius, length, *, alpha, beta):
     --------
     >>> f"{lipopov_profile(10e-3, 5e-3, 10e-3, alpha=1.5708, beta=0.4573):.4e}"
     '4.8878e-03'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     xv = check_interval("x", x, 0.0, np.inf, high_open=True, unit="m")
@@ -478,13 +576,20 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
     >>> F = lipopov_force(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> round(F)
     1000
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with the MDR rules
+    (docs/theory.md, section 'MDR').
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
     a, b = _coeffs(alpha, beta)
-    d, dmax = _depth_checked(depth, R, L, b)
-    u = _u_from_depth_ratio(d / dmax)
-    return out(2 * a * b * E * L**3 / R * np.exp(-u))
+    d, _ = _depth_checked(depth, R, L, b)
+    return out(E * L**3 / R * _force_tilde(d * R / L**2, a, b))
 
 
 def _force_checked(force, R, L, E, a, b):
@@ -528,12 +633,20 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
     >>> d = lipopov_depth(1e3, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{d * 1e6:.3f} um"
     '3.147 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and 9 (Eq. 2 for
+    alpha = pi/2, beta = 1).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
     a, b = _coeffs(alpha, beta)
-    F, fmax = _force_checked(force, R, L, E, a, b)
-    return out(F / (2 * a * L * E) * (1.0 + np.log(fmax / F)))
+    F, _ = _force_checked(force, R, L, E, a, b)
+    return out(L**2 / R * _depth_tilde(F * R / (E * L**3), a, b))
 
 
 def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
@@ -561,11 +674,18 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
     >>> a = lipopov_contact_radius(3.147e-6, 5e-3, 10e-3, alpha=1.5707963, beta=0.4573)
     >>> f"{a * 1e3:.4f} mm"
     '1.5091 mm'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     a, b = _coeffs(alpha, beta)
-    d, dmax = _depth_checked(depth, R, L, b)
-    return out(a * L / _u_from_depth_ratio(d / dmax))
+    d, _ = _depth_checked(depth, R, L, b)
+    return out(L * _radius_tilde(d * R / L**2, a, b))
 
 
 def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
@@ -595,6 +715,13 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
     >>> k = lipopov_stiffness(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (k = 2 E* a).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     E = check_positive("estar", estar, "Pa")
     return out(2 * E * np.asarray(lipopov_contact_radius(depth, radius, length,
@@ -632,6 +759,13 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
     ...                                beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and Eq. 13 (corrected).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -642,8 +776,9 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
 
 # --------------------------------------------------------------------------------------
 # dimensionless closed forms of Eq. 8-9 and the fit of Eq. 9: their one home. The BEM
-# studies in tools/ and the tests call these; each evaluates the SI function above with
-# R = L = E* = 1, so there is one Lambert-W inverse in the package.
+# studies in tools/ and the tests call these; each checks its inputs once and evaluates
+# the same dimensionless kernel (_force_tilde, ...) as the SI function above, so there is
+# one Lambert-W inverse in the package.
 # --------------------------------------------------------------------------------------
 def _d_tilde_checked(d_tilde, beta):
     return check_interval(
@@ -695,7 +830,7 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_contact_radius(d, 1.0, 1.0, alpha=a, beta=b)
+    return out(_radius_tilde(d, a, b))
 
 
 def dimensionless_force(d_tilde, alpha, beta):
@@ -741,7 +876,7 @@ def dimensionless_force(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_force(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(_force_tilde(d, a, b))
 
 
 def dimensionless_stiffness(d_tilde, alpha, beta):
@@ -784,7 +919,7 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_stiffness(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(2 * _radius_tilde(d, a, b))
 
 
 def dimensionless_depth(f_tilde, alpha, beta):
@@ -832,7 +967,7 @@ def dimensionless_depth(f_tilde, alpha, beta):
     f = check_interval(
         "f_tilde", f_tilde, 0.0, 2 * a * b, low_open=True, high_open=True,
         hint="the Li-Popov form saturates at F~ = 2 alpha beta")
-    return lipopov_depth(f, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(_depth_tilde(f, a, b))
 
 
 def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):

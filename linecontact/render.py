@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from .calc_tangential import NOTES as _TANGENTIAL_NOTES
 from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS, _model_id
 
 __all__ = ["PROG", "fmt", "unit", "scale", "columns_of", "json_header", "table_text",
@@ -33,6 +34,8 @@ NOTES = {
     "flags": "flags: the row's geometry is outside what the models cover: d > 0.15 R "
              "(beyond the range of the BEM study behind the tables and the parabolic "
              "gap) or Hertz half-width b > L/2 (not a line contact).",
+    "tangential": _TANGENTIAL_NOTES["tangential"],
+    "creep": _TANGENTIAL_NOTES["creep"],
     "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
               "the same force, roller_stiffness the two contacts in series; depth_inner "
               "and depth_outer are the two contacts' own depths (what a single-contact "
@@ -78,6 +81,7 @@ def columns_of(results, given):
     for c in cols:
         if c not in seen:
             seen.append(c)
+    seen += [c for c in getattr(results, "extra", []) if c not in seen]
     if results.deviation:
         seen.append("deviation")
     return seen
@@ -147,12 +151,27 @@ def _case_line(cases, present, si):
                  f"{q('radius', 'outer_raceway')}")
     L_over_R = float(cases["length"][0] / cases["radius_eff"][0])
     line += f", L = {q('length', 'length')}, L/R = {fmt(L_over_R)}, E* = {q('estar', 'estar')}"
-    if present["modulus"][0]:
-        line += f" (E1 = {q('estar', 'modulus')}, nu1 = {fmt(float(cases['poisson'][0]))}; "
+    material = cases.get("material")
+    body = material[0] if material is not None else None
+    if present["modulus"][0] or body is not None:
+        if body is None:
+            line += f" (E1 = {q('estar', 'modulus')}, "
+        elif present["prony"][0]:
+            line += (f" at t = 0 (viscoelastic body: Prony series of {body.moduli.size} "
+                     f"terms, E0 = {fmt(body.instantaneous * (1 if si else 1e-9))} "
+                     f"{unit('estar', si)}, E_inf = "
+                     f"{fmt(body.long_term * (1 if si else 1e-9))} {unit('estar', si)}, ")
+        else:
+            line += (f" at t = 0 (viscoelastic body: E0 = {q('estar', 'instantaneous_modulus')}"
+                     f", E_inf = {q('estar', 'long_term_modulus')}, tau = "
+                     f"{fmt(float(cases['relaxation_time'][0]))} s, ")
+        line += f"nu1 = {fmt(float(cases['poisson'][0]))}; "
         if present["modulus2"][0]:
             line += f"E2 = {q('estar', 'modulus2')}, nu2 = {fmt(float(cases['poisson2'][0]))})"
         else:
             line += "rigid roller)"
+    if present["friction"][0]:
+        line += f", mu = {fmt(float(cases['friction'][0]))}"
     return line
 
 
@@ -179,6 +198,11 @@ def table_text(cases, present, results, si):
     lines += ["", "Note: " + P0_NOTE]
     if results.roller:
         lines.append("Note: " + NOTES["roller"])
+    extra = getattr(results, "extra", [])
+    if any(c.startswith(("kt_", "shift_")) for c in extra):
+        lines.append("Note: " + NOTES["tangential"])
+    if "depth_long_term" in extra:
+        lines.append("Note: " + NOTES["creep"])
     return "\n".join(lines) + "\n"
 
 
@@ -187,8 +211,11 @@ def _num(v):
     return v if math.isfinite(v) else None
 
 
-def one_json(argv, cases, present, results):
-    """JSON of one case or a sweep: the header, the inputs [SI], rows per model."""
+def one_json(argv, cases, present, results, extra=None):
+    """JSON of one case or a sweep: the header, the inputs [SI], rows per model.
+
+    `extra`: further top-level entries (e.g. ``profiled_roller`` of
+    :mod:`linecontact.calc_roller`)."""
     import json
 
     given = str(cases["given"][0])
@@ -196,9 +223,19 @@ def one_json(argv, cases, present, results):
     inputs = {
         k: float(cases[k][0])
         for k in ("radius", "radius2", "radius_eff", "length", "estar", "modulus", "poisson",
-                  "modulus2", "poisson2", "inner_raceway", "outer_raceway")
+                  "modulus2", "poisson2", "inner_raceway", "outer_raceway", "friction",
+                  "instantaneous_modulus", "long_term_modulus", "relaxation_time")
         if k in ("radius", "radius_eff", "length", "estar") or present[k][0]
     }
+    if present["prony"][0]:
+        m = cases["material"][0]
+        inputs["prony"] = None if m is None else {
+            "long_term_modulus": m.long_term, "moduli": m.moduli.tolist(),
+            "times": m.times.tolist()}
+    for k in ("tangential_load", "time"):
+        if present[k][0]:
+            vals = [float(x) for x in cases[k]]
+            inputs[k] = vals if len(set(vals)) > 1 else vals[0]
     values = [float(v) for v in cases["value"]]
     inputs[given] = values if len(values) > 1 else values[0]
     doc = json_header(argv, results)
@@ -213,6 +250,8 @@ def one_json(argv, cases, present, results):
             rows.append(row)
         entries.append(dict(entry, rows=rows))
     doc["models"] = entries
+    if extra:
+        doc.update(extra)
     return json.dumps(doc, indent=2) + "\n"
 
 

@@ -43,29 +43,6 @@ EXEMPT_MODULES = {"cli", "__main__", "cases", "compute", "render", "batch"}
 #: longer matches any failure makes test_allow_list_holds_only_real_gaps fail, so the
 #: list can only shrink. The coordinator empties it when the owners' branches merge.
 ALLOWED = {
-    ("linecontact", "a Parameters section"):
-        "force/depth/stiffness one-liners: owned by i11b (linecontact/__init__.py), "
-        "fixed in merge",
-    ("linecontact.classical", "a Parameters section"):
-        "owned by i11b (classical.py), fixed in merge",
-    ("linecontact.classical", "a References section"):
-        "owned by i11b (classical.py), fixed in merge",
-    ("linecontact.classical", "a unit in brackets"):
-        "Johnson's c [-]: owned by i11b (classical.py), fixed in merge",
-    ("linecontact.lipopov", "a Parameters section"):
-        "existing part owned by i11b (lipopov.py), fixed in merge",
-    ("linecontact.lipopov", "a References section"):
-        "existing part owned by i11b (lipopov.py), fixed in merge",
-    ("linecontact.lipopov", "a validity range"):
-        "lipopov_depth_limit: existing part owned by i11b (lipopov.py), fixed in merge",
-    ("linecontact.lipopov", "an Examples section"):
-        "CoefficientSet: existing part owned by i11b (lipopov.py), fixed in merge",
-    ("linecontact.models", "a Parameters section"):
-        "model classes: owned by i11b (models.py), fixed in merge",
-    ("linecontact.models", "a validity range"):
-        "get_model: owned by i11b (models.py), fixed in merge",
-    ("linecontact.models", "an Examples section"):
-        "ContactModel, register: owned by i11b (models.py), fixed in merge",
     ("linecontact.validity", "Parameters entries for"):
         "OutOfRangeError(where): owned by i11a (validity.py), fixed in merge",
     ("linecontact.validity", "a Parameters section"):

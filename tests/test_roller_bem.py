@@ -237,3 +237,34 @@ def test_straight_roller_reproduces_the_universal_curve():
         assert g["fine"].ends == (True, True) and g["order"] == 1.0
         assert abs(g["fine"].force / exact - 1) < 1.5e-3
         assert abs(g["richardson_force"] / exact - 1) < 5e-4
+
+
+def test_tool_docstring_examples_run():
+    """The Examples blocks of tools/roller_bem.py are doctests (tools/ is outside the
+    default doctest paths)."""
+    import doctest
+    import tools.roller_bem
+    result = doctest.testmod(tools.roller_bem, optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0 and result.attempted >= 5
+
+
+# --- the accuracy study (tools/roller_study.py) ---------------------------------------
+
+def test_study_case_compares_runtime_and_iso_with_the_bem():
+    """One study case end to end on a small grid (32 x 16 and 64 x 32): a crowned
+    roller tilted by 1 mrad, contact off the ends. The runtime coupled-slice model
+    meets issue 9's targets against the BEM (1 % deflection and moment, 5 % peak
+    pressure; measured 0.01 %, 0.04 %, 0.01 % at the study's grids), and ISO slicing's
+    uncoupled slices miss the crowned roller's deflection by more than 1 % (measured
+    3.2 % at this load: issue 9 quotes 6-15 % at light load against exact Hertz)."""
+    pytest.importorskip("linecontact.roller")
+    import tools.roller_study as rs
+    task = next(t for t in rs.study_tasks(n_x=32, n_y=16, check_every=0)
+                if t["key"] == "A-circular_crown-q800-t1")
+    out = rs.run_case(task)
+    assert not out["bem_edge"]
+    assert abs(out["bem_change_depth"]) < 1e-3 * out["bem_delta"]
+    assert abs(out["rt_err_depth"]) < 0.01
+    assert abs(out["rt_err_moment"]) < 0.01
+    assert abs(out["rt_err_p_max"]) < 0.05
+    assert abs(out["iso_err_depth"]) > 0.01

@@ -36,6 +36,7 @@ SUBCOMMANDS = {
     "paper": "tools.paper_study",
     "roller": "tools.roller_study",
     "tangential": "tools.tangential_study",
+    "accuracy": "tools.accuracy",
 }
 
 

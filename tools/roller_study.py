@@ -3,36 +3,43 @@
 Writes tables/roller_accuracy.csv and docs/figures/roller_accuracy.png
 (``python -m tools.build_tables roller``).
 
-What it computes, per case (a roller, a profile, a force F and a tilt theta):
+What it computes, per case (a roller, a profile, a force F and a tilt theta, or no
+tilt: the roller free to tilt, zero moment):
 
 1. The reference: the 3D boundary-element solution of tools.roller_bem at the force F
-   and the given tilt (Newton on the approach d), on an adapted window with
-   ``n_x`` x ``n_y`` cells and again with twice as many in each direction on the same
-   window (tools.roller_bem.grid_convergence). The reference is the finer grid; the
-   change between the two grids is its stated uncertainty (columns ``bem_change_*``),
-   and the Richardson value (order 2 off the ends, measured for a Hertz field in
-   tests/test_roller_bem.py) is kept beside it. A case is *edge loaded* when the
-   contact reaches a roller end cell on either grid: its peak pressure is then a
-   singular end peak that depends on the grid (reported, never used as a target).
-2. The runtime coupled-slice model of linecontact.roller (``ProfiledRollerModel``) at
-   the same F and theta, and the ISO/TS 16281 slicing method (``iso_slicing``) with its
-   misalignment term; each gives an approach d, a moment M and a peak pressure.
+   and the given tilt (Newton on the approach d; on (d, theta) where the tilt is free),
+   on an adapted window with ``n_x`` x ``n_y`` cells and again with twice as many in
+   each direction on the same window (tools.roller_bem.grid_convergence). The
+   reference is the finer grid; the change between the two grids is its stated
+   resolution (columns ``bem_change_*``); every ``check_every``-th case is also solved
+   on a third grid (4x) and the observed orders go to the header. A case is *edge
+   loaded* when the contact reaches a roller end cell on either grid: its peak
+   pressure is then a singular end peak that depends on the grid (reported, never
+   used as a target).
+2. The runtime coupled-slice model of linecontact.roller (``ProfiledRoller.at_force``,
+   100 slices) at the same F and theta, and the ISO/TS 16281 slicing method
+   (``iso_slicing``, 30 slices) with its misalignment term; each gives an approach d,
+   a moment M, a peak pressure and, where free, the tilt.
 3. Errors against the reference: deflection (d - d_ref)/delta_ref with delta_ref the
    largest approach along the roller, max_x (d + theta x - P(x)) (= d for an untilted
    symmetric profile; the approach at the roller centre alone can be near zero for a
-   tilted crowned roller); moment (M - M_ref)/M_ref where theta != 0 and
-   M/(F L/2) where theta = 0; peak pressure (p - p_ref)/p_ref off the ends.
+   tilted crowned roller); moment M/M_ref - 1 at a given tilt theta != 0 and
+   (M - M_ref)/(F L/2) otherwise; tilt theta/theta_ref - 1 where it is free; peak
+   pressure p/p_ref - 1 (a target only off the ends).
 
-The cases: two steel rollers of diameter D = 10 mm (E* = 115.385 GPa, steel on steel),
+The cases: steel rollers of diameter D = 10 mm (E* = 115.385 GPa, steel on steel).
 L = 14 mm (ISO's L <= 2.5 D branch) with five profiles -- circular crown (Rc = 500 mm),
-ISO/TS 16281 logarithmic, Lundberg's for a design load, Johns-Gohar, straight with
-tangent circular end relief -- and L = 30 mm with the ISO profile (its L > 2.5 D branch,
-flat middle); mean line loads F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact
-pressure 0.6-2.9 GPa); tilts 0, 0.5, 1, 2 mrad.
+ISO/TS 16281 logarithmic, Lundberg's and Johns-Gohar's for a design load of 800 N/mm,
+straight with tangent circular end relief (0.15 L at each end, arc radius 50 mm) -- at
+tilts 0, 0.5, 1, 2 mrad; L = 30 mm with the ISO profile (its L > 2.5 D branch, flat
+middle) at the same tilts; and two free-tilt cases on L = 14 mm: a crown offset by
+x0 = 2 mm (exact zero-moment tilt -x0/Rc) and an asymmetric crown (Rc = 500 mm for
+x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
+F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure 0.6-2.9 GPa). 104 cases.
 
-Budget: about 10 minutes on 2 shared cores with the default grids (measured: see the
-table's header line ``wall_time``); each BEM solve is independent, so the study runs
-through tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster).
+Budget: under 10 minutes on 2 shared cores with the default grids (the measured wall
+time is the table's header line ``wall_time``); the cases are independent, so the study
+runs through tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster).
 """
 from __future__ import annotations
 
@@ -42,6 +49,7 @@ from pathlib import Path
 import numpy as np
 
 from .roller_bem import grid_convergence, solve_roller_force
+from .runner import add_runner_arguments, run_study_from_args, table_meta
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -51,46 +59,64 @@ ROLLERS = {"A": 0.014, "B": 0.030}   #: roller lengths [m]
 LINE_LOADS = (1e5, 3e5, 8e5, 2e6)     #: mean line loads F/L [N/m]
 TILTS = (0.0, 5e-4, 1e-3, 2e-3)       #: [rad]
 CROWN_RADIUS = 0.5                    #: circular crown [m]
+CROWN_OFFSET = 0.002                  #: offset crown (free tilt: theta = -x0/Rc) [m]
+CROWN_RADII_ASYM = (0.5, 0.25)        #: asymmetric crown: Rc for x < 0 and x > 0 [m]
 DESIGN_LINE_LOAD = 8e5                #: Lundberg / Johns-Gohar design load F0/L [N/m]
-RELIEF = dict(flat_fraction=0.7, corner_radius=0.05)  #: straight with end relief
+RELIEF = dict(relief_fraction=0.15, corner_radius=0.05)  #: relief length / L, arc [m]
 
 #: profile codes of the table (numeric columns only)
 PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
-            5: "straight with end relief"}
+            5: "straight with end relief", 6: "offset circular crown",
+            7: "asymmetric crown"}
+#: profiles of the zero-moment (free tilt) cases
+FREE_TILT = ("offset circular crown", "asymmetric crown")
 CODES = {v: k for k, v in PROFILES.items()}
 
 
 def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR):
     """The profile object (linecontact.profiles) of a study case, by name."""
     from linecontact import profiles as lp
-    D = 2 * radius
     if name == "circular crown":
-        return lp.CircularCrown(CROWN_RADIUS, length)
+        return lp.CircularCrownProfile(length, crown_radius=CROWN_RADIUS)
     if name == "iso16281":
-        return lp.ISO16281(D, length)
+        return lp.ISO16281Profile(length, diameter=2 * radius)
     if name == "lundberg":
-        return lp.Lundberg(DESIGN_LINE_LOAD * length, length, estar)
+        return lp.LundbergProfile(length, estar, design_force=DESIGN_LINE_LOAD * length)
     if name == "johns-gohar":
-        return lp.JohnsGohar(DESIGN_LINE_LOAD * length, length, radius, estar)
+        return lp.JohnsGoharProfile(length, radius, estar,
+                                    design_force=DESIGN_LINE_LOAD * length)
     if name == "straight with end relief":
-        return lp.EndRelief(length, RELIEF["flat_fraction"] * length,
-                            corner_radius=RELIEF["corner_radius"])
+        return lp.EndReliefProfile(length, corner_radius=RELIEF["corner_radius"],
+                                   relief_length=RELIEF["relief_fraction"] * length)
+    if name == "offset circular crown":
+        return lp.CircularCrownProfile(length, crown_radius=CROWN_RADIUS,
+                                       offset=CROWN_OFFSET)
+    if name == "asymmetric crown":
+        # a user table (the CSV route): two crown radii meeting at x = 0, 2001 points
+        # (linear interpolation changes the drop by < 1e-4 of its end value)
+        x = np.linspace(-length / 2, length / 2, 2001)
+        rc = np.where(x < 0, CROWN_RADII_ASYM[0], CROWN_RADII_ASYM[1])
+        return lp.TabulatedProfile(x, x ** 2 / (2 * rc), source="asymmetric crown")
     raise ValueError(f"profile {name!r} is not one of {sorted(CODES)}")
 
 
-def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=8, quick=False):
+def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=7, quick=False):
     """The list of cases (picklable dicts with a unique 'key'); every `check_every`-th
     case is also solved on a third grid (4 n_x x 4 n_y) to measure the order."""
     tasks = []
-    combos = [("A", p) for p in PROFILES.values()] + [("B", "iso16281")]
+    combos = ([("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
+              + [("A", p) for p in FREE_TILT])
     loads = LINE_LOADS[1::2] if quick else LINE_LOADS
-    tilts = TILTS[::2] if quick else TILTS
     for roller, prof in combos:
         L = ROLLERS[roller]
+        # the FREE_TILT profiles are free to tilt (tilt None: zero moment)
+        tilts = (None,) if prof in FREE_TILT else (
+            TILTS[::2] if quick else TILTS)
         for q in loads:
             for th in tilts:
+                tag = "free" if th is None else f"{th * 1e3:g}"
                 tasks.append(dict(
-                    key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}-t{th * 1e3:g}",
+                    key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}-t{tag}",
                     roller=roller, profile=prof, radius=DIAMETER / 2, length=L,
                     estar=ESTAR, force=q * L, tilt=th, n_x=n_x, n_y=n_y, tol=tol))
     for i, t in enumerate(tasks):
@@ -127,8 +153,9 @@ def bem_case(task):
         contact_length=f.contact_length, stiffness=f.stiffness,
         tilt_stiffness=f.tilt_stiffness, edge=edge,
         end_gap=task["length"] / 2 - max(abs(f.contact_x[0]), abs(f.contact_x[1])),
-        delta=_largest_approach(f.depth, task["tilt"], prof, task["length"]),
+        delta=_largest_approach(f.depth, f.tilt, prof, task["length"]), tilt=f.tilt,
         change_depth=f.depth - c.depth, change_moment=f.moment - c.moment,
+        change_tilt=f.tilt - c.tilt,
         change_p_max=f.p_max / c.p_max - 1,
         richardson_depth=g["richardson_depth"], richardson_moment=g["richardson_moment"],
         nx=f.grid.nx, ny=f.grid.ny, dx=f.grid.dx, dy=f.grid.dy,
@@ -144,39 +171,50 @@ def _order(a, b, c):
 
 # --- runtime and ISO slicing ---------------------------------------------------------
 
+def _peak(sol):
+    """p_max of a runtime solution; where it is edge loaded the runtime reports None
+    (a singular end peak) and the largest slice pressure stands in (flagged *_edge)."""
+    return float(sol.p_max) if sol.p_max is not None else float(np.max(sol.pressure))
+
+
 def runtime_case(task, n_slices=100):
-    """The runtime coupled-slice model (linecontact.roller) at the case's F and theta:
-    (d, M, p_max, edge loaded, seconds per solve)."""
-    from linecontact.roller import ProfiledRollerModel
+    """The runtime coupled-slice model (linecontact.roller.ProfiledRoller) at the case's
+    F and theta: d, M, p_max, edge loading and the seconds of the solve (the model
+    built once beforehand)."""
+    from linecontact.roller import ProfiledRoller
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
-    model = ProfiledRollerModel(task["radius"], task["length"], task["estar"], profile=prof,
-                                tilt=task["tilt"], n_slices=n_slices)
+    model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
+                           n_slices=n_slices)
     t0 = time.perf_counter()
-    r = model.solve_force(task["force"])
+    r = model.at_force(task["force"], tilt=task["tilt"])
     dt = time.perf_counter() - t0
-    return dict(depth=r.depth, moment=r.moment, p_max=r.p_max, edge=bool(r.edge_loaded),
-                seconds=dt)
+    return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
+                tilt=r.tilt, seconds=dt)
 
 
 def iso_case(task, n_slices=30):
-    """ISO/TS 16281 slicing (linecontact.roller.iso_slicing) at the case's F and theta."""
+    """ISO/TS 16281 slicing (linecontact.roller.iso_slicing, with its misalignment
+    term) at the case's F and theta."""
     from linecontact.roller import iso_slicing
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
-    r = iso_slicing(task["force"], task["radius"], task["length"], task["estar"],
-                    profile=prof, tilt=task["tilt"], n_slices=n_slices)
-    return dict(depth=r.depth, moment=r.moment, p_max=r.p_max, edge=bool(r.edge_loaded))
+    r = iso_slicing(task["radius"], task["length"], task["estar"], prof,
+                    force=task["force"], tilt=task["tilt"], n_slices=n_slices)
+    return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
+                tilt=r.tilt)
 
 
 def errors(ref, got, task):
-    """Deflection, moment and peak-pressure errors of `got` against the BEM `ref` [-]
-    (definitions: module docstring, item 3)."""
+    """Deflection, moment, peak-pressure and tilt errors of `got` against the BEM `ref`
+    [-] (definitions: module docstring, item 3); the tilt error is 0 where the tilt is
+    given."""
     e_d = (got["depth"] - ref["depth"]) / ref["delta"]
-    if task["tilt"] != 0:
+    if task["tilt"]:
         e_m = got["moment"] / ref["moment"] - 1
     else:
         e_m = (got["moment"] - ref["moment"]) / (task["force"] * task["length"] / 2)
     e_p = got["p_max"] / ref["p_max"] - 1
-    return e_d, e_m, e_p
+    e_t = got["tilt"] / ref["tilt"] - 1 if task["tilt"] is None else 0.0
+    return e_d, e_m, e_p, e_t
 
 
 def run_case(task):
@@ -186,11 +224,12 @@ def run_case(task):
     out = {f"bem_{k}": v for k, v in ref.items()}
     for name, fn in (("rt", runtime_case), ("iso", iso_case)):
         got = fn(task)
-        e_d, e_m, e_p = errors(ref, got, task)
+        e_d, e_m, e_p, e_t = errors(ref, got, task)
         out.update({f"{name}_depth": got["depth"], f"{name}_moment": got["moment"],
                     f"{name}_p_max": got["p_max"], f"{name}_edge": got["edge"],
-                    f"{name}_err_depth": e_d, f"{name}_err_moment": e_m,
-                    f"{name}_err_p_max": e_p})
+                    f"{name}_tilt": got["tilt"], f"{name}_err_depth": e_d,
+                    f"{name}_err_moment": e_m, f"{name}_err_p_max": e_p,
+                    f"{name}_err_tilt": e_t})
         if "seconds" in got:
             out[f"{name}_seconds"] = got["seconds"]
     return out
@@ -207,9 +246,9 @@ def add_arguments(parser):
     parser.add_argument("--tol", type=float, default=1e-7,
                         help="contact-solver tolerance: gap error / largest "
                              "interference (default 1e-7)")
-    parser.add_argument("--check-every", type=int, default=8,
+    parser.add_argument("--check-every", type=int, default=7,
                         help="every k-th case also on a third grid (4x) to measure the "
-                             "convergence order (default 8; 0: never)")
+                             "convergence order (default 7, so that all tilts are sampled; 0: never)")
     parser.add_argument("--quick", action="store_true",
                         help="a quarter of the cases (two loads, two tilts): a smoke run")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
@@ -217,32 +256,22 @@ def add_arguments(parser):
     parser.add_argument("--figure", type=Path,
                         default=REPO / "docs" / "figures" / "roller_accuracy.png",
                         help="where to write the figure ('' for none)")
-    try:
-        from .runner import add_runner_arguments
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        parser.add_argument("--no-progress", action="store_true")
-    else:
-        add_runner_arguments(parser)
-
-
-def _run_tasks(tasks, args):
-    try:
-        from .runner import run_study_from_args
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        return [run_case(t) for t in tasks]
-    return run_study_from_args(run_case, tasks, args, desc="roller study")
+    add_runner_arguments(parser)
 
 
 COLUMNS_UNITS = {
     "roller_length": "m", "profile": "-", "force": "N", "line_load": "N/m", "tilt": "rad",
+    "free_tilt": "-",
     "bem_depth": "m", "bem_delta": "m", "bem_moment": "N m", "bem_p_max": "Pa",
     "bem_x_at_p_max": "m", "bem_contact_length": "m", "bem_end_gap": "m", "bem_edge": "-",
     "bem_stiffness": "N/m", "bem_tilt_stiffness": "N m/rad", "bem_change_depth": "-",
-    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_nx": "-", "bem_ny": "-",
+    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_change_tilt": "-", "bem_nx": "-", "bem_ny": "-",
     "rt_depth": "m", "rt_moment": "N m", "rt_p_max": "Pa", "rt_edge": "-",
-    "rt_err_depth": "-", "rt_err_moment": "-", "rt_err_p_max": "-", "rt_seconds": "s",
+    "rt_err_depth": "-", "rt_err_moment": "-", "rt_err_p_max": "-", "rt_tilt": "rad",
+    "rt_err_tilt": "-", "rt_seconds": "s",
     "iso_depth": "m", "iso_moment": "N m", "iso_p_max": "Pa", "iso_edge": "-",
-    "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-",
+    "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-", "iso_tilt": "rad",
+    "iso_err_tilt": "-",
     "bem_seconds": "s",
 }
 
@@ -251,10 +280,11 @@ def tabulate(tasks, results):
     """Table columns (dict of arrays) from the tasks and their results."""
     rows = []
     for t, r in zip(tasks, results):
-        scale_m = abs(r["bem_moment"]) if t["tilt"] != 0 else t["force"] * t["length"] / 2
+        scale_m = abs(r["bem_moment"]) if t["tilt"] else t["force"] * t["length"] / 2
         rows.append({
             "roller_length": t["length"], "profile": CODES[t["profile"]],
-            "force": t["force"], "line_load": t["force"] / t["length"], "tilt": t["tilt"],
+            "force": t["force"], "line_load": t["force"] / t["length"],
+            "tilt": r["bem_tilt"], "free_tilt": float(t["tilt"] is None),
             **{k: float(r[k]) for k in ("bem_depth", "bem_delta", "bem_moment", "bem_p_max",
                                         "bem_x_at_p_max", "bem_contact_length",
                                         "bem_end_gap", "bem_stiffness",
@@ -263,9 +293,11 @@ def tabulate(tasks, results):
             "bem_change_depth": r["bem_change_depth"] / r["bem_delta"],
             "bem_change_moment": r["bem_change_moment"] / scale_m,
             "bem_change_p_max": r["bem_change_p_max"],
+            "bem_change_tilt": r["bem_change_tilt"] / r["bem_tilt"] if t["tilt"] is None
+            else 0.0,
             **{f"{m}_{k}": float(r[f"{m}_{k}"]) for m in ("rt", "iso")
                for k in ("depth", "moment", "p_max", "edge", "err_depth", "err_moment",
-                         "err_p_max")},
+                         "err_p_max", "tilt", "err_tilt")},
             "rt_seconds": r["rt_seconds"], "bem_seconds": r["bem_seconds"],
         })
     return {k: np.array([row[k] for row in rows], dtype=float) for k in COLUMNS_UNITS}
@@ -274,7 +306,8 @@ def tabulate(tasks, results):
 def summarise(col, tasks, results):
     """The accuracy statements of the header (largest errors by class)."""
     edge = col["bem_edge"] > 0
-    tilted = col["tilt"] != 0
+    free = col["free_tilt"] > 0
+    tilted = (col["tilt"] != 0) & ~free
     s = {}
 
     def mx(a, mask):
@@ -287,6 +320,8 @@ def summarise(col, tasks, results):
         s[f"{m}_off_p"] = mx(col[f"{m}_err_p_max"], ~edge)
         s[f"{m}_edge_d"] = mx(col[f"{m}_err_depth"], edge)
         s[f"{m}_edge_m"] = mx(col[f"{m}_err_moment"], edge & tilted)
+        s[f"{m}_off_t"] = mx(col[f"{m}_err_tilt"], ~edge & free)
+        s[f"{m}_edge_t"] = mx(col[f"{m}_err_tilt"], edge & free)
     s["bem_off_d"] = mx(col["bem_change_depth"], ~edge)
     s["bem_off_m"] = mx(col["bem_change_moment"], ~edge)
     s["bem_off_p"] = mx(col["bem_change_p_max"], ~edge)
@@ -296,7 +331,7 @@ def summarise(col, tasks, results):
     om = np.array([r["bem_order_moment"] for r in results], dtype=float)
     edge_t = np.array([bool(r["bem_edge"]) for r in results])
     s["orders"] = "; ".join(
-        f"{label}: d {_span(od[mask])}, M {_span(om[mask & (col['tilt'] != 0)])}"
+        f"{label}: d {_span(od[mask])}, M {_span(om[mask & tilted])}"
         for label, mask in (("off the ends", ~edge_t), ("edge loaded", edge_t)))
     s["n_off"], s["n_edge"] = int((~edge).sum()), int(edge.sum())
     q = col["line_load"][~edge]
@@ -315,50 +350,67 @@ def _span(a):
 
 def figure(col, path):
     """docs/figures/roller_accuracy.png: |error| of the runtime and of ISO slicing
-    against the BEM, per quantity, over the line load; hollow markers: edge loaded."""
+    against the BEM, per quantity, over the line load; hollow markers: edge loaded;
+    grey crosses: the BEM's own grid change (its resolution)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
 
     edge = col["bem_edge"] > 0
-    tilted = col["tilt"] != 0
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2), sharex=True)
-    panels = [("err_depth", np.ones_like(edge), "deflection", 1.0),
-              ("err_moment", tilted, "moment (tilted cases)", 1.0),
-              ("err_p_max", ~edge, "peak pressure (off the ends)", 5.0)]
-    markers = {1: "o", 2: "s", 3: "^", 4: "D", 5: "v"}
-    rng = np.random.default_rng(0)
-    jitter = np.exp(rng.uniform(-0.08, 0.08, col["force"].size))
-    for ax, (key, mask, title, target) in zip(axes, panels):
-        for m, colour, label in (("rt", "C0", "runtime (coupled slices)"),
-                                 ("iso", "C1", "ISO/TS 16281 slicing")):
-            err = 100 * np.abs(col[f"{m}_{key}"])
-            err = np.maximum(err, 1e-3)
+    free = col["free_tilt"] > 0
+    tilted = (col["tilt"] != 0) & ~free
+    # the middle panel: the moment at a given tilt, the tilt itself where it is free
+    col = dict(col)
+    for m in ("rt", "iso"):
+        col[f"{m}_err_mt"] = np.where(free, col[f"{m}_err_tilt"], col[f"{m}_err_moment"])
+    col["bem_change_mt"] = np.where(free, col["bem_change_tilt"], col["bem_change_moment"])
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.8), sharex=True)
+    panels = [("err_depth", "change_depth", np.ones_like(edge), "deflection", 1.0),
+              ("err_mt", "change_mt", tilted | free,
+               "moment (given tilt) or tilt (zero moment)", 1.0),
+              ("err_p_max", "change_p_max", ~edge, "peak pressure (off the ends)", 5.0)]
+    markers = {1: "o", 2: "s", 3: "^", 4: "D", 5: "v", 6: "P"}
+    models = (("rt", "C0", "runtime (coupled slices)"),
+              ("iso", "C1", "ISO/TS 16281 slicing"))
+    # spread the cases of one load sideways: profile and tilt
+    shift = np.exp(0.04 * (col["profile"] - 3.5) + 20 * np.abs(col["tilt"]) * ~free)
+    x = col["line_load"] / 1e3 * shift
+    floor = 1e-4
+    for ax, (key, chg, mask, title, target) in zip(axes, panels):
+        for m, colour, _ in models:
+            err = np.maximum(100 * np.abs(col[f"{m}_{key}"]), floor)
             for code, mk in markers.items():
-                sel = mask & (col["profile"] == code)
                 for hollow in (False, True):
-                    s2 = sel & (edge == hollow)
-                    if s2.any():
-                        ax.scatter(col["line_load"][s2] / 1e3 * jitter[s2], err[s2],
-                                   marker=mk, s=22, edgecolors=colour,
-                                   facecolors="none" if hollow else colour, linewidths=0.8)
-            ax.scatter([], [], color=colour, label=label)
+                    sel = mask & (col["profile"] == code) & (edge == hollow)
+                    if sel.any():
+                        ax.scatter(x[sel], err[sel], marker=mk, s=24, edgecolors=colour,
+                                   facecolors="none" if hollow else colour,
+                                   linewidths=0.9)
+        ax.scatter(x[mask], np.maximum(100 * np.abs(col[f"bem_{chg}"][mask]), floor),
+                   marker="x", s=12, color="0.55", linewidths=0.7)
         ax.axhline(target, color="k", lw=0.8, ls="--")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_title(title)
+        ax.set_xticks([q / 1e3 for q in LINE_LOADS])
+        ax.set_xticklabels([f"{q / 1e3:g}" for q in LINE_LOADS])
+        ax.minorticks_off()
+        ax.set_title(title, fontsize=10)
         ax.set_xlabel("mean line load F/L [N/mm]")
-        ax.grid(True, which="both", lw=0.3, alpha=0.5)
+        ax.grid(True, which="major", lw=0.3, alpha=0.6)
     axes[0].set_ylabel("|error| against the 3D BEM [%]")
-    for code, mk in markers.items():
-        axes[2].scatter([], [], marker=mk, color="0.4", label=PROFILES[code])
-    axes[2].scatter([], [], marker="o", facecolors="none", edgecolors="0.4",
-                    label="edge loaded (hollow)")
-    axes[0].legend(fontsize=7, loc="lower right")
-    axes[2].legend(fontsize=7, loc="upper left")
-    fig.suptitle("Profiled and tilted rollers: runtime model and ISO slicing against the "
-                 "3D BEM (dashed: targets 1 %, 1 %, 5 %)", fontsize=10)
-    fig.tight_layout()
+    handles = [Line2D([], [], ls="", marker="o", color=c, label=lab) for _, c, lab in models]
+    handles.append(Line2D([], [], ls="", marker="x", color="0.55",
+                          label="BEM grid change (N to 2N)"))
+    handles += [Line2D([], [], ls="", marker=mk, color="0.3", label=PROFILES[code])
+                for code, mk in markers.items()]
+    handles.append(Line2D([], [], ls="", marker="o", markerfacecolor="none",
+                          markeredgecolor="0.3", label="edge loaded (hollow)"))
+    fig.legend(handles=handles, loc="lower center", ncol=6, fontsize=8, frameon=False)
+    fig.suptitle("Profiled and tilted rollers (D = 10 mm, L = 14 and 30 mm, tilt 0-2 mrad): "
+                 "runtime model and ISO slicing against the 3D BEM; dashed: targets "
+                 "1 %, 1 %, 5 %", fontsize=10)
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=130)
@@ -368,19 +420,10 @@ def figure(col, path):
 
 def run(args):
     from linecontact.tables import write_table
-    try:
-        from .runner import table_meta
-    except ImportError:  # pragma: no cover - before tools.runner exists
-        from .build_tables import code_version
-
-        def table_meta(command_line, **fields):
-            import datetime
-            return {**fields, "generated_by": command_line,
-                    "date": datetime.date.today().isoformat(), "version": code_version()}
 
     tasks = study_tasks(args.n_x, args.n_y, args.tol, args.check_every, args.quick)
     t0 = time.perf_counter()
-    results = _run_tasks(tasks, args)
+    results = run_study_from_args(run_case, tasks, args, desc="roller study")
     wall = time.perf_counter() - t0
     col = tabulate(tasks, results)
     s = summarise(col, tasks, results)
@@ -396,16 +439,21 @@ def run(args):
         columns="profile codes: " + ", ".join(f"{k} = {v}" for k, v in PROFILES.items())
                 + "; *_edge = 1 where the contact reaches a roller end (BEM: an end cell "
                   "on either grid); err_depth = (d - d_bem)/delta_bem with delta_bem = "
-                  "max_x (d + theta x - P(x)); err_moment = M/M_bem - 1 (tilt != 0), "
-                  "(M - M_bem)/(F L/2) (tilt = 0); err_p_max = p/p_bem - 1 (a grid-"
+                  "max_x (d + theta x - P(x)); err_moment = M/M_bem - 1 (given tilt "
+                  "!= 0), (M - M_bem)/(F L/2) (tilt 0 or free); free_tilt = 1: the tilt is "
+                  "solved for zero moment (tilt column: the BEM's), err_tilt = "
+                  "theta/theta_bem - 1 there (0 elsewhere); err_p_max = p/p_bem - 1 (a grid-"
                   "dependent singular end peak on edge-loaded rows: not a physical "
                   "number); bem_change_* = BEM change from the coarser to the finer grid "
-                  "(depth over delta, moment over |M| or F L/2)",
-        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: all five "
-              f"profiles, L = 30 mm: iso16281; crown radius {CROWN_RADIUS * 1e3:g} mm; "
+                  "(depth over delta, moment over |M| or F L/2, tilt over the tilt)",
+        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: profiles "
+              f"1-5 at the tilts below and the offset crown (x0 = {CROWN_OFFSET * 1e3:g} "
+              f"mm, zero moment: theta = -x0/Rc) and an asymmetric crown (Rc = "
+              f"{CROWN_RADII_ASYM[0] * 1e3:g} mm for x < 0, {CROWN_RADII_ASYM[1] * 1e3:g} mm "
+              f"for x > 0, a 2001-point user table; zero moment), L = 30 mm: iso16281; crown radius {CROWN_RADIUS * 1e3:g} mm; "
               f"Lundberg and Johns-Gohar designed for F0/L = {DESIGN_LINE_LOAD / 1e3:g} "
-              f"N/mm; end relief: flat {RELIEF['flat_fraction']:g} L, tangent corner "
-              f"radius {RELIEF['corner_radius'] * 1e3:g} mm; line loads "
+              f"N/mm; end relief: {RELIEF['relief_fraction']:g} L at each end, tangent "
+              f"corner radius {RELIEF['corner_radius'] * 1e3:g} mm; line loads "
               f"{', '.join(f'{q / 1e3:g}' for q in LINE_LOADS)} N/mm; tilts "
               f"{', '.join(f'{t * 1e3:g}' for t in TILTS)} mrad",
         grid=f"per case an adapted window (contact box x 1.25, |y| <= 1.25 b) with "
@@ -421,11 +469,14 @@ def run(args):
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "
-                      f"{s['rt_off_p']:.2%}; edge loaded ({s['n_edge']} cases): deflection "
-                      f"{s['rt_edge_d']:.2%}, moment {s['rt_edge_m']:.2%}",
+                      f"{s['rt_off_p']:.2%}, zero-moment tilt {s['rt_off_t']:.2%}; edge "
+                      f"loaded ({s['n_edge']} cases): deflection {s['rt_edge_d']:.2%}, "
+                      f"moment {s['rt_edge_m']:.2%}, tilt {s['rt_edge_t']:.2%}",
         iso_error=f"largest |error| off the ends: deflection {s['iso_off_d']:.2%}, moment "
-                  f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}; edge "
-                  f"loaded: deflection {s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}",
+                  f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}, zero-moment "
+                  f"tilt {s['iso_off_t']:.2%}; edge loaded: deflection "
+                  f"{s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}, tilt "
+                  f"{s['iso_edge_t']:.2%}",
         wall_time=f"{wall:.0f} s for {len(tasks)} cases; median per case: BEM "
                   f"{s['bem_seconds']:.2f} s (both grids), runtime solve "
                   f"{s['rt_seconds'] * 1e3:.2f} ms",

@@ -80,8 +80,9 @@ def read_table(path):
         raise BatchError(f"{str(path)!r}: cannot read ({exc.strerror or exc})") from None
     lines = None
     if '"' not in text:  # no quoting: one line per row, cells split at commas
-        lines = [ln for ln in text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
-                 if ln]
+        if "\r" in text:
+            text = text.replace("\r\n", "\n").replace("\r", "\n")
+        lines = [ln for ln in text.split("\n") if ln]
         rows = [ln.split(",") for ln in lines]
     else:
         try:
@@ -168,6 +169,7 @@ def run_batch(args, argv, specs, options):
     width = max(len(header), max(map(len, body)))
     header = list(header) + [""] * (width - len(header))
     full = min(map(len, body)) >= width  # no short row (the usual case)
+    transposed = None
     cells = {}
     for p in PARAMETERS:
         j = known.get(p.name)
@@ -177,7 +179,9 @@ def run_batch(args, argv, specs, options):
         if j is None:
             col = [""] * n
         elif full:
-            col = [r[j] for r in body]
+            if transposed is None:
+                transposed = list(zip(*body))  # all columns at once (C loop)
+            col = list(transposed[j])
         else:
             col = [r[j] if j < len(r) else "" for r in body]
         if opt is not None:
@@ -259,29 +263,46 @@ def _result_layout(results, cases, si, multi):
 
 def _result_cells(getters):
     """The result part of every output line: numbers as '%.6g' ('' for none), text
-    minimally quoted; one C-level format per row where all numbers are finite."""
-    cols, finite = [], None
+    minimally quoted; one C-level format per row where all numbers are finite, with
+    the columns that hold one value for all rows written into the format once."""
+    n = len(getters[0][1]) if getters else 0
+    parts, cols, kinds, finite = [], [], [], np.ones(n, bool)
     for kind, data in getters:
         if kind == "num":
             v = np.asarray(data, dtype=float)
-            ok = np.isfinite(v)
-            finite = ok if finite is None else finite & ok
+            finite &= np.isfinite(v)
+            if n and np.all(v == v[0]):  # constant and finite (NaN != NaN)
+                parts.append(format(float(v[0]), ".6g").replace("%", "%%"))
+                continue
+            parts.append("%.6g")
             cols.append(v.tolist())
+            kinds.append(kind)
         else:
+            first = data[0] if n else ""
+            if n and all(t == first for t in data):
+                parts.append(_quote(str(first)).replace("%", "%%"))
+                continue
             cache = {}
+            parts.append("%s")
             cols.append([cache[t] if t in cache else cache.setdefault(t, _quote(str(t)))
                          for t in data])
-    template = ",".join("%.6g" if kind == "num" else "%s" for kind, _ in getters)
-    kinds = [kind for kind, _ in getters]
+            kinds.append(kind)
+    template = ",".join(parts)
+    if not cols:
+        return [template.replace("%%", "%")] * n
+    slow_kinds = [kind for kind, _ in getters]
+    slow_cols = None
 
-    def slow(row):
-        return ",".join((format(x, ".6g") if x - x == 0 else "") if k == "num" else x
-                        for k, x in zip(kinds, row))
+    def slow(i):
+        nonlocal slow_cols
+        if slow_cols is None:  # every column, for the rows with a missing number
+            slow_cols = [np.asarray(d, dtype=float).tolist() if k == "num" else d
+                         for k, d in getters]
+        return ",".join((format(c[i], ".6g") if c[i] - c[i] == 0 else "") if k == "num"
+                        else _quote(str(c[i])) for k, c in zip(slow_kinds, slow_cols))
 
-    n = len(cols[0]) if cols else 0
-    finite = np.ones(n, bool) if finite is None else finite
-    return [template % row if ok else slow(row)
-            for row, ok in zip(zip(*cols), finite.tolist())]
+    return [template % row if ok else slow(i)
+            for i, (row, ok) in enumerate(zip(zip(*cols), finite.tolist()))]
 
 
 def _quote(text):

@@ -83,7 +83,7 @@ def read_table(path):
         if "\r" in text:
             text = text.replace("\r\n", "\n").replace("\r", "\n")
         lines = [ln for ln in text.split("\n") if ln]
-        rows = [ln.split(",") for ln in lines]
+        rows = _FlatRows.of(lines) or [ln.split(",") for ln in lines]
     else:
         try:
             rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
@@ -93,11 +93,56 @@ def read_table(path):
     if not rows:
         raise BatchError(f"{str(path)!r}: the file is empty; expected a header row and "
                          "one case per row")
-    header, body = rows[0], rows[1:]
+    if isinstance(rows, _FlatRows):
+        header, body = rows.header(), rows.body()
+    else:
+        header, body = rows[0], rows[1:]
     if not body:
         raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
                          "per row under the header")
     return header, body, (lines[1:] if lines is not None else None)
+
+
+class _FlatRows:
+    """The cells of a rectangular, unquoted CSV as one flat list (one split of the
+    text instead of a list per row); rows and columns are slices of it."""
+
+    def __init__(self, flat, width, start=0):
+        self.flat, self.width, self.start = flat, width, start
+
+    @classmethod
+    def of(cls, lines):
+        """A _FlatRows of these lines, or None if they do not all have as many cells
+        as the first."""
+        if not lines:
+            return None
+        commas = lines[0].count(",")
+        if not all(ln.count(",") == commas for ln in lines):
+            return None
+        return cls(",".join(lines).split(","), commas + 1)
+
+    def header(self):
+        return self.flat[: self.width]
+
+    def body(self):
+        return _FlatRows(self.flat, self.width, self.start + 1)
+
+    def __len__(self):
+        return len(self.flat) // self.width - self.start
+
+    def __bool__(self):
+        return len(self) > 0
+
+    def __getitem__(self, i):
+        a = (self.start + i) * self.width
+        return self.flat[a: a + self.width]
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+    def column(self, j):
+        """Cell j of every row (a C-level slice)."""
+        return self.flat[self.start * self.width + j:: self.width]
 
 
 def result_columns(names, taken):
@@ -166,9 +211,10 @@ def run_batch(args, argv, specs, options):
                          + ", ".join(p.name for p in PARAMETERS))
     # a row longer than the header keeps its extra cells under unnamed columns, so the
     # result columns stay aligned; a shorter row is padded with empty cells
-    width = max(len(header), max(map(len, body)))
+    flat = isinstance(body, _FlatRows)  # rectangular: every row as wide as the header
+    width = len(header) if flat else max(len(header), max(map(len, body)))
     header = list(header) + [""] * (width - len(header))
-    full = min(map(len, body)) >= width  # no short row (the usual case)
+    full = flat or min(map(len, body)) >= width  # no short row (the usual case)
     transposed = None
     cells = {}
     for p in PARAMETERS:
@@ -178,6 +224,8 @@ def run_batch(args, argv, specs, options):
             continue
         if j is None:
             col = [""] * n
+        elif flat:
+            col = body.column(j)
         elif full:
             if transposed is None:
                 transposed = list(zip(*body))  # all columns at once (C loop)
@@ -319,6 +367,10 @@ def _csv(header, body, lines, out_names, getters, width):
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)
+    if lines is not None and isinstance(body, _FlatRows):  # no row to pad
+        out = [ln + "," + res for ln, res in zip(lines, results)]
+        buf.write("\n".join(out) + "\n")
+        return buf.getvalue()
     if lines is not None:
         out = [ln + "," * (width - len(r)) + "," + res if len(r) < width
                else ln + "," + res for ln, r, res in zip(lines, body, results)]

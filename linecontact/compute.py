@@ -153,7 +153,12 @@ def hertz_peak_pressure(force, radius, length, estar):
     R = check_positive("radius", radius, "m")
     L = check_positive("length", length, "m")
     E = check_positive("estar", estar, "Pa")
-    return out(np.sqrt(F * E / (math.pi * R * L)))
+    return out(_peak_pressure(F, R, L, E))
+
+
+def _peak_pressure(F, R, L, E):
+    """p0 of :func:`hertz_peak_pressure` for inputs already checked."""
+    return np.sqrt(F * E / (math.pi * R * L))
 
 
 # ---------------------------------------------------------------------------------------
@@ -339,7 +344,7 @@ def _contact_fields(r, R, L, E):
     p0 = np.full(F.shape, np.nan)
     if ok.any():
         b[ok] = hertz_half_width(F[ok], R, L, E)
-        p0[ok] = hertz_peak_pressure(F[ok], R, L, E)
+        p0[ok] = _peak_pressure(F[ok], R, L, E)  # F, R, L, E* checked above
     r["half_width"] = b
     r["peak_pressure"] = p0
     with np.errstate(invalid="ignore"):

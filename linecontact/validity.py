@@ -278,12 +278,19 @@ _TINY = float(np.finfo(float).tiny)
 
 def _refuse_subnormal(name, v, unit):
     """`v`, or OutOfRangeError for its first subnormal element (precision lost)."""
-    with np.errstate(invalid="ignore"):
-        sub = (v != 0) & (np.abs(v) < _TINY)
-    if sub.any():
-        bad = float(v[sub].ravel()[0]) if v.ndim else float(v)
-        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {_TINY:.6g}",
-                              unit=unit, hint="a subnormal number has lost precision")
+    if v.ndim == 0:
+        x = float(v)
+        if x != 0.0 and -_TINY < x < _TINY:
+            raise OutOfRangeError(name, x, f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
+                                  hint="a subnormal number has lost precision")
+        return v
+    small = np.abs(v) < _TINY  # NaN compares False
+    if small.any():
+        sub = small & (v != 0)
+        if sub.any():
+            raise OutOfRangeError(name, float(v[sub].ravel()[0]),
+                                  f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
+                                  hint="a subnormal number has lost precision")
     return v
 
 

@@ -23,6 +23,7 @@ __all__ = [
     "Interval",
     "check_positive",
     "check_interval",
+    "check_flag",
     "document",
     "POSITIVE_LENGTH",
     "POSITIVE_FORCE",
@@ -422,3 +423,50 @@ POSITIVE_MODULUS = Interval("modulus", 0.0, np.inf, True, True, "Pa")
 #: Poisson's ratio: 0.5 (incompressible: rubber, elastomer coatings) is included; E* of
 #: Eq. 3 stays finite there, 1 - nu^2 = 0.75 (Li & Popov (2017), Eq. 3).
 POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, False, "")
+
+
+def check_flag(name, value):
+    """Check that a yes/no option is a real boolean; return it as a Python bool.
+
+    A string such as ``"no"`` is truthy in Python, so ``bool("no")`` would silently
+    turn the option on: only ``True``/``False`` (or numpy booleans) are accepted. The
+    command line parses its words (true/false, yes/no, 1/0) before calling the library.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message [-].
+    value : bool
+        The option's value [-].
+
+    Returns
+    -------
+    bool
+        `value` [-].
+
+    Raises
+    ------
+    OutOfRangeError
+        Anything that is not a boolean (the message names the parameter and value).
+
+    Notes
+    -----
+    Valid values: ``True``, ``False``, ``numpy.True_``, ``numpy.False_``.
+
+    Examples
+    --------
+    >>> check_flag("extrapolate", False)
+    False
+    >>> check_flag("extrapolate", "no")
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False...
+
+    References
+    ----------
+    Python Language Reference, section 'Truth Value Testing' (why bool('no') is True).
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise OutOfRangeError(name, repr(value), "True or False",
+                          hint="a yes/no option takes a boolean, not a word or number")

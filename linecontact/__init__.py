@@ -3,14 +3,16 @@
 A rigid cylinder (radius R, length L) lies on its side on an elastic half-space of
 effective modulus E* and is pressed in by a depth d. This package gives F(d), d(F) and
 the contact stiffness k = dF/dd from the Li & Popov (2017) MDR model, the classical
-closed forms it is compared with, and (from :mod:`linecontact.universal`) a BEM-tabulated
-universal curve. SI units in and out (m, N, Pa); everything is vectorised over numpy
-arrays.
+closed forms it is compared with, and the BEM-tabulated universal curve (the default
+model; docs/theory.md, section 'Self-similarity'). SI units in and out (m, N, Pa);
+everything is vectorised over numpy arrays. Each model states its error against the BEM
+(``model.measured_error``, from tables/model_accuracy.csv).
 
 Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO/TS 16281),
-:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.mdr` (general MDR transforms),
-:mod:`~linecontact.models` (one interface for all models), :mod:`~linecontact.tables`
-(shipped data), :mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
+:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.universal` (the universal
+curve), :mod:`~linecontact.mdr` (general MDR transforms), :mod:`~linecontact.models` (one
+interface for all models), :mod:`~linecontact.tables` (shipped data),
+:mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
 
 Examples
 --------
@@ -112,40 +114,67 @@ __all__ = [
 
 
 def force(depth, radius, length, estar, model=None, **options):
-    """Normal force F [N] of a cylinder (R [m], L [m]) at depth d [m] on E* [Pa].
-
-    `model` is a key of :data:`MODELS` (None: :data:`DEFAULT_MODEL`, the universal
-    curve); `options` go to the model (e.g. ``coefficients="eq11"``). Vectorised over
-    `depth`.
-
-    Examples
-    --------
-    >>> round(force(3.0548e-6, 5e-3, 10e-3, 115.38e9, model="li-popov"))
-    1000
-    """
     return _model(model, radius, length, estar, options).force(depth)
 
 
 def depth(force, radius, length, estar, model=None, **options):
-    """Depth d [m] of a cylinder (R [m], L [m]) under force F [N] on E* [Pa].
-
-    Examples
-    --------
-    >>> f"{depth(1e3, 5e-3, 10e-3, 115.38e9, model='palmgren') * 1e6:.2f} um"
-    '3.05 um'
-    """
     return _model(model, radius, length, estar, options).depth(force)
 
 
 def stiffness(depth, radius, length, estar, model=None, **options):
-    """Contact stiffness k = dF/dd [N/m] at depth d [m] (R [m], L [m], E* [Pa]).
+    return _model(model, radius, length, estar, options).stiffness(depth)
+
+
+# The three one-liners share their parameters; one template documents them.
+_ONE_LINER_DOC = """{summary}
+
+    The model's own law (:class:`~linecontact.models.ContactModel`), vectorised over
+    `{given}`.
+
+    Parameters
+    ----------
+    {given} : float or array_like
+        {given_text}
+    radius : float
+        Cylinder radius R, 0 < R < inf [m].
+    length : float
+        Cylinder length L, 0 < L < inf [m].
+    estar : float
+        Effective modulus E* (Li & Popov 2017, Eq. 3), 0 < E* < inf [Pa].
+    model : str, optional
+        A key of :data:`MODELS`; None (default): :data:`DEFAULT_MODEL`, the universal
+        curve.
+    **options
+        Passed to the model, e.g. ``coefficients="eq11"`` or ``c=0.72``.
+
+    Returns
+    -------
+    float or ndarray
+        {returns}
+
+    Notes
+    -----
+    Valid where the chosen model is: each model states its range of L/R, E* and
+    depth, and raises :class:`~linecontact.validity.OutOfRangeError` outside it.
 
     Examples
     --------
-    >>> f"{stiffness(3.0548e-6, 5e-3, 10e-3, 115.38e9, model='li-popov'):.3e} N/m"
-    '3.570e+08 N/m'
+    {example}
     """
-    return _model(model, radius, length, estar, options).stiffness(depth)
+force.__doc__ = _ONE_LINER_DOC.format(
+    summary="Normal force F [N] of a cylinder at depth d on an elastic half-space.",
+    given="depth", given_text="Indentation depth d, 0 < d < inf [m].", returns="F [N].",
+    example='>>> round(force(3.0548e-6, 5e-3, 10e-3, 115.38e9, model="li-popov"))\n    1000')
+depth.__doc__ = _ONE_LINER_DOC.format(
+    summary="Depth d [m] of a cylinder under a normal force F on an elastic half-space.",
+    given="force", given_text="Normal force F, 0 < F < inf [N].", returns="d [m].",
+    example=">>> f\"{depth(1e3, 5e-3, 10e-3, 115.38e9, model='palmgren') * 1e6:.2f} um\"\n"
+            "    '3.05 um'")
+stiffness.__doc__ = _ONE_LINER_DOC.format(
+    summary="Contact stiffness k = dF/dd [N/m] of a cylinder at depth d.",
+    given="depth", given_text="Indentation depth d, 0 < d < inf [m].", returns="k [N/m].",
+    example=">>> f\"{stiffness(3.0548e-6, 5e-3, 10e-3, 115.38e9, model='li-popov'):.3e}\"\n"
+            "    '3.570e+08'")
 
 
 def _model(key, radius, length, estar, options):

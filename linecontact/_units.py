@@ -10,10 +10,12 @@ a unit, and nothing more*:
   separators, ``inf``, ``nan``, hexadecimal and non-ASCII digits are refused;
 - the unit is ONE unit name, letters only, with or without a space before it (``mm``,
   ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``); products, quotients,
-  powers, sums and any other expression are refused, never evaluated. pint
-  (https://pint.readthedocs.io) is asked only for the size of that one unit in SI, and
-  only once per distinct unit;
-- a bare number is SI (m, N, Pa) and does not import pint;
+  powers, sums and any other expression are refused, never evaluated. The common
+  names (:data:`BUILTIN_UNITS`: SI prefixes of m, N, Pa, and inch-pound units) have
+  their exact factors here; for any other name pint (https://pint.readthedocs.io) is
+  asked only for the size of that one unit in SI, once per distinct unit, so a wrong
+  dimension or an unknown name is still refused by name;
+- a bare number is SI (m, N, Pa); neither it nor a built-in unit imports pint;
 - the value must be a normal, finite float before and after the conversion: a number
   that overflows to inf, or underflows to zero or a subnormal (below 2.2e-308), is
   refused, never clamped.
@@ -37,6 +39,7 @@ import sys
 __all__ = [
     "InputError",
     "DIMENSIONS",
+    "BUILTIN_UNITS",
     "parse_quantity",
     "parse_column",
     "parse_sweep",
@@ -49,6 +52,7 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
+    "time": ("[time]", "s", "10s, 5min, 2h, 100"),
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
@@ -116,10 +120,30 @@ def _valid_text(kind, positive, bounds):
     return f"{what} (e.g. {examples})"
 
 
+_PREFIXES = {"p": 1e-12, "n": 1e-9, "u": 1e-6, "\u00b5": 1e-6, "\u03bc": 1e-6, "m": 1e-3,
+             "c": 1e-2, "d": 1e-1, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12}
+_INCH = 0.0254  # m, exact by definition (1959)
+_LBF = 4.4482216152605  # N, exact: 0.45359237 kg x 9.80665 m/s^2
+
+#: Unit names converted without pint: the SI prefixes of m, N and Pa, and the inch-pound
+#: units of engineering drawings, with their exact definitions. Each factor equals
+#: pint's to rounding (a test holds it); any other unit name is asked of pint.
+BUILTIN_UNITS = {
+    "length": {**{p + "m": f for p, f in _PREFIXES.items()},
+               "in": _INCH, "inch": _INCH, "ft": 12 * _INCH, "foot": 12 * _INCH,
+               "thou": _INCH / 1000},
+    "force": {**{p + "N": f for p, f in _PREFIXES.items()},
+              "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
+    "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
+                 "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
+}
+
+
 def _unit_factor(unit, kind):
     """SI factor of ONE unit name for a quantity of `kind`, or a reason string.
 
-    Asks pint for the unit alone (never for an expression), once per (unit, kind).
+    From :data:`BUILTIN_UNITS`, else asks pint for the unit alone (never for an
+    expression), once per (unit, kind).
     """
     key = (unit, kind)
     if key in _FACTORS:
@@ -127,6 +151,8 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
+    elif unit in BUILTIN_UNITS[kind]:
+        result = BUILTIN_UNITS[kind][unit]
     else:
         ureg = _registry()
         try:
@@ -371,12 +397,13 @@ def parse_bool(parameter, text):
     raise InputError(parameter, text, "true/false, yes/no or 1/0", "not a yes/no value")
 
 
-def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000):
+def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, positive=True):
     """Parse a value or a range ``START:STOP:N`` into a list of SI floats.
 
     ``N`` values from ``START`` to ``STOP``, both included, spaced geometrically
     (equal ratios, as one wants for loads spanning decades) unless ``linear`` is true.
-    Without a colon the result is a one-element list.
+    Without a colon the result is a one-element list. ``positive=False`` accepts
+    START or STOP <= 0 (a time sweep from 0) in a linear sweep only.
 
     Examples
     --------
@@ -387,13 +414,16 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000):
     """
     text = str(text)
     if ":" not in text:
-        return [parse_quantity(parameter, text, kind)]
+        return [parse_quantity(parameter, text, kind, positive=positive)]
     parts = text.split(":")
     fmt = f"START:STOP:N with START, STOP > 0 and 2 <= N <= {max_points}, e.g. 0.1kN:10kN:20"
     if len(parts) != 3:
         raise InputError(parameter, text, fmt, "a range needs exactly three fields")
-    start = parse_quantity(f"{parameter} (START)", parts[0], kind)
-    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind)
+    start = parse_quantity(f"{parameter} (START)", parts[0], kind, positive=positive)
+    stop = parse_quantity(f"{parameter} (STOP)", parts[1], kind, positive=positive)
+    if not linear and not (start > 0 and stop > 0):
+        raise InputError(parameter, text, fmt + " (or --linear for a range through 0)",
+                         "a geometric sweep needs START, STOP > 0")
     if not re.fullmatch(r"\s*[0-9]+\s*", parts[2], re.ASCII):
         raise InputError(parameter, text, fmt, f"N = {parts[2]!r} is not an integer")
     n = int(parts[2])

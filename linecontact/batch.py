@@ -44,8 +44,8 @@ import sys
 import numpy as np
 
 from . import render
-from ._units import InputError
-from .cases import BY_NAME, PARAMETERS, parse_cases
+from ._units import InputError, parse_quantity
+from .cases import BY_NAME, PARAMETERS, bounds_of, option_name, parse_cases
 from .compute import compute
 
 __all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
@@ -161,7 +161,11 @@ def run_batch(args, argv, specs, options):
         col = [r[j] if j is not None and j < len(r) else "" for r in body]
         if opt is not None:
             if ":" in str(opt):
-                raise InputError(f"--{p.name}", opt, "one value per row in a batch", "a sweep")
+                raise InputError(option_name(p.name), opt, "one value per row in a batch",
+                                 "a sweep")
+            # a bad option is the command line's error (exit 2), not every row's
+            parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
+                           bounds=bounds_of(p))
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)
@@ -211,7 +215,8 @@ def _result_layout(results, cases, si, multi):
     getters.append(("num", estar))
     if np.any(cases["radius_eff"] != cases["radius"]):
         cols.append(_col_name("radius_eff", si))
-        getters.append(("num", render.scale("radius_eff", cases["radius_eff"], si)))
+        reff = np.where(cases["raceways"], np.nan, cases["radius_eff"])  # per contact there
+        getters.append(("num", render.scale("radius_eff", reff, si)))
     fields = render.columns_of(results, "load")
     # in a batch the force comes first whatever is given
     for s in results.sets:
@@ -232,24 +237,19 @@ def _result_layout(results, cases, si, multi):
 
 
 def _format_numbers(values):
-    """'%.6g' of every element, '' for NaN (vectorised through numpy's formatting)."""
-    v = np.asarray(values, dtype=float)
-    out = np.char.mod("%.6g", np.where(np.isfinite(v), v, 0.0)).astype(object)
-    out[~np.isfinite(v)] = ""
-    return out
+    """'%.6g' of every element, '' for NaN or inf (a list of str)."""
+    return [format(v, ".6g") if v - v == 0 else ""
+            for v in np.asarray(values, dtype=float).tolist()]
 
 
 def _csv(header, body, out_names, getters, width):
-    cols = []
-    for kind, data in getters:
-        cols.append(_format_numbers(data) if kind == "num" else data)
+    cols = [_format_numbers(data) if kind == "num" else data for kind, data in getters]
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)
     pad = [""] * width
-    for i, r in enumerate(body):
-        row = r + pad[len(r):] if len(r) < width else r
-        w.writerow(row + [c[i] for c in cols])
+    padded = (r + pad[len(r):] if len(r) < width else r for r in body)
+    w.writerows(r + list(t) for r, t in zip(padded, zip(*cols)))
     return buf.getvalue()
 
 

@@ -36,7 +36,7 @@ import numpy as np
 
 from ._units import InputError, parse_column
 
-__all__ = ["Parameter", "PARAMETERS", "parse_cases", "option_name"]
+__all__ = ["Parameter", "PARAMETERS", "BY_NAME", "parse_cases", "option_name", "bounds_of"]
 
 
 @dataclass(frozen=True)
@@ -76,6 +76,8 @@ _CYL = "cylinder (roller)"
 _BODY = "second body and materials"
 _LOAD = "load (exactly one)"
 _RACE = "whole roller between two raceways (instead of --radius2)"
+_TAN = "tangential contact (one contact; see linecontact.calc_tangential)"
+_VISCO = "viscoelastic second body (instead of --modulus; creep)"
 
 #: Every input, in ``--help`` order.
 PARAMETERS = (
@@ -102,6 +104,23 @@ PARAMETERS = (
     Parameter("inner_raceway", "length", "radius Ri of the inner raceway (convex)", _RACE),
     Parameter("outer_raceway", "length", "radius Ro of the outer raceway (concave; "
               "give it positive)", _RACE),
+    Parameter("friction", "dimensionless", "Coulomb friction coefficient mu: adds the "
+              "full-stick tangential stiffness across and along the axis (BEM) and the "
+              "MDR's", _TAN),
+    Parameter("tangential_load", "force", "tangential force Q at constant normal load, or a "
+              "sweep START:STOP:N: the shift and the slip state (needs --friction)", _TAN,
+              sweep=True),
+    Parameter("instantaneous_modulus", "pressure", "instantaneous Young's modulus E0 of a "
+              "standard linear solid", _VISCO),
+    Parameter("long_term_modulus", "pressure", "long-term Young's modulus E_inf < E0",
+              _VISCO),
+    Parameter("relaxation_time", "time", "relaxation time tau (at constant strain)",
+              _VISCO),
+    Parameter("prony", "path", "Prony series of the Young's modulus: a CSV file with "
+              "columns tau_s, E_Pa and a line '# E_inf: VALUE' (instead of the three "
+              "above)", _VISCO),
+    Parameter("time", "time", "time t the load has been held, or a sweep START:STOP:N: "
+              "the creep depth d(t) (with --load)", _VISCO, positive=False, sweep=True),
 )
 
 BY_NAME = {p.name: p for p in PARAMETERS}
@@ -112,7 +131,8 @@ def option_name(name):
     return "--" + name.replace("_", "-")
 
 
-def _bounds(p):
+def bounds_of(p):
+    """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
     from . import validity
@@ -165,6 +185,9 @@ def parse_cases(cells, n, label=option_name):
         raw[p.name] = col
         given = np.array([c.strip() != "" for c in col], dtype=bool)
         present[p.name] = given
+        if p.kind == "path":  # a file name, read where it is used
+            values[p.name] = np.full(n, np.nan)
+            continue
         v = np.full(n, np.nan)
         idx = np.flatnonzero(given)
         if idx.size:
@@ -182,7 +205,7 @@ def parse_cases(cells, n, label=option_name):
 def _parse_unique(name, cells, p):
     """parse_column over the distinct cells only (a batch repeats its cylinders)."""
     uniq = list(dict.fromkeys(cells))
-    v, e = parse_column(name, uniq, p.kind, positive=p.positive, bounds=_bounds(p))
+    v, e = parse_column(name, uniq, p.kind, positive=p.positive, bounds=bounds_of(p))
     if len(uniq) == len(cells):
         return v, e
     where = {c: i for i, c in enumerate(uniq)}
@@ -220,8 +243,11 @@ def _resolve(v, present, raw, errors, n, label):
         fail(P["estar"] & P[name], name,
              f"either {label('estar')} or the moduli and Poisson's ratios, not both",
              f"conflicts with {label('estar')}", lambda i, nm=name: cell(nm, i))
-    nu_range = _bounds(BY_NAME["poisson"])[1]
-    fail(~P["estar"] & ~P["modulus"], "modulus",
+    nu_range = bounds_of(BY_NAME["poisson"])[1]
+    from .calc_tangential import resolve as _resolve_tangential
+
+    visco, E0, materials = _resolve_tangential(v, P, raw, fail, label, n)
+    fail(~P["estar"] & ~P["modulus"] & ~visco, "modulus",
          f"a modulus > 0 (e.g. 210GPa), or {label('estar')}", "missing")
     fail(~P["estar"] & P["modulus"] & ~P["poisson"], "poisson", nu_range,
          f"missing (needed with {label('modulus')})")
@@ -281,10 +307,11 @@ def _resolve(v, present, raw, errors, n, label):
 
         e2 = np.where(P["modulus2"], v["modulus2"], np.inf)[eq3]
         nu2 = np.where(P["poisson2"], v["poisson2"], 0.0)[eq3]
-        estar[eq3] = effective_modulus(v["modulus"][eq3], v["poisson"][eq3], e2, nu2)
+        e1 = np.where(visco, E0, v["modulus"])[eq3]   # viscoelastic: instantaneous E0
+        estar[eq3] = effective_modulus(e1, v["poisson"][eq3], e2, nu2)
     given = np.where(P["load"], "load", "depth")
     value = np.where(P["load"], v["load"], v["depth"])
     cases = dict(v)
     cases.update(radius=radius, radius_eff=radius_eff, estar=estar, given=given,
-                 value=value, raceways=raceways)
+                 value=value, raceways=raceways, material=materials, _present=present)
     return cases

@@ -129,7 +129,13 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     >>> effective_modulus(210e9, 0.3, 70e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: poisson2 = 'missing' is outside the valid range [0, 0.5]; ...
+    linecontact.validity.OutOfRangeError: poisson2 = 'missing' is outside ...
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 3.
+    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press, ch. 4.
     """
     E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
     E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
@@ -188,6 +194,12 @@ def hertz_half_width(force, radius, length, estar):
     --------
     >>> f"{hertz_half_width(1e3, 5e-3, 10e-3, 115.38e9) * 1e6:.2f} um"
     '74.28 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 1.
+    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press, ch. 4.
     """
     F = check_positive("force", force, "N")
     R, L, E = _inputs(radius, length, estar)
@@ -237,6 +249,15 @@ def puttock_thwaite_depth(force, radius, length, estar):
 
     >>> f"{puttock_thwaite_depth(1e3, 5e-3, 10e-3, 115.38e9) * 1e6:.3f} um"
     '3.363 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2.
+    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
+    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
+    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
+    Gebiete des Ingenieurwesens 10, 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
@@ -273,6 +294,16 @@ def puttock_thwaite_force(depth, radius, length, estar):
     --------
     >>> round(puttock_thwaite_force(3.3634e-6, 5e-3, 10e-3, 115.38e9))
     1000
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 (inverted
+    in closed form by the MDR, docs/theory.md, section 'MDR').
+    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
+    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
+    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
+    Gebiete des Ingenieurwesens 10, 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
@@ -309,6 +340,16 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
     --------
     >>> f"{puttock_thwaite_stiffness(1e3, 5e-3, 10e-3, 115.38e9):.4e} N/m"
     '3.2389e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 and Eq. 13
+    (corrected).
+    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
+    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
+    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
+    Gebiete des Ingenieurwesens 10, 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
@@ -340,6 +381,16 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
     --------
     >>> f"{puttock_thwaite_stiffness_at_depth(3.3634e-6, 5e-3, 10e-3, 115.38e9):.4e} N/m"
     '3.2389e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 2 (k = 2 E* a by the
+    MDR, docs/theory.md, section 'MDR').
+    Puttock, M. J., Thwaite, E. G. (1969). Elastic compression of spheres and cylinders
+    at point and line contact. National Standards Laboratory Technical Paper 25, CSIRO.
+    Lundberg, G. (1939). Elastische Beruehrung zweier Halbraeume. Forschung auf dem
+    Gebiete des Ingenieurwesens 10, 201-211.
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
@@ -348,12 +399,38 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
 
 
 def puttock_thwaite_profile(x, radius, length):
-    """MDR profile equivalent to Eq. 2: Eq. 7 with alpha = pi/2, beta = 1 [m].
+    r"""MDR profile equivalent to Eq. 2: Eq. 7 with alpha = pi/2, beta = 1 [m].
+
+    .. math:: g(x) = \frac{L^2}{R}\left(\frac{\pi L}{2x} + 1\right)e^{-\pi L/(2x)}
+
+    Parameters
+    ----------
+    x : float or array_like
+        MDR coordinate, 0 <= x < inf [m].
+    radius : float or array_like
+        Cylinder radius R, 0 < R < inf [m].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+
+    Returns
+    -------
+    float or ndarray
+        g(x) [m], below L^2/R.
+
+    Notes
+    -----
+    Valid for 0 <= x < inf; see :func:`linecontact.lipopov.lipopov_profile`.
 
     Examples
     --------
     >>> f"{puttock_thwaite_profile(10e-3, 5e-3, 10e-3):.4e}"
     '1.0688e-02'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with alpha = pi/2,
+    beta = 1 (Eq. 2).
     """
     return lipopov_profile(x, radius, length, **_PT)
 
@@ -368,6 +445,21 @@ JOHNSON_CONSTANTS = {"johnson1985": 1.0, "1": 1.0, "0.72": 0.72, "0.572": 0.572}
 
 def johnson_constant(c):
     """The constant c of Eq. 4: a number, or a name in :data:`JOHNSON_CONSTANTS`.
+
+    Parameters
+    ----------
+    c : float or str
+        The constant c of Eq. 4, any finite number [-], or one of the names
+        ``"johnson1985"`` (1), ``"1"``, ``"0.72"``, ``"0.572"``.
+
+    Returns
+    -------
+    float
+        c [-].
+
+    Notes
+    -----
+    Valid for -inf < c < inf (Li & Popov quote 1, 0.72 and 0.572).
 
     Examples
     --------
@@ -393,6 +485,19 @@ def johnson_equivalent_beta(radius, length, c=1.0):
     Substituting this into the Li-Popov d(F) (alpha = pi/2) gives Eq. 4 term by term,
     so the Johnson-type family is also an MDR model, with the profile of Eq. 7.
 
+    Parameters
+    ----------
+    radius : float or array_like
+        Cylinder radius R, 0 < R < inf [m].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+    c : float or str, optional
+        Constant of Eq. 4 (see :func:`johnson_depth`) [-].
+
+    Notes
+    -----
+    Valid for 0 < R, L < inf and any finite c.
+
     Returns
     -------
     float or ndarray
@@ -402,6 +507,12 @@ def johnson_equivalent_beta(radius, length, c=1.0):
     --------
     >>> round(johnson_equivalent_beta(5e-3, 10e-3, 1.0), 6)
     0.135335
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4 and Eq. 7 (the
+    identity is derived here).
     """
     R = check_positive("radius", radius, "m")
     L = check_positive("length", length, "m")
@@ -434,7 +545,7 @@ def johnson_depth(force, radius, length, estar, c=1.0):
         Effective modulus E* (Eq. 3), 0 < E* < inf [Pa].
     c : float or str, optional
         The constant: 1 (``"johnson1985"``, Johnson 1985; default), 0.72 or 0.572
-        (other authors, per Li & Popov), or any number.
+        (other authors, per Li & Popov), or any number [-].
 
     Returns
     -------
@@ -454,6 +565,12 @@ def johnson_depth(force, radius, length, estar, c=1.0):
     '2.812 um'
     >>> f"{johnson_depth(1e3, 5e-3, 10e-3, 115.38e9, c='0.572') * 1e6:.3f} um"
     '2.930 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
+    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("force", force, 0.0, 4 * math.pi * E * L * R * math.exp(-(1 + cc)),
@@ -476,7 +593,7 @@ def johnson_force(depth, radius, length, estar, c=1.0):
     estar : float or array_like
         E* [Pa].
     c : float or str, optional
-        Constant of Eq. 4 (see :func:`johnson_depth`).
+        Constant of Eq. 4 (see :func:`johnson_depth`) [-].
 
     Returns
     -------
@@ -487,6 +604,12 @@ def johnson_force(depth, radius, length, estar, c=1.0):
     --------
     >>> round(johnson_force(2.8116e-6, 5e-3, 10e-3, 115.38e9, c=1))
     1000
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
+    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("depth", depth, 0.0, 4 * R * math.exp(-(1 + cc)), low_open=True,
@@ -508,7 +631,7 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
     estar : float or array_like
         E* [Pa].
     c : float or str, optional
-        Constant of Eq. 4.
+        Constant of Eq. 4 (see :func:`johnson_depth`) [-].
 
     Returns
     -------
@@ -519,6 +642,12 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
     --------
     >>> f"{johnson_stiffness(1e3, 5e-3, 10e-3, 115.38e9):.4e} N/m"
     '3.9437e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 4.
+    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
     check_interval("force", force, 0.0, 4 * math.pi * E * L * R * math.exp(-(1 + cc)),
@@ -541,13 +670,13 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
     Parameters
     ----------
     depth : float or array_like
-        0 < d < inf [m].
+        Depth d, 0 < d < inf [m].
     length : float or array_like
-        Cylinder length L [m].
+        Cylinder length L, 0 < L < inf [m].
     estar : float or array_like
         E* [Pa].
     c : float, optional
-        Coefficient [-], 0.175 from the experiment.
+        Coefficient, 0 < c < inf; 0.175 from the experiment [-].
 
     Returns
     -------
@@ -563,6 +692,12 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
     --------
     >>> round(kunz_force(5e-6, 10e-3, 115.38e9))
     1010
+
+    References
+    ----------
+    Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li, Q.,
+    Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, section 1.
     """
     d = check_positive("depth", depth, "m")
     L = check_positive("length", length, "m")
@@ -574,6 +709,19 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
 def kunz_depth(force, length, estar, c=KUNZ_C):
     r"""Depth from Kunz & de Maria's linear law, d = F / (c E* L).
 
+    .. math:: d = \frac{F}{c\, E^* L}
+
+    Parameters
+    ----------
+    force : float or array_like
+        Normal force F, 0 < F < inf [N].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+    estar : float or array_like
+        Effective modulus E*, 0 < E* < inf [Pa].
+    c : float, optional
+        Coefficient, 0 < c < inf; 0.175 from the experiment [-].
+
     Returns
     -------
     float or ndarray
@@ -583,6 +731,12 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
     --------
     >>> f"{kunz_depth(1e3, 10e-3, 115.38e9) * 1e6:.3f} um"
     '4.953 um'
+
+    References
+    ----------
+    Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li, Q.,
+    Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, section 1.
     """
     F = check_positive("force", force, "N")
     L = check_positive("length", length, "m")
@@ -667,6 +821,10 @@ def palmgren_depth(force, length, estar):
 
     >>> f"{palmgren_depth(1e3, 10e-3, 115.38e9) * 1e6:.3f} um"
     '3.050 um'
+
+    References
+    ----------
+    Palmgren, A. (1959). Ball and Roller Bearing Engineering. SKF, Philadelphia.
     """
     return _steel_depth(force, length, estar, PALMGREN_C)
 
@@ -677,6 +835,15 @@ def palmgren_force(depth, length, estar):
 
     .. math:: F\,[\mathrm{N}] = \left(\frac{d\,[\mathrm{mm}]\; L\,[\mathrm{mm}]^{0.8}}
               {3.84\times10^{-5}}\right)^{1/0.9}
+
+    Parameters
+    ----------
+    depth : float or array_like
+        Depth of one contact d, 0 < d < inf [m].
+    length : float or array_like
+        Roller (effective contact) length L, 0 < L < inf [m].
+    estar : float or array_like
+        E* [Pa]; only used to refuse non-steel pairs.
 
     Returns
     -------
@@ -691,6 +858,10 @@ def palmgren_force(depth, length, estar):
     --------
     >>> round(palmgren_force(3.0502e-6, 10e-3, 115.38e9))
     1000
+
+    References
+    ----------
+    Palmgren, A. (1959). Ball and Roller Bearing Engineering. SKF, Philadelphia.
     """
     return _steel_force(depth, length, estar, PALMGREN_C)
 
@@ -727,6 +898,11 @@ def iso16281_depth(force, length, estar):
     --------
     >>> f"{iso16281_depth(1e3, 10e-3, 115.38e9) * 1e6:.3f} um"
     '3.153 um'
+
+    References
+    ----------
+    ISO/TS 16281:2008. Rolling bearings - Methods for calculating the modified reference
+    rating life for universally loaded bearings.
     """
     return _steel_depth(force, length, estar, ISO16281_C)
 
@@ -734,6 +910,18 @@ def iso16281_depth(force, length, estar):
 @document(STEEL=STEEL_ESTAR_RANGE)
 def iso16281_force(depth, length, estar):
     r"""Force at a given depth: the inverse of :func:`iso16281_depth` (steel only).
+
+    .. math:: F\,[\mathrm{N}] = \left(\frac{d\,[\mathrm{mm}]\; L\,[\mathrm{mm}]^{0.8}}
+              {3.97\times10^{-5}}\right)^{1/0.9}
+
+    Parameters
+    ----------
+    depth : float or array_like
+        Depth of one contact d, 0 < d < inf [m].
+    length : float or array_like
+        Roller (effective contact) length L, 0 < L < inf [m].
+    estar : float or array_like
+        E* [Pa]; only used to refuse non-steel pairs.
 
     Returns
     -------
@@ -748,5 +936,10 @@ def iso16281_force(depth, length, estar):
     --------
     >>> round(iso16281_force(3.1535e-6, 10e-3, 115.38e9))
     1000
+
+    References
+    ----------
+    ISO/TS 16281:2008. Rolling bearings - Methods for calculating the modified reference
+    rating life for universally loaded bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)

@@ -169,12 +169,22 @@ def _calc_one(args, argv, specs):
 
     raw = {p.name: getattr(args, p.name) for p in PARAMETERS}
     n = 1
-    for name, other in (("load", "depth"), ("depth", "load")):
-        if raw[name] is not None and ":" in raw[name] and raw[other] is None:
-            sweep = np.array(parse_sweep(option_name(name), raw[name], BY_NAME[name].kind,
-                                         linear=args.linear))
-            n = len(sweep)
-            raw[name] = sweep
+    swept = None
+    for p in PARAMETERS:
+        name = p.name
+        other = {"load": "depth", "depth": "load"}.get(name)
+        if not (p.sweep and raw[name] is not None and ":" in raw[name]):
+            continue
+        if other is not None and raw[other] is not None:
+            continue  # load and depth together: parse_cases says so
+        if swept is not None:
+            raise _Failed(f"{option_name(name)} = {raw[name]!r}: a second sweep; valid: "
+                          f"one sweep at a time (already {option_name(swept)})")
+        sweep = np.array(parse_sweep(option_name(name), raw[name], BY_NAME[name].kind,
+                                     linear=args.linear, positive=p.positive))
+        n = len(sweep)
+        raw[name] = sweep
+        swept = name
     cells = {
         k: (v if isinstance(v, np.ndarray) else [v] * n) for k, v in raw.items() if v is not None
     }

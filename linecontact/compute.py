@@ -74,6 +74,18 @@ FIELDS = {
     "radius": Field("R", "m", "mm", 1e3),
     "radius_eff": Field("R eff", "m", "mm", 1e3),
     "length": Field("L", "m", "mm", 1e3),
+    # tangential and viscoelastic (linecontact.calc_tangential)
+    "kt_mdr": Field("kt MDR", "N/m", "N/um", 1e-6),
+    "kt_across": Field("kt across", "N/m", "N/um", 1e-6),
+    "kt_along": Field("kt along", "N/m", "N/um", 1e-6),
+    "tangential_load": Field("Q", "N", "kN", 1e-3),
+    "slip_fraction": Field("Q/(mu F)", "-", "%", 100.0),
+    "shift_mdr": Field("u MDR", "m", "um", 1e6),
+    "shift_across": Field("u across", "m", "um", 1e6),
+    "shift_along": Field("u along", "m", "um", 1e6),
+    "time": Field("t", "s", "s", 1.0),
+    "creep_depth": Field("d(t)", "m", "um", 1e6),
+    "depth_long_term": Field("d(inf)", "m", "um", 1e6),
 }
 
 #: Columns of one contact, in order (the given quantity, F or d, comes first).
@@ -238,13 +250,20 @@ def _model_id(model):
     return re.sub(r"[^a-z0-9.]+", "-", model.label.lower()).strip("-")
 
 
-def _build(specs, R, L, E, first_only):
-    """The models for one cylinder (Refused stand-ins for those refused at build)."""
+def _build(specs, R, L, E, first_only, default_key=None):
+    """The models for one cylinder (Refused stand-ins for those refused at build).
+
+    `default_key`: the registry key of the standard set's first model when it is
+    known (from a first call) to be the default model: with `first_only` only that
+    model is built, not the whole standard set (a batch of distinct cylinders).
+    """
     from . import models
     from ._units import InputError
     from .validity import OutOfRangeError
 
     if specs is None:
+        if first_only and default_key is not None:
+            return [models.get_model(default_key, R, L, E)]
         standard = list(models.standard_models(R, L, E))
         return standard[:1] if first_only else standard
     chosen = []
@@ -275,6 +294,11 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
     n = len(values)
     out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
     out["force" if given == "load" else "depth"][:] = values  # given, even where refused
+    if not isinstance(model, Refused):
+        try:
+            model.check_applicable()  # refused for the whole cylinder: one message
+        except OutOfRangeError as exc:
+            model = Refused(model.label, exc)
     if isinstance(model, Refused):
         for i in idx:
             notes[i] = str(model.exc)
@@ -357,13 +381,16 @@ class Results:
             {"fields": {}, "note": [""] * n, "flags": [""] * n, "label": [""] * n, "id": ""}
             for _ in range(n_sets)
         ]
+        from .calc_tangential import ALL_COLUMNS
+
         for s in self.sets:
-            for f in set(CONTACT_COLUMNS) | set(ROLLER_COLUMNS):
+            for f in set(CONTACT_COLUMNS) | set(ROLLER_COLUMNS) | set(ALL_COLUMNS):
                 s["fields"][f] = np.full(n, np.nan)
         self.models = {}
         self.errors = errors
         self.roller = False
         self.deviation = False
+        self.extra = []  # tangential/viscoelastic columns (linecontact.calc_tangential)
 
 
 def compute(cases, errors, specs, *, first_only=False, progress=None):
@@ -403,7 +430,12 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         groups = np.split(rows[order], bounds)
     else:
         groups = []
+    from .models import DEFAULT_MODEL
+
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
+    # the default model alone when it heads the standard set (it does when installed)
+    default_key = (DEFAULT_MODEL if specs is None and first_only
+                   and probe[0].key == DEFAULT_MODEL else None)
     results = Results(n, len(probe), errors)
     for s, m in zip(results.sets, probe):
         s["id"] = _model_id(m)
@@ -419,7 +451,8 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                 contacts = [R_in, R_out]
             else:
                 contacts = [Reff[i0]]
-            sets = [_build(specs, R, L[i0], E[i0], first_only) for R in contacts]
+            sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
+                    for R in contacts]
             refs = ([list(_build(None, R, L[i0], E[i0], True)) for R in contacts]
                     if reference else None)
         except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
@@ -431,6 +464,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         if progress is not None:
             progress(done)
     results.roller = bool(np.any(race & ok))
+    from .calc_tangential import columns as _extra_columns
+
+    results.extra = list(_extra_columns(cases, cases["_present"])) if "_present" in cases \
+        else []
     return results
 
 
@@ -462,6 +499,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
         per_set.append(per_contact)
         s = results.sets[j]
         label = sets[0][j].label
+        if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
+            s["model"] = sets[0][j]
         for i in g:
             s["label"][i] = label
     ref_q = None
@@ -488,6 +527,13 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
                       "contact_radius"):
                 f[k][g] = r[k]
             flags = [_flag_text(a, b) for a, b in zip(r["_deep"], r["_wide"])]
+            if "_present" in cases:
+                from .calc_tangential import add_fields
+
+                extra_flags = [""] * len(errors)
+                add_fields(f, extra_flags, g, sets[0][j], r, cases, cases["_present"])
+                flags = ["; ".join(t for t in (a, extra_flags[i]) if t)
+                         for a, i in zip(flags, g)]
         else:
             ri, ro = per_contact
             f["force"][g] = ri["force"]

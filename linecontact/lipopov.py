@@ -50,8 +50,9 @@ any other ``NAME``
 Table 1 and Eq. 11 disagree where both apply: at L/R = 5 Table 1 has alpha = 1.6048,
 beta = 0.5376 against pi/2 and 0.4573. For a steel roller R = 5 mm, L = 25 mm
 (E* = 115.4 GPa) the "published" depth is 0.9 % smaller than the "eq11" one at 1 kN and
-0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is chosen for you: the model uses ``"published"`` unless
-told ``coefficients="eq11"``, and the CLI lists both.
+0.6 % smaller at 10 kN (a regression figure, pinned in tests/test_lipopov.py). Neither is
+chosen for you: the model uses ``"published"`` unless told ``coefficients="eq11"``, and
+the CLI lists both.
 
 References
 ----------
@@ -113,6 +114,20 @@ class CoefficientSet:
     Call it with L/R to get ``(alpha, beta)``; L/R outside :attr:`valid` raises
     :class:`~linecontact.validity.OutOfRangeError`.
 
+    Parameters
+    ----------
+    name : str
+        ``"published"``, ``"eq11"`` or a table name.
+    label : str
+        Human-readable, e.g. ``"Table 1 spline"``.
+    valid : Interval
+        Range of L/R.
+    provenance : dict
+        Table metadata (table-backed sets) or the equation reference.
+    _alpha, _beta : NotAKnotSpline or None
+        alpha and beta as splines of ln(L/R) (table-backed sets); None for the
+        constants of Eq. 11.
+
     Attributes
     ----------
     name : str
@@ -123,6 +138,17 @@ class CoefficientSet:
         Range of L/R.
     provenance : dict
         Table metadata (table-backed sets) or the equation reference.
+
+    Examples
+    --------
+    >>> s = coefficient_set("eq11")
+    >>> s(10.0)
+    (array(1.57079633), array(0.4573))
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Table 1 and Eq. 11.
     """
 
     name: str
@@ -200,6 +226,16 @@ def available_coefficient_sets():
 
 def coefficient_set(name="published"):
     """The coefficient set `name`: ``"published"``, ``"eq11"`` or a table name.
+
+    Parameters
+    ----------
+    name : str
+        ``"published"`` (Li & Popov 2017, Table 1, spline in ln(L/R)), ``"eq11"``
+        (Eq. 11) or the name NAME of a table ``tables/lipopov_NAME.csv``.
+
+    Returns
+    -------
+    CoefficientSet
 
     A table set is re-read when its file changes (so a table regenerated while a
     process runs is picked up).
@@ -322,10 +358,21 @@ def lipopov_depth_limit(radius, length, beta):
     float or ndarray
         beta L^2 / R [m].
 
+    Notes
+    -----
+    Valid for 0 < R, L, beta < inf.
+
     Examples
     --------
     >>> lipopov_depth_limit(5e-3, 10e-3, 0.4573)
     0.009146
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     b = check_positive("beta", beta)
@@ -337,6 +384,17 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
 
     .. math:: F_{max} = 2\alpha\beta E^* L^3 / R
 
+    Parameters
+    ----------
+    radius : float or array_like
+        Cylinder radius R, 0 < R < inf [m].
+    length : float or array_like
+        Cylinder length L, 0 < L < inf [m].
+    estar : float or array_like
+        Effective modulus E*, 0 < E* < inf [Pa].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
     Returns
     -------
     float or ndarray
@@ -346,6 +404,14 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
     --------
     >>> f"{lipopov_force_limit(5e-3, 10e-3, 115.4e9, alpha=1.5708, beta=0.4573):.4g}"
     '3.316e+07'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (MDR force at the
+    bound).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -377,6 +443,13 @@ def dimensionless_profile(x_tilde, alpha, beta):
     --------
     >>> round(dimensionless_profile(1.0, 1.5708, 0.4573), 6)
     0.244388
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 8 and 9.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     xt = check_interval("x_tilde", x_tilde, 0.0, np.inf, high_open=True)
     a, b = _coeffs(alpha, beta)
@@ -418,6 +491,13 @@ def lipopov_profile(x, radius, length, *, alpha, beta):
     --------
     >>> f"{lipopov_profile(10e-3, 5e-3, 10e-3, alpha=1.5708, beta=0.4573):.4e}"
     '4.8878e-03'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     xv = check_interval("x", x, 0.0, np.inf, high_open=True, unit="m")
@@ -478,6 +558,14 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
     >>> F = lipopov_force(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> round(F)
     1000
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 with the MDR rules
+    (docs/theory.md, section 'MDR').
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -528,6 +616,14 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
     >>> d = lipopov_depth(1e3, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{d * 1e6:.3f} um"
     '3.147 um'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and 9 (Eq. 2 for
+    alpha = pi/2, beta = 1).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -561,6 +657,13 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
     >>> a = lipopov_contact_radius(3.147e-6, 5e-3, 10e-3, alpha=1.5707963, beta=0.4573)
     >>> f"{a * 1e3:.4f} mm"
     '1.5091 mm'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7.
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     a, b = _coeffs(alpha, beta)
@@ -595,6 +698,13 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
     >>> k = lipopov_stiffness(3.147e-6, 5e-3, 10e-3, 115.38e9, alpha=1.5707963, beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 (k = 2 E* a).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     E = check_positive("estar", estar, "Pa")
     return out(2 * E * np.asarray(lipopov_contact_radius(depth, radius, length,
@@ -632,6 +742,13 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
     ...                                beta=0.4573)
     >>> f"{k:.3e} N/m"
     '3.482e+08 N/m'
+
+    References
+    ----------
+    Li, Q., Popov, V. L. (2017). Normal line contact of finite-length cylinders. Facta
+    Universitatis, Series Mechanical Engineering 15(1), 63-71, Eq. 7 and Eq. 13 (corrected).
+    Popov, V. L., Hess, M. (2015). Method of Dimensionality Reduction in Contact
+    Mechanics and Friction. Springer.
     """
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
@@ -664,10 +781,8 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -711,10 +826,8 @@ def dimensionless_force(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -759,10 +872,8 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     ----------
     d_tilde : float or array_like
         Dimensionless depth d R / L^2, 0 < d~ < beta [-].
-    alpha : float or array_like
-        Coefficient of Eq. 9, 0 < alpha < inf [-].
-    beta : float or array_like
-        Coefficient of Eq. 9, 0 < beta < inf [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
 
     Returns
     -------
@@ -791,6 +902,54 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
     return lipopov_stiffness(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+
+
+def dimensionless_depth(f_tilde, alpha, beta):
+    r"""Dimensionless depth d~ = d R/L^2 under the dimensionless force F~ (Eq. 9 form).
+
+    .. math::
+        \tilde d = \frac{\tilde F}{2\alpha}\left(1 + \ln\frac{2\alpha\beta}{\tilde F}
+                    \right), \qquad \tilde F = \frac{F R}{E^* L^3}
+
+    Parameters
+    ----------
+    f_tilde : float or array_like
+        Dimensionless force F R/(E* L^3), 0 < F~ < 2 alpha beta [-].
+    alpha, beta : float or array_like
+        Coefficients of Eq. 9, 0 < alpha, beta < inf [-].
+
+    Returns
+    -------
+    float or ndarray
+        d R / L^2 [-]; the inverse of :func:`dimensionless_force`.
+
+    Raises
+    ------
+    OutOfRangeError
+        F~ outside (0, 2 alpha beta), or alpha, beta not positive and finite.
+
+    Notes
+    -----
+    Valid for 0 < F~ < 2 alpha beta (the form saturates there). It is
+    :func:`lipopov_depth` with R = L = E* = 1; with alpha = pi/2, beta = 1 it is
+    Eq. 2 in dimensionless form.
+
+    Examples
+    --------
+    >>> d = dimensionless_depth(dimensionless_force(0.1, 1.5708, 0.4573), 1.5708, 0.4573)
+    >>> round(float(d), 12)
+    0.1
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
+       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    """
+    a, b = _coeffs(alpha, beta)
+    f = check_interval(
+        "f_tilde", f_tilde, 0.0, 2 * a * b, low_open=True, high_open=True,
+        hint="the Li-Popov form saturates at F~ = 2 alpha beta")
+    return lipopov_depth(f, 1.0, 1.0, 1.0, alpha=a, beta=b)
 
 
 def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):
@@ -917,5 +1076,5 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
     return float(a), float(b)
 
 
-__all__ += ["dimensionless_contact_radius", "dimensionless_force",
+__all__ += ["dimensionless_contact_radius", "dimensionless_force", "dimensionless_depth",
             "dimensionless_stiffness", "effective_beta", "fit_dimensionless_profile"]

@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import abc
 import math
+import os
 
 import numpy as np
 
@@ -48,7 +49,7 @@ from . import classical as _c
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import available_tables
+from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
 from .validity import OutOfRangeError, check_interval, check_positive, document, out
 
@@ -77,7 +78,27 @@ DEFAULT_MODEL = "universal"
 
 
 def register(cls):
-    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`."""
+    """Class decorator: add a :class:`ContactModel` subclass to :data:`MODELS`.
+
+    Parameters
+    ----------
+    cls : type
+        A :class:`ContactModel` subclass with a non-empty ``key``.
+
+    Returns
+    -------
+    type
+        `cls`, unchanged (so it works as a decorator).
+
+    Examples
+    --------
+    >>> "li-popov" in MODELS and MODELS["li-popov"] is LiPopovModel
+    True
+    >>> register(int)
+    Traceback (most recent call last):
+    ...
+    TypeError: <class 'int'> is not a ContactModel subclass
+    """
     if not (isinstance(cls, type) and issubclass(cls, ContactModel)):
         raise TypeError(f"{cls!r} is not a ContactModel subclass")
     if not cls.key:
@@ -113,6 +134,14 @@ class ContactModel(abc.ABC):
     Subclasses set :attr:`key` and implement :meth:`force`, :meth:`depth`,
     :meth:`stiffness`, :attr:`label` and :attr:`provenance`; the rest have
     defaults in terms of those.
+
+    Examples
+    --------
+    Every model answers the same questions; a subclass implements the law:
+
+    >>> m = get_model("puttock-thwaite", 5e-3, 10e-3, 115.38e9)
+    >>> isinstance(m, ContactModel), f"{m.length_over_radius:g}"
+    (True, '2')
     """
 
     #: Registry key.
@@ -141,6 +170,30 @@ class ContactModel(abc.ABC):
     def length_over_radius(self):
         """L/R [-]."""
         return self.length / self.radius
+
+    #: Column tag of this model in tables/model_accuracy.csv (``F_err_<tag>``), or None
+    #: where the accuracy study does not cover it (an option value it did not run).
+    accuracy_tag = None
+
+    @property
+    def measured_error(self):
+        """The measured error of this model against the BEM at this cylinder's L/R.
+
+        One line of text: the range of the signed relative error of F(d) and k(d)
+        over the depths of the accuracy study (d/R 1e-6 ... 0.15), at the study's L/R
+        rows that bracket this cylinder's, read from tables/model_accuracy.csv
+        (``python -m tools.build_tables accuracy``); or why there is none. None for a
+        model the study does not cover (``accuracy_tag`` None).
+        """
+        if self.accuracy_tag is None:
+            return None
+        return _measured_error(self.accuracy_tag, self.length_over_radius)
+
+    def _with_measured_error(self, prov):
+        text = self.measured_error
+        if text is not None:
+            prov["measured_error"] = text
+        return prov
 
     def check_applicable(self):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
@@ -178,13 +231,14 @@ class ContactModel(abc.ABC):
     def evaluate(self, *, force=None, depth=None):
         """The contact state at given forces OR depths, in one vectorised call.
 
-        With `force` F: d = depth(F), k = stiffness_at_force(F); with `depth` d:
-        F = force(d), k = stiffness(d). Both: the MDR contact half-length
-        a = k / (2 E*) (docs/theory.md, section 'MDR'; Li & Popov (2017), Eq. 5-6:
-        the MDR spring bed of modulus E* over |x| <= a has stiffness 2 E* a).
-        Each model's own law is called once per quantity, so a model whose
-        stiffness is a function of force (Johnson, Eq. 4) is not evaluated through
-        a force -> depth -> force round trip.
+        With `force` F: d = depth(F), and k = stiffness_at_force(F) where the model
+        has its own (a closed form in F), else stiffness(d) (no second inversion of
+        F). With `depth` d: F = force(d), and k = stiffness(d), or
+        stiffness_at_force(F) for a model whose class sets
+        ``stiffness_explicit_in_force = True`` (a law written as d(F), Johnson's Eq. 4:
+        no depth -> force -> stiffness detour). Both: the MDR contact half-length
+        a = k / (2 E*) (docs/theory.md, section 'MDR': the MDR spring bed of modulus
+        E* over |x| <= a has stiffness 2 E* a).
 
         Parameters
         ----------
@@ -227,14 +281,18 @@ class ContactModel(abc.ABC):
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
+        own = type(self).stiffness_at_force is not ContactModel.stiffness_at_force
         if force is not None:
             F = check_positive("force", force, "N")
             d = np.asarray(self.depth(F), dtype=float)
-            k = np.asarray(self.stiffness_at_force(F), dtype=float)
+            k = self.stiffness_at_force(F) if own else self.stiffness(d)
         else:
             d = check_positive("depth", depth, "m")
             F = np.asarray(self.force(d), dtype=float)
-            k = np.asarray(self.stiffness(d), dtype=float)
+            k = (self.stiffness_at_force(F)
+                 if own and getattr(self, "stiffness_explicit_in_force", False)
+                 else self.stiffness(d))
+        k = np.asarray(k, dtype=float)
         a = k / (2 * self.estar)
         return {"force": out(F), "depth": out(d),
                 "stiffness": out(k), "contact_radius": out(a)}
@@ -252,6 +310,16 @@ class LiPopovModel(ContactModel):
     :mod:`linecontact.lipopov`). Option ``extrapolate=True`` uses the set outside its
     L/R range on request (Eq. 11 constants as they are, a table's end rows held); the
     label then says "extrapolated".
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    coefficients : str, optional
+        ``"published"`` (default), ``"eq11"`` or a table name (see above).
+    extrapolate : bool, optional
+        Use the set outside its L/R range on request (default False).
 
     Examples
     --------
@@ -300,7 +368,19 @@ class LiPopovModel(ContactModel):
         if self.extrapolate and self.extrapolated:
             prov["extrapolated"] = (f"L/R = {self.length_over_radius:.6g} is outside "
                                     f"{self._set.valid}; used on request")
-        return prov
+        return self._with_measured_error(prov)
+
+    @property
+    def accuracy_tag(self):
+        return f"lp_{self.coefficients}" if isinstance(self.coefficients, str) else None
+
+    @property
+    def measured_error(self):
+        text = super().measured_error
+        if text is not None and self.extrapolated and not self.extrapolate:
+            text = (f"not applicable at L/R = {self.length_over_radius:.3g} (outside "
+                    f"{self._set.valid}); extrapolated on request it measures " + text)
+        return text
 
     @property
     def alpha_beta(self):
@@ -339,6 +419,12 @@ class LiPopovModel(ContactModel):
 class PuttockThwaiteModel(ContactModel):
     """Puttock & Thwaite (= Lundberg 1939), Li & Popov 2017 Eq. 2.
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> m = PuttockThwaiteModel(5e-3, 10e-3, 115.38e9)
@@ -348,13 +434,14 @@ class PuttockThwaiteModel(ContactModel):
 
     key = "puttock-thwaite"
     label = "Puttock-Thwaite"
+    accuracy_tag = "eq2"
 
     @property
     def provenance(self):
-        return {"model": self.label,
+        return self._with_measured_error({"model": self.label,
                 "equation": "Li & Popov 2017, Eq. 2 (Puttock & Thwaite; Lundberg 1939); "
                             "stiffness: derivative of Eq. 2 (the printed Eq. 13 is "
-                            "inverted)"}
+                            "inverted)"})
 
     def force(self, depth):
         return _c.puttock_thwaite_force(depth, self.radius, self.length, self.estar)
@@ -376,6 +463,14 @@ class PuttockThwaiteModel(ContactModel):
 @register
 class JohnsonModel(ContactModel):
     """Johnson-type law, Li & Popov 2017 Eq. 4, with constant c (option, default 1).
+
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float or str, optional
+        The constant of Eq. 4 (default 1, Johnson 1985; 0.72, 0.572 or any number) [-].
 
     Examples
     --------
@@ -399,8 +494,13 @@ class JohnsonModel(ContactModel):
         who = "Johnson 1985" if self.c == 1.0 else (
             "other authors cited by Li & Popov" if self.c in (0.72, 0.572)
             else "user-given constant")
-        return {"model": self.label,
-                "equation": f"Li & Popov 2017, Eq. 4 with c = {self.c:g} ({who})"}
+        return self._with_measured_error(
+            {"model": self.label,
+             "equation": f"Li & Popov 2017, Eq. 4 with c = {self.c:g} ({who})"})
+
+    @property
+    def accuracy_tag(self):
+        return "johnson_c" + f"{self.c:g}".replace(".", "p")
 
     def force(self, depth):
         return _c.johnson_force(depth, self.radius, self.length, self.estar, c=self.c)
@@ -423,6 +523,14 @@ class JohnsonModel(ContactModel):
 class KunzModel(ContactModel):
     """Kunz & de Maria's linear law F = c E* L d (option c, default 0.175).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+    c : float, optional
+        Coefficient of F = c E* L d, 0 < c < inf (default 0.175) [-].
+
     Examples
     --------
     >>> m = KunzModel(5e-3, 10e-3, 115.38e9)
@@ -442,9 +550,14 @@ class KunzModel(ContactModel):
 
     @property
     def provenance(self):
-        return {"model": self.label,
-                "equation": "Kunz & de Maria 2002 (experiment, parallel cylinders), "
-                            "F = c E* L d, as cited by Li & Popov 2017"}
+        return self._with_measured_error(
+            {"model": self.label,
+             "equation": "Kunz & de Maria 2002 (experiment, parallel cylinders), "
+                         "F = c E* L d, as cited by Li & Popov 2017"})
+
+    @property
+    def accuracy_tag(self):
+        return "kunz" if self.c == _c.KUNZ_C else None
 
     def force(self, depth):
         return _c.kunz_force(depth, self.length, self.estar, self.c)
@@ -468,8 +581,9 @@ class _SteelModel(ContactModel):
 
     @property
     def provenance(self):
-        return {"model": self.label, "equation": self._source,
-                "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"}
+        return self._with_measured_error(
+            {"model": self.label, "equation": self._source,
+             "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"})
 
     def check_applicable(self):
         _c.STEEL_ESTAR_RANGE.check(self.estar, hint=_c._STEEL_HINT)
@@ -494,6 +608,12 @@ class _SteelModel(ContactModel):
 class PalmgrenModel(_SteelModel):
     """Palmgren's empirical roller-raceway formula (one contact, steel only).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> f"{PalmgrenModel(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
@@ -502,6 +622,7 @@ class PalmgrenModel(_SteelModel):
 
     key = "palmgren"
     label = "Palmgren"
+    accuracy_tag = "palmgren"
     _depth_fn = staticmethod(_c.palmgren_depth)
     _force_fn = staticmethod(_c.palmgren_force)
     _source = "Palmgren (1959): d [mm] = 3.84e-5 F[N]^0.9 / L[mm]^0.8, one contact"
@@ -511,6 +632,12 @@ class PalmgrenModel(_SteelModel):
 class ISO16281Model(_SteelModel):
     """ISO/TS 16281 per-contact roller deflection (steel only).
 
+    Parameters
+    ----------
+    radius, length, estar : float
+        Cylinder radius R [m], length L [m] and effective modulus E* [Pa] (Li & Popov 2017,
+        Eq. 3), each 0 < value < inf, as for :class:`ContactModel`.
+
     Examples
     --------
     >>> f"{ISO16281Model(5e-3, 10e-3, 115.38e9).depth(1e3) * 1e6:.2f} um"
@@ -519,6 +646,7 @@ class ISO16281Model(_SteelModel):
 
     key = "iso16281"
     label = "ISO/TS 16281"
+    accuracy_tag = "iso16281"
     _depth_fn = staticmethod(_c.iso16281_depth)
     _force_fn = staticmethod(_c.iso16281_force)
     _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
@@ -552,8 +680,8 @@ class UniversalModel(ContactModel):
 
     Notes
     -----
-    The curve :math:`\Psi` and its inverses are :class:`linecontact.universal.UniversalCurve`
-    (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
+    The curve :math:`\Psi` and its inverses are
+    :class:`linecontact.universal.UniversalCurve` (the theory: docs/theory.md, sections 'Self-similarity' and 'BEM').
     Valid for any L/R and for 0 < d <= min(d~_max L^2/R, 0.15 R): d~_max is the
     table's largest dimensionless depth (30 for the shipped table), and %(DR)s is the
     range over which the accuracy study compared the models, within which the parabolic
@@ -671,6 +799,58 @@ class UniversalModel(ContactModel):
 
 
 # --------------------------------------------------------------------------------------
+ACCURACY_TABLE = "model_accuracy"
+_NOT_APPLICABLE, _NO_ANSWER = 98.0, 99.0   # flags of tables/model_accuracy.csv
+_ACCURACY_CACHE: dict = {}
+
+
+def _accuracy_table():
+    """tables/model_accuracy.csv, read once per file version; None if absent."""
+    try:
+        path = table_path(ACCURACY_TABLE)
+    except FileNotFoundError:
+        return None
+    key = (str(path), os.stat(path).st_mtime_ns)
+    if key not in _ACCURACY_CACHE:
+        _ACCURACY_CACHE[key] = read_table(ACCURACY_TABLE)
+    return _ACCURACY_CACHE[key]
+
+
+def _measured_error(tag, length_over_radius):
+    """Text: range of the measured F and k errors of model `tag` at the study's L/R
+    rows bracketing `length_over_radius` (see :attr:`ContactModel.measured_error`)."""
+    table = _accuracy_table()
+    if table is None:
+        return (f"not measured: tables/{ACCURACY_TABLE}.csv is missing "
+                "(python -m tools.build_tables accuracy)")
+    cols = table.columns
+    if f"F_err_{tag}" not in cols:
+        return f"not measured: tables/{ACCURACY_TABLE}.csv has no column F_err_{tag}"
+    grid = np.unique(cols["L_over_R"])
+    q = length_over_radius
+    if not grid[0] * (1 - 1e-9) <= q <= grid[-1] * (1 + 1e-9):
+        return (f"not measured at L/R = {q:.3g}: the accuracy study covers "
+                f"L/R {grid[0]:g} to {grid[-1]:g}")
+    lo = grid[grid <= q * (1 + 1e-9)].max()
+    hi = grid[grid >= q * (1 - 1e-9)].min()
+    rows = (cols["L_over_R"] == lo) | (cols["L_over_R"] == hi)
+    eF, ek = cols[f"F_err_{tag}"][rows], cols[f"k_err_{tag}"][rows]
+    valid = eF < _NOT_APPLICABLE
+    where = f"L/R = {lo:g}" + (f" and {hi:g}" if hi != lo else "")
+    if not valid.any():
+        return f"not measured: the model does not apply (or has no answer) at {where}"
+    d = cols["d_over_R"][rows][valid]
+
+    def rng(e):
+        return f"{e.min() * 100:+.2g} % to {e.max() * 100:+.2g} %"
+
+    text = (f"against the BEM at {where}, d/R {d.min():.2g} to {d.max():.2g}: "
+            f"F {rng(eF[valid])}, k {rng(ek[valid])}")
+    if np.any(eF == _NO_ANSWER):
+        text += "; no answer at the other depths"
+    return text + f" (tables/{ACCURACY_TABLE}.csv)"
+
+
 def available_models():
     """Registered model keys, sorted.
 
@@ -712,6 +892,11 @@ def get_model(key, radius, length, estar, **options):
     FileNotFoundError
         The model's table is missing (the message names the file).
 
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
+
     Examples
     --------
     >>> get_model("johnson", 5e-3, 10e-3, 115.38e9, c=0.572).label
@@ -751,6 +936,11 @@ def standard_models(radius, length, estar):
     Returns
     -------
     list of ContactModel
+
+    Notes
+    -----
+    Valid for 0 < R, L, E* < inf (checked at construction); whether a model applies
+    to that cylinder (L/R in its table, steel E*) is checked when it is evaluated.
 
     Examples
     --------

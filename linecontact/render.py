@@ -18,7 +18,8 @@ import math
 
 import numpy as np
 
-from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS
+from .calc_tangential import NOTES as _TANGENTIAL_NOTES
+from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS, _model_id
 
 __all__ = ["PROG", "fmt", "unit", "scale", "columns_of", "json_header", "table_text",
            "one_json", "write"]
@@ -33,6 +34,8 @@ NOTES = {
     "flags": "flags: the row's geometry is outside what the models cover: d > 0.15 R "
              "(beyond the range of the BEM study behind the tables and the parabolic "
              "gap) or Hertz half-width b > L/2 (not a line contact).",
+    "tangential": _TANGENTIAL_NOTES["tangential"],
+    "creep": _TANGENTIAL_NOTES["creep"],
     "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
               "the same force, roller_stiffness the two contacts in series; the depth "
               "columns of one contact are per contact.",
@@ -44,6 +47,11 @@ def fmt(value, digits=4):
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return "-"
     return f"{value:.{digits}g}"
+
+
+def _fmt_column(values):
+    """:func:`fmt` of every element of a float array (a list of str)."""
+    return [format(v, ".4g") if v == v else "-" for v in np.asarray(values, float).tolist()]
 
 
 def unit(field, si):
@@ -72,6 +80,7 @@ def columns_of(results, given):
     for c in cols:
         if c not in seen:
             seen.append(c)
+    seen += [c for c in getattr(results, "extra", []) if c not in seen]
     if results.deviation:
         seen.append("deviation")
     return seen
@@ -141,12 +150,27 @@ def _case_line(cases, present, si):
                  f"{q('radius', 'outer_raceway')}")
     L_over_R = float(cases["length"][0] / cases["radius_eff"][0])
     line += f", L = {q('length', 'length')}, L/R = {fmt(L_over_R)}, E* = {q('estar', 'estar')}"
-    if present["modulus"][0]:
-        line += f" (E1 = {q('estar', 'modulus')}, nu1 = {fmt(float(cases['poisson'][0]))}; "
+    material = cases.get("material")
+    body = material[0] if material is not None else None
+    if present["modulus"][0] or body is not None:
+        if body is None:
+            line += f" (E1 = {q('estar', 'modulus')}, "
+        elif present["prony"][0]:
+            line += (f" at t = 0 (viscoelastic body: Prony series of {body.moduli.size} "
+                     f"terms, E0 = {fmt(body.instantaneous * (1 if si else 1e-9))} "
+                     f"{unit('estar', si)}, E_inf = "
+                     f"{fmt(body.long_term * (1 if si else 1e-9))} {unit('estar', si)}, ")
+        else:
+            line += (f" at t = 0 (viscoelastic body: E0 = {q('estar', 'instantaneous_modulus')}"
+                     f", E_inf = {q('estar', 'long_term_modulus')}, tau = "
+                     f"{fmt(float(cases['relaxation_time'][0]))} s, ")
+        line += f"nu1 = {fmt(float(cases['poisson'][0]))}; "
         if present["modulus2"][0]:
             line += f"E2 = {q('estar', 'modulus2')}, nu2 = {fmt(float(cases['poisson2'][0]))})"
         else:
             line += "rigid roller)"
+    if present["friction"][0]:
+        line += f", mu = {fmt(float(cases['friction'][0]))}"
     return line
 
 
@@ -155,22 +179,29 @@ def table_text(cases, present, results, si):
     given = str(cases["given"][0])
     cols = columns_of(results, given)
     header = ["model"] + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols] + ["note"]
-    body = []
     n = len(cases["value"])
+    columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
-        for i in range(n):
-            note = "; ".join(t for t in (s["flags"][i], s["note"][i]) if t)
-            body.append([s["label"][i]] + [fmt(scale(c, float(f[c][i]), si)) for c in cols]
-                        + [note])
-    widths = [max(len(r[i]) for r in [header] + body) for i in range(len(header) - 1)]
+        columns[0] += s["label"][:n]
+        for k, c in enumerate(cols, start=1):
+            columns[k] += _fmt_column(scale(c, f[c], si))
+        columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
+    widths = [max(len(h), max(map(len, col), default=0))
+              for h, col in zip(header[:-1], columns[:-1])]
     lines = [_case_line(cases, present, si), ""]
-    for r in [header] + body:
+    rows = [header] + [list(r) for r in zip(*columns)]
+    for r in rows:
         cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
         lines.append("  ".join(cells + [r[-1]]).rstrip())
     lines += ["", "Note: " + P0_NOTE]
     if results.roller:
         lines.append("Note: " + NOTES["roller"])
+    extra = getattr(results, "extra", [])
+    if any(c.startswith(("kt_", "shift_")) for c in extra):
+        lines.append("Note: " + NOTES["tangential"])
+    if "depth_long_term" in extra:
+        lines.append("Note: " + NOTES["creep"])
     return "\n".join(lines) + "\n"
 
 
@@ -188,16 +219,23 @@ def one_json(argv, cases, present, results):
     inputs = {
         k: float(cases[k][0])
         for k in ("radius", "radius2", "radius_eff", "length", "estar", "modulus", "poisson",
-                  "modulus2", "poisson2", "inner_raceway", "outer_raceway")
+                  "modulus2", "poisson2", "inner_raceway", "outer_raceway", "friction",
+                  "instantaneous_modulus", "long_term_modulus", "relaxation_time")
         if k in ("radius", "radius_eff", "length", "estar") or present[k][0]
     }
+    if present["prony"][0]:
+        m = cases["material"][0]
+        inputs["prony"] = None if m is None else {
+            "long_term_modulus": m.long_term, "moduli": m.moduli.tolist(),
+            "times": m.times.tolist()}
+    for k in ("tangential_load", "time"):
+        if present[k][0]:
+            vals = [float(x) for x in cases[k]]
+            inputs[k] = vals if len(set(vals)) > 1 else vals[0]
     values = [float(v) for v in cases["value"]]
     inputs[given] = values if len(values) > 1 else values[0]
     doc = json_header(argv, results)
     doc["inputs"] = inputs
-    by_id = {}
-    for s in results.sets:
-        by_id[s["id"]] = s
     entries = []
     for entry, s in zip(_entries(doc["models"], results), results.sets):
         rows = []
@@ -216,7 +254,8 @@ def _entries(model_docs, results):
     by_id = {m["id"]: m for m in model_docs}
     out = []
     for s in results.sets:
-        m = by_id.get(s["id"])
+        model = s.get("model")
+        m = by_id.get(_model_id(model) if model is not None else s["id"])
         if m is None:
             label = s["label"][0] or s["id"]
             m = {"key": label, "label": label, "id": s["id"], "provenance": None}

@@ -78,6 +78,7 @@ __all__ = [
     "gross_slip_shift",
     "tangential_stiffness",
     "tangential_force",
+    "tangential_shift",
     "TangentialContact",
     "CylinderTangentialTable",
     "cylinder_tangential_table",
@@ -113,7 +114,7 @@ def shear_modulus(modulus, poisson):
     Parameters
     ----------
     modulus : float or array_like
-        Young's modulus E [Pa]; ``inf`` for a rigid body.
+        Young's modulus E, ``inf`` for a rigid body [Pa].
     poisson : float or array_like
         Poisson ratio nu [-].
 
@@ -155,9 +156,9 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     poisson1 : float or array_like
         Poisson ratio nu1 of the first body [-].
     modulus2 : float or array_like, optional
-        Young's modulus E2 of the second body [Pa]; ``inf`` (default) for a rigid body.
+        Young's modulus E2 of the second body, ``inf`` (default) for a rigid body [Pa].
     poisson2 : float or array_like, optional
-        Poisson ratio nu2 of the second body [-] (irrelevant when E2 = inf).
+        Poisson ratio nu2 of the second body (irrelevant when E2 = inf) [-].
 
     Returns
     -------
@@ -205,7 +206,7 @@ def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     Parameters
     ----------
     modulus1, modulus2 : float or array_like
-        Young's moduli [Pa]; ``inf`` for a rigid body (not both).
+        Young's moduli, ``inf`` for a rigid body (not both) [Pa].
     poisson1, poisson2 : float or array_like
         Poisson ratios in [0, 0.5] [-].
 
@@ -288,7 +289,7 @@ def mdr_stiffness_ratio(poisson):
     Parameters
     ----------
     poisson : float or array_like
-        Poisson ratio nu [-] (or :func:`equivalent_poisson` of two bodies).
+        Poisson ratio nu (or :func:`equivalent_poisson` of two bodies) [-].
 
     Returns
     -------
@@ -451,9 +452,9 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     model : linecontact.models.ContactModel
         Any normal-contact model F(d).
     depth : float or array_like
-        Normal depth d [m] (held constant while shifting).
+        Normal depth d, held constant while shifting [m].
     shift : float or array_like
-        Monotonic tangential shift u from the unloaded state [m]; broadcasts with depth.
+        Monotonic tangential shift u from the unloaded state; broadcasts with depth [m].
     friction : float
         Coulomb friction coefficient mu [-].
     gstar : float
@@ -489,6 +490,77 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     d = check_positive("depth", depth, "m")
     r = _ratio(gstar, model.estar)
     return out(_ft(model, d, shift, _friction(friction), r, beyond))
+
+
+def tangential_shift(model, depth, tangential_force, friction, gstar, *, ratio=None):
+    r"""Shift u(F_t) of the Cattaneo-Mindlin law of any model at constant normal depth.
+
+    .. math::
+        u = \frac{\mu}{r}\left[d - d\!\left(F(d) - \frac{|F_t|}{\mu}\right)\right]
+            \operatorname{sign} F_t, \qquad r = \frac{G^*}{E^*}
+
+    the inverse of :func:`tangential_force` through the model's d(F); u* = mu d/r at
+    |F_t| = mu F(d).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model.
+    depth : float or array_like
+        Normal depth d [m].
+    tangential_force : float or array_like
+        Tangential force F_t, |F_t| <= mu F(d); broadcasts with depth [N].
+    friction : float or array_like
+        Coulomb friction coefficient mu [-].
+    gstar : float
+        Effective shear modulus G* [Pa].
+    ratio : float or array_like, optional
+        Stiffness ratio k_t/k_n to use instead of G*/E* (e.g. the cylinder's BEM
+        value in one direction, :func:`cylinder_stiffness_ratios`) [-].
+
+    Returns
+    -------
+    float or ndarray
+        u [m].
+
+    Raises
+    ------
+    OutOfRangeError
+        |F_t| > mu F(d): no static equilibrium, the contact slides (gross slip).
+
+    Notes
+    -----
+    Valid for |F_t| <= mu F(d), mu > 0, 2/3 <= G*/E* <= 1 and the model's depth range.
+    Exact for axisymmetric contacts and for any shape at nu = 0.
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("kunz", 5e-3, 10e-3, 1e11)
+    >>> u = tangential_shift(m, 1e-6, 0.25 * 0.2 * m.force(1e-6), 0.2, 1e11)
+    >>> f"{u * 1e9:.1f} nm"
+    '50.0 nm'
+
+    References
+    ----------
+    R. D. Mindlin (1949); Popov & Hess (2015), chapter 4.
+    """
+    d = check_positive("depth", depth, "m")
+    mu = _friction(friction)
+    r = _ratio(gstar, model.estar) if ratio is None else check_positive("ratio", ratio)
+    Ft = np.asarray(tangential_force, dtype=float)
+    d, Ft, mu, r = np.broadcast_arrays(d, Ft, mu, r)
+    F = _law(model, d)
+    fmax = mu * F
+    check_interval("tangential_force", np.abs(Ft), 0.0, fmax * (1 + 1e-12), unit="N",
+                   hint="more than mu F: the contact slides (gross slip), no static "
+                        "equilibrium")
+    rest = F - np.minimum(np.abs(Ft), fmax) / mu
+    z = np.zeros(rest.shape)
+    pos = rest > F * 1e-15
+    if np.any(pos):
+        z[pos] = model.depth(rest[pos])
+    return out(np.sign(Ft) * mu * (d - np.minimum(z, d)) / r)
 
 
 def _check_beyond(beyond):
@@ -546,9 +618,9 @@ class TangentialContact:
     gstar : float
         Effective shear modulus G* (:func:`effective_shear_modulus`) [Pa].
     depth : float, optional
-        Normal depth d [m] (give depth or force).
+        Normal depth d (give depth or force) [m].
     force : float, optional
-        Normal force F [N]; the depth is the model's d(F).
+        Normal force F; the depth is the model's d(F) [N].
     method : {"mdr", "bem"}, optional
         ``"mdr"`` (default): r = G*/E*. ``"bem"``: r = the cylinder's k_t/k_n in
         `direction` from the BEM table (straight-cylinder models only), and the
@@ -959,6 +1031,17 @@ class CylinderTangentialTable:
         nu = np.asarray(nu, dtype=float)
         return out(c * 2 * (1 - nu) / (2 - nu))
 
+    def value(self, column, nu, d_tilde):
+        """Any column of the table [its unit] interpolated at (nu, d~) (e.g. the study's
+        measured partial-slip error ``ft_err_scaled_across``)."""
+        if column not in self._grid:
+            raise OutOfRangeError("column", column, "one of " + ", ".join(self._grid))
+        v = self._interp(column, nu, d_tilde)
+        if column.startswith("kt_kn_"):
+            nu = np.asarray(nu, dtype=float)
+            v = v * 2 * (1 - nu) / (2 - nu)
+        return out(v)
+
     @property
     def has_slip_correction(self):
         """True if the table carries a partial-slip correction (both directions)."""
@@ -980,7 +1063,11 @@ def _cached_table(name):
 
 
 def cylinder_tangential_table(name=TANGENTIAL_TABLE, directory=None):
-    """The :class:`CylinderTangentialTable` of ``tables/<name>.csv`` (cached).
+    r"""The :class:`CylinderTangentialTable` of ``tables/<name>.csv`` (cached).
+
+    .. math:: \frac{k_t}{k_n} = c(\nu, \ln\tilde d)\,\frac{2(1-\nu)}{2-\nu}
+
+    with c the table's correction factor of the MDR, interpolated.
 
     Parameters
     ----------
@@ -1046,7 +1133,10 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
     -------
     dict
         ``across``, ``along``, ``mdr`` (k_t/k_n [-]), ``mdr_error_across``,
-        ``mdr_error_along`` (MDR/BEM - 1 [-]), ``nu`` and ``d_tilde`` [-].
+        ``mdr_error_along`` (MDR/BEM - 1 [-]), ``nu`` and ``d_tilde`` [-]; if the table
+        has the study's columns ``ft_err_scaled_{across,along}``, also
+        ``slip_error_across``, ``slip_error_along``: the largest difference between
+        the BEM's partial-slip curve and the law with this ratio, over mu F [-].
 
     Notes
     -----
@@ -1090,7 +1180,12 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
     across = table.ratio("across", nu, d_tilde)
     along = table.ratio("along", nu, d_tilde)
     mdr = mdr_stiffness_ratio(nu)
-    return {"across": across, "along": along, "mdr": out(np.broadcast_to(mdr, np.shape(d))),
-            "mdr_error_across": out(mdr / np.asarray(across) - 1),
-            "mdr_error_along": out(mdr / np.asarray(along) - 1),
-            "nu": nu, "d_tilde": out(d_tilde)}
+    res = {"across": across, "along": along, "mdr": out(np.broadcast_to(mdr, np.shape(d))),
+           "mdr_error_across": out(mdr / np.asarray(across) - 1),
+           "mdr_error_along": out(mdr / np.asarray(along) - 1),
+           "nu": nu, "d_tilde": out(d_tilde)}
+    for side in _DIRECTIONS:   # the study's measured error of the partial-slip law
+        column = f"ft_err_scaled_{side}"
+        if column in table._grid:
+            res[f"slip_error_{side}"] = table.value(column, nu, d_tilde)
+    return res

@@ -30,6 +30,9 @@ Outside the table:
 - beyond its largest depth, every function raises
   :class:`~linecontact.validity.OutOfRangeError`.
 
+The model built on the curve, registered under ``"universal"`` like every other model,
+is :class:`linecontact.models.UniversalModel`.
+
 The parabolic gap is exact only for d << R (soft rollers pressed deep need the
 circular profile); the accuracy study in tables/README.md covers d/R <= 0.15.
 """
@@ -40,9 +43,9 @@ import os
 
 import numpy as np
 
+from . import tables as _tables
 from ._numerics import NotAKnotSpline
 from .lipopov import _u_from_depth_ratio
-from . import tables as _tables
 from .tables import read_table, table_path
 from .validity import Interval, check_interval
 
@@ -111,8 +114,10 @@ class UniversalCurve:
         flat = np.atleast_1d(d).ravel()
         res = np.empty_like(flat)
         small = flat < self.d_min
-        res[~small] = on_table(flat[~small])
-        res[small] = below_table(flat[small])
+        if not small.all():
+            res[~small] = on_table(flat[~small])
+        if small.any():
+            res[small] = below_table(flat[small])
         return res.reshape(d.shape)
 
     def psi(self, d_tilde):

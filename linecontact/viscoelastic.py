@@ -59,6 +59,7 @@ __all__ = [
     "read_prony_series",
     "force_history",
     "creep_depth",
+    "step_creep_depth",
 ]
 
 
@@ -256,7 +257,9 @@ def _one(v, name):
 
 
 def read_prony_series(path, long_term=None):
-    """Read a Prony series from a CSV file with columns ``tau_s`` and ``E_Pa``.
+    r"""Read a Prony series from a CSV file with columns ``tau_s`` and ``E_Pa``.
+
+    .. math:: E(t) = E_\infty + \sum_i E_i\,e^{-t/\tau_i}
 
     File format: optional ``# key: value`` comment lines (among them, optionally,
     ``# E_inf: VALUE`` in Pa), then a header row naming the columns ``tau_s`` and
@@ -267,8 +270,8 @@ def read_prony_series(path, long_term=None):
     path : path-like
         The CSV file.
     long_term : float, optional
-        Long-term modulus E_inf [Pa]; needed if the file has no ``# E_inf:`` line
-        (if both are given they must agree to 1e-12).
+        Long-term modulus E_inf, needed if the file has no ``# E_inf:`` line (if
+        both are given they must agree to 1e-12) [Pa].
 
     Returns
     -------
@@ -287,7 +290,7 @@ def read_prony_series(path, long_term=None):
     Examples
     --------
     >>> import os, tempfile
-    >>> text = "# material: test\\n# E_inf: 1e9\\ntau_s,E_Pa\\n0.1,2e9\\n10,1e9\\n"
+    >>> text = "# material: test\n# E_inf: 1e9\ntau_s,E_Pa\n0.1,2e9\n10,1e9\n"
     >>> with tempfile.TemporaryDirectory() as d:
     ...     p = os.path.join(d, "prony.csv")
     ...     _ = open(p, "w").write(text)
@@ -439,10 +442,10 @@ def force_history(model, material, time, depth, *, unloading="raise"):
     material : PronySeries
         Relaxation function E*(t) (:class:`StandardLinearSolid` or a Prony series).
     time : array_like
-        Sample times t_0 <= t_1 <= ... [s]; the depth is 0 before t_0.
+        Sample times t_0 <= t_1 <= ...; the depth is 0 before t_0 [s].
     depth : array_like
-        Depth d at those times [m] (same length; a single value = held constant from
-        t_0, a step).
+        Depth d at those times (same length; a single value = held constant from
+        t_0, a step) [m].
     unloading : {"raise", "warn"}, optional
         A decreasing depth (shrinking contact) is refused (default) or continued by
         the Lee-Radok integral with a :class:`RuntimeWarning` (then not exact).
@@ -497,10 +500,10 @@ def creep_depth(model, material, time, force, *, unloading="raise"):
     material : PronySeries
         The material; its creep function J*(t) is used.
     time : array_like
-        Sample times t_0 <= t_1 <= ... [s]; the force is 0 before t_0.
+        Sample times t_0 <= t_1 <= ...; the force is 0 before t_0 [s].
     force : float or array_like
-        Normal force F [N]: one value (applied at t_0 and held: creep) or one per
-        sample (piecewise linear between samples).
+        Normal force F: one value (applied at t_0 and held: creep) or one per
+        sample (piecewise linear between samples) [N].
     unloading : {"raise", "warn"}, optional
         A decreasing depth (when the force drops faster than the material creeps) is
         refused (default) or continued by Lee-Radok with a :class:`RuntimeWarning`.
@@ -544,3 +547,51 @@ def creep_depth(model, material, time, force, *, unloading="raise"):
         d[pos] = model.depth(y[pos] * model.estar)
     _shrinking(t, d, unloading, "the force decreases faster than the material creeps")
     return d
+
+
+def step_creep_depth(model, material, force, time):
+    r"""Depth at time t under a force F applied at t = 0 and held (creep), vectorised.
+
+    .. math:: d(t) = F_1^{-1}\bigl(F\,J^*(t)\bigr)
+
+    the closed form of Lee & Radok's creep integral for a step (any model, exact while
+    the contact grows, which it does under a held force: J* increases).
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        Any normal-contact model; F1 = F/E* of its law, inverted by its d(F).
+    material : object
+        Anything with ``creep(t)`` returning J*(t) [1/Pa], e.g. a :class:`PronySeries`.
+    force : float or array_like
+        Held normal force F > 0 [N].
+    time : float or array_like
+        Time since the load was applied, t >= 0; broadcasts with force [s].
+
+    Returns
+    -------
+    float or ndarray
+        d(t) [m].
+
+    Notes
+    -----
+    Valid for t >= 0, F > 0 and while F E*_model J*(t) stays inside the model's force
+    range (at long times the depth is that of the elastic law at E* = E_inf).
+
+    Examples
+    --------
+    >>> from linecontact.models import get_model
+    >>> m = get_model("universal", 5e-3, 10e-3, 1e9)
+    >>> d = step_creep_depth(m, StandardLinearSolid(3e9, 1e9, 10.0), 1e3, [0.0, 30.0])
+    >>> [f"{x * 1e6:.2f} um" for x in d]
+    ['82.58 um', '168.03 um']
+
+    References
+    ----------
+    E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444.
+    """
+    F = check_positive("force", force, "N")
+    t = check_interval("time", time, 0.0, np.inf, high_open=True, unit="s")
+    F, t = np.broadcast_arrays(F, t)
+    J = np.asarray(material.creep(t), dtype=float)
+    return out(np.asarray(model.depth(F * J * model.estar), dtype=float))

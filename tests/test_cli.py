@@ -40,6 +40,8 @@ COMMANDS = {
     # python -m linecontact, with -X importtime: what a one-case call imports
     "units_importtime": [*IMPORTTIME, *ONE],
     "bare_json_importtime": [*IMPORTTIME, *SI_ONE, "--json"],
+    # a unit name outside the built-in table (1e8 dyn = 1 kN): pint is asked for it
+    "dyne_json_importtime": [*IMPORTTIME, *CASE, "--load", "1e8 dyn", "--json"],
     "inch_json": [
         "calc",
         "--radius",
@@ -365,14 +367,21 @@ def test_python_dash_m_is_the_same_command(results):
     assert _ok(results, "units_importtime").stdout == _ok(results, "one").stdout
 
 
-def test_one_case_imports_pint_only_for_unit_strings_and_never_pandas(results):
-    """Start-up: a one-case call in bare SI numbers loads neither pint nor pandas; a
-    call with unit strings loads pint, still no pandas."""
+def test_one_case_imports_pint_only_for_unusual_units_and_never_pandas(results):
+    """Start-up: a one-case call in bare SI numbers or in the built-in units (mm, GPa,
+    kN) loads neither pint nor pandas; a unit outside the built-in table (dyn) loads
+    pint, still no pandas, and converts to the same case (1e8 dyn = 1 kN)."""
     bare = _imported(_ok(results, "bare_json_importtime").stderr)
     units = _imported(_ok(results, "units_importtime").stderr)
+    dyne = _imported(_ok(results, "dyne_json_importtime").stderr)
     assert "linecontact" in bare and "numpy" in bare  # the log is really there
     assert "pint" not in bare and "pandas" not in bare
-    assert "pint" in units and "pandas" not in units
+    assert "pint" not in units and "pandas" not in units
+    assert "pint" in dyne and "pandas" not in dyne
+    a = json.loads(_ok(results, "dyne_json_importtime").stdout)["models"]
+    b = _json(results, "one_json")["models"]
+    for ma, mb in zip(a, b):
+        assert _close(ma["rows"][0]["depth"], mb["rows"][0]["depth"], 1e-12), ma["label"]
 
 
 # ---------------------------------------------------------------------------------------
@@ -526,3 +535,282 @@ def test_bad_input_is_one_line_naming_parameter_value_and_range(results, name):
 def test_bad_input_message_states_the_valid_range(results, name):
     """Every message about a value says what would have been valid."""
     assert "valid:" in results[name].stderr
+
+
+# ---------------------------------------------------------------------------------------
+# in-process: the same main() as the command, called directly (no start-up per test)
+
+
+def _main(capsys, *argv):
+    """(status, stdout, stderr) of linecontact.cli.main(argv)."""
+    from linecontact.cli import main
+
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def _main_json(capsys, *argv):
+    status, out, err = _main(capsys, *argv, "--json")
+    assert status == 0, err
+    return json.loads(out)
+
+
+def _write_csv(path, header, rows):
+    with open(path, "w", newline="", encoding="utf-8") as fh:
+        w = csv.writer(fh)
+        w.writerow(header)
+        w.writerows(rows)
+    return str(path)
+
+
+STEEL_CASE = ("calc", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.3")
+
+
+@pytest.mark.parametrize("argv, parameter", [
+    (("--radius", "1,5mm", "--load", "1kN"), "--radius"),
+    (("--radius", "5mm", "--load", "1kN+1kN"), "--load"),
+    (("--radius", "5mm", "--load", "1e999N"), "--load"),
+    (("--radius", "5mm", "--load", "1e-320N"), "--load"),
+    (("--radius", "5mm", "--load", "nan"), "--load"),
+    (("--radius", "5mm", "--diameter", "10mm", "--load", "1kN"), "--diameter"),
+    (("--radius", "5mm", "--radius2", "-4mm", "--load", "1kN"), "--radius2"),
+    (("--radius", "5mm", "--inner-raceway", "20mm", "--load", "1kN"), "--outer-raceway"),
+    (("--radius", "5mm", "--inner-raceway", "20mm", "--outer-raceway", "30mm",
+      "--depth", "1um"), "--depth"),
+    (("--radius", "5mm", "--load", "1kN", "--model", "li-popov:extrapolate=maybe"),
+     "extrapolate"),
+    (("--radius", "5mm", "--load", "1kN", "--model", "johnson:nosuch=1"), "--model"),
+])
+def test_bad_values_exit_2_with_one_line(capsys, argv, parameter):
+    """Every refused input (decimal comma, expression, overflow, subnormal, NaN,
+    conflicting or missing geometry, a yes/no option that is neither) is one line on
+    stderr naming the parameter and the valid range, status 2, nothing on stdout."""
+    status, out, err = _main(capsys, *STEEL_CASE, *argv)
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and parameter in err and "valid" in err, err
+
+
+def test_no_means_false_for_a_yes_no_model_option(capsys):
+    """extrapolate=no is False (Eq. 11 refuses L/R = 2, status 2); extrapolate=yes
+    computes; 'no' used to mean True."""
+    base = (*STEEL_CASE, "--radius", "5mm", "--load", "1kN", "--model")
+    assert _main(capsys, *base, "li-popov:coefficients=eq11:extrapolate=no")[0] == 2
+    doc = _main_json(capsys, *base, "li-popov:coefficients=eq11:extrapolate=yes")
+    assert doc["models"][0]["rows"][0]["depth"] > 0
+
+
+def test_unwritable_output_names_the_file(capsys, tmp_path):
+    """-o into a missing directory: one line naming the file and why (was 'None: None')."""
+    target = tmp_path / "missing" / "out.csv"
+    status, out, err = _main(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN",
+                             "-o", str(target))
+    assert status == 2 and str(target) in err and "No such file" in err
+    assert "None" not in err
+
+
+def test_diameter_is_twice_the_radius(capsys):
+    """--diameter 10mm gives exactly the results of --radius 5mm."""
+    a = _main_json(capsys, *STEEL_CASE, "--diameter", "10mm", "--load", "1kN")
+    b = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN")
+    assert [m["rows"] for m in a["models"]] == [m["rows"] for m in b["models"]]
+
+
+def test_second_radius_gives_the_effective_radius(capsys):
+    """--radius2 R2: every model sees 1/R = 1/R1 + 1/R2 (two equal 5 mm cylinders act as
+    one of 2.5 mm on a flat; a 40 mm concave bore around a 6 mm roller as 7.0588 mm)."""
+    a = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--radius2", "5mm", "--load", "1kN")
+    b = _main_json(capsys, *STEEL_CASE, "--radius", "2.5mm", "--load", "1kN")
+    assert math.isclose(a["inputs"]["radius_eff"], 2.5e-3, rel_tol=1e-15)
+    for ma, mb in zip(a["models"], b["models"]):
+        for ra, rb in zip(ma["rows"], mb["rows"]):
+            assert ra["depth"] == rb["depth"] or _close(ra["depth"], rb["depth"], 1e-14)
+    c = _main_json(capsys, *STEEL_CASE, "--radius", "6mm", "--radius2", "-40mm", "--load",
+                   "1kN")
+    assert math.isclose(c["inputs"]["radius_eff"], 1 / (1 / 6e-3 - 1 / 40e-3), rel_tol=1e-14)
+
+
+def test_hertz_peak_pressure_is_eq1_force_over_strip(capsys):
+    """p0 = 2 F / (pi b L) with b of Eq. 1 (Johnson 1985, Eq. 4.45), for every row, and
+    the output says that a straight roller's end pressure is higher."""
+    status, text, _ = _main(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN")
+    assert "singular" in text and "p0" in text
+    doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "0.1kN:10kN:4")
+    for m in doc["models"]:
+        for row in m["rows"]:
+            p0 = 2 * row["force"] / (math.pi * row["half_width"] * 0.01)
+            assert _close(row["peak_pressure"], p0, 1e-12)
+
+
+def test_deviation_is_relative_to_the_best_estimate(capsys):
+    """The deviation column of a model is its depth over the default best estimate's
+    (the first standard model) minus 1, also when only other models are asked for."""
+    doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN",
+                     "--model", "johnson,puttock-thwaite")
+    best = _library()[0].depth(1000.0)
+    for m in doc["models"]:
+        row = m["rows"][0]
+        assert _close(row["deviation"], row["depth"] / best - 1, 1e-12)
+    full = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN")
+    assert full["models"][0]["rows"][0]["deviation"] == 0.0
+
+
+def test_whole_roller_is_two_contacts_in_series(capsys):
+    """--inner-raceway/--outer-raceway: the roller's deflection is the sum of the two
+    contact depths at the same force (1/R = 1/R1 + 1/Ri and 1/R1 - 1/Ro), its stiffness
+    the series value; the per-contact depth column is not filled."""
+    from linecontact.models import get_model
+
+    doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--inner-raceway", "20mm",
+                     "--outer-raceway", "30mm", "--load", "2kN", "--model", "li-popov")
+    row = doc["models"][0]["rows"][0]
+    E = 210e9 / (1 - 0.09)
+    inner = get_model("li-popov", 1 / (1 / 5e-3 + 1 / 20e-3), 0.01, E)
+    outer = get_model("li-popov", 1 / (1 / 5e-3 - 1 / 30e-3), 0.01, E)
+    d = inner.depth(2000.0) + outer.depth(2000.0)
+    k = 1 / (1 / inner.stiffness_at_force(2000.0) + 1 / outer.stiffness_at_force(2000.0))
+    assert _close(row["roller_deflection"], d, 1e-12)
+    assert _close(row["roller_stiffness"], k, 1e-12)
+    assert row.get("depth") is None and "depth_inner" in row
+
+
+def test_poisson_half_is_allowed(capsys):
+    """nu = 0.5 (incompressible) is accepted: E* = E / (1 - 0.25) by Eq. 3."""
+    doc = _main_json(capsys, "calc", "--radius", "5mm", "--length", "10mm", "--modulus",
+                     "3MPa", "--poisson", "0.5", "--load", "1N")
+    assert math.isclose(doc["inputs"]["estar"], 3e6 / 0.75, rel_tol=1e-15)
+
+
+def test_geometry_flags_on_every_row_of_every_model(capsys):
+    """d > 0.15 R and b > L/2 are flagged on every model's row (not only the universal
+    curve's): a depth of 0.2 R, and a roller of R = 5 mm, L = 0.1 mm under 1 kN (Eq. 1:
+    b = 0.53 mm > 0.5 L)."""
+    doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--depth", "1mm")
+    assert all("d > 0.15 R" in m["rows"][0]["flags"] for m in doc["models"])
+    doc = _main_json(capsys, "calc", "--radius", "5mm", "--length", "0.1mm",
+                     "--modulus", "210GPa", "--poisson", "0.3", "--load", "1kN")
+    for m in doc["models"]:
+        row = m["rows"][0]
+        assert row["half_width"] > 0.5 * 0.1e-3 and "b > 0.5 L" in row["flags"]
+
+
+def test_batch_keeps_user_columns_named_like_results(capsys, tmp_path):
+    """A user's model, note, error and depth_um columns are written as they were; the
+    result columns then carry the prefix result_ (all of them, one consistent set)."""
+    path = _write_csv(tmp_path / "u.csv",
+                      ["name", "model", "note", "error", "depth_um", "radius", "load"],
+                      [["a", "mine", "keep me", "E", "1.0", "5mm", "1kN"],
+                       ["b", "", "x,y", "", "", "5mm", "2kN"]])
+    status, out, err = _main(capsys, "calc", path, "--length", "10mm", "--modulus",
+                             "210GPa", "--poisson", "0.3")
+    assert status == 0, err
+    rows = _csv(out)
+    assert [r["model"] for r in rows] == ["mine", ""]
+    assert [r["note"] for r in rows] == ["keep me", "x,y"]
+    assert [r["error"] for r in rows] == ["E", ""] and rows[0]["depth_um"] == "1.0"
+    assert all(r["result_error"] == "" and float(r["result_depth_um"]) > 0 for r in rows)
+
+
+def test_header_only_csv_is_a_clear_message(capsys, tmp_path):
+    """A CSV with a header and no rows: one line saying so, status 2."""
+    path = _write_csv(tmp_path / "h.csv", ["radius", "length", "load"], [])
+    status, out, err = _main(capsys, "calc", path)
+    assert status == 2 and "only a header row" in err and "Traceback" not in err
+
+
+def test_unexpected_exception_in_one_row_is_reported_in_that_row(capsys, tmp_path,
+                                                                 monkeypatch):
+    """A model raising an unexpected exception for one element: that row's error says
+    so, the other rows of the same cylinder (evaluated in the same vectorised call) are
+    computed and written."""
+    import numpy as np
+
+    from linecontact import models
+
+    original = models.ContactModel.evaluate
+
+    def flaky(self, *, force=None, depth=None):
+        if force is not None and np.any(np.asarray(force) == 777.0):
+            raise RuntimeError("boom")
+        return original(self, force=force, depth=depth)
+
+    monkeypatch.setattr(models.ContactModel, "evaluate", flaky)
+    loads = ["100N", "200N", "777N", "300N", "400N"]
+    path = _write_csv(tmp_path / "b.csv", ["load"], [[x] for x in loads])
+    status, out, err = _main(capsys, "calc", path, "--radius", "5mm", *STEEL_CASE[1:])
+    rows = _csv(out)
+    assert status == 2 and [r["load"] for r in rows] == loads
+    assert "RuntimeError: boom" in rows[2]["error"]
+    assert all(r["error"] == "" and float(r["depth_um"]) > 0 for i, r in enumerate(rows)
+               if i != 2)
+
+
+def test_batch_builds_one_model_per_distinct_cylinder(capsys, tmp_path, monkeypatch):
+    """Speed by construction: 300 rows on 3 distinct cylinders build each model 3 times
+    (plus a probe at R = 1 m that names the columns), not 300 times: the default model
+    alone in a default batch, the whole set with --model all."""
+    from linecontact import models
+
+    calls = []
+    original = models.ContactModel.__init__
+
+    def counting(self, radius, length, estar, **kw):
+        calls.append(radius)
+        original(self, radius, length, estar, **kw)
+
+    monkeypatch.setattr(models.ContactModel, "__init__", counting)
+    rows = [[r, f"{100 + i}N"] for i in range(100) for r in ("4mm", "5mm", "6mm")]
+    path = _write_csv(tmp_path / "c.csv", ["radius", "load"], rows)
+    for extra, per_set in (((), 1), (("--model", "all"), len(_library()))):
+        calls.clear()
+        status, out, err = _main(capsys, "calc", path, *STEEL_CASE[1:], *extra)
+        assert status == 0, err
+        assert len(_csv(out)) == 300
+        built = [r for r in calls if r != 1.0]  # R = 1 m: the probe naming the columns
+        assert sorted(set(built)) == [0.004, 0.005, 0.006]
+        assert len(built) == 3 * per_set, len(built)
+
+
+def test_batch_rows_equal_one_case_calls(capsys, tmp_path):
+    """Vectorised batch rows equal the one-case command for the same inputs (mixed
+    loads and depths, repeated and distinct cylinders, one refused row in between)."""
+    rows = [["5mm", "1kN", ""], ["5mm", "", "2um"], ["5mm", "1,5kN", ""],
+            ["6mm", "2kN", ""], ["5mm", "3kN", ""]]
+    path = _write_csv(tmp_path / "m.csv", ["radius", "load", "depth"], rows)
+    status, out, _ = _main(capsys, "calc", path, *STEEL_CASE[1:], "--si")
+    got = _csv(out)
+    assert status == 2 and "decimal comma" in got[2]["error"]
+    for (r, load, depth), g in zip(rows, got):
+        if g["error"]:
+            continue
+        given = ("--load", load) if load else ("--depth", depth)
+        one = _main_json(capsys, *STEEL_CASE, "--radius", r, *given, "--model", "universal")
+        ref = one["models"][0]["rows"][0]
+        assert _close(float(g["depth_m"]), ref["depth"], 1e-5)  # CSV keeps 6 digits
+        assert _close(float(g["force_N"]), ref["force"], 1e-5)
+
+
+def test_missing_table_is_named_not_none(capsys, monkeypatch):
+    """A table file that cannot be found while building a model: one line that names
+    it (it used to read 'None: None')."""
+    from linecontact import models
+
+    def missing(*a, **k):
+        raise FileNotFoundError("table 'universal_curve' not found in /nowhere/tables")
+
+    monkeypatch.setattr(models, "get_model", missing)
+    status, out, err = _main(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN",
+                             "--model", "universal")
+    assert status == 2 and "universal_curve" in err and "None" not in err
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
+    """--progress shows a bar on stderr (tqdm, or a plain line without it) and changes
+    nothing on stdout."""
+    path = _write_csv(tmp_path / "p.csv", ["load"], [[f"{100 + i}N"] for i in range(50)])
+    argv = ("calc", path, "--radius", "5mm", *STEEL_CASE[1:])
+    status, with_bar, err = _main(capsys, *argv, "--progress")
+    assert status == 0 and "50" in err
+    status, plain, err = _main(capsys, *argv, "--no-progress")
+    assert status == 0 and err == "" and plain == with_bar

@@ -335,5 +335,8 @@ def test_numpy_lambert_w_solves_its_equation_to_rounding_near_the_branch_point()
     u = log1p_excess_root(t)
     np.testing.assert_allclose(_excess(u[:-1]), t[:-1], rtol=1e-14)
     assert u[-1] == 0.0 and np.all(u[:-1] > 0)
+    one_by_one = np.array([float(log1p_excess_root(x)) for x in t[::40]])
+    np.testing.assert_allclose(one_by_one, u[::40], rtol=2e-15,
+                               err_msg="the scalar path is the array path (to rounding)")
     with pytest.raises(ValueError):
         lambertw_m1(0.1)

@@ -5,7 +5,8 @@ figures call.
 Facts checked:
 - self-similarity (Eq. 8): F = E* L^3/R F~(d R/L^2) and k = E* L k~(d R/L^2) for any
   R, L, E* (to rounding, 1e-12);
-- x~(d~) inverts the profile of Eq. 9: g~(x~(d~)) = d~ (to rounding);
+- x~(d~) inverts the profile of Eq. 9: g~(x~(d~)) = d~, and d~(F~) inverts F~(d~)
+  (to rounding);
 - k~ = dF~/dd~ (central differences, error O(h^2) ~ 1e-8 at h = 1e-5 d~);
 - effective_beta inverts the force: the point (d~, F~(d~; alpha, beta)) gives beta back;
 - the fit of Eq. 9 is exact on points of Eq. 9 and refuses too few points;
@@ -18,8 +19,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from linecontact.lipopov import (dimensionless_contact_radius, dimensionless_force,
-                                 dimensionless_profile, dimensionless_stiffness,
+from linecontact.lipopov import (dimensionless_contact_radius, dimensionless_depth,
+                                 dimensionless_force, dimensionless_profile, dimensionless_stiffness,
                                  effective_beta, fit_dimensionless_profile,
                                  lipopov_force, lipopov_stiffness)
 from linecontact.validity import OutOfRangeError
@@ -47,6 +48,9 @@ def test_contact_radius_inverts_the_profile(ab, frac):
     x = dimensionless_contact_radius(dt, a, b)
     assert dimensionless_profile(x, a, b) == pytest.approx(dt, rel=1e-10)
     assert dimensionless_stiffness(dt, a, b) == pytest.approx(2 * x, rel=1e-14)
+    F = dimensionless_force(dt, a, b)
+    if F < 2 * a * b:      # else F~ rounds onto its bound (d~ within 1e-8 of it)
+        assert dimensionless_depth(F, a, b) == pytest.approx(dt, rel=1e-10)
 
 
 def test_stiffness_is_the_derivative_of_the_force():
@@ -80,3 +84,8 @@ def test_depth_beyond_the_bound_is_refused(func):
         func(0.5, 1.5, 0.5)
     with pytest.raises(OutOfRangeError, match="d_tilde"):
         func(0.0, 1.5, 0.5)
+
+
+def test_force_beyond_the_saturation_is_refused():
+    with pytest.raises(OutOfRangeError, match="f_tilde"):
+        dimensionless_depth(2 * 1.5 * 0.5, 1.5, 0.5)

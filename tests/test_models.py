@@ -335,3 +335,54 @@ def test_interval_renders_and_checks():
     assert list(iv.contains([1.0, 0.0, np.nan, np.inf])) == [True, False, False, False]
     with pytest.raises(OutOfRangeError, match="radius = nan m"):
         iv.check(np.nan)
+
+
+# ---- the accuracy study covers every printed model --------------------------------------------
+def test_every_printed_model_has_its_measured_error():
+    """Every row the CLI prints, except the universal curve (the reference), has its F and
+    k error columns in tables/model_accuracy.csv, and its provenance states the measured
+    error range at this cylinder's L/R (issue 11.7: no model printed without a word on
+    its accuracy)."""
+    table = read_table("model_accuracy")
+    for m in standard_models(5e-3, 10e-3, E):
+        if m.key == "universal":
+            assert "accuracy" in m.provenance, "its own accuracy: the table header"
+            continue
+        assert f"F_err_{m.accuracy_tag}" in table.columns, m.label
+        assert f"k_err_{m.accuracy_tag}" in table.columns, m.label
+        text = m.provenance["measured_error"]
+        assert "against the BEM at L/R = 2" in text and " % to " in text, (m.label, text)
+
+
+def test_measured_error_is_the_range_of_the_table_rows():
+    """Puttock-Thwaite at L/R = 2.5: the stated range is the min and max of the study's
+    F errors at the bracketing rows L/R = 2 and 3 (two significant digits)."""
+    c = read_table("model_accuracy").columns
+    rows = (c["L_over_R"] == 2) | (c["L_over_R"] == 3)
+    e = c["F_err_eq2"][rows]
+    e = e[e < 98]
+    text = get_model("puttock-thwaite", 4e-3, 10e-3, E).measured_error
+    assert f"F {e.min() * 100:+.2g} % to {e.max() * 100:+.2g} %" in text
+    assert "L/R = 2 and 3" in text
+    assert "not measured at L/R = 30" in get_model("puttock-thwaite", 1e-3, 30e-3,
+                                                   E).measured_error
+
+
+@pytest.mark.parametrize("row", [0, 137, 402, 611, 898])
+def test_accuracy_table_rows_are_reproduced_by_the_code(row):
+    """Data and code cannot drift apart: each model's error in tables/model_accuracy.csv
+    at a grid point is model/universal - 1 recomputed now, to 1e-9 (the models are closed
+    forms and the universal spline; 1e-9 leaves room for rounding in the ratios only),
+    or the same flag (98 not applicable, 99 no answer)."""
+    from tools.accuracy import (NO_ANSWER, NOT_APPLICABLE, comparison_models,
+                                model_errors)
+    c = read_table("model_accuracy").columns
+    lr, dr = c["L_over_R"][row], c["d_over_R"][row]
+    models = comparison_models()
+    errs = model_errors(models, np.array([lr]), np.array([dr]))
+    for tag, _, _, _ in models:
+        eF, ek, applies = errs[tag]
+        for q, e in (("F", eF[0, 0]), ("k", ek[0, 0])):
+            want = NOT_APPLICABLE if not applies[0] else NO_ANSWER if np.isnan(e) else e
+            assert c[f"{q}_err_{tag}"][row] == pytest.approx(want, rel=1e-9, abs=1e-12), \
+                f"{q}_err_{tag} at L/R = {lr:g}, d/R = {dr:.3g}"

@@ -36,9 +36,9 @@ def square(task):
     """A study task: x^2, and one file per call in task['calls'] (counts the calls)."""
     if task.get("calls"):
         Path(task["calls"], f"{task['key']}-{uuid.uuid4().hex}").touch()
+    time.sleep(task.get("sleep", 0.0))
     if task["x"] < 0:
         raise ArithmeticError(f"negative x = {task['x']}")
-    time.sleep(task.get("sleep", 0.0))
     return {"x": task["x"], "y": task["x"] ** 2, "pid": os.getpid()}
 
 
@@ -64,35 +64,36 @@ def test_local_cluster_results_in_task_order(tmp_path):
     assert all(r["pid"] != os.getpid() for r in out)      # ran in worker processes
 
 
-def test_resume_skips_finished_keys(tmp_path):
+def test_resume_skips_finished_keys(tmp_path, scheduler_and_worker):
     calls = tmp_path / "calls"
     calls.mkdir()
     ck = tmp_path / "ck"
     first = _tasks([1, 2], calls)
-    run_study(square, first, workers=1, checkpoint=ck, progress=False)
+    on = dict(scheduler=scheduler_and_worker, progress=False)   # one cluster for all runs
+    run_study(square, first, checkpoint=ck, **on)
     assert _calls(calls) == ["x1", "x2"]
     # an interrupted study resumed with two more tasks: only those run
     more = _tasks([1, 2, 3, 4], calls)
     for t, f in zip(more, first):
         t["sleep"] = f["sleep"]                     # same settings as the first run
-    out = run_study(square, more, workers=1, checkpoint=ck, resume=True, progress=False)
+    out = run_study(square, more, checkpoint=ck, resume=True, **on)
     assert [r["y"] for r in out] == [1, 4, 9, 16]
     assert [r.get("resumed", False) for r in out] == [True, True, False, False]
     assert _calls(calls) == ["x1", "x2", "x3", "x4"]
     # the same key with other settings is not a finished task: it runs again
     changed = [dict(more[0], x=10)] + more[1:]
-    out = run_study(square, changed, workers=1, checkpoint=ck, resume=True,
-                    progress=False)
+    out = run_study(square, changed, checkpoint=ck, resume=True, **on)
     assert out[0]["y"] == 100
     assert _calls(calls) == ["x1", "x1", "x2", "x3", "x4"]
 
 
-def test_failing_task_raises_and_keeps_finished(tmp_path):
+def test_failing_task_raises_and_keeps_finished(tmp_path, scheduler_and_worker):
     ck = tmp_path / "ck"
-    tasks = [dict(key="ok", x=2.0), dict(key="bad", x=-1.0, sleep=0.0)]
-    tasks[0]["sleep"] = 0.0
+    tasks = [dict(key="ok", x=2.0, sleep=0.0), dict(key="bad", x=-1.0, sleep=0.5)]
     with pytest.raises(ArithmeticError, match="negative x"):
-        run_study(square, tasks, workers=1, checkpoint=ck, progress=False)
+        run_study(square, tasks, scheduler=scheduler_and_worker, checkpoint=ck,
+                  progress=False)
+    assert [p.name.split("-")[0] for p in ck.glob("*.pkl")] == ["ok"]
     with pytest.raises(ValueError, match="unique"):
         run_study(square, [dict(key="a", x=1), dict(key="a", x=2)], progress=False)
     with pytest.raises(ValueError, match="key"):
@@ -118,19 +119,23 @@ def _free_port():
         return s.getsockname()[1]
 
 
-@pytest.fixture
-def scheduler_and_worker(tmp_path):
+@pytest.fixture(scope="module")
+def scheduler_and_worker(tmp_path_factory):
     """`dask scheduler` and one `dask worker --nthreads 1` as separate processes on
-    localhost; yields the scheduler address; both are stopped at the end."""
+    localhost (a free port, no dashboard); yields the scheduler address. Start-up is
+    bounded (60 s for the worker to register); both processes are stopped at the end
+    (the worker, then the scheduler; killed if one has not stopped within 5 s)."""
+    from dask.distributed import Client
+    logs_dir = tmp_path_factory.mktemp("dask")
     port = _free_port()
     address = f"tcp://127.0.0.1:{port}"
+    # the worker imports the tasks: tools/ from the repository root, square() from here
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(REPO), str(REPO / "tests"), os.environ.get("PYTHONPATH", "")]))
-    procs = []
-    logs = []
+    procs, logs = [], []
 
     def start(*argv):
-        log = open(tmp_path / f"{argv[0]}.log", "w")
+        log = open(logs_dir / f"{argv[0]}.log", "w")
         logs.append(log)
         procs.append(subprocess.Popen([sys.executable, "-m", "dask", *argv], cwd=REPO,
                                       env=env, stdout=log, stderr=subprocess.STDOUT))
@@ -138,17 +143,15 @@ def scheduler_and_worker(tmp_path):
     try:
         start("scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard")
         start("worker", address, "--nthreads", "1", "--nworkers", "1", "--no-dashboard",
-              "--no-nanny", "--local-directory", str(tmp_path / "worker"))
-        from dask.distributed import Client
+              "--no-nanny", "--local-directory", str(logs_dir / "worker"))
         with Client(address, timeout="60s") as client:     # bounded: fails, never hangs
             client.wait_for_workers(1, timeout=60)
         yield address
     finally:
-        for p in reversed(procs):
-            p.terminate()
-        for p in reversed(procs):
+        for p in reversed(procs):       # the worker first: it says goodbye to the
+            p.terminate()               # scheduler, which must still be there
             try:
-                p.wait(timeout=20)
+                p.wait(timeout=5)
             except subprocess.TimeoutExpired:
                 p.kill()
                 p.wait(timeout=10)

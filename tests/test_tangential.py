@@ -23,7 +23,8 @@ from linecontact.tables import TableError, read_table, write_table
 from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
                                     cylinder_stiffness_ratios, effective_shear_modulus,
                                     equivalent_poisson, gross_slip_shift, shear_modulus,
-                                    shear_ratio, tangential_force, tangential_stiffness)
+                                    shear_ratio, tangential_force, tangential_shift,
+                                    tangential_stiffness)
 from linecontact.validity import OutOfRangeError
 
 
@@ -143,6 +144,24 @@ def test_sphere_shift_is_mindlins_law():
     assert c.stick_radius(u_mindlin[-1]) == 0.0
     # odd in the shift
     assert c.force(-u_mindlin[2]) == pytest.approx(-Q[2], rel=1e-10, abs=0)
+
+
+def test_vectorised_shift_is_mindlins_law_and_inverts_the_force():
+    """tangential_shift (vectorised over depth and force) gives Mindlin's u(Q) for the
+    sphere and inverts tangential_force for a cylinder model (rtol 1e-11)."""
+    m = HertzSphere(R, R, ESTAR)
+    d = np.array([[1e-6], [3e-6]])
+    P = m.force(d)
+    a = np.sqrt(R * d)
+    Q = np.array([0.1, 0.6, 1.0]) * MU * P
+    u = 3 * MU * P * (2 - NU) / (16 * G * a) * (1 - (1 - Q / (MU * P)) ** (2 / 3))
+    assert tangential_shift(m, d, Q, MU, GSTAR) == pytest.approx(u, rel=1e-11, abs=0)
+    cyl = standard_models(5e-3, 10e-3, ESTAR)[0]
+    u = np.array([0.2, 0.7]) * gross_slip_shift(2e-6, MU, GSTAR, ESTAR)
+    Ft = tangential_force(cyl, 2e-6, u, MU, GSTAR)
+    assert tangential_shift(cyl, 2e-6, Ft, MU, GSTAR) == pytest.approx(u, rel=1e-11, abs=0)
+    with pytest.raises(OutOfRangeError, match="gross slip"):
+        tangential_shift(cyl, 2e-6, 1.01 * MU * cyl.force(2e-6), MU, GSTAR)
 
 
 def _mindlin_deresiewicz(P, a, Qs):
@@ -330,6 +349,19 @@ def test_bem_method_uses_the_table_ratio_and_reports_the_mdr_error(tmp_path):
             shear_ratio(E, NU) / r[direction] - 1, rel=1e-12, abs=0)
     with pytest.raises(OutOfRangeError, match="model"):
         cylinder_stiffness_ratios(HertzSphere(R, R, ESTAR), d, GSTAR, table=t)
+    assert "slip_error_across" not in r
+
+
+def test_measured_slip_error_is_reported_when_the_table_has_it(tmp_path):
+    """Columns ft_err_scaled_{across,along} (the study's measured partial-slip error)
+    come back interpolated; a constant column is reproduced exactly (rtol 1e-12)."""
+    t, _ = _write(tmp_path, {"ft_err_scaled_across": 0.012, "ft_err_scaled_along": 0.007})
+    m = standard_models(5e-3, 10e-3, ESTAR)[0]
+    r = cylinder_stiffness_ratios(m, 2e-6, GSTAR, table=t)
+    assert r["slip_error_across"] == pytest.approx(0.012, rel=1e-12, abs=0)
+    assert r["slip_error_along"] == pytest.approx(0.007, rel=1e-12, abs=0)
+    with pytest.raises(OutOfRangeError, match="column"):
+        t.value("no_such_column", 0.3, 1e-4)
 
 
 def test_optional_slip_correction_scales_the_shift(tmp_path):

@@ -435,3 +435,78 @@ def test_the_neglected_cross_coupling_changes_the_cylinders_stiffness_by_under_1
         ux, _ = full_stick_stiffness(r.pressure, g, 1.0, nu, "x", tol=1e-10)
         uy, _ = full_stick_stiffness(r.pressure, g, 1.0, nu, "y", tol=1e-10)
         assert abs(kx / ux - 1) < bound and abs(ky / uy - 1) < bound, (nu, kx / ux, ky / uy)
+
+
+# --- the shipped table ----------------------------------------------------------------------
+
+def _shipped():
+    from linecontact.tables import read_table
+    return read_table("tangential_cylinder")
+
+
+def test_shipped_table_has_the_contract_columns_and_its_exact_rows():
+    """tables/tangential_cylinder.csv: the columns the runtime reads (nu, d_tilde,
+    kt_kn_across, kt_kn_along), the MDR column equal to 2(1-nu)/(2-nu), the nu = 0 rows
+    equal to 1 (exact oracle, to the solver tolerance), the MDR error column consistent
+    with the others, and the stated grid convergence below 1e-3."""
+    t = _shipped()
+    c = t.columns
+    for name in ("nu", "d_tilde", "kt_kn_across", "kt_kn_along"):
+        assert name in c, f"contract column {name} missing"
+    np.testing.assert_allclose(c["kt_kn_mdr"], mdr_ratio(c["nu"]), rtol=1e-15)
+    zero = c["nu"] == 0
+    assert zero.any()
+    np.testing.assert_allclose(c["kt_kn_across"][zero], 1.0, atol=1e-6)
+    np.testing.assert_allclose(c["kt_kn_along"][zero], 1.0, atol=1e-6)
+    np.testing.assert_allclose(c["mdr_err_across"], c["kt_kn_mdr"] / c["kt_kn_across"] - 1,
+                               rtol=1e-12)
+    assert np.abs(c["grid_change_across"]).max() < 1e-3
+    assert np.abs(c["grid_change_along"]).max() < 1e-3
+    # one row per (nu, d_tilde), every nu on the same depths
+    pairs = set(zip(c["nu"], c["d_tilde"]))
+    assert len(pairs) == len(c["nu"])
+    depths = [np.sort(c["d_tilde"][c["nu"] == nu]) for nu in np.unique(c["nu"])]
+    assert all(np.array_equal(depths[0], d) for d in depths)
+
+
+def test_shipped_table_direction_dependence_has_the_2d_limits_signs():
+    """Across the axis k_t/k_n lies between the MDR value and the plane-strain limit 1,
+    along it between the antiplane limit 1 - nu and the MDR value, and both move away
+    from the MDR value as d~ falls (the contact becomes a long strip)."""
+    c = _shipped().columns
+    for nu in np.unique(c["nu"]):
+        if nu == 0:
+            continue
+        sel = c["nu"] == nu
+        order = np.argsort(c["d_tilde"][sel])
+        across = c["kt_kn_across"][sel][order]
+        along = c["kt_kn_along"][sel][order]
+        assert np.all((across > mdr_ratio(nu)) & (across < 1)), nu
+        assert np.all((along < mdr_ratio(nu)) & (along > 1 - nu)), nu
+        assert across[0] > across[len(across) // 2] and along[0] < along[len(along) // 2]
+
+
+@pytest.mark.slow
+def test_study_recipe_reproduces_a_shipped_row():
+    """Regression against the shipped table: the study's task for one depth, with the
+    grid read back from the header, gives the shipped k_t/k_n (same discrete problem:
+    agreement to the solver tolerance, 1e-6)."""
+    import re
+    from tools.tangential_study import solve_task
+    t = _shipped()
+    grid = t.meta["grid"]
+    nl, nw = (int(v) for v in re.search(r"N = (\d+) cells along the half-length and (\d+)",
+                                         grid).groups())
+    sl, sw = (int(v) for v in re.search(r"partial slip on (\d+) along the half-length and "
+                                        r"(\d+)", grid).groups())
+    c = t.columns
+    d = float(np.unique(c["d_tilde"])[len(np.unique(c["d_tilde"])) // 2])
+    nus = [float(v) for v in np.unique(c["nu"])]
+    tol = float(t.meta["tolerance"].split()[0])
+    r = solve_task(dict(key="check", d_tilde=d, nus=nus, n_length=nl, n_width=nw,
+                        slip_points=24, slip_depths=32, tol=tol, slip_n_length=sl,
+                        slip_n_width=sw))
+    for i, nu in enumerate(nus):
+        row = (c["d_tilde"] == d) & (c["nu"] == nu)
+        assert r["across_2N"][i] == pytest.approx(c["kt_kn_across"][row][0], rel=1e-6)
+        assert r["along_2N"][i] == pytest.approx(c["kt_kn_along"][row][0], rel=1e-6)

@@ -22,7 +22,8 @@ from scipy.integrate import quad
 from linecontact.models import ContactModel
 from linecontact.validity import OutOfRangeError
 from linecontact.viscoelastic import (PronySeries, StandardLinearSolid, creep_depth,
-                                      force_history, read_prony_series)
+                                      force_history, read_prony_series,
+                                      step_creep_depth)
 
 
 class HertzSphere(ContactModel):
@@ -102,6 +103,14 @@ def test_sphere_creep_under_constant_force_is_lee_radok():
         d = creep_depth(m, material, T, F)
         expected = (3 * F * material.creep(T) / (4 * math.sqrt(R))) ** (2 / 3)
         assert d == pytest.approx(expected, rel=1e-12, abs=0)
+
+
+def test_step_creep_equals_the_hereditary_integral():
+    """step_creep_depth (closed form d = F1^-1(F J(t))) and creep_depth (the recursive
+    update for a step) are the same Lee-Radok solution: rtol 1e-13."""
+    m = HertzSphere(5e-3, 5e-3, 3.0)
+    assert step_creep_depth(m, PRONY, 40.0, T) == pytest.approx(
+        creep_depth(m, PRONY, T, 40.0), rel=1e-13, abs=0)
 
 
 def test_relaxation_at_constant_depth_follows_the_modulus():

@@ -1,18 +1,27 @@
 """Regenerate the computed tables in tables/ (the only writer of those files).
 
-Subcommands, each with its own options (``--help``):
+Subcommands, each with its own options (``--help``); every study runs its tasks through
+tools.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoints and
+``--resume``) and writes headers with tools.runner.table_meta:
 
 ``universal``
-    The universal curve Psi(d~), Phi (docs/theory.md, section 'Self-similarity') on adapted grids:
-    tables/universal_curve.csv (tools.universal_study).
+    The universal curve Psi(d~), Phi (docs/theory.md, section 'Self-similarity') on
+    adapted grids: tables/universal_curve.csv (tools.universal_study).
 ``paper``
-    The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha, beta:
-    tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+    The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
+    beta: tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+``roller``
+    Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
+    tables/roller_accuracy.csv (tools.roller_study).
+``tangential``
+    Tangential stiffness and partial slip of the finite cylinder:
+    tables/tangential_cylinder.csv (tools.tangential_study).
 
 Run from the repository root, e.g.::
 
     python -m tools.build_tables universal
     python -m tools.build_tables paper --l-over-r 5 --n 128 --out /tmp/check
+    python -m tools.build_tables universal --scheduler tcp://HOST:8786
 """
 from __future__ import annotations
 
@@ -27,6 +36,7 @@ SUBCOMMANDS = {
     "paper": "tools.paper_study",
     "roller": "tools.roller_study",
     "tangential": "tools.tangential_study",
+    "accuracy": "tools.accuracy",
 }
 
 

@@ -119,7 +119,8 @@ def fig4(plt, reg, pub, comp, out):
     r, p = reg.columns, pub.columns
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), constrained_layout=True)
     q = np.geomspace(r["L_over_R"].min(), r["L_over_R"].max(), 300)
-    # the runtime's interpolation (linecontact.lipopov: cubic spline in log(L/R))
+    # the runtime's interpolation of a table in any folder: the not-a-knot cubic spline in
+    # log(L/R) (tests/test_paper_study.py asserts the runtime's equals it to 1e-13)
     lq = np.log(r["L_over_R"])
     spline = (CubicSpline(lq, r["alpha"])(np.log(q)), CubicSpline(lq, r["beta"])(np.log(q)))
     shipped = reg.meta.get("residual", "").split(":")[0]

@@ -99,6 +99,10 @@ def shear_modulus_for(estar, nu):
     --------
     >>> shear_modulus_for(1.0, 0.3)
     0.35
+
+    References
+    ----------
+    Johnson (1985), Contact Mechanics, section 4.2 (E* of one elastic body).
     """
     return 0.5 * (1.0 - nu) * estar
 
@@ -176,6 +180,25 @@ def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=
     -------
     callable
         ndarray [Pa] -> ndarray [m].
+
+    Notes
+    -----
+    Exact free-space convolution (zero padding); any cell aspect ratio; 0 <= nu <= 0.5.
+
+    Examples
+    --------
+    At nu = 0 the operator equals the normal one with E* = 2G:
+
+    >>> from tools.halfspace import SymmetricOperator
+    >>> q = np.ones((4, 3))
+    >>> ut = tangential_operator(4, 3, 1.0, 0.5, 0.5, 0.0, "x")(q)
+    >>> un = SymmetricOperator(4, 3, 1.0, 0.5, estar=1.0)(q)
+    >>> bool(np.allclose(ut, un, rtol=1e-12))
+    True
+
+    References
+    ----------
+    Liu, Wang & Liu (2000), Wear 243:101-111 (DC-FFT); Johnson (1985), section 3.6.
     """
     comp = _component(direction)
     if symmetric:
@@ -257,6 +280,11 @@ def solve_partial_slip(op, pressure, mu, shift, previous=None, tol=1e-8, scale=N
     (0.2, True)
     >>> float(solve_partial_slip(op, np.array([[1.0]]), 0.5, 3.0).traction[0, 0])
     0.5
+
+    References
+    ----------
+    Polonsky & Keer (1999), Wear 231:206-219; Johnson (1985), section 7.2; Popov & Hess
+    (2015), chapter 5.
     """
     p = np.asarray(pressure, dtype=float)
     if not mu > 0:
@@ -370,6 +398,26 @@ def load_path(op, pressure, mu, shifts, tol=1e-8, scale=None, previous=None):
     -------
     list of SlipSolution
         One per shift; raises ConvergenceError if a step does not converge.
+
+    Notes
+    -----
+    Coulomb's law with memory for the uncoupled problem; any shift history. Each step
+    uses the previous traction as its start, so small steps cost few iterations.
+
+    Examples
+    --------
+    One cell, K = 2, p = 1, mu = 0.5: stick up to shift 1 (q = shift/2), slip beyond
+    (q = 0.5, slip 0.4 at shift 1.4), and on reversal the traction falls with the
+    stick slope again from there:
+
+    >>> op = lambda q: 2.0 * q
+    >>> path = load_path(op, np.array([[1.0]]), 0.5, [0.6, 1.4, 1.0])
+    >>> [round(float(s.traction[0, 0]), 12) for s in path]
+    [0.3, 0.5, 0.3]
+
+    References
+    ----------
+    Mindlin & Deresiewicz (1953), J. Appl. Mech. 20:327-344.
     """
     from .solver import ConvergenceError
     shifts = np.asarray(shifts, dtype=float)
@@ -411,6 +459,10 @@ def loop_dissipation(shifts, forces):
 
     >>> loop_dissipation([-1, 1, 1, -1, -1], [1, 1, -1, -1, 1])
     4.0
+
+    References
+    ----------
+    Johnson (1985), section 7.3 (oscillating tangential force).
     """
     s = np.asarray(shifts, dtype=float)
     f = np.asarray(forces, dtype=float)
@@ -500,6 +552,28 @@ def full_stick_stiffness(pressure, grid, estar, nu, direction, tol=1e-8, backend
     -------
     (float, tools.solver.Solution)
         k_t [N/m] of the full (four-quarter) contact, and the solver result.
+
+    Notes
+    -----
+    Uncoupled (Goodman) approximation, one traction component (module docstring);
+    0 <= nu <= 0.5; the field must be even in x and y (both mirror planes).
+
+    Examples
+    --------
+    At nu = 0, k_t equals the normal flat-punch stiffness on the same set:
+
+    >>> from tools.cylinder import Grid
+    >>> from tools.halfspace import SymmetricOperator
+    >>> g = Grid(6, 6, 0.1, 0.1)
+    >>> kt, _ = full_stick_stiffness(np.ones((6, 6)), g, 1.0, 0.0, "x", tol=1e-12)
+    >>> kn = 4 * solve_punch(SymmetricOperator(6, 6, 0.1, 0.1), np.ones((6, 6)) > 0,
+    ...                      tol=1e-12).pressure.sum() * g.cell_area
+    >>> bool(abs(kt / kn - 1) < 1e-10)
+    True
+
+    References
+    ----------
+    Mindlin (1949), J. Appl. Mech. 16:259-268 (bonded punch); Johnson (1985), Eq. 7.43.
     """
     from .solver import ConvergenceError
     op = tangential_operator(grid.mx, grid.my, grid.dx, grid.dy,
@@ -542,6 +616,22 @@ def coupled_full_stick(contact, dx, dy, estar, nu, tol=1e-10, maxiter=5000):
     -------
     (float, float)
         k_t along x and along y [N/m], both components of the traction solved for.
+
+    Notes
+    -----
+    Exact for the uncoupled (Goodman) problem with both tangential components; at
+    nu = 0 K_xy = 0 and it equals :func:`full_stick_stiffness`.
+
+    Examples
+    --------
+    >>> contact = np.ones((4, 4), dtype=bool)
+    >>> kx, ky = coupled_full_stick(contact, 0.25, 0.25, 1.0, 0.4)
+    >>> bool(abs(kx / ky - 1) < 1e-8)     # a square: the same both ways
+    True
+
+    References
+    ----------
+    Johnson (1985), Eq. 3.86 (Cerruti); Pohrt & Li (2014), Phys. Mesomech. 17:334.
     """
     import scipy.fft as sfft
     from scipy.sparse.linalg import LinearOperator, cg
@@ -605,6 +695,22 @@ def cylinder_full_stick(d_tilde, nus=(0.0, 0.25, 0.3, 0.4, 0.5), n_length=128,
     Returns
     -------
     CylinderTangential
+
+    Notes
+    -----
+    Valid where the parabolic gap is (d << R) and within the uncoupled approximation;
+    any d~ > 0 (each depth on its own grid). Discretisation: see
+    tables/tangential_cylinder.csv (change from N to 2N below 1e-3).
+
+    Examples
+    --------
+    >>> r = cylinder_full_stick(1e-3, nus=(0.0,), n_length=16, n_width=8)
+    >>> bool(abs(r.ratio_across[0] - 1) < 1e-6)    # nu = 0: k_t = k_n exactly
+    True
+
+    References
+    ----------
+    Li & Popov (2017), section 2 (the finite cylinder); Goodman (1962).
     """
     from .cylinder import solve_depth
     t0 = time.perf_counter()
@@ -641,6 +747,23 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
     -------
     ndarray
         F(d') [N] (four quarters).
+
+    Notes
+    -----
+    F(d') on the grid of the deepest depth: contacts at d' < d are resolved by fewer
+    cells (the laws of the study are compared with the BEM on the same grid).
+
+    Examples
+    --------
+    >>> from tools.cylinder import Grid
+    >>> g = Grid(8, 8, 0.5 / 8, 0.2 / 8)
+    >>> F = normal_force_on_grid(g, [0.0, 0.01, 0.02])
+    >>> bool(F[0] == 0 and 0 < F[1] < F[2])
+    True
+
+    References
+    ----------
+    Polonsky & Keer (1999) (solver); Li & Popov (2017), section 2.
     """
     op = SymmetricOperator(grid.mx, grid.my, grid.dx, grid.dy, estar, "scipy", workers)
     h = np.broadcast_to(grid.y ** 2 / (2 * radius), (grid.mx, grid.my))
@@ -683,6 +806,22 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
     dict
         'u' shifts / u_gs, 'ft_bem', 'ft_mdr' forces / (mu F), 'force' F(d)
         (dimensionless), and with ``cycle`` 'loop_u', 'loop_f'.
+
+    Notes
+    -----
+    Uncoupled (Goodman), Coulomb friction with one traction component; at nu = 0 the
+    BEM curve equals the MDR law exactly (tests/test_tangential_bem.py).
+
+    Examples
+    --------
+    >>> r = cylinder_full_stick(1e-3, nus=(0.0,), n_length=16, n_width=8)
+    >>> c = cylinder_partial_slip(r.normal, 0.0, "y", [0.5])
+    >>> bool(abs(c["ft_bem"][0] - c["ft_mdr"][0]) < 1e-6)
+    True
+
+    References
+    ----------
+    Popov & Hess (2015), chapter 5 (the MDR's partial slip); Johnson (1985), 7.2.
     """
     grid = normal.grid
     p = normal.pressure

@@ -22,7 +22,8 @@ Per depth d~ (one task of tools.runner.run_study, L = R = E* = 1):
    Love's kernel (k_n) and Cerruti's (k_t, across = shift along y, the rolling
    direction; along = shift along x, the axis) for every nu. The table's
    kt_kn_across/along are the 2N values; the N values and the change are kept.
-2. Partial slip with Coulomb friction on the N grid, shift across and along, for
+2. Partial slip with Coulomb friction on a coarser grid (``--slip-n-length``,
+   ``--slip-n-width``: BEM and laws are compared on the same grid), across and along, for
    every nu: the BEM curve F_t(u) (monotonic, from the virgin state, ``--slip-points``
    steps up to past gross slip) against two laws that need only F(d') (from normal
    solutions on the same grid, d' = d (j/J)):
@@ -70,6 +71,13 @@ def add_arguments(parser):
                              "(default 256; 2N is also solved)")
     parser.add_argument("--n-width", type=int, default=32,
                         help="cells across the contact half-width on N (default 32)")
+    parser.add_argument("--slip-n-length", type=int, default=128,
+                        help="cells along the half-length for the partial-slip curves "
+                             "(default 128; their errors are differences between BEM "
+                             "and law on the same grid)")
+    parser.add_argument("--slip-n-width", type=int, default=16,
+                        help="cells across the contact half-width for partial slip "
+                             "(default 16)")
     parser.add_argument("--slip-points", type=int, default=24,
                         help="shift steps of each partial-slip curve (default 24)")
     parser.add_argument("--slip-depths", type=int, default=32,
@@ -129,10 +137,50 @@ def partial_slip_measures(normal, nu, direction, kappa, points=24, depths=24, to
         # the quadrature error cancels in the ratio (at nu = 0 the ratio is 1)
         u0 = 0.5 * d / k
         w[name] = _masing_w(u, f, u0) / _masing_w(u, _law(u, k, d, F, f_of), u0)
+    ratios, err_corr = shift_ratios(u, f, u_gs_bem, kappa, d, F, f_of)
     return dict(err_mdr=err_mdr, err_scaled=err_scaled,
                 ugs=u_gs_bem * kappa / d, w_mdr=float(w["mdr"]),
-                w_scaled=float(w["scaled"]), u=u, f=f,
-                iterations=sum(s.iterations for s in states))
+                w_scaled=float(w["scaled"]), shift_ratio=ratios, err_corrected=err_corr,
+                u=u, f=f, iterations=sum(s.iterations for s in states))
+
+
+#: Load fractions F_t/(mu F) of the partial-slip correction columns.
+Q_LEVELS = (0.1, 0.25, 0.5, 0.75, 0.9, 0.95, 0.99, 1.0)
+
+
+def shift_ratios(u, f, u_gs_bem, kappa, d, F, f_of, levels=Q_LEVELS):
+    """The BEM's shift over the scaled law's at equal load fraction Q = F_t/(mu F).
+
+    u_BEM(Q) by inverting the monotone (PCHIP) interpolant of the sampled BEM curve,
+    which ends at (u_gs,BEM, 1); u_law(Q) = [d - d'(Q)]/kappa with F(d') = (1 - Q) F.
+    Also the largest force error of the corrected law (shift u_law(Q) r(Q), r linear
+    in Q between the levels and 1 at Q = 0, as linecontact.tangential applies it)
+    against the BEM curve, relative to mu F [-]. mu = 1.
+    """
+    from scipy.interpolate import PchipInterpolator
+    from scipy.optimize import brentq
+    below = u < u_gs_bem
+    uu = np.concatenate([u[below], [u_gs_bem]])
+    ff = np.concatenate([np.maximum.accumulate(f[below]), [1.0]])
+    keep = np.concatenate([[True], np.diff(ff) > 0])
+    fi = PchipInterpolator(uu[keep], ff[keep])
+
+    def u_bem(q):
+        return u_gs_bem if q >= 1 else brentq(lambda x: fi(x) - q, 0.0, u_gs_bem,
+                                              xtol=1e-14 * u_gs_bem)
+
+    def u_law(q):
+        if q >= 1:
+            return d / kappa
+        dp = brentq(lambda x: f_of(x) - (1 - q) * F, 0.0, d, xtol=1e-14 * d)
+        return (d - dp) / kappa
+
+    ratios = np.array([u_bem(q) / u_law(q) for q in levels])
+    qs = np.linspace(0.01, 1.0, 100)
+    r = np.interp(qs, np.concatenate([[0.0], levels]), np.concatenate([[1.0], ratios]))
+    u_corr = np.array([u_law(q) for q in qs]) * r
+    err = float(np.abs(fi(np.minimum(u_corr, u_gs_bem)) - qs).max())
+    return ratios, err
 
 
 def solve_task(task):
@@ -144,7 +192,9 @@ def solve_task(task):
                            task["n_width"], task["tol"])
     coarse = cylinder_full_stick(d, nus, nl, nw, tol=tol)
     fine = cylinder_full_stick(d, nus, 2 * nl, 2 * nw, tol=tol)
-    normal = coarse.normal
+    kappa = cylinder_full_stick(d, nus, task["slip_n_length"], task["slip_n_width"],
+                                tol=tol)
+    normal = kappa.normal
     J = task["slip_depths"]
     dprime = d * np.arange(J, 0, -1) / J                      # deepest first: warm starts
     Fd = normal_force_on_grid(normal.grid, dprime, tol=tol, workers=1)
@@ -157,15 +207,16 @@ def solve_task(task):
                grid_N=normal.grid.describe(), grid_2N=fine.normal.grid.describe(),
                force_check=float(abs(Fd[0] / (4 * normal.pressure.sum()
                                               * normal.grid.cell_area) - 1)))
-    iters = coarse.iterations + fine.iterations
+    iters = coarse.iterations + fine.iterations + kappa.iterations
     slip = {}
-    for direction, ratios in (("y", coarse.ratio_across), ("x", coarse.ratio_along)):
+    for direction, ratios in (("y", kappa.ratio_across), ("x", kappa.ratio_along)):
         for nu, kappa in zip(nus, ratios):
             m = partial_slip_measures(normal, nu, direction, float(kappa),
                                       task["slip_points"], J, tol, f_of)
             iters += m.pop("iterations")
             slip[(direction, nu)] = m
-    for name in ("err_mdr", "err_scaled", "ugs", "w_mdr", "w_scaled"):
+    for name in ("err_mdr", "err_scaled", "ugs", "w_mdr", "w_scaled", "err_corrected",
+                 "shift_ratio"):
         out[f"{name}_across"] = np.array([slip[("y", nu)][name] for nu in nus])
         out[f"{name}_along"] = np.array([slip[("x", nu)][name] for nu in nus])
     out["curves"] = {f"{k[0]}_{k[1]}": (v["u"], v["f"]) for k, v in slip.items()}
@@ -194,13 +245,19 @@ def self_similarity_check(d_tilde=1e-3, nu=0.3, tol=1e-11):
 
 
 def tasks_for(d_min=1e-10, d_max=15.0, per_decade=2.0, nus=NUS, n_length=256, n_width=32,
-              slip_points=24, slip_depths=32, tol=1e-8):
+              slip_points=24, slip_depths=32, tol=1e-8, slip_n_length=128, slip_n_width=16):
     """The study's tasks, one per depth (log-spaced d~)."""
     n = int(round(np.log10(d_max / d_min) * per_decade)) + 1
     return [dict(key=f"d{d:.6e}", d_tilde=float(d), nus=[float(v) for v in nus],
                  n_length=n_length, n_width=n_width, slip_points=slip_points,
+                 slip_n_length=slip_n_length, slip_n_width=slip_n_width,
                  slip_depths=slip_depths, tol=tol)
             for d in np.geomspace(d_min, d_max, n)]
+
+
+def _shift_name(side, q):
+    """Column name of the partial-slip correction read by linecontact.tangential."""
+    return f"shift_ratio_{side}_q{q:g}"
 
 
 def assemble(results):
@@ -212,7 +269,10 @@ def assemble(results):
         "grid_change_along", "ft_err_mdr_across", "ft_err_mdr_along",
         "ft_err_scaled_across", "ft_err_scaled_along", "ugs_across", "ugs_along",
         "w_ratio_mdr_across", "w_ratio_mdr_along", "w_ratio_scaled_across",
-        "w_ratio_scaled_along")}
+        "w_ratio_scaled_along", "ft_err_corrected_across", "ft_err_corrected_along")}
+    for side in ("across", "along"):
+        for q in Q_LEVELS:
+            cols[_shift_name(side, q)] = []
     for i, nu in enumerate(nus):
         for r in results:
             mdr = mdr_ratio(nu)
@@ -229,9 +289,13 @@ def assemble(results):
             cols["grid_change_along"].append(r["along_2N"][i] / r["along_N"][i] - 1)
             for name, key in (("ft_err_mdr", "err_mdr"), ("ft_err_scaled", "err_scaled"),
                               ("ugs", "ugs"), ("w_ratio_mdr", "w_mdr"),
-                              ("w_ratio_scaled", "w_scaled")):
+                              ("w_ratio_scaled", "w_scaled"),
+                              ("ft_err_corrected", "err_corrected")):
                 cols[f"{name}_across"].append(r[f"{key}_across"][i])
                 cols[f"{name}_along"].append(r[f"{key}_along"][i])
+            for side in ("across", "along"):
+                for j, q in enumerate(Q_LEVELS):
+                    cols[_shift_name(side, q)].append(r[f"shift_ratio_{side}"][i][j])
     cols = {k: np.asarray(v, dtype=float) for k, v in cols.items()}
     elastic = cols["nu"] > 0
     summary = {}
@@ -243,6 +307,8 @@ def assemble(results):
         summary[f"grid_change_{side}"] = float(np.abs(cols[f"grid_change_{side}"]).max())
         summary[f"ft_err_mdr_{side}"] = float(cols[f"ft_err_mdr_{side}"][elastic].max())
         summary[f"ft_err_scaled_{side}"] = float(cols[f"ft_err_scaled_{side}"][elastic].max())
+        summary[f"ft_err_corrected_{side}"] = float(
+            cols[f"ft_err_corrected_{side}"][elastic].max())
         summary[f"ugs_{side}"] = (float(cols[f"ugs_{side}"][elastic].min()),
                                   float(cols[f"ugs_{side}"][elastic].max()))
         for w in ("w_ratio_mdr", "w_ratio_scaled"):
@@ -284,9 +350,12 @@ def run(args):
 
     t0 = time.perf_counter()
     tasks = tasks_for(args.d_min, args.d_max, args.per_decade, args.nu, args.n_length,
-                      args.n_width, args.slip_points, args.slip_depths, args.tol)
-    if getattr(args, "checkpoint", None) is None:
-        args.checkpoint = args.out / ".checkpoints" / "tangential"
+                      args.n_width, args.slip_points, args.slip_depths, args.tol,
+                      args.slip_n_length, args.slip_n_width)
+    own_checkpoint = getattr(args, "checkpoint", None) is None
+    if own_checkpoint:
+        # out/ is git-ignored; removed once the table is written
+        args.checkpoint = REPO / "out" / "partial_tangential"
     results = run_study_from_args(solve_task, tasks, args, desc="tangential study")
     cols, s = assemble(results)
     similar = self_similarity_check()
@@ -317,10 +386,15 @@ def run(args):
               "[-], ft_err_mdr_* = largest |F_t,BEM - F_t,MDR|/(mu F) over the monotonic "
               "partial-slip curve with F_t,MDR = mu [F(d) - F(d - G* u/(mu E*))] [-], "
               "ft_err_scaled_* = the same for the scaled law F_t = mu [F(d) - F(d - "
-              "kappa u/mu)], kappa = k_t/k_n of the BEM on N [-], ugs_* = BEM gross-slip "
+              "kappa u/mu)], kappa = k_t/k_n of the BEM on the partial-slip grid [-], ugs_* = BEM gross-slip "
               "shift / (mu d/kappa) [-], w_ratio_mdr_* = W_BEM/W_MDR and w_ratio_scaled_* = "
               "W_BEM/W_scaled, the energy dissipated per fretting cycle (Masing) at "
-              "amplitude u0 = half the law's gross-slip shift [-]",
+              "amplitude u0 = half the law's gross-slip shift [-], shift_ratio_*_qQ = the BEM's "
+              "shift over the scaled law's at the load fraction F_t/(mu F) = Q (the "
+              "partial-slip correction linecontact.tangential applies, linear in Q between "
+              "the columns and 1 at Q = 0; q1 is the gross-slip shift) [-], "
+              "ft_err_corrected_* = largest |F_t,BEM - F_t|/(mu F) of the scaled law so "
+              "corrected [-]",
         accuracy=f"k_t/k_n: largest change from N to 2N {s['grid_change_across']:.1e} across, "
                  f"{s['grid_change_along']:.1e} along; spline in ln d_tilde through every "
                  f"other depth reproduces the rest within {s['interpolation']:.1e}; nu = 0 "
@@ -331,7 +405,11 @@ def run(args):
         partial_slip=f"largest error over the whole curve, relative to mu F, nu > 0: MDR "
                      f"{s['ft_err_mdr_across']:.3f} across, {s['ft_err_mdr_along']:.3f} "
                      f"along; scaled law {s['ft_err_scaled_across']:.4f} across, "
-                     f"{s['ft_err_scaled_along']:.4f} along; BEM gross slip / scaled law's: "
+                     f"{s['ft_err_scaled_along']:.4f} along; scaled law with the "
+                     f"shift_ratio correction {s['ft_err_corrected_across']:.4f} across, "
+                     f"{s['ft_err_corrected_along']:.4f} along; F(d') of the laws from a "
+                     f"cubic spline through {args.slip_depths} normal solutions (its error "
+                     f"shows in the nu = 0 rows); BEM gross slip / scaled law's: "
                      f"{s['ugs_across'][0]:.3f}-{s['ugs_across'][1]:.3f} across, "
                      f"{s['ugs_along'][0]:.3f}-{s['ugs_along'][1]:.3f} along",
         dissipation=f"W_BEM/W_MDR {s['w_ratio_mdr_across'][0]:.3f}-"
@@ -346,7 +424,8 @@ def run(args):
         grid=f"per depth: adapted grids of tools.cylinder.solve_depth, N = {args.n_length} "
              f"cells along the half-length and {args.n_width} across the contact "
              f"half-width, 2N = {2 * args.n_length} and {2 * args.n_width}; quarter grids "
-             f"by symmetry; partial slip on N with {args.slip_points} shift steps and "
+             f"by symmetry; partial slip on {args.slip_n_length} along the half-length and "
+             f"{args.slip_n_width} across the half-width (kappa = k_t/k_n on that grid) with {args.slip_points} shift steps and "
              f"{args.slip_depths} normal depths for F(d')",
         tolerance=f"{args.tol:g} (gap error / d; punch displacement error / shift; partial "
                   "slip optimality / largest shift)",
@@ -358,6 +437,9 @@ def run(args):
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "tangential_cylinder.csv"
     write_table(path, meta, cols)
+    if own_checkpoint:
+        import shutil
+        shutil.rmtree(args.checkpoint, ignore_errors=True)
     print(f"wrote {path}: {len(cols['nu'])} rows in {wall:.0f} s")
     for k, v in s.items():
         print(f"  {k}: {v}")

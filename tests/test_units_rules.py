@@ -1,0 +1,240 @@
+"""The input rules of issue 11.1, each held by a property over generated inputs.
+
+Command line and CSV cells (linecontact._units): a value is one decimal number with a
+decimal point and at most one unit name; everything else is refused with one line
+naming the parameter, the value and the valid range. Python API (linecontact.validity):
+numbers in SI; nothing that would lose information (an imaginary part, a mask, a unit)
+passes silently.
+"""
+
+from __future__ import annotations
+
+import datetime
+import functools
+import math
+import sys
+import time
+
+import numpy as np
+import pytest
+from hypothesis import assume, given
+from hypothesis import strategies as st
+
+from linecontact._units import InputError, parse_bool, parse_column, parse_quantity
+from linecontact.validity import OutOfRangeError, check_positive
+
+#: units and their exact SI factor (definitions: 1 in = 25.4 mm, 1 lbf = 4.4482216152605 N)
+UNITS = {
+    "length": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "cm": 1e-2, "in": 0.0254},
+    "force": {"N": 1.0, "kN": 1e3, "lbf": 4.4482216152605},
+    "pressure": {"Pa": 1.0, "MPa": 1e6, "GPa": 1e9},
+}
+
+normal = st.floats(min_value=1e-300, max_value=1e300, allow_nan=False, allow_infinity=False)
+kinds = st.sampled_from(sorted(UNITS))
+
+
+def _refused(text, kind="length"):
+    with pytest.raises(InputError) as info:
+        parse_quantity("--x", text, kind)
+    msg = str(info.value)
+    # one line, naming the parameter, the value as typed and the valid range
+    head = f"--x = {text!r}" if text else "--x: empty value"
+    assert "\n" not in msg and msg.startswith(head) and "; valid: " in msg
+    return msg
+
+
+@given(normal, kinds, st.data())
+def test_a_number_with_one_unit_converts_by_that_units_factor(x, kind, data):
+    """'<x><unit>' and '<x> <unit>' are x times the unit's SI factor (to 1e-15: pint's
+    factor is computed in floating point), and a bare number is SI exactly."""
+    unit = data.draw(st.sampled_from(sorted(UNITS[kind])))
+    factor = UNITS[kind][unit]
+    assume(1e-300 < x * factor < 1e300)
+    text = repr(x)
+    assert parse_quantity("--x", text, kind) == x
+    for sep in ("", " "):
+        got = parse_quantity("--x", text + sep + unit, kind)
+        assert math.isclose(got, x * factor, rel_tol=1e-15)
+
+
+@given(st.integers(0, 10**6), st.integers(0, 10**6), st.sampled_from(["", "mm", " kN"]))
+def test_decimal_comma_is_refused_never_misread(a, b, unit):
+    """'1,5mm' is refused (it was read as 15 mm): no decimal comma, no thousands
+    separator, whatever the digits."""
+    kind = "force" if "kN" in unit else "length"
+    assert "decimal comma" in _refused(f"{a},{b}{unit}", kind)
+
+
+quantity_text = st.builds(lambda x, u: f"{x:g}{u}", st.floats(0.001, 1000),
+                          st.sampled_from(["mm", "m", "", " mm", "in"]))
+
+
+@given(quantity_text, st.sampled_from(["+", "-", "*", "/", "**", "^", " * ", " / ", " + "]),
+       quantity_text)
+def test_expressions_are_refused_never_evaluated(q1, op, q2):
+    """Sums, products, quotients and powers of quantities are refused (pint used to
+    evaluate them, and 9**9**9**9 hung the command)."""
+    _refused(q1 + op + q2)
+
+
+def test_a_huge_power_is_refused_at_once():
+    """The input that hung the command is refused in well under a second."""
+    t = time.perf_counter()
+    _refused("9**9**9**9")
+    _refused("9mm**9**9**9")
+    assert time.perf_counter() - t < 1.0
+
+
+@given(st.integers(309, 100000))
+def test_overflow_is_refused(e):
+    """A number beyond the largest double (1.8e308) is refused, not read as inf."""
+    assert "too large" in _refused(f"1e{e}")
+
+
+@given(st.integers(-100000, -324))
+def test_underflow_to_zero_is_refused(e):
+    """A nonzero number below the smallest subnormal is refused, not read as 0."""
+    assert "too small" in _refused(f"1e{e}")
+
+
+@given(st.floats(min_value=5e-324, max_value=sys.float_info.min, exclude_max=True))
+def test_subnormal_numbers_are_refused(x):
+    """Subnormal numbers (lost precision; one returned the clamp limit as a depth) are
+    refused."""
+    assert "subnormal" in _refused(repr(x))
+
+
+@given(st.floats(1e306, 1e308))
+def test_overflow_after_unit_conversion_is_refused(x):
+    """A value that is finite as typed but overflows in SI (1e308 km) is refused."""
+    assert "too large" in _refused(f"{x!r} km")
+
+
+@pytest.mark.parametrize("text", ["inf", "-inf", "nan", "Infinity", "1_000", "0x10",
+                                  "\u0663", "5 m m", "5mm2", "(5)mm", "5 mm;", ""])
+def test_non_numbers_are_refused(text):
+    """Words Python's float() accepts (inf, nan, 1_000, non-ASCII digits) are not numbers
+    here; neither is anything but one number and one unit name."""
+    _refused(text)
+
+
+@given(st.lists(st.one_of(quantity_text, st.text(max_size=8),
+                          st.builds(lambda x: repr(x), normal)), max_size=30), kinds)
+def test_a_column_parses_exactly_like_its_cells(cells, kind):
+    """parse_column (the batch's fast path, numpy and one pint call per unit) gives the
+    same float and the same message as parse_quantity, cell by cell."""
+    values, errors = parse_column("--x", cells, kind)
+    for cell, v, e in zip(cells, values, errors):
+        try:
+            expected = parse_quantity("--x", cell, kind)
+        except InputError as exc:
+            assert e == str(exc) and math.isnan(v)
+        else:
+            assert e == "" and v == expected
+
+
+@given(st.text(max_size=10))
+def test_booleans_are_exactly_true_false_yes_no_1_0(text):
+    """A yes/no option accepts six words (any case, surrounding spaces) and nothing
+    else; 'no' is False."""
+    word = text.strip().lower()
+    if word in ("true", "yes", "1"):
+        assert parse_bool("opt", text) is True
+    elif word in ("false", "no", "0"):
+        assert parse_bool("opt", text) is False
+    else:
+        with pytest.raises(InputError):
+            parse_bool("opt", text)
+
+
+# ---------------------------------------------------------------------------------------
+# Python API: linecontact.validity refuses what would lose information
+
+
+@given(normal, st.floats(allow_nan=False, allow_infinity=False).filter(lambda y: y != 0))
+def test_complex_with_an_imaginary_part_is_refused(x, y):
+    """The imaginary part is never dropped silently."""
+    with pytest.raises(OutOfRangeError, match="imaginary"):
+        check_positive("force", complex(x, y), "N")
+    with pytest.raises(OutOfRangeError, match="imaginary"):
+        check_positive("force", np.array([x, complex(x, y)]), "N")
+
+
+@given(normal)
+def test_complex_with_zero_imaginary_part_is_its_real_part(x):
+    """x + 0j carries no more information than x."""
+    assert float(check_positive("force", complex(x, 0.0), "N")) == x
+
+
+@given(st.lists(st.booleans(), min_size=1, max_size=5).filter(any))
+def test_masked_elements_are_refused(mask):
+    """A masked array with masked elements is refused (the mask would be lost)."""
+    arr = np.ma.masked_array(np.ones(len(mask)), mask=mask)
+    with pytest.raises(OutOfRangeError, match="mask"):
+        check_positive("force", arr, "N")
+
+
+@pytest.mark.parametrize("value", [
+    True, np.bool_(False), [1.0, True], np.array([True, False]),
+    np.datetime64("2026-01-01"), np.array([1, 2], dtype="m8[s]"),
+    datetime.timedelta(seconds=1), datetime.datetime(2026, 1, 1), "0.005", [b"1"],
+])
+def test_booleans_dates_durations_and_strings_are_not_numbers(value):
+    """True is not 1 N, a duration is not a force, and '0.005' is not 5 mm."""
+    with pytest.raises(OutOfRangeError):
+        check_positive("force", value, "N")
+
+
+@given(st.floats(1e-6, 1e6))
+def test_pint_quantities_are_converted_to_si(x):
+    """A Quantity is converted to the SI unit of the parameter (x mm = x/1000 m,
+    x kN = 1000 x N), also through a model."""
+    ureg = _ureg()
+    assert math.isclose(float(check_positive("radius", x * ureg.mm, "m")), x / 1000,
+                        rel_tol=1e-15)
+    assert math.isclose(float(check_positive("force", x * ureg.kN, "N")), x * 1000,
+                        rel_tol=1e-15)
+
+
+def test_pint_quantity_of_the_wrong_dimension_is_refused_and_models_convert():
+    """A force where a length is expected is refused; a model given mm and kN answers
+    as given m and N."""
+    from linecontact.models import get_model
+
+    ureg = _ureg()
+    with pytest.raises(OutOfRangeError, match="dimension"):
+        check_positive("radius", 5 * ureg.N, "m")
+    m = get_model("li-popov", 5 * ureg.mm, 10 * ureg.mm, 115.38 * ureg.GPa)
+    ref = get_model("li-popov", 5e-3, 10e-3, 115.38e9)
+    assert math.isclose(m.depth(1 * ureg.kN), ref.depth(1000.0), rel_tol=1e-14)
+    r = ref.evaluate(depth=3 * ureg.um)
+    assert math.isclose(r["force"], ref.force(3e-6), rel_tol=1e-14)
+
+
+@functools.lru_cache(maxsize=None)
+def _ureg():
+    import pint
+
+    return pint.UnitRegistry()
+
+
+@given(st.floats(min_value=5e-324, max_value=sys.float_info.min, exclude_max=True))
+def test_api_refuses_subnormal_numbers(x):
+    """A subnormal force (one returned the clamp limit as the depth) is refused by the
+    library's checks too, naming the parameter."""
+    with pytest.raises(OutOfRangeError, match="subnormal"):
+        check_positive("force", x, "N")
+
+
+def test_built_in_unit_factors_equal_pints():
+    """Every unit converted without pint has pint's factor (to 1e-15, rounding of the
+    prefix powers), so the fast path and pint agree on every name both know."""
+    from linecontact._units import BUILTIN_UNITS, DIMENSIONS
+
+    ureg = _ureg()
+    for kind, table in BUILTIN_UNITS.items():
+        si = DIMENSIONS[kind][1]
+        for name, factor in table.items():
+            expected = ureg.Quantity(1.0, name).to(si).magnitude
+            assert math.isclose(factor, expected, rel_tol=1e-15), (kind, name)

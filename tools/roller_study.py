@@ -38,9 +38,10 @@ x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
 F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 0.86-3.8 GPa). 104 cases.
 
-Budget: under 10 minutes on 2 shared cores with the default grids (the measured wall
-time is the table's header line ``wall_time``); the cases are independent, so the study
-runs through tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster).
+Budget: measured 461 s and 598 s for the 104 cases with the default grids on the shared
+2-core VM (2 Dask workers, load average 8-16; the table's header line ``wall_time``);
+the cases are independent, so the study runs through tools.runner.run_study
+(checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28 cases (about 2 min).
 """
 from __future__ import annotations
 

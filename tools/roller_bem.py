@@ -286,12 +286,17 @@ class _Roller:
         g = coarse[0]
         cols = np.flatnonzero(sol.contact.any(axis=1))
         rows = np.flatnonzero(sol.contact.any(axis=0))
-        c_lo = g.x_lo + cols[0] * g.dx - g.dx
-        c_hi = g.x_lo + (cols[-1] + 1) * g.dx + g.dx
-        b = np.abs(g.y[rows]).max() + 1.5 * g.dy
-        xc, half = 0.5 * (c_lo + c_hi), 0.5 * (c_hi - c_lo)
-        lo, hi = max(xc - margin * half, X0), min(xc + margin * half, X1)
-        Y = min(margin * b, Y0)
+        if cols.size == 0:
+            # the interference is thinner than a coarse cell: the fine pass takes the
+            # whole interference box
+            lo, hi, Y = X0, X1, Y0
+        else:
+            c_lo = g.x_lo + cols[0] * g.dx - g.dx
+            c_hi = g.x_lo + (cols[-1] + 1) * g.dx + g.dx
+            b = np.abs(g.y[rows]).max() + 1.5 * g.dy
+            xc, half = 0.5 * (c_lo + c_hi), 0.5 * (c_hi - c_lo)
+            lo, hi = max(xc - margin * half, X0), min(xc + margin * half, X1)
+            Y = min(margin * b, Y0)
         for _ in range(20):
             bundle = self.grid(lo, hi, Y, n_x, n_y)
             sol = self.contact(bundle, d, theta, p0=_resample(p_hint, bundle[0]))

@@ -66,8 +66,9 @@ its value and the valid range; in a batch, when any row failed, after writing al
 rows). A one-case call where no model covers the case prints the table and the first
 model's note on stderr, status 2.
 
-Nothing here runs at import; pandas is never imported, pint only for a value with a
-unit, so a one-case call starts quickly.
+Nothing here runs at import; pandas is never imported, and pint only for a unit name
+outside the built-in table of :mod:`linecontact._units` (mm, GPa, kN, in, lbf, psi, ...
+need no pint), so a one-case call starts quickly.
 """
 
 from __future__ import annotations

@@ -52,7 +52,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import OutOfRangeError, check_interval, check_positive, document, out
+from .validity import (OutOfRangeError, check_flag, check_interval, check_positive,
+                       document, out)
 
 __all__ = [
     "ContactModel",
@@ -377,7 +378,7 @@ class LiPopovModel(ContactModel):
     def __init__(self, radius, length, estar, coefficients="published", extrapolate=False):
         super().__init__(radius, length, estar)
         self.coefficients = coefficients
-        self.extrapolate = bool(extrapolate)
+        self.extrapolate = check_flag("extrapolate", extrapolate)
         self._set = coefficient_set(coefficients)
 
     @property
@@ -545,6 +546,8 @@ class JohnsonModel(ContactModel):
     """
 
     key = "johnson"
+    #: Eq. 4 is written as d(F): evaluate(depth=...) takes k from F, not from d
+    stiffness_explicit_in_force = True
 
     def __init__(self, radius, length, estar, c=1.0):
         super().__init__(radius, length, estar)
@@ -675,13 +678,14 @@ class _SteelModel(ContactModel):
         return type(self)._depth_fn(force, self.length, self.estar)
 
     def stiffness(self, depth):
-        # F = C d^(1/0.9)  =>  k = F / (0.9 d)
-        F = np.asarray(self.force(depth))
-        return out(F / (0.9 * np.asarray(depth, dtype=float)))
+        # F = C d^(1/0.9)  =>  k = F / (0.9 d); d checked (and a pint Quantity converted
+        # to SI) before it enters the quotient
+        d = check_positive("depth", depth, "m")
+        return out(np.asarray(self.force(d)) / (0.9 * d))
 
     def stiffness_at_force(self, force):
-        d = np.asarray(self.depth(force))
-        return out(np.asarray(force, dtype=float) / (0.9 * d))
+        F = check_positive("force", force, "N")
+        return out(F / (0.9 * np.asarray(self.depth(F))))
 
 
 @register
@@ -826,7 +830,7 @@ class UniversalModel(ContactModel):
     def __init__(self, radius, length, estar, table=_UNIVERSAL_TABLE, extrapolate=False):
         super().__init__(radius, length, estar)
         self.table_name = table
-        self.extrapolate = bool(extrapolate)
+        self.extrapolate = check_flag("extrapolate", extrapolate)
         self.curve = universal_curve(table)
 
     @property

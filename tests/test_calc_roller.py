@@ -96,7 +96,7 @@ def test_sweep_gives_one_profiled_row_per_value(capsys):
     (["--tilt", "5furlong"], "--tilt"),
     (["--tilt", "10deg"], "--tilt"),
     (["--crown-radius", "0.5", "--profile", "iso16281"], "--crown-radius"),
-    (["--profile", "circular:Rc=-1"], "crown_radius"),
+    (["--profile", "circular:Rc=-1"], "Rc"),
     (["--profile", "file:/nonexistent/p.csv"], "profile file"),
 ])
 def test_bad_profile_input_is_one_line_exit_2(capsys, argv, name):

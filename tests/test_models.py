@@ -402,3 +402,25 @@ def test_accuracy_table_rows_are_reproduced_by_the_code(row):
             want = NOT_APPLICABLE if not applies[0] else NO_ANSWER if np.isnan(e) else e
             assert c[f"{q}_err_{tag}"][row] == pytest.approx(want, rel=1e-9, abs=1e-12), \
                 f"{q}_err_{tag} at L/R = {lr:g}, d/R = {dr:.3g}"
+
+
+@pytest.mark.parametrize("key", ["li-popov", "universal"])
+@pytest.mark.parametrize("word", ["no", "false", 0, None])
+def test_extrapolate_takes_a_boolean_not_a_truthy_word(key, word):
+    """bool('no') is True in Python: a yes/no option given anything but a boolean is
+    refused with the parameter's name, never read as 'on'."""
+    with pytest.raises(OutOfRangeError, match="extrapolate"):
+        get_model(key, R5, L5, E, extrapolate=word)
+
+
+@pytest.mark.parametrize("key", ["palmgren", "iso16281", "johnson", "universal"])
+def test_stiffness_of_a_pint_depth_equals_the_si_value(key):
+    """A pint Quantity is converted to SI before any arithmetic: k(3 um) is the same
+    N/m whether the depth is given as 3e-6 or as 3 micrometre (Palmgren's k = F/(0.9 d)
+    once divided by the raw magnitude 3)."""
+    pint = pytest.importorskip("pint")
+    u = pint.UnitRegistry()
+    m = get_model(key, R5, L5, E)
+    assert m.stiffness(3 * u.um) == pytest.approx(m.stiffness(3e-6), rel=1e-12)
+    F = m.force(3e-6)
+    assert m.stiffness_at_force(F * u.N) == pytest.approx(m.stiffness_at_force(F), rel=1e-12)

@@ -239,8 +239,8 @@ def test_no_contact_is_refused():
 
 
 @pytest.mark.parametrize("build, param", [
-    (lambda: ProfiledRoller(R, LC, E, "circular:Rc=0"), "crown_radius"),
-    (lambda: ProfiledRoller(R, LC, E, "circular:Rc=-0.5"), "crown_radius"),
+    (lambda: ProfiledRoller(R, LC, E, "circular:Rc=0"), "Rc"),
+    (lambda: ProfiledRoller(R, LC, E, "circular:Rc=-0.5"), "Rc"),
     (lambda: ProfiledRoller(R, LC, E, None, n_slices=5), "n_slices"),
     (lambda: ProfiledRoller(R, LC, E, None).at_depth(1e-6, tilt=0.2), "tilt"),
     (lambda: ProfiledRoller(-R, LC, E), "radius"),

@@ -268,3 +268,80 @@ def test_study_case_compares_runtime_and_iso_with_the_bem():
     assert abs(out["rt_err_moment"]) < 0.01
     assert abs(out["rt_err_p_max"]) < 0.05
     assert abs(out["iso_err_depth"]) > 0.01
+
+
+def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
+    """tables/roller_accuracy.csv (python -m tools.build_tables roller):
+
+    - its error columns are the stated functions of its value columns (definitions in
+      the header line 'columns'), exactly;
+    - the BEM reference is resolved: off the ends its coarse-to-fine grid change is
+      below 0.3 % in deflection, moment and peak pressure (far below the 1 %/5 %
+      targets it judges);
+    - issue 9's targets hold in the table: off the ends the runtime is within 1 % in
+      deflection and moment (given tilt) and in the zero-moment tilt;
+    (test_the_runtime_still_meets_the_shipped_table re-runs the runtime.)"""
+    from linecontact.tables import read_table
+    import tools.roller_study as rs
+    t = read_table("roller_accuracy")
+    c = t.columns
+    for key in ("covered", "runtime_error", "iso_error", "grid", "cases"):
+        assert t.meta.get(key), f"header line {key!r} missing"
+    off = c["bem_edge"] == 0
+    given = (c["free_tilt"] == 0) & (c["tilt"] != 0)
+    free = c["free_tilt"] > 0
+    for m in ("rt", "iso"):
+        np.testing.assert_allclose(c[f"{m}_err_depth"],
+                                   (c[f"{m}_depth"] - c["bem_depth"]) / c["bem_delta"],
+                                   rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(c[f"{m}_err_moment"][given],
+                                   c[f"{m}_moment"][given] / c["bem_moment"][given] - 1,
+                                   rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(c[f"{m}_err_tilt"][free],
+                                   c[f"{m}_tilt"][free] / c["tilt"][free] - 1,
+                                   rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(c[f"{m}_err_p_max"], c[f"{m}_p_max"] / c["bem_p_max"] - 1,
+                                   rtol=1e-12, atol=1e-15)
+    for name in ("change_depth", "change_moment", "change_p_max"):
+        assert np.max(np.abs(c[f"bem_{name}"][off])) < 3e-3, name
+    assert np.max(np.abs(c["rt_err_depth"][off])) < 0.01
+    assert np.max(np.abs(c["rt_err_moment"][off & given])) < 0.01
+    assert np.max(np.abs(c["rt_err_tilt"][off & free])) < 0.01
+
+
+@pytest.mark.slow
+def test_the_runtime_still_meets_the_shipped_table():
+    """The runtime, re-run now on one off-end case per profile of
+    tables/roller_accuracy.csv, is still within issue 9's targets (1 %) in deflection,
+    moment and zero-moment tilt against the stored BEM: if linecontact.roller changes,
+    this says whether the shipped table still describes it (else regenerate it with
+    python -m tools.build_tables roller). Slow: the runtime takes 0.1-10 s per solve on
+    the shared machine."""
+    from linecontact.tables import read_table
+    import tools.roller_study as rs
+    c = read_table("roller_accuracy").columns
+    off = c["bem_edge"] == 0
+    for code in rs.PROFILES:
+        rows = np.flatnonzero(off & (c["profile"] == code) & (c["roller_length"] == 0.014))
+        i = rows[len(rows) // 2]
+        task = dict(profile=rs.PROFILES[code], radius=rs.DIAMETER / 2,
+                    length=c["roller_length"][i], estar=rs.ESTAR, force=c["force"][i],
+                    tilt=None if c["free_tilt"][i] else c["tilt"][i])
+        ref = dict(depth=c["bem_depth"][i], delta=c["bem_delta"][i],
+                   moment=c["bem_moment"][i], p_max=c["bem_p_max"][i], tilt=c["tilt"][i])
+        e_d, e_m, e_p, e_t = rs.errors(ref, rs.runtime_case(task), task)
+        assert abs(e_d) < 0.01 and abs(e_m) < 0.01 and abs(e_t) < 0.01, (code, e_d, e_m, e_t)
+
+
+def test_a_barely_touching_roller_still_gets_its_contact():
+    """At 1e-8 of the light-load approach the contact is 5 um long, about one sample of
+    the 4097-point scan of the profile that bounds the interference region, and the
+    first pass finds no contact cell at all; the fine pass then takes the whole
+    interference box, finds the contact (24 cells measured) and gets Hertz's
+    F0 (d/approach)^(3/2) within 10 % (measured 7.7 %: a few cells across it)."""
+    rc, force = 0.5, 1000.0
+    a, b, p0, approach = hertz_ellipse(R, rc, ESTAR, force)
+    d = 1e-8 * approach
+    res = solve_roller(R, L, ESTAR, d, profile=crown(rc), n_x=N, n_y=N, stiffness=False)
+    assert res.area > 0
+    assert res.force == pytest.approx(force * (d / approach) ** 1.5, rel=0.1)

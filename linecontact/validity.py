@@ -41,13 +41,24 @@ class OutOfRangeError(ValueError):
     parameter : str
         Name of the offending parameter, as in the function signature.
     value : float or str
-        The offending value (the first offending element of an array).
+        The offending value (the first offending element of an array), in the unit
+        `unit` [`unit`]; a str describes a value that is not a number.
     valid : str
         The valid range, e.g. ``"(0, inf) m"`` or ``"[0.1, 6]"``.
     unit : str, optional
         Unit of `value`, printed after it.
     hint : str, optional
         What to do instead; appended to the message.
+    where : str, optional
+        Where the value sits, printed in parentheses after it (e.g. ``"element [1] of
+        shape (2,)"`` or ``"at depth 1e-06 m"``).
+
+    Notes
+    -----
+    No range applies to the error itself: any name, value and range are accepted. A
+    numeric value is printed with 6 significant digits (``%.6g``); the attributes
+    ``parameter``, ``value``, ``valid``, ``unit``, ``hint`` and ``where`` keep what was
+    given, and the error survives pickling (so it can cross process boundaries).
 
     Examples
     --------
@@ -102,7 +113,8 @@ class Interval:
     name : str
         The parameter the range applies to (used in messages).
     low, high : float
-        Ends of the range; ``-inf``/``inf`` for unbounded.
+        Ends of the range, -inf <= low <= high <= inf; ``-inf``/``inf`` for unbounded
+        [`unit`].
     low_open, high_open : bool
         Whether an end is excluded (default: both ends included, also an infinite
         one, so that e.g. a rigid body's E = inf can be accepted; pass
@@ -113,7 +125,7 @@ class Interval:
         Rounding allowance at finite ends: a value within ``rtol * |end|`` outside an
         end counts as that end (and is returned as it), so that e.g. L/R computed as
         (1.9 * 25e-3)/(1.9 * 5e-3) = 4.999999999999999 is accepted at a closed end 5.
-        Default 0 (exact).
+        Default 0 (exact); 0 <= rtol << 1 (the library uses 1e-12) [-].
 
     Examples
     --------
@@ -317,9 +329,9 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     name : str
         Parameter name for the message.
     value : array_like
-        Values to check.
+        Values to check, in the unit `unit` (SI) [`unit`].
     low, high : float or array_like
-        Ends of the range.
+        Ends of the range, in the same unit as `value` [`unit`].
     low_open, high_open : bool, optional
         Exclude the end points (closed by default).
     unit : str, optional
@@ -330,12 +342,20 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     Returns
     -------
     ndarray of float
-        `value` converted to a float array (0-d for a scalar).
+        `value` converted to a float array (0-d for a scalar) [`unit`].
 
     Raises
     ------
     OutOfRangeError
         Naming the first offending element, its value and the range.
+
+    Notes
+    -----
+    Valid input: real numbers, -inf <= value <= inf, and ends -inf <= low, high <= inf,
+    open or closed as asked. NaN is always outside; complex numbers with a nonzero
+    imaginary part, booleans, strings, dates, masked arrays with masked elements and
+    subnormal numbers (0 < |value| < 2.2e-308) are refused before the comparison; a
+    pint Quantity is converted to `unit` first.
 
     Examples
     --------
@@ -368,6 +388,29 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
 
 def check_positive(name, value, unit="", *, hint=""):
     """Check that every element of `value` is finite and > 0; return a float array.
+
+    The common case of :func:`check_interval`: the range is 0 < value < inf.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : array_like
+        Values to check, in the unit `unit` (SI) [`unit`].
+    unit : str, optional
+        Unit printed after the value and the range.
+    hint : str, optional
+        Appended to the error message.
+
+    Returns
+    -------
+    ndarray of float
+        `value` converted to a float array (0-d for a scalar) [`unit`].
+
+    Raises
+    ------
+    OutOfRangeError
+        Naming the first element that is not in 0 < value < inf.
 
     Examples
     --------

@@ -42,17 +42,7 @@ EXEMPT_MODULES = {"cli", "__main__", "cases", "compute", "render", "batch"}
 #: small, one line per module and clause, each saying who fixes it; an entry that no
 #: longer matches any failure makes test_allow_list_holds_only_real_gaps fail, so the
 #: list can only shrink. The coordinator empties it when the owners' branches merge.
-ALLOWED = {
-    ("linecontact.validity", "Parameters entries for"):
-        "OutOfRangeError(where): owned by i11a (validity.py), fixed in merge",
-    ("linecontact.validity", "a Parameters section"):
-        "owned by i11a (validity.py), fixed in merge",
-    ("linecontact.validity", "a unit in brackets"):
-        "generic checks (value, low, high, rtol take the unit of the value): owned by "
-        "i11a (validity.py), fixed in merge",
-    ("linecontact.validity", "a validity range"):
-        "owned by i11a (validity.py), fixed in merge",
-}
+ALLOWED = {}
 
 #: Type words of a numeric parameter (which must carry a unit).
 _NUMERIC = re.compile(r"^(float|int|array_like|array|ndarray|number|scalar)\b")

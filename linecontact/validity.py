@@ -511,5 +511,5 @@ def check_flag(name, value):
     """
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
-    raise OutOfRangeError(name, repr(value), "True or False",
+    raise OutOfRangeError(name, value, "True or False",
                           hint="a yes/no option takes a boolean, not a word or number")

@@ -145,7 +145,10 @@ def hertz_peak_pressure(force, radius, length, estar):
 
     References
     ----------
-    Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press, Eq. 4.45.
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
+       Eq. 4.45.
+    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
     """
     from .validity import check_positive, out
 

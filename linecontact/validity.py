@@ -460,7 +460,7 @@ def check_flag(name, value):
     >>> check_flag("extrapolate", "no")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False...
+    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False; a yes/no option takes a boolean, not a word or number
 
     References
     ----------
@@ -468,5 +468,5 @@ def check_flag(name, value):
     """
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
-    raise OutOfRangeError(name, repr(value), "True or False",
+    raise OutOfRangeError(name, value, "True or False",
                           hint="a yes/no option takes a boolean, not a word or number")

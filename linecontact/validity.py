@@ -503,7 +503,7 @@ def check_flag(name, value):
     >>> check_flag("extrapolate", "no")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False...
+    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False; a yes/no option takes a boolean, not a word or number
 
     References
     ----------

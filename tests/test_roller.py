@@ -35,8 +35,12 @@ def _quad_reference(tau):
                    / ((tau**3 + 2 * s * s * tau + (tau * tau + s * s) ** 1.5)
                       * (tau * tau + s * s) ** 1.5))
     p = quad(lambda s: w(s) * f(s), 0, 1, points=pts, limit=400, epsabs=0, epsrel=1e-12)[0]
-    pp = quad(lambda s: w(s) * (2 * s * s - tau * tau) / (tau * tau + s * s) ** 2.5, 0, 1,
-              points=pts, limit=400, epsabs=0, epsrel=1e-12)[0]
+    # p' = int w(s) (2s^2 - tau^2)/(tau^2 + s^2)^(5/2) ds, a near-cancelling integrand
+    # for small tau; by parts ((tau^2 - 2s^2)/(..)^(5/2) = d/ds s/(..)^(3/2), w(1) = 0):
+    # p' = -(4/pi) int s^2 / (sqrt(1-s) sqrt(1+s) (s^2 + tau^2)^(3/2)) ds, one-signed, with
+    # the end singularity as quad's algebraic weight (1-s)^(-1/2)
+    pp = quad(lambda s: -4 / math.pi * s * s / (math.sqrt(1 + s) * (s * s + tau * tau) ** 1.5),
+              0, 1, weight="alg", wvar=(0, -0.5), limit=400, epsabs=0, epsrel=1e-12)[0]
     return a - math.log(2 * tau), tau * ap, p, tau * pp
 
 

@@ -46,7 +46,7 @@ import numpy as np
 
 from . import render
 from ._units import InputError, parse_quantity
-from .cases import BY_NAME, PARAMETERS, bounds_of, option_name, parse_cases
+from .cases import BY_NAME, PARAMETERS, RAW_KINDS, bounds_of, option_name, parse_cases
 from .compute import compute
 
 __all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
@@ -233,12 +233,16 @@ def run_batch(args, argv, specs, options):
         else:
             col = [r[j] if j < len(r) else "" for r in body]
         if opt is not None:
-            if ":" in str(opt):
-                raise InputError(option_name(p.name), opt, "one value per row in a batch",
-                                 "a sweep")
-            # a bad option is the command line's error (exit 2), not every row's
-            parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
-                           bounds=bounds_of(p))
+            if p.kind not in RAW_KINDS:
+                if p.sweep and ":" in str(opt):
+                    raise InputError(option_name(p.name), opt,
+                                     "one value per row in a batch", "a sweep")
+                # a bad value is the command line's error (exit 2), not every row's
+                parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
+                               bounds=bounds_of(p))
+            # text, path and angle options are checked per row where they are read
+            # (linecontact.cases.RAW_KINDS): e.g. a profile is refused in each row's
+            # 'error' cell, as a profile column is
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)

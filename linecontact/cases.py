@@ -36,7 +36,12 @@ import numpy as np
 
 from ._units import InputError, parse_column
 
-__all__ = ["Parameter", "PARAMETERS", "BY_NAME", "parse_cases", "option_name", "bounds_of"]
+__all__ = ["Parameter", "PARAMETERS", "BY_NAME", "RAW_KINDS", "parse_cases", "option_name",
+           "bounds_of"]
+
+#: Kinds of :class:`Parameter` that :func:`parse_cases` does not parse: their cells are
+#: kept as typed and checked where they are used (a profile spec, a file path, a tilt).
+RAW_KINDS = ("path", "text", "angle")
 
 
 @dataclass(frozen=True)
@@ -197,7 +202,7 @@ def parse_cases(cells, n, label=option_name):
         if n and type(col[0]) is not str:  # cells as read are str; others converted
             col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
-        if p.kind in ("path", "text", "angle"):  # read where it is used (raw cells)
+        if p.kind in RAW_KINDS:  # read where it is used (raw cells)
             present[p.name] = np.array([c.strip() != "" for c in col], dtype=bool)
             values[p.name] = np.full(n, np.nan)
             continue

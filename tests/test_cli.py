@@ -815,3 +815,73 @@ def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
         depth = head.index("depth_um")
         assert float(rows[1][depth]) > 0 and rows[2][depth] == "" and float(rows[3][depth]) > 0
         assert all(len(r) == len(head) for r in rows)
+
+
+# ---------------------------------------------------------------------------------------
+# every option of `calc --help` in a batch: as an option filling the cells, and as a column
+
+#: A valid value of every parameter (as typed on the command line); the prony file is
+#: written by the tests below (E_inf = 1 GPa, one term of 2 GPa at 0.1 s).
+SAMPLE = {
+    "radius": "5mm", "diameter": "10mm", "length": "10mm", "radius2": "30mm",
+    "modulus": "210GPa", "poisson": "0.3", "modulus2": "210GPa", "poisson2": "0.3",
+    "estar": "115GPa", "load": "1kN", "depth": "2um", "inner_raceway": "20mm",
+    "outer_raceway": "40mm", "friction": "0.3", "tangential_load": "100N",
+    "instantaneous_modulus": "3GPa", "long_term_modulus": "1GPa",
+    "relaxation_time": "10s", "prony": "PRONY", "time": "10s",
+    "crown_radius": "500mm", "profile": "iso16281", "tilt": "1mrad",
+}
+
+
+def _sample(name, tmp_path):
+    if name != "prony":
+        return SAMPLE[name]
+    path = tmp_path / "prony.csv"
+    path.write_text("# E_inf: 1GPa\ntau_s,E_Pa\n0.1,2e9\n", encoding="utf-8")
+    return str(path)
+
+
+def test_sample_covers_every_option():
+    """The two tests below try every option of `calc --help`: a new option without a
+    sample value fails here, not silently untested."""
+    from linecontact.cases import PARAMETERS
+
+    assert set(SAMPLE) == {p.name for p in PARAMETERS}
+
+
+@pytest.mark.parametrize("name", sorted(SAMPLE))
+def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, name):
+    """An option of any kind (length, time, text, path, angle, ...) given with a CSV
+    batch fills the empty cells of its column: every row is written and either computed
+    or refused in its own 'error' cell (a profile option: 'not computed in a batch', as
+    the docs of linecontact.calc_roller say), status 0 or 2, never an exception. The
+    profile options (text, path kinds) used to crash with KeyError in _units."""
+    from linecontact.cases import option_name
+
+    src = _write_csv(tmp_path / "c.csv", ["name", "radius", "length", "modulus", "poisson",
+                                          "load"],
+                     [["a", "5mm", "10mm", "210GPa", "0.3", "1kN"],
+                      ["b", "6mm", "12mm", "210GPa", "0.3", "2kN"]])
+    status, out, err = _main(capsys, "calc", src, option_name(name), _sample(name, tmp_path))
+    assert status in (0, 2), err
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert [r["name"] for r in rows] == ["a", "b"], err
+    if status == 2:  # a row refused: it says so in its own cell, the file is written
+        assert any(r["error"] for r in rows) and "error" in err
+    if name in ("profile", "crown_radius", "tilt"):
+        assert all("not computed in a batch" in r["error"] for r in rows)
+
+
+@pytest.mark.parametrize("name", sorted(set(SAMPLE) - {"radius", "length", "modulus",
+                                                       "poisson", "load"}))
+def test_every_option_as_a_csv_column_runs_or_says_why_per_row(capsys, tmp_path, name):
+    """The same value as a CSV column (one row with it, one with the cell empty): status
+    0 or 2, both rows written, the empty cell's row computed."""
+    src = _write_csv(tmp_path / "c.csv", ["radius", "length", "modulus", "poisson", "load",
+                                          name],
+                     [["5mm", "10mm", "210GPa", "0.3", "1kN", _sample(name, tmp_path)],
+                      ["5mm", "10mm", "210GPa", "0.3", "1kN", ""]])
+    status, out, err = _main(capsys, "calc", src, "--json")
+    assert status in (0, 2), err
+    rows = json.loads(out)["rows"]
+    assert len(rows) == 2 and rows[1]["error"] == ""

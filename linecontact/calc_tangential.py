@@ -18,7 +18,8 @@ and "viscoelastic second body"):
     and the slip state in the flags: partial slip for Q < mu F, gross slip (no static
     solution: u is "-") for Q > mu F.
 ``--instantaneous-modulus E0 --long-term-modulus EINF --relaxation-time TAU``, or
-``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line)
+``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line; each value a
+    number with at most one unit name, bare = SI, as on the command line)
     A viscoelastic second body (instead of ``--modulus``; needs ``--poisson``) with the
     Young's moduli of a standard linear solid or a Prony series
     (:mod:`linecontact.viscoelastic`). The elastic columns are then the instantaneous
@@ -154,13 +155,32 @@ def resolve(v, P, raw, fail, label, n):
             try:
                 files[path] = read_prony_series(path)
             except OutOfRangeError as exc:
-                files[path] = ("a CSV file with columns tau_s, E_Pa and a line "
-                               "'# E_inf: VALUE'", str(exc))
+                files[path] = _file_problem(exc)
             except OSError as exc:
                 files[path] = ("a readable CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
                                exc.strerror or type(exc).__name__)
+            except UnicodeDecodeError as exc:
+                files[path] = ("a UTF-8 text CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
+                               f"not UTF-8 text ({exc.reason} at byte {exc.start})")
         _store(files[path], i, E0, materials, fail, "prony", raw)
     return visco, E0, materials
+
+
+def _file_problem(exc):
+    """(valid, reason) of a refused Prony file for the one-line message: what in the
+    file is wrong and where (``E_inf = '1,5GPa' ('# E_inf' line): a decimal comma ...``)
+    and what would have been valid there (not a second "valid range" inside the first)."""
+    value = exc.value if isinstance(exc.value, str) else f"{float(exc.value):.6g}"
+    unit = f" {exc.unit}" if exc.unit and not isinstance(exc.value, str) else ""
+    reason = f"{exc.parameter} = {value!r}{unit}" if isinstance(exc.value, str) else \
+        f"{exc.parameter} = {value}{unit}"
+    if exc.where:
+        reason += f" ({exc.where})"
+    if exc.hint:
+        reason += f": {exc.hint}"
+    elif not isinstance(exc.value, str):
+        reason += " is out of range"
+    return exc.valid, reason
 
 
 def _store(material, i, E0, materials, fail, name, raw):

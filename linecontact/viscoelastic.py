@@ -262,8 +262,12 @@ def read_prony_series(path, long_term=None):
     .. math:: E(t) = E_\infty + \sum_i E_i\,e^{-t/\tau_i}
 
     File format: optional ``# key: value`` comment lines (among them, optionally,
-    ``# E_inf: VALUE`` in Pa), then a header row naming the columns ``tau_s`` and
-    ``E_Pa`` (other columns ignored, case-insensitive), then one row per term.
+    ``# E_inf: VALUE``), then a header row naming the columns ``tau_s`` and
+    ``E_Pa`` (other columns ignored, case-insensitive), then one row per term. Every
+    value follows the calculator's input rule (:func:`linecontact._units.parse_quantity`):
+    a number with at most one unit name, bare numbers in SI (s, Pa): ``1e9``,
+    ``1 GPa`` and ``1000MPa`` are the same E_inf; a decimal comma, an expression, a
+    non-finite or non-positive value is refused, never misread.
 
     Parameters
     ----------
@@ -325,23 +329,19 @@ def read_prony_series(path, long_term=None):
                                   hint=f"the header row is {body[0]!r}")
     it, ie = names.index("tau_s"), names.index("e_pa")
     tau, E = [], []
-    for k, row in enumerate(body[1:], start=2):
+    for k, row in enumerate(body[1:], start=1):
         cells = [c.strip() for c in row.split(",")]
-        try:
-            tau.append(float(cells[it]))
-            E.append(float(cells[ie]))
-        except (ValueError, IndexError):
-            raise OutOfRangeError("prony file", f"{path}, data line {k - 1}: {row!r}",
-                                  "two numbers tau_s, E_Pa per row") from None
+        if max(it, ie) >= len(cells):
+            raise OutOfRangeError("prony file", row, "a value under tau_s and E_Pa in "
+                                  "every row", where=f"data row {k}")
+        tau.append(_file_value("tau_s", cells[it], "time", f"data row {k}"))
+        E.append(_file_value("E_Pa", cells[ie], "pressure", f"data row {k}"))
     if not tau:
         raise OutOfRangeError("prony file", str(path), "at least one term")
     file_einf = None
     for key in ("e_inf", "e_inf_pa"):
         if key in meta:
-            try:
-                file_einf = float(meta[key].split()[0])
-            except (ValueError, IndexError):
-                raise OutOfRangeError("E_inf", meta[key], "a number in Pa") from None
+            file_einf = _file_value("E_inf", meta[key], "pressure", "the '# E_inf' line")
     if long_term is None and file_einf is None:
         raise OutOfRangeError("long_term", "missing", "(0, inf) Pa",
                               hint=f"give it, or write '# E_inf: VALUE' in {path}")
@@ -350,6 +350,17 @@ def read_prony_series(path, long_term=None):
         raise OutOfRangeError("long_term", float(long_term), f"{file_einf:g} Pa (the "
                               f"file's E_inf)", unit="Pa")
     return PronySeries(long_term if long_term is not None else file_einf, E, tau)
+
+
+def _file_value(name, text, kind, where):
+    """A value of a Prony file in SI by the calculator's input rule (a number with one
+    unit name, bare = SI), or OutOfRangeError naming it, its place and the rule."""
+    from ._units import InputError, parse_quantity
+
+    try:
+        return parse_quantity(name, text, kind)
+    except InputError as exc:
+        raise OutOfRangeError(name, text, exc.valid, hint=exc.reason, where=where) from None
 
 
 # --------------------------------------------------------------------------------------

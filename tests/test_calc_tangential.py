@@ -186,3 +186,46 @@ def test_bad_combinations_are_one_line_errors(capsys, extra, parameter):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and parameter in err[0], err
+
+
+PRONY_BODY = "tau_s,E_Pa\n0.1,1e9\n10,1e9\n"
+
+
+@pytest.mark.parametrize("einf", ["1e9", "1GPa", "1 GPa", "1000MPa", "1e9 Pa"])
+def test_prony_values_follow_the_one_input_rule(capsys, tmp_path, einf):
+    """'# E_inf: 1GPa' is E_inf = 1e9 Pa, exactly as --modulus 1GPa would be (the same
+    parser, linecontact._units.parse_quantity: a number and one unit name, bare = SI):
+    the creep depth equals that of the bare-SI file to the last bit (rtol 0: one exact
+    factor 1e9). '1 GPa' used to be read as 1 Pa and '1GPa' refused with a garbled
+    message."""
+    p, ref = tmp_path / "p.csv", tmp_path / "ref.csv"
+    p.write_text(f"# E_inf: {einf}\n{PRONY_BODY}")
+    ref.write_text(f"# E_inf: 1e9\n{PRONY_BODY}")
+    args = ["--poisson", "0.35", "--time", "5s"]
+    got = _json(capsys, CASE + ["--prony", str(p)] + args)
+    want = _json(capsys, CASE + ["--prony", str(ref)] + args)
+    assert got[0]["creep_depth"] == want[0]["creep_depth"] > 0
+
+
+@pytest.mark.parametrize("text, name, shown", [
+    ("# E_inf: 1,5GPa\n" + PRONY_BODY, "E_inf", "'1,5GPa'"),
+    ("# E_inf: 1 GPa m\n" + PRONY_BODY, "E_inf", "'1 GPa m'"),
+    ("# E_inf: 5mm\n" + PRONY_BODY, "E_inf", "'5mm'"),
+    ("# E_inf: inf\n" + PRONY_BODY, "E_inf", "'inf'"),
+    ("# E_inf: -1GPa\n" + PRONY_BODY, "E_inf", "'-1GPa'"),
+    ("# E_inf: 1e9\ntau_s,E_Pa\n0.1,2 GPa x\n", "E_Pa", "'2 GPa x'"),
+    ("# E_inf: 1e9\ntau_s,E_Pa\n1e400,1e9\n", "tau_s", "'1e400'"),
+    ("# E_inf: 1e9\ntau_s,E_Pa\nnan,1e9\n", "tau_s", "'nan'"),
+    ("# E_inf: 1e9\ntau_s,E_Pa\n0.1\n", "prony file", "'0.1'"),
+])
+def test_bad_prony_values_are_one_clear_line(capsys, tmp_path, text, name, shown):
+    """A refused value in the file: exit 2, one line naming --prony, the file's
+    parameter and the value as typed, then one 'valid:' (no nested "is outside the
+    valid range ... valid:" as before)."""
+    p = tmp_path / "p.csv"
+    p.write_text(text)
+    assert main(CASE + ["--prony", str(p), "--poisson", "0.35"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1, err
+    assert "--prony" in err[0] and f"{name} = {shown}" in err[0], err
+    assert err[0].count("valid") == 1 and "outside the valid range" not in err[0], err

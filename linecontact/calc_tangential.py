@@ -18,11 +18,11 @@ and "viscoelastic second body"):
     and the slip state in the flags: partial slip for Q < mu F, gross slip (no static
     solution: u is "-") for Q > mu F.
 ``--instantaneous-modulus E0 --long-term-modulus EINF --relaxation-time TAU``, or
-``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line; each value a
-    number with at most one unit name, bare = SI, as on the command line)
+``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line)
     A viscoelastic second body (instead of ``--modulus``; needs ``--poisson``) with the
     Young's moduli of a standard linear solid or a Prony series
-    (:mod:`linecontact.viscoelastic`). The elastic columns are then the instantaneous
+    (:mod:`linecontact.viscoelastic`; every value in the file is a number with at most
+    one unit name, bare = SI, by the rule of the command line). The elastic columns are then the instantaneous
     response (E* from E0); ``d(inf)`` is the long-term depth.
 ``--time T`` (a time or a sweep; with ``--load``)
     The depth after the load has been held for T (creep, Lee & Radok 1960):

@@ -239,10 +239,14 @@ class ContactModel(abc.ABC):
         """MDR contact half-length a = k / (2 E*) [m] at depth d [m]."""
         return out(np.asarray(self.stiffness(depth)) / (2 * self.estar))
 
+    #: Why a model without an MDR profile has none (the end of the NotImplementedError
+    #: message of :meth:`profile`); each such model states its own reason.
+    no_profile_reason = "its force law is not derived from an equivalent MDR profile"
+
     def profile(self, x):
         """Equivalent MDR profile g(x) [m] at x >= 0 [m]."""
         raise NotImplementedError(f"{self.label} has no MDR profile "
-                                  "(an empirical force-depth law)")
+                                  f"({self.no_profile_reason})")
 
     def evaluate(self, *, force=None, depth=None):
         """The contact state at given forces OR depths, in one vectorised call.
@@ -622,6 +626,7 @@ class KunzModel(ContactModel):
     """
 
     key = "kunz"
+    no_profile_reason = "an empirical force-depth law"
 
     def __init__(self, radius, length, estar, c=_c.KUNZ_C):
         super().__init__(radius, length, estar)
@@ -658,6 +663,7 @@ class KunzModel(ContactModel):
 
 
 class _SteelModel(ContactModel):
+    no_profile_reason = "an empirical force-depth law"
     _depth_fn = None
     _force_fn = None
     _source = ""

@@ -1288,6 +1288,8 @@ class ProfiledRollerModel(ContactModel):
     """
 
     key = "profiled-roller"
+    no_profile_reason = ("a coupled-slice solution of a profiled roller, not a "
+                         "plane MDR contact; its axial drop is axial_profile")
 
     def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=100):
         super().__init__(radius, length, estar)
@@ -1367,6 +1369,7 @@ class ISOSlicingModel(ContactModel):
     """
 
     key = "iso16281-slicing"
+    no_profile_reason = "uncoupled slices, each with the empirical ISO/TS 16281 law"
 
     def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=30):
         super().__init__(radius, length, estar)

@@ -112,24 +112,38 @@ def test_scaling_law(key, opts, lam):
 def test_profile_reproduces_the_force_law_by_mdr(key, opts):
     """For models with an MDR profile, 2E* int_0^a (d - g) dx of that profile equals the
     model's F(d): profile and force law are one model. (Empirical laws have no profile
-    and say so with NotImplementedError: see the next test.)"""
+    and the coupled-slice roller models have none either: each says why in its
+    NotImplementedError, and the skip repeats that reason.)"""
     m = _model(key, opts)
     assert callable(m.profile), (
         f"{m.label}: ContactModel.profile(x) is the MDR profile method; an attribute "
         f"of type {type(m.profile).__name__} shadows it")
     try:
         m.profile(1e-3)
-    except NotImplementedError:
-        pytest.skip(f"{m.label} is an empirical force law without an MDR profile")
+    except NotImplementedError as exc:
+        pytest.skip(str(exc))
     for d in (1e-8, 1e-6):
         assert mdr_force(d, m.profile, E, x_scale=L5) == pytest.approx(m.force(d), rel=1e-8)
 
 
 @pytest.mark.parametrize("key", ["kunz", "palmgren", "iso16281"])
 def test_empirical_laws_have_no_profile(key):
-    """Purely empirical laws raise NotImplementedError for profile()."""
-    with pytest.raises(NotImplementedError):
+    """Purely empirical laws raise NotImplementedError for profile(), saying so."""
+    with pytest.raises(NotImplementedError, match="empirical force-depth law"):
         _model(key, {}).profile(1e-3)
+
+
+@pytest.mark.parametrize("key, reason", [
+    ("profiled-roller", "coupled-slice solution"),
+    ("iso16281-slicing", "uncoupled slices"),
+])
+def test_slice_models_say_why_they_have_no_profile(key, reason):
+    """The roller models of linecontact.roller have no MDR profile for their own
+    reason, not "an empirical force law" (the coupled-slice model is a half-space
+    solution, not an empirical fit)."""
+    with pytest.raises(NotImplementedError, match=reason) as err:
+        _model(key, {}).profile(1e-3)
+    assert "empirical force-depth law" not in str(err.value)
 
 
 # ---- validity -----------------------------------------------------------------------------

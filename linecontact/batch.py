@@ -78,6 +78,8 @@ def read_table(path):
                          f"{exc.start})") from None
     except OSError as exc:
         raise BatchError(f"{str(path)!r}: cannot read ({exc.strerror or exc})") from None
+    except ValueError as exc:  # a path the OS cannot take (an embedded NUL)
+        raise BatchError(f"{str(path)!r}: not a usable path ({exc})") from None
     lines = None
     if '"' not in text:  # no quoting: one line per row, cells split at commas
         if "\r" in text:

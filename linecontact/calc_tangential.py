@@ -162,6 +162,9 @@ def resolve(v, P, raw, fail, label, n):
             except UnicodeDecodeError as exc:
                 files[path] = ("a UTF-8 text CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
                                f"not UTF-8 text ({exc.reason} at byte {exc.start})")
+            except ValueError as exc:  # a path the OS cannot take (an embedded NUL)
+                files[path] = ("a readable CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
+                               f"not a usable path ({exc})")
         _store(files[path], i, E0, materials, fail, "prony", raw)
     return visco, E0, materials
 

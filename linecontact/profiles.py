@@ -679,6 +679,13 @@ class TabulatedProfile(Profile):
         except OSError as exc:
             raise OutOfRangeError("profile file", str(p), "a readable CSV file of x, drop",
                                   hint=exc.strerror or str(exc)) from None
+        except UnicodeDecodeError as exc:
+            raise OutOfRangeError("profile file", str(p), "a UTF-8 text CSV file of x, drop",
+                                  hint=f"not UTF-8 text ({exc.reason} at byte "
+                                  f"{exc.start})") from None
+        except ValueError as exc:  # a path the OS cannot take (an embedded NUL)
+            raise OutOfRangeError("profile file", str(p), "a readable CSV file of x, drop",
+                                  hint=f"not a usable path ({exc})") from None
         xs, ds = [], []
         header_seen = False
         for lineno, line in enumerate(text.splitlines(), start=1):

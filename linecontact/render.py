@@ -280,7 +280,7 @@ def write(text, path):
     try:
         with open(path, "w", encoding="utf-8", newline="") as fh:
             fh.write(text)
-    except OSError as exc:
+    except (OSError, ValueError) as exc:  # ValueError: an embedded NUL in the path
         raise OutputError(path, exc) from None
 
 
@@ -288,5 +288,5 @@ class OutputError(OSError):
     """The output file cannot be written: names the file and the reason."""
 
     def __init__(self, path, exc):
-        reason = exc.strerror or str(exc) or type(exc).__name__
+        reason = getattr(exc, "strerror", None) or str(exc) or type(exc).__name__
         super().__init__(f"cannot write the output file {str(path)!r}: {reason}")

@@ -143,19 +143,40 @@ def solve(cases, errors):
         coupled["label"] = f"Profiled roller ({prof.label}{tilt_text})"
         iso["label"] = f"ISO/TS 16281 slicing ({prof.label}{tilt_text})"
         try:
-            coupled["rows"][i] = (roller.at_force(value, tilt=tilt) if given == "load"
-                                  else roller.at_depth(value, tilt))
-        except OutOfRangeError as exc:
+            # a strip of zero width on the way (a load below the slicing's resolution)
+            # divides by zero: that ends in the ConvergenceError said below, so numpy's
+            # warnings would only add lines to the one-line message
+            with np.errstate(divide="ignore", invalid="ignore"):
+                coupled["rows"][i] = (roller.at_force(value, tilt=tilt) if given == "load"
+                                      else roller.at_depth(value, tilt))
+        except Exception as exc:  # noqa: BLE001 - said in one line, never a traceback
+            msg = _failure(exc, coupled["label"])
             if n == 1:          # one case: its one-line error (a sweep notes the row)
-                errors[i] = str(exc)
+                errors[i] = msg
                 continue
-            coupled["notes"][i] = str(exc)
+            coupled["notes"][i] = msg
         try:
             kw = {"force": value} if given == "load" else {"depth": value}
             iso["rows"][i] = iso_slicing(R, L, E, prof, tilt=tilt, **kw)
-        except OutOfRangeError as exc:
-            iso["notes"][i] = str(exc)
+        except Exception as exc:  # noqa: BLE001 - said in the row's note
+            iso["notes"][i] = _failure(exc, iso["label"])
     return [b for b in (coupled, iso) if b["label"]]
+
+
+def _failure(exc, label):
+    """One line for a row the roller solver refused (its range), could not solve (a
+    ConvergenceError: said, never hidden, e.g. a crown so strong that the contact is
+    narrower than the slices) or failed on unexpectedly (named, as a batch row's
+    unexpected exception in linecontact.compute)."""
+    from .roller import ConvergenceError
+    from .validity import OutOfRangeError
+
+    if isinstance(exc, OutOfRangeError):
+        return str(exc)
+    detail = (str(exc).strip().splitlines() or [""])[0]
+    if isinstance(exc, ConvergenceError):
+        return f"{label}: not computed: {detail}"
+    return f"{label}: unexpected {type(exc).__name__}" + (f": {detail}" if detail else "")
 
 
 def _edge_text(sol):

@@ -401,6 +401,11 @@ class _Slices:
         n, R = self.n, self.R
         over = d + theta * self.x - self.P
         S = np.flatnonzero(over > 0)
+        none_in_contact = ConvergenceError(
+            f"no slice is in contact at d = {d:.6g} m: the contact is narrower than one "
+            "slice (too small a load for the slicing)")
+        if S.size == 0:  # e.g. d - d0 below the rounding of d (a force of 1e-300 N)
+            raise none_in_contact
         q = np.zeros(n)
         c = np.full(n, 1.0 / (4 * R))
         if warm is not None and np.any(warm[0][S] > 0):
@@ -417,6 +422,8 @@ class _Slices:
                     if np.all(qs > 0):
                         break
                     S, b0 = S[qs > 0], b0[qs > 0]
+                    if S.size == 0:
+                        raise none_in_contact
                 b0 = np.sqrt(4 * R * qs)
             q[S] = qs
         for _ in range(n + 1):

@@ -106,6 +106,15 @@ def _profile(spec, R, L, E, force):
 
 
 def solve(cases, errors):
+    """The profiled-roller rows (see :func:`_solve`), numpy's floating-point warnings
+    off: an overflow or a strip of zero width on the way (a load or crown beyond the
+    slicing's resolution) ends in the one-line message of that row (a ConvergenceError
+    or a range error), and the warnings would only add lines to stderr."""
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
+        return _solve(cases, errors)
+
+
+def _solve(cases, errors):
     """The profiled-roller rows of every good row with a profile input.
 
     Returns a list of blocks, one per model ("coupled slices", "ISO/TS 16281
@@ -143,12 +152,8 @@ def solve(cases, errors):
         coupled["label"] = f"Profiled roller ({prof.label}{tilt_text})"
         iso["label"] = f"ISO/TS 16281 slicing ({prof.label}{tilt_text})"
         try:
-            # a strip of zero width on the way (a load below the slicing's resolution)
-            # divides by zero: that ends in the ConvergenceError said below, so numpy's
-            # warnings would only add lines to the one-line message
-            with np.errstate(divide="ignore", invalid="ignore"):
-                coupled["rows"][i] = (roller.at_force(value, tilt=tilt) if given == "load"
-                                      else roller.at_depth(value, tilt))
+            coupled["rows"][i] = (roller.at_force(value, tilt=tilt) if given == "load"
+                                  else roller.at_depth(value, tilt))
         except Exception as exc:  # noqa: BLE001 - said in one line, never a traceback
             msg = _failure(exc, coupled["label"])
             if n == 1:          # one case: its one-line error (a sweep notes the row)

@@ -459,6 +459,45 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
     done = 0
+    # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
+    # below, in the row's flags; numpy's warnings would only add lines to stderr
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
+        _compute_groups(results, groups, cases, specs, first_only, default_key,
+                        reference, ref_key, progress)
+    _no_overflow(results)
+    ok = np.array([not e for e in errors], dtype=bool)
+    results.roller = bool(np.any(race & ok))
+    from .calc_tangential import columns as _extra_columns
+
+    results.extra = list(_extra_columns(cases, cases["_present"])) if "_present" in cases \
+        else []
+    return results
+
+
+def _no_overflow(results):
+    """No 'inf' in any output: a result beyond the double range, or one whose value in
+    the engineering unit of the table is (e.g. 1e305 m in um), is not shown ('-') and
+    its row's flags say so, for that model (a flag: the other values stand)."""
+    for s in results.sets:
+        for name, arr in s["fields"].items():
+            factor = max(FIELDS[name].factor, 1.0) if name in FIELDS else 1.0
+            with np.errstate(over="ignore", invalid="ignore"):
+                bad = np.isinf(arr) | np.isinf(arr * factor)
+            for i in np.flatnonzero(bad):
+                arr[i] = np.nan
+                msg = (f"{FIELDS[name].heading if name in FIELDS else name}: beyond the "
+                       "double-precision range (overflow), not shown")
+                s["flags"][i] = "; ".join(t for t in (s["flags"][i], msg) if t)
+
+
+def _compute_groups(results, groups, cases, specs, first_only, default_key, reference,
+                    ref_key, progress):
+    """Every group of rows of one cylinder (the loop of :func:`compute`)."""
+    errors = results.errors
+    R1, Reff, L, E = cases["radius"], cases["radius_eff"], cases["length"], cases["estar"]
+    Ri, Ro = cases["inner_raceway"], cases["outer_raceway"]
+    race = cases["raceways"]
+    done = 0
     for g in groups:
         i0 = g[0]
         try:
@@ -480,12 +519,6 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         done += len(g)
         if progress is not None:
             progress(done)
-    results.roller = bool(np.any(race & ok))
-    from .calc_tangential import columns as _extra_columns
-
-    results.extra = list(_extra_columns(cases, cases["_present"])) if "_present" in cases \
-        else []
-    return results
 
 
 class _Sink:

@@ -11,6 +11,7 @@ the new output columns.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import functools
 import io
@@ -22,6 +23,8 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 DATA = Path(__file__).parent / "data"
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -885,3 +888,110 @@ def test_every_option_as_a_csv_column_runs_or_says_why_per_row(capsys, tmp_path,
     assert status in (0, 2), err
     rows = json.loads(out)["rows"]
     assert len(rows) == 2 and rows[1]["error"] == ""
+
+
+# ---------------------------------------------------------------------------------------
+# fuzz: odd input for every option never ends in a traceback (status 0 or 2 only)
+
+#: Odd values a user (or a spreadsheet) may produce; DIR and MISSING are replaced by a
+#: directory and a missing file, NONUTF8 by a file that is not UTF-8 text.
+ODD = ["", " ", "-", "0", "-0", "-1", "1e400", "1e-400", "1e-300", "1e300", "nan",
+       "\u0663", "\uff15mm", "1,5", "1:2:3", "0:1:3", ":", "1e", ".", "5 furlong", "5 s",
+       "5 deg", "a=b", "file:DIR", "file:MISSING", "file:NONUTF8", "DIR", "MISSING",
+       "NONUTF8", "x\x00y", "iso16281:D=-1", "lundberg:F0=0", "circular:Rc=0"]
+
+
+def _odd(value, tmp_path):
+    bad = tmp_path / "nonutf8.csv"
+    bad.write_bytes(b"\xff\xfe\x00x,\xe9\n")
+    return (value.replace("NONUTF8", str(bad)).replace("MISSING", str(tmp_path / "no.csv"))
+            .replace("DIR", str(tmp_path)))
+
+
+def _no_traceback(capsys, *argv):
+    from linecontact.cli import main
+
+    status = main(list(argv))  # an exception here fails the test with its traceback
+    out, err = capsys.readouterr()
+    assert status in (0, 2) and "Traceback" not in err, (argv, status, err)
+    return status, out, err
+
+
+@pytest.mark.parametrize("name", sorted(SAMPLE))
+def test_odd_values_of_every_option_exit_0_or_2(capsys, tmp_path, name):
+    """Each odd value for each option, on the command line of a one-case call and as a
+    cell of a batch: status 0 or 2, never an exception or 'Traceback'; a refused
+    one-case value is one line on stderr. (This loop found: a NUL byte in a path, a
+    non-UTF-8 profile or Prony file, and profiled-roller solver failures at a 6 um crown
+    radius or a 1e-300 N load, all tracebacks before.)"""
+    from linecontact.cases import option_name
+
+    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
+            "load": "1kN"}
+    for value in ODD:
+        value = _odd(value, tmp_path)
+        cells = {**base, name: value}
+        argv = ["calc"] + [a for k, v in cells.items() for a in (option_name(k), v)]
+        status, out, err = _no_traceback(capsys, *argv)
+        if status == 2 and out == "":
+            assert len(err.strip().splitlines()) == 1, (value, err)
+        src = _write_csv(tmp_path / "c.csv", list(cells), [list(cells.values())])
+        _no_traceback(capsys, "calc", src)
+
+
+@pytest.mark.parametrize("text", [
+    "\ufeffradius,length,modulus,poisson,load\n5mm,10mm,210GPa,0.3,1kN\n",  # BOM
+    "load\n1kN\n2kN\n",                             # only some columns (rest: options)
+    "radius,load\n5mm,1kN\n,\n",                    # an empty row
+    "radius,Radius\n5mm,5mm\n",                     # a column twice
+    "foo,bar\n1,2\n",                               # no case column
+    "radius,length,modulus,poisson,load\n",         # header only
+    "",                                             # empty file
+    "   \n\n",                                      # blank lines only
+    'radius,load\n"5\nmm",1kN\n',                   # a quoted cell with a line break
+    'radius,load\n"5mm,1kN\n',                      # an unclosed quote
+    "radius;length;load\n5mm;10mm;1kN\n",           # semicolons
+    "radius,load\r5mm,1kN\r",                       # old Mac line ends
+    "radius,load\n5mm\x00,1kN\n",                   # a NUL byte
+])
+def test_odd_csv_files_exit_0_or_2(capsys, tmp_path, text):
+    """Odd CSV files (a byte-order mark, only some columns, ragged, duplicated or
+    unknown columns, header only, empty, quoted line breaks, an unclosed quote, other
+    separators and line ends, a NUL): status 0 or 2, never a traceback."""
+    path = tmp_path / "odd.csv"
+    path.write_text(text, encoding="utf-8", newline="")
+    opts = ("--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.3")
+    _no_traceback(capsys, "calc", str(path), *opts)
+    _no_traceback(capsys, "calc", str(path), "--json", "--model", "all")
+    _no_traceback(capsys, "calc", str(path), "-o", str(tmp_path))  # a directory
+
+
+@settings(max_examples=150, deadline=None)
+@given(name=st.sampled_from(sorted(SAMPLE)),
+       value=st.text(alphabet="0123456789.eE+-:,; mkNGPasdegrµ\u0663=_%#\"'", max_size=10))
+def test_random_text_for_any_option_exits_0_or_2(name, value):
+    """Random short text for a random option (hypothesis): status 0 or 2, never a
+    traceback."""
+    from linecontact.cli import main
+    from linecontact.cases import option_name
+
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        status = main(["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
+                       "--poisson", "0.3", "--load", "1kN", option_name(name), value])
+    assert status in (0, 2) and "Traceback" not in err.getvalue(), (name, value, status)
+
+
+def test_an_overflowing_result_is_flagged_not_printed_as_inf(capsys):
+    """--load 1e300 N: p0 = sqrt(F E*/(pi R L)) overflows (F E* ~ 2e311 > 1.8e308), so
+    p0 is '-' with a flag naming the overflow, never 'inf'; Kunz's own depth (finite) is
+    still printed, and numpy's overflow warnings do not reach stderr (the
+    one-line rule)."""
+    argv = (*STEEL_CASE, "--radius", "5mm", "--load", "1e300", "--model", "kunz")
+    status, out, err = _main(capsys, *argv)
+    assert status == 0 and "inf" not in out and err == "", err
+    assert "overflow" in out
+    doc = _main_json(capsys, *argv)
+    row = doc["models"][0]["rows"][0]
+    assert row["peak_pressure"] is None and "p0 (Hertz)" in row["flags"]
+    assert row["depth"] is not None and math.isfinite(row["depth"])

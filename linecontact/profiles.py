@@ -649,7 +649,10 @@ class TabulatedProfile(Profile):
         """Read a profile from a CSV file of two columns x [m], drop [m].
 
         Lines starting with '#' are comments; one optional header row of non-numeric
-        names is skipped; separators ',' or ';' or whitespace.
+        names is skipped; separators ',' or ';' or whitespace. Each cell follows the
+        calculator's input rule (:func:`linecontact._units.parse_quantity`): a number
+        with at most one unit name, bare = m (``5mm``, ``1um``); non-ASCII digits,
+        ``1_000``, ``nan`` and ``inf`` are refused.
 
         Parameters
         ----------
@@ -693,14 +696,19 @@ class TabulatedProfile(Profile):
             if not s or s.startswith("#"):
                 continue
             fields = [f for f in re.split(r"[,;\s]+", s) if f]
-            try:
-                vals = [float(f) for f in fields]
-            except ValueError:
-                if not header_seen and not xs:
+            # each cell by the package's one input rule (linecontact._units: a number
+            # with at most one unit name, bare = m); a first row with no number at all
+            # is the header
+            parsed = [_file_length(f) for f in fields]
+            if any(isinstance(v, str) for v in parsed):
+                if not header_seen and not xs and all(isinstance(v, str) for v in parsed):
                     header_seen = True
                     continue
+                why = next(v for v in parsed if isinstance(v, str))
                 raise OutOfRangeError("profile file", f"{p.name} line {lineno}: {s!r}",
-                                      "rows of two numbers x [m], drop [m]") from None
+                                      "rows of two lengths x, drop (bare numbers in m)",
+                                      hint=why)
+            vals = parsed
             if len(vals) != 2:
                 raise OutOfRangeError("profile file", f"{p.name} line {lineno}: {s!r}",
                                       "rows of two numbers x [m], drop [m]")
@@ -770,6 +778,16 @@ def parse_angle(text, parameter="tilt"):
         raise OutOfRangeError(parameter, typed, "(-0.1, 0.1) rad",
                               hint="the roller models linearise the tilt (small angles)")
     return value
+
+
+def _file_length(text):
+    """A cell of a profile file in m by the one input rule, or why not (a str)."""
+    from ._units import InputError, parse_quantity
+
+    try:
+        return parse_quantity("cell", text, "length", positive=False)
+    except InputError as exc:
+        return f"{text!r}: {exc.reason}"
 
 
 #: Profile options that may be negative (an offset crown may sit on either side).

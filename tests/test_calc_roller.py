@@ -132,3 +132,23 @@ def test_batch_refuses_profile_columns(capsys, tmp_path):
     assert status == 2
     rows = out.strip().splitlines()
     assert "not computed in a batch" in rows[1] and rows[2].split(",")[-1] == ""
+
+
+def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
+    """The cells of a 'file:' profile are read like every other value (linecontact.
+    _units: a number with at most one unit name, bare = m): '5mm, 1um' is the same
+    profile as '0.005, 1e-6' (the same force to the last bit: rtol 0, the factors 1e-3
+    and 1e-6 are the built-in ones), and a non-ASCII digit or '1_0' (both accepted by
+    float() before) is one line, status 2."""
+    bare, units = tmp_path / "bare.csv", tmp_path / "units.csv"
+    bare.write_text("x,drop\n-0.005,1e-6\n0,0\n0.005,1e-6\n", encoding="utf-8")
+    units.write_text("x,drop\n-5mm,1um\n0,0\n5mm,1um\n", encoding="utf-8")
+    rows = [_json(capsys, *ROLLER, "--depth", "2um", "--profile", f"file:{p}")
+            for p in (bare, units)]
+    assert rows[0]["profiled_roller"][0]["rows"] == rows[1]["profiled_roller"][0]["rows"]
+    for cell in ("\u0663", "1_0"):
+        bad = tmp_path / "bad.csv"
+        bad.write_text(f"x,drop\n-0.005,1e-6\n0,{cell}\n0.005,1e-6\n", encoding="utf-8")
+        status, out, err = _main(capsys, *ROLLER, "--depth", "2um", "--profile",
+                                 f"file:{bad}")
+        assert status == 2 and len(err.strip().splitlines()) == 1 and cell in err, err

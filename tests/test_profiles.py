@@ -119,7 +119,7 @@ def test_table_profile_reads_csv_and_interpolates(tmp_path):
 @pytest.mark.parametrize("text, param, fragment", [
     ("x,drop\n0,0\n0.002,1e-6\n0.001,2e-6\n", "x", "increase strictly"),
     ("x,drop\n0,0\n0.002,1e-6\n0.002,2e-6\n", "x", "increase strictly"),
-    ("x,drop\n0,0\n0.001,nan\n0.002,2e-6\n", "drop", "finite"),
+    ("x,drop\n0,0\n0.001,nan\n0.002,2e-6\n", "profile file", "not a finite number"),
     ("x,drop\n0,0\n0.001,-1e-6\n0.002,2e-6\n", "drop", "[0, inf) m"),
     ("x,drop\n0,0\n", "x", "at least 2"),
     ("x,drop\n0,0\n0.001\n", "profile file", "two numbers"),

@@ -205,6 +205,11 @@ def parse_model_option(spec):
         if not text:
             raise InputError("--model", spec, valid, "empty model name")
         key, *opts = text.split(":")
+        if key not in models.MODELS and key in models.DEFINED_IN:
+            # registered on import of its module (kept off the one-case path until asked)
+            from importlib import import_module
+
+            import_module(models.DEFINED_IN[key])
         if key not in models.MODELS:
             raise InputError("--model", text, valid, "unknown model")
         defaults = _option_defaults(models.MODELS[key])

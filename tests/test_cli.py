@@ -995,3 +995,23 @@ def test_an_overflowing_result_is_flagged_not_printed_as_inf(capsys):
     row = doc["models"][0]["rows"][0]
     assert row["peak_pressure"] is None and "p0 (Hertz)" in row["flags"]
     assert row["depth"] is not None and math.isfinite(row["depth"])
+
+
+def test_every_listed_model_key_is_accepted_by_model_option():
+    """The keys that --model's message lists as valid (models.available_models(), which
+    includes the roller models registered on import of linecontact.roller) are all
+    accepted: 'profiled-roller' was listed and then refused as 'unknown model'."""
+    from linecontact.compute import parse_model_option
+    from linecontact.models import available_models
+
+    for key in available_models():
+        assert parse_model_option(key)[0][1] == key
+
+
+def test_profiled_roller_model_option_runs(capsys):
+    """--model profiled-roller computes the straight roller by coupled slices (status 0)
+    and its depth is finite and positive."""
+    doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "1kN", "--model",
+                     "profiled-roller")
+    d = doc["models"][0]["rows"][0]["depth"]
+    assert d is not None and d > 0

@@ -357,6 +357,27 @@ def summarise(col, tasks, results):
         f"{np.max(np.abs(col['tilt']) * L / 2 / col['bem_delta']):.2g} times the largest "
         f"approach; profiles {', '.join(PROFILES.values())}")
     s["bem_seconds"] = float(np.median(col["bem_seconds"]))
+    # the same range as data (read by linecontact.roller to note cases outside it):
+    # "low, high" pairs; |theta| for tilts; profile keys of linecontact.profiles
+    given, freet = col["free_tilt"] == 0, col["free_tilt"] > 0
+    drop = np.abs(col["tilt"]) * L / 2 / col["bem_delta"]
+    qn = col["line_load"] / (ESTAR * DIAMETER)
+    s["covered_fields"] = {
+        "covered_l_over_d": f"{np.min(L) / DIAMETER:.6g}, {np.max(L) / DIAMETER:.6g}",
+        "covered_line_load_over_estar_d": f"{np.min(qn):.6g}, {np.max(qn):.6g}",
+        "covered_given_tilt_rad": f"0, {np.max(np.abs(col['tilt'][given])):.6g}",
+        "covered_free_tilt_rad": f"0, {np.max(np.abs(col['tilt'][freet]), initial=0):.6g}",
+        "covered_tilt_drop_over_approach": f"0, {np.max(drop):.6g}",
+        # the study's profiles by runtime key (its user-table case is a smooth
+        # asymmetric crown, not any table: "file" is not listed)
+        "covered_profiles": "circular, iso16281, lundberg, johns-gohar, end-relief",
+        "runtime_error_off_ends": (
+            f"depth {s['rt_off_d']:.3g}, moment {s['rt_off_m']:.3g}, moment_untilted "
+            f"{s['rt_off_m0']:.3g}, p_max {s['rt_off_p']:.3g}, tilt {s['rt_off_t']:.3g}"),
+        "runtime_error_edge_loaded": (
+            f"depth {s['rt_edge_d']:.3g}, moment {s['rt_edge_m']:.3g}, tilt "
+            f"{s['rt_edge_t']:.3g}"),
+    }
     return s
 
 
@@ -498,6 +519,7 @@ def run(args):
                   f"{s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}, tilt "
                   f"{s['iso_edge_t']:.2%}",
         covered=s["range"],
+        **s["covered_fields"],
         wall_time=f"{wall:.0f} s for {len(tasks)} cases (0 when every case came from the "
                   f"checkpoints; the per-case times sum to {s['case_seconds']:.0f} s); "
                   f"median per case: BEM "

@@ -132,3 +132,18 @@ def test_batch_refuses_profile_columns(capsys, tmp_path):
     assert status == 2
     rows = out.strip().splitlines()
     assert "not computed in a batch" in rows[1] and rows[2].split(",")[-1] == ""
+
+
+def test_profiled_row_prints_where_the_error_is_known(capsys):
+    """The coupled-slice row carries the note of tables/roller_accuracy.csv's covered
+    range: R 5 mm, L 14 mm (L/D 1.4), 4.2 kN (300 N/mm) is a case of that table, inside;
+    L 50 mm (L/D 5) is beyond its longest roller (L/D 3), outside, named in the row."""
+    base = ["calc", "--radius", "5mm", "--estar", "115.385GPa", "--load", "4.2kN",
+            "--crown-radius", "500mm"]
+    status, out, err = _main(capsys, *base, "--length", "14mm")
+    assert status == 0, err
+    row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
+    assert "inside the range where this model's error was measured" in row
+    status, out, err = _main(capsys, *base, "--length", "50mm")
+    row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
+    assert "L/D = 5 (measured 1.4-3)" in row and "outside the range" in row

@@ -140,6 +140,24 @@ def test_edge_loading_reports_no_peak_pressure():
     assert t.contact_start > -5e-3
 
 
+def test_infinite_end_drop_is_never_edge_loaded():
+    """Lundberg's drop ln 1/(1 - (2x/L)^2) is infinite at x = +-L/2: the rigid overlap,
+    and with it the contact, ends before the roller ends, where the pressure is finite
+    (3D BEM of tools/roller_bem.py at the same depth, R 5 mm, L 10 mm, 1 kN = F0:
+    contact ends 9.8 um before each end on 1024, 2048 and 4096 cells along x, peak
+    973/972 MPa 28 um from the end). At its design load 100 slices put the contact into
+    the last slice (6.25 um from the end): not edge loaded, the peak reported but not
+    resolved. ISO/TS 16281 likewise (BEM at 20 kN: contact ends 17-20 um before the ends,
+    peak 6093-6099 MPa from 1024 to 4096 cells). Johns-Gohar's drop is finite at the ends and the contact reaches them
+    (BEM: an end cell loaded on every grid down to 2.4 um): edge loaded."""
+    s = ProfiledRoller(5e-3, 10e-3, 115e9, "lundberg:F0=1kN").at_force(1000.0, tilt=0.0)
+    assert not s.edge_loaded and s.edge is None and s.p_max is not None
+    assert not s.p_max_resolved and "infinite" in s.message
+    assert s.contact_end < 5e-3 and s.contact_start > -5e-3
+    j = ProfiledRoller(5e-3, 10e-3, 115e9, "johns-gohar:F0=1kN").at_force(1000.0, tilt=0.0)
+    assert j.edge_loaded and j.edge == "both"
+
+
 def test_unresolved_peak_is_flagged():
     """A corner relief of 1 mm radius makes a pressure peak where the contact ends,
     narrower than the slices: the solution says p_max is not resolved (the peak moves

@@ -148,8 +148,9 @@ def test_infinite_end_drop_is_never_edge_loaded():
     973/972 MPa 28 um from the end). At its design load 100 slices put the contact into
     the last slice (6.25 um from the end): not edge loaded, the peak reported but not
     resolved. ISO/TS 16281 likewise (BEM at 20 kN: contact ends 17-20 um before the ends,
-    peak 6093-6099 MPa from 1024 to 4096 cells). Johns-Gohar's drop is finite at the ends and the contact reaches them
-    (BEM: an end cell loaded on every grid down to 2.4 um): edge loaded."""
+    peak 6093-6099 MPa from 1024 to 4096 cells). Johns-Gohar's drop is finite at the
+    ends and the contact reaches them (BEM: an end cell loaded on every grid down to
+    2.4 um): edge loaded."""
     s = ProfiledRoller(5e-3, 10e-3, 115e9, "lundberg:F0=1kN").at_force(1000.0, tilt=0.0)
     assert not s.edge_loaded and s.edge is None and s.p_max is not None
     assert not s.p_max_resolved and "infinite" in s.message

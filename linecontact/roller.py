@@ -1092,8 +1092,12 @@ class ProfiledRoller:
         if tilt is not None:
             th = TILT_RANGE.check(tilt).item()
             return self._solution(*self._depth_at_force(F0, th, tol))
-        th = 0.0
         L = self.length
+        st = self._depth_at_force(F0, 0.0, tol)
+        free = self._free_tilt(F0, st, tol)
+        if free is not None:
+            return self._solution(*free, free_tilt=True)
+        th = 0.0
         for _ in range(60):
             st = self._depth_at_force(F0, th, tol)
             M, K = st[3], st[4]
@@ -1105,6 +1109,33 @@ class ProfiledRoller:
                 step /= 2
             th = th + step
         raise ConvergenceError(f"no zero-moment tilt found for force {F0:g} N")
+
+    def _free_tilt(self, F0, st, tol, steps=12):
+        """Newton on (d, theta) together for F = F0 and M = 0 from the aligned solution
+        `st` (its step from the exact 2x2 stiffness matrix), one slice solve per step;
+        None if it leaves the admissible region or does not converge (the caller then
+        iterates on theta with F solved at each tilt, slower but safe)."""
+        L = self.length
+        d, th = st[0], st[1]
+        for _ in range(steps):
+            F, M, K = st[2], st[3], st[4]
+            if abs(F / F0 - 1) <= tol and abs(M) <= tol * F0 * L:
+                return st
+            try:
+                dd, dth = np.linalg.solve(K, [F0 - F, -M])
+            except np.linalg.LinAlgError:
+                return None
+            th_new = th + dth
+            if not abs(th_new) < TILT_RANGE.high:
+                return None
+            d0 = self.first_contact_depth(th_new)
+            d_new = d + dd
+            if d_new <= d0:
+                # keep the overlap positive: halve the distance to first contact
+                d_new = d0 + 0.5 * (d - self.first_contact_depth(th))
+            d, th = d_new, th_new
+            st = self._forces(d, th)
+        return None
 
 
 def _profile(profile, radius, length, estar):

@@ -147,3 +147,23 @@ def test_profiled_row_prints_where_the_error_is_known(capsys):
     status, out, err = _main(capsys, *base, "--length", "50mm")
     row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
     assert "L/D = 5 (measured 1.4-3)" in row and "outside the range" in row
+
+
+def test_plain_calc_does_not_import_the_roller_model():
+    """Cold start: a one-case calc without profile flags never imports
+    linecontact.roller (nor reads tables/roller_accuracy.csv, which only a roller solve
+    does); checked in a fresh interpreter, since this one may have imported it."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    code = ("import sys, io, contextlib\n"
+            "from linecontact.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    main(['calc', '--radius', '5mm', '--length', '10mm', '--estar',"
+            " '115GPa', '--load', '1kN'])\n"
+            "print('linecontact.roller' in sys.modules)\n")
+    root = Path(__file__).resolve().parents[1]
+    out = subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True,
+                         text=True, check=True).stdout
+    assert out.strip() == "False"

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from linecontact.classical import effective_modulus
-from linecontact.models import ContactModel, standard_models
+from linecontact.models import standard_models
 from linecontact.tables import TableError, read_table, write_table
 from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
                                     cylinder_stiffness_ratios, effective_shear_modulus,

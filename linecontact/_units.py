@@ -52,6 +52,7 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
+    "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
 }
 
@@ -112,7 +113,7 @@ def _registry():
 
 def _valid_text(kind, positive, bounds):
     dim, si, examples = DIMENSIONS[kind]
-    what = "a number" if kind == "dimensionless" else f"a {kind}"
+    what = _a(kind)
     if bounds:
         return bounds[1]
     if positive:
@@ -136,7 +137,16 @@ BUILTIN_UNITS = {
               "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
     "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
+    "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180},
+    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
 }
+
+
+def _a(kind):
+    """'a length', 'an angle', 'a number' (for 'dimensionless')."""
+    if kind == "dimensionless":
+        return "a number"
+    return f"{'an' if kind[0] in 'aeiou' else 'a'} {kind}"
 
 
 def _unit_factor(unit, kind):
@@ -151,7 +161,7 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
-    elif unit in BUILTIN_UNITS[kind]:
+    elif unit in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][unit]
     else:
         ureg = _registry()
@@ -161,7 +171,7 @@ def _unit_factor(unit, kind):
             result = f"unknown unit {unit!r}"
         else:
             if not u.is_compatible_with(si):
-                result = f"expected a {kind}, got {_describe_unit(u)}"
+                result = f"expected {_a(kind)}, got {_describe_unit(u)}"
             else:
                 result = float(ureg.Quantity(1.0, u).to(si).magnitude)
     _FACTORS[key] = result
@@ -172,7 +182,7 @@ def _describe_unit(u):
     """Name the dimension of a pint unit in words when it is a common one."""
     for name, (dim, si, _) in DIMENSIONS.items():
         if dim and u.is_compatible_with(si):
-            return f"a {name} ({u:~})"
+            return f"{_a(name)} ({u:~})"
     if u.dimensionless:
         return f"a pure number ({u})"
     return f"units of {u.dimensionality} ({u:~})"

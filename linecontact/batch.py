@@ -9,7 +9,8 @@ Reading
 
 Writing: no user data is ever lost
     Every input row is written, in its place, with all its cells exactly as read
-    (a short row is padded with empty cells), followed by the result columns:
+    (a short row is padded with empty cells; cells beyond the header go under unnamed
+    columns), followed by the result columns:
     ``estar_GPa``, then per model ``model``, ``force_kN``, ``depth_um``,
     ``stiffness_N_per_um``, ``half_width_um``, ``peak_pressure_MPa``,
     ``contact_radius_um`` (whole rollers: ``roller_deflection_um``,
@@ -59,7 +60,12 @@ class BatchError(ValueError):
 
 
 def read_table(path):
-    """(header, rows) of a CSV file as text cells; BatchError with the reason."""
+    """(header, rows, lines) of a CSV file, cells as text; BatchError with the reason.
+
+    ``lines`` is the text of each row as in the file (line ends aside) when no cell is
+    quoted, so that the output repeats the user's cells byte for byte; else None (the
+    csv module then writes them back with minimal quoting).
+    """
     try:
         with open(path, encoding="utf-8-sig", newline="") as fh:
             text = fh.read()
@@ -72,19 +78,71 @@ def read_table(path):
                          f"{exc.start})") from None
     except OSError as exc:
         raise BatchError(f"{str(path)!r}: cannot read ({exc.strerror or exc})") from None
-    try:
-        rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
-    except csv.Error as exc:
-        raise BatchError(f"{str(path)!r}: cannot read as CSV ({exc})") from None
-    rows = [r for r in rows if r]  # blank lines
+    lines = None
+    if '"' not in text:  # no quoting: one line per row, cells split at commas
+        if "\r" in text:
+            text = text.replace("\r\n", "\n").replace("\r", "\n")
+        lines = [ln for ln in text.split("\n") if ln]
+        rows = _FlatRows.of(lines) or [ln.split(",") for ln in lines]
+    else:
+        try:
+            rows = list(csv.reader(io.StringIO(text), skipinitialspace=True))
+        except csv.Error as exc:
+            raise BatchError(f"{str(path)!r}: cannot read as CSV ({exc})") from None
+        rows = [r for r in rows if r]  # blank lines
     if not rows:
         raise BatchError(f"{str(path)!r}: the file is empty; expected a header row and "
                          "one case per row")
-    header, body = rows[0], rows[1:]
+    if isinstance(rows, _FlatRows):
+        header, body = rows.header(), rows.body()
+    else:
+        header, body = rows[0], rows[1:]
     if not body:
         raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
                          "per row under the header")
-    return header, body
+    return header, body, (lines[1:] if lines is not None else None)
+
+
+class _FlatRows:
+    """The cells of a rectangular, unquoted CSV as one flat list (one split of the
+    text instead of a list per row); rows and columns are slices of it."""
+
+    def __init__(self, flat, width, start=0):
+        self.flat, self.width, self.start = flat, width, start
+
+    @classmethod
+    def of(cls, lines):
+        """A _FlatRows of these lines, or None if they do not all have as many cells
+        as the first."""
+        if not lines:
+            return None
+        commas = lines[0].count(",")
+        if not all(ln.count(",") == commas for ln in lines):
+            return None
+        return cls(",".join(lines).split(","), commas + 1)
+
+    def header(self):
+        return self.flat[: self.width]
+
+    def body(self):
+        return _FlatRows(self.flat, self.width, self.start + 1)
+
+    def __len__(self):
+        return len(self.flat) // self.width - self.start
+
+    def __bool__(self):
+        return len(self) > 0
+
+    def __getitem__(self, i):
+        a = (self.start + i) * self.width
+        return self.flat[a: a + self.width]
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+    def column(self, j):
+        """Cell j of every row (a C-level slice)."""
+        return self.flat[self.start * self.width + j:: self.width]
 
 
 def result_columns(names, taken):
@@ -139,7 +197,7 @@ class _Progress:
 
 def run_batch(args, argv, specs, options):
     """The batch command; returns the exit status (2 if any row failed)."""
-    header, body = read_table(args.csv)
+    header, body, lines = read_table(args.csv)
     n = len(body)
     names = [h.strip().lower() for h in header]
     known = {}
@@ -151,14 +209,29 @@ def run_batch(args, argv, specs, options):
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
-    width = len(header)
+    # a row longer than the header keeps its extra cells under unnamed columns, so the
+    # result columns stay aligned; a shorter row is padded with empty cells
+    flat = isinstance(body, _FlatRows)  # rectangular: every row as wide as the header
+    width = len(header) if flat else max(len(header), max(map(len, body)))
+    header = list(header) + [""] * (width - len(header))
+    full = flat or min(map(len, body)) >= width  # no short row (the usual case)
+    transposed = None
     cells = {}
     for p in PARAMETERS:
         j = known.get(p.name)
         opt = options.get(p.name)
         if j is None and opt is None:
             continue
-        col = [r[j] if j is not None and j < len(r) else "" for r in body]
+        if j is None:
+            col = [""] * n
+        elif flat:
+            col = body.column(j)
+        elif full:
+            if transposed is None:
+                transposed = list(zip(*body))  # all columns at once (C loop)
+            col = list(transposed[j])
+        else:
+            col = [r[j] if j < len(r) else "" for r in body]
         if opt is not None:
             if ":" in str(opt):
                 raise InputError(option_name(p.name), opt, "one value per row in a batch",
@@ -191,7 +264,7 @@ def run_batch(args, argv, specs, options):
     if args.json:
         text = _json(argv, results, header, body, out_names, getters, width)
     else:
-        text = _csv(header, body, out_names, getters, width)
+        text = _csv(header, body, lines, out_names, getters, width)
     render.write(text, args.output)
     n_failed = sum(1 for e in errors if e)
     if n_failed:
@@ -236,20 +309,77 @@ def _result_layout(results, cases, si, multi):
     return cols, getters
 
 
-def _format_numbers(values):
-    """'%.6g' of every element, '' for NaN or inf (a list of str)."""
-    return [format(v, ".6g") if v - v == 0 else ""
-            for v in np.asarray(values, dtype=float).tolist()]
+def _result_cells(getters):
+    """The result part of every output line: numbers as '%.6g' ('' for none), text
+    minimally quoted; one C-level format per row where all numbers are finite, with
+    the columns that hold one value for all rows written into the format once."""
+    n = len(getters[0][1]) if getters else 0
+    parts, cols, kinds, finite = [], [], [], np.ones(n, bool)
+    for kind, data in getters:
+        if kind == "num":
+            v = np.asarray(data, dtype=float)
+            finite &= np.isfinite(v)
+            if n and np.all(v == v[0]):  # constant and finite (NaN != NaN)
+                parts.append(format(float(v[0]), ".6g").replace("%", "%%"))
+                continue
+            parts.append("%.6g")
+            cols.append(v.tolist())
+            kinds.append(kind)
+        else:
+            first = data[0] if n else ""
+            if n and all(t == first for t in data):
+                parts.append(_quote(str(first)).replace("%", "%%"))
+                continue
+            cache = {}
+            parts.append("%s")
+            cols.append([cache[t] if t in cache else cache.setdefault(t, _quote(str(t)))
+                         for t in data])
+            kinds.append(kind)
+    template = ",".join(parts)
+    if not cols:
+        return [template.replace("%%", "%")] * n
+    slow_kinds = [kind for kind, _ in getters]
+    slow_cols = None
+
+    def slow(i):
+        nonlocal slow_cols
+        if slow_cols is None:  # every column, for the rows with a missing number
+            slow_cols = [np.asarray(d, dtype=float).tolist() if k == "num" else d
+                         for k, d in getters]
+        return ",".join((format(c[i], ".6g") if c[i] - c[i] == 0 else "") if k == "num"
+                        else _quote(str(c[i])) for k, c in zip(slow_kinds, slow_cols))
+
+    return [template % row if ok else slow(i)
+            for i, (row, ok) in enumerate(zip(zip(*cols), finite.tolist()))]
 
 
-def _csv(header, body, out_names, getters, width):
-    cols = [_format_numbers(data) if kind == "num" else data for kind, data in getters]
+def _quote(text):
+    """A CSV cell with minimal quoting (as the csv module writes it)."""
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+def _csv(header, body, lines, out_names, getters, width):
+    """The output CSV: the user's rows (their original text when unquoted) followed by
+    the result cells."""
+    results = _result_cells(getters)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(list(header) + out_names)
+    if lines is not None and isinstance(body, _FlatRows):  # no row to pad
+        out = [ln + "," + res for ln, res in zip(lines, results)]
+        buf.write("\n".join(out) + "\n")
+        return buf.getvalue()
+    if lines is not None:
+        out = [ln + "," * (width - len(r)) + "," + res if len(r) < width
+               else ln + "," + res for ln, r, res in zip(lines, body, results)]
+        buf.write("\n".join(out) + "\n")
+        return buf.getvalue()
     pad = [""] * width
-    padded = (r + pad[len(r):] if len(r) < width else r for r in body)
-    w.writerows(r + list(t) for r, t in zip(padded, zip(*cols)))
+    for r, res in zip(body, results):
+        row = r + pad[len(r):] if len(r) < width else r
+        buf.write(",".join(_quote(c) for c in row) + "," + res + "\n")
     return buf.getvalue()
 
 

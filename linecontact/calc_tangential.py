@@ -13,8 +13,10 @@ and "viscoelastic second body"):
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's G*/E* and with the
-    BEM's ratio in each direction, Q/(mu F), and the slip state in the flags: partial
-    slip for Q < mu F, gross slip (no static solution: u is "-") for Q > mu F.
+    BEM's ratio in each direction (times the table's partial-slip correction of the
+    shift, when it has one: as ``TangentialContact(..., method="bem")``), Q/(mu F),
+    and the slip state in the flags: partial slip for Q < mu F, gross slip (no static
+    solution: u is "-") for Q > mu F.
 ``--instantaneous-modulus E0 --long-term-modulus EINF --relaxation-time TAU``, or
 ``--prony FILE.csv`` (columns tau_s, E_Pa and a ``# E_inf: VALUE`` line)
     A viscoelastic second body (instead of ``--modulus``; needs ``--poisson``) with the
@@ -31,6 +33,8 @@ Not combined: the tangential and viscoelastic options with the raceways (a whole
 roller), the friction options with a viscoelastic body.
 """
 from __future__ import annotations
+
+import re
 
 import numpy as np
 
@@ -49,8 +53,9 @@ NOTES = {
                   "exact for axisymmetric contacts); across (rolling direction) and along "
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
                   "tangential_cylinder.csv) times k; u: tangential shift under Q at "
-                  "constant normal force, u = (mu/r) [d - d(F - Q/mu)] with r = G*/E* "
-                  "(MDR) or the BEM ratio (Cattaneo 1938, Mindlin 1949); gross slip at "
+                  "constant normal force or depth, u = (mu/r) [d - d(F - Q/mu)] with "
+                  "r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
+                  "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "
                   "Q = mu F. Uncoupled normal and tangential problems (Goodman).",
     "creep": "d(t): depth after the normal load has been held for t (Lee & Radok 1960, "
              "exact while the contact grows), d(t) = F1^-1(F J*(t)); d(inf): long-term "
@@ -183,23 +188,26 @@ def columns(cases, present):
     return cols
 
 
-def _each(func, idx, notes):
-    """func(sub-index array) -> array, element by element where a call is refused."""
+def _each(func, idx, notes, width=1):
+    """func(sub-index array) -> values (`width` per element, flattened), element by
+    element where a call is refused; returns shape (n,) or (n, width)."""
     from .validity import OutOfRangeError
 
+    shape = (idx.size,) if width == 1 else (idx.size, width)
     try:
-        return np.atleast_1d(np.asarray(func(idx), dtype=float)), None
+        return np.asarray(func(idx), dtype=float).reshape(shape), None
     except FileNotFoundError:
         for k in range(idx.size):
             notes[k] = ("the BEM table tangential_cylinder is not installed (python -m "
                         "tools.build_tables tangential)")
-        return np.full(idx.size, np.nan), notes
+        return np.full(shape, np.nan), notes
     except OutOfRangeError:
         pass
-    res = np.full(idx.size, np.nan)
+    res = np.full(shape, np.nan)
     for k in range(idx.size):
         try:
-            res[k] = float(np.asarray(func(idx[k:k + 1]), dtype=float).ravel()[0])
+            v = np.asarray(func(idx[k:k + 1]), dtype=float).ravel()
+            res[k] = v[0] if width == 1 else v[:width]
         except OutOfRangeError as exc:
             notes[k] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
     return res, notes
@@ -241,10 +249,12 @@ def add_fields(fields, flags, g, model, r, cases, present):
         fields["kt_mdr"][rows] = ratio_mdr * k[sel]
         bem = {"across": np.full(sel.size, np.nan), "along": np.full(sel.size, np.nan)}
         sub_notes = [""] * sel.size
-        for direction in ("across", "along"):
-            vals, _ = _each(lambda ii, dr=direction: tg.cylinder_stiffness_ratios(
-                model, d[sel][ii], gstar[ii])[dr], np.arange(sel.size), sub_notes)
-            bem[direction] = vals
+        def ratios(ii):
+            r = tg.cylinder_stiffness_ratios(model, d[sel][ii], gstar[ii])
+            return np.stack([np.atleast_1d(r["across"]), np.atleast_1d(r["along"])], axis=1)
+
+        both, _ = _each(ratios, np.arange(sel.size), sub_notes, width=2)
+        bem["across"], bem["along"] = both[:, 0], both[:, 1]
         for j, t in zip(sel, sub_notes):
             note(j, "kt across/along: " + _short(t) if t else "")
         fields["kt_across"][rows] = bem["across"] * k[sel]
@@ -274,38 +284,73 @@ def add_fields(fields, flags, g, model, r, cases, present):
                     ratio = bem[direction][tl][partial]
                     good = np.isfinite(ratio)
                     if good.any():
-                        fields[f"shift_{direction}"][rows3[good]] = tg.tangential_shift(
+                        u = np.atleast_1d(tg.tangential_shift(
                             model, d[s3][good], cases["tangential_load"][rows3[good]],
-                            cases["friction"][rows3[good]], gs[good], ratio=ratio[good])
+                            cases["friction"][rows3[good]], gs[good], ratio=ratio[good]))
+                        u = u * _slip_correction(model, direction, d[s3][good], gs[good],
+                                                 frac[partial][good])
+                        fields[f"shift_{direction}"][rows3[good]] = u
     materials = cases.get("material")
     if materials is not None:
         # creep under a held force (with a given depth the force would relax instead)
         vis = (np.array([materials[i] is not None for i in g], bool) & ok
                & (cases["given"][g] == "load"))
+        # rows with the same body and second-body constants are evaluated together
+        keys = {}
         for j in np.flatnonzero(vis):
             i = g[j]
-            mat = _Material(materials[i], cases["poisson"][i],
-                            cases["modulus2"][i] if present["modulus2"][i] else np.inf,
-                            cases["poisson2"][i] if present["poisson2"][i] else 0.0)
-            one = [""]
-            val, _ = _each(lambda ii, m=mat, f=F[j]: model.depth(
-                f * m.long_term_compliance * model.estar), np.arange(1), one)
-            fields["depth_long_term"][i] = val[0]
-            if one[0]:
-                note(j, "d(inf): " + _short(one[0]))
-            if present["time"][i]:
-                fields["time"][i] = cases["time"][i]
-                one = [""]
-                val, _ = _each(lambda ii, m=mat, f=F[j], t=cases["time"][i]:
-                               step_creep_depth(model, m, f, t), np.arange(1), one)
-                fields["creep_depth"][i] = val[0]
-                if one[0]:
-                    note(j, "d(t): " + _short(one[0]))
+            e2 = cases["modulus2"][i] if present["modulus2"][i] else np.inf
+            n2 = cases["poisson2"][i] if present["poisson2"][i] else 0.0
+            keys.setdefault((id(materials[i]), cases["poisson"][i], e2, n2), []).append(j)
+        for (_, nu1, e2, n2), js in keys.items():
+            js = np.array(js)
+            rows = g[js]
+            mat = _Material(materials[rows[0]], nu1, e2, n2)
+            sub = [""] * js.size
+            val, _ = _each(lambda ii: model.depth(
+                F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
+            fields["depth_long_term"][rows] = val
+            for j, t in zip(js, sub):
+                note(j, _creep_note("d(inf)", "E*_0/E*_inf", t))
+            timed = present["time"][rows]
+            if timed.any():
+                jt, rt = js[timed], rows[timed]
+                fields["time"][rt] = cases["time"][rt]
+                sub = [""] * jt.size
+                val, _ = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
+                                                           cases["time"][rt][ii]),
+                               np.arange(jt.size), sub)
+                fields["creep_depth"][rt] = val
+                for j, t in zip(jt, sub):
+                    note(j, _creep_note("d(t)", "E*_0 J*(t)", t))
     for j, i in enumerate(g):
         if notes[j]:
             flags[i] = "; ".join(t for t in (flags[i], notes[j]) if t)
 
 
+def _slip_correction(model, direction, depth, gstar, q):
+    """The BEM table's partial-slip shift factor at load fractions q (1 without one),
+    as in :class:`linecontact.tangential.TangentialContact` with method="bem"."""
+    from . import tangential as tg
+
+    table = tg.cylinder_tangential_table()
+    nu = tg.equivalent_poisson(gstar, model.estar)
+    return np.atleast_1d(table.shift_factor(direction, nu,
+                                            depth * model.radius / model.length ** 2, q))
+
+
+def _creep_note(column, factor, text):
+    """The model's refusal of a creep depth, said in terms of the creep."""
+    if not text:
+        return ""
+    text = _short(text)
+    if text.startswith("force = "):
+        text = (f"beyond the model's range: its elastic-equivalent force F {factor} = "
+                + text[len("force = "):])
+    return f"{column}: {text}"
+
+
 def _short(text):
-    """First clause of a library message (the parameter, value and range)."""
-    return text.split("; ")[0]
+    """First clause of a library message (the parameter, value and range), without
+    the element index of the one-element array it was evaluated on."""
+    return re.sub(r" \(element \[\d+\] of shape \(\d+,\)\)", "", text.split("; ")[0])

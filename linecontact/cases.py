@@ -48,8 +48,11 @@ class Parameter:
     name : str
         Column name (``_`` becomes ``-`` in the option).
     kind : str
-        ``length``, ``force``, ``pressure`` or ``dimensionless`` (see
-        :data:`linecontact._units.DIMENSIONS`).
+        A kind of :data:`linecontact._units.DIMENSIONS` (``length``, ``force``,
+        ``pressure``, ``dimensionless``, ``time``), parsed here to SI floats; or
+        ``text``, ``path`` or ``angle``, not parsed here (``present`` marks where given;
+        the code that uses them reads the raw cells and checks them, e.g. the tilt in
+        :mod:`linecontact.calc_roller`).
     help : str
         One line for ``--help``.
     group : str
@@ -78,6 +81,7 @@ _LOAD = "load (exactly one)"
 _RACE = "whole roller between two raceways (instead of --radius2)"
 _TAN = "tangential contact (one contact; see linecontact.calc_tangential)"
 _VISCO = "viscoelastic second body (instead of --modulus; creep)"
+_PROFILE = "profiled and tilted roller (one contact; see linecontact.calc_roller)"
 
 #: Every input, in ``--help`` order.
 PARAMETERS = (
@@ -121,6 +125,15 @@ PARAMETERS = (
               "above)", _VISCO),
     Parameter("time", "time", "time t the load has been held, or a sweep START:STOP:N: "
               "the creep depth d(t) (with --load)", _VISCO, positive=False, sweep=True),
+    Parameter("crown_radius", "length", "crown radius Rc of a circular crown, drop "
+              "x^2/(2 Rc): adds the profiled-roller rows (coupled slices, ISO/TS 16281 "
+              "slicing)", _PROFILE),
+    Parameter("profile", "text", "roller profile NAME[:OPT=VAL,...]: iso16281[:D=..], "
+              "lundberg[:F0=..], johns-gohar[:F0=..], circular:Rc=.., end-relief:r=.. or "
+              "end-relief:l=..,angle=.. (or drop=..), file:PATH.csv (x, drop in m)",
+              _PROFILE),
+    Parameter("tilt", "angle", "tilt of the roller axis, e.g. 1mrad, 0.05deg (bare: rad); "
+              "positive loads the +x end", _PROFILE, positive=False),
 )
 
 BY_NAME = {p.name: p for p in PARAMETERS}
@@ -181,36 +194,40 @@ def parse_cases(cells, n, label=option_name):
             present[p.name] = ~np.isnan(col)
             raw[p.name] = [repr(float(v)) for v in col] if n <= 10 else None
             continue
-        col = ["" if c is None else str(c) for c in col]
+        if n and type(col[0]) is not str:  # cells as read are str; others converted
+            col = ["" if c is None else str(c) for c in col]
         raw[p.name] = col
-        given = np.array([c.strip() != "" for c in col], dtype=bool)
-        present[p.name] = given
-        if p.kind == "path":  # a file name, read where it is used
+        if p.kind in ("path", "text", "angle"):  # read where it is used (raw cells)
+            present[p.name] = np.array([c.strip() != "" for c in col], dtype=bool)
             values[p.name] = np.full(n, np.nan)
             continue
-        v = np.full(n, np.nan)
-        idx = np.flatnonzero(given)
-        if idx.size:
-            sub = [col[i] for i in idx]
-            parsed, errs = _parse_unique(label(p.name), sub, p)
-            v[idx] = parsed
-            for j, e in zip(idx, errs):
-                if e and not errors[j]:
-                    errors[j] = e
-        values[p.name] = v
+        # distinct cells only: a batch repeats its cylinders (and its empty cells)
+        if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
+            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)
+        else:
+            where = {}
+            inv = np.fromiter((where.setdefault(c, len(where)) for c in col),
+                              dtype=np.intp, count=n)
+            uniq = list(where)
+        u_given = np.array([c.strip() != "" for c in uniq], dtype=bool)
+        u_values = np.full(len(uniq), np.nan)
+        u_errors = [""] * len(uniq)
+        gi = np.flatnonzero(u_given)
+        if gi.size:
+            parsed, errs = parse_column(label(p.name), [uniq[i] for i in gi], p.kind,
+                                        positive=p.positive, bounds=bounds_of(p))
+            u_values[gi] = parsed
+            for i, e in zip(gi, errs):
+                u_errors[i] = e
+        present[p.name] = u_given[inv]
+        values[p.name] = u_values[inv]
+        bad = [i for i, e in enumerate(u_errors) if e]
+        if bad:
+            for j in np.flatnonzero(np.isin(inv, bad)):
+                if not errors[j]:
+                    errors[j] = u_errors[inv[j]]
     cases = _resolve(values, present, raw, errors, n, label)
     return cases, present, errors
-
-
-def _parse_unique(name, cells, p):
-    """parse_column over the distinct cells only (a batch repeats its cylinders)."""
-    uniq = list(dict.fromkeys(cells))
-    v, e = parse_column(name, uniq, p.kind, positive=p.positive, bounds=bounds_of(p))
-    if len(uniq) == len(cells):
-        return v, e
-    where = {c: i for i, c in enumerate(uniq)}
-    inv = np.fromiter((where[c] for c in cells), dtype=np.intp, count=len(cells))
-    return v[inv], [e[i] for i in inv]
 
 
 def _resolve(v, present, raw, errors, n, label):
@@ -309,9 +326,14 @@ def _resolve(v, present, raw, errors, n, label):
         nu2 = np.where(P["poisson2"], v["poisson2"], 0.0)[eq3]
         e1 = np.where(visco, E0, v["modulus"])[eq3]   # viscoelastic: instantaneous E0
         estar[eq3] = effective_modulus(e1, v["poisson"][eq3], e2, nu2)
+    from .calc_roller import resolve as _resolve_roller
+
+    roller_rows, roller_specs, roller_tilts = _resolve_roller(v, P, raw, fail, label, n)
     given = np.where(P["load"], "load", "depth")
     value = np.where(P["load"], v["load"], v["depth"])
     cases = dict(v)
+    cases.update(_roller_rows=roller_rows, _roller_spec=roller_specs,
+                 _roller_tilt=roller_tilts)
     cases.update(radius=radius, radius_eff=radius_eff, estar=estar, given=given,
                  value=value, raceways=raceways, material=materials, _present=present)
     return cases

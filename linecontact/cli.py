@@ -12,6 +12,8 @@ Usage (``linecontact calc --help`` has the full list)::
     linecontact calc cases.csv -o results.csv          # batch, one case per row
     linecontact calc ... --json                        # machine-readable, SI
     linecontact calc ... --model li-popov:coefficients=eq11,johnson:c=0.72
+    linecontact calc ... --load 1kN --crown-radius 500mm --tilt 1mrad  # profiled roller
+    linecontact calc ... --load 1kN --profile iso16281 --json          # ... with q(x)
 
 Where things are
     :mod:`linecontact.cases`   the inputs (options = CSV columns) and their checks;
@@ -64,8 +66,9 @@ its value and the valid range; in a batch, when any row failed, after writing al
 rows). A one-case call where no model covers the case prints the table and the first
 model's note on stderr, status 2.
 
-Nothing here runs at import; pandas is never imported, pint only for a value with a
-unit, so a one-case call starts quickly.
+Nothing here runs at import; pandas is never imported, and pint only for a unit name
+outside the built-in table of :mod:`linecontact._units` (mm, GPa, kN, in, lbf, psi, ...
+need no pint), so a one-case call starts quickly.
 """
 
 from __future__ import annotations
@@ -194,10 +197,20 @@ def _calc_one(args, argv, specs):
     results = compute(cases, errors, specs)
     if errors[0]:  # an unexpected failure of a model: said, not hidden
         raise _Failed(errors[0])
+    from . import calc_roller
+
+    rollers = calc_roller.solve(cases, errors)  # profiled roller (issue 9), if asked
+    bad = next((e for e in errors if e), "")
+    if bad:
+        raise _Failed(bad)
     if args.json:
-        render.write(render.one_json(argv, cases, present, results), args.output)
+        extra = {"profiled_roller": calc_roller.json_blocks(rollers)} if rollers else None
+        render.write(render.one_json(argv, cases, present, results, extra=extra),
+                     args.output)
     else:
-        render.write(render.table_text(cases, present, results, args.si), args.output)
+        text = render.table_text(cases, present, results, args.si)
+        text += calc_roller.table_text(rollers, str(cases["given"][0]), args.si)
+        render.write(text, args.output)
     computed = any(not note for s in results.sets for note in s["note"])
     if not computed:
         notes = [s["note"][0] for s in results.sets]

@@ -153,7 +153,12 @@ def hertz_peak_pressure(force, radius, length, estar):
     R = check_positive("radius", radius, "m")
     L = check_positive("length", length, "m")
     E = check_positive("estar", estar, "Pa")
-    return out(np.sqrt(F * E / (math.pi * R * L)))
+    return out(_peak_pressure(F, R, L, E))
+
+
+def _peak_pressure(F, R, L, E):
+    """p0 of :func:`hertz_peak_pressure` for inputs already checked."""
+    return np.sqrt(F * E / (math.pi * R * L))
 
 
 # ---------------------------------------------------------------------------------------
@@ -339,7 +344,7 @@ def _contact_fields(r, R, L, E):
     p0 = np.full(F.shape, np.nan)
     if ok.any():
         b[ok] = hertz_half_width(F[ok], R, L, E)
-        p0[ok] = hertz_peak_pressure(F[ok], R, L, E)
+        p0[ok] = _peak_pressure(F[ok], R, L, E)  # F, R, L, E* checked above
     r["half_width"] = b
     r["peak_pressure"] = p0
     with np.errstate(invalid="ignore"):
@@ -365,7 +370,9 @@ class Results:
     ----------
     sets : list of dict
         One per model column set: ``fields`` (name -> float array [SI]), ``note`` and
-        ``flags`` (lists of str), ``label`` (list of str: the model per row), ``id``.
+        ``flags`` (object arrays of str), ``label`` (object array of str: the model per
+        row), ``id`` (the column suffix) and ``model`` (the model built for the first
+        cylinder, for the JSON header).
     models : dict
         Model id -> a model object (for provenance).
     errors : list of str
@@ -378,7 +385,9 @@ class Results:
 
     def __init__(self, n, n_sets, errors):
         self.sets = [
-            {"fields": {}, "note": [""] * n, "flags": [""] * n, "label": [""] * n, "id": ""}
+            {"fields": {}, "note": np.full(n, "", dtype=object),
+             "flags": np.full(n, "", dtype=object), "label": np.full(n, "", dtype=object),
+             "id": ""}
             for _ in range(n_sets)
         ]
         from .calc_tangential import ALL_COLUMNS
@@ -422,11 +431,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                     np.where(race, R1, -1.0)], axis=1)
     rows = np.flatnonzero(ok)
     if rows.size:
-        _, first, inverse = np.unique(key[rows], axis=0, return_index=True,
-                                      return_inverse=True)
-        inverse = inverse.ravel()
-        order = np.argsort(inverse, kind="stable")
-        bounds = np.flatnonzero(np.diff(inverse[order])) + 1
+        k = key[rows]
+        order = np.lexsort(k.T[::-1])  # rows of one cylinder become neighbours
+        ks = k[order]
+        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
         groups = np.split(rows[order], bounds)
     else:
         groups = []
@@ -440,6 +448,12 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
     for s, m in zip(results.sets, probe):
         s["id"] = _model_id(m)
     reference = specs is not None and not first_only
+    ref_key = None
+    if reference:  # the best estimate alone per cylinder, as for a default batch
+        from .models import standard_models
+
+        first = standard_models(1.0, 1.0, 1.0)[0]
+        ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
     done = 0
     for g in groups:
@@ -453,7 +467,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
                 contacts = [Reff[i0]]
             sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
                     for R in contacts]
-            refs = ([list(_build(None, R, L[i0], E[i0], True)) for R in contacts]
+            refs = ([_build(None, R, L[i0], E[i0], True, ref_key) for R in contacts]
                     if reference else None)
         except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
             for i in g:
@@ -471,11 +485,18 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
     return results
 
 
+class _Sink:
+    """Swallows per-row messages (item assignment) that nobody reads."""
+
+    def __setitem__(self, key, value):
+        pass
+
+
 def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
     given = cases["given"][g]
     values = cases["value"][g]
     errors = results.errors
-    notes_tmp = [""] * len(errors)
+    sink = _Sink()  # the reference model's own notes are not reported
     per_set = []  # j -> list over contacts of field dicts (arrays over g)
     for j in range(len(sets[0])):
         per_contact = []
@@ -501,8 +522,7 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
         label = sets[0][j].label
         if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
             s["model"] = sets[0][j]
-        for i in g:
-            s["label"][i] = label
+        s["label"][g] = label
     ref_q = None
     if refs is not None:
         ref_contacts = []
@@ -511,8 +531,8 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
             for which in ("load", "depth"):
                 sel = np.flatnonzero(given == which)
                 if sel.size:
-                    rr = _safe_evaluate(refs[c][0], which, values[sel], notes_tmp,
-                                        notes_tmp, g[sel])
+                    rr = _safe_evaluate(refs[c][0], which, values[sel], sink, sink,
+                                        g[sel])
                     r["force"][sel], r["depth"][sel] = rr["force"], rr["depth"]
             ref_contacts.append(r)
         ref_q = _quantity(ref_contacts, given)
@@ -526,14 +546,12 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
             for k in ("force", "depth", "stiffness", "half_width", "peak_pressure",
                       "contact_radius"):
                 f[k][g] = r[k]
-            flags = [_flag_text(a, b) for a, b in zip(r["_deep"], r["_wide"])]
-            if "_present" in cases:
+            for k in np.flatnonzero(r["_deep"] | r["_wide"]):
+                s["flags"][g[k]] = _flag_text(r["_deep"][k], r["_wide"][k])
+            if "_present" in cases:  # tangential / viscoelastic columns and flags
                 from .calc_tangential import add_fields
 
-                extra_flags = [""] * len(errors)
-                add_fields(f, extra_flags, g, sets[0][j], r, cases, cases["_present"])
-                flags = ["; ".join(t for t in (a, extra_flags[i]) if t)
-                         for a, i in zip(flags, g)]
+                add_fields(f, s["flags"], g, sets[0][j], r, cases, cases["_present"])
         else:
             ri, ro = per_contact
             f["force"][g] = ri["force"]
@@ -544,13 +562,10 @@ def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
                 f["roller_stiffness"][g] = 1 / (1 / ri["stiffness"] + 1 / ro["stiffness"])
             f["peak_pressure_inner"][g] = ri["peak_pressure"]
             f["peak_pressure_outer"][g] = ro["peak_pressure"]
-            flags = [
-                "; ".join(t for t in (_flag_text(a, b, " (inner)"), _flag_text(c, d, " (outer)"))
-                          if t)
-                for a, b, c, d in zip(ri["_deep"], ri["_wide"], ro["_deep"], ro["_wide"])
-            ]
-        for i, t in zip(g, flags):
-            s["flags"][i] = t
+            for k in np.flatnonzero(ri["_deep"] | ri["_wide"] | ro["_deep"] | ro["_wide"]):
+                s["flags"][g[k]] = "; ".join(
+                    t for t in (_flag_text(ri["_deep"][k], ri["_wide"][k], " (inner)"),
+                                _flag_text(ro["_deep"][k], ro["_wide"][k], " (outer)")) if t)
         if ref_q is not None:
             with np.errstate(divide="ignore", invalid="ignore"):
                 f["deviation"][g] = _quantity(per_contact, given) / ref_q - 1

@@ -157,7 +157,11 @@ def hertz_eccentricity(radius_x, radius_y):
 class HertzContact:
     """The Hertz elliptical contact: semi-axes, peak pressure, approach and stiffness.
 
-    Attributes
+    Returned by :func:`hertz_contact` and :func:`hertz_contact_at_approach`.
+
+    .. math:: p_0 = \\frac{3F}{2\\pi a b}, \\qquad k = \\frac{3F}{2\\delta}
+
+    Parameters
     ----------
     force : float or ndarray
         Normal force F [N].
@@ -172,9 +176,23 @@ class HertzContact:
     stiffness : float or ndarray
         Contact stiffness dF/d(delta) = 3F/(2 delta) [N/m].
     eccentricity : float
-        e = sqrt(1 - b^2/a^2) [-].
+        e = sqrt(1 - b^2/a^2), 0 <= e < 1 [-].
     swapped : bool
         True if radius_y > radius_x was given, so that a lies along y and b along x.
+
+    Notes
+    -----
+    0 < F < inf, 0 < b <= a; see :func:`hertz_contact` for the validity of the theory.
+
+    Examples
+    --------
+    >>> h = hertz_contact(2000.0, 0.2, 0.01, 115.385e9)
+    >>> f"{h.a * 1e3:.4f} mm, {h.b * 1e3:.4f} mm, e = {h.eccentricity:.4f}"
+    '1.9825 mm, 0.2861 mm, e = 0.9895'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 4.2.
     """
 
     force: object

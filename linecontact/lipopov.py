@@ -339,6 +339,24 @@ def _u_from_depth_ratio(D):
     return log1p_excess_root(-np.log(D))
 
 
+# The closed forms in dimensionless variables (Eq. 8: d~ = d R/L^2, F~ = F R/(E* L^3),
+# x~ = a/L), unchecked: their one home. The SI functions and the dimensionless_*
+# functions below check their inputs once and scale these.
+def _force_tilde(d, a, b):
+    """F~ = 2 alpha beta e^-u with (u + 1) e^-u = d~/beta."""
+    return 2 * a * b * np.exp(-_u_from_depth_ratio(d / b))
+
+
+def _radius_tilde(d, a, b):
+    """x~ = alpha/u with (u + 1) e^-u = d~/beta."""
+    return a / _u_from_depth_ratio(d / b)
+
+
+def _depth_tilde(f, a, b):
+    """d~ = F~/(2 alpha) (1 + ln(2 alpha beta/F~)), the inverse of _force_tilde."""
+    return f / (2 * a) * (1.0 + np.log(2 * a * b / f))
+
+
 def lipopov_depth_limit(radius, length, beta):
     r"""Supremum of the Li-Popov profile, the largest depth the form can describe.
 
@@ -570,9 +588,8 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
     a, b = _coeffs(alpha, beta)
-    d, dmax = _depth_checked(depth, R, L, b)
-    u = _u_from_depth_ratio(d / dmax)
-    return out(2 * a * b * E * L**3 / R * np.exp(-u))
+    d, _ = _depth_checked(depth, R, L, b)
+    return out(E * L**3 / R * _force_tilde(d * R / L**2, a, b))
 
 
 def _force_checked(force, R, L, E, a, b):
@@ -628,8 +645,8 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
     R, L = _geometry(radius, length)
     E = check_positive("estar", estar, "Pa")
     a, b = _coeffs(alpha, beta)
-    F, fmax = _force_checked(force, R, L, E, a, b)
-    return out(F / (2 * a * L * E) * (1.0 + np.log(fmax / F)))
+    F, _ = _force_checked(force, R, L, E, a, b)
+    return out(L**2 / R * _depth_tilde(F * R / (E * L**3), a, b))
 
 
 def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
@@ -667,8 +684,8 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
     """
     R, L = _geometry(radius, length)
     a, b = _coeffs(alpha, beta)
-    d, dmax = _depth_checked(depth, R, L, b)
-    return out(a * L / _u_from_depth_ratio(d / dmax))
+    d, _ = _depth_checked(depth, R, L, b)
+    return out(L * _radius_tilde(d * R / L**2, a, b))
 
 
 def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
@@ -759,8 +776,9 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
 
 # --------------------------------------------------------------------------------------
 # dimensionless closed forms of Eq. 8-9 and the fit of Eq. 9: their one home. The BEM
-# studies in tools/ and the tests call these; each evaluates the SI function above with
-# R = L = E* = 1, so there is one Lambert-W inverse in the package.
+# studies in tools/ and the tests call these; each checks its inputs once and evaluates
+# the same dimensionless kernel (_force_tilde, ...) as the SI function above, so there is
+# one Lambert-W inverse in the package.
 # --------------------------------------------------------------------------------------
 def _d_tilde_checked(d_tilde, beta):
     return check_interval(
@@ -812,7 +830,7 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_contact_radius(d, 1.0, 1.0, alpha=a, beta=b)
+    return out(_radius_tilde(d, a, b))
 
 
 def dimensionless_force(d_tilde, alpha, beta):
@@ -858,7 +876,7 @@ def dimensionless_force(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_force(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(_force_tilde(d, a, b))
 
 
 def dimensionless_stiffness(d_tilde, alpha, beta):
@@ -901,7 +919,7 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
-    return lipopov_stiffness(d, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(2 * _radius_tilde(d, a, b))
 
 
 def dimensionless_depth(f_tilde, alpha, beta):
@@ -949,7 +967,7 @@ def dimensionless_depth(f_tilde, alpha, beta):
     f = check_interval(
         "f_tilde", f_tilde, 0.0, 2 * a * b, low_open=True, high_open=True,
         hint="the Li-Popov form saturates at F~ = 2 alpha beta")
-    return lipopov_depth(f, 1.0, 1.0, 1.0, alpha=a, beta=b)
+    return out(_depth_tilde(f, a, b))
 
 
 def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):

@@ -42,6 +42,7 @@ from __future__ import annotations
 import abc
 import math
 import os
+from importlib import import_module
 
 import numpy as np
 
@@ -51,7 +52,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import OutOfRangeError, check_interval, check_positive, document, out
+from .validity import (OutOfRangeError, check_flag, check_interval, check_positive,
+                       document, out)
 
 __all__ = [
     "ContactModel",
@@ -72,6 +74,14 @@ __all__ = [
 
 #: Registry: key -> model class. Filled by :func:`register`.
 MODELS: dict = {}
+
+#: Models defined in other modules of this package (key -> module), imported the first
+#: time one of them is asked for by key, so that a one-case calculation does not pay
+#: for their import. A test checks that each module registers its keys.
+DEFINED_IN = {
+    "profiled-roller": "linecontact.roller",
+    "iso16281-slicing": "linecontact.roller",
+}
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
@@ -343,7 +353,7 @@ class LiPopovModel(ContactModel):
     def __init__(self, radius, length, estar, coefficients="published", extrapolate=False):
         super().__init__(radius, length, estar)
         self.coefficients = coefficients
-        self.extrapolate = bool(extrapolate)
+        self.extrapolate = check_flag("extrapolate", extrapolate)
         self._set = coefficient_set(coefficients)
 
     @property
@@ -480,6 +490,8 @@ class JohnsonModel(ContactModel):
     """
 
     key = "johnson"
+    #: Eq. 4 is written as d(F): evaluate(depth=...) takes k from F, not from d
+    stiffness_explicit_in_force = True
 
     def __init__(self, radius, length, estar, c=1.0):
         super().__init__(radius, length, estar)
@@ -595,13 +607,14 @@ class _SteelModel(ContactModel):
         return type(self)._depth_fn(force, self.length, self.estar)
 
     def stiffness(self, depth):
-        # F = C d^(1/0.9)  =>  k = F / (0.9 d)
-        F = np.asarray(self.force(depth))
-        return out(F / (0.9 * np.asarray(depth, dtype=float)))
+        # F = C d^(1/0.9)  =>  k = F / (0.9 d); d checked (and a pint Quantity converted
+        # to SI) before it enters the quotient
+        d = check_positive("depth", depth, "m")
+        return out(np.asarray(self.force(d)) / (0.9 * d))
 
     def stiffness_at_force(self, force):
-        d = np.asarray(self.depth(force))
-        return out(np.asarray(force, dtype=float) / (0.9 * d))
+        F = check_positive("force", force, "N")
+        return out(F / (0.9 * np.asarray(self.depth(F))))
 
 
 @register
@@ -715,7 +728,7 @@ class UniversalModel(ContactModel):
     def __init__(self, radius, length, estar, table=_UNIVERSAL_TABLE, extrapolate=False):
         super().__init__(radius, length, estar)
         self.table_name = table
-        self.extrapolate = bool(extrapolate)
+        self.extrapolate = check_flag("extrapolate", extrapolate)
         self.curve = universal_curve(table)
 
     @property
@@ -864,7 +877,7 @@ def available_models():
     >>> {"universal", "li-popov", "johnson", "palmgren"} <= set(available_models())
     True
     """
-    return sorted(MODELS)
+    return sorted(set(MODELS) | set(DEFINED_IN))
 
 
 def get_model(key, radius, length, estar, **options):
@@ -906,9 +919,11 @@ def get_model(key, radius, length, estar, **options):
     ...
     linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
     """
+    if key not in MODELS and key in DEFINED_IN:
+        import_module(DEFINED_IN[key])
     if key not in MODELS:
         raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in sorted(MODELS)))
+                              + ", ".join(repr(k) for k in available_models()))
     return MODELS[key](radius, length, estar, **options)
 
 

@@ -41,7 +41,6 @@ References
 """
 from __future__ import annotations
 
-import csv
 import math
 import re
 from pathlib import Path
@@ -99,6 +98,12 @@ class Profile:
         Roller length L the profile was built for [m] (None for a user table).
     x_min, x_max : float
         The range of x over which ``drop`` is defined [m].
+
+    Examples
+    --------
+    >>> p = StraightProfile(10e-3)
+    >>> isinstance(p, Profile), p.x_min, p.x_max
+    (True, -0.005, 0.005)
     """
 
     key = ""
@@ -708,11 +713,6 @@ class TabulatedProfile(Profile):
 PROFILE_KEYS = ("straight", "end-relief", "circular", "iso16281", "lundberg",
                 "johns-gohar", "file")
 
-_ANGLE_UNITS = {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "µrad": 1e-6, "deg": math.pi / 180,
-                "°": math.pi / 180, "arcmin": math.pi / 10800, "'": math.pi / 10800}
-_NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-
-
 def parse_angle(text, parameter="tilt"):
     """Parse an angle with an optional unit into radians: "1mrad", "0.05deg", "0.001".
 
@@ -721,7 +721,8 @@ def parse_angle(text, parameter="tilt"):
     Parameters
     ----------
     text : str or float
-        A number (radians) or a number followed by rad, mrad, urad, deg, arcmin [-].
+        A number (radians) or a number followed by one unit name: rad, mrad, urad,
+        deg, or any other angle unit pint knows (linecontact._units) [-].
     parameter : str, optional
         Name used in the error message [-].
 
@@ -750,33 +751,33 @@ def parse_angle(text, parameter="tilt"):
     SI brochure (radian); 1 deg = pi/180 rad.
     """
     if isinstance(text, (int, float, np.floating)):
-        value = float(text)
-        typed = repr(text)
-    else:
+        value, typed = float(text), repr(text)
+    else:   # the package's one input grammar: a number and at most one unit name
+        from ._units import InputError, parse_quantity
         typed = str(text)
-        m = re.fullmatch(rf"\s*({_NUM})\s*([a-zA-Zµ°']*)\s*", typed)
-        if not m or (m.group(2) and m.group(2) not in _ANGLE_UNITS):
-            raise OutOfRangeError(parameter, typed, "an angle: a number (rad) or with a "
-                                  "unit " + ", ".join(u for u in _ANGLE_UNITS if u.isalpha()),
-                                  hint="e.g. 1mrad, 0.05deg")
-        value = float(m.group(1)) * _ANGLE_UNITS.get(m.group(2) or "rad")
+        try:
+            value = parse_quantity(parameter, typed, "angle", positive=False)
+        except InputError as exc:
+            raise OutOfRangeError(parameter, typed, exc.valid, hint=exc.reason) from None
     if not math.isfinite(value) or abs(value) >= 0.1:
         raise OutOfRangeError(parameter, typed, "(-0.1, 0.1) rad",
                               hint="the roller models linearise the tilt (small angles)")
     return value
 
 
-def _opt_value(key, text, kind):
-    """An option value: a bare SI number, or a number with a unit (length/force/angle)."""
+#: Profile options that may be negative (an offset crown may sit on either side).
+_SIGNED_OPTIONS = ("offset",)
+
+
+def _opt_value(key, text, kind, positive=True):
+    """An option value: a number with at most one unit name (length/force/angle), by the
+    package's one input grammar (linecontact._units; a bare number is SI), > 0 unless
+    the option is signed. Further ranges are checked by the profile that takes it."""
     if kind == "angle":
         return parse_angle(text, parameter=key)
+    from ._units import InputError, parse_quantity
     try:
-        return float(text)
-    except ValueError:
-        pass
-    from ._units import InputError, parse_quantity   # pint only for values with units
-    try:
-        return parse_quantity(key, text, kind)
+        return parse_quantity(key, text, kind, positive=positive)
     except InputError as exc:
         raise OutOfRangeError(key, text, exc.valid, hint=exc.reason) from None
 
@@ -888,7 +889,8 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
             kwname, kind = aliases[key]
             if kwname in kw:
                 raise OutOfRangeError(f"{name} option", key, "each option once")
-            kw[kwname] = _opt_value(key, val.strip(), kind)
+            kw[kwname] = _opt_value(key, val.strip(), kind,
+                                    positive=kwname not in _SIGNED_OPTIONS)
 
     def need(what, value, unit):
         if value is None:

@@ -37,8 +37,9 @@ NOTES = {
     "tangential": _TANGENTIAL_NOTES["tangential"],
     "creep": _TANGENTIAL_NOTES["creep"],
     "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
-              "the same force, roller_stiffness the two contacts in series; the depth "
-              "columns of one contact are per contact.",
+              "the same force, roller_stiffness the two contacts in series; depth_inner "
+              "and depth_outer are the two contacts' own depths (what a single-contact "
+              "row reports as its depth).",
 }
 
 
@@ -183,7 +184,7 @@ def table_text(cases, present, results, si):
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
-        columns[0] += s["label"][:n]
+        columns[0].extend(s["label"][:n].tolist())
         for k, c in enumerate(cols, start=1):
             columns[k] += _fmt_column(scale(c, f[c], si))
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
@@ -210,8 +211,11 @@ def _num(v):
     return v if math.isfinite(v) else None
 
 
-def one_json(argv, cases, present, results):
-    """JSON of one case or a sweep: the header, the inputs [SI], rows per model."""
+def one_json(argv, cases, present, results, extra=None):
+    """JSON of one case or a sweep: the header, the inputs [SI], rows per model.
+
+    `extra`: further top-level entries (e.g. ``profiled_roller`` of
+    :mod:`linecontact.calc_roller`)."""
     import json
 
     given = str(cases["given"][0])
@@ -246,6 +250,8 @@ def one_json(argv, cases, present, results):
             rows.append(row)
         entries.append(dict(entry, rows=rows))
     doc["models"] = entries
+    if extra:
+        doc.update(extra)
     return json.dumps(doc, indent=2) + "\n"
 
 

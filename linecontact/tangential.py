@@ -712,7 +712,8 @@ class TangentialContact:
 
     @property
     def gross_slip_shift(self):
-        """Shift at gross slip u* = mu d / r [m] (before any slip correction)."""
+        """Shift at gross slip u* = c(1) mu d / r [m] (c(1): the BEM table's slip
+        correction at gross slip with ``method="bem"``, else 1)."""
         return self.friction * self.depth / self.ratio * self._q_factor(1.0)
 
     @property
@@ -769,8 +770,10 @@ class TangentialContact:
     def shift(self, tangential_force):
         r"""Inverse law u(F_t) [m] for |F_t| <= mu F [N] (u* at mu F; beyond: refused).
 
-        .. math:: u = \frac{\mu}{r}\left[d - d\!\left(F - |F_t|/\mu\right)\right]
-                  \operatorname{sign} F_t
+        .. math:: u = c(q)\,\frac{\mu}{r}\left[d - d\!\left(F - |F_t|/\mu\right)\right]
+                  \operatorname{sign} F_t, \qquad q = \frac{|F_t|}{\mu F}
+
+        with c the BEM table's slip correction (``method="bem"``), else c = 1.
         """
         Ft = np.asarray(tangential_force, dtype=float)
         fmax = self.gross_slip_force
@@ -1047,14 +1050,41 @@ class CylinderTangentialTable:
         """True if the table carries a partial-slip correction (both directions)."""
         return all(d in self._shift_q for d in _DIRECTIONS)
 
+    def _interp_many(self, names, nu, d_tilde):
+        """Several columns at the same points (one range check): shape (len(names), ...)."""
+        nu = self.nu_range.check(nu, hint="outside the BEM table of the cylinder")
+        dt = self.d_tilde_range.check(d_tilde, name="d_tilde",
+                                      hint="d R/L^2 outside the BEM table of the cylinder")
+        nu, dt = np.broadcast_arrays(nu, dt)
+        x, z = nu.ravel(), np.log(dt.ravel())
+        return np.array([self._splines[n].ev(x, z).reshape(nu.shape) for n in names])
+
     def shift_correction(self, direction, nu, d_tilde):
         """(Q nodes, shift factors) at (nu, d~) including (0, 1), or None if absent."""
         items = self._shift_q.get(direction)
         if not items:
             return None
         qs = [0.0] + [q for q, _ in items]
-        cs = [1.0] + [float(self._interp(name, nu, d_tilde)) for _, name in items]
-        return np.array(qs), np.array(cs)
+        cs = [1.0] + list(self._interp_many([name for _, name in items], nu, d_tilde))
+        return np.array(qs), np.array(cs, dtype=float)
+
+    def shift_factor(self, direction, nu, d_tilde, q):
+        """The partial-slip shift factor c(q) [-] at load fractions q in [0, 1] (1 where
+        the table has no correction), vectorised over (nu, d~, q)."""
+        items = self._shift_q.get(direction)
+        nu, dt, q = np.broadcast_arrays(np.asarray(nu, float), np.asarray(d_tilde, float),
+                                        np.asarray(q, float))
+        if not items:
+            return out(np.ones(q.shape))
+        qs = np.array([0.0] + [qq for qq, _ in items])
+        cs = self._interp_many([name for _, name in items], nu, dt)     # (nQ, ...)
+        cs = np.concatenate([np.ones((1,) + nu.shape), cs]).reshape(qs.size, -1)
+        qf = np.clip(q.ravel(), 0.0, 1.0)
+        j = np.clip(np.searchsorted(qs, qf, side="right") - 1, 0, qs.size - 2)
+        cols = np.arange(qf.size)
+        w = (qf - qs[j]) / (qs[j + 1] - qs[j])
+        res = cs[j, cols] * (1 - w) + cs[j + 1, cols] * w
+        return out(res.reshape(q.shape))
 
 
 @functools.lru_cache(maxsize=None)

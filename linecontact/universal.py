@@ -25,8 +25,10 @@ Outside the table:
 
 - below its smallest depth, the curve continues with Eq. 7 of Li & Popov (2017) with
   :math:`\alpha = \pi/2` (the 2D log law) and :math:`\beta` = the table's
-  ``beta_small``, the effective beta at its smallest depth, which makes F continuous;
-  the table header states the error this continuation makes per decade;
+  ``beta_small``, the effective beta at its smallest depth, which makes F continuous
+  (evaluated by the closed forms of :mod:`linecontact.lipopov`,
+  :func:`~linecontact.lipopov.dimensionless_force` and its kin); the table header
+  states the error this continuation makes per decade;
 - beyond its largest depth, every function raises
   :class:`~linecontact.validity.OutOfRangeError`.
 
@@ -45,7 +47,8 @@ import numpy as np
 
 from . import tables as _tables
 from ._numerics import NotAKnotSpline
-from .lipopov import _u_from_depth_ratio
+from .lipopov import (dimensionless_depth, dimensionless_force, dimensionless_profile,
+                      dimensionless_stiffness)
 from .tables import read_table, table_path
 from .validity import Interval, check_interval
 
@@ -104,10 +107,6 @@ class UniversalCurve:
         return check_interval("d_tilde", d_tilde, 0.0, self.d_max, low_open=True,
                               hint="the universal table ends there")
 
-    def _small(self, d):
-        """Eq. 7 with alpha = pi/2, beta = beta_small: u from d~ = beta (u+1) e^-u."""
-        return _u_from_depth_ratio(d / self.beta_small)
-
     def _evaluate(self, d_tilde, on_table, below_table):
         """on_table(d) where d~ >= d_min, below_table(d) under it; any input shape."""
         d = self._check_depth(d_tilde)
@@ -124,7 +123,7 @@ class UniversalCurve:
         r""":math:`\Psi = F R/(E^* L^3)` at :math:`\tilde d = d R/L^2` [-]."""
         return self._evaluate(
             d_tilde, lambda d: np.exp(self._spline(np.log(d))),
-            lambda d: 2 * self.alpha_small * self.beta_small * np.exp(-self._small(d)))
+            lambda d: dimensionless_force(d, self.alpha_small, self.beta_small))
 
     def dpsi(self, d_tilde):
         r""":math:`\Psi' = k/(E^* L)` at :math:`\tilde d` [-]."""
@@ -132,8 +131,9 @@ class UniversalCurve:
             z = np.log(d)
             return np.exp(self._spline(z) - z) * self._slope(z)
 
-        return self._evaluate(d_tilde, on_table,
-                              lambda d: 2 * self.alpha_small / self._small(d))
+        return self._evaluate(
+            d_tilde, on_table,
+            lambda d: dimensionless_stiffness(d, self.alpha_small, self.beta_small))
 
     # -- inverses ------------------------------------------------------------------
     def _newton(self, target, fun, dfun, z0, lo, hi):
@@ -160,9 +160,8 @@ class UniversalCurve:
         d = np.minimum(np.exp(z), self.d_max)   # exp(ln d_max) may round above d_max
         if np.any(small):
             ps = np.where(small, p, self.psi_min)
-            d_small = ps / (2 * self.alpha_small) * (
-                1 + np.log(2 * self.alpha_small * self.beta_small / ps))
-            d = np.where(small, d_small, d)
+            d = np.where(small, dimensionless_depth(ps, self.alpha_small, self.beta_small),
+                         d)
         return d
 
     def depth_of_x(self, x_tilde):
@@ -187,10 +186,9 @@ class UniversalCurve:
         z = self._newton(lx, ln_dpsi, d_ln_dpsi, z0, zs[0], zs[-1])
         d = np.minimum(np.exp(z), self.d_max)
         if np.any(small):
-            xs = np.where(small & (x > 0), x, self.x_min)
-            u = self.alpha_small / xs
-            d_small = np.where(x > 0, self.beta_small * (u + 1) * np.exp(-u), 0.0)
-            d = np.where(small, d_small, d)
+            xs = np.where(small, x, self.x_min)   # g~(0) = 0: the profile's own end
+            d = np.where(small, dimensionless_profile(xs, self.alpha_small,
+                                                      self.beta_small), d)
         return d
 
 

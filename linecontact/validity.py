@@ -23,6 +23,7 @@ __all__ = [
     "Interval",
     "check_positive",
     "check_interval",
+    "check_flag",
     "document",
     "POSITIVE_LENGTH",
     "POSITIVE_FORCE",
@@ -199,6 +200,10 @@ def _as_float_array(name, value, unit=""):
     A pint Quantity is converted to `unit` (SI), or refused if its dimension differs;
     the check does not import pint (it recognises a Quantity by its attributes).
     """
+    kind = type(value)
+    if kind is float or (kind is np.ndarray and value.dtype == np.float64):
+        v = np.asarray(value)  # the common case: nothing to refuse but subnormals
+        return _refuse_subnormal(name, v, unit)
     if hasattr(value, "dimensionality") and hasattr(value, "magnitude") \
             and hasattr(value, "to"):
         target = _PINT_UNITS.get(unit, unit)
@@ -266,13 +271,27 @@ def _as_float_array(name, value, unit=""):
     except (TypeError, ValueError) as exc:
         raise OutOfRangeError(name, str(value), "real numbers",
                               hint="it is not a number") from exc
-    tiny = np.finfo(float).tiny
-    with np.errstate(invalid="ignore"):
-        sub = (v != 0) & (np.abs(v) < tiny)
-    if np.any(sub):
-        bad = float(v[sub].ravel()[0]) if v.ndim else float(v)
-        raise OutOfRangeError(name, bad, f"0 or |{name}| >= {tiny:.6g}",
-                              unit=unit, hint="a subnormal number has lost precision")
+    return _refuse_subnormal(name, v, unit)
+
+
+_TINY = float(np.finfo(float).tiny)
+
+
+def _refuse_subnormal(name, v, unit):
+    """`v`, or OutOfRangeError for its first subnormal element (precision lost)."""
+    if v.ndim == 0:
+        x = float(v)
+        if x != 0.0 and -_TINY < x < _TINY:
+            raise OutOfRangeError(name, x, f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
+                                  hint="a subnormal number has lost precision")
+        return v
+    small = np.abs(v) < _TINY  # NaN compares False
+    if small.any():
+        sub = small & (v != 0)
+        if sub.any():
+            raise OutOfRangeError(name, float(v[sub].ravel()[0]),
+                                  f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
+                                  hint="a subnormal number has lost precision")
     return v
 
 
@@ -404,3 +423,50 @@ POSITIVE_MODULUS = Interval("modulus", 0.0, np.inf, True, True, "Pa")
 #: Poisson's ratio: 0.5 (incompressible: rubber, elastomer coatings) is included; E* of
 #: Eq. 3 stays finite there, 1 - nu^2 = 0.75 (Li & Popov (2017), Eq. 3).
 POISSON_RATIO = Interval("poisson", 0.0, 0.5, False, False, "")
+
+
+def check_flag(name, value):
+    """Check that a yes/no option is a real boolean; return it as a Python bool.
+
+    A string such as ``"no"`` is truthy in Python, so ``bool("no")`` would silently
+    turn the option on: only ``True``/``False`` (or numpy booleans) are accepted. The
+    command line parses its words (true/false, yes/no, 1/0) before calling the library.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message [-].
+    value : bool
+        The option's value [-].
+
+    Returns
+    -------
+    bool
+        `value` [-].
+
+    Raises
+    ------
+    OutOfRangeError
+        Anything that is not a boolean (the message names the parameter and value).
+
+    Notes
+    -----
+    Valid values: ``True``, ``False``, ``numpy.True_``, ``numpy.False_``.
+
+    Examples
+    --------
+    >>> check_flag("extrapolate", False)
+    False
+    >>> check_flag("extrapolate", "no")
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False; a yes/no option takes a boolean, not a word or number
+
+    References
+    ----------
+    Python Language Reference, section 'Truth Value Testing' (why bool('no') is True).
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise OutOfRangeError(name, value, "True or False",
+                          hint="a yes/no option takes a boolean, not a word or number")

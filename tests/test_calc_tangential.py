@@ -80,6 +80,31 @@ def test_tangential_load_sweep_gives_the_shift_and_the_slip_state(capsys, table)
     assert rows[2]["shift_mdr"] is None and "gross slip" in rows[2]["flags"]
 
 
+def test_shift_with_the_tables_slip_correction_is_the_runtimes(capsys, tmp_path,
+                                                                monkeypatch):
+    """With shift_ratio columns in the table, u across/along = TangentialContact(...,
+    method='bem').shift(Q), the corrected law (rtol 1e-12)."""
+    nus, dts = (0.0, 0.25, 0.3, 0.5), (1e-8, 1e-6, 1e-4, 1e-2)
+    nu, dt = (a.ravel() for a in np.meshgrid(nus, dts, indexing="ij"))
+    cols = dict(nu=nu, d_tilde=dt, kt_kn_across=np.where(nu == 0, 1.0, 0.9),
+                kt_kn_along=np.where(nu == 0, 1.0, 0.75))
+    for side, c in (("across", 1.07), ("along", 1.02)):
+        cols[f"shift_ratio_{side}_q0.5"] = np.full(nu.shape, 1.0 + (c - 1) / 3)
+        cols[f"shift_ratio_{side}_q1"] = np.full(nu.shape, c)
+    write_table(tmp_path / "t.csv", META, cols)
+    t = tg.CylinderTangentialTable(read_table("t", directory=tmp_path))
+    monkeypatch.setattr(tg, "_cached_table", lambda name: t)
+    rows = _json(capsys, CASE + ELASTIC + ["--friction", "0.1", "--tangential-load",
+                                           "30N:90N:2", "--linear"])
+    m = get_model("universal", 5e-3, 10e-3, effective_modulus(210e9, 0.3))
+    G = tg.effective_shear_modulus(210e9, 0.3)
+    for side in ("across", "along"):
+        c = tg.TangentialContact(m, 0.1, G, force=1e3, method="bem", direction=side)
+        for r in rows:
+            assert r[f"shift_{side}"] == pytest.approx(c.shift(r["tangential_load"]),
+                                                       rel=1e-12, abs=0)
+
+
 def test_creep_sweep_runs_from_the_instantaneous_to_the_long_term_depth(capsys):
     """d(t) = step_creep_depth with J*(t) = (1 - nu^2) J(t) (rigid roller), rtol 1e-12;
     d(0) = the instantaneous elastic depth (E* from E0) and d(inf) = the elastic depth
@@ -97,6 +122,19 @@ def test_creep_sweep_runs_from_the_instantaneous_to_the_long_term_depth(capsys):
     d_inf = get_model("universal", 5e-3, 10e-3, Einf).depth(1e3)
     assert rows[0]["depth_long_term"] == pytest.approx(d_inf, rel=1e-12, abs=0)
     assert np.all(np.diff(d) > 0) and d[-1] < d_inf
+
+
+def test_creep_beyond_the_models_range_is_a_note_not_a_failure(capsys):
+    """A soft body creeping past the universal model's range (d > 0.15 R): those
+    times get '-' and the model's message in the note; the others their values."""
+    rows = _json(capsys, CASE[:-4] + ["--load", "100N", "--model", "universal",
+                                      "--instantaneous-modulus", "30MPa",
+                                      "--long-term-modulus", "3MPa",
+                                      "--relaxation-time", "10s", "--poisson", "0.45",
+                                      "--time", "1s:1000s:3"])
+    assert rows[0]["creep_depth"] is not None and rows[0]["creep_depth"] > 0
+    assert rows[-1]["creep_depth"] is None
+    assert "d(t): beyond the model's range" in rows[-1]["flags"]
 
 
 def test_prony_file_and_an_elastic_roller(capsys, tmp_path):

@@ -1,10 +1,12 @@
-"""Tests of the installed ``linecontact`` command (``linecontact calc``).
+"""Tests of the ``linecontact calc`` command.
 
-They run the console script next to ``sys.executable`` in a subprocess, as a user
-would; install the package first (``pip install .`` or ``pip install -e .``).
-Every command is started once, all of them in parallel at the start of the module
-(the start-up of Python, numpy and scipy dominates), and each test then reads the
-result of the command it names.
+The first part runs ``python -m linecontact`` from this checkout's root in a
+subprocess, as a user would (start-up, imports, exit status, stdout/stderr). Every such
+command is started once, all of them in parallel at the start of the module (the
+start-up of Python and numpy dominates), and each test then reads the result of the
+command it names. The second part calls :func:`linecontact.cli.main` in-process (the
+same code without a start-up per test) for the input rules, the batch's guarantees and
+the new output columns.
 """
 
 from __future__ import annotations
@@ -21,7 +23,6 @@ from pathlib import Path
 
 import pytest
 
-EXE = Path(sys.executable).parent / "linecontact"
 DATA = Path(__file__).parent / "data"
 EXAMPLES = Path(__file__).parent.parent / "examples"
 
@@ -88,30 +89,10 @@ COMMANDS = {
     "err_no_load": CASE,
     "err_load_and_depth": [*CASE, "--load", "1kN", "--depth", "1um"],
     "err_missing_radius": ["calc", "--length", "10mm", *STEEL, "--load", "1kN"],
-    "err_no_poisson": [
-        "calc",
-        "--radius",
-        "5mm",
-        "--length",
-        "10mm",
-        "--modulus",
-        "210GPa",
-        "--load",
-        "1kN",
-    ],
-    "err_poisson_range": [
-        "calc",
-        "--radius",
-        "5mm",
-        "--length",
-        "10mm",
-        "--modulus",
-        "210GPa",
-        "--poisson",
-        "0.7",
-        "--load",
-        "1kN",
-    ],
+    "err_no_poisson": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
+                       "--load", "1kN"],
+    "err_poisson_range": ["calc", "--radius", "5mm", "--length", "10mm", "--modulus",
+                          "210GPa", "--poisson", "0.7", "--load", "1kN"],
     "err_estar_and_modulus": [*CASE, "--estar", "100GPa", "--load", "1kN"],
     "err_modulus2_alone": [*CASE, "--modulus2", "70GPa", "--load", "1kN"],
     "err_sweep_fields": [*CASE, "--load", "1kN:2kN"],
@@ -814,3 +795,23 @@ def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
     assert status == 0 and "50" in err
     status, plain, err = _main(capsys, *argv, "--no-progress")
     assert status == 0 and err == "" and plain == with_bar
+
+
+def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
+    """A row with more cells than the header keeps them (under an unnamed column), a
+    shorter row is padded; the result columns line up under their names in both the
+    unquoted (line-copy) and the quoted (csv module) paths; CRLF line ends are read."""
+    for quote in ("", '"'):
+        path = tmp_path / f"r{len(quote)}.csv"
+        path.write_text(f"name,load\r\n{quote}a{quote},1kN,extra\r\nb\r\nc,2kN\r\n",
+                        encoding="utf-8")
+        status, out, err = _main(capsys, "calc", str(path), "--radius", "5mm",
+                                 *STEEL_CASE[1:])
+        rows = list(csv.reader(io.StringIO(out)))
+        head = rows[0]
+        assert head[:3] == ["name", "load", ""] and status == 2  # row b has no load
+        assert [r[:3] for r in rows[1:]] == [["a", "1kN", "extra"], ["b", "", ""],
+                                             ["c", "2kN", ""]]
+        depth = head.index("depth_um")
+        assert float(rows[1][depth]) > 0 and rows[2][depth] == "" and float(rows[3][depth]) > 0
+        assert all(len(r) == len(head) for r in rows)

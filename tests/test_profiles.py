@@ -157,14 +157,16 @@ def test_parse_profile_names_options_and_units():
 
 @pytest.mark.parametrize("spec, kw, param, fragment", [
     ("cone", {}, "profile", "one of straight, end-relief, circular"),
-    ("circular:Rc=-0.2", {}, "crown_radius", "(0, inf) m"),
-    ("circular:Rc=0", {}, "crown_radius", "(0, inf) m"),
+    ("circular:Rc=-0.2", {}, "Rc", "a length > 0"),
+    ("circular:Rc=0", {}, "Rc", "a length > 0"),
     ("circular", {}, "crown_radius", "(0, inf) m"),
     ("circular:radius=1", {}, "circular option", "one of"),
     ("circular:Rc=5kN", {}, "Rc", "length"),
     ("lundberg", {"estar": E}, "design_force", "(0, inf) N"),
     ("end-relief:l=1mm,drop=-2um", {}, "drop", "a length > 0"),
-    ("end-relief:l=1mm,drop=-2e-6", {}, "relief_drop", "(0, inf) m"),
+    ("end-relief:l=1mm,drop=-2e-6", {}, "drop", "a length > 0"),
+    ("circular:Rc=1_0", {}, "Rc", "a length > 0"),
+    ("circular:Rc=nan", {}, "Rc", "a length > 0"),
     ("end-relief:l=1mm", {}, "relief_angle", "exactly one of"),
     ("file:", {}, "profile", "file:PATH.csv"),
 ])

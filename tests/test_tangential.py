@@ -379,6 +379,10 @@ def test_optional_slip_correction_scales_the_shift(tmp_path):
     Ft = np.array([0.25, 0.5, 1.0]) * bem.gross_slip_force
     assert bem.shift(Ft) == pytest.approx(plain.shift(Ft) * [1.05, 1.1, 1.2], rel=1e-12, abs=0)
     assert bem.force(bem.shift(Ft)) == pytest.approx(Ft, rel=1e-12, abs=0)
+    # the vectorised factor is the same piecewise-linear interpolation in Q
+    q = np.array([0.0, 0.2, 0.5, 0.8, 1.0])
+    assert t.shift_factor("across", 0.3, 1e-3, q) == pytest.approx(
+        np.interp(q, *t.shift_correction("across", 0.3, 1e-3)), rel=1e-14, abs=0)
     assert bem.gross_slip_shift == pytest.approx(1.2 * plain.gross_slip_shift, rel=1e-12, abs=0)
     # the Masing energy of the corrected law, by direct quadrature, against the
     # trapezoidal area of its loop (2001 points per branch: 1e-5 relative)
@@ -400,3 +404,48 @@ def test_shipped_table_at_nu_zero_is_the_normal_problem():
     for dt in t.d_tildes:
         assert t.ratio("across", 0.0, dt) == pytest.approx(1.0, abs=1e-3)
         assert t.ratio("along", 0.0, dt) == pytest.approx(1.0, abs=1e-3)
+
+
+def test_shipped_table_meets_the_one_percent_target_between_its_nodes():
+    """Issue 10's target: the runtime's full-stick k_t/k_n within 1 % of the BEM. An
+    independent BEM solve (tools.tangential_bem, the study's N grid) at points between
+    the table's nodes in both nu and d~: measured worst 1.0e-4; asserted 3e-3 = the
+    table's N-to-2N grid change (1e-3) plus interpolation, with margin."""
+    try:
+        t = CylinderTangentialTable(read_table("tangential_cylinder"))
+    except FileNotFoundError:
+        pytest.skip("tables/tangential_cylinder.csv not generated yet")
+    from tools.tangential_bem import cylinder_full_stick
+
+    nus = (0.2, 0.35, 0.45)
+    for dt in (5.5e-6, 0.56):
+        r = cylinder_full_stick(dt, nus=nus, n_length=256, n_width=32)
+        for i, nu in enumerate(nus):
+            assert t.ratio("across", nu, dt) == pytest.approx(r.ratio_across[i], rel=3e-3,
+                                                              abs=0)
+            assert t.ratio("along", nu, dt) == pytest.approx(r.ratio_along[i], rel=3e-3,
+                                                             abs=0)
+
+
+def test_corrected_law_reproduces_the_bem_fretting_energy():
+    """With the shipped table's slip correction, the runtime's Masing energy at
+    u0 = half the stiffness-scaled law's gross-slip shift relative to that law's equals
+    the study's W_BEM/W_scaled (the uncorrected law is off by 4-7 % there); measured
+    within 0.5 %, asserted 1 % (the study's partial-slip grid differs from the table's
+    full-stick grid by up to 1e-3 in k_t, and its W is a quadrature of 24 steps)."""
+    try:
+        t = CylinderTangentialTable(read_table("tangential_cylinder"))
+    except FileNotFoundError:
+        pytest.skip("tables/tangential_cylinder.csv not generated yet")
+    m = standard_models(5e-3, 10e-3, ESTAR)[0]
+    for dt in (1.08e-8, 1.2e-5, 1.34e-2):
+        d = dt * 10e-3 ** 2 / 5e-3
+        for side in ("across", "along"):
+            corr = TangentialContact(m, MU, GSTAR, depth=d, method="bem", direction=side,
+                                     table=t)
+            plain = TangentialContact(m, MU, GSTAR, depth=d, method="bem", direction=side,
+                                      table=t, slip_correction=False)
+            u0 = 0.5 * plain.gross_slip_shift
+            ratio = corr.dissipated_energy(u0) / plain.dissipated_energy(u0)
+            assert ratio == pytest.approx(t.value(f"w_ratio_scaled_{side}", NU, dt),
+                                          rel=1e-2, abs=0), (dt, side)

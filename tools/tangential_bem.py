@@ -700,7 +700,8 @@ def cylinder_full_stick(d_tilde, nus=(0.0, 0.25, 0.3, 0.4, 0.5), n_length=128,
     -----
     Valid where the parabolic gap is (d << R) and within the uncoupled approximation;
     any d~ > 0 (each depth on its own grid). Discretisation: see
-    tables/tangential_cylinder.csv (change from N to 2N below 1e-3).
+    tables/tangential_cylinder.csv (change from N = 256/32 to 2N: median 4e-5, at
+    most 1e-3).
 
     Examples
     --------

@@ -1,34 +1,52 @@
-"""Batch speed of ``linecontact calc`` (issue 11, item 5): write the benchmark inputs.
+"""Batch and sweep speed of ``linecontact calc``, as ratios to a one-case call (issue 11,
+item 5: a 100 000-row batch within 5 times a one-case call).
 
-The measurement itself is whole-process wall time, taken from outside (for instance
-``/usr/bin/time -v``, or any tool that runs two commands in turn and reports the ratio
-of their medians): a 100 000-row batch against a one-case call, and a 10 000-point
-sweep against the same one-case call. This script writes the batch file and prints the
-three commands; the results are recorded in tools/benchmarks/README.md.
+It writes a benchmark CSV and runs, interleaved, N times each (whole processes, from
+this repository's root, ``python -m linecontact``):
 
-The batch (``--rows``, default 100 000) is what a spreadsheet of roller checks looks
-like: ``--cylinders`` (default 100) distinct rollers (R from 1 to 20 mm, L/R from 0.5
-to 5, steel on steel), each row a load between 100 N and 10 kN written with a unit
+    one      calc --radius 5mm --length 10mm --modulus 210GPa --poisson 0.3 --load 1kN
+    batch    calc BENCH.csv -o OUT.csv                      (--rows rows, default model)
+    sweep    calc ... --load 100N:10kN:10000 -o OUT.txt     (all standard models)
+    all      calc BENCH.csv --model all -o OUT.csv          (only with --all-models)
+
+and prints the median wall time and the median CPU time (user + system of the child,
+from ``resource.getrusage``) of each, and the ratio of each to ``one``, taken pair by
+pair (interleaving keeps a ratio meaningful when the machine's speed drifts). Record
+the results with the machine in tools/benchmarks/README.md.
+
+The batch file (``--rows``, default 100 000) is what a spreadsheet of roller checks
+looks like: ``--cylinders`` (default 100) distinct rollers (R from 1 to 20 mm, L/R from
+0.5 to 5, steel on steel), each row a load between 100 N and 10 kN written with a unit
 (``"123.4N"`` or ``"1.234kN"``), a name column and a free-text column kept as is.
-``--distinct`` makes every row its own cylinder: the worst case, one model object
-per row.
+``--distinct`` makes every row its own cylinder: the worst case, one model object per
+row.
 
 Usage::
 
-    python tools/benchmarks/bench_batch.py --out /tmp/bench.csv   # writes the file
-    python -m linecontact calc /tmp/bench.csv -o /tmp/bench_out.csv
-    python -m linecontact calc --radius 5mm --length 10mm --modulus 210GPa \
-        --poisson 0.3 --load 1kN
-    python -m linecontact calc --radius 5mm --length 10mm --modulus 210GPa \
-        --poisson 0.3 --load 100N:10kN:10000 -o /tmp/sweep.txt
+    python tools/benchmarks/bench_batch.py [-n 5] [--rows 100000] [--all-models]
+    python tools/benchmarks/bench_batch.py --write-only --out /tmp/bench.csv
+
+Runs in about N x (0.5 + 1.5 + 1) s on a quiet 2-core machine (about 5 s more per run
+with ``--all-models``).
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
 
 import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+CASE = ["--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.3"]
 
 
 def write_batch(path, rows=100_000, cylinders=100, distinct=False, seed=1):
@@ -39,8 +57,7 @@ def write_batch(path, rows=100_000, cylinders=100, distinct=False, seed=1):
     l_over_r = rng.uniform(0.5, 5.0, n_cyl)
     length_mm = np.round(radius_mm * l_over_r, 3)
     which = np.arange(rows) % n_cyl
-    load = rng.uniform(np.log(100.0), np.log(1e4), rows)
-    load = np.exp(load)
+    load = np.exp(rng.uniform(np.log(100.0), np.log(1e4), rows))
     with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(["name", "radius", "length", "modulus", "poisson", "modulus2",
@@ -53,15 +70,66 @@ def write_batch(path, rows=100_000, cylinders=100, distinct=False, seed=1):
                         "0.3", "210GPa", "0.3", cell, "kept as is"])
 
 
+def _run(cmd):
+    """(wall s, cpu s) of one whole process."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    r = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                       text=True)
+    wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if r.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} failed (status {r.returncode}):\n{r.stderr}")
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--out", default="/tmp/linecontact_bench.csv", help="CSV to write")
+    p.add_argument("-n", type=int, default=5, help="runs of each command (default 5)")
     p.add_argument("--rows", type=int, default=100_000)
     p.add_argument("--cylinders", type=int, default=100)
     p.add_argument("--distinct", action="store_true", help="every row its own cylinder")
+    p.add_argument("--all-models", action="store_true", help="also time --model all")
+    p.add_argument("--out", help="where to write the CSV (default: a temporary folder)")
+    p.add_argument("--write-only", action="store_true", help="write the CSV and stop")
     args = p.parse_args(argv)
-    write_batch(args.out, args.rows, args.cylinders, args.distinct)
-    print(f"wrote {args.rows} rows to {args.out}")
+
+    tmp = Path(tempfile.mkdtemp(prefix="lc_bench_"))
+    bench = Path(args.out) if args.out else tmp / "bench.csv"
+    write_batch(bench, args.rows, args.cylinders, args.distinct)
+    print(f"wrote {args.rows} rows ({'distinct' if args.distinct else args.cylinders} "
+          f"cylinders) to {bench}")
+    if args.write_only:
+        return
+    py = [sys.executable, "-m", "linecontact", "calc"]
+    commands = {
+        "one": py + CASE + ["--load", "1kN"],
+        "batch": py + [str(bench), "-o", str(tmp / "batch_out.csv")],
+        "sweep": py + CASE + ["--load", "100N:10kN:10000", "-o", str(tmp / "sweep.txt")],
+    }
+    if args.all_models:
+        commands["all"] = py + [str(bench), "--model", "all", "-o", str(tmp / "all.csv")]
+    for cmd in commands.values():  # warm-up: disk cache, pint's cache, bytecode
+        _run(cmd)
+    times = {name: [] for name in commands}
+    for _ in range(args.n):
+        for name, cmd in commands.items():
+            times[name].append(_run(cmd))
+    print(f"{'command':8} {'wall s':>8} {'cpu s':>8} {'wall/one':>9} {'cpu/one':>8}"
+          f"   (medians of {args.n} interleaved runs)")
+    for name in commands:
+        wall = statistics.median(t[0] for t in times[name])
+        cpu = statistics.median(t[1] for t in times[name])
+        rw = statistics.median(a[0] / b[0] for a, b in zip(times[name], times["one"]))
+        rc = statistics.median(a[1] / b[1] for a, b in zip(times[name], times["one"]))
+        print(f"{name:8} {wall:8.3f} {cpu:8.3f} {rw:9.2f} {rc:8.2f}")
+    print("commands (from the repository root):")
+    for name, cmd in commands.items():
+        print(f"  {name}: python {' '.join(cmd[1:])}")
+    for f in tmp.iterdir():
+        os.unlink(f)
+    tmp.rmdir()
 
 
 if __name__ == "__main__":

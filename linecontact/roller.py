@@ -588,7 +588,7 @@ def _coverage_note(radius, length, estar, profile_key, force, tilt, approach,
     th = abs(tilt)
     tkey, tname = ("free_tilt", "zero-moment tilt") if free_tilt else (
         "given_tilt", "tilt")
-    drop = th * length / 2 / approach if approach > 0 else math.inf
+    drop = th * length / 2 / approach if approach > 0 else (0.0 if th == 0 else math.inf)
     checks = [("L/D", length / D, cov["l_over_d"], ""),
               ("mean line load q/(E* D)", force / (length * estar * D), cov["line_load"],
                ""),

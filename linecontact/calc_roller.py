@@ -121,12 +121,12 @@ def _solve(cases, errors):
     slicing"), each a dict with ``label`` and ``rows`` (one per case row: a
     :class:`linecontact.roller.RollerSolution` or None) and ``notes`` (per row).
     """
+    rows = cases.get("_roller_rows")
+    if rows is None or not np.any(rows):
+        return []          # no profile flags: linecontact.roller is not imported
     from .roller import ProfiledRoller, iso_slicing
     from .validity import OutOfRangeError
 
-    rows = cases.get("_roller_rows")
-    if rows is None or not np.any(rows):
-        return []
     n = len(errors)
     coupled = {"label": "", "rows": [None] * n, "notes": [""] * n}
     iso = {"label": "", "rows": [None] * n, "notes": [""] * n}

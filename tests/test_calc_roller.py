@@ -152,3 +152,38 @@ def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
         status, out, err = _main(capsys, *ROLLER, "--depth", "2um", "--profile",
                                  f"file:{bad}")
         assert status == 2 and len(err.strip().splitlines()) == 1 and cell in err, err
+
+
+def test_profiled_row_prints_where_the_error_is_known(capsys):
+    """The coupled-slice row carries the note of tables/roller_accuracy.csv's covered
+    range: R 5 mm, L 14 mm (L/D 1.4), 4.2 kN (300 N/mm) is a case of that table, inside;
+    L 50 mm (L/D 5) is beyond its longest roller (L/D 3), outside, named in the row."""
+    base = ["calc", "--radius", "5mm", "--estar", "115.385GPa", "--load", "4.2kN",
+            "--crown-radius", "500mm"]
+    status, out, err = _main(capsys, *base, "--length", "14mm")
+    assert status == 0, err
+    row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
+    assert "inside the range where this model's error was measured" in row
+    status, out, err = _main(capsys, *base, "--length", "50mm")
+    row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
+    assert "L/D = 5 (measured 1.4-3)" in row and "outside the range" in row
+
+
+def test_plain_calc_does_not_import_the_roller_model():
+    """Cold start: a one-case calc without profile flags never imports
+    linecontact.roller (nor reads tables/roller_accuracy.csv, which only a roller solve
+    does); checked in a fresh interpreter, since this one may have imported it."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    code = ("import sys, io, contextlib\n"
+            "from linecontact.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    main(['calc', '--radius', '5mm', '--length', '10mm', '--estar',"
+            " '115GPa', '--load', '1kN'])\n"
+            "print('linecontact.roller' in sys.modules)\n")
+    root = Path(__file__).resolve().parents[1]
+    out = subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True,
+                         text=True, check=True).stdout
+    assert out.strip() == "False"

@@ -140,6 +140,25 @@ def test_edge_loading_reports_no_peak_pressure():
     assert t.contact_start > -5e-3
 
 
+def test_infinite_end_drop_is_never_edge_loaded():
+    """Lundberg's drop ln 1/(1 - (2x/L)^2) is infinite at x = +-L/2: the rigid overlap,
+    and with it the contact, ends before the roller ends, where the pressure is finite
+    (3D BEM of tools/roller_bem.py at the same depth, R 5 mm, L 10 mm, 1 kN = F0:
+    contact ends 9.8 um before each end on 1024, 2048 and 4096 cells along x, peak
+    973/972 MPa 28 um from the end). At its design load 100 slices put the contact into
+    the last slice (6.25 um from the end): not edge loaded, the peak reported but not
+    resolved. ISO/TS 16281 likewise (BEM at 20 kN: contact ends 17-20 um before the ends,
+    peak 6093-6099 MPa from 1024 to 4096 cells). Johns-Gohar's drop is finite at the
+    ends and the contact reaches them (BEM: an end cell loaded on every grid down to
+    2.4 um): edge loaded."""
+    s = ProfiledRoller(5e-3, 10e-3, 115e9, "lundberg:F0=1kN").at_force(1000.0, tilt=0.0)
+    assert not s.edge_loaded and s.edge is None and s.p_max is not None
+    assert not s.p_max_resolved and "infinite" in s.message
+    assert s.contact_end < 5e-3 and s.contact_start > -5e-3
+    j = ProfiledRoller(5e-3, 10e-3, 115e9, "johns-gohar:F0=1kN").at_force(1000.0, tilt=0.0)
+    assert j.edge_loaded and j.edge == "both"
+
+
 def test_unresolved_peak_is_flagged():
     """A corner relief of 1 mm radius makes a pressure peak where the contact ends,
     narrower than the slices: the solution says p_max is not resolved (the peak moves
@@ -298,3 +317,66 @@ def test_lundberg_profile_makes_the_line_load_uniform():
                                                                                  tilt=0.0)
     mid = np.abs(s.x) < 0.4 * 10e-3
     np.testing.assert_allclose(s.q[mid], 2000.0 / 10e-3, rtol=1e-2)
+
+
+# -- the range where the model's error is known (tables/roller_accuracy.csv header) ----
+def _covered():
+    from linecontact.tables import read_table
+    meta = read_table("roller_accuracy").meta
+    return {k[len("covered_"):]: [float(v) for v in meta[k].split(",")]
+            for k in meta if k.startswith("covered_") and k != "covered_profiles"}, meta
+
+
+def test_solution_states_the_measured_error_inside_the_covered_range():
+    # a case of the table (crown, L/D 1.4, 300 N/mm, 1 mrad): the note gives the
+    # header's largest errors off the ends (the deflection's, as the header prints it)
+    cov, meta = _covered()
+    dev = float(meta["runtime_error_off_ends"].split(",")[0].split()[1])
+    s = ProfiledRoller(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5").at_force(4200.0,
+                                                                             tilt=1e-3)
+    note = s.notes[-1]
+    assert "inside the range" in note and "outside" not in note
+    assert f"deflection {100 * dev:.2g} %" in note
+
+
+def test_solution_outside_the_covered_range_names_the_quantity():
+    # a full solve: L/D = 5 is beyond the table's longest roller (L/D 3)
+    s = ProfiledRoller(5e-3, 50e-3, 115.385e9, "circular:Rc=0.5").at_force(2e4)
+    assert s.notes[-1].startswith("L/D = 5 (measured 1.4-3)")
+    assert "outside the range" in s.notes[-1]
+
+
+@pytest.mark.parametrize("bound", ["l_over_d", "line_load_over_estar_d",
+                                   "given_tilt_rad", "free_tilt_rad",
+                                   "tilt_drop_over_approach"])
+@pytest.mark.parametrize("side", [0, 1])
+def test_each_covered_bound_is_checked(bound, side):
+    # 1 % beyond each bound of the header (the lower tilt bounds are 0: |theta| cannot
+    # go below) is outside; a central case is inside
+    from linecontact.roller import _coverage_note
+    cov, _ = _covered()
+    R, E = 5e-3, 115.385e9
+    mid = {k: (lo * hi) ** 0.5 if lo > 0 else hi / 2 for k, (lo, hi) in cov.items()}
+
+    def note(v):
+        c = dict(mid, **{bound: v})
+        L = c["l_over_d"] * 2 * R
+        free = bound == "free_tilt_rad"
+        th = c["free_tilt_rad"] if free else c["given_tilt_rad"]
+        approach = th * L / 2 / c["tilt_drop_over_approach"]
+        F = c["line_load_over_estar_d"] * E * 2 * R * L
+        return _coverage_note(R, L, E, "circular", F, th, approach, free_tilt=free)
+
+    assert "inside the range" in note(mid[bound])
+    lo, hi = cov[bound]
+    if side == 0 and lo == 0:
+        return
+    assert "outside the range" in note(lo * 0.99 if side == 0 else hi * 1.01)
+
+
+def test_uncovered_profile_and_coarse_slices_are_noted():
+    from linecontact.roller import _coverage_note
+    args = (5e-3, 14e-3, 115.385e9)
+    assert "profile 'straight'" in _coverage_note(*args, "straight", 4200.0, 0.0, 1e-5)
+    assert "n_slices = 50" in _coverage_note(*args, "circular", 4200.0, 0.0, 1e-5,
+                                             n_slices=50)

@@ -19,45 +19,12 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from linecontact.models import ContactModel
 from linecontact.validity import OutOfRangeError
 from linecontact.viscoelastic import (PronySeries, StandardLinearSolid, creep_depth,
                                       force_history, read_prony_series,
                                       step_creep_depth)
 
-
-class HertzSphere(ContactModel):
-    """Rigid sphere on a half-space, F = 4/3 E* sqrt(R) d^(3/2) (test-only law)."""
-
-    key = ""
-    label = "Hertz sphere (test)"
-    provenance = {"equation": "Johnson 1985, eq. 4.23"}
-
-    def force(self, depth):
-        return 4 / 3 * self.estar * math.sqrt(self.radius) * np.asarray(depth) ** 1.5
-
-    def depth(self, force):
-        return (3 * np.asarray(force) / (4 * self.estar * math.sqrt(self.radius))) ** (2 / 3)
-
-    def stiffness(self, depth):
-        return 2 * self.estar * np.sqrt(self.radius * np.asarray(depth))
-
-
-class FlatPunch(ContactModel):
-    """Flat punch of radius a = `length`: F = 2 E* a d, linear in d (test-only law)."""
-
-    key = ""
-    label = "flat punch (test)"
-    provenance = {"equation": "Johnson 1985, section 3.8"}
-
-    def force(self, depth):
-        return 2 * self.estar * self.length * np.asarray(depth, dtype=float)
-
-    def depth(self, force):
-        return np.asarray(force, dtype=float) / (2 * self.estar * self.length)
-
-    def stiffness(self, depth):
-        return np.full(np.shape(depth), 2 * self.estar * self.length)
+from oracle_laws import FlatPunch, HertzSphere  # tests/oracle_laws.py
 
 
 SLS = StandardLinearSolid(3e9, 1e9, 10.0)

@@ -19,7 +19,8 @@ tilt: the roller free to tilt, zero moment):
 2. The runtime coupled-slice model of linecontact.roller (``ProfiledRoller.at_force``,
    100 slices) at the same F and theta, and the ISO/TS 16281 slicing method
    (``iso_slicing``, 30 slices) with its misalignment term; each gives an approach d,
-   a moment M, a peak pressure and, where free, the tilt.
+   a moment M, a peak pressure, the stiffnesses dF/dd and dM/dtheta and, where free,
+   the tilt.
 3. Errors against the reference: deflection (d - d_ref)/delta_ref with delta_ref the
    largest approach along the roller, max_x (d + theta x - P(x)) (= d for an untilted
    symmetric profile; the approach at the roller centre alone can be near zero for a
@@ -38,10 +39,11 @@ x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
 F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 0.86-3.8 GPa). 104 cases.
 
-Budget: measured 461 s and 598 s for the 104 cases with the default grids on the shared
-2-core VM (2 Dask workers, load average 8-16; the table's header line ``wall_time``);
-the cases are independent, so the study runs through tools.runner.run_study
-(checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28 cases (about 2 min).
+Budget: measured 198 s, 461 s and 598 s for the 104 cases with the default grids on the
+shared 2-core VM (2 Dask workers; the longer two at load average 8-16; the table's
+header line ``wall_time``); the cases are independent, so the study runs through
+tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28
+cases (about 2 min).
 """
 from __future__ import annotations
 
@@ -157,7 +159,8 @@ def bem_case(task):
         end_gap=task["length"] / 2 - max(abs(f.contact_x[0]), abs(f.contact_x[1])),
         delta=_largest_approach(f.depth, f.tilt, prof, task["length"]), tilt=f.tilt,
         change_depth=f.depth - c.depth, change_moment=f.moment - c.moment,
-        change_tilt=f.tilt - c.tilt,
+        change_tilt=f.tilt - c.tilt, change_stiffness=f.stiffness / c.stiffness - 1,
+        change_tilt_stiffness=f.tilt_stiffness / c.tilt_stiffness - 1,
         change_p_max=f.p_max / c.p_max - 1,
         richardson_depth=g["richardson_depth"], richardson_moment=g["richardson_moment"],
         nx=f.grid.nx, ny=f.grid.ny, dx=f.grid.dx, dy=f.grid.dy,
@@ -183,17 +186,19 @@ def _peak(sol):
 
 def runtime_case(task, n_slices=100):
     """The runtime coupled-slice model (linecontact.roller.ProfiledRoller) at the case's
-    F and theta: d, M, p_max, edge loading and the seconds of the solve (the model
-    built once beforehand)."""
+    F and theta: d, M, p_max, stiffnesses, edge loading and the wall and CPU seconds of
+    the solve (the model built once beforehand; CPU time is what a shared machine's
+    load does not inflate)."""
     from linecontact.roller import ProfiledRoller
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
                            n_slices=n_slices)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     r = model.at_force(task["force"], tilt=task["tilt"])
-    dt = time.perf_counter() - t0
+    dt, dc = time.perf_counter() - t0, time.process_time() - c0
     return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
-                tilt=r.tilt, seconds=dt)
+                tilt=r.tilt, stiffness=r.stiffness, tilt_stiffness=r.tilt_stiffness,
+                seconds=dt, cpu_seconds=dc)
 
 
 def iso_case(task, n_slices=30):
@@ -204,7 +209,7 @@ def iso_case(task, n_slices=30):
     r = iso_slicing(task["radius"], task["length"], task["estar"], prof,
                     force=task["force"], tilt=task["tilt"], n_slices=n_slices)
     return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
-                tilt=r.tilt)
+                tilt=r.tilt, stiffness=r.stiffness, tilt_stiffness=r.tilt_stiffness)
 
 
 def errors(ref, got, task):
@@ -233,9 +238,13 @@ def run_case(task):
                     f"{name}_p_max": got["p_max"], f"{name}_edge": got["edge"],
                     f"{name}_tilt": got["tilt"], f"{name}_err_depth": e_d,
                     f"{name}_err_moment": e_m, f"{name}_err_p_max": e_p,
-                    f"{name}_err_tilt": e_t})
+                    f"{name}_err_tilt": e_t,
+                    f"{name}_err_stiffness": got["stiffness"] / ref["stiffness"] - 1,
+                    f"{name}_err_tilt_stiffness":
+                        got["tilt_stiffness"] / ref["tilt_stiffness"] - 1})
         if "seconds" in got:
             out[f"{name}_seconds"] = got["seconds"]
+            out[f"{name}_cpu_seconds"] = got["cpu_seconds"]
     return out
 
 
@@ -269,13 +278,15 @@ COLUMNS_UNITS = {
     "bem_depth": "m", "bem_delta": "m", "bem_moment": "N m", "bem_p_max": "Pa",
     "bem_x_at_p_max": "m", "bem_contact_length": "m", "bem_end_gap": "m", "bem_edge": "-",
     "bem_stiffness": "N/m", "bem_tilt_stiffness": "N m/rad", "bem_change_depth": "-",
-    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_change_tilt": "-", "bem_nx": "-", "bem_ny": "-",
+    "bem_change_moment": "-", "bem_change_p_max": "-", "bem_change_tilt": "-",
+    "bem_change_stiffness": "-", "bem_change_tilt_stiffness": "-", "bem_nx": "-", "bem_ny": "-",
     "rt_depth": "m", "rt_moment": "N m", "rt_p_max": "Pa", "rt_edge": "-",
     "rt_err_depth": "-", "rt_err_moment": "-", "rt_err_p_max": "-", "rt_tilt": "rad",
-    "rt_err_tilt": "-", "rt_seconds": "s",
+    "rt_err_tilt": "-", "rt_err_stiffness": "-", "rt_err_tilt_stiffness": "-",
+    "rt_seconds": "s", "rt_cpu_seconds": "s",
     "iso_depth": "m", "iso_moment": "N m", "iso_p_max": "Pa", "iso_edge": "-",
     "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-", "iso_tilt": "rad",
-    "iso_err_tilt": "-",
+    "iso_err_tilt": "-", "iso_err_stiffness": "-", "iso_err_tilt_stiffness": "-",
     "bem_seconds": "s",
 }
 
@@ -299,10 +310,14 @@ def tabulate(tasks, results):
             "bem_change_p_max": r["bem_change_p_max"],
             "bem_change_tilt": r["bem_change_tilt"] / r["bem_tilt"] if t["tilt"] is None
             else 0.0,
+            "bem_change_stiffness": r["bem_change_stiffness"],
+            "bem_change_tilt_stiffness": r["bem_change_tilt_stiffness"],
             **{f"{m}_{k}": float(r[f"{m}_{k}"]) for m in ("rt", "iso")
                for k in ("depth", "moment", "p_max", "edge", "err_depth", "err_moment",
-                         "err_p_max", "tilt", "err_tilt")},
-            "rt_seconds": r["rt_seconds"], "bem_seconds": r["bem_seconds"],
+                         "err_p_max", "tilt", "err_tilt", "err_stiffness",
+                         "err_tilt_stiffness")},
+            "rt_seconds": r["rt_seconds"], "rt_cpu_seconds": r["rt_cpu_seconds"],
+            "bem_seconds": r["bem_seconds"],
         })
     return {k: np.array([row[k] for row in rows], dtype=float) for k in COLUMNS_UNITS}
 
@@ -326,11 +341,15 @@ def summarise(col, tasks, results):
         s[f"{m}_edge_m"] = mx(col[f"{m}_err_moment"], edge & tilted)
         s[f"{m}_off_t"] = mx(col[f"{m}_err_tilt"], ~edge & free)
         s[f"{m}_edge_t"] = mx(col[f"{m}_err_tilt"], edge & free)
+        s[f"{m}_k"] = mx(col[f"{m}_err_stiffness"], np.ones_like(edge))
+        s[f"{m}_kt"] = mx(col[f"{m}_err_tilt_stiffness"], np.ones_like(edge))
     s["bem_off_d"] = mx(col["bem_change_depth"], ~edge)
     s["bem_off_m"] = mx(col["bem_change_moment"], ~edge)
     s["bem_off_p"] = mx(col["bem_change_p_max"], ~edge)
     s["bem_edge_d"] = mx(col["bem_change_depth"], edge)
     s["bem_edge_m"] = mx(col["bem_change_moment"], edge)
+    s["bem_k"] = mx(col["bem_change_stiffness"], np.ones_like(edge))
+    s["bem_kt"] = mx(col["bem_change_tilt_stiffness"], np.ones_like(edge))
     od = np.array([r["bem_order_depth"] for r in results], dtype=float)
     om = np.array([r["bem_order_moment"] for r in results], dtype=float)
     edge_t = np.array([bool(r["bem_edge"]) for r in results])
@@ -341,6 +360,7 @@ def summarise(col, tasks, results):
     q = col["line_load"][~edge]
     s["range_q"] = (float(q.min(initial=np.inf)), float(q.max(initial=-np.inf)))
     s["rt_seconds"] = float(np.median(col["rt_seconds"]))
+    s["rt_cpu_seconds"] = float(np.median(col["rt_cpu_seconds"]))
     s["case_seconds"] = float(np.sum(col["bem_seconds"]) + np.sum(col["rt_seconds"]))
     # the range the study covers (where the runtime's error is known)
     L = col["roller_length"]
@@ -357,6 +377,27 @@ def summarise(col, tasks, results):
         f"{np.max(np.abs(col['tilt']) * L / 2 / col['bem_delta']):.2g} times the largest "
         f"approach; profiles {', '.join(PROFILES.values())}")
     s["bem_seconds"] = float(np.median(col["bem_seconds"]))
+    # the same range as data (read by linecontact.roller to note cases outside it):
+    # "low, high" pairs; |theta| for tilts; profile keys of linecontact.profiles
+    given, freet = col["free_tilt"] == 0, col["free_tilt"] > 0
+    drop = np.abs(col["tilt"]) * L / 2 / col["bem_delta"]
+    qn = col["line_load"] / (ESTAR * DIAMETER)
+    s["covered_fields"] = {
+        "covered_l_over_d": f"{np.min(L) / DIAMETER:.6g}, {np.max(L) / DIAMETER:.6g}",
+        "covered_line_load_over_estar_d": f"{np.min(qn):.6g}, {np.max(qn):.6g}",
+        "covered_given_tilt_rad": f"0, {np.max(np.abs(col['tilt'][given])):.6g}",
+        "covered_free_tilt_rad": f"0, {np.max(np.abs(col['tilt'][freet]), initial=0):.6g}",
+        "covered_tilt_drop_over_approach": f"0, {np.max(drop):.6g}",
+        # the study's profiles by runtime key (its user-table case is a smooth
+        # asymmetric crown, not any table: "file" is not listed)
+        "covered_profiles": "circular, iso16281, lundberg, johns-gohar, end-relief",
+        "runtime_error_off_ends": (
+            f"depth {s['rt_off_d']:.3g}, moment {s['rt_off_m']:.3g}, moment_untilted "
+            f"{s['rt_off_m0']:.3g}, p_max {s['rt_off_p']:.3g}, tilt {s['rt_off_t']:.3g}"),
+        "runtime_error_edge_loaded": (
+            f"depth {s['rt_edge_d']:.3g}, moment {s['rt_edge_m']:.3g}, tilt "
+            f"{s['rt_edge_t']:.3g}"),
+    }
     return s
 
 
@@ -464,7 +505,10 @@ def run(args):
                   "theta/theta_bem - 1 there (0 elsewhere); err_p_max = p/p_bem - 1 (a grid-"
                   "dependent singular end peak on edge-loaded rows: not a physical "
                   "number); bem_change_* = BEM change from the coarser to the finer grid "
-                  "(depth over delta, moment over |M| or F L/2, tilt over the tilt)",
+                  "(depth over delta, moment over |M| or F L/2, tilt over the tilt, "
+                  "stiffnesses relative); err_stiffness, err_tilt_stiffness = k/k_bem - 1 "
+                  "for dF/dd at fixed tilt and dM/dtheta at fixed d, the BEM's from the "
+                  "flat and tilted rigid punch on its contact set",
         cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: profiles "
               f"1-5 at the tilts below and the offset crown (x0 = {CROWN_OFFSET * 1e3:g} "
               f"mm, zero moment: theta = -x0/Rc) and an asymmetric crown (Rc = "
@@ -483,7 +527,9 @@ def run(args):
                   "moment 1e-6 F L/2",
         accuracy=f"BEM grid change (coarse to fine) off the ends: d {s['bem_off_d']:.1e}, "
                  f"M {s['bem_off_m']:.1e}, p_max {s['bem_off_p']:.1e}; edge loaded: d "
-                 f"{s['bem_edge_d']:.1e}, M {s['bem_edge_m']:.1e}; observed orders "
+                 f"{s['bem_edge_d']:.1e}, M {s['bem_edge_m']:.1e}; all cases: dF/dd "
+                 f"{s['bem_k']:.1e}, dM/dtheta {s['bem_kt']:.1e} (flat and tilted punch on "
+                 "the staircase contact set); observed orders "
                  f"{s['orders']} (from three grids; they scatter where the changes are "
                  "1e-5-1e-4, at the staircase contact boundary's level)",
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
@@ -491,18 +537,22 @@ def run(args):
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "
                       f"{s['rt_off_p']:.2%}, zero-moment tilt {s['rt_off_t']:.2%}; edge "
                       f"loaded ({s['n_edge']} cases): deflection {s['rt_edge_d']:.2%}, "
-                      f"moment {s['rt_edge_m']:.2%}, tilt {s['rt_edge_t']:.2%}",
+                      f"moment {s['rt_edge_m']:.2%}, tilt {s['rt_edge_t']:.2%}; all cases: "
+                      f"dF/dd {s['rt_k']:.2%}, dM/dtheta {s['rt_kt']:.2%}",
         iso_error=f"largest |error| off the ends: deflection {s['iso_off_d']:.2%}, moment "
                   f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}, zero-moment "
                   f"tilt {s['iso_off_t']:.2%}; edge loaded: deflection "
                   f"{s['iso_edge_d']:.2%}, moment {s['iso_edge_m']:.2%}, tilt "
-                  f"{s['iso_edge_t']:.2%}",
+                  f"{s['iso_edge_t']:.2%}; all cases: dF/dd {s['iso_k']:.2%}, dM/dtheta "
+                  f"{s['iso_kt']:.2%}",
         covered=s["range"],
+        **s["covered_fields"],
         wall_time=f"{wall:.0f} s for {len(tasks)} cases (0 when every case came from the "
                   f"checkpoints; the per-case times sum to {s['case_seconds']:.0f} s); "
                   f"median per case: BEM "
-                  f"{s['bem_seconds']:.2f} s (both grids), runtime solve "
-                  f"{s['rt_seconds'] * 1e3:.2f} ms",
+                  f"{s['bem_seconds']:.2f} s (both grids, wall), runtime solve "
+                  f"{s['rt_seconds'] * 1e3:.1f} ms wall, {s['rt_cpu_seconds'] * 1e3:.1f} ms "
+                  "CPU",
     )
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "roller_accuracy.csv"

@@ -11,9 +11,11 @@ What it measures:
    definitions: tools/roller_study.py). Targets (issue 9, item 8): runtime within 1 % in
    deflection and moment and within 5 % in peak pressure wherever the contact stays off
    the roller ends; elsewhere (edge loaded) and for ISO slicing the errors are stated.
-2. time per solve: the runtime model (median of ``--repeat`` solves of each case, model
-   construction excluded and, separately, included) and the BEM at the study's two grids
-   (``--bem-cases`` cases, one thread, force control with Newton on the approach).
+2. time per solve, CPU (time.process_time: what other jobs on a shared machine do not
+   inflate) and wall: the runtime model (median of ``--repeat`` solves of each case,
+   model construction excluded and, for the wall time, also included) and the BEM at the
+   study's two grids (``--bem-cases`` cases, one FFT thread, force control with Newton on
+   the approach).
 
 Prints a report and writes it to tools/benchmarks/results/roller.txt.
 """
@@ -56,17 +58,23 @@ def accuracy(table, repeat):
     for i, task in enumerate(_tasks_from_table(table)):
         ref = dict(depth=c["bem_depth"][i], delta=c["bem_delta"][i],
                    moment=c["bem_moment"][i], p_max=c["bem_p_max"][i], tilt=c["tilt"][i])
-        times = []
+        times, cpu = [], []
         for _ in range(repeat):
             rt = rs.runtime_case(task)
             times.append(rt["seconds"])
+            cpu.append(rt["cpu_seconds"])
         t_total = time.perf_counter()
         rs.runtime_case(task)
         t_total = time.perf_counter() - t_total
         iso = rs.iso_case(task)
+        kref = (c["bem_stiffness"][i], c["bem_tilt_stiffness"][i])
         rows.append(dict(task=task, edge=bool(c["bem_edge"][i]),
                          rt=rs.errors(ref, rt, task), iso=rs.errors(ref, iso, task),
-                         seconds=statistics.median(times), seconds_total=t_total))
+                         rt_k=(rt["stiffness"] / kref[0] - 1, rt["tilt_stiffness"] / kref[1] - 1),
+                         iso_k=(iso["stiffness"] / kref[0] - 1,
+                                iso["tilt_stiffness"] / kref[1] - 1),
+                         seconds=statistics.median(times), cpu=statistics.median(cpu),
+                         seconds_total=t_total))
     return rows
 
 
@@ -80,12 +88,12 @@ def bem_times(table, n_cases):
         t = tasks[i]
         prof = rs.make_profile(t["profile"], t["length"], t["radius"], t["estar"])
         for scale in (1, 2):
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             r = solve_roller_force(t["radius"], t["length"], t["estar"], t["force"],
                                    tilt=t["tilt"], profile=prof, n_x=scale * n_x,
                                    n_y=scale * n_y, workers=1)
             out.append((t, scale, r.grid.nx, r.grid.ny, time.perf_counter() - t0,
-                        r.newton_steps))
+                        time.process_time() - c0, r.newton_steps))
     return out
 
 
@@ -128,6 +136,10 @@ def report(rows, bem, table_path):
             say(f"  {label:13s} {name:7s} largest |error| {e:7.2%}{verdict}   ({where})")
     say("  (moment: cases at a given tilt != 0, relative to M; tilt: zero-moment cases, "
         "relative; edge-loaded peak pressure is a singular end peak: no target)")
+    say("  all cases: dF/dd largest |error| "
+        f"{max(abs(r['rt_k'][0]) for r in rows):.2%}, dM/dtheta "
+        f"{max(abs(r['rt_k'][1]) for r in rows):.2%} (BEM: rigid punch on its staircase "
+        "contact set)")
     say("")
     say("ISO/TS 16281 slicing against the converged BEM (same cases)")
     for subset, label in ((off, "off the ends"), (edge, "edge loaded")):
@@ -136,19 +148,26 @@ def report(rows, bem, table_path):
                 continue
             e, where = worst(subset, "iso", k)
             say(f"  {label:13s} {name:7s} largest |error| {e:7.2%}   ({where})")
+    say("  all cases: dF/dd largest |error| "
+        f"{max(abs(r['iso_k'][0]) for r in rows):.2%}, dM/dtheta "
+        f"{max(abs(r['iso_k'][1]) for r in rows):.2%}")
     say("")
     t_rt = [r["seconds"] for r in rows]
+    c_rt = [r["cpu"] for r in rows]
     t_tot = [r["seconds_total"] for r in rows]
-    say(f"runtime solve: median {statistics.median(t_rt) * 1e3:.2f} ms, largest "
-        f"{max(t_rt) * 1e3:.2f} ms (model construction included: median "
-        f"{statistics.median(t_tot) * 1e3:.2f} ms)")
-    for t, scale, nx, ny, sec, steps in bem:
+    say(f"runtime solve (100 slices): CPU median {statistics.median(c_rt) * 1e3:.1f} ms, "
+        f"largest {max(c_rt) * 1e3:.0f} ms; wall median {statistics.median(t_rt) * 1e3:.1f}"
+        f" ms, largest {max(t_rt) * 1e3:.0f} ms (model construction included: wall median "
+        f"{statistics.median(t_tot) * 1e3:.1f} ms)")
+    for t, scale, nx, ny, sec, cpu, steps in bem:
         tilt = "free" if t["tilt"] is None else f"{t['tilt'] * 1e3:g} mrad"
-        say(f"BEM solve {nx:4d} x {ny:3d} cells: {sec:6.2f} s ({steps} Newton steps; "
-            f"{t['profile']}, F = {t['force']:g} N, tilt = {tilt})")
+        say(f"BEM solve {nx:4d} x {ny:3d} cells: CPU {cpu:6.2f} s, wall {sec:6.2f} s "
+            f"({steps} Newton steps; {t['profile']}, F = {t['force']:g} N, tilt = {tilt})")
     if bem:
-        med = statistics.median(s for *_, s, _ in bem)
-        say(f"ratio BEM / runtime solve (medians): {med / statistics.median(t_rt):.0f}")
+        for scale in (1, 2):
+            med = statistics.median(b[5] for b in bem if b[1] == scale)
+            say(f"ratio of CPU medians, BEM ({'coarse' if scale == 1 else 'fine'} grid) / "
+                f"runtime solve: {med / statistics.median(c_rt):.0f}")
     return "\n".join(lines)
 
 

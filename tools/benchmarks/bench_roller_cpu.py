@@ -1,0 +1,91 @@
+"""CPU time of one runtime roller solve on every case of tables/roller_accuracy.csv.
+
+    OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_cpu [--repeat 3]
+        [--save FILE.json] [--against FILE.json]
+
+Each case as the study runs it (tools/roller_study.py, ``runtime_case``): a new
+``linecontact.roller.ProfiledRoller`` (100 slices) per case, then one
+``at_force(F, tilt)`` (tilt None: zero moment), timed with ``time.process_time`` (CPU
+time, not wall: the shared machine's load does not enter); the cases run in table order
+in one process, so the first includes the one-time build of the strip-function table.
+``--repeat`` runs the whole list again and keeps each case's median. ``--save`` writes
+the results (depth, moment, tilt, p_max, edge, CPU time); ``--against`` compares with a
+saved run: the largest change in depth (over the case's largest approach), moment (over
+F L/2) and tilt (relative), to show that a speed-up leaves the results alone.
+
+Complements tools/benchmarks/bench_roller.py (accuracy against the BEM, wall times).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+import time
+
+import numpy as np
+
+
+def run(repeat=1):
+    from linecontact.roller import ProfiledRoller
+    from linecontact.tables import read_table
+    from tools import roller_study as rs
+    from tools.benchmarks.bench_roller import _tasks_from_table
+
+    table = read_table("roller_accuracy")
+    tasks = _tasks_from_table(table)
+    out = [None] * len(tasks)
+    times = [[] for _ in tasks]
+    for _ in range(repeat):
+        for i, t in enumerate(tasks):
+            prof = rs.make_profile(t["profile"], t["length"], t["radius"], t["estar"])
+            model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof,
+                                   n_slices=100)
+            c0 = time.process_time()
+            r = model.at_force(t["force"], tilt=t["tilt"])
+            times[i].append(time.process_time() - c0)
+            out[i] = dict(case=i, profile=t["profile"], force=t["force"], tilt=r.tilt,
+                          given_tilt=t["tilt"], depth=r.depth, moment=r.moment,
+                          p_max=r.p_max, edge=r.edge)
+    for o, ts in zip(out, times):
+        o["cpu_seconds"] = statistics.median(ts)
+    return table, out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--save", default=None)
+    ap.add_argument("--against", default=None)
+    a = ap.parse_args(argv)
+    table, out = run(a.repeat)
+    t = np.array([o["cpu_seconds"] for o in out])
+    order = np.argsort(-t)
+    print(f"{len(t)} cases, 100 slices, CPU time per solve: median {np.median(t) * 1e3:.1f}"
+          f" ms, largest {t.max() * 1e3:.1f} ms, over 100 ms: {(t > 0.1).sum()}")
+    for i in order[:5]:
+        o = out[i]
+        tilt = "free" if o["given_tilt"] is None else f"{o['given_tilt'] * 1e3:g} mrad"
+        print(f"  case {i}: {o['profile']}, {o['force']:g} N, tilt {tilt}: "
+              f"{t[i] * 1e3:.1f} ms")
+    if a.save:
+        with open(a.save, "w") as f:
+            json.dump(out, f)
+    if a.against:
+        with open(a.against) as f:
+            ref = json.load(f)
+        c = table.columns
+        ch = dict(depth=0.0, moment=0.0, tilt=0.0)
+        for i, (x, y) in enumerate(zip(ref, out)):
+            FL2 = c["force"][i] * c["roller_length"][i] / 2
+            ch["depth"] = max(ch["depth"], abs(x["depth"] - y["depth"]) / c["bem_delta"][i])
+            ch["moment"] = max(ch["moment"], abs(x["moment"] - y["moment"]) / FL2)
+            if x["tilt"]:
+                ch["tilt"] = max(ch["tilt"], abs(x["tilt"] / y["tilt"] - 1))
+        print("largest change against " + a.against + ": " + ", ".join(
+            f"{k} {v:.1e}" for k, v in ch.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -54,7 +54,7 @@ def moment_semi_axes(res):
     return np.sqrt(5 * np.sum(p * X ** 2) / p.sum()), np.sqrt(5 * np.sum(p * Y ** 2) / p.sum())
 
 
-CHECKS = [  # SPEC check values, R = 10 mm, E* = 115.385 GPa: (Rc, F, a, b, p0, approach)
+CHECKS = [  # Hertz elliptical-contact check values (Johnson 1985, sec. 4.2), R = 10 mm, E* = 115.385 GPa: (Rc, F, a, b, p0, approach)
     (0.500, 1000.0, 2.287e-3, 0.1895e-3, 1102e6, 7.02e-6),
     (0.200, 2000.0, 1.983e-3, 0.2861e-3, 1684e6, 13.92e-6),
 ]

@@ -99,6 +99,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numerics import NotAKnotSpline
 from .models import ContactModel, register
 from .profiles import Profile, StraightProfile, parse_profile
 from .validity import (Interval, OutOfRangeError, check_interval, check_positive, out)
@@ -205,12 +206,10 @@ def _near_table():
     ln(tau) (1D array) giving an array of shape (len, 4).
 
     The spline is the not-a-knot cubic (de Boor, A Practical Guide to Splines, 1978,
-    chapter IV; what scipy's CubicSpline builds by default) on the uniform grid, its
-    slopes m from the tridiagonal system m_(i-1) + 4 m_i + m_(i+1) = 3 (s_(i-1) + s_i)
-    (s_i the secant slopes) with the end rows m_0 + 2 m_1 = (5 s_0 + s_1)/2 and
-    2 m_(N-2) + m_(N-1) = (s_(N-3) + 5 s_(N-2))/2 (not-a-knot with the neighbouring row
-    eliminated), solved by the Thomas algorithm; evaluated by indexing the uniform grid
-    (no search, no scipy import: the first solve of a process stays fast).
+    chapter IV; what scipy's CubicSpline builds by default) of
+    :class:`linecontact._numerics.NotAKnotSpline`, whose coefficients are taken here and
+    evaluated by indexing the uniform grid (no search, no scipy import: the first solve
+    of a process stays fast).
     """
     if not _NEAR_TABLE:
         n = 2701
@@ -218,33 +217,8 @@ def _near_table():
         z = np.linspace(z0, z1, n)
         h = (z1 - z0) / (n - 1)
         y = np.column_stack(_direct(np.exp(z)))             # (n, 4)
-        sl = np.diff(y, axis=0) / h                          # secant slopes (n-1, 4)
-        rhs = np.empty_like(y)
-        rhs[0] = 0.5 * (5 * sl[0] + sl[1])
-        rhs[1:-1] = 3 * (sl[:-1] + sl[1:])
-        rhs[-1] = 0.5 * (sl[-2] + 5 * sl[-1])
-        lower = np.ones(n)
-        diag = np.full(n, 4.0)
-        upper = np.ones(n)
-        diag[0], upper[0] = 1.0, 2.0
-        lower[-1], diag[-1] = 2.0, 1.0
-        cp = np.empty(n)
-        dp = np.empty_like(y)
-        cp[0] = upper[0] / diag[0]
-        dp[0] = rhs[0] / diag[0]
-        for i in range(1, n):
-            den = diag[i] - lower[i] * cp[i - 1]
-            cp[i] = upper[i] / den
-            dp[i] = (rhs[i] - lower[i] * dp[i - 1]) / den
-        m = np.empty_like(y)
-        m[-1] = dp[-1]
-        for i in range(n - 2, -1, -1):
-            m[i] = dp[i] - cp[i] * m[i + 1]
-        c = np.empty((n - 1, 4, 4))                          # (segment, power, function)
-        c[:, 0] = y[:-1]
-        c[:, 1] = m[:-1]
-        c[:, 2] = (3 * sl - 2 * m[:-1] - m[1:]) / h
-        c[:, 3] = (m[:-1] + m[1:] - 2 * sl) / (h * h)
+        # (segment, power, function), lowest power first
+        c = np.stack([NotAKnotSpline(z, y[:, j]).c[::-1].T for j in range(4)], axis=-1)
 
         def spline(zq):
             i = np.clip(((zq - z0) / h).astype(np.intp), 0, n - 2)

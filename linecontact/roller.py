@@ -1423,14 +1423,35 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
 # --------------------------------------------------------------------------------------
 # The two as ContactModels (force(depth), depth(force), stiffness(depth) at a fixed tilt)
 # --------------------------------------------------------------------------------------
-def _each(values, name, unit, fn):
+def _each(values, fn):
+    """fn(one value) over an array of values, same shape (one slice solve per value)."""
     v = np.asarray(values, dtype=float)
     res = np.array([fn(float(e)) for e in v.ravel()]).reshape(v.shape)
     return out(res)
 
 
+class _SolvedRoller(ContactModel):
+    """The contact law of a roller model from its solutions (``at_depth``,
+    ``at_force`` returning :class:`RollerSolution`): one solve per value, each giving
+    force, depth and stiffness together."""
+
+    def force(self, depth):
+        return _each(depth, lambda d: self.at_depth(d).force)
+
+    def depth(self, force):
+        F = check_positive("force", force, "N")
+        return _each(F, lambda f: self.at_force(f).depth)
+
+    def stiffness(self, depth):
+        return _each(depth, lambda d: self.at_depth(d).stiffness)
+
+    def stiffness_at_force(self, force):
+        F = check_positive("force", force, "N")
+        return _each(F, lambda f: self.at_force(f).stiffness)
+
+
 @register
-class ProfiledRollerModel(ContactModel):
+class ProfiledRollerModel(_SolvedRoller):
     """A profiled, tilted roller as a contact law: coupled slices at a fixed tilt.
 
     .. math:: F(d) = \\sum_k q_k(d, \\theta)\\,w, \\qquad k(d) = \\partial F/\\partial d
@@ -1503,23 +1524,10 @@ class ProfiledRollerModel(ContactModel):
         """:class:`RollerSolution` at force F [N] and this model's tilt."""
         return self.roller.at_force(force, self.tilt)
 
-    def force(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).force)
-
-    def depth(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).depth)
-
-    def stiffness(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).stiffness)
-
-    def stiffness_at_force(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).stiffness)
 
 
 @register
-class ISOSlicingModel(ContactModel):
+class ISOSlicingModel(_SolvedRoller):
     """ISO/TS 16281 slicing of a profiled, tilted roller as a contact law (steel only).
 
     .. math:: F(d) = \\sum_k \\frac{c}{n}\\,(d + x_k\\tan\\theta - P(x_k))_+^{10/9}
@@ -1589,12 +1597,3 @@ class ISOSlicingModel(ContactModel):
         """:class:`RollerSolution` at force F [N]."""
         return self._solve(force=force)
 
-    def force(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).force)
-
-    def depth(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).depth)
-
-    def stiffness(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).stiffness)

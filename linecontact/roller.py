@@ -800,7 +800,9 @@ class ProfiledRoller:
     profile : Profile or str or None, optional
         Profile drop (:mod:`linecontact.profiles`), a spec such as
         ``"circular:Rc=500mm"`` (see :func:`~linecontact.profiles.parse_profile`), or
-        None for a straight roller.
+        None for a straight roller. A spec is read with this R: ``"iso16281"`` without
+        ``D=`` takes D = 2R, the roller's diameter only on a flat; against a raceway
+        write ``"iso16281:D=..."``.
     n_slices : int, optional
         Number of slices n, 10 <= n <= 4000 [-] (default 100).
 

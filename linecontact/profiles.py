@@ -544,8 +544,9 @@ class JohnsGoharProfile(Profile):
         self.estar = _scalar_positive("estar", estar, "Pa")
         self.design_force = _scalar_positive("design_force", design_force, "N")
         a = self.length / 2
-        b = math.sqrt(4 * self.radius * self.design_force
-                      / (math.pi * self.estar * self.length))
+        from .classical import hertz_half_width
+        b = float(hertz_half_width(self.design_force, self.radius, self.length,
+                                   self.estar))
         if not JOHNS_GOHAR_C * b < a:
             raise OutOfRangeError("design_force", self.design_force,
                                   f"(0, {math.pi * self.estar * self.length * (a / JOHNS_GOHAR_C) ** 2 / (4 * self.radius):.6g}) N",

@@ -60,8 +60,9 @@ wrap it in a Newton iteration on d and theta using the exact stiffness matrix
 Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md): circular crown
 against exact Hertz within 0.01 % in approach, p0, b and stiffness and 0.25 % in the
 contact half-length at 100 slices, converging at second order in the slice width; a
-straight roller within 0.4 % of the universal curve at 100 slices, approaching it from
-below as about n^(-0.75) (the end singularity).
+straight roller within 0.4 % of the universal curve at 100 slices for d R/L^2 <= 4e-3
+(0.65 % for a short, deeply pressed roller, L/R = 0.2 at d R/L^2 = 0.04), approaching
+it from below as about n^(-0.75) (the end singularity).
 
 Edge loading: on a half-space the pressure at a sharp roller end touched by the contact
 is singular (a rigid flat-ended punch, Johnson 1985 section 5.6); the per-slice peak

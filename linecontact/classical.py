@@ -63,10 +63,6 @@ __all__ = [
 MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=False,
                             unit="Pa")
 
-#: Poisson's ratio of an isotropic elastic body accepted by Eq. 3: 0 <= nu <= 0.5, the
-#: end 0.5 included (incompressible rubber or elastomer coatings: 1 - nu^2 = 0.75, E*
-#: stays finite).
-
 
 # --------------------------------------------------------------------------------------
 # Eq. 3
@@ -138,6 +134,19 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
+    E1, nu1, E2, nu2 = _two_bodies(modulus1, poisson1, modulus2, poisson2)
+    compliance = (1 - nu1**2) / E1 + (1 - nu2**2) / E2
+    return out(1.0 / compliance)
+
+
+def _two_bodies(modulus1, poisson1, modulus2=np.inf, poisson2=None):
+    """The checked elastic constants (E1, nu1, E2, nu2) of a pair of bodies.
+
+    The one home of the input rules of every two-body modulus (E* here, G* in
+    :func:`linecontact.tangential.effective_shear_modulus`): moduli in (0, inf] Pa
+    (``inf`` = rigid), Poisson ratios in [0, 0.5], not both bodies rigid, and a finite
+    `modulus2` only with its `poisson2` (a rigid body's nu2 does not enter: 0 is used).
+    """
     E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
     E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
     nu1 = POISSON_RATIO.check(poisson1, name="poisson1")
@@ -147,15 +156,13 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
                 "poisson2", "missing", str(POISSON_RATIO),
                 hint="modulus2 is given (an elastic second body), so its Poisson ratio "
                      "is needed too; leave modulus2 out for a rigid second body")
-        poisson2 = 0.0   # rigid second body: its Poisson ratio does not enter Eq. 3
+        poisson2 = 0.0   # rigid second body: its Poisson ratio does not enter
     nu2 = POISSON_RATIO.check(poisson2, name="poisson2")
-    both = np.isinf(E1) & np.isinf(E2)
-    if np.any(both):
+    if np.any(np.isinf(E1) & np.isinf(E2)):
         raise OutOfRangeError("modulus1", math.inf, "(0, inf) Pa", unit="Pa",
                               hint="both bodies are rigid (modulus2 = inf as well); "
                                    "at least one must be elastic")
-    compliance = (1 - nu1**2) / E1 + (1 - nu2**2) / E2
-    return out(1.0 / compliance)
+    return E1, nu1, E2, nu2
 
 
 def _inputs(radius, length, estar):

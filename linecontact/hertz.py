@@ -115,7 +115,7 @@ def hertz_eccentricity(radius_x, radius_y):
     Notes
     -----
     Valid for max(R_x, R_y)/min(R_x, R_y) from 1 (a circle, b/a = 1) to 1e7
-    (b/a about 3e-5); the equation is solved to a relative tolerance of 1e-14 in b/a.
+    (b/a about 1e-4); the equation is solved to a relative tolerance of 1e-14 in b/a.
 
     Examples
     --------

@@ -544,8 +544,9 @@ class JohnsGoharProfile(Profile):
         self.estar = _scalar_positive("estar", estar, "Pa")
         self.design_force = _scalar_positive("design_force", design_force, "N")
         a = self.length / 2
-        b = math.sqrt(4 * self.radius * self.design_force
-                      / (math.pi * self.estar * self.length))
+        from .classical import hertz_half_width
+        b = float(hertz_half_width(self.design_force, self.radius, self.length,
+                                   self.estar))
         if not JOHNS_GOHAR_C * b < a:
             raise OutOfRangeError("design_force", self.design_force,
                                   f"(0, {math.pi * self.estar * self.length * (a / JOHNS_GOHAR_C) ** 2 / (4 * self.radius):.6g}) N",
@@ -827,12 +828,12 @@ _OPTIONS = {
 
 
 def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
-                  crown_radius=None):
+                  crown_radius=None, diameter=None):
     """Build a profile from its command-line form ``NAME[:opt=val,...]``.
 
     ``straight``; ``end-relief:r=1mm[,l=0.8mm]`` or ``end-relief:l=1mm,angle=0.1deg``
     (or ``drop=5um``); ``circular:Rc=500mm[,x0=1mm]``; ``iso16281[:D=10mm]`` (default
-    D = 2R); ``lundberg[:F0=5kN]`` and ``johns-gohar[:F0=5kN]`` (default F0 =
+    `diameter`, else 2 `radius`); ``lundberg[:F0=5kN]`` and ``johns-gohar[:F0=5kN]`` (default F0 =
     ``design_force``, e.g. the load being computed); ``file:PATH.csv``.
 
     .. math:: P(x) \\text{ as in the profile classes of this module}
@@ -844,13 +845,19 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     length : float
         Roller length L [m].
     radius : float, optional
-        Roller radius R (for iso16281's default D = 2R and johns-gohar) [m].
+        Radius R across the axis as the contact sees it (the effective radius against
+        a raceway): johns-gohar's Hertz half-width b, and iso16281's default D = 2R
+        when `diameter` is not given [m].
     estar : float, optional
         Effective modulus E* (for lundberg, johns-gohar) [Pa].
     design_force : float, optional
         Default design load F0 for lundberg and johns-gohar [N].
     crown_radius : float, optional
         Default Rc for ``circular`` without ``Rc=`` [m].
+    diameter : float, optional
+        The roller's own diameter D, default for ``iso16281`` without ``D=``; give it
+        when `radius` is an effective radius against a raceway (2 R_eff is not the
+        roller's diameter, and the reference profile scales with D) [m].
 
     Returns
     -------
@@ -933,7 +940,8 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
         return CircularCrownProfile(length, **kw)
     if name == "iso16281":
         if "diameter" not in kw:
-            kw["diameter"] = 2 * need("radius", radius, "m")
+            kw["diameter"] = (diameter if diameter is not None
+                              else 2 * need("radius", radius, "m"))
         return ISO16281Profile(length, **kw)
     kw.setdefault("design_force", design_force)
     need("design_force", kw["design_force"], "N")

@@ -60,8 +60,9 @@ wrap it in a Newton iteration on d and theta using the exact stiffness matrix
 Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md): circular crown
 against exact Hertz within 0.01 % in approach, p0, b and stiffness and 0.25 % in the
 contact half-length at 100 slices, converging at second order in the slice width; a
-straight roller within 0.4 % of the universal curve at 100 slices, approaching it from
-below as about n^(-0.75) (the end singularity).
+straight roller within 0.4 % of the universal curve at 100 slices for d R/L^2 <= 4e-3
+(0.65 % for a short, deeply pressed roller, L/R = 0.2 at d R/L^2 = 0.04), approaching
+it from below as about n^(-0.75) (the end singularity).
 
 Edge loading: on a half-space the pressure at a sharp roller end touched by the contact
 is singular (a rigid flat-ended punch, Johnson 1985 section 5.6); the per-slice peak
@@ -99,6 +100,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numerics import NotAKnotSpline
 from .models import ContactModel, register
 from .profiles import Profile, StraightProfile, parse_profile
 from .validity import (Interval, OutOfRangeError, check_interval, check_positive, out)
@@ -205,12 +207,10 @@ def _near_table():
     ln(tau) (1D array) giving an array of shape (len, 4).
 
     The spline is the not-a-knot cubic (de Boor, A Practical Guide to Splines, 1978,
-    chapter IV; what scipy's CubicSpline builds by default) on the uniform grid, its
-    slopes m from the tridiagonal system m_(i-1) + 4 m_i + m_(i+1) = 3 (s_(i-1) + s_i)
-    (s_i the secant slopes) with the end rows m_0 + 2 m_1 = (5 s_0 + s_1)/2 and
-    2 m_(N-2) + m_(N-1) = (s_(N-3) + 5 s_(N-2))/2 (not-a-knot with the neighbouring row
-    eliminated), solved by the Thomas algorithm; evaluated by indexing the uniform grid
-    (no search, no scipy import: the first solve of a process stays fast).
+    chapter IV; what scipy's CubicSpline builds by default) of
+    :class:`linecontact._numerics.NotAKnotSpline`, whose coefficients are taken here and
+    evaluated by indexing the uniform grid (no search, no scipy import: the first solve
+    of a process stays fast).
     """
     if not _NEAR_TABLE:
         n = 2701
@@ -218,33 +218,8 @@ def _near_table():
         z = np.linspace(z0, z1, n)
         h = (z1 - z0) / (n - 1)
         y = np.column_stack(_direct(np.exp(z)))             # (n, 4)
-        sl = np.diff(y, axis=0) / h                          # secant slopes (n-1, 4)
-        rhs = np.empty_like(y)
-        rhs[0] = 0.5 * (5 * sl[0] + sl[1])
-        rhs[1:-1] = 3 * (sl[:-1] + sl[1:])
-        rhs[-1] = 0.5 * (sl[-2] + 5 * sl[-1])
-        lower = np.ones(n)
-        diag = np.full(n, 4.0)
-        upper = np.ones(n)
-        diag[0], upper[0] = 1.0, 2.0
-        lower[-1], diag[-1] = 2.0, 1.0
-        cp = np.empty(n)
-        dp = np.empty_like(y)
-        cp[0] = upper[0] / diag[0]
-        dp[0] = rhs[0] / diag[0]
-        for i in range(1, n):
-            den = diag[i] - lower[i] * cp[i - 1]
-            cp[i] = upper[i] / den
-            dp[i] = (rhs[i] - lower[i] * dp[i - 1]) / den
-        m = np.empty_like(y)
-        m[-1] = dp[-1]
-        for i in range(n - 2, -1, -1):
-            m[i] = dp[i] - cp[i] * m[i + 1]
-        c = np.empty((n - 1, 4, 4))                          # (segment, power, function)
-        c[:, 0] = y[:-1]
-        c[:, 1] = m[:-1]
-        c[:, 2] = (3 * sl - 2 * m[:-1] - m[1:]) / h
-        c[:, 3] = (m[:-1] + m[1:] - 2 * sl) / (h * h)
+        # (segment, power, function), lowest power first
+        c = np.stack([NotAKnotSpline(z, y[:, j]).c[::-1].T for j in range(4)], axis=-1)
 
         def spline(zq):
             i = np.clip(((zq - z0) / h).astype(np.intp), 0, n - 2)
@@ -826,7 +801,9 @@ class ProfiledRoller:
     profile : Profile or str or None, optional
         Profile drop (:mod:`linecontact.profiles`), a spec such as
         ``"circular:Rc=500mm"`` (see :func:`~linecontact.profiles.parse_profile`), or
-        None for a straight roller.
+        None for a straight roller. A spec is read with this R: ``"iso16281"`` without
+        ``D=`` takes D = 2R, the roller's diameter only on a flat; against a raceway
+        write ``"iso16281:D=..."``.
     n_slices : int, optional
         Number of slices n, 10 <= n <= 4000 [-] (default 100).
 
@@ -1449,14 +1426,35 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
 # --------------------------------------------------------------------------------------
 # The two as ContactModels (force(depth), depth(force), stiffness(depth) at a fixed tilt)
 # --------------------------------------------------------------------------------------
-def _each(values, name, unit, fn):
+def _each(values, fn):
+    """fn(one value) over an array of values, same shape (one slice solve per value)."""
     v = np.asarray(values, dtype=float)
     res = np.array([fn(float(e)) for e in v.ravel()]).reshape(v.shape)
     return out(res)
 
 
+class _SolvedRoller(ContactModel):
+    """The contact law of a roller model from its solutions (``at_depth``,
+    ``at_force`` returning :class:`RollerSolution`): one solve per value, each giving
+    force, depth and stiffness together."""
+
+    def force(self, depth):
+        return _each(depth, lambda d: self.at_depth(d).force)
+
+    def depth(self, force):
+        F = check_positive("force", force, "N")
+        return _each(F, lambda f: self.at_force(f).depth)
+
+    def stiffness(self, depth):
+        return _each(depth, lambda d: self.at_depth(d).stiffness)
+
+    def stiffness_at_force(self, force):
+        F = check_positive("force", force, "N")
+        return _each(F, lambda f: self.at_force(f).stiffness)
+
+
 @register
-class ProfiledRollerModel(ContactModel):
+class ProfiledRollerModel(_SolvedRoller):
     """A profiled, tilted roller as a contact law: coupled slices at a fixed tilt.
 
     .. math:: F(d) = \\sum_k q_k(d, \\theta)\\,w, \\qquad k(d) = \\partial F/\\partial d
@@ -1529,23 +1527,10 @@ class ProfiledRollerModel(ContactModel):
         """:class:`RollerSolution` at force F [N] and this model's tilt."""
         return self.roller.at_force(force, self.tilt)
 
-    def force(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).force)
-
-    def depth(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).depth)
-
-    def stiffness(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).stiffness)
-
-    def stiffness_at_force(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).stiffness)
 
 
 @register
-class ISOSlicingModel(ContactModel):
+class ISOSlicingModel(_SolvedRoller):
     """ISO/TS 16281 slicing of a profiled, tilted roller as a contact law (steel only).
 
     .. math:: F(d) = \\sum_k \\frac{c}{n}\\,(d + x_k\\tan\\theta - P(x_k))_+^{10/9}
@@ -1615,12 +1600,3 @@ class ISOSlicingModel(ContactModel):
         """:class:`RollerSolution` at force F [N]."""
         return self._solve(force=force)
 
-    def force(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).force)
-
-    def depth(self, force):
-        F = check_positive("force", force, "N")
-        return _each(F, "force", "N", lambda f: self.at_force(f).depth)
-
-    def stiffness(self, depth):
-        return _each(depth, "depth", "m", lambda d: self.at_depth(d).stiffness)

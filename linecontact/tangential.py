@@ -59,12 +59,11 @@ References
 from __future__ import annotations
 
 import functools
-import math
 import re
 
 import numpy as np
 
-from .classical import effective_modulus
+from .classical import MODULUS_OR_RIGID, effective_modulus, _two_bodies
 from .tables import TableError, read_table
 from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval,
                        check_positive, document, out)
@@ -94,8 +93,6 @@ TANGENTIAL_TABLE = "tangential_cylinder"
 STRAIGHT_CYLINDER_MODELS = frozenset({"universal", "li-popov", "puttock-thwaite",
                                       "johnson", "kunz", "palmgren", "iso16281"})
 
-MODULUS_OR_RIGID = Interval("modulus", 0.0, np.inf, low_open=True, high_open=False,
-                            unit="Pa")
 #: G*/E* for Poisson ratios in [0, 0.5]: 2(1-nu)/(2-nu) lies in [2/3, 1].
 SHEAR_RATIO = Interval("gstar/estar", 2.0 / 3.0, 1.0, unit="", rtol=1e-12)
 FRICTION = Interval("friction", 0.0, np.inf, low_open=True, high_open=True)
@@ -142,7 +139,7 @@ def shear_modulus(modulus, poisson):
 
 
 @document(E=MODULUS_OR_RIGID, NU=POISSON_RATIO)
-def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
+def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     r"""Effective tangential modulus G* of two bodies (Popov & Hess 2015, chapter 4).
 
     .. math::
@@ -158,12 +155,19 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     modulus2 : float or array_like, optional
         Young's modulus E2 of the second body, ``inf`` (default) for a rigid body [Pa].
     poisson2 : float or array_like, optional
-        Poisson ratio nu2 of the second body (irrelevant when E2 = inf) [-].
+        Poisson ratio nu2 of the second body; required with a finite `modulus2` (as in
+        :func:`linecontact.classical.effective_modulus`), ignored for a rigid one [-].
 
     Returns
     -------
     float or ndarray
         G* [Pa]. For a rigid second body G* = 4 G1/(2 - nu1).
+
+    Raises
+    ------
+    OutOfRangeError
+        A modulus or Poisson ratio outside its range, a finite `modulus2` without
+        `poisson2`, or both bodies rigid.
 
     Notes
     -----
@@ -185,18 +189,12 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
     V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
     Friction, Springer (2015); R. D. Mindlin, J. Appl. Mech. 16 (1949) 259-268.
     """
-    E1 = MODULUS_OR_RIGID.check(modulus1, name="modulus1")
-    E2 = MODULUS_OR_RIGID.check(modulus2, name="modulus2")
-    nu1 = POISSON_RATIO.check(poisson1, name="poisson1")
-    nu2 = POISSON_RATIO.check(poisson2, name="poisson2")
-    if np.any(np.isinf(E1) & np.isinf(E2)):
-        raise OutOfRangeError("modulus1", math.inf, "(0, inf) Pa", unit="Pa",
-                              hint="both bodies are rigid; at least one must be elastic")
+    E1, nu1, E2, nu2 = _two_bodies(modulus1, poisson1, modulus2, poisson2)
     compliance = (2 - nu1) * (1 + nu1) / (2 * E1) + (2 - nu2) * (1 + nu2) / (2 * E2)
     return out(1.0 / compliance)
 
 
-def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=0.0):
+def shear_ratio(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     r"""The MDR's shear ratio G*/E* of two bodies, :math:`2(1-\nu)/(2-\nu)` if one is rigid.
 
     .. math::

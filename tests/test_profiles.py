@@ -191,3 +191,15 @@ def test_parse_angle():
         with pytest.raises(OutOfRangeError) as err:
             parse_angle(bad, parameter="--tilt")
         assert err.value.parameter == "--tilt"
+
+
+def test_iso16281_default_diameter_is_the_rollers_not_twice_an_effective_radius():
+    """ISO/TS 16281's reference profile scales with the roller diameter D. Against a
+    raceway the contact's radius is the effective one (R 5 mm on an inner ring of
+    20 mm: R_eff = 4 mm), so `diameter` gives D; without it D = 2 radius (a flat)."""
+    L = 10e-3
+    on_flat = parse_profile("iso16281", length=L, radius=5e-3)
+    on_race = parse_profile("iso16281", length=L, radius=4e-3, diameter=10e-3)
+    assert on_flat.diameter == on_race.diameter == 10e-3
+    assert on_race.drop(4e-3) == ISO16281Profile(L, 10e-3).drop(4e-3)
+    assert parse_profile("iso16281:D=8mm", length=L, diameter=10e-3).diameter == 8e-3

@@ -47,6 +47,19 @@ def test_effective_shear_modulus_rigid_and_identical_bodies():
     assert shear_ratio(E, 0.0) == pytest.approx(1.0, rel=1e-15, abs=0)
 
 
+def test_second_body_needs_its_poisson_ratio():
+    """An elastic second body without its Poisson ratio is refused by G* and G*/E* as by
+    E* (the rule of linecontact.classical.effective_modulus): no silent nu2 = 0, which
+    would make G* of steel on aluminium (nu2 = 0.33) 8.1 % too high; a rigid one needs
+    none."""
+    for f in (effective_shear_modulus, shear_ratio):
+        with pytest.raises(OutOfRangeError, match="poisson2"):
+            f(E, NU, 70e9)
+        assert f(E, NU, np.inf) == f(E, NU)
+    with pytest.raises(OutOfRangeError, match="rigid"):
+        effective_shear_modulus(np.inf, NU, np.inf, NU)
+
+
 def test_equivalent_poisson_is_the_one_body_problem():
     """Two bodies act as one with 1/G = sum 1/G_i, 1-nu = sum((1-nu_i)/G_i)/sum(1/G_i)
     (the Boussinesq-Cerruti kernels add): its G*/E* equals the pair's, rtol 1e-13."""

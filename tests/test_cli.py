@@ -565,10 +565,15 @@ STEEL_CASE = ("calc", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0
     (("--radius", "5mm", "--load", "1kN", "--model", "li-popov:extrapolate=maybe"),
      "extrapolate"),
     (("--radius", "5mm", "--load", "1kN", "--model", "johnson:nosuch=1"), "--model"),
+    # finite inputs whose model scales are not: L^3 = 1e900 overflows, L^3 = 1e-330
+    # underflows (was "universal: unexpected OverflowError")
+    (("--radius", "5mm", "--length", "1e300", "--load", "1kN"), "--length"),
+    (("--radius", "5mm", "--length", "1e-110", "--load", "1kN"), "--length"),
 ])
 def test_bad_values_exit_2_with_one_line(capsys, argv, parameter):
     """Every refused input (decimal comma, expression, overflow, subnormal, NaN,
-    conflicting or missing geometry, a yes/no option that is neither) is one line on
+    conflicting or missing geometry, a yes/no option that is neither, a length whose
+    scales overflow) is one line on
     stderr naming the parameter and the valid range, status 2, nothing on stdout."""
     status, out, err = _main(capsys, *STEEL_CASE, *argv)
     assert status == 2 and out == ""

@@ -387,6 +387,37 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     return values, errors
 
 
+
+def range_error_parts(exc):
+    """(valid, reason) of an OutOfRangeError raised on the contents of an input (a row
+    of a file, an option of a spec), for the one-line :class:`InputError` of the option
+    that named that input: what is wrong and where (``E_inf = '1,5GPa' ('# E_inf'
+    line): a decimal comma ...``) and what would have been valid there, not a second
+    "is outside the valid range ... valid:" inside the first (and not "outside the
+    valid range" for a format problem such as a missing value or a bad row).
+
+    Examples
+    --------
+    >>> from linecontact.validity import OutOfRangeError
+    >>> range_error_parts(OutOfRangeError("design_force", "missing", "(0, inf) N",
+    ...                                   hint="the lundberg profile needs it"))
+    ('(0, inf) N', "design_force = 'missing': the lundberg profile needs it")
+    >>> range_error_parts(OutOfRangeError("x", -0.005, "(> 0) m", unit="m",
+    ...                                   where="row 3 of p.csv"))
+    ('(> 0) m', 'x = -0.005 m (row 3 of p.csv) is out of range')
+    """
+    text = isinstance(exc.value, str)
+    value = exc.value if text else f"{float(exc.value):.6g}"
+    unit = f" {exc.unit}" if exc.unit and not text else ""
+    reason = f"{exc.parameter} = {value!r}" if text else f"{exc.parameter} = {value}{unit}"
+    if exc.where:
+        reason += f" ({exc.where})"
+    if exc.hint:
+        reason += f": {exc.hint}"
+    elif not text:
+        reason += " is out of range"
+    return exc.valid, reason
+
 def parse_bool(parameter, text):
     """A yes/no option: exactly true/false, yes/no, 1/0 (any case), nothing else.
 

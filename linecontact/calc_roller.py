@@ -124,6 +124,8 @@ def _solve(cases, errors):
     rows = cases.get("_roller_rows")
     if rows is None or not np.any(rows):
         return []          # no profile flags: linecontact.roller is not imported
+    from ._units import InputError, range_error_parts
+    from .cases import option_name as label
     from .roller import ProfiledRoller, iso_slicing
     from .validity import OutOfRangeError
 
@@ -139,10 +141,16 @@ def _solve(cases, errors):
         value = float(cases["value"][i])
         force = value if given == "load" else math.nan
         tilt = float(cases["_roller_tilt"][i])
+        spec = cases["_roller_spec"][i]
         try:
-            prof = _profile(cases["_roller_spec"][i], R, L, E, force)
-        except OutOfRangeError as exc:
-            errors[i] = str(exc)
+            prof = _profile(spec, R, L, E, force)
+        except OutOfRangeError as exc:  # the spec or its file: one line naming the option
+            option, typed = ((label("crown_radius"), f"{spec[1]:.6g} m")
+                             if isinstance(spec, tuple) else (label("profile"), spec))
+            valid, reason = range_error_parts(exc)
+            if exc.parameter == "profile":  # the spec itself: no 'profile = X' twice
+                reason = exc.hint or "not a profile"
+            errors[i] = str(InputError(option, typed, valid, reason))
             continue
         key = (prof.label, R, L, E)
         if key not in rollers:

@@ -87,6 +87,7 @@ def resolve(v, P, raw, fail, label, n):
     instantaneous Young's modulus [Pa] (NaN elsewhere) and the body per row (a
     :class:`~linecontact.viscoelastic.PronySeries`, or None).
     """
+    from ._units import range_error_parts
     from .validity import OutOfRangeError
     from .viscoelastic import StandardLinearSolid, read_prony_series
 
@@ -155,7 +156,7 @@ def resolve(v, P, raw, fail, label, n):
             try:
                 files[path] = read_prony_series(path)
             except OutOfRangeError as exc:
-                files[path] = _file_problem(exc)
+                files[path] = range_error_parts(exc)
             except OSError as exc:
                 files[path] = ("a readable CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
                                exc.strerror or type(exc).__name__)
@@ -167,23 +168,6 @@ def resolve(v, P, raw, fail, label, n):
                                f"not a usable path ({exc})")
         _store(files[path], i, E0, materials, fail, "prony", raw)
     return visco, E0, materials
-
-
-def _file_problem(exc):
-    """(valid, reason) of a refused Prony file for the one-line message: what in the
-    file is wrong and where (``E_inf = '1,5GPa' ('# E_inf' line): a decimal comma ...``)
-    and what would have been valid there (not a second "valid range" inside the first)."""
-    value = exc.value if isinstance(exc.value, str) else f"{float(exc.value):.6g}"
-    unit = f" {exc.unit}" if exc.unit and not isinstance(exc.value, str) else ""
-    reason = f"{exc.parameter} = {value!r}{unit}" if isinstance(exc.value, str) else \
-        f"{exc.parameter} = {value}{unit}"
-    if exc.where:
-        reason += f" ({exc.where})"
-    if exc.hint:
-        reason += f": {exc.hint}"
-    elif not isinstance(exc.value, str):
-        reason += " is out of range"
-    return exc.valid, reason
 
 
 def _store(material, i, E0, materials, fail, name, raw):

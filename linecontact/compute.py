@@ -491,7 +491,6 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         first = standard_models(1.0, 1.0, 1.0)[0]
         ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
-    done = 0
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):

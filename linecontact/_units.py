@@ -438,6 +438,11 @@ def parse_bool(parameter, text):
     raise InputError(parameter, text, "true/false, yes/no or 1/0", "not a yes/no value")
 
 
+#: A sweep of each kind for the messages of :func:`parse_sweep`.
+_SWEEP_EXAMPLES = {"force": "0.1kN:10kN:20", "length": "0.1um:10um:20",
+                   "time": "1s:1h:20", "pressure": "1GPa:100GPa:20"}
+
+
 def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, positive=True):
     """Parse a value or a range ``START:STOP:N`` into a list of SI floats.
 
@@ -457,7 +462,9 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, posit
     if ":" not in text:
         return [parse_quantity(parameter, text, kind, positive=positive)]
     parts = text.split(":")
-    fmt = f"START:STOP:N with START, STOP > 0 and 2 <= N <= {max_points}, e.g. 0.1kN:10kN:20"
+    example = _SWEEP_EXAMPLES.get(kind, "1:100:20")
+    ends = "START, STOP > 0" if positive else "START, STOP >= 0 (> 0 unless --linear)"
+    fmt = f"START:STOP:N with {ends} and 2 <= N <= {max_points}, e.g. {example}"
     if len(parts) != 3:
         raise InputError(parameter, text, fmt, "a range needs exactly three fields")
     start = parse_quantity(f"{parameter} (START)", parts[0], kind, positive=positive)
@@ -472,7 +479,8 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, posit
         raise InputError(parameter, text, fmt, f"N = {n} is out of range")
     if linear:
         return [start + (stop - start) * i / (n - 1) for i in range(n)]
-    ratio = stop / start
-    values = [start * ratio ** (i / (n - 1)) for i in range(n)]
-    values[-1] = stop  # exact end point
-    return values
+    import numpy as np
+
+    # equal ratios, exact ends; in logarithms, so that a ratio stop/start beyond the
+    # double range (1e-300 N:1e300 N) does not turn the middle values into inf
+    return np.geomspace(start, stop, n).tolist()

@@ -211,7 +211,11 @@ def parse_model_option(spec):
 
             import_module(models.DEFINED_IN[key])
         if key not in models.MODELS:
-            raise InputError("--model", text, valid, "unknown model")
+            from ._units import _QUANTITY
+
+            raise InputError("--model", spec if _QUANTITY.match(text) else text, valid,
+                             "a decimal comma in an option? (write c=1.5, not c=1,5)"
+                             if _QUANTITY.match(text) else "unknown model")
         defaults = _option_defaults(models.MODELS[key])
         options = {}
         for opt in opts:

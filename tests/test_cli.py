@@ -565,6 +565,8 @@ STEEL_CASE = ("calc", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0
     (("--radius", "5mm", "--load", "1kN", "--model", "li-popov:extrapolate=maybe"),
      "extrapolate"),
     (("--radius", "5mm", "--load", "1kN", "--model", "johnson:nosuch=1"), "--model"),
+    # a decimal comma splits the model list: named as such, not "unknown model '5'"
+    (("--radius", "5mm", "--load", "1kN", "--model", "johnson:c=1,5"), "decimal comma"),
     # finite inputs whose model scales are not: L^3 = 1e900 overflows, L^3 = 1e-330
     # underflows (was "universal: unexpected OverflowError")
     (("--radius", "5mm", "--length", "1e300", "--load", "1kN"), "--length"),

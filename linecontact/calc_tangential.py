@@ -197,17 +197,18 @@ def columns(cases, present):
 
 def _each(func, idx, notes, width=1):
     """func(sub-index array) -> values (`width` per element, flattened), element by
-    element where a call is refused; returns shape (n,) or (n, width)."""
+    element where a call is refused (its reason in ``notes[k]``); returns shape (n,) or
+    (n, width), NaN where refused."""
     from .validity import OutOfRangeError
 
     shape = (idx.size,) if width == 1 else (idx.size, width)
     try:
-        return np.asarray(func(idx), dtype=float).reshape(shape), None
+        return np.asarray(func(idx), dtype=float).reshape(shape)
     except FileNotFoundError:
         for k in range(idx.size):
             notes[k] = ("the BEM table tangential_cylinder is not installed (python -m "
                         "tools.build_tables tangential)")
-        return np.full(shape, np.nan), notes
+        return np.full(shape, np.nan)
     except OutOfRangeError:
         pass
     res = np.full(shape, np.nan)
@@ -217,7 +218,7 @@ def _each(func, idx, notes, width=1):
             res[k] = v[0] if width == 1 else v[:width]
         except OutOfRangeError as exc:
             notes[k] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-    return res, notes
+    return res
 
 
 def add_fields(fields, flags, g, model, r, cases, present):
@@ -260,7 +261,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
             r = tg.cylinder_stiffness_ratios(model, d[sel][ii], gstar[ii])
             return np.stack([np.atleast_1d(r["across"]), np.atleast_1d(r["along"])], axis=1)
 
-        both, _ = _each(ratios, np.arange(sel.size), sub_notes, width=2)
+        both = _each(ratios, np.arange(sel.size), sub_notes, width=2)
         bem["across"], bem["along"] = both[:, 0], both[:, 1]
         for j, t in zip(sel, sub_notes):
             note(j, "kt across/along: " + _short(t) if t else "")
@@ -314,7 +315,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
             rows = g[js]
             mat = _Material(materials[rows[0]], nu1, e2, n2)
             sub = [""] * js.size
-            val, _ = _each(lambda ii: model.depth(
+            val = _each(lambda ii: model.depth(
                 F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
             fields["depth_long_term"][rows] = val
             for j, t in zip(js, sub):
@@ -324,7 +325,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
                 jt, rt = js[timed], rows[timed]
                 fields["time"][rt] = cases["time"][rt]
                 sub = [""] * jt.size
-                val, _ = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
+                val = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
                                                            cases["time"][rt][ii]),
                                np.arange(jt.size), sub)
                 fields["creep_depth"][rt] = val

@@ -387,7 +387,6 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     return values, errors
 
 
-
 def range_error_parts(exc):
     """(valid, reason) of an OutOfRangeError raised on the contents of an input (a row
     of a file, an option of a spec), for the one-line :class:`InputError` of the option

@@ -153,6 +153,8 @@ def _solve(cases, errors):
             valid, reason = range_error_parts(exc)
             if exc.parameter == "profile":  # the spec itself: no 'profile = X' twice
                 reason = exc.hint or "not a profile"
+            elif exc.parameter == "design_force":  # lundberg/johns-gohar under --depth
+                reason += f" (give F0=.. in the spec, or {label('load')})"
             errors[i] = str(InputError(option, typed, valid, reason))
             continue
         key = (prof.label, R, L, E)

@@ -111,12 +111,13 @@ def test_bad_profile_input_is_one_line_exit_2(capsys, argv, name):
 def test_profile_format_problems_name_the_option_not_a_range(capsys, tmp_path):
     """A problem in what --profile names (a NaN row of its file, lundberg without its
     design force under --depth, an unknown name) is one line naming --profile and the
-    spec as typed, then what is wrong and one 'valid:'; it is not worded "is outside the
-    valid range" (a missing value or a bad row is not a value out of a range)."""
+    spec as typed, then what is wrong (for lundberg: where F0 comes from) and one
+    'valid:'; it is not worded "is outside the valid range" (a missing value or a bad
+    row is not a value out of a range)."""
     nan = tmp_path / "nan.csv"
     nan.write_text("x,drop\n-0.005,0\n0,nan\n0.005,0\n")
     for load, spec, what in ((["--load", "1kN"], f"file:{nan}", "'nan'"),
-                             (["--depth", "1um"], "lundberg", "design_force = 'missing'"),
+                             (["--depth", "1um"], "lundberg", "F0=.. in the spec, or --load"),
                              (["--load", "1kN"], "cone", "not a profile")):
         status, out, err = _main(capsys, *ROLLER, *load, "--profile", spec)
         assert status == 2 and out == "" and err.count("\n") == 1, err

@@ -387,6 +387,36 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     return values, errors
 
 
+def range_error_parts(exc):
+    """(valid, reason) of an OutOfRangeError raised on the contents of an input (a row
+    of a file, an option of a spec), for the one-line :class:`InputError` of the option
+    that named that input: what is wrong and where (``E_inf = '1,5GPa' ('# E_inf'
+    line): a decimal comma ...``) and what would have been valid there, not a second
+    "is outside the valid range ... valid:" inside the first (and not "outside the
+    valid range" for a format problem such as a missing value or a bad row).
+
+    Examples
+    --------
+    >>> from linecontact.validity import OutOfRangeError
+    >>> range_error_parts(OutOfRangeError("design_force", "missing", "(0, inf) N",
+    ...                                   hint="the lundberg profile needs it"))
+    ('(0, inf) N', "design_force = 'missing': the lundberg profile needs it")
+    >>> range_error_parts(OutOfRangeError("x", -0.005, "(> 0) m", unit="m",
+    ...                                   where="row 3 of p.csv"))
+    ('(> 0) m', 'x = -0.005 m (row 3 of p.csv) is out of range')
+    """
+    text = isinstance(exc.value, str)
+    value = exc.value if text else f"{float(exc.value):.6g}"
+    unit = f" {exc.unit}" if exc.unit and not text else ""
+    reason = f"{exc.parameter} = {value!r}" if text else f"{exc.parameter} = {value}{unit}"
+    if exc.where:
+        reason += f" ({exc.where})"
+    if exc.hint:
+        reason += f": {exc.hint}"
+    elif not text:
+        reason += " is out of range"
+    return exc.valid, reason
+
 def parse_bool(parameter, text):
     """A yes/no option: exactly true/false, yes/no, 1/0 (any case), nothing else.
 
@@ -405,6 +435,11 @@ def parse_bool(parameter, text):
     if s in ("false", "no", "0"):
         return False
     raise InputError(parameter, text, "true/false, yes/no or 1/0", "not a yes/no value")
+
+
+#: A sweep of each kind for the messages of :func:`parse_sweep`.
+_SWEEP_EXAMPLES = {"force": "0.1kN:10kN:20", "length": "0.1um:10um:20",
+                   "time": "1s:1h:20", "pressure": "1GPa:100GPa:20"}
 
 
 def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, positive=True):
@@ -426,7 +461,9 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, posit
     if ":" not in text:
         return [parse_quantity(parameter, text, kind, positive=positive)]
     parts = text.split(":")
-    fmt = f"START:STOP:N with START, STOP > 0 and 2 <= N <= {max_points}, e.g. 0.1kN:10kN:20"
+    example = _SWEEP_EXAMPLES.get(kind, "1:100:20")
+    ends = "START, STOP > 0" if positive else "START, STOP >= 0 (> 0 unless --linear)"
+    fmt = f"START:STOP:N with {ends} and 2 <= N <= {max_points}, e.g. {example}"
     if len(parts) != 3:
         raise InputError(parameter, text, fmt, "a range needs exactly three fields")
     start = parse_quantity(f"{parameter} (START)", parts[0], kind, positive=positive)
@@ -441,7 +478,8 @@ def parse_sweep(parameter, text, kind, *, linear=False, max_points=100000, posit
         raise InputError(parameter, text, fmt, f"N = {n} is out of range")
     if linear:
         return [start + (stop - start) * i / (n - 1) for i in range(n)]
-    ratio = stop / start
-    values = [start * ratio ** (i / (n - 1)) for i in range(n)]
-    values[-1] = stop  # exact end point
-    return values
+    import numpy as np
+
+    # equal ratios, exact ends; in logarithms, so that a ratio stop/start beyond the
+    # double range (1e-300 N:1e300 N) does not turn the middle values into inf
+    return np.geomspace(start, stop, n).tolist()

@@ -39,7 +39,6 @@ from __future__ import annotations
 
 import csv
 import io
-import math
 import sys
 
 import numpy as np
@@ -400,11 +399,7 @@ def _json(argv, results, header, body, out_names, getters, width):
         for h, c in zip(header, cells):
             row[h] = c
         for name, (kind, data) in zip(out_names, getters):
-            if kind == "num":
-                v = float(data[i])
-                row[name] = v if math.isfinite(v) else None
-            else:
-                row[name] = data[i]
+            row[name] = render._num(data[i]) if kind == "num" else data[i]
         rows.append(row)
     doc["rows"] = rows
     return json.dumps(doc, indent=2) + "\n"

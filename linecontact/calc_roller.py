@@ -33,6 +33,10 @@ import math
 
 import numpy as np
 
+from .compute import FIELDS as _FIELDS
+from .compute import Field
+from .render import _num, aligned
+
 __all__: list = []
 
 NAMES = ("crown_radius", "profile", "tilt")
@@ -43,16 +47,15 @@ NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space 
         "roller end: singular there on a half-space, 'edge'); ISO/TS 16281 slicing: "
         "uncoupled slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
 
-#: Row quantities: name -> (heading, SI unit, engineering unit, factor SI -> eng).
+#: Row quantities: name -> :class:`linecontact.compute.Field` (heading, SI unit,
+#: engineering unit, factor SI -> eng); F, d and k as in the straight rows.
 FIELDS = {
-    "force": ("F", "N", "kN", 1e-3),
-    "depth": ("d", "m", "um", 1e6),
-    "stiffness": ("k", "N/m", "N/um", 1e-6),
-    "moment": ("M", "N m", "N m", 1.0),
-    "tilt_stiffness": ("k tilt", "N m/rad", "N m/mrad", 1e-3),
-    "p_max": ("p max", "Pa", "MPa", 1e-6),
-    "x_at_p_max": ("x(p max)", "m", "mm", 1e3),
-    "contact_length": ("contact", "m", "mm", 1e3),
+    **{k: _FIELDS[k] for k in ("force", "depth", "stiffness")},
+    "moment": Field("M", "N m", "N m", 1.0),
+    "tilt_stiffness": Field("k tilt", "N m/rad", "N m/mrad", 1e-3),
+    "p_max": Field("p max", "Pa", "MPa", 1e-6),
+    "x_at_p_max": Field("x(p max)", "m", "mm", 1e3),
+    "contact_length": Field("contact", "m", "mm", 1e3),
 }
 
 
@@ -124,6 +127,8 @@ def _solve(cases, errors):
     rows = cases.get("_roller_rows")
     if rows is None or not np.any(rows):
         return []          # no profile flags: linecontact.roller is not imported
+    from ._units import InputError, range_error_parts
+    from .cases import option_name as label
     from .roller import ProfiledRoller, iso_slicing
     from .validity import OutOfRangeError
 
@@ -139,10 +144,18 @@ def _solve(cases, errors):
         value = float(cases["value"][i])
         force = value if given == "load" else math.nan
         tilt = float(cases["_roller_tilt"][i])
+        spec = cases["_roller_spec"][i]
         try:
-            prof = _profile(cases["_roller_spec"][i], R, L, E, force)
-        except OutOfRangeError as exc:
-            errors[i] = str(exc)
+            prof = _profile(spec, R, L, E, force)
+        except OutOfRangeError as exc:  # the spec or its file: one line naming the option
+            option, typed = ((label("crown_radius"), f"{spec[1]:.6g} m")
+                             if isinstance(spec, tuple) else (label("profile"), spec))
+            valid, reason = range_error_parts(exc)
+            if exc.parameter == "profile":  # the spec itself: no 'profile = X' twice
+                reason = exc.hint or "not a profile"
+            elif exc.parameter == "design_force":  # lundberg/johns-gohar under --depth
+                reason += f" (give F0=.. in the spec, or {label('load')})"
+            errors[i] = str(InputError(option, typed, valid, reason))
             continue
         key = (prof.label, R, L, E)
         if key not in rollers:
@@ -197,7 +210,7 @@ def table_text(blocks, given, si):
     first = "force" if given == "load" else "depth"
     cols = [first] + [c for c in FIELDS if c != first]
     header = ["profiled roller"] + [
-        f"{FIELDS[c][0]} [{FIELDS[c][1] if si else FIELDS[c][2]}]" for c in cols
+        f"{FIELDS[c].heading} [{FIELDS[c].si if si else FIELDS[c].eng}]" for c in cols
     ] + ["edge", "note"]
     table = []
     for b in blocks:
@@ -213,7 +226,7 @@ def table_text(blocks, given, si):
                 if val is None:
                     cells.append("-")
                 else:
-                    cells.append(f"{val if si else val * FIELDS[c][3]:.4g}")
+                    cells.append(f"{val if si else val * FIELDS[c].factor:.4g}")
             text = note
             if sol is not None and sol.edge_loaded and b["label"].startswith("Profiled"):
                 text = "; ".join(t for t in ("p max: singular at the loaded end", note) if t)
@@ -223,20 +236,9 @@ def table_text(blocks, given, si):
             if sol is not None and sol.notes:
                 text = "; ".join([text] + list(sol.notes)) if text else "; ".join(sol.notes)
             table.append(cells + [_edge_text(sol), text])
-    widths = [max(len(r[k]) for r in [header] + table) for k in range(len(header) - 1)]
-    lines = [""]
-    for r in [header] + table:
-        cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
-        lines.append("  ".join(cells + [r[-1]]).rstrip())
+    lines = [""] + aligned([header] + table)
     lines += ["", "Note: " + NOTE]
     return "\n".join(lines) + "\n"
-
-
-def _num(v):
-    if v is None:
-        return None
-    v = float(v)
-    return v if math.isfinite(v) else None
 
 
 def json_blocks(blocks):
@@ -259,6 +261,6 @@ def json_blocks(blocks):
                        notes=list(sol.notes), note=note)
             rows.append(row)
         out.append({"label": b["label"], "rows": rows,
-                    "units": {c: FIELDS[c][1] for c in FIELDS} | {"x": "m", "q": "N/m",
+                    "units": {c: FIELDS[c].si for c in FIELDS} | {"x": "m", "q": "N/m",
                                                                   "tilt": "rad"}})
     return out

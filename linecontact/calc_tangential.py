@@ -87,6 +87,7 @@ def resolve(v, P, raw, fail, label, n):
     instantaneous Young's modulus [Pa] (NaN elsewhere) and the body per row (a
     :class:`~linecontact.viscoelastic.PronySeries`, or None).
     """
+    from ._units import range_error_parts
     from .validity import OutOfRangeError
     from .viscoelastic import StandardLinearSolid, read_prony_series
 
@@ -155,7 +156,7 @@ def resolve(v, P, raw, fail, label, n):
             try:
                 files[path] = read_prony_series(path)
             except OutOfRangeError as exc:
-                files[path] = _file_problem(exc)
+                files[path] = range_error_parts(exc)
             except OSError as exc:
                 files[path] = ("a readable CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
                                exc.strerror or type(exc).__name__)
@@ -167,23 +168,6 @@ def resolve(v, P, raw, fail, label, n):
                                f"not a usable path ({exc})")
         _store(files[path], i, E0, materials, fail, "prony", raw)
     return visco, E0, materials
-
-
-def _file_problem(exc):
-    """(valid, reason) of a refused Prony file for the one-line message: what in the
-    file is wrong and where (``E_inf = '1,5GPa' ('# E_inf' line): a decimal comma ...``)
-    and what would have been valid there (not a second "valid range" inside the first)."""
-    value = exc.value if isinstance(exc.value, str) else f"{float(exc.value):.6g}"
-    unit = f" {exc.unit}" if exc.unit and not isinstance(exc.value, str) else ""
-    reason = f"{exc.parameter} = {value!r}{unit}" if isinstance(exc.value, str) else \
-        f"{exc.parameter} = {value}{unit}"
-    if exc.where:
-        reason += f" ({exc.where})"
-    if exc.hint:
-        reason += f": {exc.hint}"
-    elif not isinstance(exc.value, str):
-        reason += " is out of range"
-    return exc.valid, reason
 
 
 def _store(material, i, E0, materials, fail, name, raw):
@@ -213,17 +197,18 @@ def columns(cases, present):
 
 def _each(func, idx, notes, width=1):
     """func(sub-index array) -> values (`width` per element, flattened), element by
-    element where a call is refused; returns shape (n,) or (n, width)."""
+    element where a call is refused (its reason in ``notes[k]``); returns shape (n,) or
+    (n, width), NaN where refused."""
     from .validity import OutOfRangeError
 
     shape = (idx.size,) if width == 1 else (idx.size, width)
     try:
-        return np.asarray(func(idx), dtype=float).reshape(shape), None
+        return np.asarray(func(idx), dtype=float).reshape(shape)
     except FileNotFoundError:
         for k in range(idx.size):
             notes[k] = ("the BEM table tangential_cylinder is not installed (python -m "
                         "tools.build_tables tangential)")
-        return np.full(shape, np.nan), notes
+        return np.full(shape, np.nan)
     except OutOfRangeError:
         pass
     res = np.full(shape, np.nan)
@@ -233,7 +218,7 @@ def _each(func, idx, notes, width=1):
             res[k] = v[0] if width == 1 else v[:width]
         except OutOfRangeError as exc:
             notes[k] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-    return res, notes
+    return res
 
 
 def add_fields(fields, flags, g, model, r, cases, present):
@@ -276,7 +261,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
             r = tg.cylinder_stiffness_ratios(model, d[sel][ii], gstar[ii])
             return np.stack([np.atleast_1d(r["across"]), np.atleast_1d(r["along"])], axis=1)
 
-        both, _ = _each(ratios, np.arange(sel.size), sub_notes, width=2)
+        both = _each(ratios, np.arange(sel.size), sub_notes, width=2)
         bem["across"], bem["along"] = both[:, 0], both[:, 1]
         for j, t in zip(sel, sub_notes):
             note(j, "kt across/along: " + _short(t) if t else "")
@@ -330,7 +315,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
             rows = g[js]
             mat = _Material(materials[rows[0]], nu1, e2, n2)
             sub = [""] * js.size
-            val, _ = _each(lambda ii: model.depth(
+            val = _each(lambda ii: model.depth(
                 F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
             fields["depth_long_term"][rows] = val
             for j, t in zip(js, sub):
@@ -340,7 +325,7 @@ def add_fields(fields, flags, g, model, r, cases, present):
                 jt, rt = js[timed], rows[timed]
                 fields["time"][rt] = cases["time"][rt]
                 sub = [""] * jt.size
-                val, _ = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
+                val = _each(lambda ii: step_creep_depth(model, mat, F[jt][ii],
                                                            cases["time"][rt][ii]),
                                np.arange(jt.size), sub)
                 fields["creep_depth"][rt] = val

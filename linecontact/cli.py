@@ -127,7 +127,8 @@ def _build_parser():
         "--model",
         metavar="KEY[:OPT=VAL][,...]",
         help="only these models, e.g. 'li-popov:coefficients=eq11,johnson:c=0.72'; 'all' "
-        "for the standard set. Yes/no options take true/false, yes/no or 1/0. Default: "
+        "for the standard set. Yes/no options take true/false, yes/no or 1/0; a number "
+        "takes the unit its model documents (profiled-roller:tilt=1mrad). Default: "
         "the standard set for one case, its first model (the best estimate) in a batch",
     )
     out.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")

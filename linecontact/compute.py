@@ -211,7 +211,11 @@ def parse_model_option(spec):
 
             import_module(models.DEFINED_IN[key])
         if key not in models.MODELS:
-            raise InputError("--model", text, valid, "unknown model")
+            from ._units import _QUANTITY
+
+            raise InputError("--model", spec if _QUANTITY.match(text) else text, valid,
+                             "a decimal comma in an option? (write c=1.5, not c=1,5)"
+                             if _QUANTITY.match(text) else "unknown model")
         defaults = _option_defaults(models.MODELS[key])
         options = {}
         for opt in opts:
@@ -225,7 +229,8 @@ def parse_model_option(spec):
                     f"options of {key}: {', '.join(defaults) or 'none'}",
                     f"unknown option {name!r}")
             options[name] = _option_value(f"--model {key}:{name}", value.strip(),
-                                          defaults[name])
+                                          defaults[name],
+                                          _option_kind(models.MODELS[key], name))
         parsed.append((text, key, options))
     return parsed
 
@@ -241,17 +246,44 @@ def _option_defaults(cls):
     }
 
 
-def _option_value(name, text, default):
-    """A model option's value, by the type of its default (bool, number, text)."""
-    from ._units import InputError, parse_bool, parse_quantity
+def _option_kind(cls, option):
+    """The quantity kind of a model option, from the unit its docstring gives it.
+
+    The docstring contract (Parameters with the unit in brackets, e.g. ``tilt : float``
+    ... ``[rad]``) is the one declaration of an option's unit: its SI unit selects the
+    kind of :data:`linecontact._units.DIMENSIONS` (``[rad]`` -> angle, ``[m]`` ->
+    length, ...), so that ``tilt=1mrad`` is read as 1e-3 rad. An option without a
+    bracketed SI unit is a pure number.
+    """
+    import re
+
+    from ._units import DIMENSIONS
+
+    m = re.search(rf"^\s*{re.escape(option)} : [^\n]*\n((?:[ \t]+[^\n]*\n?)*?)"
+                  r"(?=^\s*\w+ : |^\s*$|\Z)", cls.__doc__ or "", re.MULTILINE)
+    units = re.findall(r"\[([^\]]+)\]", m.group(1)) if m else []
+    for kind, (_, si, _) in DIMENSIONS.items():
+        if si and si in units:
+            return kind
+    return "dimensionless"
+
+
+def _option_value(name, text, default, kind="dimensionless"):
+    """A model option's value, by the type of its default (bool, number, text); a
+    number may carry a unit of its `kind` (see :func:`_option_kind`)."""
+    from ._units import _QUANTITY, InputError, parse_bool, parse_quantity
 
     if isinstance(default, bool):
         return parse_bool(name, text)
     if isinstance(default, (int, float)):
         try:
-            return parse_quantity(name, text, "dimensionless", positive=False)
+            value = parse_quantity(name, text, kind, positive=False)
         except InputError:
+            if _QUANTITY.match(text) or text[:1] in "+-.0123456789":
+                raise  # a number with a wrong unit (tilt=1mm), not a name
             return text  # a named constant (e.g. johnson c=johnson1985); the model checks
+        # an integer option (n_slices=40) stays an int; 40.5 goes to the model to refuse
+        return int(value) if isinstance(default, int) and value.is_integer() else value
     return text
 
 
@@ -463,7 +495,6 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         first = standard_models(1.0, 1.0, 1.0)[0]
         ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
-    done = 0
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):

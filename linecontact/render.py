@@ -188,13 +188,8 @@ def table_text(cases, present, results, si):
         for k, c in enumerate(cols, start=1):
             columns[k] += _fmt_column(scale(c, f[c], si))
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
-    widths = [max(len(h), max(map(len, col), default=0))
-              for h, col in zip(header[:-1], columns[:-1])]
     lines = [_case_line(cases, present, si), ""]
-    rows = [header] + [list(r) for r in zip(*columns)]
-    for r in rows:
-        cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
-        lines.append("  ".join(cells + [r[-1]]).rstrip())
+    lines += aligned([header] + [list(r) for r in zip(*columns)])
     lines += ["", "Note: " + P0_NOTE]
     if results.roller:
         lines.append("Note: " + NOTES["roller"])
@@ -206,7 +201,21 @@ def table_text(cases, present, results, si):
     return "\n".join(lines) + "\n"
 
 
+def aligned(rows):
+    """Lines of a plain-text table: the first column left-aligned, the numeric ones
+    right-aligned to their widest cell, the last (a note) left as it is."""
+    widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]) - 1)]
+    lines = []
+    for r in rows:
+        cells = [r[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(r[1:-1], widths[1:])]
+        lines.append("  ".join(cells + [r[-1]]).rstrip())
+    return lines
+
+
 def _num(v):
+    """A JSON number: the float, or None (null) for none, NaN or inf."""
+    if v is None:
+        return None
     v = float(v)
     return v if math.isfinite(v) else None
 

@@ -108,6 +108,23 @@ def test_bad_profile_input_is_one_line_exit_2(capsys, argv, name):
     assert err.count("\n") == 1 and name in err and "valid" in err
 
 
+def test_profile_format_problems_name_the_option_not_a_range(capsys, tmp_path):
+    """A problem in what --profile names (a NaN row of its file, lundberg without its
+    design force under --depth, an unknown name) is one line naming --profile and the
+    spec as typed, then what is wrong (for lundberg: where F0 comes from) and one
+    'valid:'; it is not worded "is outside the valid range" (a missing value or a bad
+    row is not a value out of a range)."""
+    nan = tmp_path / "nan.csv"
+    nan.write_text("x,drop\n-0.005,0\n0,nan\n0.005,0\n")
+    for load, spec, what in ((["--load", "1kN"], f"file:{nan}", "'nan'"),
+                             (["--depth", "1um"], "lundberg", "F0=.. in the spec, or --load"),
+                             (["--load", "1kN"], "cone", "not a profile")):
+        status, out, err = _main(capsys, *ROLLER, *load, "--profile", spec)
+        assert status == 2 and out == "" and err.count("\n") == 1, err
+        assert f"--profile = {spec!r}" in err and what in err, err
+        assert err.count("valid") == 1 and "outside the valid range" not in err, err
+
+
 def test_no_contact_and_whole_roller_are_refused(capsys, tmp_path):
     """A depth at which the roller does not touch at all (a measured profile whose
     smallest drop, 2 um, exceeds the depth, 1 um), and the profile options with the

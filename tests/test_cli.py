@@ -565,10 +565,17 @@ STEEL_CASE = ("calc", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0
     (("--radius", "5mm", "--load", "1kN", "--model", "li-popov:extrapolate=maybe"),
      "extrapolate"),
     (("--radius", "5mm", "--load", "1kN", "--model", "johnson:nosuch=1"), "--model"),
+    # a decimal comma splits the model list: named as such, not "unknown model '5'"
+    (("--radius", "5mm", "--load", "1kN", "--model", "johnson:c=1,5"), "decimal comma"),
+    # finite inputs whose model scales are not: L^3 = 1e900 overflows, L^3 = 1e-330
+    # underflows (was "universal: unexpected OverflowError")
+    (("--radius", "5mm", "--length", "1e300", "--load", "1kN"), "--length"),
+    (("--radius", "5mm", "--length", "1e-110", "--load", "1kN"), "--length"),
 ])
 def test_bad_values_exit_2_with_one_line(capsys, argv, parameter):
     """Every refused input (decimal comma, expression, overflow, subnormal, NaN,
-    conflicting or missing geometry, a yes/no option that is neither) is one line on
+    conflicting or missing geometry, a yes/no option that is neither, a length whose
+    scales overflow) is one line on
     stderr naming the parameter and the valid range, status 2, nothing on stdout."""
     status, out, err = _main(capsys, *STEEL_CASE, *argv)
     assert status == 2 and out == ""
@@ -1015,3 +1022,22 @@ def test_profiled_roller_model_option_runs(capsys):
                      "profiled-roller")
     d = doc["models"][0]["rows"][0]["depth"]
     assert d is not None and d > 0
+
+
+def test_model_options_take_the_unit_their_docstring_gives():
+    """A model option is read in the unit its docstring states (tilt [rad]): 1mrad is
+    exactly the SI number 0.001 and 0.05deg is 0.05 pi/180 rad (to rounding);
+    a length for an angle is refused naming the option and the valid kind; a number
+    option keeps its integer type (n_slices); a named constant still passes as text."""
+    from linecontact._units import InputError
+    from linecontact.compute import parse_model_option
+
+    tilt = {t: parse_model_option(f"profiled-roller:tilt={t}")[0][2]["tilt"]
+            for t in ("1mrad", "0.001", "0.05deg")}
+    assert tilt["1mrad"] == tilt["0.001"] == 1e-3
+    assert tilt["0.05deg"] == pytest.approx(0.05 * math.pi / 180, rel=1e-15)
+    with pytest.raises(InputError, match="tilt.*expected an angle, got a length"):
+        parse_model_option("profiled-roller:tilt=1mm")
+    n = parse_model_option("iso16281-slicing:n_slices=40")[0][2]["n_slices"]
+    assert n == 40 and type(n) is int
+    assert parse_model_option("johnson:c=johnson1985")[0][2]["c"] == "johnson1985"

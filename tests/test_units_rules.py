@@ -238,3 +238,22 @@ def test_built_in_unit_factors_equal_pints():
         for name, factor in table.items():
             expected = ureg.Quantity(1.0, name).to(si).magnitude
             assert math.isclose(factor, expected, rel_tol=1e-15), (kind, name)
+
+
+@given(st.floats(-300, 300), st.floats(-300, 300), st.integers(2, 50))
+def test_a_geometric_sweep_has_equal_ratios_and_stays_finite(e0, e1, n):
+    """START:STOP:N: N values with exact ends and a constant ratio (STOP/START)^(1/(N-1)),
+    for any ends in the double range; the middle value is the geometric mean, so
+    1e-300 N:1e300 N:3 gives 1 N (it was inf: the ratio 1e600 overflowed). The ratio of
+    neighbours is checked in logarithms to 1e-9 of the whole span (rounding of ~N
+    exp/log evaluations at up to 700 in magnitude, each to ~1e-16 relative)."""
+    from linecontact._units import parse_sweep
+
+    start, stop = 10.0**e0, 10.0**e1
+    v = parse_sweep("--load", f"{start!r}:{stop!r}:{n}", "force")
+    assert len(v) == n and v[0] == start and v[-1] == stop
+    assert all(math.isfinite(x) and x > 0 for x in v)
+    steps = np.diff(np.log(v))
+    span = abs(math.log(stop) - math.log(start))
+    assert np.allclose(steps, (math.log(stop) - math.log(start)) / (n - 1),
+                       rtol=0, atol=1e-9 * max(span, 1.0))

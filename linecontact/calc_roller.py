@@ -99,12 +99,14 @@ def resolve(v, P, raw, fail, label, n):
     return given, specs, tilts
 
 
-def _profile(spec, R, L, E, force):
+def _profile(spec, R, L, E, force, diameter):
     from .profiles import CircularCrownProfile, parse_profile
 
     if isinstance(spec, tuple):
         return CircularCrownProfile(L, spec[1])
-    return parse_profile(spec, length=L, radius=R, estar=E,
+    # R is the effective radius across the axis (against a raceway); the ISO/TS 16281
+    # profile scales with the roller's own diameter D = 2 R1
+    return parse_profile(spec, length=L, radius=R, estar=E, diameter=diameter,
                          design_force=force if np.isfinite(force) else None)
 
 
@@ -146,7 +148,7 @@ def _solve(cases, errors):
         tilt = float(cases["_roller_tilt"][i])
         spec = cases["_roller_spec"][i]
         try:
-            prof = _profile(spec, R, L, E, force)
+            prof = _profile(spec, R, L, E, force, 2 * float(cases["radius"][i]))
         except OutOfRangeError as exc:  # the spec or its file: one line naming the option
             option, typed = ((label("crown_radius"), f"{spec[1]:.6g} m")
                              if isinstance(spec, tuple) else (label("profile"), spec))

@@ -204,3 +204,15 @@ def test_plain_calc_does_not_import_the_roller_model():
     out = subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True,
                          text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
+    """ISO/TS 16281's reference profile is a drop of 0.00035 D ln(...) with D the
+    roller's own diameter. Against a convex raceway (--radius2) the slices see the
+    effective radius 1/R = 1/R1 + 1/R2, but the profile must still use D = 2 R1
+    (10 mm here, not 2 R_eff = 8 mm, which made the drop 20 % too shallow)."""
+    status, out, err = _main(capsys, "--radius", "5mm", "--radius2", "20mm", "--length",
+                             "10mm", "--estar", "115GPa", "--load", "1kN",
+                             "--profile", "iso16281")
+    assert status == 0, err
+    assert "ISO/TS 16281 (D = 10 mm" in out and "D = 8 mm" not in out

@@ -136,23 +136,6 @@ def mdr_ratio(nu):
     return float(out) if out.ndim == 0 else out
 
 
-def _swap_kernel_dcfft(op, k):
-    fft = op._fft
-    kx = np.concatenate([k, k[-2:0:-1]], axis=0)
-    kw = np.concatenate([kx, kx[:, -2:0:-1]], axis=1)
-    op._khat = fft.rfft2(kw, workers=op.workers)
-
-
-def _swap_kernel_symmetric(op, k):
-    import scipy.fft as sfft
-    mx, my = op.shape
-    khat = sfft.dctn(k, type=1, workers=op.workers)[:2 * mx, :2 * my]
-    if op.backend == "pyfftw":
-        op._khat = khat / (4.0 * 2 * mx * 2 * my)
-    else:
-        op._khat = np.ascontiguousarray(khat)
-
-
 def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=True,
                         backend="scipy", workers=None):
     """Free-space tangential operator q -> u along ``direction`` on a grid of cells.
@@ -201,14 +184,9 @@ def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=
     Liu, Wang & Liu (2000), Wear 243:101-111 (DC-FFT); Johnson (1985), section 3.6.
     """
     comp = _component(direction)
-    if symmetric:
-        op = SymmetricOperator(nx, ny, dx, dy, 1.0, backend, workers)
-        _swap_kernel_symmetric(op, cerruti_kernel_offsets(2 * nx, 2 * ny, dx, dy,
-                                                          shear_modulus, nu, comp))
-    else:
-        op = DCFFTOperator(nx, ny, dx, dy, 1.0, backend, workers)
-        _swap_kernel_dcfft(op, cerruti_kernel_offsets(nx, ny, dx, dy, shear_modulus,
-                                                      nu, comp))
+    cls, m = (SymmetricOperator, 2) if symmetric else (DCFFTOperator, 1)
+    kernel = cerruti_kernel_offsets(m * nx, m * ny, dx, dy, shear_modulus, nu, comp)
+    op = cls(nx, ny, dx, dy, backend=backend, workers=workers, kernel=kernel)
     op.shear_modulus, op.nu, op.direction = float(shear_modulus), float(nu), direction
     return op
 

@@ -82,7 +82,7 @@ def add_arguments(parser):
     parser.add_argument("--slip-points", type=int, default=24,
                         help="shift steps of each partial-slip curve (default 24)")
     parser.add_argument("--slip-depths", type=int, default=32,
-                        help="normal solutions d' = d j/J for the laws (default 24)")
+                        help="normal solutions d' = d j/J for the laws (default %(default)s)")
     parser.add_argument("--tol", type=float, default=1e-8,
                         help="solver tolerance (gap / displacement error relative to "
                              "d or the shift; default 1e-8)")

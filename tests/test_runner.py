@@ -98,6 +98,9 @@ def test_failing_task_raises_and_keeps_finished(tmp_path, scheduler_and_worker):
         run_study(square, [dict(key="a", x=1), dict(key="a", x=2)], progress=False)
     with pytest.raises(ValueError, match="key"):
         run_study(square, [dict(x=1)], progress=False)
+    # resuming with no checkpoint folder would silently run everything again
+    with pytest.raises(ValueError, match="resume.*--checkpoint"):
+        run_study(square, tasks, resume=True, progress=False)
 
 
 def test_options_and_table_meta():

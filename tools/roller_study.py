@@ -53,7 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from .roller_bem import grid_convergence, solve_roller_force
-from .runner import add_runner_arguments, run_study_from_args, table_meta
+from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -547,8 +547,8 @@ def run(args):
                   f"{s['iso_kt']:.2%}",
         covered=s["range"],
         **s["covered_fields"],
-        wall_time=f"{wall:.0f} s for {len(tasks)} cases (0 when every case came from the "
-                  f"checkpoints; the per-case times sum to {s['case_seconds']:.0f} s); "
+        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers)
+                  + f"; the per-case times sum to {s['case_seconds']:.0f} s; "
                   f"median per case: BEM "
                   f"{s['bem_seconds']:.2f} s (both grids, wall), runtime solve "
                   f"{s['rt_seconds'] * 1e3:.1f} ms wall, {s['rt_cpu_seconds'] * 1e3:.1f} ms "

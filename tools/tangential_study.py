@@ -347,7 +347,7 @@ def interpolation_error(cols):
 
 def run(args):
     from linecontact.tables import write_table
-    from .runner import run_study_from_args, table_meta
+    from .runner import run_study_from_args, table_meta, wall_time_line
 
     t0 = time.perf_counter()
     tasks = tasks_for(args.d_min, args.d_max, args.per_decade, args.nu, args.n_length,
@@ -432,8 +432,7 @@ def run(args):
                   "slip optimality / largest shift)",
         d_tilde_range=f"[{cols['d_tilde'].min():.6g}, {cols['d_tilde'].max():.6g}]",
         nu_values=" ".join(f"{v:g}" for v in nus),
-        wall_time=f"{wall:.0f} s ({len(tasks)} depths, runner workers "
-                  f"{getattr(args, 'workers', None) or 'default'})",
+        wall_time=wall_time_line(wall, results, "depths", args.scheduler, args.workers),
     )
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "tangential_cylinder.csv"

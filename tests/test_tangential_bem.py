@@ -579,3 +579,23 @@ def test_runtime_partial_slip_law_off_the_nodes_is_within_2_percent_of_the_bem(d
         errs.append(worst)
     assert errs[0] < 0.02, f"corrected law off the BEM by {errs[0]:.2%} of mu F"
     assert errs[1] < 0.02, f"uncorrected law off the BEM by {errs[1]:.2%} of mu F"
+
+
+def test_study_command_on_tiny_grids_keeps_the_exact_nu_zero_rows(tmp_path):
+    """`build_tables tangential` end to end on tiny grids: at nu = 0 Cerruti's kernel is
+    Love's with E* = 2G (Johnson 1985, section 3.6), so k_t/k_n = 1 exactly on any grid,
+    up to the solver tolerance 1e-8 (asserted to 1e-6); the header records the run."""
+    from linecontact.tables import read_table
+    from tools.build_tables import main as build_tables
+    assert build_tables(["tangential", "--d-min", "1e-3", "--d-max", "1e-2",
+                         "--per-decade", "1", "--nu", "0", "0.5", "--n-length", "8",
+                         "--n-width", "4", "--slip-n-length", "8", "--slip-n-width", "4",
+                         "--slip-points", "4", "--slip-depths", "4", "--workers", "1",
+                         "--no-progress", "--out", str(tmp_path)]) == 0
+    t = read_table("tangential_cylinder", directory=tmp_path)
+    c = t.columns
+    zero = c["nu"] == 0
+    assert zero.sum() == 2 and (~zero).sum() == 2
+    np.testing.assert_allclose(c["kt_kn_across"][zero], 1.0, atol=1e-6)
+    np.testing.assert_allclose(c["kt_kn_along"][zero], 1.0, atol=1e-6)
+    assert t.meta["wall_time"].split(" with ")[0].endswith("s for 2 depths")

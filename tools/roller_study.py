@@ -266,8 +266,9 @@ def add_arguments(parser):
                         help="a quarter of the cases (two loads, two tilts): a smoke run")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for roller_accuracy.csv (default tables/)")
-    parser.add_argument("--figure", type=Path,
-                        default=REPO / "docs" / "figures" / "roller_accuracy.png",
+    # a str, not a Path: Path('') is '.', so '' could not mean "no figure"
+    parser.add_argument("--figure",
+                        default=str(REPO / "docs" / "figures" / "roller_accuracy.png"),
                         help="where to write the figure ('' for none)")
     add_runner_arguments(parser)
 
@@ -560,6 +561,6 @@ def run(args):
     print(f"wrote {path}: {len(tasks)} cases in {wall:.0f} s")
     for k in ("accuracy", "runtime_error", "iso_error", "wall_time"):
         print(f"  {k}: {meta[k]}")
-    if str(args.figure):
-        print(f"wrote {figure(col, args.figure)}")
+    if args.figure:
+        print(f"wrote {figure(col, Path(args.figure))}")
     return 0

@@ -599,3 +599,16 @@ def test_study_command_on_tiny_grids_keeps_the_exact_nu_zero_rows(tmp_path):
     np.testing.assert_allclose(c["kt_kn_across"][zero], 1.0, atol=1e-6)
     np.testing.assert_allclose(c["kt_kn_along"][zero], 1.0, atol=1e-6)
     assert t.meta["wall_time"].split(" with ")[0].endswith("s for 2 depths")
+
+
+def test_normal_force_on_grid_refuses_an_unconverged_depth():
+    """F(d') feeds the partial-slip laws of the study: a contact solution that misses
+    its tolerance (here an unreachable 1e-30, below rounding) raises instead of passing
+    its force on; at the default tolerance the same depths give F > 0 growing with d'."""
+    from tools.cylinder import Grid
+    from tools.solver import ConvergenceError
+    g = Grid(8, 8, 0.5 / 8, 0.2 / 8)
+    F = normal_force_on_grid(g, [0.0, 0.01, 0.02])
+    assert F[0] == 0 and 0 < F[1] < F[2]
+    with pytest.raises(ConvergenceError, match=r"d' = 0.01 m.*tol = 1e-30"):
+        normal_force_on_grid(g, [0.01], tol=1e-30)

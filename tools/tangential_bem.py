@@ -727,6 +727,11 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
     ndarray
         F(d') [N] (four quarters).
 
+    Raises
+    ------
+    ConvergenceError
+        A depth whose contact solution misses `tol` (its force would be wrong).
+
     Notes
     -----
     F(d') on the grid of the deepest depth: contacts at d' < d are resolved by fewer
@@ -753,6 +758,11 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
             out.append(0.0)
             continue
         sol = solve_contact(op, h - d, d, tol=tol, p0=p0)
+        if not sol.converged:
+            from .solver import ConvergenceError
+            raise ConvergenceError(f"normal contact at d' = {d:.6g} m: gap error "
+                                   f"{sol.error:.3g} d > tol = {tol:g} d on "
+                                   f"{grid.describe()}")
         p0 = sol.pressure if sol.pressure.any() else None
         out.append(4 * sol.pressure.sum() * grid.cell_area)
     return np.array(out)

@@ -8,6 +8,7 @@ Facts checked:
   under the same key is run again;
 - a task that raises makes the study raise, and the tasks finished before it keep
   their checkpoints;
+- resume without a checkpoint folder is refused (it would run every task again);
 - the same study runs through a `dask scheduler` and a `dask worker` started as separate
   processes on localhost (what `--scheduler ADDRESS` does on a cluster);
 - table_meta gives every table the same generated_by/date/version lines.

@@ -64,6 +64,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from linecontact.tangential import mdr_stiffness_ratio
+
 from .halfspace import DCFFTOperator, SymmetricOperator, unfold
 from .influence import cerruti_kernel_offsets
 from .solver import _dot, solve_contact, solve_punch
@@ -105,35 +107,6 @@ def shear_modulus_for(estar, nu):
     Johnson (1985), Contact Mechanics, section 4.2 (E* of one elastic body).
     """
     return 0.5 * (1.0 - nu) * estar
-
-
-def mdr_ratio(nu):
-    """The MDR's tangential over normal stiffness for a rigid indenter.
-
-    .. math:: \\frac{k_t}{k_n} = \\frac{G^*}{E^*} = \\frac{2(1-\\nu)}{2-\\nu}
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio of the elastic body [-].
-
-    Returns
-    -------
-    float or ndarray
-        G*/E* [-]; exact for axisymmetric contacts.
-
-    Examples
-    --------
-    >>> round(mdr_ratio(0.3), 4)
-    0.8235
-
-    References
-    ----------
-    Popov & Hess (2015), chapter 4; Johnson (1985), Eq. 7.43.
-    """
-    nu = np.asarray(nu, dtype=float)
-    out = 2 * (1 - nu) / (2 - nu)
-    return float(out) if out.ndim == 0 else out
 
 
 def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=True,
@@ -816,7 +789,7 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
     p = normal.pressure
     d = normal.d_tilde
     F = 4 * p.sum() * grid.cell_area
-    gstar = mdr_ratio(nu)           # G*/E*, E* = 1
+    gstar = mdr_stiffness_ratio(nu)     # G*/E*, E* = 1
     u_gs = mu * d / gstar
     op = tangential_operator(grid.mx, grid.my, grid.dx, grid.dy, shear_modulus_for(1.0, nu),
                              nu, direction, True, "scipy", workers)
@@ -840,7 +813,7 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
     return out
 
 
-__all__ = ["DIRECTIONS", "shear_modulus_for", "mdr_ratio", "tangential_operator",
+__all__ = ["DIRECTIONS", "shear_modulus_for", "tangential_operator",
            "SlipSolution", "solve_partial_slip", "load_path", "loop_dissipation",
            "masing_dissipation", "CylinderTangential", "full_stick_stiffness",
            "coupled_full_stick",

@@ -51,7 +51,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .tangential_bem import (cylinder_full_stick, load_path, mdr_ratio,
+from linecontact.tangential import mdr_stiffness_ratio
+
+from .tangential_bem import (cylinder_full_stick, load_path,
                              normal_force_on_grid, shear_modulus_for, tangential_operator)
 
 REPO = Path(__file__).resolve().parent.parent
@@ -120,7 +122,7 @@ def partial_slip_measures(normal, nu, direction, kappa, points=24, depths=24, to
     """
     grid, p, d = normal.grid, normal.pressure, normal.d_tilde
     F = 4 * p.sum() * grid.cell_area
-    gstar = mdr_ratio(nu)
+    gstar = mdr_stiffness_ratio(nu)
     op = tangential_operator(grid.mx, grid.my, grid.dx, grid.dy,
                              shear_modulus_for(1.0, nu), nu, direction, True, "scipy", 1)
     u_gs_bem = float(op(p)[p > 0].max())          # all cells slip: u = K (mu p), mu = 1
@@ -276,7 +278,7 @@ def assemble(results):
             cols[_shift_name(side, q)] = []
     for i, nu in enumerate(nus):
         for r in results:
-            mdr = mdr_ratio(nu)
+            mdr = mdr_stiffness_ratio(nu)
             cols["nu"].append(nu)
             cols["d_tilde"].append(r["d_tilde"])
             cols["kt_kn_across"].append(r["across_2N"][i])

@@ -7,7 +7,7 @@ from scipy.integrate import dblquad
 
 from tools.cylinder import solve_depth, sweep
 from tools.halfspace import DCFFTOperator, SymmetricOperator, unfold
-from tools.influence import rectangle_displacement
+from tools.influence import kernel_offsets, rectangle_displacement
 from tools.solver import ConvergenceError, solve_contact, solve_punch
 
 
@@ -67,6 +67,27 @@ def test_symmetric_operator_equals_dcfft_on_mirror_symmetric_fields(backend):
     us = SymmetricOperator(mx, my, dx, dy, backend=backend, workers=1)(q)
     ud = DCFFTOperator(2 * mx, 2 * my, dx, dy, backend="scipy")(unfold(q))
     np.testing.assert_allclose(us, ud[mx:, my:], rtol=1e-12, atol=1e-15 * np.abs(ud).max())
+
+
+@pytest.mark.parametrize("backend", ["scipy", "pyfftw"])
+def test_operators_take_another_kernel(backend):
+    """kernel= replaces Love's kernel (how tools.tangential_bem builds Cerruti's
+    operators): Love's with E* = 1/2 given explicitly gives twice the default E* = 1
+    field, since Love's coefficients scale as 1/E* (exact, so agreement to rounding);
+    a kernel of the wrong size is refused, naming the size needed."""
+    if backend == "pyfftw":
+        pytest.importorskip("pyfftw")
+    rng = np.random.default_rng(3)
+    mx, my, dx, dy = 5, 4, 0.3, 0.1
+    q = rng.random((mx, my))
+    for cls, m in ((SymmetricOperator, 2), (DCFFTOperator, 1)):
+        k = kernel_offsets(m * mx, m * my, dx, dy, estar=0.5)
+        u = cls(mx, my, dx, dy, backend=backend, workers=1, kernel=k)(q)
+        u1 = cls(mx, my, dx, dy, backend=backend, workers=1)(q)
+        np.testing.assert_allclose(u, 2 * u1, rtol=1e-12)
+        with pytest.raises(ValueError, match=r"kernel shape.*\(%d, %d\)" % (m * mx + 1,
+                                                                              m * my + 1)):
+            cls(mx, my, dx, dy, backend=backend, kernel=k[:-1])
 
 
 def test_unknown_backend_lists_the_valid_ones():

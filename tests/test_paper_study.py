@@ -138,8 +138,8 @@ def test_coarse_run_end_to_end(tmp_path):
     # resumed from the checkpoint: no sweep runs again, the same rows are written
     assert build_tables(run + ["--resume"]) == 0
     resumed = read_table(REGEN, directory=out)
-    assert "resumed from an earlier run (not in this wall time): L/R 2" in \
-        resumed.meta["wall_time"]
+    assert ("for 1 L/R with 1 process (local dask cluster); 1 of them resumed from an "
+            "earlier run's checkpoints (not in this wall time)") in resumed.meta["wall_time"]
     np.testing.assert_array_equal(resumed.columns["alpha"], reg.columns["alpha"])
     # a run compared with itself has not changed
     assert paper_compare.compare_curves(out, out)[2.0] == (0.0, 0.0, 0.0)

@@ -345,3 +345,21 @@ def test_a_barely_touching_roller_still_gets_its_contact():
     res = solve_roller(R, L, ESTAR, d, profile=crown(rc), n_x=N, n_y=N, stiffness=False)
     assert res.area > 0
     assert res.force == pytest.approx(force * (d / approach) ** 1.5, rel=0.1)
+
+
+def test_study_command_writes_its_table_and_no_figure_with_an_empty_name(tmp_path,
+                                                                         monkeypatch):
+    """`build_tables roller --figure ''` writes the table and no figure: the option was
+    a Path, and Path('') is '.', so the study saved a file '.png' in the working folder.
+    A smoke run of the command on tiny grids (its numbers are not checked here)."""
+    from linecontact.tables import read_table
+    from tools.build_tables import main as build_tables
+    monkeypatch.chdir(tmp_path)
+    out = tmp_path / "out"
+    assert build_tables(["roller", "--quick", "--n-x", "16", "--n-y", "8",
+                         "--check-every", "0", "--workers", "1", "--no-progress",
+                         "--figure", "", "--out", str(out)]) == 0
+    assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == \
+        ["roller_accuracy.csv"]
+    meta = read_table("roller_accuracy", directory=out).meta
+    assert meta["wall_time"].split(" with ")[0].endswith("s for 28 cases")

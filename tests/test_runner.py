@@ -8,6 +8,7 @@ Facts checked:
   under the same key is run again;
 - a task that raises makes the study raise, and the tasks finished before it keep
   their checkpoints;
+- resume without a checkpoint folder is refused (it would run every task again);
 - the same study runs through a `dask scheduler` and a `dask worker` started as separate
   processes on localhost (what `--scheduler ADDRESS` does on a cluster);
 - table_meta gives every table the same generated_by/date/version lines.
@@ -98,6 +99,9 @@ def test_failing_task_raises_and_keeps_finished(tmp_path, scheduler_and_worker):
         run_study(square, [dict(key="a", x=1), dict(key="a", x=2)], progress=False)
     with pytest.raises(ValueError, match="key"):
         run_study(square, [dict(x=1)], progress=False)
+    # resuming with no checkpoint folder would silently run everything again
+    with pytest.raises(ValueError, match="resume.*--checkpoint"):
+        run_study(square, tasks, resume=True, progress=False)
 
 
 def test_options_and_table_meta():

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from scipy.integrate import dblquad
 
+from linecontact.tangential import mdr_stiffness_ratio
 import tools.influence
 import tools.tangential_bem
 from tools.cylinder import sweep
@@ -20,7 +21,7 @@ from tools.solver import solve_contact, solve_punch
 from tools.tangential_bem import (cylinder_full_stick, cylinder_partial_slip,
                                   normal_force_on_grid,
                                   full_stick_stiffness, load_path, loop_dissipation,
-                                  masing_dissipation, mdr_ratio, shear_modulus_for,
+                                  masing_dissipation, shear_modulus_for,
                                   solve_partial_slip, tangential_operator)
 
 
@@ -229,7 +230,7 @@ def test_bonded_circular_punch_tangential_stiffness_is_8Ga_over_2_minus_nu():
             kt, _ = full_stick_stiffness(foot.astype(float), _grid(m, m, h, h), 1.0, nu,
                                          "x", tol=1e-10)
             errs[nu].append(abs(kt / (8 * G * a_eq / (2 - nu)) - 1))
-            ratio_errs.append(abs(kt / kn / mdr_ratio(nu) - 1))
+            ratio_errs.append(abs(kt / kn / mdr_stiffness_ratio(nu) - 1))
     for nu, e in errs.items():
         assert e[-1] < 6e-3, f"nu = {nu}: k_t off by {e[-1]:.2e} on 32 cells"
         assert e[1] < 0.7 * e[0], f"nu = {nu}: no first-order convergence {e}"
@@ -266,7 +267,7 @@ def test_bonded_rectangles_approach_the_plane_strain_and_antiplane_limits():
         across.append(full_stick_stiffness(foot, grid, 1.0, nu, "y", tol=1e-10)[0] / kn)
         along.append(full_stick_stiffness(foot, grid, 1.0, nu, "x", tol=1e-10)[0] / kn)
     assert across[0] == pytest.approx(along[0], rel=1e-9)
-    assert across[0] == pytest.approx(mdr_ratio(nu), rel=0.02)
+    assert across[0] == pytest.approx(mdr_stiffness_ratio(nu), rel=0.02)
     assert across[0] < across[1] < across[2] <= 1.0, across
     assert along[0] > along[1] > along[2] >= 1 - nu, along
 
@@ -389,7 +390,8 @@ def test_cylinder_full_stick_ratio_converges_with_the_grid():
         change = np.abs(getattr(a, name) / getattr(b, name) - 1).max()
         assert change < 2e-3, f"{name} changed by {change:.2e} from N to 2N"
     # the direction dependence the MDR misses: stiffer across, softer along
-    assert np.all(b.ratio_across > mdr_ratio(b.nu)) and np.all(b.ratio_along < mdr_ratio(b.nu))
+    mdr = mdr_stiffness_ratio(b.nu)
+    assert np.all(b.ratio_across > mdr) and np.all(b.ratio_along < mdr)
 
 
 def test_cylinder_ratio_is_self_similar_in_d_tilde():
@@ -454,7 +456,7 @@ def test_shipped_table_has_the_contract_columns_and_its_exact_rows():
     c = t.columns
     for name in ("nu", "d_tilde", "kt_kn_across", "kt_kn_along"):
         assert name in c, f"contract column {name} missing"
-    np.testing.assert_allclose(c["kt_kn_mdr"], mdr_ratio(c["nu"]), rtol=1e-15)
+    np.testing.assert_allclose(c["kt_kn_mdr"], mdr_stiffness_ratio(c["nu"]), rtol=1e-15)
     zero = c["nu"] == 0
     assert zero.any()
     np.testing.assert_allclose(c["kt_kn_across"][zero], 1.0, atol=1e-6)
@@ -489,10 +491,10 @@ def test_shipped_table_direction_dependence_has_the_2d_limits_signs():
         across = c["kt_kn_across"][sel][order]
         along = c["kt_kn_along"][sel][order]
         strip = d <= 0.1
-        assert np.all((across[strip] > mdr_ratio(nu)) & (across[strip] < 1)), nu
-        assert np.all((along[strip] < mdr_ratio(nu)) & (along[strip] > 1 - nu)), nu
+        assert np.all((across[strip] > mdr_stiffness_ratio(nu)) & (across[strip] < 1)), nu
+        assert np.all((along[strip] < mdr_stiffness_ratio(nu)) & (along[strip] > 1 - nu)), nu
         assert np.all(np.diff(across[strip]) < 0) and np.all(np.diff(along[strip]) > 0)
-        assert across[-1] < mdr_ratio(nu) < along[-1], nu
+        assert across[-1] < mdr_stiffness_ratio(nu) < along[-1], nu
 
 
 @pytest.mark.slow
@@ -579,3 +581,36 @@ def test_runtime_partial_slip_law_off_the_nodes_is_within_2_percent_of_the_bem(d
         errs.append(worst)
     assert errs[0] < 0.02, f"corrected law off the BEM by {errs[0]:.2%} of mu F"
     assert errs[1] < 0.02, f"uncorrected law off the BEM by {errs[1]:.2%} of mu F"
+
+
+def test_study_command_on_tiny_grids_keeps_the_exact_nu_zero_rows(tmp_path):
+    """`build_tables tangential` end to end on tiny grids: at nu = 0 Cerruti's kernel is
+    Love's with E* = 2G (Johnson 1985, section 3.6), so k_t/k_n = 1 exactly on any grid,
+    up to the solver tolerance 1e-8 (asserted to 1e-6); the header records the run."""
+    from linecontact.tables import read_table
+    from tools.build_tables import main as build_tables
+    assert build_tables(["tangential", "--d-min", "1e-3", "--d-max", "1e-2",
+                         "--per-decade", "1", "--nu", "0", "0.5", "--n-length", "8",
+                         "--n-width", "4", "--slip-n-length", "8", "--slip-n-width", "4",
+                         "--slip-points", "4", "--slip-depths", "4", "--workers", "1",
+                         "--no-progress", "--out", str(tmp_path)]) == 0
+    t = read_table("tangential_cylinder", directory=tmp_path)
+    c = t.columns
+    zero = c["nu"] == 0
+    assert zero.sum() == 2 and (~zero).sum() == 2
+    np.testing.assert_allclose(c["kt_kn_across"][zero], 1.0, atol=1e-6)
+    np.testing.assert_allclose(c["kt_kn_along"][zero], 1.0, atol=1e-6)
+    assert t.meta["wall_time"].split(" with ")[0].endswith("s for 2 depths")
+
+
+def test_normal_force_on_grid_refuses_an_unconverged_depth():
+    """F(d') feeds the partial-slip laws of the study: a contact solution that misses
+    its tolerance (here an unreachable 1e-30, below rounding) raises instead of passing
+    its force on; at the default tolerance the same depths give F > 0 growing with d'."""
+    from tools.cylinder import Grid
+    from tools.solver import ConvergenceError
+    g = Grid(8, 8, 0.5 / 8, 0.2 / 8)
+    F = normal_force_on_grid(g, [0.0, 0.01, 0.02])
+    assert F[0] == 0 and 0 < F[1] < F[2]
+    with pytest.raises(ConvergenceError, match=r"d' = 0.01 m.*tol = 1e-30"):
+        normal_force_on_grid(g, [0.01], tol=1e-30)

@@ -29,8 +29,6 @@ import argparse
 import importlib
 import sys
 
-from .runner import code_version  # noqa: F401  (re-exported: tools.accuracy uses it)
-
 SUBCOMMANDS = {
     "universal": "tools.universal_study",
     "paper": "tools.paper_study",

@@ -71,6 +71,17 @@ def best_backend():
     return "pyfftw"
 
 
+def _offsets(kernel, nx, ny, dx, dy, estar):
+    """The kernel at offsets 0..nx, 0..ny: the given one (its shape checked) or Love's."""
+    if kernel is None:
+        return kernel_offsets(nx, ny, dx, dy, estar)
+    k = np.asarray(kernel, dtype=float)
+    if k.shape != (nx + 1, ny + 1):
+        raise ValueError(f"kernel shape = {k.shape} is not the {(nx + 1, ny + 1)} of "
+                         f"offsets 0..{nx}, 0..{ny} that this grid needs")
+    return k
+
+
 class DCFFTOperator:
     """Free-space displacement of an nx x ny grid of cells (any pressure field).
 
@@ -85,14 +96,20 @@ class DCFFTOperator:
     backend : {'scipy', 'pyfftw'}
     workers : int, optional
         Threads for the FFTs.
+    kernel : ndarray, optional
+        Another kernel even in both offsets, as its values at offsets 0..nx, 0..ny
+        ((nx + 1) x (ny + 1), e.g. tools.influence.cerruti_kernel_offsets) [m/Pa]; by
+        default Love's normal one, tools.influence.kernel_offsets with `estar`
+        (ignored when a kernel is given).
     """
 
-    def __init__(self, nx, ny, dx, dy, estar=1.0, backend="scipy", workers=None):
+    def __init__(self, nx, ny, dx, dy, estar=1.0, backend="scipy", workers=None,
+                 kernel=None):
         self.shape = (int(nx), int(ny))
         self.dx, self.dy, self.estar = float(dx), float(dy), float(estar)
         self._fft = _fft_module(backend)
         self.workers = default_workers(backend) if workers is None else workers
-        k = kernel_offsets(nx, ny, dx, dy, estar)          # offsets 0..n
+        k = _offsets(kernel, nx, ny, dx, dy, estar)        # offsets 0..n
         # wrap-around order on 2n: offsets 0..n-1, then n (either sign), then -(n-1)..-1
         kx = np.concatenate([k, k[-2:0:-1]], axis=0)
         kw = np.concatenate([kx, kx[:, -2:0:-1]], axis=1)
@@ -116,15 +133,18 @@ class SymmetricOperator:
     cell counts. With ``backend='pyfftw'`` the two transforms are FFTW r2r plans
     (REDFT10 = DCT-II, REDFT01 = its unnormalised inverse) made once with
     FFTW_MEASURE; the normalisation 1/(4 * 2mx * 2my) is folded into the kernel.
+    A ``kernel`` given instead of Love's holds the offsets 0..2mx, 0..2my
+    ((2mx + 1) x (2my + 1)).
     """
 
-    def __init__(self, mx, my, dx, dy, estar=1.0, backend="scipy", workers=None):
+    def __init__(self, mx, my, dx, dy, estar=1.0, backend="scipy", workers=None,
+                 kernel=None):
         self.shape = (int(mx), int(my))
         self.dx, self.dy, self.estar = float(dx), float(dy), float(estar)
         self.backend = backend
         self.workers = default_workers(backend) if workers is None else workers
         fft = _fft_module("scipy" if backend == "pyfftw" else backend)
-        k = kernel_offsets(2 * mx, 2 * my, dx, dy, estar)  # offsets 0..2m: DCT-I samples
+        k = _offsets(kernel, 2 * mx, 2 * my, dx, dy, estar)  # offsets 0..2m: DCT-I samples
         khat = fft.dctn(k, type=1, workers=self.workers)[:2 * mx, :2 * my]
         shape = (2 * mx, 2 * my)
         if backend == "pyfftw":

@@ -67,7 +67,7 @@ from .paper_fit import (RESIDUALS, SHIPPED_RESIDUAL, fit_all, points_from_curves
                         residual_report)
 from .paper_sweep import run_sweeps
 from .paper_tables import CURVES, curves_from_results, write_curves, write_outputs
-from .runner import DEFAULT_WORKERS, add_runner_arguments
+from .runner import DEFAULT_WORKERS, add_runner_arguments, wall_time_line
 
 PAPER_L_OVER_R = tuple([round(0.1 * i, 1) for i in range(1, 11)] + list(range(2, 21)))
 
@@ -113,14 +113,6 @@ def _default_out():
     return Path(__file__).resolve().parent.parent / "tables"
 
 
-def _where(args):
-    """How the tasks ran, for the wall_time line."""
-    if args.scheduler:
-        return f"on the dask cluster at {args.scheduler} (1 FFT thread per task)", None
-    n = args.workers or DEFAULT_WORKERS
-    return f"with {n} processes x 1 FFT thread (local dask cluster)", n
-
-
 def _refit_meta(args, table):
     """command line and run metadata of a refit from saved curves: the BEM run's
     settings, command and version are kept beside the refit's own."""
@@ -139,11 +131,10 @@ def _run_meta(args, results, wall):
     except OSError:
         load = "n/a"
     cpu = sum(r["cpu_time"] for r in results)
-    resumed = [r["l_over_r"] for r in results if r.get("resumed")]
     per = "; ".join(f"L/R {r['l_over_r']:g}: {r['wall_time']:.1f} s wall, "
                     f"{r['cpu_time']:.1f} s CPU, {int(r['iterations'].sum())} op"
                     for r in results)
-    where, n = _where(args)
+    n = None if args.scheduler else (args.workers or DEFAULT_WORKERS)
     idle = (f" (on an idle machine about CPU / {n} = {cpu / n:.0f} s)" if n else "")
     return dict(
         grid=f"{nx} x {ny} cells over |x| <= L/2, |y| <= sqrt(2 R d_max) "
@@ -153,10 +144,9 @@ def _run_meta(args, results, wall):
         d_max_over_R=f"{args.d_max:g}",
         tolerance=f"contact solver: largest gap error <= {args.tol:g} d; punch: "
                   f"displacement error <= {args.tol:g}",
-        wall_time=f"{wall:.1f} s {where}; CPU time of the sweeps {cpu:.1f} s{idle}; "
-                  f"load average after the run {load}; per L/R: {per}"
-                  + (f"; resumed from an earlier run (not in this wall time): "
-                     f"L/R {', '.join(f'{q:g}' for q in resumed)}" if resumed else ""),
+        wall_time=wall_time_line(wall, results, "L/R", args.scheduler, args.workers)
+                  + f"; 1 FFT thread per task; CPU time of the sweeps {cpu:.1f} s{idle}; "
+                  f"load average after the run {load}; per L/R: {per}",
         machine=f"{platform.machine()}, {os.cpu_count()} CPUs, Python "
                 f"{platform.python_version()}",
     )
@@ -198,6 +188,6 @@ def run(args):
         print(line)
     print(f"closest to Table 1: {closest}; shipped: {args.residual}")
     if wall is not None:
-        print(f"BEM wall time {wall:.1f} s ({len(points)} L/R, {_where(args)[0]})")
+        print(f"BEM {meta_run['wall_time'].split(';')[0]}")
     print(f"wrote {out}")
     return 0

@@ -53,7 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from .roller_bem import grid_convergence, solve_roller_force
-from .runner import add_runner_arguments, run_study_from_args, table_meta
+from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -266,8 +266,9 @@ def add_arguments(parser):
                         help="a quarter of the cases (two loads, two tilts): a smoke run")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for roller_accuracy.csv (default tables/)")
-    parser.add_argument("--figure", type=Path,
-                        default=REPO / "docs" / "figures" / "roller_accuracy.png",
+    # a str, not a Path: Path('') is '.', so '' could not mean "no figure"
+    parser.add_argument("--figure",
+                        default=str(REPO / "docs" / "figures" / "roller_accuracy.png"),
                         help="where to write the figure ('' for none)")
     add_runner_arguments(parser)
 
@@ -547,8 +548,8 @@ def run(args):
                   f"{s['iso_kt']:.2%}",
         covered=s["range"],
         **s["covered_fields"],
-        wall_time=f"{wall:.0f} s for {len(tasks)} cases (0 when every case came from the "
-                  f"checkpoints; the per-case times sum to {s['case_seconds']:.0f} s); "
+        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers)
+                  + f"; the per-case times sum to {s['case_seconds']:.0f} s; "
                   f"median per case: BEM "
                   f"{s['bem_seconds']:.2f} s (both grids, wall), runtime solve "
                   f"{s['rt_seconds'] * 1e3:.1f} ms wall, {s['rt_cpu_seconds'] * 1e3:.1f} ms "
@@ -560,6 +561,6 @@ def run(args):
     print(f"wrote {path}: {len(tasks)} cases in {wall:.0f} s")
     for k in ("accuracy", "runtime_error", "iso_error", "wall_time"):
         print(f"  {k}: {meta[k]}")
-    if str(args.figure):
-        print(f"wrote {figure(col, args.figure)}")
+    if args.figure:
+        print(f"wrote {figure(col, Path(args.figure))}")
     return 0

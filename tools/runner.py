@@ -37,7 +37,7 @@ import sys
 from pathlib import Path
 
 __all__ = ["add_runner_arguments", "run_study", "run_study_from_args", "table_meta",
-           "code_version", "DEFAULT_WORKERS"]
+           "wall_time_line", "code_version", "DEFAULT_WORKERS"]
 
 #: Worker processes of the default LocalCluster (the 2 cores of the reference machine).
 DEFAULT_WORKERS = 2
@@ -85,10 +85,11 @@ def add_runner_arguments(parser):
                         f"(default {DEFAULT_WORKERS}; ignored with --scheduler)")
     g.add_argument("--checkpoint", type=Path, default=None, metavar="DIR",
                    help="folder for the per-task checkpoint files (default: the "
-                        "study's own, see its help)")
+                        "study's own where it has one, see its help; else none)")
     g.add_argument("--resume", action="store_true",
                    help="reuse the results saved in the checkpoint folder by an "
-                        "interrupted run with the same task settings")
+                        "interrupted run with the same task settings (an error "
+                        "without a checkpoint folder)")
     g.add_argument("--no-progress", action="store_true", help="no progress bar")
     return parser
 
@@ -168,7 +169,8 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
     Raises
     ------
     ValueError
-        Keys missing, not str, or repeated.
+        Keys missing, not str, or repeated; `resume` without a `checkpoint` folder
+        (there would be nothing to resume from, and every task would run again).
     Exception
         The first exception raised by a task; the results finished before it stay in
         the checkpoint folder.
@@ -180,6 +182,9 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
     if len(set(keys)) != len(keys):
         dup = sorted({k for k in keys if keys.count(k) > 1})
         raise ValueError(f"task keys must be unique; repeated: {', '.join(dup)}")
+    if resume and checkpoint is None:
+        raise ValueError("resume = True needs the checkpoint folder of the earlier run "
+                         "(--checkpoint DIR); none was given")
     done = {}
     if checkpoint is not None:
         Path(checkpoint).mkdir(parents=True, exist_ok=True)
@@ -230,6 +235,28 @@ def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar):
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+def wall_time_line(wall, results, what, scheduler=None, workers=None):
+    """The ``wall_time`` header line of a study's table, the same in every table:
+    ``'W s for N WHAT with P processes (local dask cluster)'`` or ``'... on the dask
+    cluster at ADDRESS'``, and how many results came from the checkpoints of an earlier
+    run (their time is not in W).
+
+    >>> wall_time_line(12.3, [{}, {}], "depths", workers=2)
+    '12 s for 2 depths with 2 processes (local dask cluster)'
+    >>> wall_time_line(12.3, [{"resumed": True}, {}], "depths").split("; ")[1]
+    "1 of them resumed from an earlier run's checkpoints (not in this wall time)"
+    """
+    n = int(workers or DEFAULT_WORKERS)
+    where = (f"on the dask cluster at {scheduler}" if scheduler else
+             f"with {n} process{'es' if n != 1 else ''} (local dask cluster)")
+    line = f"{wall:.0f} s for {len(results)} {what} {where}"
+    resumed = sum(bool(isinstance(r, dict) and r.get("resumed")) for r in results)
+    if resumed:
+        line += (f"; {resumed} of them resumed from an earlier run's checkpoints "
+                 "(not in this wall time)")
+    return line
 
 
 def run_study_from_args(func, tasks, args, desc=""):

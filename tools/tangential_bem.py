@@ -64,6 +64,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from linecontact.tangential import mdr_stiffness_ratio
+
 from .halfspace import DCFFTOperator, SymmetricOperator, unfold
 from .influence import cerruti_kernel_offsets
 from .solver import _dot, solve_contact, solve_punch
@@ -105,52 +107,6 @@ def shear_modulus_for(estar, nu):
     Johnson (1985), Contact Mechanics, section 4.2 (E* of one elastic body).
     """
     return 0.5 * (1.0 - nu) * estar
-
-
-def mdr_ratio(nu):
-    """The MDR's tangential over normal stiffness for a rigid indenter.
-
-    .. math:: \\frac{k_t}{k_n} = \\frac{G^*}{E^*} = \\frac{2(1-\\nu)}{2-\\nu}
-
-    Parameters
-    ----------
-    nu : float or ndarray
-        Poisson's ratio of the elastic body [-].
-
-    Returns
-    -------
-    float or ndarray
-        G*/E* [-]; exact for axisymmetric contacts.
-
-    Examples
-    --------
-    >>> round(mdr_ratio(0.3), 4)
-    0.8235
-
-    References
-    ----------
-    Popov & Hess (2015), chapter 4; Johnson (1985), Eq. 7.43.
-    """
-    nu = np.asarray(nu, dtype=float)
-    out = 2 * (1 - nu) / (2 - nu)
-    return float(out) if out.ndim == 0 else out
-
-
-def _swap_kernel_dcfft(op, k):
-    fft = op._fft
-    kx = np.concatenate([k, k[-2:0:-1]], axis=0)
-    kw = np.concatenate([kx, kx[:, -2:0:-1]], axis=1)
-    op._khat = fft.rfft2(kw, workers=op.workers)
-
-
-def _swap_kernel_symmetric(op, k):
-    import scipy.fft as sfft
-    mx, my = op.shape
-    khat = sfft.dctn(k, type=1, workers=op.workers)[:2 * mx, :2 * my]
-    if op.backend == "pyfftw":
-        op._khat = khat / (4.0 * 2 * mx * 2 * my)
-    else:
-        op._khat = np.ascontiguousarray(khat)
 
 
 def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=True,
@@ -201,14 +157,9 @@ def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=
     Liu, Wang & Liu (2000), Wear 243:101-111 (DC-FFT); Johnson (1985), section 3.6.
     """
     comp = _component(direction)
-    if symmetric:
-        op = SymmetricOperator(nx, ny, dx, dy, 1.0, backend, workers)
-        _swap_kernel_symmetric(op, cerruti_kernel_offsets(2 * nx, 2 * ny, dx, dy,
-                                                          shear_modulus, nu, comp))
-    else:
-        op = DCFFTOperator(nx, ny, dx, dy, 1.0, backend, workers)
-        _swap_kernel_dcfft(op, cerruti_kernel_offsets(nx, ny, dx, dy, shear_modulus,
-                                                      nu, comp))
+    cls, m = (SymmetricOperator, 2) if symmetric else (DCFFTOperator, 1)
+    kernel = cerruti_kernel_offsets(m * nx, m * ny, dx, dy, shear_modulus, nu, comp)
+    op = cls(nx, ny, dx, dy, backend=backend, workers=workers, kernel=kernel)
     op.shear_modulus, op.nu, op.direction = float(shear_modulus), float(nu), direction
     return op
 
@@ -749,6 +700,11 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
     ndarray
         F(d') [N] (four quarters).
 
+    Raises
+    ------
+    ConvergenceError
+        A depth whose contact solution misses `tol` (its force would be wrong).
+
     Notes
     -----
     F(d') on the grid of the deepest depth: contacts at d' < d are resolved by fewer
@@ -775,6 +731,11 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
             out.append(0.0)
             continue
         sol = solve_contact(op, h - d, d, tol=tol, p0=p0)
+        if not sol.converged:
+            from .solver import ConvergenceError
+            raise ConvergenceError(f"normal contact at d' = {d:.6g} m: gap error "
+                                   f"{sol.error:.3g} d > tol = {tol:g} d on "
+                                   f"{grid.describe()}")
         p0 = sol.pressure if sol.pressure.any() else None
         out.append(4 * sol.pressure.sum() * grid.cell_area)
     return np.array(out)
@@ -828,7 +789,7 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
     p = normal.pressure
     d = normal.d_tilde
     F = 4 * p.sum() * grid.cell_area
-    gstar = mdr_ratio(nu)           # G*/E*, E* = 1
+    gstar = mdr_stiffness_ratio(nu)     # G*/E*, E* = 1
     u_gs = mu * d / gstar
     op = tangential_operator(grid.mx, grid.my, grid.dx, grid.dy, shear_modulus_for(1.0, nu),
                              nu, direction, True, "scipy", workers)
@@ -852,7 +813,7 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
     return out
 
 
-__all__ = ["DIRECTIONS", "shear_modulus_for", "mdr_ratio", "tangential_operator",
+__all__ = ["DIRECTIONS", "shear_modulus_for", "tangential_operator",
            "SlipSolution", "solve_partial_slip", "load_path", "loop_dissipation",
            "masing_dissipation", "CylinderTangential", "full_stick_stiffness",
            "coupled_full_stick",

@@ -51,7 +51,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .tangential_bem import (cylinder_full_stick, load_path, mdr_ratio,
+from linecontact.tangential import mdr_stiffness_ratio
+
+from .tangential_bem import (cylinder_full_stick, load_path,
                              normal_force_on_grid, shear_modulus_for, tangential_operator)
 
 REPO = Path(__file__).resolve().parent.parent
@@ -82,7 +84,7 @@ def add_arguments(parser):
     parser.add_argument("--slip-points", type=int, default=24,
                         help="shift steps of each partial-slip curve (default 24)")
     parser.add_argument("--slip-depths", type=int, default=32,
-                        help="normal solutions d' = d j/J for the laws (default 24)")
+                        help="normal solutions d' = d j/J for the laws (default %(default)s)")
     parser.add_argument("--tol", type=float, default=1e-8,
                         help="solver tolerance (gap / displacement error relative to "
                              "d or the shift; default 1e-8)")
@@ -120,7 +122,7 @@ def partial_slip_measures(normal, nu, direction, kappa, points=24, depths=24, to
     """
     grid, p, d = normal.grid, normal.pressure, normal.d_tilde
     F = 4 * p.sum() * grid.cell_area
-    gstar = mdr_ratio(nu)
+    gstar = mdr_stiffness_ratio(nu)
     op = tangential_operator(grid.mx, grid.my, grid.dx, grid.dy,
                              shear_modulus_for(1.0, nu), nu, direction, True, "scipy", 1)
     u_gs_bem = float(op(p)[p > 0].max())          # all cells slip: u = K (mu p), mu = 1
@@ -276,7 +278,7 @@ def assemble(results):
             cols[_shift_name(side, q)] = []
     for i, nu in enumerate(nus):
         for r in results:
-            mdr = mdr_ratio(nu)
+            mdr = mdr_stiffness_ratio(nu)
             cols["nu"].append(nu)
             cols["d_tilde"].append(r["d_tilde"])
             cols["kt_kn_across"].append(r["across_2N"][i])
@@ -347,7 +349,7 @@ def interpolation_error(cols):
 
 def run(args):
     from linecontact.tables import write_table
-    from .runner import run_study_from_args, table_meta
+    from .runner import run_study_from_args, table_meta, wall_time_line
 
     t0 = time.perf_counter()
     tasks = tasks_for(args.d_min, args.d_max, args.per_decade, args.nu, args.n_length,
@@ -432,8 +434,7 @@ def run(args):
                   "slip optimality / largest shift)",
         d_tilde_range=f"[{cols['d_tilde'].min():.6g}, {cols['d_tilde'].max():.6g}]",
         nu_values=" ".join(f"{v:g}" for v in nus),
-        wall_time=f"{wall:.0f} s ({len(tasks)} depths, runner workers "
-                  f"{getattr(args, 'workers', None) or 'default'})",
+        wall_time=wall_time_line(wall, results, "depths", args.scheduler, args.workers),
     )
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "tangential_cylinder.csv"

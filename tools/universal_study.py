@@ -48,7 +48,7 @@ from linecontact.tables import Table
 from linecontact.universal import UniversalCurve
 
 from .cylinder import solve_depth
-from .runner import DEFAULT_WORKERS, add_runner_arguments, run_study, table_meta
+from .runner import add_runner_arguments, run_study, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -167,7 +167,9 @@ def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol
         beta_small=float(beta[0]), drift_per_decade=float(drift_per_decade),
         continuation_err_per_decade=float(drift_per_decade * sens),
         alpha_fit=float(alpha_fit), beta_fit=float(beta_fit), beta_limit=beta_limit,
-        checked=int(checked.sum()), resumed=sum(bool(r.get("resumed")) for r in rows),
+        checked=int(checked.sum()),
+        wall_time_line=wall_time_line(wall, rows, "depths", runner.get("scheduler"),
+                                      runner.get("workers")),
         monotone=bool(np.all(np.diff(psi) > 0)
                                                    and np.all(np.diff(dpsi) > 0)),
     )
@@ -183,8 +185,6 @@ def run(args):
                          scheduler=args.scheduler, workers=args.workers,
                          checkpoint=checkpoint, resume=args.resume,
                          progress=not args.no_progress)
-    where = (f"on the dask cluster at {args.scheduler}" if args.scheduler else
-             f"with {args.workers or DEFAULT_WORKERS} processes (local dask cluster)")
     meta = table_meta(args.command_line, **{
         "title": "Universal force-depth curve of a rigid parabolic cylinder of finite "
                  "length on an elastic half-space: F R/(E* L^3) = Psi(d R/L^2)",
@@ -232,9 +232,7 @@ def run(args):
                                "used by the runtime",
         "beta_small": f"{s['beta_small']:.8f}",
         "d_tilde_range": f"[{columns['d_tilde'][0]:.6g}, {columns['d_tilde'][-1]:.6g}]",
-        "wall_time": f"{s['wall_time']:.0f} s {where}"
-                     + (f" ({s['resumed']} depths resumed from an earlier run, not in "
-                        "this wall time)" if s["resumed"] else ""),
+        "wall_time": s["wall_time_line"],
     })
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "universal_curve.csv"

@@ -211,7 +211,7 @@ def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
     roller's own diameter. Against a convex raceway (--radius2) the slices see the
     effective radius 1/R = 1/R1 + 1/R2, but the profile must still use D = 2 R1
     (10 mm here, not 2 R_eff = 8 mm, which made the drop 20 % too shallow)."""
-    status, out, err = _main(capsys, "--radius", "5mm", "--radius2", "20mm", "--length",
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--radius2", "20mm", "--length",
                              "10mm", "--estar", "115GPa", "--load", "1kN",
                              "--profile", "iso16281")
     assert status == 0, err

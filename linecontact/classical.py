@@ -33,6 +33,7 @@ from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval,
 __all__ = [
     "effective_modulus",
     "hertz_half_width",
+    "hertz_peak_pressure",
     "puttock_thwaite_depth",
     "puttock_thwaite_force",
     "puttock_thwaite_stiffness",
@@ -213,6 +214,52 @@ def hertz_half_width(force, radius, length, estar):
     F = check_positive("force", force, "N")
     R, L, E = _inputs(radius, length, estar)
     return out(np.sqrt(4 * R * F / (math.pi * E * L)))
+
+
+def hertz_peak_pressure(force, radius, length, estar):
+    r"""Hertz peak pressure p0 of a line contact (plane strain) [Pa].
+
+    .. math:: p_0 = \frac{2F}{\pi b L} = \sqrt{\frac{F E^*}{\pi R L}}
+
+    with b the half-width of Li & Popov (2017), Eq. 1.
+
+    Parameters
+    ----------
+    force : array_like
+        Normal force F > 0 [N].
+    radius : array_like
+        (Effective) radius R > 0 [m].
+    length : array_like
+        Roller length L > 0 [m].
+    estar : array_like
+        Effective modulus E* > 0 of Li & Popov (2017), Eq. 3 [Pa].
+
+    Returns
+    -------
+    ndarray or float
+        p0 [Pa].
+
+    Notes
+    -----
+    The pressure at mid-length of a long roller (b << L). At the ends of a straight
+    roller on an elastic half-space the pressure is singular; a finite end pressure
+    needs a profile. Valid for 0 < F, R, L, E* < inf.
+
+    Examples
+    --------
+    >>> f"{hertz_peak_pressure(1000.0, 5e-3, 10e-3, 115.38e9) / 1e6:.0f} MPa"
+    '857 MPa'
+
+    References
+    ----------
+    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
+       Eq. 4.45.
+    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    """
+    F = check_positive("force", force, "N")
+    R, L, E = _inputs(radius, length, estar)
+    return out(np.sqrt(F * E / (math.pi * R * L)))
 
 
 # --------------------------------------------------------------------------------------

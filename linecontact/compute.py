@@ -32,13 +32,12 @@ Whole roller between two raceways (``--inner-raceway``, ``--outer-raceway``)
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 __all__ = ["Field", "FIELDS", "CONTACT_COLUMNS", "ROLLER_COLUMNS", "DEPTH_OVER_RADIUS_MAX",
-           "HALF_WIDTH_OVER_LENGTH_MAX", "hertz_peak_pressure", "parse_model_option",
+           "HALF_WIDTH_OVER_LENGTH_MAX", "parse_model_option",
            "compute", "Results"]
 
 
@@ -107,61 +106,6 @@ HALF_WIDTH_OVER_LENGTH_MAX = 0.5
 P0_NOTE = ("p0: Hertz peak pressure of the plane-strain strip, p0 = sqrt(F E*/(pi R L)) "
            "(Johnson 1985, Eq. 4.45), i.e. at mid-length; at the ends of a straight roller "
            "the pressure is higher, singular on an elastic half-space (edge loading).")
-
-
-def hertz_peak_pressure(force, radius, length, estar):
-    r"""Hertz peak pressure p0 of a line contact (plane strain) [Pa].
-
-    .. math:: p_0 = \frac{2F}{\pi b L} = \sqrt{\frac{F E^*}{\pi R L}}
-
-    with b the half-width of Li & Popov (2017), Eq. 1.
-
-    Parameters
-    ----------
-    force : array_like
-        Normal force F > 0 [N].
-    radius : array_like
-        (Effective) radius R > 0 [m].
-    length : array_like
-        Roller length L > 0 [m].
-    estar : array_like
-        Effective modulus E* > 0 of Li & Popov (2017), Eq. 3 [Pa].
-
-    Returns
-    -------
-    ndarray or float
-        p0 [Pa].
-
-    Notes
-    -----
-    The pressure at mid-length of a long roller (b << L). At the ends of a straight
-    roller on an elastic half-space the pressure is singular; a finite end pressure
-    needs a profile. Valid for 0 < F, R, L, E* < inf.
-
-    Examples
-    --------
-    >>> f"{hertz_peak_pressure(1000.0, 5e-3, 10e-3, 115.38e9) / 1e6:.0f} MPa"
-    '857 MPa'
-
-    References
-    ----------
-    .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
-       Eq. 4.45.
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
-    """
-    from .validity import check_positive, out
-
-    F = check_positive("force", force, "N")
-    R = check_positive("radius", radius, "m")
-    L = check_positive("length", length, "m")
-    E = check_positive("estar", estar, "Pa")
-    return out(_peak_pressure(F, R, L, E))
-
-
-def _peak_pressure(F, R, L, E):
-    """p0 of :func:`hertz_peak_pressure` for inputs already checked."""
-    return np.sqrt(F * E / (math.pi * R * L))
 
 
 # ---------------------------------------------------------------------------------------
@@ -376,7 +320,7 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
 
 def _contact_fields(r, R, L, E):
     """Per-contact derived fields from an evaluate() result (arrays): b, p0, flags."""
-    from .classical import hertz_half_width
+    from .classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
     ok = np.isfinite(F) & (F > 0)
@@ -384,7 +328,7 @@ def _contact_fields(r, R, L, E):
     p0 = np.full(F.shape, np.nan)
     if ok.any():
         b[ok] = hertz_half_width(F[ok], R, L, E)
-        p0[ok] = _peak_pressure(F[ok], R, L, E)  # F, R, L, E* checked above
+        p0[ok] = hertz_peak_pressure(F[ok], R, L, E)
     r["half_width"] = b
     r["peak_pressure"] = p0
     with np.errstate(invalid="ignore"):

@@ -32,13 +32,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import sys
-
 import numpy as np
 
 from ._units import InputError, parse_column
 
-_TINY, _HUGE = sys.float_info.min, sys.float_info.max  # normal doubles
 
 __all__ = ["Parameter", "PARAMETERS", "BY_NAME", "RAW_KINDS", "parse_cases", "option_name",
            "bounds_of"]
@@ -335,19 +332,13 @@ def _resolve(v, present, raw, errors, n, label):
         nu2 = np.where(P["poisson2"], v["poisson2"], 0.0)[eq3]
         e1 = np.where(visco, E0, v["modulus"])[eq3]   # viscoelastic: instantaneous E0
         estar[eq3] = effective_modulus(e1, v["poisson"][eq3], e2, nu2)
-    # Every model works in the scales of the self-similar variables (docs/theory.md,
-    # section 'Self-similarity'): depth L^2/R (d~ = d R/L^2) and force E* L^3/R. Each
-    # input may be a finite double and still give a scale (or its power L^2, L^3) that
-    # overflows to inf or underflows to 0: refused here, once for every model, rather
-    # than as an "unexpected OverflowError" or a silent 0 from one of them.
-    L = v["length"]
-    with np.errstate(all="ignore"):
-        scales = (L**2, L**3, L**2 / radius_eff, estar * L**3 / radius_eff)
-        normal = np.logical_and.reduce([(s >= _TINY) & (s <= _HUGE) for s in scales])
-    fail(ok & ~normal, "length",
-         f"L^3, L^2/R and E* L^3/R in [{_TINY:.3g}, {_HUGE:.3g}] (the models' length "
-         "and force scales; R the effective radius)",
-         "a scale of the models overflows or underflows", lambda i: cell("length", i))
+    # the self-similar scales every model works in must be normal doubles (the one
+    # rule of linecontact.models, checked here per row before any model is built)
+    from .models import SCALES_HINT, SCALES_VALID, scales_are_normal
+
+    fail(ok & ~scales_are_normal(radius_eff, v["length"], estar), "length",
+         SCALES_VALID + "; R the effective radius", SCALES_HINT,
+         lambda i: cell("length", i))
     from .calc_roller import resolve as _resolve_roller
 
     roller_rows, roller_specs, roller_tilts = _resolve_roller(v, P, raw, fail, label, n)

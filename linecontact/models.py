@@ -42,6 +42,7 @@ from __future__ import annotations
 import abc
 import math
 import os
+import sys
 from importlib import import_module
 
 import numpy as np
@@ -57,6 +58,7 @@ from .validity import (OutOfRangeError, check_flag, check_interval, check_positi
 
 __all__ = [
     "ContactModel",
+    "scales_are_normal",
     "MODELS",
     "DEFAULT_MODEL",
     "register",
@@ -127,6 +129,61 @@ def _scalar(name, value, unit):
     return float(v)
 
 
+#: What :func:`scales_are_normal` requires, for error messages.
+SCALES_VALID = (f"L^2, L^3, L^2/R and E* L^3/R in [{sys.float_info.min:.3g}, "
+                f"{sys.float_info.max:.3g}] (the models' length and force scales)")
+SCALES_HINT = "a scale of the models overflows or underflows"
+
+
+def scales_are_normal(radius, length, estar):
+    """Whether the self-similar scales of a cylinder are normal doubles.
+
+    Every model works in the scales of the self-similar variables (docs/theory.md,
+    section 'Self-similarity'): depth L^2/R (d~ = d R/L^2) and force E* L^3/R. Finite
+    R, L and E* can still give a scale (or the power L^2, L^3 on the way) that overflows
+    to inf or underflows to zero; such a cylinder is refused once, here, for every model
+    (and by the command line before any model is built), rather than as an overflow
+    error or a silent 0 in one of them.
+
+    Parameters
+    ----------
+    radius : float or ndarray
+        Radius R (the effective radius across the axis), R > 0 [m].
+    length : float or ndarray
+        Length L, L > 0 [m].
+    estar : float or ndarray
+        Effective modulus E*, E* > 0 [Pa].
+
+    Returns
+    -------
+    bool or ndarray of bool
+        True where L^2, L^3, L^2/R and E* L^3/R all lie in the normal doubles [-].
+
+    Notes
+    -----
+    Valid range: the normal doubles, [2.23e-308, 1.8e+308].
+
+    Examples
+    --------
+    >>> bool(scales_are_normal(5e-3, 10e-3, 115.38e9)), bool(scales_are_normal(5e-3, 1e300, 1e11))
+    (True, False)
+
+    References
+    ----------
+    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
+       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71 (the
+       dimensionless variables of Eq. 9).
+    """
+    L = np.asarray(length, dtype=float)
+    R = np.asarray(radius, dtype=float)
+    E = np.asarray(estar, dtype=float)
+    tiny, huge = sys.float_info.min, sys.float_info.max
+    with np.errstate(all="ignore"):
+        scales = (L**2, L**3, L**2 / R, E * L**3 / R)
+        ok = np.logical_and.reduce([(x >= tiny) & (x <= huge) for x in scales])
+    return ok if ok.ndim else bool(ok)
+
+
 class ContactModel(abc.ABC):
     """Base class: a normal-contact law for one rigid cylinder on an elastic half-space.
 
@@ -170,6 +227,9 @@ class ContactModel(abc.ABC):
         self.radius = _scalar("radius", radius, "m")
         self.length = _scalar("length", length, "m")
         self.estar = _scalar("estar", estar, "Pa")
+        if not scales_are_normal(self.radius, self.length, self.estar):
+            raise OutOfRangeError("length", self.length, SCALES_VALID, unit="m",
+                                  hint=SCALES_HINT)
 
     # ---- description ---------------------------------------------------------------
     @property

@@ -438,3 +438,13 @@ def test_stiffness_of_a_pint_depth_equals_the_si_value(key):
     assert m.stiffness(3 * u.um) == pytest.approx(m.stiffness(3e-6), rel=1e-12)
     F = m.force(3e-6)
     assert m.stiffness_at_force(F * u.N) == pytest.approx(m.stiffness_at_force(F), rel=1e-12)
+
+
+@pytest.mark.parametrize("key", ["universal", "kunz", "puttock-thwaite", "johnson", "li-popov"])
+@pytest.mark.parametrize("length", [1e300, 1e-110])
+def test_cylinders_whose_scales_overflow_are_refused_by_every_model(key, length):
+    """A finite L whose self-similar scales (L^2, L^3, L^2/R, E* L^3/R) overflow or
+    underflow is refused at construction, naming the length, for every model alike
+    (before: an OverflowError from one, depth 0 or NaN from others)."""
+    with pytest.raises(OutOfRangeError, match="length = 1e[+-]"):
+        get_model(key, R5, length, E)

@@ -39,7 +39,7 @@ x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
 F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 0.86-3.8 GPa). 104 cases.
 
-Budget: measured 198 s, 461 s and 598 s for the 104 cases with the default grids on the
+Budget: measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
 shared 2-core VM (2 Dask workers; the longer two at load average 8-16; the table's
 header line ``wall_time``); the cases are independent, so the study runs through
 tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28

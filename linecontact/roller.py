@@ -1436,7 +1436,22 @@ def _each(values, fn):
 class _SolvedRoller(ContactModel):
     """The contact law of a roller model from its solutions (``at_depth``,
     ``at_force`` returning :class:`RollerSolution`): one solve per value, each giving
-    force, depth and stiffness together."""
+    force, depth and stiffness together. Subclasses set :attr:`axial_profile` and
+    :attr:`n_slices`, and name themselves with ``_name`` and ``_slices``."""
+
+    _name = ""
+    _slices = "slices"
+
+    def __init__(self, radius, length, estar, tilt=0.0):
+        super().__init__(radius, length, estar)
+        self.tilt = TILT_RANGE.check(tilt).item()
+
+    @property
+    def label(self):
+        s = f"{self._name} ({self.axial_profile.label}"
+        if self.tilt:
+            s += f", tilt {self.tilt * 1e3:.4g} mrad"
+        return s + f", {self.n_slices} {self._slices})"
 
     def force(self, depth):
         return _each(depth, lambda d: self.at_depth(d).force)
@@ -1499,25 +1514,21 @@ class ProfiledRollerModel(_SolvedRoller):
     no_profile_reason = ("a coupled-slice solution of a profiled roller, not a "
                          "plane MDR contact; its axial drop is axial_profile")
 
+    _name = "Profiled roller"
+    _slices = "coupled slices"
+
     def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=100):
-        super().__init__(radius, length, estar)
-        self.tilt = TILT_RANGE.check(tilt).item()
+        super().__init__(radius, length, estar, tilt)
         self.roller = ProfiledRoller(self.radius, self.length, self.estar, profile,
                                      n_slices=n_slices)
         self.axial_profile = self.roller.profile
-
-    @property
-    def label(self):
-        s = f"Profiled roller ({self.axial_profile.label}"
-        if self.tilt:
-            s += f", tilt {self.tilt * 1e3:.4g} mrad"
-        return s + f", {self.roller.n_slices} coupled slices)"
+        self.n_slices = self.roller.n_slices
 
     @property
     def provenance(self):
         return {"model": self.label, "method": "coupled slices with Hertz strips "
                 "(linecontact.roller)", "profile": self.axial_profile.provenance,
-                "tilt_rad": self.tilt, "n_slices": self.roller.n_slices}
+                "tilt_rad": self.tilt, "n_slices": self.n_slices}
 
     def at_depth(self, depth):
         """:class:`RollerSolution` at depth d [m] and this model's tilt."""
@@ -1566,18 +1577,12 @@ class ISOSlicingModel(_SolvedRoller):
     key = "iso16281-slicing"
     no_profile_reason = "uncoupled slices, each with the empirical ISO/TS 16281 law"
 
+    _name = "ISO/TS 16281 slicing"
+
     def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=30):
-        super().__init__(radius, length, estar)
-        self.tilt = TILT_RANGE.check(tilt).item()
+        super().__init__(radius, length, estar, tilt)
         self.n_slices = n_slices
         self.axial_profile = _profile(profile, self.radius, self.length, self.estar)
-
-    @property
-    def label(self):
-        s = f"ISO/TS 16281 slicing ({self.axial_profile.label}"
-        if self.tilt:
-            s += f", tilt {self.tilt * 1e3:.4g} mrad"
-        return s + f", {self.n_slices} slices)"
 
     @property
     def provenance(self):

@@ -5,10 +5,10 @@ import numpy as np
 import pytest
 from scipy.integrate import dblquad
 
-from tools.cylinder import solve_depth, sweep
-from tools.halfspace import DCFFTOperator, SymmetricOperator, unfold
-from tools.influence import kernel_offsets, rectangle_displacement
-from tools.solver import ConvergenceError, solve_contact, solve_punch
+from tools.bem.cylinder import solve_depth, sweep
+from tools.bem.halfspace import DCFFTOperator, SymmetricOperator, unfold
+from tools.bem.influence import kernel_offsets, rectangle_displacement
+from tools.bem.solver import ConvergenceError, solve_contact, solve_punch
 
 
 # --- influence coefficients -------------------------------------------------------
@@ -71,7 +71,7 @@ def test_symmetric_operator_equals_dcfft_on_mirror_symmetric_fields(backend):
 
 @pytest.mark.parametrize("backend", ["scipy", "pyfftw"])
 def test_operators_take_another_kernel(backend):
-    """kernel= replaces Love's kernel (how tools.tangential_bem builds Cerruti's
+    """kernel= replaces Love's kernel (how tools.bem.tangential builds Cerruti's
     operators): Love's with E* = 1/2 given explicitly gives twice the default E* = 1
     field, since Love's coefficients scale as 1/E* (exact, so agreement to rounding);
     a kernel of the wrong size is refused, naming the size needed."""
@@ -173,7 +173,7 @@ def test_a_run_that_does_not_converge_says_so():
     sol = solve_contact(op, r2 / 2 - 0.01, 0.01, tol=1e-12, maxiter=3)
     assert not sol.converged and sol.error > 1e-12
     with pytest.raises(ConvergenceError, match="L/R = 5"):
-        import tools.cylinder as cyl
+        import tools.bem.cylinder as cyl
         orig = cyl.solve_contact
         try:
             cyl.solve_contact = lambda *a, **k: orig(*a, **{**k, "maxiter": 2})

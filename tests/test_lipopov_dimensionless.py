@@ -1,5 +1,5 @@
 """The dimensionless closed forms of Li & Popov (2017), Eq. 8-9, in linecontact.lipopov:
-the one home the BEM studies (tools/paper_fit.py, tools/universal_study.py) and the
+the one home the BEM studies (tools/studies/paper_fit.py, tools/studies/universal_study.py) and the
 figures call.
 
 Facts checked:

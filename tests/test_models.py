@@ -404,7 +404,7 @@ def test_accuracy_table_rows_are_reproduced_by_the_code(row):
     at a grid point is model/universal - 1 recomputed now, to 1e-9 (the models are closed
     forms and the universal spline; 1e-9 leaves room for rounding in the ratios only),
     or the same flag (98 not applicable, 99 no answer)."""
-    from tools.accuracy import (NO_ANSWER, NOT_APPLICABLE, comparison_models,
+    from tools.studies.accuracy import (NO_ANSWER, NOT_APPLICABLE, comparison_models,
                                 model_errors)
     c = read_table("model_accuracy").columns
     lr, dr = c["L_over_R"][row], c["d_over_R"][row]

@@ -1,4 +1,4 @@
-"""The paper's study rerun (tools/paper_study.py and the modules it is split into:
+"""The paper's study rerun (tools/studies/paper_study.py and the modules it is split into:
 paper_sweep, paper_fit, paper_tables, paper_compare) and its shipped tables.
 
 Facts checked:
@@ -21,10 +21,10 @@ from scipy.interpolate import CubicSpline
 from linecontact.lipopov import (coefficient_set, dimensionless_force,
                                  dimensionless_stiffness)
 from linecontact.tables import REQUIRED_KEYS, read_table
-from tools import paper_compare, paper_fit, paper_study
+from tools.studies import paper_compare, paper_fit, paper_study
 from tools.build_tables import main as build_tables
-from tools.paper_tables import CURVES, PUBLISHED_ERRORS, RESIDUAL_COMPARISON
-from tools.runner import code_version
+from tools.studies.paper_tables import CURVES, PUBLISHED_ERRORS, RESIDUAL_COMPARISON
+from tools.studies.runner import code_version
 
 REGEN = "lipopov_regenerated"
 
@@ -149,7 +149,7 @@ def test_coarse_run_end_to_end(tmp_path):
 def test_shipped_curve_reproduces_at_l_over_r_5(curves):
     """Rerunning L/R = 5 on the shipped grid gives the shipped F(d) to within the solver
     tolerance (a regression check of the BEM and of the table; about a minute)."""
-    from tools.cylinder import sweep
+    from tools.bem.cylinder import sweep
     c = curves.columns
     m = c["L_over_R"] == 5.0
     res = sweep(5.0, n=512, steps=100, d_max_over_r=0.15, tol=1e-6, workers=1,

@@ -143,7 +143,7 @@ def test_edge_loading_reports_no_peak_pressure():
 def test_infinite_end_drop_is_never_edge_loaded():
     """Lundberg's drop ln 1/(1 - (2x/L)^2) is infinite at x = +-L/2: the rigid overlap,
     and with it the contact, ends before the roller ends, where the pressure is finite
-    (3D BEM of tools/roller_bem.py at the same depth, R 5 mm, L 10 mm, 1 kN = F0:
+    (3D BEM of tools/bem/roller.py at the same depth, R 5 mm, L 10 mm, 1 kN = F0:
     contact ends 9.8 um before each end on 1024, 2048 and 4096 cells along x, peak
     973/972 MPa 28 um from the end). At its design load 100 slices put the contact into
     the last slice (6.25 um from the end): not edge loaded, the peak reported but not

@@ -1,4 +1,4 @@
-"""The 3D roller BEM (tools/roller_bem.py) against exact answers.
+"""The 3D roller BEM (tools/bem/roller.py) against exact answers.
 
 Each test states the fact it checks and why its tolerance is what it is. Grids are
 small (32 x 32 cells over the contact window, 64 x 64 for the DC-FFT), so the file
@@ -13,7 +13,7 @@ import pytest
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
-from tools.roller_bem import (first_contact_depth, grid_convergence, solve_roller,
+from tools.bem.roller import (first_contact_depth, grid_convergence, solve_roller,
                               solve_roller_force, tilt_punch)
 
 R, L, ESTAR = 0.010, 0.020, 115.385e9     # steel on steel: E = 210 GPa, nu = 0.3
@@ -195,7 +195,7 @@ def test_grid_convergence_report_extrapolates_with_the_known_order():
 def test_tilt_punch_solves_the_tilted_rigid_punch():
     """K_SS p = x on S from the symmetric scaled system: the displacement of the
     returned pressure is x on the footprint (to the solver tolerance)."""
-    from tools.halfspace import DCFFTOperator
+    from tools.bem.halfspace import DCFFTOperator
     op = DCFFTOperator(12, 6, 1.0, 0.5)
     S = np.zeros((12, 6), dtype=bool)
     S[2:11, 1:5] = True
@@ -240,15 +240,15 @@ def test_straight_roller_reproduces_the_universal_curve():
 
 
 def test_tool_docstring_examples_run():
-    """The Examples blocks of tools/roller_bem.py are doctests (tools/ is outside the
+    """The Examples blocks of tools/bem/roller.py are doctests (tools/ is outside the
     default doctest paths)."""
     import doctest
-    import tools.roller_bem
-    result = doctest.testmod(tools.roller_bem, optionflags=doctest.ELLIPSIS)
+    import tools.bem.roller
+    result = doctest.testmod(tools.bem.roller, optionflags=doctest.ELLIPSIS)
     assert result.failed == 0 and result.attempted >= 5
 
 
-# --- the accuracy study (tools/roller_study.py) ---------------------------------------
+# --- the accuracy study (tools/studies/roller_study.py) ---------------------------------------
 
 def test_study_case_compares_runtime_and_iso_with_the_bem():
     """One study case end to end on a small grid (32 x 16 and 64 x 32): a crowned
@@ -258,7 +258,7 @@ def test_study_case_compares_runtime_and_iso_with_the_bem():
     uncoupled slices miss the crowned roller's deflection by more than 1 % (measured
     3.2 % at this load: issue 9 quotes 6-15 % at light load against exact Hertz)."""
     pytest.importorskip("linecontact.roller")
-    import tools.roller_study as rs
+    import tools.studies.roller_study as rs
     task = next(t for t in rs.study_tasks(n_x=32, n_y=16, check_every=0)
                 if t["key"] == "A-circular_crown-q800-t1")
     out = rs.run_case(task)
@@ -282,7 +282,7 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
       deflection and moment (given tilt) and in the zero-moment tilt;
     (test_the_runtime_still_meets_the_shipped_table re-runs the runtime.)"""
     from linecontact.tables import read_table
-    import tools.roller_study as rs
+    import tools.studies.roller_study as rs
     t = read_table("roller_accuracy")
     c = t.columns
     for key in ("covered", "runtime_error", "iso_error", "grid", "cases"):
@@ -318,7 +318,7 @@ def test_the_runtime_still_meets_the_shipped_table():
     python -m tools.build_tables roller). Slow: the runtime takes 0.1-10 s per solve on
     the shared machine."""
     from linecontact.tables import read_table
-    import tools.roller_study as rs
+    import tools.studies.roller_study as rs
     c = read_table("roller_accuracy").columns
     off = c["bem_edge"] == 0
     for code in rs.PROFILES:

@@ -1,4 +1,4 @@
-"""The study runner (tools/runner.py) on Dask.
+"""The study runner (tools/studies/runner.py) on Dask.
 
 Facts checked:
 - a tiny study through a LocalCluster returns func(task) for every task, in task order
@@ -27,7 +27,7 @@ from pathlib import Path
 
 import pytest
 
-from tools.runner import (add_runner_arguments, code_version, run_study,
+from tools.studies.runner import (add_runner_arguments, code_version, run_study,
                           run_study_from_args, table_meta)
 
 REPO = Path(__file__).resolve().parent.parent

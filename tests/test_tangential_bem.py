@@ -1,5 +1,5 @@
-"""Verification of the tangential boundary-element solver (tools.influence's Cerruti
-coefficients, tools.tangential_bem) against exact answers: quadrature of Cerruti's
+"""Verification of the tangential boundary-element solver (tools.bem.influence's Cerruti
+coefficients, tools.bem.tangential) against exact answers: quadrature of Cerruti's
 kernel, the nu = 0 identity with the normal problem (any shape), the bonded circular
 punch and the Hertz sphere (Mindlin 1949; Mindlin & Deresiewicz 1953), the Masing rule,
 grid convergence and self-similarity for the finite cylinder. Each test states the
@@ -12,13 +12,13 @@ import pytest
 from scipy.integrate import dblquad
 
 from linecontact.tangential import mdr_stiffness_ratio
-import tools.influence
-import tools.tangential_bem
-from tools.cylinder import sweep
-from tools.halfspace import DCFFTOperator, SymmetricOperator, unfold
-from tools.influence import cerruti_rectangle, rectangle_displacement, shear_integrals
-from tools.solver import solve_contact, solve_punch
-from tools.tangential_bem import (cylinder_full_stick, cylinder_partial_slip,
+import tools.bem.influence
+import tools.bem.tangential
+from tools.bem.cylinder import sweep
+from tools.bem.halfspace import DCFFTOperator, SymmetricOperator, unfold
+from tools.bem.influence import cerruti_rectangle, rectangle_displacement, shear_integrals
+from tools.bem.solver import solve_contact, solve_punch
+from tools.bem.tangential import (cylinder_full_stick, cylinder_partial_slip,
                                   normal_force_on_grid,
                                   full_stick_stiffness, load_path, loop_dissipation,
                                   masing_dissipation, shear_modulus_for,
@@ -273,7 +273,7 @@ def test_bonded_rectangles_approach_the_plane_strain_and_antiplane_limits():
 
 
 def _grid(mx, my, dx, dy):
-    from tools.cylinder import Grid
+    from tools.bem.cylinder import Grid
     return Grid(mx, my, dx, dy)
 
 
@@ -397,7 +397,7 @@ def test_cylinder_full_stick_ratio_converges_with_the_grid():
 def test_cylinder_ratio_is_self_similar_in_d_tilde():
     """With the parabolic gap the problem depends on d~ = d R/L^2 alone (docs/theory.md,
     section 'Self-similarity'), in physical units too: L/R = 1 and 10 with the same d~,
-    different R and E*, on grids that scale with L (tools.cylinder.sweep) give the same
+    different R and E*, on grids that scale with L (tools.bem.cylinder.sweep) give the same
     k_t/k_n to the solver tolerance."""
     d_tilde, nu = 2e-3, 0.3
     out = []
@@ -417,7 +417,7 @@ def test_cylinder_ratio_is_self_similar_in_d_tilde():
 def test_tool_docstring_examples_run():
     """The Examples blocks of the two tool modules are doctests (tools/ is outside the
     default doctest paths)."""
-    for module in (tools.influence, tools.tangential_bem):
+    for module in (tools.bem.influence, tools.bem.tangential):
         result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
         assert result.failed == 0, f"{module.__name__}: {result.failed} doctest failures"
 
@@ -428,8 +428,8 @@ def test_the_neglected_cross_coupling_changes_the_cylinders_stiffness_by_under_1
     identical at nu = 0 (K_xy = 0), and for the cylinder's contact the coupling changes
     k_t by less than 1e-3 at nu = 0.5, where it is largest (measured 8e-4 at d~ = 1e-3;
     the cross term is odd, so it acts only through the second order)."""
-    from tools.tangential_bem import coupled_full_stick
-    from tools.cylinder import solve_depth
+    from tools.bem.tangential import coupled_full_stick
+    from tools.bem.cylinder import solve_depth
     r = solve_depth(1e-3, 24, 8, tol=1e-10, fields=True)
     g = r.grid
     full = unfold(r.pressure) > 0
@@ -503,7 +503,7 @@ def test_study_recipe_reproduces_a_shipped_row():
     grid read back from the header, gives the shipped k_t/k_n (same discrete problem:
     agreement to the solver tolerance, 1e-6)."""
     import re
-    from tools.tangential_study import solve_task
+    from tools.studies.tangential_study import solve_task
     t = _shipped()
     grid = t.meta["grid"]
     nl, nw = (int(v) for v in re.search(r"N = (\d+) cells along the half-length and (\d+)",
@@ -557,7 +557,7 @@ def test_runtime_partial_slip_law_off_the_nodes_is_within_2_percent_of_the_bem(d
     from scipy.interpolate import CubicSpline, PchipInterpolator
     from scipy.optimize import brentq
     from linecontact.tangential import cylinder_tangential_table
-    from tools.tangential_study import partial_slip_measures
+    from tools.studies.tangential_study import partial_slip_measures
     nu, d = 0.35, 2e-5
     t = cylinder_tangential_table()
     r = cylinder_full_stick(d, (nu,), 64, 16, tol=1e-9)
@@ -607,8 +607,8 @@ def test_normal_force_on_grid_refuses_an_unconverged_depth():
     """F(d') feeds the partial-slip laws of the study: a contact solution that misses
     its tolerance (here an unreachable 1e-30, below rounding) raises instead of passing
     its force on; at the default tolerance the same depths give F > 0 growing with d'."""
-    from tools.cylinder import Grid
-    from tools.solver import ConvergenceError
+    from tools.bem.cylinder import Grid
+    from tools.bem.solver import ConvergenceError
     g = Grid(8, 8, 0.5 / 8, 0.2 / 8)
     F = normal_force_on_grid(g, [0.0, 0.01, 0.02])
     assert F[0] == 0 and 0 < F[1] < F[2]

@@ -205,7 +205,7 @@ def test_runtime_agrees_with_a_coarse_bem_run(l_over_r, log_d_over_r):
     """For L/R in [0.1, 20] and d/R in [1e-6, 0.15], the runtime's F and k agree with
     an independent coarse BEM run at that very cylinder within the table's accuracy plus
     the coarse grid's error (F: 1e-3, k: 1e-2)."""
-    from tools.cylinder import solve_depth
+    from tools.bem.cylinder import solve_depth
     R = 1.0
     L = l_over_r * R
     d = 10 ** log_d_over_r * R
@@ -235,7 +235,7 @@ def test_table_rows_are_reproduced_by_the_code(row):
     """Data and code cannot drift apart: rerunning the study's own recipe (grids
     256/512 x 32, tolerance 1e-7, Richardson) at a tabulated depth gives the shipped
     Psi (the computation is deterministic; 1e-9 allows for FFT rounding)."""
-    from tools.cylinder import solve_depth
+    from tools.bem.cylinder import solve_depth
     d = TABLE.columns["d_tilde"][row]
     r1 = solve_depth(d, 256, 32, tol=1e-7, workers=1)
     r2 = solve_depth(d, 512, 32, tol=1e-7, workers=1)

@@ -2,12 +2,12 @@
 
 Roles, kept apart as in tamaas/ContactMechanics:
 
-- :mod:`tools.influence`  Love's influence coefficients of a rectangular cell.
-- :mod:`tools.halfspace`  the convolution operators (zero-padded DC-FFT, and its
+- :mod:`tools.bem.influence`  Love's influence coefficients of a rectangular cell.
+- :mod:`tools.bem.halfspace`  the convolution operators (zero-padded DC-FFT, and its
   mirror-symmetric DCT form), with an FFT backend chosen by name.
-- :mod:`tools.solver`     the Polonsky-Keer contact solver and the flat-punch
+- :mod:`tools.bem.solver`     the Polonsky-Keer contact solver and the flat-punch
   stiffness solver; unit-free.
-- :mod:`tools.cylinder`   drivers for the finite cylinder (paper sweep, adapted
+- :mod:`tools.bem.cylinder`   drivers for the finite cylinder (paper sweep, adapted
   single depths).
 - :mod:`tools.build_tables` writes tables/ .
 

@@ -1,21 +1,21 @@
 """Regenerate the computed tables in tables/ (the only writer of those files).
 
 Subcommands, each with its own options (``--help``); every study runs its tasks through
-tools.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoints and
-``--resume``) and writes headers with tools.runner.table_meta:
+tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoints and
+``--resume``) and writes headers with tools.studies.runner.table_meta:
 
 ``universal``
     The universal curve Psi(d~), Phi (docs/theory.md, section 'Self-similarity') on
-    adapted grids: tables/universal_curve.csv (tools.universal_study).
+    adapted grids: tables/universal_curve.csv (tools.studies.universal_study).
 ``paper``
     The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
-    beta: tables/lipopov_regenerated.csv and the raw curves (tools.paper_study).
+    beta: tables/lipopov_regenerated.csv and the raw curves (tools.studies.paper_study).
 ``roller``
     Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
-    tables/roller_accuracy.csv (tools.roller_study).
+    tables/roller_accuracy.csv (tools.studies.roller_study).
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
-    tables/tangential_cylinder.csv (tools.tangential_study).
+    tables/tangential_cylinder.csv (tools.studies.tangential_study).
 
 Run from the repository root, e.g.::
 
@@ -30,11 +30,11 @@ import importlib
 import sys
 
 SUBCOMMANDS = {
-    "universal": "tools.universal_study",
-    "paper": "tools.paper_study",
-    "roller": "tools.roller_study",
-    "tangential": "tools.tangential_study",
-    "accuracy": "tools.accuracy",
+    "universal": "tools.studies.universal_study",
+    "paper": "tools.studies.paper_study",
+    "roller": "tools.studies.roller_study",
+    "tangential": "tools.studies.tangential_study",
+    "accuracy": "tools.studies.accuracy",
 }
 
 

@@ -23,9 +23,9 @@ import time
 
 import numpy as np
 
-from tools.cylinder import Grid, sweep
-from tools.halfspace import DCFFTOperator, SymmetricOperator, unfold
-from tools.solver import solve_contact
+from tools.bem.cylinder import Grid, sweep
+from tools.bem.halfspace import DCFFTOperator, SymmetricOperator, unfold
+from tools.bem.solver import solve_contact
 
 
 def _time(fn, repeat):

@@ -2,7 +2,7 @@
 
 Solves the same displacement-controlled sweep twice in one run -- with
 ContactMechanics (FreeFFTElasticHalfSpace + constrained_conjugate_gradients, its
-free, non-periodic half-space) and with :func:`tools.cylinder.sweep` -- on the same
+free, non-periodic half-space) and with :func:`tools.bem.cylinder.sweep` -- on the same
 grid, the same depths and the same physical tolerance, and prints wall time and CPU
 time of each, their ratio, the largest relative force difference over the steps and
 the iteration counts. Issue 3, item 6; target: ours >= 3x faster per sweep, forces
@@ -138,7 +138,7 @@ def run_contactmechanics(args, nx, ny):
         cells[k] = contact.sum()
         iters[k] = res.nit
         nfev[k] = res.nfev
-        # our criterion (tools.solver.solve_contact) evaluated on their answer:
+        # our criterion (tools.bem.solver.solve_contact) evaluated on their answer:
         # largest |gap| on the contact set and largest penetration outside it, / d
         gap = res.x[:nx, :ny] - heights - d        # res.x = K * res.jac, same iterate
         gap_err[k] = max(np.abs(gap[contact]).max(initial=0.0),
@@ -159,7 +159,7 @@ def run_contactmechanics(args, nx, ny):
 
 # ---------------------------------------------------------------------------- ours
 def run_ours(args, nx, ny, stiffness):
-    from tools.cylinder import sweep
+    from tools.bem.cylinder import sweep
 
     params = inspect.signature(sweep).parameters
     kwargs = dict(n=(nx, ny), steps=args.steps, d_max_over_r=args.d_max_over_r,
@@ -186,7 +186,7 @@ def run_ours(args, nx, ny, stiffness):
 
 def kernel_difference(substrate, nx, ny, dx, dy, estar):
     """Largest relative difference between ContactMechanics' kernel and ours."""
-    from tools.influence import kernel_offsets
+    from tools.bem.influence import kernel_offsets
 
     unit = np.zeros(substrate.nb_domain_grid_pts)
     unit[0, 0] = -dx * dy
@@ -247,7 +247,7 @@ def main(argv=None):
 
     length, half_width, dx, dy, _, _ = grid(args.l_over_r, nx, ny, args.radius,
                                             args.d_max_over_r)
-    say("# finite-cylinder sweep: ContactMechanics vs tools.cylinder.sweep")
+    say("# finite-cylinder sweep: ContactMechanics vs tools.bem.cylinder.sweep")
     say(f"# {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; command: "
         f"python tools/benchmarks/bench_contactmechanics.py "
         + " ".join(argv if argv is not None else sys.argv[1:]))
@@ -268,7 +268,7 @@ def main(argv=None):
         # ... and as the study runs it: plus the flat-punch stiffness at every step
         if not args.skip_punch:
             runs.append(("ours (F + punch k)", run_ours(args, nx, ny, "punch")))
-        from tools.halfspace import default_workers
+        from tools.bem.halfspace import default_workers
         say(f"# ours: FFT backend {ours['backend']}, "
             f"{args.ours_workers or default_workers()} FFT threads; ContactMechanics: "
             f"muGrid FFTEngine, one thread")

@@ -5,10 +5,10 @@
 What it measures:
 
 1. accuracy, on every case of tables/roller_accuracy.csv (the BEM reference of
-   tools/roller_study.py, finer of two nested grids): the runtime coupled-slice model
+   tools/studies/roller_study.py, finer of two nested grids): the runtime coupled-slice model
    (linecontact.roller) and ISO/TS 16281 slicing are re-run now, at the case's force and
    tilt, and compared with the stored BEM deflection, moment and peak pressure (error
-   definitions: tools/roller_study.py). Targets (issue 9, item 8): runtime within 1 % in
+   definitions: tools/studies/roller_study.py). Targets (issue 9, item 8): runtime within 1 % in
    deflection and moment and within 5 % in peak pressure wherever the contact stays off
    the roller ends; elsewhere (edge loaded) and for ISO slicing the errors are stated.
 2. time per solve, CPU (time.process_time: what other jobs on a shared machine do not
@@ -30,8 +30,8 @@ from pathlib import Path
 
 import numpy as np
 
-from tools import roller_study as rs
-from tools.roller_bem import solve_roller_force
+from tools.studies import roller_study as rs
+from tools.bem.roller import solve_roller_force
 
 REPO = Path(__file__).resolve().parents[2]
 TARGETS = dict(depth=0.01, moment=0.01, p_max=0.05)

@@ -3,7 +3,7 @@
     OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_cpu [--repeat 3]
         [--save FILE.json] [--against FILE.json]
 
-Each case as the study runs it (tools/roller_study.py, ``runtime_case``): a new
+Each case as the study runs it (tools/studies/roller_study.py, ``runtime_case``): a new
 ``linecontact.roller.ProfiledRoller`` (100 slices) per case, then one
 ``at_force(F, tilt)`` (tilt None: zero moment), timed with ``time.process_time`` (CPU
 time, not wall: the shared machine's load does not enter); the cases run in table order
@@ -29,7 +29,7 @@ import numpy as np
 def run(repeat=1):
     from linecontact.roller import ProfiledRoller
     from linecontact.tables import read_table
-    from tools import roller_study as rs
+    from tools.studies import roller_study as rs
     from tools.benchmarks.bench_roller import _tasks_from_table
 
     table = read_table("roller_accuracy")

@@ -19,7 +19,7 @@
     set is S: d(K_SS^-1 (d - h)) / dd = K_SS^-1 1. Converged when the largest
     displacement error on S is at most ``tol`` (relative to the unit depth).
 
-The operator is any callable p -> K p on a fixed grid (see tools.halfspace); the
+The operator is any callable p -> K p on a fixed grid (see tools.bem.halfspace); the
 solvers do not know units, cell sizes or symmetry.
 """
 from __future__ import annotations

@@ -6,7 +6,7 @@ A shear traction on the surface of a half-space also moves it normally, by
 (1 - 2 nu)/(4 pi G) (x - xi)/r^2 per unit force (Johnson 1985, Eq. 3.86c), and a
 pressure moves it tangentially. This module neglects both couplings: the normal
 pressure p and contact set are those of the frictionless normal problem
-(tools.solver, tools.cylinder) and stay fixed while the tangential load acts. The
+(tools.bem.solver, tools.bem.cylinder) and stay fixed while the tangential load acts. The
 approximation is exact for nu = 0.5 (incompressible half-space) and for two bodies of
 the same material (quasi-identical bodies: the coupling terms cancel), and it is the
 assumption of Cattaneo-Mindlin theory and of the MDR's tangential rules (Popov & Hess
@@ -14,7 +14,7 @@ assumption of Cattaneo-Mindlin theory and of the MDR's tangential rules (Popov &
 (``direction`` 'x' or 'y'; the other component is zero): Mindlin's "slip parallel to
 the load" assumption. For the circle it is exact in full stick (Mindlin 1949: the
 bonded circular punch has q_y = 0) and in the stick zone of Cattaneo-Mindlin partial
-slip; elsewhere the cross coefficient K_xy of tools.influence is the neglected part.
+slip; elsewhere the cross coefficient K_xy of tools.bem.influence is the neglected part.
 :func:`coupled_full_stick` solves the two-component full-stick problem (u_y = 0
 imposed as well): on the finite cylinder it changed k_t by less than 1e-3 (measured
 2e-4 to 8e-4 at d~ = 1e-3, 1e-6 at d~ = 1e-6, nu = 0.3 and 0.5, 96-cell grids;
@@ -24,14 +24,14 @@ The discrete problem
 --------------------
 Cells of a grid carry uniform shear tractions q; the displacement at the cell centres
 along the shift is u = K q, K the Cerruti rectangle coefficients
-(tools.influence.cerruti_rectangle, K_xx for 'x', K_yy for 'y'), applied by the same
-FFT machinery as the normal problem (tools.halfspace: the DC-FFT for any field, the
+(tools.bem.influence.cerruti_rectangle, K_xx for 'x', K_yy for 'y'), applied by the same
+FFT machinery as the normal problem (tools.bem.halfspace: the DC-FFT for any field, the
 mirror-symmetric DCT form for fields even in x and y: a uniform shift of a contact set
 with both mirror planes gives an even traction, since K_xx and K_yy are even).
 
 Full stick: the contact set S moves rigidly by the shift delta, K_SS q = delta on S.
 That is the flat-punch problem with the tangential kernel, solved by
-tools.solver.solve_punch; the tangential stiffness k_t = sum(q) A_cell / delta.
+tools.bem.solver.solve_punch; the tangential stiffness k_t = sum(q) A_cell / delta.
 
 Partial slip with Coulomb friction, |q| <= mu p, under a shift history delta_1,
 delta_2, ... (each step from the state of the previous one: memory, so unloading and
@@ -113,9 +113,9 @@ def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=
                         backend="scipy", workers=None):
     """Free-space tangential operator q -> u along ``direction`` on a grid of cells.
 
-    The operators of tools.halfspace (DC-FFT, or its mirror-symmetric DCT form on one
+    The operators of tools.bem.halfspace (DC-FFT, or its mirror-symmetric DCT form on one
     quarter when ``symmetric``) with Cerruti's K_xx or K_yy in place of Love's kernel:
-    u_i = sum_j K(x_i - x_j) q_j (tools.influence.cerruti_rectangle).
+    u_i = sum_j K(x_i - x_j) q_j (tools.bem.influence.cerruti_rectangle).
 
     Parameters
     ----------
@@ -145,7 +145,7 @@ def tangential_operator(nx, ny, dx, dy, shear_modulus, nu, direction, symmetric=
     --------
     At nu = 0 the operator equals the normal one with E* = 2G:
 
-    >>> from tools.halfspace import SymmetricOperator
+    >>> from tools.bem.halfspace import SymmetricOperator
     >>> q = np.ones((4, 3))
     >>> ut = tangential_operator(4, 3, 1.0, 0.5, 0.5, 0.0, "x")(q)
     >>> un = SymmetricOperator(4, 3, 1.0, 0.5, estar=1.0)(q)
@@ -465,7 +465,7 @@ class CylinderTangential:
     kn: float                 #: normal stiffness Psi' = k_n/(E* L), punch on the set
     kt_across: np.ndarray     #: k_t/(E* L), shift across the axis (y), per nu
     kt_along: np.ndarray      #: k_t/(E* L), shift along the axis (x), per nu
-    normal: object            #: tools.cylinder.DepthResult (with the pressure field)
+    normal: object            #: tools.bem.cylinder.DepthResult (with the pressure field)
     iterations: int
     wall_time: float
 
@@ -488,7 +488,7 @@ def full_stick_stiffness(pressure, grid, estar, nu, direction, tol=1e-8, backend
     ----------
     pressure : ndarray
         Quarter pressure field (x > 0, y > 0); its support is the contact set [Pa].
-    grid : tools.cylinder.Grid
+    grid : tools.bem.cylinder.Grid
         The quarter grid (cells mx x my, sides dx, dy [m]).
     estar : float
         E* of the normal problem [Pa]; G = (1 - nu) E*/2 (rigid indenter).
@@ -501,7 +501,7 @@ def full_stick_stiffness(pressure, grid, estar, nu, direction, tol=1e-8, backend
 
     Returns
     -------
-    (float, tools.solver.Solution)
+    (float, tools.bem.solver.Solution)
         k_t [N/m] of the full (four-quarter) contact, and the solver result.
 
     Notes
@@ -513,8 +513,8 @@ def full_stick_stiffness(pressure, grid, estar, nu, direction, tol=1e-8, backend
     --------
     At nu = 0, k_t equals the normal flat-punch stiffness on the same set:
 
-    >>> from tools.cylinder import Grid
-    >>> from tools.halfspace import SymmetricOperator
+    >>> from tools.bem.cylinder import Grid
+    >>> from tools.bem.halfspace import SymmetricOperator
     >>> g = Grid(6, 6, 0.1, 0.1)
     >>> kt, _ = full_stick_stiffness(np.ones((6, 6)), g, 1.0, 0.0, "x", tol=1e-12)
     >>> kn = 4 * solve_punch(SymmetricOperator(6, 6, 0.1, 0.1), np.ones((6, 6)) > 0,
@@ -628,7 +628,7 @@ def cylinder_full_stick(d_tilde, nus=(0.0, 0.25, 0.3, 0.4, 0.5), n_length=128,
                         n_width=16, tol=1e-8, workers=1):
     """k_t/k_n of the finite cylinder in both directions at one d~ = d R/L^2.
 
-    Normal contact on the adapted grid of tools.cylinder.solve_depth (L = R = E* = 1),
+    Normal contact on the adapted grid of tools.bem.cylinder.solve_depth (L = R = E* = 1),
     then, on its contact set, the flat-punch problems with Love's kernel (k_n) and
     Cerruti's K_yy (across) and K_xx (along) for every nu.
 
@@ -687,7 +687,7 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
 
     Parameters
     ----------
-    grid : tools.cylinder.Grid
+    grid : tools.bem.cylinder.Grid
         Quarter grid [m].
     depths : sequence of float
         Depths d' [m], each solved warm-started from the previous (deepest first is
@@ -712,7 +712,7 @@ def normal_force_on_grid(grid, depths, estar=1.0, radius=1.0, tol=1e-9, workers=
 
     Examples
     --------
-    >>> from tools.cylinder import Grid
+    >>> from tools.bem.cylinder import Grid
     >>> g = Grid(8, 8, 0.5 / 8, 0.2 / 8)
     >>> F = normal_force_on_grid(g, [0.0, 0.01, 0.02])
     >>> bool(F[0] == 0 and 0 < F[1] < F[2])
@@ -751,7 +751,7 @@ def cylinder_partial_slip(normal, nu, direction, fractions, mu=1.0, tol=1e-8, wo
 
     Parameters
     ----------
-    normal : tools.cylinder.DepthResult
+    normal : tools.bem.cylinder.DepthResult
         Normal solution with its quarter pressure field (L = R = E* = 1).
     nu : float
         Poisson's ratio [-].

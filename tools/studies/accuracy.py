@@ -7,14 +7,14 @@ to trust where"). Run from the repository root::
     python -m tools.build_tables accuracy          # about 2 minutes on 2 cores
     python -m tools.build_tables accuracy --bem-points 0 0   # skip the BEM check (5 s)
 
-The 30 independent BEM solutions of the check run on the study runner (tools/runner.py:
+The 30 independent BEM solutions of the check run on the study runner (tools/studies/runner.py:
 a local Dask cluster by default, ``--scheduler ADDRESS`` for an existing one,
 ``--checkpoint DIR --resume`` to continue an interrupted run).
 
 Reference: the BEM. The universal curve *is* the BEM (exact scaling, docs/theory.md,
 section 'Self-similarity'; table accuracy in its header), so the other models are
 compared with it on a grid of L/R (0.1 ... 20) and d/R (1e-6 ... 0.15). The universal
-model itself is compared with independent BEM solutions (tools.cylinder.solve_depth, the
+model itself is compared with independent BEM solutions (tools.bem.cylinder.solve_depth, the
 table's own grids and Richardson step) at depths that are *not* table nodes, which
 measures its interpolation error plus the BEM's scatter.
 
@@ -41,9 +41,9 @@ from linecontact.classical import STEEL_ESTAR
 from linecontact.models import UniversalModel, get_model
 from linecontact.tables import available_tables, write_table
 from linecontact.validity import OutOfRangeError
-from tools.runner import add_runner_arguments, run_study_from_args, table_meta
+from tools.studies.runner import add_runner_arguments, run_study_from_args, table_meta
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 L_OVER_R = np.concatenate([np.round(np.arange(0.1, 1.0, 0.1), 1),
                            np.arange(1.0, 21.0, 1.0)])
 D_OVER_R = np.geomspace(1e-6, 0.15, 31)
@@ -128,7 +128,7 @@ def bem_check(task):
     table's Richardson step for F) against the universal model: (L/R, d/R, error of F,
     error of k)."""
     from linecontact.universal import universal_curve
-    from tools.cylinder import solve_depth
+    from tools.bem.cylinder import solve_depth
     curve = universal_curve()
     dt = task["d_tilde"]
     r1 = solve_depth(dt, 256, 32, tol=1e-7)
@@ -307,7 +307,7 @@ def run(args):
         getattr(args, "command_line", "python -m tools.build_tables accuracy"),
         title="Relative error of each model's F(d) and k(d) against the BEM (universal "
               "curve), model/BEM - 1",
-        source="python -m tools.build_tables accuracy (tools/accuracy.py, this "
+        source="python -m tools.build_tables accuracy (tools/studies/accuracy.py, this "
                "repository)",
         units="L_over_R [-], d_over_R [-], F_err_<model>, k_err_<model> [-] signed "
               f"relative errors; {NOT_APPLICABLE:g} = the model does not apply at this "

@@ -9,7 +9,7 @@ and the MDR profile (docs/theory.md, section 'MDR': x = k/(2E*), g = d) is g = (
 x~ = Psi'(d~)/2 and g~ = d~ (one Phi for all L/R).
 
 What this computes, per depth (log-spaced in d~, each on its own adapted grid,
-tools.cylinder.solve_depth with L = R = E* = 1):
+tools.bem.cylinder.solve_depth with L = R = E* = 1):
 
 1. Psi on two grids, n_length and 2 n_length cells along the half-length (n_width
    across the contact half-width on both). The force converges at first order in the
@@ -31,7 +31,7 @@ tools.cylinder.solve_depth with L = R = E* = 1):
 
 Budget: the default run (about 110 depths, 2 workers) is meant to finish within
 10 minutes on a 2-core machine; ``--workers`` (or ``--scheduler`` for a cluster) and the
-grid options trade time for accuracy. The depths are tasks of tools.runner: each
+grid options trade time for accuracy. The depths are tasks of tools.studies.runner: each
 finished depth is checkpointed (default OUT/partial_universal/) and ``--resume`` picks
 them up after an interruption.
 """
@@ -47,10 +47,10 @@ from linecontact.lipopov import effective_beta, fit_dimensionless_profile
 from linecontact.tables import Table
 from linecontact.universal import UniversalCurve
 
-from .cylinder import solve_depth
+from ..bem.cylinder import solve_depth
 from .runner import add_runner_arguments, run_study, table_meta, wall_time_line
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 
 
 def add_arguments(parser):
@@ -76,7 +76,7 @@ def add_arguments(parser):
 
 
 def _solve_one(task):
-    """One depth (a task of tools.runner): Psi on the grids N and 2N, and on the check
+    """One depth (a task of tools.studies.runner): Psi on the grids N and 2N, and on the check
     grids where asked."""
     d, nl, nw, tol, check = (task[k] for k in ("d_tilde", "n_length", "n_width", "tol",
                                                  "check"))
@@ -111,7 +111,7 @@ def depth_tasks(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32,
 
 def compute(d_min=1e-16, d_max=30.0, per_decade=6, n_length=256, n_width=32, tol=1e-7,
             check_every=6, **runner):
-    """Run the study through tools.runner.run_study (keyword options `runner`:
+    """Run the study through tools.studies.runner.run_study (keyword options `runner`:
     scheduler, workers, checkpoint, resume, progress); returns (columns, summary)."""
     tasks = depth_tasks(d_min, d_max, per_decade, n_length, n_width, tol, check_every)
     depths = np.array([t["d_tilde"] for t in tasks])

@@ -194,7 +194,7 @@ def cerruti_rectangle(x, y, dx, dy, shear_modulus=1.0, nu=0.0):
 
     with F_nu, F_1 of :func:`shear_integrals`. The normal displacement that a shear
     traction also causes, (1 - 2 nu)/(4 pi G) (x - xi)/r^2, is left out: the uncoupled
-    (Goodman 1962) approximation of tools.tangential_bem. At nu = 0 K_xx = K_yy =
+    (Goodman 1962) approximation of tools.bem.tangential. At nu = 0 K_xx = K_yy =
     (F_nu + F_1)/(2 pi G) is Love's normal coefficient with E* = 2 G (and K_zz =
     (1 - nu)(F_nu + F_1)/(2 pi G) is Love's for every nu).
 
@@ -252,7 +252,7 @@ def cerruti_kernel_offsets(nx, ny, dx, dy, shear_modulus=1.0, nu=0.0, component=
     along the traction at the centre of a cell shifted by (i dx, j dy) from the loaded
     one [m/Pa]. ``component`` 'xx' (traction and displacement along x) or 'yy' (along
     y); both are even in each offset, so these values define the whole kernel, and the
-    operators of tools.halfspace can use them (tools.tangential_bem).
+    operators of tools.bem.halfspace can use them (tools.bem.tangential).
     """
     i = np.arange(nx + 1) * dx
     j = np.arange(ny + 1) * dy

@@ -1,7 +1,7 @@
 """Convolution operators of the free (non-periodic) elastic half-space.
 
 Two operators map cell pressures to cell-centre displacements, u = K * p, with the
-influence coefficients of :mod:`tools.influence`:
+influence coefficients of :mod:`tools.bem.influence`:
 
 ``DCFFTOperator``
     The DC-FFT of Liu, Wang & Liu (2000): pressures on nx x ny cells are zero-padded
@@ -98,8 +98,8 @@ class DCFFTOperator:
         Threads for the FFTs.
     kernel : ndarray, optional
         Another kernel even in both offsets, as its values at offsets 0..nx, 0..ny
-        ((nx + 1) x (ny + 1), e.g. tools.influence.cerruti_kernel_offsets) [m/Pa]; by
-        default Love's normal one, tools.influence.kernel_offsets with `estar`
+        ((nx + 1) x (ny + 1), e.g. tools.bem.influence.cerruti_kernel_offsets) [m/Pa]; by
+        default Love's normal one, tools.bem.influence.kernel_offsets with `estar`
         (ignored when a kernel is given).
     """
 

@@ -4,7 +4,7 @@ The MDR gives every contact the tangential stiffness k_t = (G*/E*) k_n with
 G*/E* = 2(1-nu)/(2-nu) for a rigid indenter (Popov & Hess 2015, ch. 4), exact for
 axisymmetric contacts. The finite cylinder's contact is elongated, so its true k_t
 depends on the direction of the shift. This study measures it with the uncoupled
-(Goodman 1962) tangential BEM of tools.tangential_bem.
+(Goodman 1962) tangential BEM of tools.bem.tangential.
 
 Self-similarity: with the parabolic gap y^2/(2R), the normal problem depends on
 d~ = d R/L^2 alone (docs/theory.md, section 'Self-similarity'), and so does its
@@ -14,9 +14,9 @@ every L/R, one row per (nu, d~) in the table. tests/test_tangential_bem.py check
 physical units (L/R = 1 and 10, same d~); the run below repeats that check and records
 it in the header.
 
-Per depth d~ (one task of tools.runner.run_study, L = R = E* = 1):
+Per depth d~ (one task of tools.studies.runner.run_study, L = R = E* = 1):
 
-1. Normal contact on the adapted grid of tools.cylinder.solve_depth, at two
+1. Normal contact on the adapted grid of tools.bem.cylinder.solve_depth, at two
    resolutions: N = (n_length, n_width) and 2N (twice the cells along the half-length
    and across the contact half-width). On each contact set the flat-punch problems with
    Love's kernel (k_n) and Cerruti's (k_t, across = shift along y, the rolling
@@ -53,10 +53,10 @@ import numpy as np
 
 from linecontact.tangential import mdr_stiffness_ratio
 
-from .tangential_bem import (cylinder_full_stick, load_path,
+from ..bem.tangential import (cylinder_full_stick, load_path,
                              normal_force_on_grid, shear_modulus_for, tangential_operator)
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 NUS = (0.0, 0.25, 0.3, 0.4, 0.5)
 
 
@@ -188,7 +188,7 @@ def shift_ratios(u, f, u_gs_bem, kappa, d, F, f_of, levels=Q_LEVELS):
 
 def solve_task(task):
     """One depth: full stick on N and 2N, partial slip on N, for every nu (module
-    docstring). A module-level function of one picklable dict, for tools.runner."""
+    docstring). A module-level function of one picklable dict, for tools.studies.runner."""
     from scipy.interpolate import CubicSpline
     t0 = time.perf_counter()
     d, nus, nl, nw, tol = (task["d_tilde"], tuple(task["nus"]), task["n_length"],
@@ -230,10 +230,10 @@ def solve_task(task):
 
 def self_similarity_check(d_tilde=1e-3, nu=0.3, tol=1e-11):
     """k_t/k_n at the same d~ for L/R = 1 and 10 in physical units (different R, E*),
-    on grids that scale with L (tools.cylinder.sweep): the largest relative difference
+    on grids that scale with L (tools.bem.cylinder.sweep): the largest relative difference
     [-]."""
-    from .cylinder import sweep
-    from .tangential_bem import full_stick_stiffness
+    from ..bem.cylinder import sweep
+    from ..bem.tangential import full_stick_stiffness
     out = []
     for l_over_r, radius, estar in [(1.0, 0.01, 2.3e11), (10.0, 0.002, 5e9)]:
         L = l_over_r * radius
@@ -377,8 +377,8 @@ def run(args):
               "cylinder of finite length on an elastic half-space, across and along its "
               "axis, against d~ = d R/L^2 and nu, with the MDR's error and the partial-slip "
               "law's",
-        source="computed by the linecontact boundary-element solver (tools/tangential_bem.py, "
-               "tools/tangential_study.py): normal contact by Polonsky-Keer CG on Love's "
+        source="computed by the linecontact boundary-element solver (tools/bem/tangential.py, "
+               "tools/studies/tangential_study.py): normal contact by Polonsky-Keer CG on Love's "
                "coefficients, tangential problems on its contact set with Cerruti's "
                "rectangle coefficients (Pohrt & Li 2014), uncoupled (Goodman 1962), one "
                "traction component parallel to the shift",
@@ -424,7 +424,7 @@ def run(args):
                     "along (u0 = half the law's gross-slip shift)",
         self_similarity=f"L/R = 1 and 10 at d_tilde = 1e-3 in physical units (grids "
                         f"scaled with L): k_t/k_n differ by {similar:.1e}",
-        grid=f"per depth: adapted grids of tools.cylinder.solve_depth, N = {args.n_length} "
+        grid=f"per depth: adapted grids of tools.bem.cylinder.solve_depth, N = {args.n_length} "
              f"cells along the half-length and {args.n_width} across the contact "
              f"half-width, 2N = {2 * args.n_length} and {2 * args.n_width}; quarter grids "
              f"by symmetry; partial slip on {args.slip_n_length} along the half-length and "

@@ -1,5 +1,5 @@
 """Writers of the paper study's tables (self-describing CSV, linecontact.tables), with
-their headers from tools.runner.table_meta.
+their headers from tools.studies.runner.table_meta.
 
 ``bem_paper_curves.csv``
     The raw BEM curves, dimensionless: d, F, k, contact area per L/R and step.
@@ -34,7 +34,7 @@ def _write(path, meta, columns):
 
 def curves_from_results(results):
     """The column dict of bem_paper_curves.csv from the sweep results
-    (tools.paper_sweep.sweep_task); unconverged steps are left out."""
+    (tools.studies.paper_sweep.sweep_task); unconverged steps are left out."""
     cols = {k: [] for k in ("L_over_R", "step", "d_over_R", "F_over_EstarR2",
                             "k_over_EstarR", "area_over_R2", "d_tilde", "F_tilde",
                             "k_tilde", "x_tilde", "iterations", "gap_error")}
@@ -66,7 +66,7 @@ def write_curves(out, curves, command_line, run_meta):
         title="BEM curves of the paper's study: a rigid cylinder of length L, radius R "
               "pressed on its side into an elastic half-space, F, k, contact area "
               "against depth per L/R",
-        source="tools/paper_study.py (tools.cylinder.sweep: Love kernel, DC-FFT, "
+        source="tools/studies/paper_study.py (tools.bem.cylinder.sweep: Love kernel, DC-FFT, "
                "Polonsky-Keer CG, flat-punch stiffness), the study of Li & Popov 2017 "
                "section 3 rerun",
         units="L_over_R [-]; step [-] (1..steps); d_over_R = d/R [-]; "
@@ -107,10 +107,10 @@ def write_outputs(out, points, fits, residual, command_line, run_meta):
         command_line,
         title="Li & Popov Eq. 9 coefficients alpha, beta regenerated from our BEM rerun of "
               "the paper's study",
-        source="fitted by tools/paper_study.py to tables/bem_paper_curves.csv "
+        source="fitted by tools/studies/paper_study.py to tables/bem_paper_curves.csv "
                "(MDR profile extracted from the punch stiffness: x~ = k/(2 E* L), "
                "g~ = d R/L^2, Li & Popov 2017 Eq. 8-9)",
-        provenance="regenerated, tools/paper_study.py",
+        provenance="regenerated, tools/studies/paper_study.py",
         units="L_over_R [-], alpha [-], beta [-], max_rel_err_F [-], max_rel_err_k [-], "
               "n_points [-], d_max_over_R [-]",
         **run_meta,
@@ -136,7 +136,7 @@ def write_outputs(out, points, fits, residual, command_line, run_meta):
             command_line,
             title="F and k errors of the published coefficients (Li & Popov 2017 Table 1 "
                   "and Eq. 11) against our BEM rerun of the paper's study",
-            source="tools/paper_study.py, coefficients from tables/lipopov_published.csv "
+            source="tools/studies/paper_study.py, coefficients from tables/lipopov_published.csv "
                    "and Eq. 11/12 (alpha = pi/2, beta = 0.4573), BEM points from "
                    "bem_paper_curves.csv",
             units="L_over_R [-]; coefficient_set [-]: 1 = published Table 1 (its rows), "
@@ -155,7 +155,7 @@ def write_outputs(out, points, fits, residual, command_line, run_meta):
     _write(out / f"{RESIDUAL_COMPARISON}.csv", table_meta(
         command_line,
         title="Fits of Eq. 9 to the BEM points with different residuals",
-        source="tools/paper_study.py on bem_paper_curves.csv",
+        source="tools/studies/paper_study.py on bem_paper_curves.csv",
         units="L_over_R [-]; residual [-]: "
               + "; ".join(f"{v[0]} = {k} ({v[1]})" for k, v in RESIDUALS.items())
               + "; alpha, beta [-]; max_rel_err_F, max_rel_err_k [-]",

@@ -1,10 +1,10 @@
-"""The BEM sweeps of the paper's study, one task per L/R, run by tools.runner.
+"""The BEM sweeps of the paper's study, one task per L/R, run by tools.studies.runner.
 
 Each task presses a rigid cylinder of length L = L/R (R = E* = 1) into the half-space
-in equal steps from first contact to d_max (tools.cylinder.sweep with the flat-punch
+in equal steps from first contact to d_max (tools.bem.cylinder.sweep with the flat-punch
 stiffness) and returns the curves as plain arrays. The task key names L/R; the grid,
 steps, d_max, tolerance and backend are part of the task, so a checkpoint saved with
-other settings is not resumed (tools.runner).
+other settings is not resumed (tools.studies.runner).
 """
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from .runner import run_study
 
 def sweep_task(task):
     """One L/R (in a worker process): the sweep as plain arrays, R = E* = 1."""
-    from tools.cylinder import sweep
+    from tools.bem.cylinder import sweep
     t0, c0 = time.perf_counter(), time.process_time()
     res = sweep(task["l_over_r"], n=task["n"], steps=task["steps"],
                 d_max_over_r=task["d_max"], radius=1.0, estar=1.0, tol=task["tol"],
@@ -36,7 +36,7 @@ def sweep_tasks(l_over_r, n, steps, d_max, tol, backend=None):
 
 
 def run_sweeps(l_over_r, n, steps, d_max, tol, backend=None, **runner):
-    """The BEM sweeps for every L/R through :func:`tools.runner.run_study` (keyword
+    """The BEM sweeps for every L/R through :func:`tools.studies.runner.run_study` (keyword
     options `runner`: scheduler, workers, checkpoint, resume, progress); results sorted
     by L/R."""
     tasks = sweep_tasks(l_over_r, n, steps, d_max, tol, backend)

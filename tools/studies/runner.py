@@ -21,7 +21,7 @@ interrupted long study loses at most the tasks that were running.
 
 Example (a study is any module-level function of one task)::
 
-    from tools.runner import run_study
+    from tools.studies.runner import run_study
     results = run_study(solve, [{"key": "L5", "l_over_r": 5.0}, ...],
                         checkpoint="out/partial", resume=True, desc="paper study")
 """

@@ -20,14 +20,14 @@ the ends). Force and moment about the roller centre:
 
 Numerics (roles as in tools/):
 
-- Love's rectangle coefficients (tools.influence, Johnson 1985 Eq. 3.25) on cells that
+- Love's rectangle coefficients (tools.bem.influence, Johnson 1985 Eq. 3.25) on cells that
   may be thousands of times longer than wide;
-- the free-space zero-padded DC-FFT of Liu, Wang & Liu (2000) (tools.halfspace
+- the free-space zero-padded DC-FFT of Liu, Wang & Liu (2000) (tools.bem.halfspace
   DCFFTOperator) on the full grid: a tilt or an asymmetric profile has no mirror plane
   across the axis. (The gap is even in y, so a mirror in y would be legitimate; there
   is no operator symmetric in y only, and the full DC-FFT is exact for any field.)
 - the displacement-controlled constrained conjugate gradients of Polonsky & Keer
-  (1999) (tools.solver.solve_contact), with the tolerance on the gap relative to the
+  (1999) (tools.bem.solver.solve_contact), with the tolerance on the gap relative to the
   largest rigid interference max_x (d + theta x - P(x));
 - stiffnesses on the converged (fixed) contact set S: with the contact set held, the
   pressures are linear in (d, theta), p = K_SS^-1 (d + theta x - P - y^2/2R), so
@@ -39,11 +39,11 @@ Numerics (roles as in tools/):
       \\frac{\\partial F}{\\partial \\theta} = \\frac{\\partial M}{\\partial d}
           = \\int x\\, K_{SS}^{-1} 1 ,
 
-  the first by tools.solver.solve_punch (a rigid flat punch, as tools/cylinder.py),
+  the first by tools.bem.solver.solve_punch (a rigid flat punch, as tools/bem/cylinder.py),
   the "tilt punch" K_SS p = x by the same solver on the symmetric scaled operator
   W^-1 K W^-1 with W = diag(x - c), c < min x (see :func:`tilt_punch`).
 
-Grids, adapted to the load (as tools.cylinder.solve_depth does across the axis):
+Grids, adapted to the load (as tools.bem.cylinder.solve_depth does across the axis):
 the contact lies inside the rigid interference region {d + theta x - P(x) > y^2/2R}
 (the displacement is positive), so a first pass on that region's bounding box finds
 the contact; the second pass covers the contact's bounding box times ``margin`` in x
@@ -382,7 +382,7 @@ def tilt_punch(op, footprint, x, tol=1e-8, p0=None):
 
     With c chosen so that w = x - c lies in [s/2, 3s/2] (s: the window's extent in x,
     centred on its middle x_m: c = x_m - s), W^-1 K W^-1 is symmetric positive definite
-    like K, so the flat-punch conjugate gradients (tools.solver.solve_punch) apply
+    like K, so the flat-punch conjugate gradients (tools.bem.solver.solve_punch) apply
     unchanged; then K p_w = x - c and p = p_w + c K_SS^-1 1.
 
     Parameters
@@ -394,7 +394,7 @@ def tilt_punch(op, footprint, x, tol=1e-8, p0=None):
     x : ndarray
         Cell-centre x of the grid columns (length nx) [m].
     tol : float
-        Solver tolerance, relative (see tools.solver.solve_punch) [-].
+        Solver tolerance, relative (see tools.bem.solver.solve_punch) [-].
     p0 : ndarray, optional
         Start for K_SS^-1 1 (e.g. contact pressure / depth) [Pa/m].
 
@@ -412,7 +412,7 @@ def tilt_punch(op, footprint, x, tol=1e-8, p0=None):
     Examples
     --------
     >>> import numpy as np
-    >>> from tools.halfspace import DCFFTOperator
+    >>> from tools.bem.halfspace import DCFFTOperator
     >>> op = DCFFTOperator(8, 4, 1.0, 1.0)
     >>> S = np.ones((8, 4), dtype=bool)
     >>> x = np.arange(8) + 0.5 - 4
@@ -508,7 +508,7 @@ def solve_roller(radius, length, estar, depth, tilt=0.0, profile=None, n_x=64, n
     fields : bool
         Keep the pressure field.
     backend : {'scipy', 'pyfftw'}
-        FFT backend (tools.halfspace).
+        FFT backend (tools.bem.halfspace).
     workers : int, optional
         FFT threads.
 

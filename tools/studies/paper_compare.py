@@ -1,6 +1,6 @@
 """Grid convergence of the paper's study: F(d), k(d) of two runs on different grids.
 
-    python -m tools.paper_compare COARSE_DIR FINE_DIR
+    python -m tools.studies.paper_compare COARSE_DIR FINE_DIR
 
 Each folder holds a bem_paper_curves.csv written by ``python -m tools.build_tables paper
 --out DIR``; the largest relative change of F and k over the depths both runs share is
@@ -41,7 +41,7 @@ def compare_curves(coarse, fine):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(prog="python -m tools.paper_compare",
+    p = argparse.ArgumentParser(prog="python -m tools.studies.paper_compare",
                                 description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("coarse", type=Path, help="folder of the coarser run")

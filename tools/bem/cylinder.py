@@ -6,7 +6,7 @@ effective modulus E*. The gap before loading is h(y) = y^2/(2R) for |x| <= L/2 a
 there is no indenter beyond the flat ends, so the grid covers the cylinder's
 footprint only; the zero padding of the operator makes the surface around it free.
 Both mirror planes (x = 0, y = 0) are used: the solvers work on one quarter
-(tools.halfspace.SymmetricOperator) and forces are four times the quarter's.
+(tools.bem.halfspace.SymmetricOperator) and forces are four times the quarter's.
 
 Two drivers:
 
@@ -25,7 +25,7 @@ Two drivers:
     in y.
 
 The stiffness k = dF/dd is the force of a rigid flat punch whose footprint is the
-converged contact set, at unit depth (tools.solver.solve_punch): the exact derivative
+converged contact set, at unit depth (tools.bem.solver.solve_punch): the exact derivative
 of the discrete F(d) while the contact set does not change. ``stiffness='difference'``
 uses ``numpy.gradient`` of F(d) instead (second-order inside, first-order at the first
 and last step; sweep only).
@@ -126,7 +126,7 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     radius, estar : float
         R [m] and E* [Pa]; results scale as F ~ E* R^2 at fixed L/R, d/R.
     tol : float
-        Contact-solver tolerance: largest gap error / d (tools.solver).
+        Contact-solver tolerance: largest gap error / d (tools.bem.solver).
     stiffness : {'punch', 'difference', None}
     backend : {'scipy', 'pyfftw'}, optional
         FFT backend; default pyfftw when installed.

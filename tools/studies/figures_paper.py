@@ -1,6 +1,6 @@
-"""Figures of the paper's study rerun (tools/paper_study.py), as PNG in docs/figures/.
+"""Figures of the paper's study rerun (tools/studies/paper_study.py), as PNG in docs/figures/.
 
-    python -m tools.figures_paper [--tables tables] [--out docs/figures] [--n 512]
+    python -m tools.studies.figures_paper [--tables tables] [--out docs/figures] [--n 512]
 
 Reads tables/bem_paper_curves.csv, tables/lipopov_regenerated.csv,
 tables/lipopov_published.csv and tables/paper_residual_comparison.csv; only the
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _plt():
@@ -37,7 +37,7 @@ def _plt():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover
-        sys.exit("tools/figures_paper.py needs matplotlib: pip install 'linecontact[tools]'")
+        sys.exit("tools/studies/figures_paper.py needs matplotlib: pip install 'linecontact[tools]'")
     plt.rcParams.update({"font.size": 10, "axes.grid": True, "grid.alpha": 0.3,
                          "figure.dpi": 110, "savefig.dpi": 130})
     return plt
@@ -45,7 +45,7 @@ def _plt():
 
 def _load(tables):
     from linecontact.tables import read_table
-    from tools.paper_tables import CURVES, REGENERATED, RESIDUAL_COMPARISON
+    from tools.studies.paper_tables import CURVES, REGENERATED, RESIDUAL_COMPARISON
     cur = read_table(CURVES, directory=tables)
     reg = read_table(REGENERATED, directory=tables)
     pub = read_table("lipopov_published")
@@ -115,7 +115,7 @@ def fig4(plt, reg, pub, comp, out):
     from scipy.interpolate import CubicSpline
 
     from linecontact.lipopov import ALPHA_EQ11, BETA_EQ11
-    from tools.paper_fit import RESIDUALS
+    from tools.studies.paper_fit import RESIDUALS
     r, p = reg.columns, pub.columns
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), constrained_layout=True)
     q = np.geomspace(r["L_over_R"].min(), r["L_over_R"].max(), 300)
@@ -190,7 +190,7 @@ def fig7(plt, cur, reg, out):
 
 
 def fig2(plt, out, n=512, l_over_r=5.0, d_over_r=0.1):
-    from tools.cylinder import sweep
+    from tools.bem.cylinder import sweep
     res = sweep(l_over_r, n=n, steps=20, d_max_over_r=d_over_r, fields=True,
                 stiffness=None, progress=False)
     p = res.pressure[-1]                      # full field, rows along x (axis)
@@ -228,7 +228,7 @@ def fig2(plt, out, n=512, l_over_r=5.0, d_over_r=0.1):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog="python -m tools.figures_paper",
+    ap = argparse.ArgumentParser(prog="python -m tools.studies.figures_paper",
                                  description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--tables", type=Path, default=ROOT / "tables",

@@ -6,10 +6,10 @@ Writes tables/roller_accuracy.csv and docs/figures/roller_accuracy.png
 What it computes, per case (a roller, a profile, a force F and a tilt theta, or no
 tilt: the roller free to tilt, zero moment):
 
-1. The reference: the 3D boundary-element solution of tools.roller_bem at the force F
+1. The reference: the 3D boundary-element solution of tools.bem.roller at the force F
    and the given tilt (Newton on the approach d; on (d, theta) where the tilt is free),
    on an adapted window with ``n_x`` x ``n_y`` cells and again with twice as many in
-   each direction on the same window (tools.roller_bem.grid_convergence). The
+   each direction on the same window (tools.bem.roller.grid_convergence). The
    reference is the finer grid; the change between the two grids is its stated
    resolution (columns ``bem_change_*``); every ``check_every``-th case is also solved
    on a third grid (4x) and the observed orders go to the header. A case is *edge
@@ -42,7 +42,7 @@ F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 Budget: measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
 shared 2-core VM (2 Dask workers; the longer two at load average 8-16; the table's
 header line ``wall_time``); the cases are independent, so the study runs through
-tools.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28
+tools.studies.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28
 cases (about 2 min).
 """
 from __future__ import annotations
@@ -52,10 +52,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .roller_bem import grid_convergence, solve_roller_force
+from ..bem.roller import grid_convergence, solve_roller_force
 from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 
 ESTAR = 115.385e9            #: steel on steel, E = 210 GPa, nu = 0.3 [Pa]
 DIAMETER = 0.010             #: roller diameter D [m]
@@ -228,7 +228,7 @@ def errors(ref, got, task):
 
 def run_case(task):
     """One study case: the BEM reference, the runtime and ISO slicing, and their errors
-    (a module-level function of one task, for tools.runner.run_study)."""
+    (a module-level function of one task, for tools.studies.runner.run_study)."""
     ref = bem_case(task)
     out = {f"bem_{k}": v for k, v in ref.items()}
     for name, fn in (("rt", runtime_case), ("iso", iso_case)):
@@ -493,7 +493,7 @@ def run(args):
         args.command_line,
         title="Accuracy of the runtime profiled-roller model (linecontact.roller) and of "
               "ISO/TS 16281 slicing against a 3D boundary-element solution",
-        source="computed: tools/roller_bem.py (Love's rectangle coefficients, free-space "
+        source="computed: tools/bem/roller.py (Love's rectangle coefficients, free-space "
                "DC-FFT, Polonsky-Keer CG, Newton on the approach at the given force and "
                "tilt) against linecontact.roller",
         units=units,

@@ -2,7 +2,7 @@
 
 Li & Popov (2017), section 3 (docs/theory.md, section 'BEM'): for L/R = 0.1, 0.2, ...,
 1.0 and 2, 3, ..., 20 (29 values) a rigid cylinder is pressed into the half-space in 100 equal
-steps from first contact to d = 0.15 R on a 512 x 512 grid (tools.cylinder.sweep, punch
+steps from first contact to d = 0.15 R on a 512 x 512 grid (tools.bem.cylinder.sweep, punch
 stiffness). Each curve k(d) is turned into its MDR profile by extraction (docs/theory.md,
 section 'MDR'; linecontact.mdr.mdr_profile_from_stiffness),
 
@@ -11,17 +11,17 @@ section 'MDR'; linecontact.mdr.mdr_profile_from_stiffness),
 and alpha, beta of Eq. 9, g~ = beta (alpha/x~ + 1) exp(-alpha/x~), are fitted to the
 points by least squares. The paper does not say how it weighted the residuals, and
 alpha and beta are strongly correlated, so several natural residuals are tried
-(tools.paper_fit.RESIDUALS), each fit is judged by what a user gets from it (the largest
+(tools.studies.paper_fit.RESIDUALS), each fit is judged by what a user gets from it (the largest
 relative error of F(d) and of k(d) of the fitted closed form, evaluated with the
 runtime's linecontact.lipopov_force / lipopov_stiffness, against the BEM points), and
 the residual with the smallest errors is shipped (``--residual``, default
-tools.paper_fit.SHIPPED_RESIDUAL).
+tools.studies.paper_fit.SHIPPED_RESIDUAL).
 
-The work is split by concern: this module is the command line; tools.paper_sweep the
-BEM tasks, run by tools.runner (a Dask cluster: local by default, ``--scheduler
-ADDRESS`` for an existing one); tools.paper_fit the extraction and the fits (on the
-runtime's closed forms, linecontact.lipopov); tools.paper_tables the writers;
-tools.paper_compare the grid-convergence comparison of two runs.
+The work is split by concern: this module is the command line; tools.studies.paper_sweep the
+BEM tasks, run by tools.studies.runner (a Dask cluster: local by default, ``--scheduler
+ADDRESS`` for an existing one); tools.studies.paper_fit the extraction and the fits (on the
+runtime's closed forms, linecontact.lipopov); tools.studies.paper_tables the writers;
+tools.studies.paper_compare the grid-convergence comparison of two runs.
 
 Writes into ``--out`` (default ``tables/``):
 
@@ -49,7 +49,7 @@ takes seconds::
 ``--from-curves FILE`` refits from a saved bem_paper_curves.csv without running the BEM.
 Grid convergence (F(d) of two runs on different grids)::
 
-    python -m tools.paper_compare RUN_DIR_A RUN_DIR_B
+    python -m tools.studies.paper_compare RUN_DIR_A RUN_DIR_B
 """
 from __future__ import annotations
 
@@ -110,7 +110,7 @@ def add_arguments(parser):
 
 
 def _default_out():
-    return Path(__file__).resolve().parent.parent / "tables"
+    return Path(__file__).resolve().parents[2] / "tables"
 
 
 def _refit_meta(args, table):

@@ -1093,7 +1093,7 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
     -----
     Valid for any positive points; the fit is exact on points of Eq. 9 itself. alpha
     and beta are strongly correlated, so fit over the depths where the form is to be
-    used (the paper's study compares other residuals in tools/paper_fit.py).
+    used (the paper's study compares other residuals in tools/studies/paper_fit.py).
 
     Examples
     --------

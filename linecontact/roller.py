@@ -70,7 +70,7 @@ there grows without bound as the slices are refined. The solution then reports
 ``edge_loaded = True`` and ``p_max = None`` with a message, never a grid-dependent
 number.
 
-Measured range: ``tables/roller_accuracy.csv`` (tools/roller_study.py) maps this
+Measured range: ``tables/roller_accuracy.csv`` (tools/studies/roller_study.py) maps this
 model's error against a 3D boundary-element solution over L/D, the mean line load
 q/(E* D) (D = 2R), the tilt, the tilt's drop over the approach and the profile; its
 header states that range as data (``covered_*`` fields) and the largest errors inside it

@@ -949,3 +949,36 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     if name == "lundberg":
         return LundbergProfile(length, estar, **kw)
     return JohnsGoharProfile(length, need("radius", radius, "m"), estar, **kw)
+
+
+def as_profile(profile, radius, length, estar):
+    """A roller's profile from a :class:`Profile`, a spec (:func:`parse_profile`, read
+    with this R, L, E*) or None (straight); anything else is refused."""
+    if profile is None:
+        return StraightProfile(length)
+    if isinstance(profile, str):
+        return parse_profile(profile, length=length, radius=radius, estar=estar)
+    if not isinstance(profile, Profile):
+        raise OutOfRangeError("profile", repr(profile),
+                              "a linecontact.profiles.Profile, a profile spec or None")
+    return profile
+
+
+def roller_drop(profile, length, x, ends_may_be_inf=False):
+    """The drop P(x) [m] of `profile` on a roller of length L, checking that the profile
+    covers -L/2 <= x <= L/2 and that the drop is finite and >= 0 (or +inf exactly at an
+    end, where a logarithmic profile is infinite, if `ends_may_be_inf`)."""
+    tol = 1e-12 * length
+    if profile.x_min > -length / 2 + tol or profile.x_max < length / 2 - tol:
+        raise OutOfRangeError("profile", profile.label,
+                              f"a profile covering [{-length / 2:.6g}, {length / 2:.6g}] m",
+                              hint=f"it covers [{profile.x_min:.6g}, {profile.x_max:.6g}] m")
+    P = np.asarray(profile.drop(np.clip(x, profile.x_min, profile.x_max)), dtype=float)
+    ok = np.isfinite(P) & (P >= 0)
+    if ends_may_be_inf:
+        ok |= np.isposinf(P) & (np.abs(x) >= length / 2 * (1 - 1e-12))
+    if not np.all(ok):
+        i = int(np.flatnonzero(~ok)[0])
+        raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
+                              where=f"at x = {x[i]:.6g} m")
+    return P

@@ -47,7 +47,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import OutOfRangeError, check_interval, check_positive
+from .validity import Interval, OutOfRangeError, check_interval, check_positive
 
 __all__ = [
     "Profile",
@@ -64,7 +64,12 @@ __all__ = [
     "ISO16281_LONG",
     "parse_profile",
     "parse_angle",
+    "TILT_RANGE",
 ]
+
+#: Tilts theta of the roller's axis accepted by the roller models (the gap linearises
+#: the tilt, theta x, for small angles) [rad].
+TILT_RANGE = Interval("tilt", -0.1, 0.1, low_open=True, high_open=True, unit="rad")
 
 #: The constant of the Johns-Gohar profile, (1 - C b/a) (Johns & Gohar 1981).
 JOHNS_GOHAR_C = 0.3033

@@ -426,7 +426,7 @@ class ContactResult(_Result):
 
     Examples
     --------
-    >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9)
+    >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9, n_slices=40)
     >>> r = c.normal(force=1e3)
     >>> f"{r.depth * 1e6:.3f} um, p0 {r.peak_pressure / 1e6:.0f} MPa", r.model
     ('7.431 um, p0 1522 MPa', 'profiled-roller')
@@ -488,7 +488,7 @@ class TangentialResult(_Result):
     Examples
     --------
     >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), material1=Elastic(210e9, 0.3),
-    ...             material2=Elastic(210e9, 0.3))
+    ...             material2=Elastic(210e9, 0.3), n_slices=40)
     >>> t = c.tangential(0.15, force=1e3, tangential_force=-50.0)
     >>> t.state, f"{t.shift * 1e9:.1f} nm"
     ('partial slip', '-320.6 nm')
@@ -635,7 +635,8 @@ class Contact:
     The crowned cam follower of docs/composition.md (steel on steel):
 
     >>> steel = Elastic(210e9, 0.3)
-    >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel)
+    >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel,
+    ...             n_slices=40)
     >>> r = c.normal(force=2e3)
     >>> f"{r.depth * 1e6:.2f} um, k {r.stiffness / 1e6:.0f} N/um"
     '13.21 um, k 227 N/um'
@@ -1044,7 +1045,8 @@ class Contact:
         Examples
         --------
         >>> steel = Elastic(210e9, 0.3)
-        >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel)
+        >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel,
+        ...             n_slices=40)
         >>> t = c.tangential(0.15, force=2e3, tangential_force=100.0)
         >>> f"k_t {t.stiffness / 1e6:.0f} N/um, {t.state}"
         'k_t 187 N/um, partial slip'
@@ -1160,7 +1162,8 @@ class Contact:
         --------
         >>> from linecontact.viscoelastic import StandardLinearSolid
         >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.2), material1=Elastic(210e9, 0.3),
-        ...             material2=Viscoelastic(StandardLinearSolid(3e9, 1e9, 10.0), 0.4))
+        ...             material2=Viscoelastic(StandardLinearSolid(3e9, 1e9, 10.0), 0.4),
+        ...             n_slices=40)
         >>> r = c.creep([0.0, 1e4], force=100.0)
         >>> f"{r.depth[1] / r.depth[0]:.3f}"
         '2.066'

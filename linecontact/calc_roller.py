@@ -132,7 +132,7 @@ def _solve(cases, errors):
     from ._units import InputError, range_error_parts
     from .cases import option_name as label
     from .roller import ProfiledRoller, iso_slicing
-    from .validity import OutOfRangeError
+    from .validity import OutOfRangeError, UnknownNameError
 
     n = len(errors)
     coupled = {"label": "", "rows": [None] * n, "notes": [""] * n}
@@ -158,6 +158,13 @@ def _solve(cases, errors):
             elif exc.parameter == "design_force":  # lundberg/johns-gohar under --depth
                 reason += f" (give F0=.. in the spec, or {label('load')})"
             errors[i] = str(InputError(option, typed, valid, reason))
+            continue
+        except UnknownNameError as exc:  # an unknown profile or option name
+            option, typed = label("profile"), spec
+            reason = ("not a profile" if exc.parameter == "profile"
+                      else f"unknown {exc.parameter} {exc.value!r}")
+            errors[i] = str(InputError(option, typed, "one of " + ", ".join(exc.valid),
+                                       reason))
             continue
         key = (prof.label, R, L, E)
         if key not in rollers:

@@ -53,8 +53,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import (OutOfRangeError, check_flag, check_interval, check_positive,
-                       document, out)
+from .validity import (OutOfRangeError, UnknownNameError, check_flag, check_interval,
+                       check_positive, document, out)
 
 __all__ = [
     "ContactModel",
@@ -1061,8 +1061,10 @@ def get_model(key, radius, length, estar, **options):
 
     Raises
     ------
+    UnknownNameError
+        Unknown key (the message lists the valid ones).
     OutOfRangeError
-        Unknown key (the message lists the valid ones) or bad R, L, E*.
+        Bad R, L, E*.
     FileNotFoundError
         The model's table is missing (the message names the file).
 
@@ -1078,13 +1080,12 @@ def get_model(key, radius, length, estar, **options):
     >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
+    linecontact.validity.UnknownNameError: model = 'hertz' is not a known name; valid: ...
     """
     if key not in MODELS and key in DEFINED_IN:
         import_module(DEFINED_IN[key])
     if key not in MODELS:
-        raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in available_models()))
+        raise UnknownNameError("model", key, available_models())
     return MODELS[key](radius, length, estar, **options)
 
 

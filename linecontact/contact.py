@@ -589,6 +589,17 @@ class _ApproachLaw(ContactModel):
                                                                 self.tilt).stiffness)
 
 
+def _split(sol):
+    """A RacewaySolution over an array of loads as one RacewaySolution per load."""
+    from dataclasses import fields, replace
+
+    arrays = {f.name: np.asarray(getattr(sol, f.name)) for f in fields(sol)
+              if isinstance(getattr(sol, f.name), np.ndarray)}
+    shape = np.shape(sol.force)
+    return tuple(replace(sol, **{k: float(v[idx]) for k, v in arrays.items()})
+                 for idx in np.ndindex(*shape))
+
+
 # --------------------------------------------------------------------------------------
 class Contact:
     """A roller against a counter-body, of given materials: every output of the contact.
@@ -623,6 +634,24 @@ class Contact:
         raceways that do not fit the roller.
     UnknownNameError
         An unknown model key.
+
+    Attributes
+    ----------
+    estar : float
+        E* [Pa] (instantaneous, E*(0), with a viscoelastic body).
+    gstar : float or None
+        G* [Pa]; None when the contact was given by estar or is viscoelastic.
+    relaxation : PronySeries or None
+        E*(t) with a viscoelastic body.
+    radius : float or None
+        Effective radius of the single contact [m] (None between raceways).
+    profile : Profile
+        The roller's profile, read.
+    tilt : float or str
+        The roller's tilt [rad] or ``"free"``.
+    model : str
+        The model used; ``sliced`` True for a slice model, ``raceways`` True between
+        raceways; ``n_slices`` and ``options`` as given.
 
     Notes
     -----
@@ -964,12 +993,15 @@ class Contact:
             **({"force": v} if force is not None else {"deflection": v}), **kw)
             for v in vals)
 
+        s0 = sols[0]
+
         def arr(name):
             if one:
-                return getattr(sols[0], name)
+                return getattr(s0, name)
             return out(np.array([getattr(s, name) for s in sols]))
 
-        s0 = sols[0]
+        if one and np.ndim(s0.force):
+            sols = _split(s0)       # one solution per load, as for a slice model
         reasons = {}
         why_q = ({"counterbody": "Raceways"}, "a whole roller has two load distributions: "
                  "see solutions[i].inner.q and .outer.q")

@@ -198,6 +198,20 @@ def test_raceways_in_a_contact_are_the_whole_roller():
     assert r.stiffness == s.stiffness
 
 
+def test_a_law_between_raceways_gives_one_solution_per_load():
+    """Over an array of loads a law between raceways returns the arrays and one
+    RacewaySolution per load, each equal to that load solved alone (to rounding)."""
+    c = Contact(Roller(5e-3, 10e-3), Raceways(20e-3, 30e-3), STEEL, STEEL)
+    r = c.normal(force=[1e3, 2e3, 3e3])
+    assert len(r.solutions) == 3
+    for k, F in enumerate((1e3, 2e3, 3e3)):
+        one = c.normal(force=F)
+        assert r.depth[k] == pytest.approx(one.depth, rel=1e-14)
+        assert r.solutions[k].deflection == pytest.approx(one.depth, rel=1e-14)
+        assert r.solutions[k].peak_pressure_outer == pytest.approx(
+            one.solutions[0].peak_pressure_outer, rel=1e-14)
+
+
 def test_effective_radius_of_each_counterbody():
     """Flat: R1; convex: 1/(1/R1 + 1/R2); concave: 1/(1/R1 - 1/R2) (Johnson 1985,
     section 4.2), radii or diameters alike."""

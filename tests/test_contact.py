@@ -319,3 +319,23 @@ def test_a_tilted_rollers_law_is_refused_by_the_laws_that_need_f0_zero():
     assert t.state == "partial slip" and t.shift > 0
     assert t.normal.approach == pytest.approx(t.normal.depth + (1e-3) ** 2 * 0.2 / 2,
                                               rel=1e-9)
+
+
+def test_bem_tangential_of_a_straight_cylinder_is_the_tables_and_refused_for_a_crown():
+    """method='bem' gives a straight cylinder's direction-dependent k_t and shift, the
+    same as linecontact.tangential.TangentialContact on the same law (1e-12); a crowned
+    roller is refused (the table is for a straight, aligned cylinder)."""
+    from linecontact.models import get_model
+    from linecontact.tangential import TangentialContact
+
+    c = Contact(Roller(5e-3, 10e-3), None, STEEL, STEEL)
+    m = get_model("universal", 5e-3, 10e-3, c.estar)
+    for direction in ("across", "along"):
+        t = c.tangential(0.1, force=1e3, tangential_force=-50.0, method="bem",
+                         direction=direction)
+        tc = TangentialContact(m, 0.1, c.gstar, force=1e3, method="bem",
+                               direction=direction)
+        assert t.stiffness == pytest.approx(tc.stiffness, rel=1e-12)
+        assert t.shift == pytest.approx(tc.shift(-50.0), rel=1e-12) and t.shift < 0
+    with pytest.raises(CombinationError, match="straight, aligned cylinder"):
+        crowned().tangential(0.1, force=100.0, method="bem")

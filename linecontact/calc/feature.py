@@ -42,7 +42,9 @@ How to add a feature (one module + one registration line)
        ``columns(model, rows, normal, state) -> dict``
            For the indices ``rows`` (int array of case rows, all of one contact and one
            model), ``model`` the :class:`linecontact.models.ContactModel` of that
-           contact (``model.radius``, ``model.length``, ``model.estar``) and ``normal``
+           contact (``model.radius``, ``model.length``, ``model.estar``, every method;
+           ``model.at(radius)`` is the same law, key and options, at another effective
+           radius, e.g. a second contact of the same roller) and ``normal``
            the normal-contact results over ``rows`` (``force``, ``depth``,
            ``stiffness`` [SI arrays, NaN where the model refused]): return name ->
            array over ``rows`` for the names of ``fields`` it computes, plus optionally
@@ -141,7 +143,7 @@ class State:
     """What a feature's ``resolve`` keeps for its ``columns`` and ``blocks``.
 
     ``rows`` (bool array over the cases) marks where the feature is active; any other
-    attribute is the feature's own (keyword arguments). Two optional attributes are
+    attribute is the feature's own (keyword arguments). These optional attributes are
     read by the core:
 
     ``radius_eff``
@@ -152,8 +154,11 @@ class State:
         viscoelastic body's instantaneous modulus), in place of ``--modulus``.
     ``whole``
         Bool array: rows where the feature describes the whole body (a roller between
-        two raceways): the core's single-contact columns are not shown there, and the
-        models are compared (``deviation``) on the field named by ``compared``.
+        two raceways): the core's single-contact columns are not shown there, the
+        feature's columns come first, and the models are compared (``deviation``) on
+        the field named by ``compared``.
+    ``compared``
+        With ``whole``: the name of the feature's field compared between models.
     """
 
     def __init__(self, rows, **attrs):

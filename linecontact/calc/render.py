@@ -23,7 +23,7 @@ from .compute import CONTACT_COLUMNS, P0_NOTE, all_fields, model_id
 from .features import FEATURES
 
 __all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
-           "table_text", "blocks_text", "one_json", "num", "aligned", "write"]
+           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write"]
 
 #: Every output column (the core's and the features').
 FIELDS = all_fields()
@@ -180,18 +180,48 @@ def _typed(cases, name):
     return col[0].strip()
 
 
+#: Units of a swept input in the table: kind -> (engineering unit, factor from SI).
+_INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
+                "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0)}
+
+
+def swept_inputs(cases):
+    """The inputs that vary between the rows of a sweep and are not an output column
+    already (e.g. the tilt of a load x tilt grid): [(Parameter, SI array)]."""
+    from .cases import PARAMETERS
+
+    out = []
+    for p in PARAMETERS:
+        col = cases.cells.get(p.name)
+        if (isinstance(col, np.ndarray) and p.name not in ("load", "depth")
+                and p.name not in FIELDS and len(col) > 1 and np.any(col != col[0])):
+            out.append((p, col))
+    return out
+
+
 def table_text(cases, present, results, si):
-    """Plain-text table of one case or a sweep: one row per model and value, then the
-    features' notes and extra tables."""
+    """Plain-text table of one case or a sweep: one row per model and value (a swept
+    input that is not an output gets its own column), then the features' notes and
+    extra tables."""
+    from .._units import DIMENSIONS
+
     given = str(cases.given[0])
     cols = columns_of(results, given)
-    header = ["model"] + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols] + ["note"]
+    swept = swept_inputs(cases)
+    heads = []
+    for p, _ in swept:
+        u = DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]
+        heads.append(f"{p.name.replace('_', ' ')} [{u or '-'}]")
+    header = (["model"] + heads + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols]
+              + ["note"])
     n = cases.n
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
         columns[0].extend(s["label"][:n].tolist())
-        for k, c in enumerate(cols, start=1):
+        for k, (p, col) in enumerate(swept, start=1):
+            columns[k] += _fmt_column(col if si else col * _INPUT_UNITS[p.kind][1])
+        for k, c in enumerate(cols, start=1 + len(swept)):
             columns[k] += _fmt_column(scale(c, f[c], si))
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
     lines = [_case_line(cases, present, si), ""]

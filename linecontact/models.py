@@ -81,8 +81,8 @@ MODELS: dict = {}
 #: time one of them is asked for by key, so that a one-case calculation does not pay
 #: for their import. A test checks that each module registers its keys.
 DEFINED_IN = {
-    "profiled-roller": "linecontact.roller",
-    "iso16281-slicing": "linecontact.roller",
+    "profiled-roller": "linecontact.roller.laws",
+    "iso16281-slicing": "linecontact.roller.laws",
 }
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
@@ -170,8 +170,7 @@ def scales_are_normal(radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71 (the
+    .. [1] Li & Popov (2017) [li-popov-2017] (the
        dimensionless variables of Eq. 9).
     """
     L = np.asarray(length, dtype=float)
@@ -356,8 +355,7 @@ class ContactModel(abc.ABC):
 
         References
         ----------
-        .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-           Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+        .. [1] Li & Popov (2017) [li-popov-2017].
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
@@ -429,8 +427,7 @@ class LiPopovModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7, 9,
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7, 9,
        11 and Table 1.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
@@ -539,8 +536,7 @@ class PuttockThwaiteModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2.
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
        Melbourne (1969).
@@ -604,8 +600,7 @@ class JohnsonModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
     """
 
@@ -679,8 +674,7 @@ class KunzModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -886,8 +880,7 @@ class UniversalModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     """
 
     key = "universal"

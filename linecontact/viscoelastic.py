@@ -125,6 +125,17 @@ class PronySeries:
     SWAP_TIME = 1e-2
 
     def __init__(self, long_term, *, moduli, times):
+        self._set(long_term, moduli, times, swap_check=True)
+
+    @classmethod
+    def _derived(cls, long_term, moduli, times):
+        """A series computed from a checked one (scaled, in series): the same checks
+        but the swap heuristic, which is for lists typed by a user."""
+        series = PronySeries.__new__(PronySeries)
+        series._set(long_term, moduli, times, swap_check=False)
+        return series
+
+    def _set(self, long_term, moduli, times, swap_check):
         self.long_term = float(_one(check_positive("long_term", long_term, "Pa"),
                                     "long_term"))
         E = np.atleast_1d(np.asarray(moduli, dtype=float))
@@ -134,7 +145,7 @@ class PronySeries:
                                   "one modulus per relaxation time")
         check_positive("moduli", E, "Pa")
         check_positive("times", tau, "s")
-        if (E.max() < self.SWAP_MODULUS * self.long_term
+        if swap_check and (E.max() < self.SWAP_MODULUS * self.long_term
                 and tau.max() >= self.SWAP_TIME * self.long_term):
             raise OutOfRangeError(
                 "moduli", float(E.max()),
@@ -158,8 +169,7 @@ class PronySeries:
     def scaled(self, factor):
         """The same series times `factor` [-] (e.g. 1/(1 - nu^2) for E -> E*)."""
         f = float(_one(check_positive("factor", factor), "factor"))
-        return PronySeries(self.long_term * f, moduli=self.moduli * f,
-                           times=self.times)
+        return PronySeries._derived(self.long_term * f, self.moduli * f, self.times)
 
     def in_series(self, compliance):
         r"""This modulus in series with an elastic compliance b [1/Pa] (0: unchanged).
@@ -180,7 +190,7 @@ class PronySeries:
             E0 = self.instantaneous / (1.0 + b * self.instantaneous)
             tau = self.times[0] * (1.0 + b * self.instantaneous) / (
                 1.0 + b * self.long_term)
-            return PronySeries(Einf, [E0 - Einf], [tau])
+            return PronySeries._derived(Einf, [E0 - Einf], [tau])
         from scipy.optimize import brentq
 
         a = 1.0 / self.times[::-1]            # relaxation rates, increasing
@@ -197,7 +207,7 @@ class PronySeries:
                                  xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500)
                           for lo, hi in zip(lows, a)])
         moduli = np.array([1.0 / (x * b * b * dh(x)) for x in rates])
-        return PronySeries(Einf, moduli, 1.0 / rates)
+        return PronySeries._derived(Einf, moduli, 1.0 / rates)
 
     def relaxation(self, time):
         """Relaxation function E*(t) [Pa] at t >= 0 [s]."""
@@ -289,7 +299,7 @@ class StandardLinearSolid(PronySeries):
             raise OutOfRangeError("long_term", Einf, f"(0, {E0:.6g}) Pa", unit="Pa",
                                   hint="the long-term modulus must be below the "
                                        "instantaneous one (equal: an elastic body)")
-        super().__init__(Einf, moduli=[E0 - Einf], times=[tau])
+        self._set(Einf, [E0 - Einf], [tau], swap_check=False)  # named scalars: no swap
         self.tau = float(self.times[0])
 
     def scaled(self, factor):

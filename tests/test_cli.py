@@ -808,9 +808,10 @@ def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
 
 
 def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
-    """A row with more cells than the header keeps them (under an unnamed column), a
-    shorter row is padded; the result columns line up under their names in both the
-    unquoted (line-copy) and the quoted (csv module) paths; CRLF line ends are read."""
+    """A row with more cells than the header keeps them (under an unnamed column) and is
+    an error in that row (its cells are shifted: issue 22), a shorter row is padded;
+    the result columns line up under their names in both the unquoted (line-copy) and
+    the quoted (csv module) paths; CRLF line ends are read."""
     for quote in ("", '"'):
         path = tmp_path / f"r{len(quote)}.csv"
         path.write_text(f"name,load\r\n{quote}a{quote},1kN,extra\r\nb\r\nc,2kN\r\n",
@@ -823,7 +824,9 @@ def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
         assert [r[:3] for r in rows[1:]] == [["a", "1kN", "extra"], ["b", "", ""],
                                              ["c", "2kN", ""]]
         depth = head.index("depth_um")
-        assert float(rows[1][depth]) > 0 and rows[2][depth] == "" and float(rows[3][depth]) > 0
+        error = head.index("error")
+        assert rows[1][depth] == "" and "3 cells under a header of 2" in rows[1][error]
+        assert rows[2][depth] == "" and float(rows[3][depth]) > 0
         assert all(len(r) == len(head) for r in rows)
 
 

@@ -189,3 +189,28 @@ def test_an_output_file_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
     render.write("new\n", str(target))
     assert target.read_text() == "new\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.csv"]
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.lists(st.tuples(st.integers(-5, 30), st.integers(-3, 9)), min_size=1,
+                max_size=12))
+def test_no_derived_value_is_printed_where_no_model_covers_the_row(tmp_path_factory,
+                                                                   cases):
+    """Output no model covers is not a number: in every model's columns the Hertz
+    half-width and peak pressure (and the MDR contact radius) are shown exactly where
+    the model computed the depth, for radii 1e-5..1e30 m and loads 1e-3..1e9 N (a
+    radius of 1e30 m printed b = 1e18 um, p0 = 6e-14 MPa beside a refused depth)."""
+    path = tmp_path_factory.mktemp("uncovered") / "c.csv"
+    path.write_text("radius,load\n" + "".join(f"1e{r},1e{f}\n" for r, f in cases))
+    status, out, err = _calc([str(path), "--length", "10mm", "--modulus", "210GPa",
+                              "--poisson", "0.3", "--model", "all", "--si"])
+    rows = _rows(out)
+    depth_cols = [c for c in rows[0] if c.startswith("depth_m")]
+    assert depth_cols
+    for row in rows:
+        for col in depth_cols:
+            suffix = col[len("depth_m"):]
+            for derived in ("half_width_m", "peak_pressure_Pa", "contact_radius_m"):
+                if derived + suffix in row:
+                    assert (row[derived + suffix] == "") == (row[col] == ""), (
+                        derived + suffix, row)

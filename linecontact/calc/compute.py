@@ -292,11 +292,16 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
 
 
 def _contact_fields(r, R, L, E):
-    """Per-contact derived fields from an evaluate() result (arrays): b, p0, flags."""
+    """Per-contact derived fields from an evaluate() result (arrays): b, p0, flags.
+
+    Only where the model computed the row (a finite depth and force): a row the model
+    refuses (out of its range) gets no Hertz half-width or peak pressure either, since
+    nothing covers it (a radius of 1e30 m would print b = 1e18 um, p0 = 6e-14 MPa).
+    """
     from ..classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
-    ok = np.isfinite(F) & (F > 0)
+    ok = np.isfinite(F) & (F > 0) & np.isfinite(r["depth"])
     b = np.full(F.shape, np.nan)
     p0 = np.full(F.shape, np.nan)
     if ok.any():

@@ -214,3 +214,54 @@ def test_no_derived_value_is_printed_where_no_model_covers_the_row(tmp_path_fact
                 if derived + suffix in row:
                     assert (row[derived + suffix] == "") == (row[col] == ""), (
                         derived + suffix, row)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.sampled_from(["load", "depth"]), st.integers(9, 12),
+       st.sampled_from(["", " N", "kN"]))
+def test_a_refused_row_names_the_option_as_typed_never_internal_wording(which, e, unit):
+    """A load or depth outside a model's range is reported with the option the user
+    wrote and the value as typed (--load = '1e9kN'), the cylinder it was refused for
+    (R, L, E*: the geometry decides the range), and never the library's internal
+    wording ('force = ... (element [0] of shape (1,))')."""
+    unit = {"load": unit, "depth": {"": "", " N": " m", "kN": "mm"}[unit]}[which]
+    typed = f"1e{e}{unit}"
+    status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--modulus",
+                              "210GPa", "--poisson", "0.3", f"--{which}", typed,
+                              "--model", "li-popov"])
+    text = out + err
+    assert f"--{which} = {typed!r}" in text and "for R = 0.005 m" in text, text
+    assert "element [" not in text and "of shape" not in text
+
+
+PLAUSIBLE = [("radius", "5"), ("length", "10"), ("modulus", "210"), ("modulus", "70"),
+             ("load", "1e9")]
+
+
+@pytest.mark.parametrize("name,bare", PLAUSIBLE)
+def test_an_implausible_bare_number_is_named_as_the_likely_cause(name, bare):
+    """A bare number is SI (--modulus 210 is 210 Pa, --radius 5 is 5 m): not refused,
+    but when the case then fails the message names it as the likely cause with the
+    unit that makes it plausible; the same value typed with a unit is the user's
+    choice and is not blamed."""
+    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
+            "load": "1kN"}
+    argv = [a for k, v in {**base, name: bare}.items() for a in (f"--{k}", v)]
+    status, out, err = _calc(argv + ["--model", "li-popov"])
+    text = out + err
+    assert status == 2 and f"likely cause: --{name} = {bare!r}" in text, text
+    # the suggested unit, when there is one, makes the value plausible
+    from linecontact._units import parse_quantity
+    from linecontact.calc.cases import BY_NAME
+
+    p = BY_NAME[name]
+    tail = text.split(f"likely cause: --{name} = {bare!r}")[1].split("\n")[0]
+    if tail.endswith("?"):
+        suggested = tail.rsplit(": ", 1)[1][:-1]
+        lo, hi = p.plausible
+        assert lo <= parse_quantity("x", suggested, p.kind) <= hi, suggested
+    # with the unit spelled out (the same SI value) the user chose it: no blame
+    si = {"radius": "m", "length": "m", "modulus": "Pa", "load": "N"}[name]
+    argv = [a for k, v in {**base, name: bare + si}.items() for a in (f"--{k}", v)]
+    status, out, err = _calc(argv + ["--model", "li-popov"])
+    assert "likely cause" not in out + err

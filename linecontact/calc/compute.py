@@ -245,7 +245,39 @@ class _Model:
         return self._at[radius]
 
 
-def _safe_evaluate(model, given, values, notes, errors, idx):
+def _user_note(exc, given, cases, i):
+    """The note of a row a model refuses, in the user's words: the option or column
+    they wrote (``--load = '1kN'``, not "force = 1000 N (element [0] of shape (1,))"),
+    the cylinder it was refused for (the geometry and E* decide a model's range),
+    the model's own reason, and the likely cause among the inputs
+    (:func:`linecontact.calc.cases.likely_cause`)."""
+    from .cases import likely_cause
+    from .feature import option_name
+
+    label = getattr(cases, "label", option_name)
+    if exc.parameter in ("force", "depth"):
+        name = "load" if given == "load" else "depth"
+        col = cases.cells.get(name)
+        typed = (str(col[i]).strip() if col is not None and not isinstance(col, np.ndarray)
+                 else f"{cases.value[i]:.6g} {'N' if name == 'load' else 'm'}")
+        text = (f"{label(name)} = {typed!r} is outside this model's range {exc.valid} "
+                f"for R = {cases.radius_eff[i]:.6g} m, L = {cases.length[i]:.6g} m, "
+                f"E* = {cases.estar[i]:.6g} Pa")
+        if exc.hint:
+            text += f"; {exc.hint}"
+    elif exc.parameter == "estar" and not cases.present["estar"][i]:
+        text = str(exc).replace(
+            "estar = ", f"E* = (from {label('modulus')} and {label('poisson')}) ", 1)
+    else:
+        text = str(exc)
+    # the inputs a refusal can come from: a ratio of lengths, a modulus, or (a force or
+    # depth range) all of them
+    kinds = {"L/R": {"length"}, "length_over_radius": {"length"},
+             "estar": {"pressure"}}.get(exc.parameter)
+    return text + likely_cause(cases, i, kinds)
+
+
+def _safe_evaluate(model, given, values, notes, errors, idx, describe=str):
     """evaluate() on `values`; refused elements isolated by halving.
 
     Returns a dict of arrays (NaN where refused); writes ``notes[idx[i]]`` (out of the
@@ -263,7 +295,7 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
             model = Refused(model.label, exc)
     if isinstance(model, Refused):
         for i in idx:
-            notes[i] = str(model.exc)
+            notes[i] = describe(model.exc, i)
         return out
     stack = [(0, n)]
     while stack:
@@ -272,7 +304,7 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
             r = model.evaluate(**{("force" if given == "load" else "depth"): values[lo:hi]})
         except OutOfRangeError as exc:
             if hi - lo == 1:
-                notes[idx[lo]] = str(exc)
+                notes[idx[lo]] = describe(exc, idx[lo])
             else:
                 mid = (lo + hi) // 2
                 stack += [(mid, hi), (lo, mid)]
@@ -495,7 +527,8 @@ def _evaluate_set(model, g, cases, active, whole, notes, errors, produced=None):
         sel = np.flatnonzero(given == which)
         if sel.size:
             rr = _safe_evaluate(model._model if isinstance(model, _Model) else model,
-                                which, values[sel], notes, errors, g[sel])
+                                which, values[sel], notes, errors, g[sel],
+                                lambda exc, i, w=which: _user_note(exc, w, cases, i))
             for k in r:
                 r[k][sel] = rr[k]
     R, L, E = cases.radius_eff[g[0]], cases.length[g[0]], cases.estar[g[0]]

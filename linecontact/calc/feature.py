@@ -117,6 +117,11 @@ class Parameter:
     sweep : bool
         May be a sweep ``START:STOP:N`` on the command line (every numeric parameter
         may: two sweeps give the grid).
+    plausible : tuple of float, optional
+        ``(low, high)`` [SI]: the magnitudes this quantity has in practice (of
+        |value|). A BARE number outside it (SI by the input rule: ``--modulus 210``
+        is 210 Pa) is not refused, but named as the likely cause when its case then
+        fails (:func:`linecontact.calc.cases.likely_cause`).
     """
 
     name: str
@@ -126,6 +131,7 @@ class Parameter:
     positive: bool = True
     bounds: str | None = None
     sweep: bool = True
+    plausible: tuple | None = None
 
 
 @dataclass(frozen=True)

@@ -629,6 +629,9 @@ def test_hertz_peak_pressure_is_eq1_force_over_strip(capsys):
     doc = _main_json(capsys, *STEEL_CASE, "--radius", "5mm", "--load", "0.1kN:10kN:4")
     for m in doc["models"]:
         for row in m["rows"]:
+            if row["depth"] is None:  # refused by that model: nothing covers the row
+                assert row["half_width"] is None and row["peak_pressure"] is None
+                continue
             p0 = 2 * row["force"] / (math.pi * row["half_width"] * 0.01)
             assert _close(row["peak_pressure"], p0, 1e-12)
 

@@ -95,3 +95,21 @@ def test_functions_of_a_force_or_depth_take_arrays(case):
         got = np.asarray(arr, dtype=float)
         want = np.array([float(np.asarray(s)) for s in scalar])
         assert np.allclose(got, want, rtol=1e-12, atol=0), f
+
+
+@pytest.mark.parametrize("method,values", [("at_force", [500.0, 1000.0]),
+                                          ("at_depth", [5e-6, 7e-6])])
+def test_profiled_roller_takes_arrays_of_forces_and_depths(method, values):
+    """ProfiledRoller.at_force / at_depth (a bare TypeError for an array before) take
+    an array and give the array of the scalar solutions (to 1e-9: the solver's
+    tolerance is 1e-10 and it starts from the previous solution)."""
+    from linecontact.roller import ProfiledRoller
+
+    r = ProfiledRoller(10e-3, 20e-3, 115.385e9, "circular:Rc=0.5", n_slices=30)
+    solve = getattr(r, method)
+    arr = solve(np.array(values))
+    assert arr.shape == (2,)
+    for s, v in zip(arr, values):
+        one = solve(v)
+        assert s.force == pytest.approx(one.force, rel=1e-9, abs=0)
+        assert s.depth == pytest.approx(one.depth, rel=1e-9, abs=0)

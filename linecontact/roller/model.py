@@ -172,15 +172,16 @@ class ProfiledRoller:
 
         Parameters
         ----------
-        depth : float
+        depth : float or array_like
             Depth d of the roller point x = 0 [m]; must exceed
-            :meth:`first_contact_depth` (else there is no contact).
+            :meth:`first_contact_depth` (else there is no contact). An array gives an
+            array of solutions, one per depth.
         tilt : float, optional
             Tilt theta, |theta| < 0.1 [rad].
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `depth`)
 
         Raises
         ------
@@ -193,6 +194,8 @@ class ProfiledRoller:
         >>> f"{r.at_depth(7.0244e-6).force:.0f} N"
         '1000 N'
         """
+        if np.ndim(depth):
+            return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
         th = TILT_RANGE.check(tilt).item()
         d0 = self.first_contact_depth(th)
         d = check_interval("depth", depth, d0, np.inf, low_open=True, high_open=True,
@@ -342,8 +345,9 @@ class ProfiledRoller:
 
         Parameters
         ----------
-        force : float
-            Normal force F, 0 < F < inf [N].
+        force : float or array_like
+            Normal force F, 0 < F < inf [N]. An array gives an array of solutions, one
+            per force.
         tilt : float or None, optional
             Tilt theta [rad], |theta| < 0.1; None (default) solves for the tilt at
             which the moment about x = 0 vanishes (a roller free to tilt).
@@ -352,7 +356,7 @@ class ProfiledRoller:
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `force`)
 
         Examples
         --------
@@ -361,6 +365,8 @@ class ProfiledRoller:
         >>> f"M/F = {s.moment / s.force * 1e3:.3f} mm"
         'M/F = 1.000 mm'
         """
+        if np.ndim(force):
+            return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
         if tilt is not None:
             th = TILT_RANGE.check(tilt).item()
@@ -470,3 +476,18 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
     if depth is not None:
         return r.at_depth(depth, 0.0 if tilt is None else tilt)
     return r.at_force(force, tilt)
+
+
+def _each(solve, values, name, unit):
+    """An object array of `solve(v)` over the array `values` (same shape), each value
+    checked first (finite numbers), so that an array of forces or depths is accepted
+    wherever one is."""
+    v = np.asarray(values, dtype=float)
+    if not np.all(np.isfinite(v)):
+        i = int(np.argmax(~np.isfinite(v.ravel())))
+        raise OutOfRangeError(name, float(v.ravel()[i]), f"finite values [{unit}]",
+                              unit=unit, where=f"element {i}")
+    out = np.empty(v.shape, dtype=object)
+    for idx in np.ndindex(v.shape):
+        out[idx] = solve(float(v[idx]))
+    return out

@@ -589,6 +589,17 @@ class _ApproachLaw(ContactModel):
                                                                 self.tilt).stiffness)
 
 
+def _split(sol):
+    """A RacewaySolution over an array of loads as one RacewaySolution per load."""
+    from dataclasses import fields, replace
+
+    arrays = {f.name: np.asarray(getattr(sol, f.name)) for f in fields(sol)
+              if isinstance(getattr(sol, f.name), np.ndarray)}
+    shape = np.shape(sol.force)
+    return tuple(replace(sol, **{k: float(v[idx]) for k, v in arrays.items()})
+                 for idx in np.ndindex(*shape))
+
+
 # --------------------------------------------------------------------------------------
 class Contact:
     """A roller against a counter-body, of given materials: every output of the contact.
@@ -623,6 +634,24 @@ class Contact:
         raceways that do not fit the roller.
     UnknownNameError
         An unknown model key.
+
+    Attributes
+    ----------
+    estar : float
+        E* [Pa] (instantaneous, E*(0), with a viscoelastic body).
+    gstar : float or None
+        G* [Pa]; None when the contact was given by estar or is viscoelastic.
+    relaxation : PronySeries or None
+        E*(t) with a viscoelastic body.
+    radius : float or None
+        Effective radius of the single contact [m] (None between raceways).
+    profile : Profile
+        The roller's profile, read.
+    tilt : float or str
+        The roller's tilt [rad] or ``"free"``.
+    model : str
+        The model used; ``sliced`` True for a slice model, ``raceways`` True between
+        raceways; ``n_slices`` and ``options`` as given.
 
     Notes
     -----
@@ -964,12 +993,15 @@ class Contact:
             **({"force": v} if force is not None else {"deflection": v}), **kw)
             for v in vals)
 
+        s0 = sols[0]
+
         def arr(name):
             if one:
-                return getattr(sols[0], name)
+                return getattr(s0, name)
             return out(np.array([getattr(s, name) for s in sols]))
 
-        s0 = sols[0]
+        if one and np.ndim(s0.force):
+            sols = _split(s0)       # one solution per load, as for a slice model
         reasons = {}
         why_q = ({"counterbody": "Raceways"}, "a whole roller has two load distributions: "
                  "see solutions[i].inner.q and .outer.q")
@@ -1125,16 +1157,43 @@ class Contact:
             gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons)
 
     # ---- time ------------------------------------------------------------------------
-    def _visco(self, what):
+    def _visco(self, what, whole=False):
+        """The laws of the contacts whose Lee-Radok history is asked: one, or the two of
+        a whole roller (creep only: a held force passes through both)."""
         if self.relaxation is None:
             raise CombinationError({"material1": "Elastic", "material2": "Elastic"},
                                    f"{what} needs a viscoelastic body")
-        if self.raceways:
+        if not self.raceways:
+            return [self._law_for(what)]
+        if not whole:
             raise CombinationError({"counterbody": "Raceways", self.viscoelastic:
                                     "Viscoelastic"},
-                                   f"{what} of a whole roller between raceways is not "
-                                   "modelled; compute one contact")
-        return self._law_for(what)
+                                   f"{what} of a whole roller between raceways (a held "
+                                   "ring approach shared by two relaxing contacts) is "
+                                   "not modelled; ask creep under a held force")
+        from .models import get_model
+
+        radii = self.counterbody.effective_radii(self.roller.radius)
+        if not self.sliced:
+            return [get_model(self.model, R, self.roller.length, self.estar,
+                              **self.options) for R in radii]
+        psi = self.counterbody.misalignment
+        if self.tilt == FREE and psi != 0.0:
+            raise CombinationError({"tilt": FREE, "misalignment": psi},
+                                   f"{what} needs each contact's geometry fixed while it "
+                                   "is loaded; the free tilt between misaligned rings "
+                                   "changes with the load: give the tilt as a number",
+                                   unit={"misalignment": "rad"})
+        th = self._fixed_tilt(what)
+        from .roller import ProfiledRoller
+
+        if self.model != "profiled-roller":
+            raise CombinationError({"model": self.model}, "the creep laws use the "
+                                   "coupled-slice model; use model='profiled-roller'")
+        return [_ApproachLaw(ProfiledRoller(R, self.roller.length, self.estar,
+                                            self.profile,
+                                            n_slices=self.n_slices or 100), t,
+                             self.model) for R, t in zip(radii, (th, psi - th))]
 
     def creep(self, time, *, force):
         r"""Depth under a held force or a force history (Lee & Radok's creep).
@@ -1156,7 +1215,8 @@ class Contact:
         -----
         Valid while the depth grows (refused otherwise, see
         :func:`linecontact.viscoelastic.creep_depth`), a fixed tilt (a free one only
-        where it is zero).
+        where it is zero). Between raceways the two contacts creep in series under the
+        same force: their depths add (the ring approach).
 
         Examples
         --------
@@ -1174,15 +1234,18 @@ class Contact:
         """
         from .viscoelastic import creep_depth
 
-        law = self._visco("creep")
+        laws = self._visco("creep", whole=True)
         t = np.asarray(time, dtype=float)
         F = np.broadcast_to(np.asarray(force, dtype=float), t.shape).astype(float)
-        e = creep_depth(law, self.relaxation, t, F)
         jinf = self.relaxation.creep_terms[0]
-        long_term = float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0 else 0.0
-        d0 = getattr(law, "d0", 0.0)
-        return CreepResult(time=t, force=F, depth=out(e + d0),
-                           long_term_depth=long_term + d0, model=self.model)
+        depth, long_term = np.zeros(t.shape), 0.0
+        for law in laws:                                # contacts in series: depths add
+            d0 = getattr(law, "d0", 0.0)
+            depth += creep_depth(law, self.relaxation, t, F) + d0
+            long_term += (float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0
+                          else 0.0) + d0
+        return CreepResult(time=t, force=F, depth=out(depth), long_term_depth=long_term,
+                           model=self.model)
 
     def relaxation_history(self, time, *, depth):
         r"""Force under a held depth or a depth history (Lee & Radok's relaxation).
@@ -1220,7 +1283,7 @@ class Contact:
         """
         from .viscoelastic import force_history
 
-        law = self._visco("relaxation")
+        law = self._visco("relaxation")[0]
         t = np.asarray(time, dtype=float)
         d = np.broadcast_to(np.asarray(depth, dtype=float), t.shape).astype(float)
         d0 = getattr(law, "d0", 0.0)

@@ -69,8 +69,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from ._numerics import NotAKnotSpline, log1p_excess_root
 from .tables import available_tables, read_table, table_path
-from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
-                       document, out)
+from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
+                       check_positive, document, out)
 
 __all__ = [
     "ALPHA_EQ11",
@@ -260,10 +260,9 @@ def coefficient_set(name="published"):
     try:
         path = table_path(stem)
     except FileNotFoundError:
-        raise OutOfRangeError("coefficients", name, "one of "
-                              + ", ".join(repr(n) for n in available_coefficient_sets()),
-                              hint="a table set NAME is read from tables/lipopov_NAME.csv"
-                              ) from None
+        raise UnknownNameError("coefficients", name, available_coefficient_sets(),
+                               hint="a table set NAME is read from "
+                                    "tables/lipopov_NAME.csv") from None
     key = (str(path), os.stat(path).st_mtime_ns)
     if key not in _CACHE:
         _CACHE[key] = _table_set(name, stem)

@@ -1087,8 +1087,10 @@ def get_model(key, radius, length, estar, **options):
 
     Raises
     ------
+    UnknownNameError
+        Unknown key (the message lists the valid ones).
     OutOfRangeError
-        Unknown key (the message lists the valid ones) or bad R, L, E*.
+        Bad R, L, E*.
     FileNotFoundError
         The model's table is missing (the message names the file).
 
@@ -1104,13 +1106,12 @@ def get_model(key, radius, length, estar, **options):
     >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
+    linecontact.validity.UnknownNameError: model = 'hertz' is not a known name; valid: ...
     """
     if key not in MODELS and key in DEFINED_IN:
         import_module(DEFINED_IN[key])
     if key not in MODELS:
-        raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in available_models()))
+        raise UnknownNameError("model", key, available_models())
     return MODELS[key](radius, length, estar, **options)
 
 

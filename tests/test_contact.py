@@ -174,6 +174,23 @@ def test_viscoelastic_body_against_an_elastic_one_adds_compliances():
         np.testing.assert_allclose(m.creep(t), expect, rtol=1e-10)
 
 
+def test_a_viscoelastic_roller_between_raceways_creeps_as_its_two_contacts():
+    """A polymer roller between steel rings under a held force: the ring approach at
+    each time is the sum of the two contacts' creep depths computed one by one (Contact
+    with Convex(Ri) and Concave(Ro), same materials; 1e-12), for a law and for a
+    crowned roller (coupled slices)."""
+    sls = Viscoelastic(StandardLinearSolid(3e9, 1e9, 10.0), 0.4)
+    t = [0.0, 10.0, 1e4]
+    for roller in (Roller(5e-3, 10e-3), Roller(5e-3, 10e-3, crown_radius=0.2)):
+        whole = Contact(roller, Raceways(20e-3, 30e-3), sls, STEEL, n_slices=N)
+        r = whole.creep(t, force=200.0)
+        parts = [Contact(roller, body, sls, STEEL, n_slices=N).creep(t, force=200.0)
+                 for body in (Convex(20e-3), Concave(30e-3))]
+        np.testing.assert_allclose(r.depth, parts[0].depth + parts[1].depth, rtol=1e-12)
+        assert r.long_term_depth == pytest.approx(
+            parts[0].long_term_depth + parts[1].long_term_depth, rel=1e-12)
+
+
 def test_relaxation_under_a_held_depth_follows_the_relaxation_function():
     """A held depth relaxes the force with E*(t)/E*(0) (Lee & Radok, step and hold:
     exact), for a straight roller on a rigid-backed SLS: 1/3 at t >> tau."""
@@ -196,6 +213,20 @@ def test_raceways_in_a_contact_are_the_whole_roller():
                                 profile=CircularCrownProfile(10e-3, 0.2), n_slices=N)
     assert r.depth == s.deflection == s.depth_inner + s.depth_outer
     assert r.stiffness == s.stiffness
+
+
+def test_a_law_between_raceways_gives_one_solution_per_load():
+    """Over an array of loads a law between raceways returns the arrays and one
+    RacewaySolution per load, each equal to that load solved alone (to rounding)."""
+    c = Contact(Roller(5e-3, 10e-3), Raceways(20e-3, 30e-3), STEEL, STEEL)
+    r = c.normal(force=[1e3, 2e3, 3e3])
+    assert len(r.solutions) == 3
+    for k, F in enumerate((1e3, 2e3, 3e3)):
+        one = c.normal(force=F)
+        assert r.depth[k] == pytest.approx(one.depth, rel=1e-14)
+        assert r.solutions[k].deflection == pytest.approx(one.depth, rel=1e-14)
+        assert r.solutions[k].peak_pressure_outer == pytest.approx(
+            one.solutions[0].peak_pressure_outer, rel=1e-14)
 
 
 def test_effective_radius_of_each_counterbody():
@@ -228,6 +259,9 @@ def test_effective_radius_of_each_counterbody():
                      STEEL).tangential(0.1, force=1e3), "between raceways"),
     (lambda: Contact(Roller(5e-3, 10e-3), None, STEEL, STEEL).creep([0.0], force=1.0),
      "needs a viscoelastic body"),
+    (lambda: Contact(Roller(5e-3, 10e-3), Raceways(20e-3, 30e-3), RIGID, Viscoelastic(
+        StandardLinearSolid(3e9, 1e9, 10.0), 0.4)).relaxation_history([0.0], depth=1e-6),
+     "held ring approach"),
     (lambda: Roller(5e-3, 10e-3, crown_radius=0.3, profile="straight"),
      "a crown radius is a profile"),
 ])

@@ -476,9 +476,14 @@ class TangentialResult(_Result):
     gross_slip_force : float or ndarray
         mu F [N].
     gross_slip_shift : float or ndarray
-        u* = mu E* d/G* (d the approach) [m].
+        u* = mu E* d/G* (d the approach) [m] (with the BEM table's correction for
+        ``method="bem"``).
     reasons : dict
         Output name -> (parameters, reason) for each None field.
+    method : str
+        ``"mdr"`` or ``"bem"``.
+    stiffness_ratio : float or ndarray
+        k_t/k_n used: G*/E*, or the BEM table's ratio in the direction asked [-].
 
     Notes
     -----
@@ -505,6 +510,8 @@ class TangentialResult(_Result):
     gross_slip_force: object
     gross_slip_shift: object
     reasons: dict = field(default_factory=dict)
+    method: str = "mdr"
+    stiffness_ratio: object = None
 
 
 @dataclass(frozen=True)
@@ -1035,7 +1042,7 @@ class Contact:
 
     # ---- tangential ------------------------------------------------------------------
     def tangential(self, friction, *, force=None, depth=None, tangential_force=None,
-                   shift=None):
+                   shift=None, method="mdr", direction="across"):
         r"""The tangential state under a tangential force or shift (Cattaneo-Mindlin, MDR).
 
         .. math:: k_t = \frac{G^*}{E^*}\,k_n, \qquad
@@ -1057,6 +1064,14 @@ class Contact:
             Tangential force Q, either sign (the sign is the direction) [N].
         shift : float or array_like, optional
             Tangential shift u instead of Q, either sign [m].
+        method : {"mdr", "bem"}, optional
+            ``"mdr"`` (default): the ratio G*/E*; ``"bem"``: a straight cylinder's
+            direction-dependent k_t/k_n and partial-slip correction from the BEM table
+            (:class:`linecontact.tangential.TangentialContact`; straight-cylinder
+            laws only).
+        direction : {"across", "along"}, optional
+            With ``method="bem"``: the shift across the axis (rolling direction) or
+            along it.
 
         Returns
         -------
@@ -1108,6 +1123,16 @@ class Contact:
                                     "shift": shift},
                                    "give a tangential force or a shift, not both")
         mu = tg.FRICTION.check(friction, name="friction")
+        if method not in ("mdr", "bem"):
+            raise UnknownNameError("method", method, ("mdr", "bem"))
+        if method == "bem":
+            if self.sliced or self.model not in tg.STRAIGHT_CYLINDER_MODELS:
+                raise CombinationError({"method": "bem", "model": self.model,
+                                        "profile": self.profile.label},
+                                       "the BEM table is for a straight, aligned "
+                                       "cylinder; use method='mdr'")
+            return self._tangential_bem(mu, force, depth, tangential_force, shift,
+                                        direction)
         n = self.normal(force=force, depth=depth)
         law = self._law_for("the tangential law")
         e = np.asarray(n.approach, dtype=float)
@@ -1154,7 +1179,65 @@ class Contact:
         return TangentialResult(
             normal=n, friction=float(mu), shear_ratio=float(r), stiffness=kt,
             tangential_force=Q, shift=u, slip_fraction=frac, state=state,
-            gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons)
+            gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons,
+            method="mdr", stiffness_ratio=float(r))
+
+    def _tangential_bem(self, mu, force, depth, Q, u, direction):
+        """Contact.tangential with the BEM table's ratio and slip correction, one
+        TangentialContact per normal load."""
+        from . import tangential as tg
+
+        n = self.normal(force=force, depth=depth)
+        law = self._law_for("the tangential law")
+        e = np.atleast_1d(np.asarray(n.approach, dtype=float))
+        F = np.atleast_1d(np.asarray(n.force, dtype=float))
+        shape = np.shape(n.force)
+        Qb = None if Q is None else np.broadcast_to(np.asarray(Q, float), e.shape)
+        ub = None if u is None else np.broadcast_to(np.asarray(u, float), e.shape)
+        cols = {k: np.full(e.shape, np.nan) for k in ("kt", "ratio", "Q", "u", "ustar")}
+        states = []
+        reasons = {}
+        for k in range(e.size):
+            tc = tg.TangentialContact(law, mu, self.gstar, depth=float(e[k]),
+                                      method="bem", direction=direction)
+            cols["kt"][k], cols["ratio"][k] = tc.stiffness, tc.ratio
+            cols["ustar"][k] = tc.gross_slip_shift
+            if Qb is not None:
+                cols["Q"][k] = Qb[k]
+                if abs(Qb[k]) <= mu * F[k] * (1 + 1e-12):
+                    cols["u"][k] = tc.shift(float(Qb[k]))
+                else:
+                    reasons["shift"] = ({"tangential_force": float(Qb[k]),
+                                         "friction": float(mu)},
+                                        "beyond mu F the contact slides: no static shift")
+            elif ub is not None:
+                cols["u"][k] = ub[k]
+                cols["Q"][k] = tc.force(float(ub[k]))
+            frac = abs(cols["Q"][k]) / (mu * F[k]) if Qb is not None or ub is not None \
+                else 0.0
+            states.append("gross slip" if frac >= 1 - 1e-12 else
+                          "stick" if frac == 0 else "partial slip")
+
+        def shaped(v):
+            return out(v.reshape(shape))
+
+        loaded = Qb is not None or ub is not None
+        if not loaded:
+            why = ({"tangential_force": None, "shift": None}, "no tangential load given")
+            reasons.update(tangential_force=why, shift=why, slip_fraction=why)
+        state = states[0] if not shape else np.array(states).reshape(shape)
+        shift_out = None if "shift" in reasons else (shaped(cols["u"]) if loaded
+                                                     else None)
+        return TangentialResult(
+            normal=n, friction=float(mu),
+            shear_ratio=float(tg.SHEAR_RATIO.check(self.gstar / self.estar,
+                                                   name="gstar/estar")),
+            stiffness=shaped(cols["kt"]),
+            tangential_force=shaped(cols["Q"]) if loaded else None, shift=shift_out,
+            slip_fraction=shaped(np.abs(cols["Q"]) / (mu * F)) if loaded else None,
+            state=state, gross_slip_force=shaped(mu * F),
+            gross_slip_shift=shaped(cols["ustar"]), reasons=reasons, method="bem",
+            stiffness_ratio=shaped(cols["ratio"]))
 
     # ---- time ------------------------------------------------------------------------
     def _visco(self, what, whole=False):

@@ -299,6 +299,20 @@ class ContactModel(abc.ABC):
     def check_applicable(self):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
 
+    def check_starts_at_zero(self):
+        """Raise :class:`~linecontact.validity.CombinationError` unless F(d) starts at
+        d = 0 (:attr:`first_contact_depth`), as the tangential and viscoelastic laws
+        built on F(d) take it."""
+        d0 = self.first_contact_depth
+        if d0 != 0.0:
+            from .validity import CombinationError
+
+            raise CombinationError({"model": self.label, "first_contact_depth": d0},
+                                   "the law's force starts at a nonzero depth (a tilted "
+                                   "roller); use linecontact.contact.Contact, which takes "
+                                   "the law in the approach from first contact",
+                                   unit={"first_contact_depth": "m"})
+
     def __repr__(self):
         return (f"<{type(self).__name__} {self.label}: R = {self.radius:g} m, "
                 f"L = {self.length:g} m, E* = {self.estar:g} Pa>")
@@ -323,6 +337,11 @@ class ContactModel(abc.ABC):
     def contact_radius(self, depth):
         """MDR contact half-length a = k / (2 E*) [m] at depth d [m]."""
         return out(np.asarray(self.stiffness(depth)) / (2 * self.estar))
+
+    #: Depth at which the law's force starts [m]: 0 for a cylinder, negative for a
+    #: tilted roller whose depth is that of its centre. The laws built on F(d) with
+    #: F(0) = 0 (tangential, viscoelastic) refuse a law that starts elsewhere.
+    first_contact_depth = 0.0
 
     #: Why a model without an MDR profile has none (the end of the NotImplementedError
     #: message of :meth:`profile`); each such model states its own reason.

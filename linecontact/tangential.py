@@ -325,6 +325,9 @@ def _ratio(gstar, estar):
 # --------------------------------------------------------------------------------------
 def _law(model, depth):
     """F(z) of the model with F(0) = 0 (every contact law starts at zero force)."""
+    check = getattr(model, "check_starts_at_zero", None)
+    if check is not None:
+        check()
     z = np.asarray(depth, dtype=float)
     res = np.zeros(z.shape)
     pos = z > 0

@@ -612,6 +612,9 @@ def _ramp_increments(model, t, d, k, theta):
 
 
 def _unit_law(model, depth):
+    check = getattr(model, "check_starts_at_zero", None)
+    if check is not None:
+        check()
     d = np.asarray(depth, dtype=float)
     res = np.zeros(d.shape)
     pos = d > 0

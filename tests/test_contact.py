@@ -295,3 +295,47 @@ def test_a_law_states_why_it_has_no_load_distribution():
     with pytest.raises(CombinationError, match="model = 'universal'"):
         r.get("q")
     assert r.get("force") == 1e3
+
+
+def test_a_tilted_rollers_law_is_refused_by_the_laws_that_need_f0_zero():
+    """A tilted roller's registered law gives F at the centre depth, which starts below
+    0 (-theta^2 Rc/2 for a circular crown): the tangential and Lee-Radok laws built on
+    F(d) with F(0) = 0 refuse it and name Contact, which takes the law in the
+    approach (there the MDR shift is found)."""
+    from linecontact.roller import ProfiledRollerModel
+    from linecontact.tangential import tangential_force
+    from linecontact.viscoelastic import force_history
+
+    m = ProfiledRollerModel(5e-3, 10e-3, 115e9, "circular:Rc=0.2", tilt=1e-3,
+                            n_slices=N)
+    assert m.first_contact_depth == pytest.approx(-(1e-3) ** 2 * 0.2 / 2, rel=1e-9)
+    with pytest.raises(CombinationError, match="Contact"):
+        tangential_force(m, 1e-6, 1e-8, 0.2, 100e9)
+    with pytest.raises(CombinationError, match="nonzero depth"):
+        force_history(m, StandardLinearSolid(3e9, 1e9, 10.0), [0.0, 1.0], 1e-6)
+    c = Contact(Roller(5e-3, 10e-3, crown_radius=0.2, tilt=1e-3), None, STEEL, STEEL,
+                n_slices=N)
+    t = c.tangential(0.2, force=300.0, tangential_force=30.0)
+    assert t.state == "partial slip" and t.shift > 0
+    assert t.normal.approach == pytest.approx(t.normal.depth + (1e-3) ** 2 * 0.2 / 2,
+                                              rel=1e-9)
+
+
+def test_bem_tangential_of_a_straight_cylinder_is_the_tables_and_refused_for_a_crown():
+    """method='bem' gives a straight cylinder's direction-dependent k_t and shift, the
+    same as linecontact.tangential.TangentialContact on the same law (1e-12); a crowned
+    roller is refused (the table is for a straight, aligned cylinder)."""
+    from linecontact.models import get_model
+    from linecontact.tangential import TangentialContact
+
+    c = Contact(Roller(5e-3, 10e-3), None, STEEL, STEEL)
+    m = get_model("universal", 5e-3, 10e-3, c.estar)
+    for direction in ("across", "along"):
+        t = c.tangential(0.1, force=1e3, tangential_force=-50.0, method="bem",
+                         direction=direction)
+        tc = TangentialContact(m, 0.1, c.gstar, force=1e3, method="bem",
+                               direction=direction)
+        assert t.stiffness == pytest.approx(tc.stiffness, rel=1e-12)
+        assert t.shift == pytest.approx(tc.shift(-50.0), rel=1e-12) and t.shift < 0
+    with pytest.raises(CombinationError, match="straight, aligned cylinder"):
+        crowned().tangential(0.1, force=100.0, method="bem")

@@ -347,25 +347,29 @@ _NORMAL = ("force", "depth", "stiffness", "contact_radius", "half_width", "peak_
 
 
 def _law_evaluator(model):
-    """evaluate(given, values) of a plain straight contact: the law on the whole array,
-    Hertz's half-width and p0 of the strip (as linecontact.contact.Contact.normal)."""
-    from ..classical import hertz_half_width, hertz_peak_pressure
+    """evaluate(given, values) of a plain straight contact: the law on the whole array
+    (Hertz's half-width and p0 of the strip follow in _hertz, as in
+    linecontact.contact.Contact.normal)."""
 
     def evaluate(given, values):
         model.check_applicable()  # refused for the whole cylinder: one message
-        r = model.evaluate(**{("force" if given == "load" else "depth"): values})
-        F = np.asarray(r["force"], dtype=float)
-        # only where the law computed the row: nothing else covers it (a radius of
-        # 1e30 m printed b = 1e18 um, p0 = 6e-14 MPa beside a refused depth)
-        ok = np.isfinite(F) & (F > 0) & np.isfinite(np.asarray(r["depth"], dtype=float))
-        b = np.full(F.shape, np.nan)
-        p0 = np.full(F.shape, np.nan)
-        if ok.any():
-            b[ok] = hertz_half_width(F[ok], model.radius, model.length, model.estar)
-            p0[ok] = hertz_peak_pressure(F[ok], model.radius, model.length, model.estar)
-        return dict(r, half_width=b, peak_pressure=p0)
+        return model.evaluate(**{("force" if given == "load" else "depth"): values})
 
     return evaluate
+
+
+def _hertz(r, R, L, E):
+    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force,
+    only in the rows the model computed (a finite depth): a row no model covers shows
+    no number at all (issue 22: a radius of 1e30 m printed b = 1e18 um and p0 =
+    6e-14 MPa beside a refused depth)."""
+    from ..classical import hertz_half_width, hertz_peak_pressure
+
+    F = r["force"]
+    ok = np.isfinite(F) & (F > 0) & np.isfinite(r["depth"])
+    if ok.any():
+        r["half_width"][ok] = hertz_half_width(F[ok], R, L, E)
+        r["peak_pressure"][ok] = hertz_peak_pressure(F[ok], R, L, E)
 
 
 def _contact_evaluator(contact):
@@ -373,12 +377,14 @@ def _contact_evaluator(contact):
     value for a slice model; the two contacts in series between raceways)."""
 
     def evaluate(given, values):
-        if contact.raceways and not contact.sliced and len(values) > 1:
+        if contact.raceways and not contact.sliced and np.ndim(values) > 0:
             # one solution per value (a law between raceways solves arrays at once, but
             # the features read each row's two contacts from its own solution)
-            parts = [evaluate(given, values[k:k + 1]) for k in range(len(values))]
-            return {k: np.concatenate([np.atleast_1d(p[k]) for p in parts])
-                    for k in parts[0]}
+            parts = [evaluate(given, float(x)) for x in values]
+            return {k: np.concatenate([np.atleast_1d(np.asarray(p[k], dtype=object
+                                                                 if k == "solution"
+                                                                 else float))
+                                       for p in parts]) for k in parts[0]}
         res = contact.normal(**{("force" if given == "load" else "depth"): values})
         out = {k: getattr(res, k, None) for k in _NORMAL if k != "contact_radius"}
         if contact.sliced:  # no Hertz strip: the slice model's own peak (p_max) says it
@@ -387,7 +393,9 @@ def _contact_evaluator(contact):
             law = contact.law()
             out["contact_radius"] = law.contact_radius(res.depth)
         sols = list(res.solutions)
-        if len(sols) == len(values):
+        if np.ndim(values) == 0:
+            out["solution"] = np.array(sols[:1] + [None], dtype=object)[:1]
+        elif len(sols) == len(values):
             out["solution"] = np.array(sols + [None], dtype=object)[:-1]
         elif len(sols) == 1:  # a law between raceways: one solution over the array
             out["solution"] = np.array([sols[0]] * len(values) + [None], dtype=object)[:-1]
@@ -664,16 +672,19 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
 
     parts = dict(_core_parts(cases, i0), **extra)
     try:
-        _build_contact(parts, None, {})  # the combination itself (the default model)
+        default = _build_contact(parts, None, {})  # the combination, its default model
     except (CombinationError, OutOfRangeError) as exc:
         for i in g:
             errors[i] = str(exc)
         return None, None
     chosen = specs
     if chosen is None:
+        # the library's default decides: a slice model (profile, tilt) -> the feature's
+        # set; a straight law (e.g. a straight roller whose free tilt is 0 by symmetry)
+        # -> the standard set
         chosen = default_specs
         for f, st in composed:
-            if f.name in feature_sets and st.rows[i0]:
+            if f.name in feature_sets and st.rows[i0] and default.sliced:
                 chosen = feature_sets[f.name]
     sets = []
     for text, key, options in chosen:
@@ -748,6 +759,8 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
                 for k in r:
                     r[k][sel] = rr[k]
     L = cases.length[g[0]]
+    if text is None:  # a plain straight contact (or its refused stand-in)
+        _hertz(r, cases.radius_eff[g[0]], L, cases.estar[g[0]])
     flags = [""] * len(g)
     w = whole[g]
     for j in np.flatnonzero(~w):

@@ -90,8 +90,11 @@ def resolve(values, present, fail):
     for i in np.flatnonzero(given["inner"] & given["outer"]):
         try:
             check_fit(float(R1[i]), float(radii["inner"][i]), float(radii["outer"][i]))
-        except CombinationError as exc:
-            fail.message(np.arange(len(rows)) == i, exc)
+        except CombinationError as exc:  # the library's reason, said for the options
+            name = "outer_raceway" if P["outer_raceway"][i] else "outer_raceway_diameter"
+            fail(np.arange(len(rows)) == i, name,
+                 f"{label('outer_raceway')} - {label('inner_raceway')} = the roller "
+                 "diameter 2 R1 (+ a radial clearance within 1 % of it)", exc.reason)
         except ValueError:
             pass  # a value out of range: its own message comes from the core
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -115,7 +115,7 @@ def _check_profiles(v, P, fail):
     option and the spec as typed."""
     from ..._units import range_error_parts
     from ...profiles import parse_profile
-    from ...validity import OutOfRangeError
+    from ...validity import OutOfRangeError, UnknownNameError
 
     label = fail.label
     seen = {}
@@ -131,6 +131,10 @@ def _check_profiles(v, P, fail):
                 try:
                     parse_profile(spec, length=L, radius=R, estar=1e11, diameter=2 * R,
                                   design_force=force)
+                except UnknownNameError as exc:  # an unknown profile or option name
+                    seen[key] = ("one of " + ", ".join(exc.valid),
+                                 "not a profile" if exc.parameter == "profile"
+                                 else f"unknown {exc.parameter} {exc.value!r}")
                 except OutOfRangeError as exc:
                     valid, reason = range_error_parts(exc)
                     if exc.parameter == "profile":  # the spec itself

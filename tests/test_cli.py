@@ -687,6 +687,9 @@ def test_geometry_flags_on_every_row_of_every_model(capsys):
                      "--modulus", "210GPa", "--poisson", "0.3", "--load", "1kN")
     for m in doc["models"]:
         row = m["rows"][0]
+        if row["depth"] is None:  # refused by that model: nothing covers the row
+            assert row["half_width"] is None and row["peak_pressure"] is None
+            continue
         assert row["half_width"] > 0.5 * 0.1e-3 and "b > 0.5 L" in row["flags"]
 
 

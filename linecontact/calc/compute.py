@@ -202,7 +202,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
     """
     from .. import models
     from .._units import InputError
-    from ..validity import OutOfRangeError
+    from ..validity import OutOfRangeError, UnknownNameError
 
     if specs is None:
         if first_only and default_key is not None:
@@ -215,7 +215,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
             chosen.append(models.get_model(key, R, L, E, **options))
         except OutOfRangeError as exc:  # refused for this cylinder: a row with a note
             chosen.append(Refused(text, exc))
-        except TypeError as exc:  # an option the model does not take
+        except (TypeError, UnknownNameError) as exc:  # an option the model does not take
             raise InputError(
                 "--model", text, "options the model takes (see its docstring)", str(exc)
             ) from None

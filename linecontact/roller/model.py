@@ -174,8 +174,9 @@ class ProfiledRoller:
         ----------
         depth : float or array_like
             Depth d of the roller point x = 0 [m]; must exceed
-            :meth:`first_contact_depth` (else there is no contact). An array gives an
-            array of solutions, one per depth.
+            :meth:`first_contact_depth` (else there is no contact). An array of
+            several depths gives an array of solutions, one per depth (one value,
+            also in a one-element array, gives one solution).
         tilt : float, optional
             Tilt theta, |theta| < 0.1 [rad].
 
@@ -194,7 +195,7 @@ class ProfiledRoller:
         >>> f"{r.at_depth(7.0244e-6).force:.0f} N"
         '1000 N'
         """
-        if np.ndim(depth):
+        if np.size(depth) != 1:
             return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
         th = TILT_RANGE.check(tilt).item()
         d0 = self.first_contact_depth(th)
@@ -346,8 +347,9 @@ class ProfiledRoller:
         Parameters
         ----------
         force : float or array_like
-            Normal force F, 0 < F < inf [N]. An array gives an array of solutions, one
-            per force.
+            Normal force F, 0 < F < inf [N]. An array of several forces gives an
+            array of solutions, one per force (one value, also in a one-element array,
+            gives one solution).
         tilt : float or None, optional
             Tilt theta [rad], |theta| < 0.1; None (default) solves for the tilt at
             which the moment about x = 0 vanishes (a roller free to tilt).
@@ -365,7 +367,7 @@ class ProfiledRoller:
         >>> f"M/F = {s.moment / s.force * 1e3:.3f} mm"
         'M/F = 1.000 mm'
         """
-        if np.ndim(force):
+        if np.size(force) != 1:
             return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
         if tilt is not None:

@@ -352,7 +352,6 @@ def _law_evaluator(model):
     linecontact.contact.Contact.normal)."""
 
     def evaluate(given, values):
-        model.check_applicable()  # refused for the whole cylinder: one message
         return model.evaluate(**{("force" if given == "load" else "depth"): values})
 
     return evaluate
@@ -419,6 +418,19 @@ def _contact_label(contact, spec_text):
 
         return get_model(contact.model, 1.0, 1.0, 1.0, **contact.options).label
     return contact.law().label
+
+
+class _Entry:
+    """The JSON header entry of a composed contact's model: key, label, provenance."""
+
+    def __init__(self, contact, label):
+        self.key = contact.model
+        self.label = label
+        try:
+            prov = contact.law().provenance
+        except Exception:  # noqa: BLE001 - a whole roller or a free tilt: no single law
+            prov = {"model": contact.model, "composed": "linecontact.contact.Contact"}
+        self.provenance = prov
 
 
 class Results:
@@ -735,6 +747,13 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
     obj, text = item
     given = cases.given[g]
     values = cases.value[g]
+    if text is None and not isinstance(obj, Refused):
+        from ..validity import OutOfRangeError
+
+        try:
+            obj.check_applicable()  # refused for the whole cylinder: one message
+        except OutOfRangeError as exc:
+            obj = Refused(obj.label, exc)
     refused = isinstance(obj, Refused)
     if refused:
         model, label = None, obj.label
@@ -747,6 +766,9 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
     r = {k: np.full(len(g), np.nan) for k in _NORMAL}
     r["solution"] = np.full(len(g), None, dtype=object)
     if refused:
+        for which, name in (("load", "force"), ("depth", "depth")):
+            sel = given == which
+            r[name][sel] = values[sel]  # the given quantity, even where refused
         for i in g:
             notes[i] = _user_note(obj.exc, given[0], cases, i)
     else:
@@ -813,16 +835,20 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
                                              errors, produced)
         per_set.append(r)
         if not s.get("named"):  # the column suffix of the set: its first model's
-            s["id"] = (model_id(obj) if item[1] is None and not isinstance(obj, Refused)
+            s["id"] = (model_id(item[0]) if item[1] is None
+                       and not isinstance(item[0], Refused)
                        else re.sub(r"[^a-z0-9.]+", "-", str(item[1] or obj.label).lower())
                        .strip("-"))
             s["named"] = True
-        if not isinstance(obj, Refused) and item[1] is None:
-            mid = model_id(obj)
+        first = item[0]  # the model as built (its provenance even where it refused)
+        if not isinstance(first, Refused) and item[1] is not None:
+            first = _Entry(first, label)  # a composed contact: its model's entry
+        if not isinstance(first, Refused):
+            mid = model_id(first)
             if mid not in results.models:
-                results.models[mid] = obj
+                results.models[mid] = first
             if s.get("model") is None:  # the first contact's model: its JSON entry
-                s["model"] = obj
+                s["model"] = first
         s["label"][g] = label
         f = s["fields"]
         for name, arr in r.items():

@@ -219,10 +219,36 @@ class ContactModel(abc.ABC):
     #: Registry key.
     key: str = ""
 
+    def __init_subclass__(cls, **kwargs):
+        """Every model's constructor refuses an unknown keyword (``cc=`` for Johnson's
+        ``c``) with one line listing the valid ones (:class:`UnknownNameError`), not
+        Python's bare TypeError."""
+        super().__init_subclass__(**kwargs)
+        init = cls.__dict__.get("__init__")
+        if init is None or getattr(init, "_keywords_checked", False):
+            return
+        import functools
+        import inspect
+
+        params = inspect.signature(init).parameters
+        if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+            return
+        names = [n for n in params if n != "self"]
+
+        @functools.wraps(init)
+        def checked(self, *args, **options):
+            for name in options:
+                if name not in params:
+                    raise UnknownNameError(f"{cls.__name__} keyword", name, names)
+            return init(self, *args, **options)
+
+        checked._keywords_checked = True
+        cls.__init__ = checked
+
     def __init__(self, radius, length, estar, **options):
         if options:
-            raise TypeError(f"model {self.key!r} takes no option(s) "
-                            f"{', '.join(sorted(options))}")
+            raise UnknownNameError(f"{type(self).__name__} keyword", sorted(options)[0],
+                                   ["radius", "length", "estar"])
         self.radius = _scalar("radius", radius, "m")
         self.length = _scalar("length", length, "m")
         self.estar = _scalar("estar", estar, "Pa")

@@ -167,7 +167,7 @@ def test_viscoelastic_body_against_an_elastic_one_adds_compliances():
     (the compliances add), for a three-term Prony series (inverted numerically) and a
     standard linear solid (closed form), at five times (1e-10)."""
     t = np.array([0.0, 0.05, 3.0, 200.0, 1e5])
-    for body in (PronySeries(1e9, [2e9, 1e9, 0.5e9], [0.1, 10.0, 300.0]),
+    for body in (PronySeries(1e9, moduli=[2e9, 1e9, 0.5e9], times=[0.1, 10.0, 300.0]),
                  StandardLinearSolid(3e9, 1e9, 10.0)):
         m = effective_relaxation(body, 0.4, 210e9, 0.3)
         expect = (1 - 0.4 ** 2) * body.creep(t) + (1 - 0.3 ** 2) / 210e9

@@ -254,6 +254,10 @@ def main(argv=None):
         from .compute import parse_model_option
 
         specs = parse_model_option(args.model)
+        from . import render
+
+        render.refuse_input_as_output(args.output, [args.csv] + [
+            getattr(args, p.name) for p in PARAMETERS if p.kind == "path"])
         if args.csv is not None:
             from .batch import run_batch
 

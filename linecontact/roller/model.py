@@ -172,16 +172,18 @@ class ProfiledRoller:
 
         Parameters
         ----------
-        depth : float
+        depth : float or array_like
             Depth d of the roller point x = 0 [m]; must exceed
-            :meth:`first_contact_depth` (else there is no contact).
+            :meth:`first_contact_depth` (else there is no contact). An array of
+            several depths gives an array of solutions, one per depth (one value,
+            also in a one-element array, gives one solution).
         tilt : float or str, optional
             Tilt theta, |theta| < 0.1 [rad] (default 0: aligned); ``"free"``: the tilt
             at which the moment about x = 0 vanishes at this depth.
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `depth`)
 
         Raises
         ------
@@ -194,6 +196,8 @@ class ProfiledRoller:
         >>> f"{r.at_depth(7.0244e-6).force:.0f} N"
         '1000 N'
         """
+        if np.size(depth) != 1:
+            return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
         if is_free_tilt(tilt):
             return self._free_tilt_at_depth(depth)
         th = TILT_RANGE.check(tilt).item()
@@ -346,8 +350,10 @@ class ProfiledRoller:
 
         Parameters
         ----------
-        force : float
-            Normal force F, 0 < F < inf [N].
+        force : float or array_like
+            Normal force F, 0 < F < inf [N]. An array of several forces gives an
+            array of solutions, one per force (one value, also in a one-element array,
+            gives one solution).
         tilt : float or str, optional
             Tilt theta [rad], |theta| < 0.1 (default 0: aligned); ``"free"`` solves
             for the tilt at which the moment about x = 0 vanishes (a roller free to
@@ -357,7 +363,7 @@ class ProfiledRoller:
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `force`)
 
         Examples
         --------
@@ -366,6 +372,8 @@ class ProfiledRoller:
         >>> f"M/F = {s.moment / s.force * 1e3:.3f} mm"
         'M/F = 1.000 mm'
         """
+        if np.size(force) != 1:
+            return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
         if not is_free_tilt(tilt):
             th = TILT_RANGE.check(tilt).item()
@@ -492,3 +500,18 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
     if depth is not None:
         return r.at_depth(depth, tilt)
     return r.at_force(force, tilt)
+
+
+def _each(solve, values, name, unit):
+    """An object array of `solve(v)` over the array `values` (same shape), each value
+    checked first (finite numbers), so that an array of forces or depths is accepted
+    wherever one is."""
+    v = np.asarray(values, dtype=float)
+    if not np.all(np.isfinite(v)):
+        i = int(np.argmax(~np.isfinite(v.ravel())))
+        raise OutOfRangeError(name, float(v.ravel()[i]), f"finite values [{unit}]",
+                              unit=unit, where=f"element {i}")
+    out = np.empty(v.shape, dtype=object)
+    for idx in np.ndindex(v.shape):
+        out[idx] = solve(float(v[idx]))
+    return out

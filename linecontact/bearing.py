@@ -93,8 +93,8 @@ __all__ = [
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
-#: Slices of a profiled roller in a bearing (the roller model's default) [-].
-N_SLICES = 100
+#: Slices of a profiled roller in a bearing (converged to 0.1 % in its outputs) [-].
+N_SLICES = 40
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
 #: ISO 16281 constants relating the ring rolling-element rating Q_c to C_r:
@@ -590,7 +590,8 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the coupled-slice model, 10 <= n <= 1000 [-] (default 100).
+        Slices of the coupled-slice model, 10 <= n <= 1000 [-] (default 40: the bearing's
+        outputs converged to 0.1 %, docs/bearings.md).
     azimuth0 : float, optional
         Azimuth psi_0 of the first roller from the load line, |psi_0| <= pi [rad]
         (default 0: a roller under the load).
@@ -694,35 +695,50 @@ class RadialRollerBearing:
                                     force=Q, model=self.model)
         return np.asarray(s.deflection), np.asarray(s.stiffness), s
 
-    def _profiled_table(self, Qmax_guess):
-        """The coupled-slice roller tabulated at PROFILED_POINTS loads."""
+    def _contacts(self):
+        """(solve at depth, solve at force) of the inner and the outer contact."""
         from .roller import ProfiledRoller, iso_slicing
 
         R1 = self.roller_diameter / 2
-        Rin, Rout = effective_radii(R1, self.raceways.inner, self.raceways.outer)
-        if self.model == "profiled-roller":
-            ci = ProfiledRoller(Rin, self.length, self.estar, self.profile,
-                                n_slices=self.n_slices)
-            co = ProfiledRoller(Rout, self.length, self.estar, self.profile,
-                                n_slices=self.n_slices)
-            solve_i = lambda F: ci.at_force(F, tilt=0.0)  # noqa: E731
-            solve_o = lambda F: co.at_force(F, tilt=0.0)  # noqa: E731
-        else:
-            n = self.n_slices
-            solve_i = lambda F: iso_slicing(Rin, self.length, self.estar,  # noqa: E731
-                                            self.profile, force=F, tilt=0.0, n_slices=n)
-            solve_o = lambda F: iso_slicing(Rout, self.length, self.estar,  # noqa: E731
-                                            self.profile, force=F, tilt=0.0, n_slices=n)
-        Q = Qmax_guess * np.logspace(-3, math.log10(1.6), PROFILED_POINTS)
-        rows = []
-        for F in Q:
-            si, so = solve_i(F), solve_o(F)
-            rows.append((si, so))
-        return Q, rows, (solve_i, solve_o)
+        out = []
+        for R in effective_radii(R1, self.raceways.inner, self.raceways.outer):
+            if self.model == "profiled-roller":
+                c = ProfiledRoller(R, self.length, self.estar, self.profile,
+                                   n_slices=self.n_slices)
+                out.append((lambda d, c=c: c.at_depth(d, tilt=0.0),
+                            lambda F, c=c: c.at_force(F, tilt=0.0)))
+            else:
+                args = (R, self.length, self.estar, self.profile)
+                out.append((lambda d, a=args: iso_slicing(*a, depth=d, tilt=0.0,
+                                                          n_slices=self.n_slices),
+                            lambda F, a=args: iso_slicing(*a, force=F, tilt=0.0,
+                                                          n_slices=self.n_slices)))
+        return out
+
+    @staticmethod
+    def _depth_table(at_depth, d_lo, d_top, F_top):
+        """One contact at PROFILED_POINTS depths from d_lo up to a depth carrying at
+        least F_top (d_top, raised by 1.5 until it does)."""
+        top = at_depth(d_top)
+        for _ in range(40):
+            if top.force >= F_top:
+                break
+            d_top *= 1.5
+            top = at_depth(d_top)
+        d = np.geomspace(min(d_lo, d_top / 10), d_top, PROFILED_POINTS)
+        return [at_depth(x) for x in d[:-1]] + [top]
 
     # -- the solve ----------------------------------------------------------------
+    def _approach(self, dr):
+        """delta_j = delta_r cos psi_j - P_d/2; |delta_j| below 1e-12 of the terms (a
+        roller at the load-zone edge, cos psi rounded) is the edge itself, 0."""
+        c = np.cos(self.azimuth)
+        a = dr * c - self.clearance / 2
+        a[np.abs(a) <= 1e-12 * (abs(dr) + abs(self.clearance))] = 0.0
+        return a
+
     def _ring(self, law, dr):
-        approach = dr * np.cos(self.azimuth) - self.clearance / 2
+        approach = self._approach(dr)
         Q, k = law.force(approach)
         c = np.cos(self.azimuth)
         return float(np.sum(Q * c)), float(np.sum(k * c * c)), approach, Q, k
@@ -821,8 +837,7 @@ class RadialRollerBearing:
         error removed); the equilibrium row is linear, so the loads sum to F_r to
         round-off after every step."""
         c = np.cos(self.azimuth)
-        approach = dr * c - self.clearance / 2
-        Q, k = law.force(approach)
+        Q, k = law.force(self._approach(dr))
         on = Q > 0
         sol = None
         for _ in range(20):
@@ -847,56 +862,71 @@ class RadialRollerBearing:
                 break
         d, kk, sol = self._exact(Q[on])
         k[on] = kk
-        approach = dr * c - self.clearance / 2
-        return dr, Q, k, approach, sol
+        return dr, Q, k, self._approach(dr), sol
 
     def _solve_sliced(self, F):
-        """Profiled rollers: the coupled-slice roller tabulated over the loads the
-        bearing needs (first estimated with the universal curve), inverted like a law."""
-        # the load range from a straight-roller estimate
+        """Profiled rollers: each contact's coupled-slice solution tabulated over the
+        depths the bearing needs (the load range first estimated with the universal
+        curve), the two in series at equal load, inverted like a law."""
         est = RadialRollerBearing(self.rollers, self.pitch_diameter,
                                   self.roller_diameter, self.length, self.clearance,
                                   estar=self.estar, azimuth0=self.azimuth0,
                                   rating=self.rating)
-        Qg0, dg0, kg0, _ = est._law_grid(F)
+        Qg0, dg0, kg0, s0 = est._law_grid(F)
         law0 = _Law(Qg0, dg0, kg0)
         dr0 = est._equilibrium(law0, F)
-        Qmax0 = float(np.max(law0.force(dr0 * np.cos(self.azimuth)
-                                         - self.clearance / 2)[0]))
-        Qt, rows, solvers = self._profiled_table(Qmax0)
-        delta = np.array([si.depth + so.depth for si, so in rows])
-        k = np.array([1.0 / (1.0 / si.stiffness + 1.0 / so.stiffness) for si, so in rows])
-        Fi = np.array([si.force for si, _ in rows])
+        Qmax0 = float(np.max(law0.force(est._approach(dr0))[0]))
+        lo, hi = 1e-3 * Qmax0, 1.6 * Qmax0
+        (dep_i, force_i), (dep_o, force_o) = self._contacts()
+        lnQ0 = np.log(Qg0)
+        tables = []
+        for dep, straight in ((dep_i, s0.depth_inner), (dep_o, s0.depth_outer)):
+            ds = np.exp(np.interp(np.log([lo, hi]), lnQ0, np.log(straight)))
+            # the outer table reaches at least the inner table's largest load
+            top = max(hi, tables[0][-1].force) if tables else hi
+            tables.append(self._depth_table(dep, ds[0], ds[1], top))
+        ti, to = tables
+        Fi = np.array([r.force for r in ti])
+        Fo = np.array([r.force for r in to])
+        if not (np.all(np.diff(Fi) > 0) and np.all(np.diff(Fo) > 0)):
+            raise OutOfRangeError("profile", self.profile.label, "a roller whose load "
+                                  "grows with its depth")
+        outer = _Law(Fo, np.array([r.depth for r in to]),
+                     np.array([r.stiffness for r in to]))
+        # the outer contact at the inner table's loads (Hermite in ln F, exact slopes)
+        d_out = outer.delta_of(Fi)
+        k_out = outer.force(d_out)[1]
+        delta = np.array([r.depth for r in ti]) + d_out
+        k = 1.0 / (1.0 / np.array([r.stiffness for r in ti]) + 1.0 / k_out)
         law = _Law(Fi, delta, k)
-        # extend the table's top with the straight law's slope if needed: refuse instead
         dr = self._equilibrium(law, F)
-        c = np.cos(self.azimuth)
-        approach = dr * c - self.clearance / 2
+        approach = self._approach(dr)
         Q, kj = law.force(approach)
-        # lamina loads: interpolate q(x) w / F in ln F between the tabulated loads
-        x = rows[0][0].x
+        inner = _Law(Fi, np.array([r.depth for r in ti]),
+                     np.array([r.stiffness for r in ti]))
+        x = ti[0].x
         w = self.length / len(x)
-        shape_i = np.array([si.q * w / si.force for si, _ in rows])
-        shape_o = np.array([so.q * w / so.force for _, so in rows])
-        lnF = np.log(Fi)
         qi = np.zeros((self.rollers, len(x)))
         qo = np.zeros_like(qi)
+        pp = -math.inf
+        # each loaded roller's two contacts solved at their tabulated depths (the load
+        # then differs from Q_j by the table's interpolation error, law_error: the line
+        # loads are scaled to Q_j); rollers of equal load (+psi and -psi) solved once
+        done = {}
         for j in np.flatnonzero(Q > 0):
-            t = np.clip(np.interp(math.log(Q[j]), lnF, np.arange(len(lnF))), 0,
-                        len(lnF) - 1)
-            i0 = min(int(t), len(lnF) - 2)
-            a = t - i0
-            qi[j] = Q[j] * ((1 - a) * shape_i[i0] + a * shape_i[i0 + 1])
-            qo[j] = Q[j] * ((1 - a) * shape_o[i0] + a * shape_o[i0 + 1])
-        # peak pressure of the most loaded roller, interpolated in ln F
+            key = float(f"{Q[j]:.12e}")
+            if key not in done:
+                ri = dep_i(float(inner.delta_of(Q[j])))
+                ro = dep_o(float(outer.delta_of(Q[j])))
+                done[key] = (ri.q * w * Q[j] / ri.force, ro.q * w * Q[j] / ro.force,
+                             max(ri.p_max if ri.p_max is not None else math.nan,
+                                 ro.p_max if ro.p_max is not None else math.nan))
+            qi[j], qo[j], p = done[key]
+            if Q[j] == np.max(Q):
+                pp = p
         jm = int(np.argmax(Q))
-        pmax = np.array([max(si.p_max if si.p_max is not None else math.nan,
-                             so.p_max if so.p_max is not None else math.nan)
-                         for si, so in rows])
-        pp = float(np.interp(math.log(Q[jm]), lnF, pmax))
-        # the table's own error: each midpoint solved exactly against the interpolant
-        law_error = self._table_error(law, solvers, Fi, Q[jm])
-        label = f"{self.model} ({rows[0][0].method}, {rows[0][0].n_slices} slices)"
+        law_error = self._table_error(law, (force_i, force_o), Fi, Q[jm])
+        label = f"{self.model} ({ti[0].method}, {ti[0].n_slices} slices)"
         return dr, Q, kj, approach, x, qi, qo, pp, law_error, label
 
     @staticmethod

@@ -134,7 +134,7 @@ def load_zone_integral(epsilon, exponent=10 / 9):
     -----
     Valid for 0 < eps <= 1, 1 <= n <= 2 (load zone at most the full circle). Computed
     by Gauss-Legendre quadrature in u = (1 - cos psi)/(2 eps) with the endpoint
-    singularity removed (400 points, relative error < 1e-12).
+    singularity removed (400 points; relative error < 1e-8, 1e-12 for eps <= 0.5).
 
     Examples
     --------

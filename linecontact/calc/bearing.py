@@ -223,11 +223,21 @@ def to_json(argv, bearing, s):
                        "length": bearing.length, "clearance": bearing.clearance,
                        "estar": bearing.estar, "profile": bearing.profile.label},
            "solution": d}
-    return json.dumps(doc, indent=1, allow_nan=False, default=_clean) + "\n"
+    return json.dumps(_clean(doc), indent=1, allow_nan=False) + "\n"
 
 
 def _clean(x):
-    return None
+    """JSON-safe: nan and inf (an edge-loaded roller's peak pressure, an infinite life)
+    become null, numpy scalars plain numbers."""
+    if isinstance(x, dict):
+        return {k: _clean(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_clean(v) for v in x]
+    if hasattr(x, "item") and not isinstance(x, (str, bytes)):
+        x = x.item()
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
 
 
 def figure(path, bearing, s):

@@ -66,11 +66,16 @@ __all__ = [
     "parse_profile",
     "parse_angle",
     "TILT_RANGE",
+    "FREE_TILT",
+    "is_free_tilt",
 ]
 
 #: Tilts theta of the roller's axis accepted by the roller models (the gap linearises
 #: the tilt, theta x, for small angles) [rad].
 TILT_RANGE = Interval("tilt", -0.1, 0.1, low_open=True, high_open=True, unit="rad")
+#: The tilt value that asks for the roller's moment equilibrium (zero moment about its
+#: centre); a number holds the tilt, 0 (the default everywhere) keeps it aligned.
+FREE_TILT = "free"
 
 #: The constant of the Johns-Gohar profile, (1 - C b/a) (Johns & Gohar 1981).
 JOHNS_GOHAR_C = 0.3033
@@ -988,3 +993,43 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
         raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
                               where=f"at x = {x[i]:.6g} m")
     return P
+
+
+def is_free_tilt(tilt):
+    """Whether a tilt argument asks for moment equilibrium (``"free"``) or holds a
+    number; any other word, and None, is refused.
+
+    Parameters
+    ----------
+    tilt : float or str
+        A tilt theta [rad] (a number, checked where it is used) or ``"free"``.
+
+    Returns
+    -------
+    bool
+        True for ``"free"``.
+
+    Raises
+    ------
+    UnknownNameError
+        Another word, or None (ambiguous: give 0 for an aligned roller or ``"free"``).
+
+    Notes
+    -----
+    Valid for any input (a classification); the range |theta| < 0.1 rad is checked by
+    :data:`TILT_RANGE` where the number is used.
+
+    Examples
+    --------
+    >>> is_free_tilt("free"), is_free_tilt(0.0), is_free_tilt(1e-3)
+    (True, False, False)
+    """
+    if isinstance(tilt, str):
+        if tilt == FREE_TILT:
+            return True
+        raise UnknownNameError("tilt", tilt, [FREE_TILT, "a number [rad]"])
+    if tilt is None:
+        raise UnknownNameError("tilt", None, [FREE_TILT, "a number [rad]"],
+                               hint="0 for an aligned roller, 'free' for moment "
+                                    "equilibrium")
+    return False

@@ -63,7 +63,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .profiles import TILT_RANGE
+from .profiles import TILT_RANGE, is_free_tilt
 from .validity import (CombinationError, Interval, OutOfRangeError, UnknownNameError,
                        check_positive, out)
 
@@ -477,9 +477,7 @@ def roller_between_raceways(radius, length, estar, raceways, *, force=None,
                                "give exactly one of force and deflection")
     clearance = raceways.check_fit(R1)
     R_in, R_out = raceways.effective_radii(R1)
-    free = isinstance(tilt, str)
-    if free and tilt != "free":
-        raise UnknownNameError("tilt", tilt, ["free", "a number [rad]"])
+    free = is_free_tilt(tilt)
     th = None if free else TILT_RANGE.check(tilt).item()
     psi = raceways.misalignment
     prof = as_profile(profile, R1, L, E)

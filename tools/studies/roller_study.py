@@ -194,7 +194,7 @@ def runtime_case(task, n_slices=100):
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
                            n_slices=n_slices)
     t0, c0 = time.perf_counter(), time.process_time()
-    r = model.at_force(task["force"], tilt=task["tilt"])
+    r = model.at_force(task["force"], tilt="free" if task["tilt"] is None else task["tilt"])
     dt, dc = time.perf_counter() - t0, time.process_time() - c0
     return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
                 tilt=r.tilt, stiffness=r.stiffness, tilt_stiffness=r.tilt_stiffness,
@@ -207,7 +207,8 @@ def iso_case(task, n_slices=30):
     from linecontact.roller import iso_slicing
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     r = iso_slicing(task["radius"], task["length"], task["estar"], prof,
-                    force=task["force"], tilt=task["tilt"], n_slices=n_slices)
+                    force=task["force"],
+                    tilt="free" if task["tilt"] is None else task["tilt"], n_slices=n_slices)
     return dict(depth=r.depth, moment=r.moment, p_max=_peak(r), edge=bool(r.edge_loaded),
                 tilt=r.tilt, stiffness=r.stiffness, tilt_stiffness=r.tilt_stiffness)
 

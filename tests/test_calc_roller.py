@@ -77,14 +77,17 @@ def test_json_carries_q_of_x(capsys):
 
 
 def test_straight_roller_reports_edge_loading_not_a_number(capsys):
-    """A straight roller (--tilt only) is edge loaded: its peak pressure is singular on
-    a half-space, so the profiled row prints '-' for p max, 'both ends' for the edge,
-    and says why; the JSON has p_max null and edge_loaded true."""
-    status, out, err = _main(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    """A straight roller solved by coupled slices (--model profiled-roller; without it
+    a straight aligned roller is the universal law, as in Contact) is edge loaded: its
+    peak pressure is singular on a half-space, so the row prints '-' for p max and says
+    why (both ends); the JSON has p_max null and edge_loaded true."""
+    argv = (*ROLLER, "--load", "1kN", "--tilt", "0", "--model", "profiled-roller")
+    status, out, err = _main(capsys, *argv)
     assert status == 0, err
     row = next(ln for ln in out.splitlines() if ln.startswith("Profiled roller"))
     assert "both ends" in row and "singular" in row
-    doc = _json(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    doc = _json(capsys, *argv)
+    assert doc["models"][0]["rows"][0]["p_max"] is None
     r = doc["profiled_roller"][0]["rows"][0]
     assert r["p_max"] is None and r["edge_loaded"] is True
 

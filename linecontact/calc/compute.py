@@ -23,7 +23,7 @@ import re
 
 import numpy as np
 
-from .feature import Field, flag_text
+from .feature import DEPTH_OVER_RADIUS_MAX, HALF_WIDTH_OVER_LENGTH_MAX, Field, flag_text
 from .features import FEATURES
 
 __all__ = ["FIELDS", "CONTACT_COLUMNS", "P0_NOTE", "all_fields", "parse_model_option",
@@ -725,8 +725,12 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         _hertz(r, cases.radius_eff[g[0]], L, cases.estar[g[0]])
     flags = [""] * len(g)
     w = whole[g]
-    for j in np.flatnonzero(~w):
-        flags[j] = flag_text(r["depth"][j], r["half_width"][j], cases.radius_eff[g[0]], L)
+    R = cases.radius_eff[g[0]]
+    with np.errstate(invalid="ignore"):  # only the flagged rows are worded (a long sweep)
+        odd = ~w & ((r["depth"] / R > DEPTH_OVER_RADIUS_MAX)
+                    | (r["half_width"] / L > HALF_WIDTH_OVER_LENGTH_MAX))
+    for j in np.flatnonzero(odd):
+        flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
     if refused:
         return r, flags, label, obj
     for f, st in active:

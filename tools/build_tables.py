@@ -16,6 +16,9 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
+``bearing``
+    Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
+    spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
 
 Run from the repository root, e.g.::
 
@@ -35,6 +38,7 @@ SUBCOMMANDS = {
     "roller": "tools.studies.roller_study",
     "tangential": "tools.studies.tangential_study",
     "accuracy": "tools.studies.accuracy",
+    "bearing": "tools.studies.bearing_study",
 }
 
 

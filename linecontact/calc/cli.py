@@ -141,10 +141,19 @@ def build_parser():
                      "rows or more, on a terminal)")
     out.add_argument("--no-progress", dest="progress", action="store_false",
                      help="no progress bar")
+    from .bearing import add_parser as add_bearing
+
+    add_bearing(sub)
     return parser
 
 
-_VALUE_OPTIONS = {option_name(p.name) for p in PARAMETERS}
+def _value_options():
+    from .bearing import PARAMETERS as BEARING
+
+    return {option_name(p.name) for p in PARAMETERS + BEARING}
+
+
+_VALUE_OPTIONS = _value_options()
 _NEGATIVE = re.compile(r"^-(\d|\.\d)")
 
 
@@ -235,8 +244,8 @@ class _Failed(Exception):
     """A one-line error message already composed."""
 
 
-def _error(message):
-    print(f"{PROG} calc: error: {message}", file=sys.stderr)
+def _error(message, command="calc"):
+    print(f"{PROG} {command}: error: {message}", file=sys.stderr)
 
 
 def main(argv=None):
@@ -250,6 +259,8 @@ def main(argv=None):
     if args.command is None:
         parser.print_help(sys.stderr)
         return 2
+    if args.command == "bearing":
+        return _bearing(args, argv)
     try:
         from .compute import parse_model_option
 
@@ -289,4 +300,25 @@ def main(argv=None):
         name = getattr(exc, "filename", None)
         reason = exc.strerror or str(exc) or type(exc).__name__
         _error(f"{name!r}: {reason}" if name else reason)
+        return 2
+
+
+def _bearing(args, argv):
+    """``linecontact bearing``: bad input is one line on stderr, status 2."""
+    from .bearing import run
+
+    try:
+        return run(args, argv)
+    except ValueError as exc:  # InputError, OutOfRangeError, CombinationError, ...
+        _error(str(exc).splitlines()[0] if str(exc) else type(exc).__name__, "bearing")
+        return 2
+    except BrokenPipeError:
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except OSError as exc:
+        name = getattr(exc, "filename", None)
+        reason = exc.strerror or str(exc) or type(exc).__name__
+        _error(f"{name!r}: {reason}" if name else reason, "bearing")
         return 2

@@ -195,18 +195,21 @@ def force_depth(models, depth=None, *, points=None, ax=None):
         raise OutOfRangeError("depth", float(np.min(d)) if d.size else "[]",
                               "(0, inf) m, at least one value")
     fig, ax = _figure(ax)
+    handles, texts = [], []
     for m in models:
         F = _answer(m.force, d)
         err = m.measured_error
-        label = m.label
-        line, = ax.plot(d * 1e6, F, label=label)
+        line, = ax.plot(d * 1e6, F, label=m.label)
         line.measured_error = err           # kept with the line for readers and tests
+        handles.append(line)
+        texts.append(m.label + (f": {_short_error(err)}" if err else ""))
     if points:
         pts = np.array([(float(a), float(b)) for a, b in points], dtype=float)
         pts = pts[np.all(np.isfinite(pts), axis=1)]
         if pts.size:
-            ax.plot(pts[:, 0] * 1e6, pts[:, 1], "o", color="k", ms=4,
-                    label="computed", zorder=5)
+            handles += ax.plot(pts[:, 0] * 1e6, pts[:, 1], "o", color="k", ms=4,
+                               label="computed", zorder=5)
+            texts.append("computed")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("depth d [um]")
@@ -215,12 +218,19 @@ def force_depth(models, depth=None, *, points=None, ax=None):
     ax.set_title(f"R = {m0.radius * 1e3:.4g} mm, L = {m0.length * 1e3:.4g} mm, "
                  f"E* = {m0.estar / 1e9:.4g} GPa", fontsize=9)
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=6, loc="upper left")
-    errors = [f"{m.label}: {m.measured_error}" for m in models if m.measured_error]
-    if errors:
-        fig.text(0.01, 0.0, "\n".join(errors), fontsize=4.5, va="top", ha="left",
-                 transform=ax.transAxes)
+    ax.legend(handles, texts, fontsize=6, loc="lower right",
+              title="measured error against the 3D BEM (tables/model_accuracy.csv)",
+              title_fontsize=6)
     return fig
+
+
+def _short_error(text):
+    """'F a to b, k c to d' of a measured-error text, else its first clause."""
+    import re
+    m = re.search(r"(F [^,]+, k [^(;]+?)(\s*\(|;|$)", text)
+    if m and "not " not in text.split(":")[0]:
+        return m.group(1)
+    return text.split(";")[0].split(" (")[0]
 
 
 def _solution(result):

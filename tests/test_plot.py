@@ -156,3 +156,22 @@ def test_matplotlib_is_optional():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=120)
     assert out.stdout.strip() == "False"
+
+
+def test_calc_plot_option(tmp_path, capsys):
+    """`linecontact calc ... --plot FILE` writes the figure beside the table; a bad
+    extension or a CSV batch is refused with one line and status 2 (nothing drawn)."""
+    from linecontact.calc.cli import main
+    case = ["calc", "--radius", "5mm", "--length", "14mm", "--estar", "115GPa"]
+    out = tmp_path / "case.svg"
+    assert main(case + ["--load", "100N:1kN:3", "--crown-radius", "500mm",
+                        "--plot", str(out)]) == 0
+    assert out.read_bytes().startswith(b"<?xml") and b"line load" in out.read_bytes()
+    capsys.readouterr()
+    assert main(case + ["--load", "1kN", "--plot", str(tmp_path / "x.gif")]) == 2
+    assert "--plot = " in capsys.readouterr().err
+    csv = tmp_path / "cases.csv"
+    csv.write_text("load\n1kN\n")
+    assert main(case + [str(csv), "--plot", str(tmp_path / "b.png")]) == 2
+    assert "not a CSV batch" in capsys.readouterr().err
+    assert not (tmp_path / "b.png").exists()

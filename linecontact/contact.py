@@ -372,6 +372,21 @@ class _Result:
                                    self.reasons[name][1])
         return value
 
+    def to_dict(self):
+        """Every output by name (:func:`linecontact.tabular.to_dict`)."""
+        from .tabular import to_dict
+        return to_dict(self)
+
+    def to_frame(self):
+        """A pandas DataFrame, one row per load or time (:func:`linecontact.tabular.to_frame`)."""
+        from .tabular import to_frame
+        return to_frame(self)
+
+    def _repr_html_(self):
+        """The table Jupyter shows (:func:`linecontact.tabular.html_table`)."""
+        from .tabular import html_table
+        return html_table(self)
+
 
 @dataclass(frozen=True)
 class ContactResult(_Result):

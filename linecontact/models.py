@@ -835,7 +835,7 @@ class PalmgrenModel(_SteelModel):
 @register
 @document(STEEL=_c.STEEL_ESTAR_RANGE)
 class ISO16281Model(_SteelModel):
-    """ISO/TS 16281 per-contact roller deflection (steel only).
+    """ISO 16281 per-contact roller deflection (steel only).
 
     Parameters
     ----------
@@ -860,16 +860,16 @@ class ISO16281Model(_SteelModel):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the
-       modified reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the
+       modified reference rating life for universally loaded rolling bearings.
     """
 
     key = "iso16281"
-    label = "ISO/TS 16281"
+    label = "ISO 16281"
     accuracy_tag = "iso16281"
     _depth_fn = staticmethod(_c.iso16281_depth)
     _force_fn = staticmethod(_c.iso16281_force)
-    _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
+    _source = ("ISO 16281:2025: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
@@ -1140,7 +1140,7 @@ def standard_models(radius, length, estar):
     Universal curve (the best estimate, :data:`DEFAULT_MODEL`), Li-Popov Table 1 spline,
     Li-Popov Eq. 11, Li-Popov regenerated (only if ``tables/lipopov_regenerated.csv``
     exists: an optional coefficient set), Puttock-Thwaite, Johnson c = 1, 0.72, 0.572,
-    Kunz, Palmgren, ISO/TS 16281.
+    Kunz, Palmgren, ISO 16281.
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise

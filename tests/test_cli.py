@@ -243,7 +243,7 @@ def test_json_results_equal_the_library_called_with_si_inputs(results):
         assert _close(row["stiffness"], float(model.stiffness_at_force(1000.0))), model.key
         compared += 1
     # L/R = 2, rigid cylinder on steel: all rows answer but Eq. 11 (L/R >= 5) and the
-    # steel-on-steel-only Palmgren and ISO/TS 16281
+    # steel-on-steel-only Palmgren and ISO 16281
     assert compared == len(doc["models"]) - 3, f"{compared} rows compared"
 
 
@@ -327,7 +327,7 @@ def test_depth_input_gives_force_and_depth_column_first(results):
             continue
         assert _close(row["force"], force), model.label
         compared += 1
-    # as above: Eq. 11, Palmgren and ISO/TS 16281 refuse this case
+    # as above: Eq. 11, Palmgren and ISO 16281 refuse this case
     assert compared == len(doc["models"]) - 3, f"{compared} rows compared"
     header = next(
         line

@@ -11,7 +11,7 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
     The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
     beta: tables/lipopov_regenerated.csv and the raw curves (tools.studies.paper_study).
 ``roller``
-    Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
+    Profiled and tilted rollers, runtime and ISO 16281 slicing against the 3D BEM:
     tables/roller_accuracy.csv (tools.studies.roller_study).
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:

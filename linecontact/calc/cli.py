@@ -136,6 +136,10 @@ def build_parser():
     out.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")
     out.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
     out.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    out.add_argument("--plot", metavar="FILE", help="also draw the case (one case or a "
+                     "sweep): F(d) of the models where each applies, with the computed "
+                     "points, and a profiled roller's q(x); PNG, SVG or PDF by the "
+                     "extension; needs matplotlib (pip install 'linecontact[plot]')")
     out.add_argument("--progress", dest="progress", action="store_true", default=None,
                      help="progress bar on stderr for a batch (default: batches of 10000 "
                      "rows or more, on a terminal)")
@@ -228,10 +232,19 @@ def _calc_one(args, argv, specs):
     bad = next((e for e in errors if e), "")
     if bad:  # an unexpected failure of a model, or a feature's one-case refusal
         raise _Failed(bad)
+    if args.plot is not None:  # refuse a bad file name before anything is written
+        from ..plot import FORMATS
+        from ..validity import OutOfRangeError
+        if args.plot.rsplit(".", 1)[-1].lower() not in FORMATS:
+            raise OutOfRangeError("--plot", args.plot, "a name ending in .png, .svg "
+                                  "or .pdf")
     if args.json:
         render.write(render.one_json(argv, cases, present, results), args.output)
     else:
         render.write(render.table_text(cases, present, results, args.si), args.output)
+    if args.plot is not None:
+        from .figure import draw_results
+        draw_results(results, args.plot)
     computed = any(not note for s in results.sets for note in s["note"])
     if not computed:
         notes = [s["note"][0] for s in results.sets]
@@ -272,6 +285,10 @@ def main(argv=None):
         if args.csv is not None:
             from .batch import run_batch
 
+            if getattr(args, "plot", None) is not None:
+                raise _Failed("--plot draws one case or a sweep, not a CSV batch (read "
+                              "the batch's output into linecontact.plot instead)")
+
             options = {p.name: getattr(args, p.name) for p in PARAMETERS}
             return run_batch(args, argv, specs, options)
         return _calc_one(args, argv, specs)
@@ -296,6 +313,13 @@ def main(argv=None):
         return 1
     except KeyboardInterrupt:
         return 130
+    except ImportError as exc:  # --plot without matplotlib: say how to install it
+        from ..plot import MissingDependencyError
+
+        if not isinstance(exc, MissingDependencyError):
+            raise
+        _error(str(exc))
+        return 2
     except OSError as exc:  # the output file (render.OutputError names it) and others
         name = getattr(exc, "filename", None)
         reason = exc.strerror or str(exc) or type(exc).__name__

@@ -408,7 +408,7 @@ def _contact_label(contact, spec_text):
     the profile and the tilt."""
     if contact.sliced:
         name = {"profiled-roller": "Profiled roller",
-                "iso16281-slicing": "ISO/TS 16281 slicing"}.get(contact.model, spec_text)
+                "iso16281-slicing": "ISO 16281 slicing"}.get(contact.model, spec_text)
         tilt = contact.tilt
         text = (", free tilt" if tilt == "free" else
                 f", tilt {tilt * 1e3:.4g} mrad" if tilt else "")

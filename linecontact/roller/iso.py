@@ -1,10 +1,10 @@
-"""ISO/TS 16281 slicing of a profiled, tilted roller: uncoupled nonlinear slice springs
+"""ISO 16281 slicing of a profiled, tilted roller: uncoupled nonlinear slice springs
 with the misalignment term, for comparison with the coupled-slice model.
 
 References
 ----------
-ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified reference
-rating life for universally loaded bearings (slicing method).
+ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified reference
+rating life for universally loaded rolling bearings (slicing method).
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["iso_slicing", "ISO_MIN_SLICES"]
 
-#: ISO/TS 16281 asks for at least 30 slices.
+#: ISO 16281 asks for at least 30 slices.
 ISO_MIN_SLICES = 30
 
 
@@ -40,7 +40,7 @@ def _iso_state(P, x, L, E, n, d, th):
 
 def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, tilt=0.0,
                 n_slices=30):
-    """ISO/TS 16281 slicing: uncoupled nonlinear slice springs with the misalignment term.
+    """ISO 16281 slicing: uncoupled nonlinear slice springs with the misalignment term.
 
     .. math::
 
@@ -75,7 +75,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     Returns
     -------
     RollerSolution
-        With method ``"ISO/TS 16281 slicing"``; ``p_max`` is the largest slice pressure
+        With method ``"ISO 16281 slicing"``; ``p_max`` is the largest slice pressure
         (the method has no edge peak; ``edge_loaded`` still says if an end is loaded).
 
     Raises
@@ -102,7 +102,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
 
     References
     ----------
-    ISO/TS 16281:2008 (slicing method); Palmgren (1959).
+    ISO 16281:2025 (slicing method); Palmgren (1959).
     """
     from ..classical import STEEL_ESTAR_RANGE, _STEEL_HINT
     R = float(check_positive("radius", radius, "m"))
@@ -110,7 +110,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     E = float(check_positive("estar", estar, "Pa"))
     STEEL_ESTAR_RANGE.check(E, hint=_STEEL_HINT)
     n = check_interval("n_slices", n_slices, ISO_MIN_SLICES, N_SLICES.high,
-                       hint="ISO/TS 16281 asks for at least 30 slices").item()
+                       hint="ISO 16281 asks for at least 30 slices").item()
     n = int(n)
     prof = as_profile(profile, R, L, E)
     w = L / n
@@ -175,7 +175,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     edge = {(True, True): "both", (True, False): "-x", (False, True): "+x"}.get(
         (lo_edge, hi_edge))
     pm, xm = peak_pressure(x, p)
-    msg = ("largest slice pressure of uncoupled 2D Hertz slices (ISO/TS 16281); the "
+    msg = ("largest slice pressure of uncoupled 2D Hertz slices (ISO 16281); the "
            "method has no edge peak")
     if edge is not None:
         msg += f"; the contact reaches the roller end ({edge}), where the true pressure " \
@@ -185,4 +185,4 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
         tilt_stiffness=float(K[1, 1]), stiffness_matrix=K, x=x, q=q, half_width=b,
         pressure=p, p_max=pm, x_at_p_max=xm, contact_start=start, contact_end=stop,
         contact_length=stop - start, edge_loaded=edge is not None, edge=edge,
-        message=msg, method="ISO/TS 16281 slicing", n_slices=n)
+        message=msg, method="ISO 16281 slicing", n_slices=n)

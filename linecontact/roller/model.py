@@ -244,7 +244,7 @@ class ProfiledRoller:
         near = max(s.w, 1e-3 * self.length)
         lo_edge = lo_edge or start <= -self.length / 2 + near
         hi_edge = hi_edge or stop >= self.length / 2 - near
-        # an end where the drop is infinite (Lundberg, ISO/TS 16281: ln 1/(1 - (2x/L)^2))
+        # an end where the drop is infinite (Lundberg, ISO 16281: ln 1/(1 - (2x/L)^2))
         # is never reached: the rigid overlap ends before it, the contact with it, and the
         # pressure stays finite (3D BEM, Lundberg at its design load, R 5 mm, L 10 mm,
         # 1 kN: contact ends 9.8 um before each end, peak 972 MPa 28 um from it, converged

@@ -35,7 +35,7 @@ def test_crown_radius_prints_the_hertz_contact(capsys):
     """--crown-radius makes the contact the crowned roller's: for a crown that stays
     inside the roller its coupled-slice row is the Hertz contact, approach 7.024 um
     and p0 1102 MPa (R 10 mm, Rc 500 mm, 1 kN, printed to 4 digits: 7.024 and 1102),
-    not edge loaded; ISO/TS 16281 slicing follows as its own row, and no
+    not edge loaded; ISO 16281 slicing follows as its own row, and no
     straight-cylinder law is printed as if it were this roller's."""
     status, out, err = _main(capsys, *CROWN, "--load", "1kN", "--crown-radius", "500mm")
     assert status == 0, err
@@ -44,7 +44,7 @@ def test_crown_radius_prints_the_hertz_contact(capsys):
     row = lines[0].split()
     h = hertz_contact(1000.0, 0.5, 0.01, 115.385e9)
     assert f"{h.approach * 1e6:.4g}" in row and f"{h.p0 / 1e6:.4g}" in row
-    assert "ISO/TS 16281 slicing (circular crown (Rc = 500 mm))" in out
+    assert "ISO 16281 slicing (circular crown (Rc = 500 mm))" in out
     assert "Universal curve" not in out and "Li-Popov" not in out
 
 
@@ -254,7 +254,7 @@ def test_plain_calc_does_not_import_the_roller_model():
 
 
 def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
-    """ISO/TS 16281's reference profile is a drop of 0.00035 D ln(...) with D the
+    """ISO 16281's reference profile is a drop of 0.00035 D ln(...) with D the
     roller's own diameter. Against a convex raceway (--radius2) the slices see the
     effective radius 1/R = 1/R1 + 1/R2, but the profile must still use D = 2 R1
     (10 mm here, not 2 R_eff = 8 mm, which made the drop 20 % too shallow)."""
@@ -262,4 +262,4 @@ def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
                              "10mm", "--estar", "115GPa", "--load", "1kN",
                              "--profile", "iso16281")
     assert status == 0, err
-    assert "ISO/TS 16281 (D = 10 mm" in out and "D = 8 mm" not in out
+    assert "ISO 16281 (D = 10 mm" in out and "D = 8 mm" not in out

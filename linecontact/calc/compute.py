@@ -202,7 +202,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
     """
     from .. import models
     from .._units import InputError
-    from ..validity import OutOfRangeError
+    from ..validity import OutOfRangeError, UnknownNameError
 
     if specs is None:
         if first_only and default_key is not None:
@@ -215,7 +215,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
             chosen.append(models.get_model(key, R, L, E, **options))
         except OutOfRangeError as exc:  # refused for this cylinder: a row with a note
             chosen.append(Refused(text, exc))
-        except TypeError as exc:  # an option the model does not take
+        except (TypeError, UnknownNameError) as exc:  # an option the model does not take
             raise InputError(
                 "--model", text, "options the model takes (see its docstring)", str(exc)
             ) from None
@@ -256,13 +256,48 @@ class _Model:
         return getattr(law, name)
 
 
-def _safe_evaluate(evaluate, label, given, values, notes, errors, idx):
+def _user_note(exc, given, cases, i):
+    """The note of a row a model refuses, in the user's words: the option or column
+    they wrote (``--load = '1kN'``, not "force = 1000 N (element [0] of shape (1,))"),
+    the cylinder it was refused for (the geometry and E* decide a model's range),
+    the model's own reason, and the likely cause among the inputs
+    (:func:`linecontact.calc.cases.likely_cause`)."""
+    from .cases import likely_cause
+    from .feature import option_name
+
+    label = getattr(cases, "label", option_name)
+    parameter = getattr(exc, "parameter", None)
+    if parameter in ("force", "depth") and getattr(exc, "valid", None):
+        name = "load" if given == "load" else "depth"
+        col = cases.cells.get(name)
+        typed = (str(col[i]).strip() if col is not None and not isinstance(col, np.ndarray)
+                 else f"{cases.value[i]:.6g} {'N' if name == 'load' else 'm'}")
+        text = (f"{label(name)} = {typed!r} is outside this model's range {exc.valid} "
+                f"for R = {cases.radius_eff[i]:.6g} m, L = {cases.length[i]:.6g} m, "
+                f"E* = {cases.estar[i]:.6g} Pa")
+        if getattr(exc, "hint", ""):
+            text += f"; {exc.hint}"
+    elif parameter == "estar" and not cases.present["estar"][i]:
+        text = str(exc).replace(
+            "estar = ", f"E* = (from {label('modulus')} and {label('poisson')}) ", 1)
+    else:
+        text = str(exc)
+    # the inputs a refusal can come from: a ratio of lengths, a modulus, or (a force or
+    # depth range) all of them
+    kinds = {"L/R": {"length"}, "length_over_radius": {"length"},
+             "estar": {"pressure"}}.get(parameter)
+    return text + likely_cause(cases, i, kinds)
+
+
+def _safe_evaluate(evaluate, label, given, values, notes, errors, idx, describe=None):
     """evaluate(given, values) -> dict of arrays; refused elements isolated by halving.
 
     Returns a dict of arrays (NaN where refused; ``solution`` an object array); writes
     ``notes[idx[i]]`` (out of the model's range, a combination the library refuses, a
-    solver that did not converge) or ``errors[idx[i]]`` (any other exception).
+    solver that did not converge) or ``errors[idx[i]]`` (any other exception);
+    ``describe(exc, row)`` words a refusal for the user (default ``str(exc)``).
     """
+    describe = describe or (lambda exc, row: str(exc))
     import sys
 
     from ..validity import CombinationError, OutOfRangeError
@@ -293,7 +328,7 @@ def _safe_evaluate(evaluate, label, given, values, notes, errors, idx):
                 continue
             if hi - lo == 1:
                 text = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
-                notes[idx[lo]] = (str(exc) if converged(exc)
+                notes[idx[lo]] = (describe(exc, idx[lo]) if converged(exc)
                                   else f"{label}: not computed: {text}")
             else:
                 mid = (lo + hi) // 2
@@ -323,12 +358,14 @@ def _law_evaluator(model):
 
 
 def _hertz(r, R, L, E):
-    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force
-    (the given force also where the model refused the row: they do not depend on it)."""
+    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force,
+    only in the rows the model computed (a finite depth): a row no model covers shows
+    no number at all (issue 22: a radius of 1e30 m printed b = 1e18 um and p0 =
+    6e-14 MPa beside a refused depth)."""
     from ..classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
-    ok = np.isfinite(F) & (F > 0)
+    ok = np.isfinite(F) & (F > 0) & np.isfinite(r["depth"])
     if ok.any():
         r["half_width"][ok] = hertz_half_width(F[ok], R, L, E)
         r["peak_pressure"][ok] = hertz_peak_pressure(F[ok], R, L, E)
@@ -371,7 +408,7 @@ def _contact_label(contact, spec_text):
     the profile and the tilt."""
     if contact.sliced:
         name = {"profiled-roller": "Profiled roller",
-                "iso16281-slicing": "ISO/TS 16281 slicing"}.get(contact.model, spec_text)
+                "iso16281-slicing": "ISO 16281 slicing"}.get(contact.model, spec_text)
         tilt = contact.tilt
         text = (", free tilt" if tilt == "free" else
                 f", tilt {tilt * 1e3:.4g} mrad" if tilt else "")
@@ -733,13 +770,14 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
             sel = given == which
             r[name][sel] = values[sel]  # the given quantity, even where refused
         for i in g:
-            notes[i] = str(obj.exc)
+            notes[i] = _user_note(obj.exc, given[0], cases, i)
     else:
         for which in ("load", "depth"):
             sel = np.flatnonzero(given == which)
             if sel.size:
                 rr = _safe_evaluate(evaluate, label, which, values[sel], notes, errors,
-                                    g[sel])
+                                    g[sel], lambda exc, i, w=which: _user_note(
+                                        exc, w, cases, i))
                 for k in r:
                     r[k][sel] = rr[k]
     L = cases.length[g[0]]

@@ -397,6 +397,8 @@ def _result_layout(results, cases, si, multi):
         cols.append("note" + sfx)
         getters.append(("text", s["note"]))
     for b in results.blocks:  # a feature's extra rows: columns KEY_FIELD_UNIT
+        if not b.fields and not b.text_columns:
+            continue  # a block for --json only (e.g. q(x))
         n = len(results.errors)
         for f in b.fields:
             vals = np.array([np.nan if r is None or r.get(f) is None else float(r[f])

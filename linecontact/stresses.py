@@ -308,8 +308,8 @@ class StripMaxima:
 def _maxima(mu, nu):
     from scipy.optimize import minimize
 
-    ys = np.linspace(-1.6, 1.6, 321)
-    zs = np.linspace(0.0, 2.0, 201)
+    ys = np.linspace(-1.6, 1.6, 161)
+    zs = np.linspace(0.0, 2.0, 101)
     Y, Z = np.meshgrid(ys, zs, indexing="ij")
     val, yy, zz = {}, {}, {}
     for name in MEASURES:
@@ -323,8 +323,8 @@ def _maxima(mu, nu):
         i = np.flatnonzero(flat >= top * (1 - 1e-12))[-1]
         i, j = np.unravel_index(i, field_.shape)
         res = minimize(f, [ys[i], zs[j]], method="L-BFGS-B",
-                       bounds=[(ys[i] - 0.02, ys[i] + 0.02), (max(zs[j] - 0.02, 0.0),
-                                                            zs[j] + 0.02)],
+                       bounds=[(ys[i] - 0.04, ys[i] + 0.04), (max(zs[j] - 0.04, 0.0),
+                                                            zs[j] + 0.04)],
                        options=dict(ftol=1e-15, gtol=1e-12))
         best = res.x if -res.fun >= top else np.array([ys[i], zs[j]])
         # polish without bounds (except z >= 0) by Nelder-Mead from the best point
@@ -345,7 +345,7 @@ def strip_maxima(friction=0.0, poisson=0.3):
 
     The field is self-similar in b and p0, so these dimensionless figures give the
     maxima of any strip: value p0 at depth z b and position y b. Found by a grid
-    search (0.01 b) refined by a bounded quasi-Newton step and a Nelder-Mead polish;
+    search (0.02 b) refined by a bounded quasi-Newton step and a Nelder-Mead polish;
     cached per (mu, nu).
 
     Parameters
@@ -626,7 +626,7 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
                             "modelled",))
 
 
-def roller_stresses(solution, friction=0.0, poisson=0.3):
+def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
     r"""Stress maxima along a roller solved by slices, per slice and the worst of all.
 
     .. math:: p_{0,k} = \frac{2 q_k}{\pi b_k},\qquad
@@ -642,6 +642,9 @@ def roller_stresses(solution, friction=0.0, poisson=0.3):
         Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
     poisson : float, optional
         Poisson's ratio, 0 <= nu < 0.5 [-].
+    roller : ProfiledRoller, optional
+        The model that produced `solution`: with it the note also checks L/D, the
+        mean line load and the profile against the measured range.
 
     Returns
     -------
@@ -672,7 +675,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3):
     loaded = (b > 0) & (q > 0)
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
-    notes = [stress_accuracy_note(solution, mu)]
+    notes = [stress_accuracy_note(solution, mu, roller)]
     return _assemble(x, b, p0, mu, nu, notes, getattr(solution, "edge_loaded", False))
 
 
@@ -695,6 +698,8 @@ def _accuracy():
                        line_load=tuple(float(v) for v in
                                        meta["covered_line_load_over_estar_d"].split(",")),
                        tilt=tuple(float(v) for v in meta["covered_tilt_rad"].split(",")),
+                       profiles=tuple(k.strip() for k in
+                                      meta["covered_profiles"].split(",")),
                        **errs)
         except (FileNotFoundError, KeyError, ValueError):
             cov = None
@@ -702,15 +707,24 @@ def _accuracy():
     return _ACCURACY[0]
 
 
-def stress_accuracy_note(solution, friction=0.0):
-    """The note on the slice stresses' measured error for this roller solution."""
+def stress_accuracy_note(solution, friction=0.0, roller=None):
+    """The note on the slice stresses' measured error for this roller solution (the
+    range of tables/stress_accuracy.csv: L/D, q/(E* D), tilt, profile, no friction)."""
     cov = _accuracy()
     where = "a 3D field below the 3D BEM pressure (tables/stress_accuracy.csv)"
     if cov is None:
         return f"the slice stresses' error against {where} is not known here"
-    x = np.asarray(solution.x)
-    L = getattr(solution, "length", None)
     outside = []
+    if roller is not None:
+        D = 2 * roller.radius
+        checks = [("L/D", roller.length / D, cov["l_over_d"]),
+                  ("mean line load q/(E* D)",
+                   solution.force / (roller.length * roller.estar * D), cov["line_load"])]
+        outside += [f"{n} = {v:.2g} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
+                    in checks if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5)]
+        key = getattr(roller.profile, "key", None)
+        if key not in cov["profiles"]:
+            outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
     if friction > 0:
         outside.append(f"friction = {friction:.3g} (measured without traction)")
     th = abs(float(getattr(solution, "tilt", 0.0)))

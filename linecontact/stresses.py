@@ -676,7 +676,12 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
     notes = [stress_accuracy_note(solution, mu, roller)]
-    return _assemble(x, b, p0, mu, nu, notes, getattr(solution, "edge_loaded", False))
+    edge = bool(getattr(solution, "edge_loaded", False))
+    if edge:
+        notes.insert(0, "edge loaded: the end slice's pressure is a singular peak on a "
+                        "half-space, so the stresses below it are resolved only to the "
+                        "slice width (a grid-dependent number, like the peak pressure)")
+    return _assemble(x, b, p0, mu, nu, notes, edge)
 
 
 # ---------------------------------------------------------------- accuracy note

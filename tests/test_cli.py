@@ -840,10 +840,17 @@ SAMPLE = {
     "instantaneous_modulus": "3GPa", "long_term_modulus": "1GPa",
     "relaxation_time": "10s", "prony": "PRONY", "time": "10s",
     "crown_radius": "500mm", "profile": "iso16281", "tilt": "1mrad",
+    "stresses": "yes", "sliding_friction": "0.1", "stress_field": "0mm",
+    "surface_hardness": "700", "case_depth": "0.5mm", "core_hardness": "350",
+    "hardness_profile": "HARDNESS",
 }
 
 
 def _sample(name, tmp_path):
+    if name == "hardness_profile":
+        path = tmp_path / "hardness.csv"
+        path.write_text("depth_m,HV\n0,700\n0.001,550\n0.005,350\n", encoding="utf-8")
+        return str(path)
     if name != "prony":
         return SAMPLE[name]
     path = tmp_path / "prony.csv"

@@ -108,7 +108,9 @@ def columns(model, rows, normal, state):
     return {}
 
 
-def _profile(spec, R, L, E, force, diameter):
+def roller_profile(spec, R, L, E, force, diameter):
+    """The profile object of a row's spec (text, ("crown", Rc) or "straight"); also
+    used by the stresses feature."""
     from ...profiles import CircularCrownProfile, parse_profile
 
     if isinstance(spec, tuple):
@@ -153,7 +155,7 @@ def _solve(state, results):
         tilt = float(state.tilts[i])
         spec = state.specs[i]
         try:
-            prof = _profile(spec, R, L, E, force, 2 * float(cases.radius[i]))
+            prof = roller_profile(spec, R, L, E, force, 2 * float(cases.radius[i]))
         except OutOfRangeError as exc:  # the spec or its file: one line naming the option
             option, typed = ((label("crown_radius"), f"{spec[1]:.6g} m")
                              if isinstance(spec, tuple) else (label("profile"), spec))

@@ -13,7 +13,7 @@ What it measures:
    (time.process_time) of the runtime contact solve (ProfiledRoller.at_force, 100
    slices, model built beforehand) and of its stresses (roller_stresses), median of
    ``--repeat``; the stresses' first call (the cached strip maxima for a new (mu, nu),
-   a grid search and two optimiser runs) is timed apart. Target: the stresses within
+   a grid search and ten zooms) is timed apart. Target: the stresses within
    twice the contact solve's time.
 
 Prints a report and writes it to tools/benchmarks/results/stresses.txt.

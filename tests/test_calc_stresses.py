@@ -34,8 +34,7 @@ def test_model_rows_carry_the_library_maxima(capsys):
     assert row["von_mises_depth"] == pytest.approx(s.worst["von_mises"]["z"], rel=1e-12)
     c = case_check(s, HardnessProfile(700.0, 0.3e-3, 350.0))
     assert row["case_ratio"] == pytest.approx(c.max_ratio, rel=1e-12)
-    block = doc["stresses"][0]["rows"][0]
-    assert len(block["x"]) == 100 and "tresca" in block["worst"]
+    assert "stresses" not in doc   # a plain line contact: uniform along the axis
 
 
 def test_profiled_roller_section_field(capsys):
@@ -44,8 +43,12 @@ def test_profiled_roller_section_field(capsys):
     status, out, err = _main(capsys, *BASE, "--crown-radius", "500mm", "--stresses",
                              "yes", "--stress-field", "0mm", "--json")
     assert status == 0, err
-    row = json.loads(out)["stresses"][0]["rows"][0]
-    assert abs(row["worst"]["tresca"]["x"]) < 1e-4
+    doc = json.loads(out)
+    row = doc["stresses"][0]["rows"][0]
+    assert len(row["x"]) == 100 and abs(row["worst"]["tresca"]["x"]) < 1e-4
+    model_row = doc["models"][0]["rows"][0]
+    assert model_row["tresca_max"] == pytest.approx(row["worst"]["tresca"]["value"],
+                                                    rel=1e-12)
     sec = row["section"]
     assert len(sec["tresca"]) == len(sec["y"]) and len(sec["tresca"][0]) == len(sec["z"])
     assert max(max(r) for r in sec["tresca"]) <= row["worst"]["tresca"]["value"] * (1 + 1e-9)

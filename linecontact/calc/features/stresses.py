@@ -2,13 +2,14 @@
 
 ``--stresses yes``
     Adds to every model row the maxima of the Tresca (max shear), von Mises and
-    orthogonal shear stresses below the contact and their depths: the plane-strain
-    Hertz strip with the row's mean line load F/L (:func:`linecontact.stresses
-    .line_contact_stresses`). It also adds the roller's rows: the coupled-slice model
-    (:class:`linecontact.roller.ProfiledRoller`, with ``--profile``/``--crown-radius``/
-    ``--tilt`` when given, else straight) and the worst of each measure along it
+    orthogonal shear stresses below the contact and their depths: for a straight-roller
+    law the plane-strain Hertz strip with the row's mean line load F/L
+    (:func:`linecontact.stresses.line_contact_stresses`); for a profiled or tilted
+    roller (``--profile``, ``--crown-radius``, ``--tilt``: the rows of the slice models)
+    the worst along the roller, one strip per slice
     (:func:`linecontact.stresses.roller_stresses`), with the slice method's measured
-    error in the note. ``--json`` adds the along-axis profile (every slice's maxima).
+    error in the note. ``--json`` adds, for those rows, the along-axis profile (every
+    slice's maxima).
 ``--sliding-friction MU``
     The sliding traction mu p across the contact (Johnson 1985, section 7.2), 0 <= mu
     <= 1 (default 0).
@@ -99,7 +100,8 @@ def resolve(values, present, fail):
             fail(np.arange(n) == i, "stresses", "yes or no", "not yes or no")
     for nm in ("sliding_friction", "stress_field", "hardness_profile") + _HARD:
         fail(P[nm] & ~on, nm, f"with {label('stresses')} yes", "stresses not asked for")
-    raceways = P["inner_raceway"] | P["outer_raceway"]
+    raceways = (P["inner_raceway"] | P["outer_raceway"] | P["inner_raceway_diameter"]
+                | P["outer_raceway_diameter"])
     fail(on & raceways, "stresses", "one contact (without the raceways)",
          "not available for a whole roller")
     with np.errstate(invalid="ignore"):
@@ -127,18 +129,9 @@ def resolve(values, present, fail):
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
-    specs = [None] * n
-    for i in np.flatnonzero(on):
-        if P["profile"][i]:
-            specs[i] = v["profile"][i].strip()
-        elif P["crown_radius"][i]:
-            specs[i] = ("crown", float(v["crown_radius"][i]))
-        else:
-            specs[i] = "straight"
     nu = np.where(P["poisson"], v["poisson"], 0.3)
     return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
-                 nu=nu, nu_given=P["poisson"], hardness=hardness, specs=specs,
-                 tilts=np.where(P["tilt"], v["tilt"], 0.0),
+                 nu=nu, nu_given=P["poisson"], hardness=hardness,
                  section=np.where(P["stress_field"], v["stress_field"], np.nan))
 
 
@@ -154,7 +147,7 @@ def _read_profile(path):
 
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
-    from ...stresses import case_check, line_contact_stresses
+    from ...stresses import case_check, line_contact_stresses, roller_stresses
     from ...validity import OutOfRangeError
 
     n = len(rows)
@@ -164,9 +157,14 @@ def columns(model, rows, normal, state):
     for j, i in enumerate(rows):
         if not state.rows[i] or not (np.isfinite(F[j]) and F[j] > 0):
             continue
+        sol = normal["solution"][j] if "solution" in normal else None
         try:
-            s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
-                                      state.mu[i], state.nu[i])
+            if _is_slices(sol):   # a profiled roller: the worst along its slices
+                s = roller_stresses(sol, state.mu[i], state.nu[i])
+                flags[j] = "; ".join(s.notes)
+            else:
+                s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
+                                          state.mu[i], state.nu[i])
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
@@ -180,52 +178,39 @@ def columns(model, rows, normal, state):
                 out["case_ratio_depth"][j] = c.depth_at_max
                 if c.min_case_depth is not None:
                     out["min_case_depth"][j] = c.min_case_depth
+                elif state.hardness[i].case_depth is not None:
+                    flags[j] = "; ".join(t for t in (flags[j], (
+                        "CHD min: none, the stress exceeds the allowable of the surface "
+                        "hardness itself")) if t)
             except OutOfRangeError as exc:
-                flags[j] = str(exc)
+                flags[j] = "; ".join(t for t in (flags[j], str(exc)) if t)
     out["flags"] = flags
     return out
 
 
-def blocks(state, results):
-    """The roller's rows: coupled slices (profiled or straight) and the worst stresses
-    along it; --json: the along-axis profile and the section field."""
-    from ...roller import ProfiledRoller
-    from ...stresses import roller_stresses
-    from .roller import roller_profile
+def _is_slices(sol):
+    """A slice solution of one contact (linecontact.roller.RollerSolution)."""
+    return sol is not None and hasattr(sol, "half_width") and hasattr(sol, "q") \
+        and np.ndim(getattr(sol, "q")) == 1
 
-    cases, errors = results.cases, results.errors
-    rows, json_rows = [], []
-    any_row = False
-    nu_note = ""
-    for i in range(len(errors)):
-        if not state.rows[i] or errors[i]:
-            rows.append(None)
-            json_rows.append({})
+
+def blocks(state, results):
+    """``--json``: for the rows of the first model set solved by slices (a profiled
+    roller), the along-axis profile of the maxima and, with --stress-field, the section
+    field; no table (the maxima are in the main table)."""
+    from ...stresses import roller_stresses
+
+    sols = results.sets[0]["solution"] if results.sets else []
+    json_rows = []
+    for i, sol in enumerate(sols):
+        if not state.rows[i] or not _is_slices(sol):
+            json_rows.append(None)
             continue
-        R, L, E = (float(a[i]) for a in (cases.radius_eff, cases.length, cases.estar))
-        given, value = str(cases.given[i]), float(cases.value[i])
-        force = value if given == "load" else math.nan
-        tilt = float(state.tilts[i])
-        spec = state.specs[i]
-        label = f"stresses along the roller ({spec if isinstance(spec, str) else 'crown'}"
-        label += f", tilt {tilt * 1e3:.4g} mrad)" if tilt else ")"
         try:
-            prof = roller_profile(spec, R, L, E, force, 2 * float(cases.radius[i]))
-            r = ProfiledRoller(R, L, E, prof, n_slices=100)
-            sol = r.at_force(value, tilt=tilt) if given == "load" else r.at_depth(value, tilt)
-            s = roller_stresses(sol, float(state.mu[i]), float(state.nu[i]), roller=r)
-        except Exception as exc:  # noqa: BLE001 - one line in the row's note
-            text = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
-            rows.append({"label": label, "note": text, "text": {}})
-            json_rows.append({"note": text})
+            s = roller_stresses(sol, float(state.mu[i]), float(state.nu[i]))
+        except ValueError as exc:
+            json_rows.append({"note": str(exc)})
             continue
-        any_row = True
-        row = {"label": label, "text": {}}
-        for m in _MEASURES:
-            w = s.worst[m]
-            row[f"{m}_max"], row[f"{m}_depth"], row[f"{m}_x"] = w["value"], w["z"], w["x"]
-        row["note"] = "; ".join(s.notes)
-        rows.append(row)
         doc = s.to_dict(arrays=True)
         if np.isfinite(state.section[i]):
             x0 = float(state.section[i])
@@ -238,11 +223,9 @@ def blocks(state, results):
             except ValueError as exc:
                 doc["section"] = {"note": str(exc)}
         json_rows.append(doc)
-        if not state.nu_given[i]:
-            nu_note = " Poisson's ratio 0.3 (no --poisson given)."
-    if not any_row and not any(rows):
+    if not any(r is not None for r in json_rows):
         return []
-    return [Block(name="stresses", key="stresses", label="roller stresses",
-                  fields=_ROW_FIELDS, rows=rows, text_columns=(), json_rows=json_rows,
-                  note=NOTE + nu_note,
+    return [Block(name="stresses", key="stresses", label="stresses along the roller",
+                  fields={}, rows=[None] * len(json_rows), text_columns=(),
+                  json_rows=json_rows, note="",
                   units={k: f.si for k, f in _ROW_FIELDS.items()})]

@@ -52,6 +52,14 @@ def accuracy(lines):
                      f"{e[edge].max() if edge.any() else np.nan:15.2%} "
                      f"{ch[~edge].max():12.2%} / {ch[edge].max() if edge.any() else np.nan:.2%}"
                      f"   {'met' if off <= 0.01 else 'NOT met'}")
+    tilt = np.asarray(c["tilt"])
+    even = (~edge) & (tilt == 0) & (profiles != 1) & (profiles != 5)
+    lines.append(f"even load along the roller (untilted log profiles, off the ends, "
+                 f"{int(even.sum())} cases): " + ", ".join(
+                     f"{m} {np.abs(np.asarray(c[f'err_{m}']))[even].max():.2%}"
+                     for m in MEASURES) + " (target 1 %: " + (
+                     "met" if all(np.abs(np.asarray(c[f'err_{m}']))[even].max() <= 0.01
+                                  for m in MEASURES) else "NOT met") + ")")
     lines.append("largest |err| off the ends by profile (codes as the table header):")
     for code in sorted(set(profiles.tolist())):
         sel = (~edge) & (profiles == code) & (np.asarray(c["roller_length"]) < 0.02)

@@ -853,10 +853,17 @@ SAMPLE = {
     "crown_radius": "500mm", "profile": "iso16281", "tilt": "1mrad",
     "inner_raceway_diameter": "40mm", "outer_raceway_diameter": "50mm",
     "misalignment": "0.1mrad",
+    "stresses": "yes", "sliding_friction": "0.1", "stress_field": "0mm",
+    "surface_hardness": "700", "case_depth": "0.5mm", "core_hardness": "350",
+    "hardness_profile": "HARDNESS",
 }
 
 
 def _sample(name, tmp_path):
+    if name == "hardness_profile":
+        path = tmp_path / "hardness.csv"
+        path.write_text("depth_m,HV\n0,700\n0.001,550\n0.005,350\n", encoding="utf-8")
+        return str(path)
     if name != "prony":
         return SAMPLE[name]
     path = tmp_path / "prony.csv"

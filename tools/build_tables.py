@@ -13,6 +13,9 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``roller``
     Profiled and tilted rollers, runtime and ISO 16281 slicing against the 3D BEM:
     tables/roller_accuracy.csv (tools.studies.roller_study).
+``stress``
+    Subsurface stresses of the runtime slices against the 3D field below the 3D BEM
+    pressure: tables/stress_accuracy.csv (tools.studies.stress_study).
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
@@ -37,6 +40,7 @@ SUBCOMMANDS = {
     "paper": "tools.studies.paper_study",
     "roller": "tools.studies.roller_study",
     "tangential": "tools.studies.tangential_study",
+    "stress": "tools.studies.stress_study",
     "accuracy": "tools.studies.accuracy",
     "bearing": "tools.studies.bearing_study",
 }

@@ -104,24 +104,48 @@ class DCFFTOperator:
     """
 
     def __init__(self, nx, ny, dx, dy, estar=1.0, backend="scipy", workers=None,
-                 kernel=None):
+                 kernel=None, kernel_wrapped=None):
         self.shape = (int(nx), int(ny))
         self.dx, self.dy, self.estar = float(dx), float(dy), float(estar)
         self._fft = _fft_module(backend)
         self.workers = default_workers(backend) if workers is None else workers
-        k = _offsets(kernel, nx, ny, dx, dy, estar)        # offsets 0..n
-        # wrap-around order on 2n: offsets 0..n-1, then n (either sign), then -(n-1)..-1
-        kx = np.concatenate([k, k[-2:0:-1]], axis=0)
-        kw = np.concatenate([kx, kx[:, -2:0:-1]], axis=1)
+        if kernel_wrapped is not None:
+            # any parity (odd shear kernels of tools.bem.stress): the caller gives the
+            # kernel at wraparound_offsets(nx) x wraparound_offsets(ny)
+            kw = np.asarray(kernel_wrapped, dtype=float)
+            if kw.shape != (2 * nx, 2 * ny):
+                raise ValueError(f"kernel_wrapped shape = {kw.shape} is not the "
+                                 f"{(2 * nx, 2 * ny)} of wraparound_offsets")
+        else:
+            k = _offsets(kernel, nx, ny, dx, dy, estar)        # offsets 0..n
+            # wrap-around order on 2n: offsets 0..n-1, then n (either sign), then
+            # -(n-1)..-1
+            kx = np.concatenate([k, k[-2:0:-1]], axis=0)
+            kw = np.concatenate([kx, kx[:, -2:0:-1]], axis=1)
         self._khat = self._fft.rfft2(kw, workers=self.workers)
         self._pad = np.zeros((2 * nx, 2 * ny))
 
-    def __call__(self, p):
+    def transform(self, p):
+        """The zero-padded field's real FFT (reusable by several operators on one grid)."""
         nx, ny = self.shape
         self._pad[:nx, :ny] = p
-        u = self._fft.irfft2(self._khat * self._fft.rfft2(self._pad, workers=self.workers),
-                             s=self._pad.shape, workers=self.workers)
+        return self._fft.rfft2(self._pad, workers=self.workers)
+
+    def from_transform(self, phat):
+        """The convolution K * p from the transform of p (:meth:`transform`)."""
+        nx, ny = self.shape
+        u = self._fft.irfft2(self._khat * phat, s=self._pad.shape, workers=self.workers)
         return u[:nx, :ny].copy()
+
+    def __call__(self, p):
+        return self.from_transform(self.transform(p))
+
+
+def wraparound_offsets(n):
+    """Cell offsets 0..n-1, n, -(n-1)..-1: the wrap-around order of a 2n-point DC-FFT
+    (the offset n never reaches the n cells' result)."""
+    i = np.arange(2 * n)
+    return np.where(i <= n, i, i - 2 * n)
 
 
 class SymmetricOperator:

@@ -1,0 +1,231 @@
+"""Feature: subsurface stresses and the case-hardening check (``--stresses``).
+
+``--stresses yes``
+    Adds to every model row the maxima of the Tresca (max shear), von Mises and
+    orthogonal shear stresses below the contact and their depths: for a straight-roller
+    law the plane-strain Hertz strip with the row's mean line load F/L
+    (:func:`linecontact.stresses.line_contact_stresses`); for a profiled or tilted
+    roller (``--profile``, ``--crown-radius``, ``--tilt``: the rows of the slice models)
+    the worst along the roller, one strip per slice
+    (:func:`linecontact.stresses.roller_stresses`), with the slice method's measured
+    error in the note. ``--json`` adds, for those rows, the along-axis profile (every
+    slice's maxima).
+``--sliding-friction MU``
+    The sliding traction mu p across the contact (Johnson 1985, section 7.2), 0 <= mu
+    <= 1 (default 0).
+``--stress-field X``
+    With ``--json``: the field on the section across the roller at x = X.
+``--surface-hardness HV --case-depth CHD --core-hardness HV``, or ``--hardness-profile FILE.csv``
+    The case-hardening check: the largest stress over the allowable against depth, its
+    depth and the minimum effective case depth for the load
+    (:func:`linecontact.stresses.case_check`; von Mises against the yield strength
+    2.876 HV - 90.7 MPa, Pavlina & Van Tyne 2008). The CSV has columns depth_m, HV.
+
+Poisson's ratio of the stressed body: ``--poisson`` where given, else 0.3 (said in the
+notes). Not combined with the raceways (a whole roller).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..feature import Block, Field, Parameter, State
+
+__all__: list = []
+
+name = "stresses"
+group = "subsurface stresses and case-hardening check"
+
+parameters = (
+    Parameter("stresses", "text", "yes: the maxima of Tresca, von Mises and orthogonal "
+              "shear below the contact and their depths, per model row and along the "
+              "roller", group),
+    Parameter("sliding_friction", "dimensionless", "coefficient mu of the sliding "
+              "traction mu p for the stresses, 0 to 1", group, positive=False),
+    Parameter("stress_field", "length", "with --json: the stress field on the section "
+              "across the roller at this x", group, positive=False),
+    Parameter("surface_hardness", "dimensionless", "surface hardness HV (> 550) for the "
+              "case-hardening check", group),
+    Parameter("case_depth", "length", "effective case depth CHD (to 550 HV, ISO 2639)",
+              group),
+    Parameter("core_hardness", "dimensionless", "core hardness HV (< 550)", group),
+    Parameter("hardness_profile", "path", "measured hardness: a CSV with columns "
+              "depth_m, HV (instead of the three above)", group),
+)
+
+_HARD = ("surface_hardness", "case_depth", "core_hardness")
+_MEASURES = ("tresca", "von_mises", "orthogonal_shear")
+_HEAD = {"tresca": "tau max", "von_mises": "von Mises", "orthogonal_shear": "tau orth"}
+
+fields = {}
+for _m in _MEASURES:
+    fields[f"{_m}_max"] = Field(_HEAD[_m], "Pa", "MPa", 1e-6)
+    fields[f"{_m}_depth"] = Field(f"z({_HEAD[_m]})", "m", "um", 1e6)
+fields["case_ratio"] = Field("vM/allow", "-", "-", 1.0)
+fields["case_ratio_depth"] = Field("z(vM/allow)", "m", "um", 1e6)
+fields["min_case_depth"] = Field("CHD min", "m", "mm", 1e3)
+
+NOTE = ("stresses: plane-strain Hertz strip (McEwen 1949; Johnson 1985, sections 4.2 and "
+        "7.2) with the mean line load F/L per model row; along the roller one strip per "
+        "slice of the coupled-slice model; tau max = (sigma1 - sigma3)/2, tau orth = "
+        "|tau_yz|; case check: von Mises over the yield strength 2.876 HV - 90.7 MPa "
+        "(Pavlina & Van Tyne 2008), CHD min: the smallest effective case depth with a "
+        "ratio <= 1. docs/stresses.md.")
+notes = {"stresses": NOTE}
+
+_ROW_FIELDS = {}
+for _m in _MEASURES:
+    _ROW_FIELDS[f"{_m}_max"] = fields[f"{_m}_max"]
+    _ROW_FIELDS[f"{_m}_depth"] = fields[f"{_m}_depth"]
+    _ROW_FIELDS[f"{_m}_x"] = Field(f"x({_HEAD[_m]})", "m", "mm", 1e3)
+
+
+def resolve(values, present, fail):
+    """--stresses yes|no; hardness options complete and consistent; all need
+    --stresses; not with the raceways."""
+    v, P, label = values, present, fail.label
+    mine = P["stresses"] | P["sliding_friction"] | P["stress_field"] | P["hardness_profile"]
+    for nm in _HARD:
+        mine = mine | P[nm]
+    if not mine.any():
+        return None
+    n = len(mine)
+    on = np.zeros(n, bool)
+    for i in np.flatnonzero(P["stresses"]):
+        text = v["stresses"][i].strip().lower()
+        if text in ("yes", "true", "1"):
+            on[i] = True
+        elif text not in ("no", "false", "0"):
+            fail(np.arange(n) == i, "stresses", "yes or no", "not yes or no")
+    for nm in ("sliding_friction", "stress_field", "hardness_profile") + _HARD:
+        fail(P[nm] & ~on, nm, f"with {label('stresses')} yes", "stresses not asked for")
+    raceways = (P["inner_raceway"] | P["outer_raceway"] | P["inner_raceway_diameter"]
+                | P["outer_raceway_diameter"])
+    fail(on & raceways, "stresses", "one contact (without the raceways)",
+         "not available for a whole roller")
+    with np.errstate(invalid="ignore"):
+        fail(P["sliding_friction"] & ~((v["sliding_friction"] >= 0)
+                                        & (v["sliding_friction"] <= 1)),
+             "sliding_friction", "[0, 1]", "outside the range of the strip solution")
+    three = ", ".join(label(s) for s in _HARD)
+    some = P[_HARD[0]] | P[_HARD[1]] | P[_HARD[2]]
+    for nm in _HARD:
+        fail(some & ~P[nm], nm, f"{three} together", "missing")
+    fail(some & P["hardness_profile"], "hardness_profile",
+         f"either {label('hardness_profile')} or {three}", "conflicts")
+    hardness = [None] * n
+    from ...validity import OutOfRangeError
+    from ...stresses import HardnessProfile
+    for i in np.flatnonzero(on & (some | P["hardness_profile"])):
+        try:
+            if P["hardness_profile"][i]:
+                hardness[i] = _read_profile(v["hardness_profile"][i].strip())
+            else:
+                hardness[i] = HardnessProfile(*(float(v[nm][i]) for nm in _HARD))
+        except OutOfRangeError as exc:
+            nm = exc.parameter if exc.parameter in _HARD else "hardness_profile"
+            fail(np.arange(n) == i, nm, exc.valid, str(exc))
+        except (OSError, ValueError) as exc:
+            fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
+                 str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
+    nu = np.where(P["poisson"], v["poisson"], 0.3)
+    return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
+                 nu=nu, nu_given=P["poisson"], hardness=hardness,
+                 section=np.where(P["stress_field"], v["stress_field"], np.nan))
+
+
+def _read_profile(path):
+    from ...stresses import HardnessProfile
+    data = np.genfromtxt(path, delimiter=",", names=True, comments="#")
+    names = data.dtype.names or ()
+    if "depth_m" not in names or "HV" not in names:
+        raise ValueError(f"{path}: needs the columns depth_m and HV (has {names})")
+    return HardnessProfile(depths=np.atleast_1d(data["depth_m"]),
+                           hardness=np.atleast_1d(data["HV"]))
+
+
+def columns(model, rows, normal, state):
+    """The strip maxima for the mean line load F/L of each model row, and the check."""
+    from ...stresses import case_check, line_contact_stresses, roller_stresses
+    from ...validity import OutOfRangeError
+
+    n = len(rows)
+    out = {k: np.full(n, np.nan) for k in fields}
+    flags = [""] * n
+    F = normal["force"]
+    for j, i in enumerate(rows):
+        if not state.rows[i] or not (np.isfinite(F[j]) and F[j] > 0):
+            continue
+        sol = normal["solution"][j] if "solution" in normal else None
+        try:
+            if _is_slices(sol):   # a profiled roller: the worst along its slices
+                s = roller_stresses(sol, state.mu[i], state.nu[i])
+                flags[j] = "; ".join(s.notes)
+            else:
+                s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
+                                          state.mu[i], state.nu[i])
+        except OutOfRangeError as exc:
+            flags[j] = str(exc)
+            continue
+        for m in _MEASURES:
+            out[f"{m}_max"][j] = s.worst[m]["value"]
+            out[f"{m}_depth"][j] = s.worst[m]["z"]
+        if state.hardness[i] is not None:
+            try:
+                c = case_check(s, state.hardness[i])
+                out["case_ratio"][j] = c.max_ratio
+                out["case_ratio_depth"][j] = c.depth_at_max
+                if c.min_case_depth is not None:
+                    out["min_case_depth"][j] = c.min_case_depth
+                elif state.hardness[i].case_depth is not None:
+                    flags[j] = "; ".join(t for t in (flags[j], (
+                        "CHD min: none, the stress exceeds the allowable of the surface "
+                        "hardness itself")) if t)
+            except OutOfRangeError as exc:
+                flags[j] = "; ".join(t for t in (flags[j], str(exc)) if t)
+    out["flags"] = flags
+    return out
+
+
+def _is_slices(sol):
+    """A slice solution of one contact (linecontact.roller.RollerSolution)."""
+    return sol is not None and hasattr(sol, "half_width") and hasattr(sol, "q") \
+        and np.ndim(getattr(sol, "q")) == 1
+
+
+def blocks(state, results):
+    """``--json``: for the rows of the first model set solved by slices (a profiled
+    roller), the along-axis profile of the maxima and, with --stress-field, the section
+    field; no table (the maxima are in the main table)."""
+    from ...stresses import roller_stresses
+
+    sols = results.sets[0]["solution"] if results.sets else []
+    json_rows = []
+    for i, sol in enumerate(sols):
+        if not state.rows[i] or not _is_slices(sol):
+            json_rows.append(None)
+            continue
+        try:
+            s = roller_stresses(sol, float(state.mu[i]), float(state.nu[i]))
+        except ValueError as exc:
+            json_rows.append({"note": str(exc)})
+            continue
+        doc = s.to_dict(arrays=True)
+        if np.isfinite(state.section[i]):
+            x0 = float(state.section[i])
+            b = float(np.max(s.half_width))
+            ys = np.linspace(-2 * b, 2 * b, 41)
+            zs = np.linspace(0.0, 2 * b, 41)
+            try:
+                sec = s.section(x0, ys, zs)
+                doc["section"] = dict(x=x0, y=ys.tolist(), z=zs.tolist(), **sec.to_dict())
+            except ValueError as exc:
+                doc["section"] = {"note": str(exc)}
+        json_rows.append(doc)
+    if not any(r is not None for r in json_rows):
+        return []
+    return [Block(name="stresses", key="stresses", label="stresses along the roller",
+                  fields={}, rows=[None] * len(json_rows), text_columns=(),
+                  json_rows=json_rows, note="",
+                  units={k: f.si for k, f in _ROW_FIELDS.items()})]

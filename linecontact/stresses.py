@@ -1,0 +1,1019 @@
+r"""Subsurface stresses below a line contact and along a profiled roller (plane strain).
+
+A Hertz strip |y| <= b carries the pressure :math:`p(y) = p_0\sqrt{1 - y^2/b^2}` and a
+sliding traction :math:`q(y) = \mu\, p(y)` in +y (the rolling direction, acting on the
+body below). With depth z >= 0 into the body (McEwen 1949; Johnson 1985, section 4.2
+for the pressure, section 7.2 for the traction)
+
+.. math::
+
+    m^2 = \tfrac12\left[\sqrt{(b^2 - y^2 + z^2)^2 + 4y^2z^2} + (b^2 - y^2 + z^2)\right],
+    \quad
+    n^2 = \tfrac12\left[\sqrt{(b^2 - y^2 + z^2)^2 + 4y^2z^2} - (b^2 - y^2 + z^2)\right],
+
+m, n >= 0 with sign(n) = sign(y), :math:`D = m^2 + n^2`, the pressure gives
+
+.. math::
+
+    \sigma_y = -\frac{p_0}{b}\left[m\left(1 + \frac{z^2 + n^2}{D}\right) - 2z\right],\quad
+    \sigma_z = -\frac{p_0}{b}\, m\left(1 - \frac{z^2 + n^2}{D}\right),\quad
+    \tau_{yz} = -\frac{p_0}{b}\, n\,\frac{m^2 - z^2}{D},
+
+and the traction (:math:`q_0 = \mu p_0`)
+
+.. math::
+
+    \sigma_y = \frac{q_0}{b}\left[n\left(2 - \frac{z^2 - m^2}{D}\right) - 2y\right],\quad
+    \sigma_z = \frac{q_0}{b}\, n\,\frac{z^2 - m^2}{D},\quad
+    \tau_{yz} = -\frac{q_0}{b}\left[m\left(1 + \frac{z^2 + n^2}{D}\right) - 2z\right],
+
+and in plane strain :math:`\sigma_x = \nu(\sigma_y + \sigma_z)` (x along the roller).
+Compression is negative. Printings of these formulas differ in their signs; every
+component and sign here was checked against a direct numerical integration of the
+Flamant (normal) and 2D Cerruti (tangential) line-load solutions (Johnson 1985,
+Eqs. 2.15 and 2.19) to 1e-13 (tests/test_stresses.py).
+
+Measures: the maximum shear (Tresca) :math:`(\sigma_1 - \sigma_3)/2` over the three
+principal stresses, the von Mises stress
+:math:`\sqrt{\tfrac12[(\sigma_1-\sigma_2)^2 + (\sigma_2-\sigma_3)^2 +
+(\sigma_3-\sigma_1)^2]}`, and the orthogonal shear :math:`|\tau_{yz}|` (its amplitude
+under rolling; Lundberg & Palmgren 1947).
+
+Along a roller: a straight or profiled roller solved by coupled slices
+(:mod:`linecontact.roller`) is a row of strips; slice k carries the line load q_k over
+the half-width b_k, so :math:`p_{0,k} = 2q_k/(\pi b_k)` and its field is the strip
+field scaled by p_{0,k} and b_k. The field is self-similar: the maxima are computed once
+per (mu, nu) on the unit strip (a grid search refined by a bounded optimiser) and
+scaled per slice, so the stresses of a whole roller cost microseconds. Near a crowned
+or tilted end the field is three-dimensional; the slice method's error there against a
+3D field (Love's rectangle stresses convolved with a 3D boundary-element pressure,
+tools/bem/stress.py) is measured in tables/stress_accuracy.csv
+(tools/studies/stress_study.py) and stated in each result's notes.
+
+Case-hardening check: the stress envelope against depth (the largest over y at each
+depth, since rolling sweeps every y past a material point) over the local allowable of
+a hardness profile (:class:`HardnessProfile`), with the yield strength of steel from
+its Vickers hardness by the correlation of Pavlina & Van Tyne (2008),
+:math:`\sigma_{Y} = 2.876\,HV - 90.7` MPa; the allowable is sigma_Y for von Mises and
+sigma_Y/2 for Tresca (the yield criteria themselves). See docs/stresses.md.
+
+References
+----------
+.. [1] E. McEwen, "Stresses in elastic cylinders in contact along a generatrix",
+   Phil. Mag. 40 (1949) 454-459.
+.. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), sections
+   2.2-2.3 (line loads), 4.2 (Hertz strip), 7.2 (sliding).
+.. [3] G. Lundberg, A. Palmgren, "Dynamic capacity of rolling bearings", Acta
+   Polytechnica, Mech. Eng. Ser. 1 (1947) no. 3.
+.. [4] E. J. Pavlina, C. J. Van Tyne, "Correlation of yield strength and tensile
+   strength with hardness for steels", J. Materials Engineering and Performance 17
+   (2008) 888-893.
+.. [5] ISO 2639:2002, Steels - Determination and verification of the depth of
+   carburized and hardened cases (effective case depth at 550 HV).
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .validity import OutOfRangeError, check_interval, check_positive
+
+__all__ = [
+    "MEASURES",
+    "StripStresses",
+    "strip_stresses",
+    "StripMaxima",
+    "strip_maxima",
+    "SubsurfaceStresses",
+    "line_contact_stresses",
+    "roller_stresses",
+    "HardnessProfile",
+    "yield_strength_from_hardness",
+    "CaseCheck",
+    "case_check",
+]
+
+#: the three stress measures, in the order they are reported
+MEASURES = ("tresca", "von_mises", "orthogonal_shear")
+#: allowable stress over the yield strength, per measure (the yield criteria)
+_ALLOWABLE_FACTOR = {"tresca": 0.5, "von_mises": 1.0}
+#: friction coefficients covered (beyond 1 the strip is far from Hertz's assumptions)
+_MU_MAX = 1.0
+
+
+def _check_material(friction, poisson):
+    mu = float(check_interval("friction", friction, 0.0, _MU_MAX, unit="",
+                              hint="mu is the coefficient of the sliding traction mu p "
+                                   "in +y; for traction in -y mirror y"))
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    return mu, nu
+
+
+@dataclass(frozen=True)
+class StripStresses:
+    """Plane-strain stresses at points below a line contact (compression negative).
+
+    Returned by :func:`strip_stresses` and the ``section``/``along_axis`` methods of
+    :class:`SubsurfaceStresses`; not built by hand.
+
+    Parameters
+    ----------
+    sigma_x : ndarray
+        Normal stress along the roller axis, nu (sigma_y + sigma_z) [Pa].
+    sigma_y : ndarray
+        Normal stress across the contact (rolling direction) [Pa].
+    sigma_z : ndarray
+        Normal stress in depth [Pa].
+    tau_yz : ndarray
+        Shear stress in the y-z plane [Pa].
+
+    Notes
+    -----
+    Valid as the strip solution: plane strain, small strains, b << radius.
+
+    Examples
+    --------
+    >>> s = strip_stresses(0.0, 0.786e-4, 1e-4, 1e9)
+    >>> f"{float(s.tresca) / 1e9:.3f} p0"
+    '0.300 p0'
+    """
+
+    sigma_x: np.ndarray
+    sigma_y: np.ndarray
+    sigma_z: np.ndarray
+    tau_yz: np.ndarray
+
+    def _principal(self):
+        c = 0.5 * (self.sigma_y + self.sigma_z)
+        r = np.hypot(0.5 * (self.sigma_y - self.sigma_z), self.tau_yz)
+        return c + r, c - r, self.sigma_x
+
+    @property
+    def tresca(self):
+        """Maximum shear stress (sigma_1 - sigma_3)/2 over the three principal ones [Pa]."""
+        s1, s2, s3 = self._principal()
+        hi = np.maximum(np.maximum(s1, s2), s3)
+        lo = np.minimum(np.minimum(s1, s2), s3)
+        return 0.5 * (hi - lo)
+
+    @property
+    def von_mises(self):
+        """Von Mises equivalent stress [Pa]."""
+        sx, sy, sz, t = self.sigma_x, self.sigma_y, self.sigma_z, self.tau_yz
+        return np.sqrt(np.maximum(sx * sx + sy * sy + sz * sz - sx * sy - sy * sz
+                                  - sz * sx + 3.0 * t * t, 0.0))
+
+    @property
+    def orthogonal_shear(self):
+        """Orthogonal shear stress |tau_yz| [Pa]."""
+        return np.abs(self.tau_yz)
+
+    def measure(self, name):
+        """One of :data:`MEASURES` by name [Pa]."""
+        if name not in MEASURES:
+            raise ValueError(f"measure = {name!r} is not one of {MEASURES}")
+        return getattr(self, name)
+
+    def to_dict(self):
+        """Components and measures as nested lists (JSON) [Pa]."""
+        d = {k: np.asarray(getattr(self, k)).tolist()
+             for k in ("sigma_x", "sigma_y", "sigma_z", "tau_yz")}
+        for k in MEASURES:
+            d[k] = np.asarray(self.measure(k)).tolist()
+        return d
+
+
+def _unit_strip(y, z, mu, nu):
+    """Components of the unit strip (b = 1, p0 = 1) at (y, z) (broadcast)."""
+    y = np.asarray(y, dtype=float)
+    z = np.asarray(z, dtype=float)
+    A = 1.0 - y * y + z * z
+    R = np.sqrt(A * A + 4.0 * y * y * z * z)
+    m = np.sqrt(np.maximum(0.5 * (R + A), 0.0))
+    n = np.sign(y) * np.sqrt(np.maximum(0.5 * (R - A), 0.0))
+    D = m * m + n * n
+    # at the contact edges on the surface (|y| = 1, z = 0) m = n = 0: every ratio
+    # multiplies m or n there, so any finite value gives the limit 0
+    Ds = np.where(D > 0, D, 1.0)
+    zz = z * z
+    a = (zz + n * n) / Ds
+    b = (m * m - zz) / Ds
+    sy = -(m * (1.0 + a) - 2.0 * z)
+    sz = -m * (1.0 - a)
+    t = -n * b
+    if mu:
+        sy = sy + mu * (n * (2.0 + b) - 2.0 * y)
+        sz = sz - mu * n * b
+        t = t - mu * (m * (1.0 + a) - 2.0 * z)
+    return nu * (sy + sz), sy, sz, t
+
+
+def strip_stresses(y, z, half_width, peak_pressure, friction=0.0, poisson=0.3):
+    r"""Plane-strain stresses below a Hertz strip with a sliding traction (McEwen 1949).
+
+    .. math::
+
+        \sigma_z = -\frac{p_0}{b}\, m\left(1 - \frac{z^2 + n^2}{m^2 + n^2}\right)
+        + \frac{\mu p_0}{b}\, n\,\frac{z^2 - m^2}{m^2 + n^2}
+
+    and the other components as in the module docstring.
+
+    Parameters
+    ----------
+    y : array_like
+        Position across the contact, from its centre, in the traction's direction [m].
+    z : array_like
+        Depth below the surface, z >= 0 [m].
+    half_width : array_like
+        Contact half-width b [m].
+    peak_pressure : array_like
+        Peak pressure p0 [Pa].
+    friction : float, optional
+        Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
+    poisson : float, optional
+        Poisson's ratio of the body, 0 <= nu < 0.5 [-] (only sigma_x depends on it).
+
+    Returns
+    -------
+    StripStresses
+        The four components, broadcast over the inputs [Pa].
+
+    Notes
+    -----
+    Valid for 0 <= z < inf, 0 < b < inf, 0 <= p0 < inf, plane strain, b << R.
+
+    Examples
+    --------
+    Centre line, z = 0.786 b: the maximum shear 0.300 p0 (Johnson 1985, Fig. 4.6):
+
+    >>> s = strip_stresses(0.0, 0.786, 1.0, 1.0)
+    >>> f"{float(s.sigma_z):.3f} {float(s.sigma_y):.3f} {float(s.tresca):.3f}"
+    '-0.786 -0.186 0.300'
+
+    References
+    ----------
+    E. McEwen, Phil. Mag. 40 (1949) 454-459; K. L. Johnson, Contact Mechanics (1985),
+    sections 4.2 and 7.2.
+    """
+    mu, nu = _check_material(friction, poisson)
+    z = check_interval("z", z, 0.0, np.inf, unit="m")
+    b = check_positive("half_width", half_width, "m")
+    p0 = check_interval("peak_pressure", peak_pressure, 0.0, np.inf, unit="Pa")
+    y = np.asarray(y, dtype=float)
+    sx, sy, sz, t = _unit_strip(y / b, z / b, mu, nu)
+    return StripStresses(sx * p0, sy * p0, sz * p0, t * p0)
+
+
+@dataclass(frozen=True)
+class StripMaxima:
+    """Maxima of the three measures below the unit Hertz strip (b = 1, p0 = 1).
+
+    Returned by :func:`strip_maxima`; not built by hand.
+
+    Parameters
+    ----------
+    friction : float
+        Coefficient of the traction [-].
+    poisson : float
+        Poisson's ratio [-].
+    value : dict
+        Measure name -> maximum over p0 [-].
+    y : dict
+        Measure name -> its position across the contact over b [-].
+    z : dict
+        Measure name -> its depth over b [-].
+
+    Notes
+    -----
+    Valid for 0 <= mu <= 1, 0 <= nu < 0.5.
+
+    Examples
+    --------
+    >>> m = strip_maxima()
+    >>> f"{m.value['tresca']:.4f} p0 at z = {m.z['tresca']:.4f} b"
+    '0.3003 p0 at z = 0.7862 b'
+    """
+
+    friction: float
+    poisson: float
+    value: dict
+    y: dict
+    z: dict
+
+
+@functools.lru_cache(maxsize=64)
+def _maxima(mu, nu):
+    """Grid search (0.02 b) then a zoom: a 21 x 21 grid around the best point, the
+    window shrunk 5 times per pass, 10 passes (position to 1e-7 b); numpy only."""
+    ys = np.linspace(-1.6, 1.6, 161)
+    zs = np.linspace(0.0, 2.0, 101)
+    Y, Z = np.meshgrid(ys, zs, indexing="ij")
+    val, yy, zz = {}, {}, {}
+    u = np.linspace(-1.0, 1.0, 21)
+    for name in MEASURES:
+        field_ = StripStresses(*_unit_strip(Y, Z, mu, nu)).measure(name)
+        # ties (mu = 0: mirror images at +-y) go to y >= 0: the last flat index
+        flat = field_.ravel()
+        top = flat.max()
+        k = np.flatnonzero(flat >= top * (1 - 1e-12))[-1]
+        i, j = np.unravel_index(k, field_.shape)
+        by, bz, best = ys[i], zs[j], top
+        h = 0.04
+        for _ in range(10):
+            gy = by + h * u
+            gz = np.maximum(bz + h * u, 0.0)
+            v = StripStresses(*_unit_strip(gy[:, None], gz[None, :], mu, nu)).measure(name)
+            k = np.flatnonzero(v.ravel() >= v.max() * (1 - 1e-14))[-1]
+            a, c = np.unravel_index(k, v.shape)
+            if v[a, c] >= best:
+                by, bz, best = gy[a], gz[c], float(v[a, c])
+            h /= 5.0
+        val[name] = best
+        yy[name] = float(by) + 0.0
+        zz[name] = float(bz)
+    return StripMaxima(mu, nu, val, yy, zz)
+
+
+def strip_maxima(friction=0.0, poisson=0.3):
+    r"""Maxima of Tresca, von Mises and orthogonal shear below the unit Hertz strip.
+
+    .. math:: \max_{y,\,z \ge 0} \tau(y, z)/p_0 \text{ at } (y/b, z/b)
+
+    The field is self-similar in b and p0, so these dimensionless figures give the
+    maxima of any strip: value p0 at depth z b and position y b. Found by a grid
+    search (0.02 b) refined by ten zooms of a 21 x 21 grid (to 1e-7 b);
+    cached per (mu, nu).
+
+    Parameters
+    ----------
+    friction : float, optional
+        Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
+    poisson : float, optional
+        Poisson's ratio, 0 <= nu < 0.5 [-].
+
+    Returns
+    -------
+    StripMaxima
+        value (over p0), y and z (over b) per measure.
+
+    Notes
+    -----
+    Valid for 0 <= mu <= 1, 0 <= nu < 0.5. Without friction the orthogonal shear has
+    two mirror maxima (+-y); the one at y > 0 is returned.
+
+    Examples
+    --------
+    >>> m = strip_maxima(0.0, 0.3)
+    >>> f"{m.value['orthogonal_shear']:.4f} at y = {m.y['orthogonal_shear']:.4f} b"
+    '0.2500 at y = 0.8660 b'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), sections 4.2 (Fig. 4.6) and 7.2
+    (Figs. 7.5-7.7).
+    """
+    mu, nu = _check_material(friction, poisson)
+    return _maxima(mu, nu)
+
+
+@dataclass(frozen=True)
+class SubsurfaceStresses:
+    """Stress maxima along a roller (one strip per slice) and the worst of all.
+
+    Returned by :func:`line_contact_stresses` and :func:`roller_stresses`; not built by
+    hand. Per-measure dicts are keyed by :data:`MEASURES`.
+
+    Parameters
+    ----------
+    x : ndarray
+        Slice centres along the roller [m].
+    half_width : ndarray
+        Contact half-width b(x), 0 where unloaded [m].
+    peak_pressure : ndarray
+        Peak pressure p0(x) = 2 q(x)/(pi b(x)), 0 where unloaded [Pa].
+    friction : float
+        Coefficient of the sliding traction [-].
+    poisson : float
+        Poisson's ratio [-].
+    value : dict
+        Measure -> its maximum below each slice [Pa].
+    depth : dict
+        Measure -> its depth below each slice [m].
+    y : dict
+        Measure -> its position across the contact below each slice [m].
+    worst : dict
+        Measure -> dict(value [Pa], x [m], y [m], z [m], slice index).
+    notes : tuple of str
+        The measured accuracy of the slice method (or why it is not known here).
+    edge_loaded : bool
+        The contact reaches a roller end (the end slice's stresses are those of a
+        singular pressure peak, resolved only to the slice width).
+
+    Notes
+    -----
+    Valid as the plane-strain strip per slice: b << R, b(x) slowly varying along x
+    (see the notes for the measured error where it is not).
+
+    Examples
+    --------
+    >>> s = line_contact_stresses(1000.0, 5e-3, 10e-3, 115.385e9)
+    >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa at {s.worst['tresca']['z'] * 1e6:.1f} um"
+    '257 MPa at 58.4 um'
+    """
+
+    x: np.ndarray
+    half_width: np.ndarray
+    peak_pressure: np.ndarray
+    friction: float
+    poisson: float
+    value: dict
+    depth: dict
+    y: dict
+    worst: dict
+    notes: tuple = field(default_factory=tuple)
+    edge_loaded: bool = False
+
+    def _slice(self, x):
+        x = float(x)
+        lo, hi = self.x[0], self.x[-1]
+        if self.x.size == 1:
+            return float(self.half_width[0]), float(self.peak_pressure[0])
+        if not lo <= x <= hi:
+            raise OutOfRangeError("x", x, f"[{lo:.6g}, {hi:.6g}] m", unit="m",
+                                  hint="the slices span the contact's overlap interval")
+        # interpolate the line load and b; p0 from them
+        q = 0.5 * np.pi * self.peak_pressure * self.half_width
+        qx = float(np.interp(x, self.x, q))
+        bx = float(np.interp(x, self.x, self.half_width))
+        return bx, (2 * qx / (np.pi * bx) if bx > 0 else 0.0)
+
+    def section(self, x, y, z):
+        """The field on a section across the roller at x, on the grid y x z.
+
+        Parameters
+        ----------
+        x : float
+            Position along the roller, within the slices' span [m].
+        y : array_like
+            Positions across the contact [m].
+        z : array_like
+            Depths, z >= 0 [m].
+
+        Returns
+        -------
+        StripStresses
+            Components on the (len(y), len(z)) grid [Pa].
+        """
+        b, p0 = self._slice(x)
+        Y, Z = np.meshgrid(np.asarray(y, float), np.asarray(z, float), indexing="ij")
+        if b <= 0:
+            zero = np.zeros_like(Y)
+            return StripStresses(zero, zero, zero, zero)
+        return strip_stresses(Y, Z, b, p0, self.friction, self.poisson)
+
+    def along_axis(self, z, y=0.0):
+        """The field along the roller (every slice) at depths z and position y.
+
+        Parameters
+        ----------
+        z : array_like
+            Depths, z >= 0 [m].
+        y : float, optional
+            Position across the contact [m].
+
+        Returns
+        -------
+        StripStresses
+            Components on the (n_slices, len(z)) grid, 0 below unloaded slices [Pa].
+        """
+        z = np.atleast_1d(check_interval("z", z, 0.0, np.inf, unit="m"))
+        loaded = self.half_width > 0
+        b = np.where(loaded, self.half_width, 1.0)[:, None]
+        p0 = np.where(loaded, self.peak_pressure, 0.0)[:, None]
+        mu, nu = self.friction, self.poisson
+        comps = _unit_strip(float(y) / b, z[None, :] / b, mu, nu)
+        return StripStresses(*(c * p0 for c in comps))
+
+    def depth_envelope(self, measure, depths, x=None, n_y=241):
+        """The largest stress over y at each depth, below the worst slice (or at x).
+
+        Parameters
+        ----------
+        measure : str
+            One of :data:`MEASURES`.
+        depths : array_like
+            Depths, z >= 0 [m].
+        x : float, optional
+            Position along the roller [m] (default: the slice of the measure's worst).
+        n_y : int, optional
+            Points over |y| <= 2 b [-].
+
+        Returns
+        -------
+        ndarray
+            The envelope at each depth [Pa].
+        """
+        if measure not in MEASURES:
+            raise ValueError(f"measure = {measure!r} is not one of {MEASURES}")
+        if x is None:
+            k = self.worst[measure]["slice"]
+            b, p0 = float(self.half_width[k]), float(self.peak_pressure[k])
+        else:
+            b, p0 = self._slice(x)
+        z = np.atleast_1d(check_interval("depths", depths, 0.0, np.inf, unit="m"))
+        ys = np.linspace(-2.0, 2.0, n_y)[:, None]
+        s = StripStresses(*_unit_strip(ys, z[None, :] / b, self.friction, self.poisson))
+        return s.measure(measure).max(axis=0) * p0
+
+    def to_dict(self, arrays=True):
+        """Plain-Python dict for JSON: the worst per measure, the along-axis profile if
+        `arrays` (SI units; see ``units``).
+
+        Parameters
+        ----------
+        arrays : bool, optional
+            Include the per-slice arrays.
+
+        Returns
+        -------
+        dict
+            Keys worst, notes, edge_loaded, friction, poisson (and x, half_width,
+            peak_pressure, value, depth, y), units.
+        """
+        d = {"worst": {k: dict(v) for k, v in self.worst.items()},
+             "friction": self.friction, "poisson": self.poisson,
+             "edge_loaded": self.edge_loaded, "notes": list(self.notes)}
+        if arrays:
+            d.update(x=self.x.tolist(), half_width=self.half_width.tolist(),
+                     peak_pressure=self.peak_pressure.tolist(),
+                     value={k: v.tolist() for k, v in self.value.items()},
+                     depth={k: v.tolist() for k, v in self.depth.items()},
+                     y={k: v.tolist() for k, v in self.y.items()})
+        d["units"] = {"x": "m", "half_width": "m", "peak_pressure": "Pa", "value": "Pa",
+                      "depth": "m", "y": "m", "z": "m"}
+        return d
+
+
+def _assemble(x, b, p0, mu, nu, notes=(), edge_loaded=False):
+    m = _maxima(mu, nu)
+    loaded = b > 0
+    value, depth, yy, worst = {}, {}, {}, {}
+    for name in MEASURES:
+        value[name] = np.where(loaded, m.value[name] * p0, 0.0)
+        depth[name] = np.where(loaded, m.z[name] * b, 0.0)
+        yy[name] = np.where(loaded, m.y[name] * b, 0.0)
+        k = int(np.argmax(value[name]))
+        worst[name] = dict(value=float(value[name][k]), x=float(x[k]),
+                           y=float(yy[name][k]), z=float(depth[name][k]), slice=k)
+    return SubsurfaceStresses(x, b, p0, mu, nu, value, depth, yy, worst, tuple(notes),
+                              bool(edge_loaded))
+
+
+def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.3):
+    r"""Stress maxima below an infinitely long (plane-strain) Hertz line contact.
+
+    .. math:: b = \sqrt{\frac{4 F R}{\pi L E^*}}, \qquad
+              p_0 = \sqrt{\frac{F E^*}{\pi L R}}
+
+    with the maxima of :func:`strip_maxima` scaled by b and p0 (one slice at x = 0).
+
+    Parameters
+    ----------
+    force : float
+        Normal force F [N].
+    radius : float
+        Radius R across the axis (effective radius against a raceway) [m].
+    length : float
+        Roller length L [m].
+    estar : float
+        Effective modulus E* [Pa].
+    friction : float, optional
+        Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
+    poisson : float, optional
+        Poisson's ratio, 0 <= nu < 0.5 [-].
+
+    Returns
+    -------
+    SubsurfaceStresses
+        One slice.
+
+    Notes
+    -----
+    Valid for 0 < F, R, L, E* < inf and b << R; the uniform line load F/L ignores the
+    roller ends (for those use :func:`roller_stresses`).
+
+    Examples
+    --------
+    >>> s = line_contact_stresses(1000.0, 5e-3, 10e-3, 115.385e9, friction=0.1)
+    >>> f"{s.worst['von_mises']['value'] / 1e6:.0f} MPa"
+    '485 MPa'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), Eq. 4.45 and section 7.2.
+    """
+    from .classical import hertz_half_width, hertz_peak_pressure
+    mu, nu = _check_material(friction, poisson)
+    b = float(hertz_half_width(force, radius, length, estar))
+    p0 = float(hertz_peak_pressure(force, radius, length, estar))
+    return _assemble(np.zeros(1), np.array([b]), np.array([p0]), mu, nu,
+                     notes=("plane-strain Hertz strip with the mean line load F/L: exact "
+                            "for an infinitely long contact; the roller ends are not "
+                            "modelled",))
+
+
+def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
+    r"""Stress maxima along a roller solved by slices, per slice and the worst of all.
+
+    .. math:: p_{0,k} = \frac{2 q_k}{\pi b_k},\qquad
+              \tau_{\max,k} = \hat\tau(\mu, \nu)\, p_{0,k}
+              \text{ at } z_k = \hat z(\mu, \nu)\, b_k
+
+    Parameters
+    ----------
+    solution : RollerSolution
+        From :class:`linecontact.roller.ProfiledRoller`, :func:`~linecontact.roller.roller_contact`
+        or :func:`~linecontact.roller.iso_slicing` (its ``x``, ``q``, ``half_width``).
+    friction : float, optional
+        Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
+    poisson : float, optional
+        Poisson's ratio, 0 <= nu < 0.5 [-].
+    roller : ProfiledRoller, optional
+        The model that produced `solution`: with it the note also checks L/D, the
+        mean line load and the profile against the measured range.
+
+    Returns
+    -------
+    SubsurfaceStresses
+        Per slice and worst; notes state the slice method's measured error.
+
+    Notes
+    -----
+    Valid as the roller model (b << R, |theta| < 0.1 rad); the plane-strain strip per
+    slice is measured against a 3D field in tables/stress_accuracy.csv (the notes).
+
+    Examples
+    --------
+    >>> from linecontact.roller import roller_contact
+    >>> sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
+    >>> s = roller_stresses(sol)
+    >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa at x = {s.worst['tresca']['x'] * 1e3:.2f} mm"
+    '737 MPa at x = -0.04 mm'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), sections 4.2 and 7.2; E. McEwen (1949).
+    """
+    mu, nu = _check_material(friction, poisson)
+    x = np.asarray(solution.x, dtype=float)
+    b = np.asarray(solution.half_width, dtype=float)
+    q = np.asarray(solution.q, dtype=float)
+    loaded = (b > 0) & (q > 0)
+    p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
+    b = np.where(loaded, b, 0.0)
+    notes = [stress_accuracy_note(solution, mu, roller)]
+    edge = bool(getattr(solution, "edge_loaded", False))
+    if edge:
+        notes.insert(0, "edge loaded: the end slice's pressure is a singular peak on a "
+                        "half-space, so the stresses below it are resolved only to the "
+                        "slice width (a grid-dependent number, like the peak pressure)")
+    return _assemble(x, b, p0, mu, nu, notes, edge)
+
+
+# ---------------------------------------------------------------- accuracy note
+_ACCURACY = []
+
+
+def _accuracy():
+    """The covered_* and slice_error_* fields of tables/stress_accuracy.csv (or None)."""
+    if not _ACCURACY:
+        from .tables import read_table
+        try:
+            meta = read_table("stress_accuracy").meta
+            errs = {}
+            for key in ("slice_error_off_ends", "slice_error_edge_loaded"):
+                errs[key] = {k: float(v) for k, v in
+                             (item.split() for item in meta[key].split(","))}
+            cov = dict(l_over_d=tuple(float(v) for v in
+                                      meta["covered_l_over_d"].split(",")),
+                       line_load=tuple(float(v) for v in
+                                       meta["covered_line_load_over_estar_d"].split(",")),
+                       tilt=tuple(float(v) for v in meta["covered_tilt_rad"].split(",")),
+                       profiles=tuple(k.strip() for k in
+                                      meta["covered_profiles"].split(",")),
+                       **errs)
+        except (FileNotFoundError, KeyError, ValueError):
+            cov = None
+        _ACCURACY.append(cov)
+    return _ACCURACY[0]
+
+
+def stress_accuracy_note(solution, friction=0.0, roller=None):
+    """The note on the slice stresses' measured error for this roller solution (the
+    range of tables/stress_accuracy.csv: L/D, q/(E* D), tilt, profile, no friction)."""
+    cov = _accuracy()
+    where = "a 3D field below the 3D BEM pressure (tables/stress_accuracy.csv)"
+    if cov is None:
+        return f"the slice stresses' error against {where} is not known here"
+    outside = []
+    if roller is not None:
+        D = 2 * roller.radius
+        checks = [("L/D", roller.length / D, cov["l_over_d"]),
+                  ("mean line load q/(E* D)",
+                   solution.force / (roller.length * roller.estar * D), cov["line_load"])]
+        outside += [f"{n} = {v:.2g} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
+                    in checks if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5)]
+        key = getattr(roller.profile, "key", None)
+        if key not in cov["profiles"]:
+            outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
+    if friction > 0:
+        outside.append(f"friction = {friction:.3g} (measured without traction)")
+    th = abs(float(getattr(solution, "tilt", 0.0)))
+    lo, hi = cov["tilt"]
+    if not lo <= th <= hi * (1 + 1e-5):
+        outside.append(f"|tilt| = {th:.3g} rad (measured {lo:.3g}-{hi:.3g} rad)")
+    edge = bool(getattr(solution, "edge_loaded", False))
+    e = cov["slice_error_edge_loaded" if edge else "slice_error_off_ends"]
+    errs = ", ".join(f"{k.replace('_', ' ')} {100 * v:.2g} %" for k, v in e.items())
+    state = "edge loaded" if edge else "contact off the ends"
+    if outside:
+        return (f"{'; '.join(outside)}: outside the range where the slice stresses were "
+                f"measured against {where}; inside it, {state}: largest errors {errs}")
+    return (f"slice stresses against {where}, {state}: largest errors {errs} "
+            f"(maximum of each measure over the roller)")
+
+
+# ---------------------------------------------------------------- case hardening
+def yield_strength_from_hardness(hardness):
+    r"""Yield strength of steel from its Vickers hardness (Pavlina & Van Tyne 2008).
+
+    .. math:: \sigma_Y = 2.876\, HV - 90.7 \quad [\mathrm{MPa}]
+
+    Parameters
+    ----------
+    hardness : array_like
+        Vickers hardness HV, 100 <= HV <= 1000 [-].
+
+    Returns
+    -------
+    ndarray
+        Yield strength [Pa].
+
+    Notes
+    -----
+    A linear correlation fitted to steels (Pavlina & Van Tyne 2008); above about
+    700 HV (60 HRC) it is used as an extrapolation of their data and should be
+    replaced by the steel's measured strength where known. Valid input
+    100 <= HV <= 1000.
+
+    Examples
+    --------
+    >>> f"{float(yield_strength_from_hardness(700.0)) / 1e6:.0f} MPa"
+    '1922 MPa'
+
+    References
+    ----------
+    E. J. Pavlina, C. J. Van Tyne, J. Materials Engineering and Performance 17 (2008)
+    888-893.
+    """
+    hv = check_interval("hardness", hardness, 100.0, 1000.0, unit="HV")
+    return (2.876 * hv - 90.7) * 1e6
+
+
+class HardnessProfile:
+    r"""Hardness against depth of a case-hardened part: a case model or a measured table.
+
+    The case model (ISO 2639 defines the effective case depth CHD as the depth where
+    the hardness falls to 550 HV):
+
+    .. math:: HV(z) = HV_c + (HV_s - HV_c)\, \exp\!\left[-\ln\frac{HV_s - HV_c}{550 - HV_c}
+              \left(\frac{z}{\mathrm{CHD}}\right)^2\right]
+
+    a smooth profile, flat at the surface, through 550 HV at z = CHD and towards the
+    core hardness below; the shape is an assumption (measured profiles differ: give a
+    table for a real part).
+
+    Parameters
+    ----------
+    surface_hardness : float, optional
+        HV_s, 550 < HV_s <= 1000 [-].
+    case_depth : float, optional
+        Effective case depth CHD, 0 < CHD < inf [m].
+    core_hardness : float, optional
+        HV_c, 100 <= HV_c < 550 and below HV_s [-].
+    depths : array_like, optional
+        Measured depths (instead of the model), increasing from 0 [m].
+    hardness : array_like, optional
+        Measured HV at `depths` [-].
+
+    Notes
+    -----
+    Valid for 100 <= HV_c < 550 < HV_s <= 1000; a table is used only over its depth
+    range (no extrapolation).
+
+    Examples
+    --------
+    >>> h = HardnessProfile(700.0, 1e-3, 350.0)
+    >>> f"{float(h(0.0)):.0f} {float(h(1e-3)):.0f} {float(h(3e-3)):.0f}"
+    '700 550 352'
+
+    References
+    ----------
+    ISO 2639:2002 (effective case depth at 550 HV).
+    """
+
+    LIMIT = 550.0  #: ISO 2639 limit hardness of the effective case depth [HV]
+
+    def __init__(self, surface_hardness=None, case_depth=None, core_hardness=None, *,
+                 depths=None, hardness=None):
+        if depths is not None or hardness is not None:
+            if depths is None or hardness is None:
+                raise ValueError("depths and hardness: give both (a measured profile) "
+                                 "or neither")
+            z = np.asarray(depths, dtype=float)
+            h = check_interval("hardness", hardness, 100.0, 1000.0, unit="HV")
+            if z.ndim != 1 or z.size < 2 or z.shape != h.shape:
+                raise ValueError(f"depths and hardness: two 1-D arrays of the same length "
+                                 f">= 2, got shapes {z.shape} and {h.shape}")
+            check_interval("depths", z, 0.0, np.inf, unit="m")
+            if np.any(np.diff(z) <= 0):
+                raise ValueError("depths must increase strictly")
+            self.depths, self.hardness = z, h
+            self.surface_hardness, self.core_hardness = float(h[0]), float(h[-1])
+            self.case_depth = None
+            return
+        hs = float(check_interval("surface_hardness", surface_hardness, self.LIMIT,
+                                  1000.0, low_open=True, unit="HV",
+                                  hint="the effective case depth is where HV = 550"))
+        hc = float(check_interval("core_hardness", core_hardness, 100.0, self.LIMIT,
+                                  high_open=True, unit="HV",
+                                  hint="the core must be softer than the 550 HV case limit"
+                                       " and the surface"))
+        self.case_depth = float(check_positive("case_depth", case_depth, "m"))
+        self.surface_hardness, self.core_hardness = hs, hc
+        self.depths = self.hardness = None
+
+    def with_case_depth(self, case_depth):
+        """The same model with another effective case depth [m]."""
+        return HardnessProfile(self.surface_hardness, case_depth, self.core_hardness)
+
+    def __call__(self, z):
+        """HV at depths z [m]."""
+        z = check_interval("z", z, 0.0, np.inf, unit="m")
+        if self.depths is not None:
+            check_interval("z", z, self.depths[0], self.depths[-1], unit="m",
+                           hint="the measured hardness profile does not reach this depth")
+            return np.interp(z, self.depths, self.hardness)
+        hs, hc, c = self.surface_hardness, self.core_hardness, self.case_depth
+        k = math.log((hs - hc) / (self.LIMIT - hc))
+        return hc + (hs - hc) * np.exp(-k * (z / c) ** 2)
+
+
+@dataclass(frozen=True)
+class CaseCheck:
+    """The case-hardening check: stress over allowable against depth.
+
+    Returned by :func:`case_check`; not built by hand.
+
+    Parameters
+    ----------
+    measure : str
+        The stress measure compared (``tresca`` or ``von_mises``).
+    depths : ndarray
+        Depths [m].
+    stress : ndarray
+        Envelope of the measure over y at each depth, below the worst slice [Pa].
+    allowable : ndarray
+        Allowable stress at each depth [Pa].
+    ratio : ndarray
+        stress / allowable [-].
+    max_ratio : float
+        Largest ratio [-].
+    depth_at_max : float
+        Where it occurs [m].
+    min_case_depth : float or None
+        The smallest effective case depth with max_ratio <= 1 for this load (same
+        surface and core hardness), None for a measured profile or when even the
+        surface hardness throughout does not suffice [m].
+    conversion : str
+        The stated hardness-to-allowable conversion.
+
+    Notes
+    -----
+    Valid as the stresses and the hardness profile it was made from.
+
+    Examples
+    --------
+    >>> s = line_contact_stresses(4000.0, 5e-3, 10e-3, 115.385e9)
+    >>> c = case_check(s, HardnessProfile(700.0, 0.3e-3, 350.0))
+    >>> f"{c.max_ratio:.2f} at {c.depth_at_max * 1e6:.0f} um"
+    '0.52 at 119 um'
+    """
+
+    measure: str
+    depths: np.ndarray
+    stress: np.ndarray
+    allowable: np.ndarray
+    ratio: np.ndarray
+    max_ratio: float
+    depth_at_max: float
+    min_case_depth: object
+    conversion: str
+
+
+_CONVERSION = ("allowable = {f} x yield strength, yield strength = 2.876 HV - 90.7 MPa "
+               "(Pavlina & Van Tyne 2008); {m} yield criterion")
+
+
+def case_check(stresses, hardness, depths=None, measure="von_mises"):
+    r"""Stress over allowable against depth for a case-hardened part, and the minimum
+    effective case depth for the load.
+
+    .. math:: r(z) = \frac{\max_y \sigma_{eq}(y, z)}{f\,\sigma_Y(HV(z))}, \qquad
+              \sigma_Y = 2.876\,HV - 90.7\ \mathrm{MPa}
+
+    with f = 1 for von Mises and f = 1/2 for Tresca (the yield criteria).
+
+    Parameters
+    ----------
+    stresses : SubsurfaceStresses
+        From :func:`line_contact_stresses` or :func:`roller_stresses` (the worst slice
+        of the measure is checked).
+    hardness : HardnessProfile
+        The hardness against depth.
+    depths : array_like, optional
+        Depth grid, 0 <= z [m]; it must reach below the stress maximum (default: 400
+        points to the deeper of 4 times the maximum's depth and 3 times the case depth).
+    measure : str, optional
+        ``"von_mises"`` (default) or ``"tresca"``.
+
+    Returns
+    -------
+    CaseCheck
+
+    Notes
+    -----
+    Valid as the stresses and the hardness profile (100 <= HV <= 1000). The minimum
+    case depth is found by bisection on the case model's CHD (the ratio at every depth
+    falls as CHD grows, the hardness model being increasing in CHD).
+
+    Examples
+    --------
+    >>> s = line_contact_stresses(4000.0, 5e-3, 10e-3, 115.385e9)
+    >>> c = case_check(s, HardnessProfile(700.0, 0.3e-3, 350.0), measure="tresca")
+    >>> f"{c.max_ratio:.2f}, minimum CHD {c.min_case_depth * 1e6:.0f} um"
+    '0.56, minimum CHD 74 um'
+
+    References
+    ----------
+    E. J. Pavlina, C. J. Van Tyne (2008); ISO 2639:2002 (effective case depth).
+    """
+    if measure not in _ALLOWABLE_FACTOR:
+        raise ValueError(f"measure = {measure!r} is not one of "
+                         f"{tuple(_ALLOWABLE_FACTOR)} (the yield criteria)")
+    w = stresses.worst[measure]
+    z_max = w["z"]
+    if depths is None:
+        deep = 4 * z_max + (3 * hardness.case_depth if hardness.case_depth else 0.0)
+        if hardness.depths is not None:
+            deep = min(max(4 * z_max, 1e-9), hardness.depths[-1])
+        depths = np.linspace(0.0, deep, 400)
+    z = np.atleast_1d(check_interval("depths", depths, 0.0, np.inf, unit="m"))
+    if z.max() < z_max * (1 + 1e-9) or (z_max > 0 and z.max() < 1.25 * z_max):
+        raise OutOfRangeError("depths", float(z.max()), f"[{1.25 * z_max:.6g}, inf) m",
+                              unit="m", where="the deepest point",
+                              hint=f"the {measure} maximum lies at z = {z_max:.6g} m: "
+                                   "the grid must reach below it")
+    f = _ALLOWABLE_FACTOR[measure]
+    sig = stresses.depth_envelope(measure, z)
+
+    def ratio_for(h):
+        allow = f * yield_strength_from_hardness(h(z))
+        return sig / allow, allow
+
+    ratio, allow = ratio_for(hardness)
+    k = int(np.argmax(ratio))
+    min_chd = None
+    if hardness.case_depth is not None:
+        hi = hardness.case_depth
+        top = hardness.surface_hardness
+        if float(np.max(sig / (f * yield_strength_from_hardness(top)))) <= 1.0:
+            lo = 0.0
+            while ratio_for(hardness.with_case_depth(hi))[0].max() > 1.0:
+                lo, hi = hi, 2 * hi
+            lo = lo if lo > 0 else hi * 1e-6
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                if ratio_for(hardness.with_case_depth(mid))[0].max() > 1.0:
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo < 1e-4 * hi:
+                    break
+            min_chd = hi
+    name = "von Mises" if measure == "von_mises" else "Tresca"
+    return CaseCheck(measure, z, sig, allow, ratio, float(ratio[k]), float(z[k]), min_chd,
+                     _CONVERSION.format(f=f, m=name))

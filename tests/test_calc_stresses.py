@@ -1,0 +1,70 @@
+"""`linecontact calc --stresses`: the calculator shows the library's stresses (no
+physics of its own) and refuses bad input in one line."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from linecontact.stresses import HardnessProfile, case_check, line_contact_stresses
+
+BASE = ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
+        "--poisson", "0.3", "--load", "4kN"]
+
+
+def _main(capsys, *argv):
+    from linecontact.calc.cli import main
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_model_rows_carry_the_library_maxima(capsys):
+    """Each model row's stress columns are line_contact_stresses at its force, and the
+    check is case_check with the given hardness (same numbers, SI in JSON)."""
+    status, out, err = _main(capsys, *BASE, "--stresses", "yes", "--surface-hardness",
+                             "700", "--case-depth", "0.3mm", "--core-hardness", "350",
+                             "--json")
+    assert status == 0, err
+    doc = json.loads(out)
+    row = doc["models"][0]["rows"][0]
+    estar = doc["inputs"]["estar"]
+    s = line_contact_stresses(row["force"], 5e-3, 10e-3, estar)
+    assert row["tresca_max"] == pytest.approx(s.worst["tresca"]["value"], rel=1e-12)
+    assert row["von_mises_depth"] == pytest.approx(s.worst["von_mises"]["z"], rel=1e-12)
+    c = case_check(s, HardnessProfile(700.0, 0.3e-3, 350.0))
+    assert row["case_ratio"] == pytest.approx(c.max_ratio, rel=1e-12)
+    assert "stresses" not in doc   # a plain line contact: uniform along the axis
+
+
+def test_profiled_roller_section_field(capsys):
+    """With a profile and --stress-field the JSON holds the worst along the roller and
+    the section field at that x."""
+    status, out, err = _main(capsys, *BASE, "--crown-radius", "500mm", "--stresses",
+                             "yes", "--stress-field", "0mm", "--json")
+    assert status == 0, err
+    doc = json.loads(out)
+    row = doc["stresses"][0]["rows"][0]
+    assert len(row["x"]) == 100 and abs(row["worst"]["tresca"]["x"]) < 1e-4
+    model_row = doc["models"][0]["rows"][0]
+    assert model_row["tresca_max"] == pytest.approx(row["worst"]["tresca"]["value"],
+                                                    rel=1e-12)
+    sec = row["section"]
+    assert len(sec["tresca"]) == len(sec["y"]) and len(sec["tresca"][0]) == len(sec["z"])
+    assert max(max(r) for r in sec["tresca"]) <= row["worst"]["tresca"]["value"] * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("extra,word", [
+    (["--stresses", "yes", "--sliding-friction", "-0.1"], "sliding-friction"),
+    (["--stresses", "yes", "--surface-hardness", "500", "--case-depth", "0.3mm",
+      "--core-hardness", "600"], "hardness"),
+    (["--stresses", "maybe"], "stresses"),
+    (["--case-depth", "1mm"], "case-depth"),
+])
+def test_bad_input_one_line(capsys, extra, word):
+    """Negative friction, a core harder than the surface, a bad flag, a hardness
+    option without --stresses: status 2 and one line naming the option."""
+    status, out, err = _main(capsys, *BASE, *extra)
+    assert status == 2
+    lines = [ln for ln in err.strip().splitlines() if ln]
+    assert len(lines) == 1 and word in lines[0], err

@@ -1,0 +1,103 @@
+"""The 3D stress field of tools/bem/stress.py against exact oracles.
+
+- Love's rectangle (corner functions) against a direct quadrature of Boussinesq's
+  point-load stresses (Johnson 1985, Eq. 3.21) over the rectangle;
+- the surface limit sigma_z = -p inside the loaded rectangle;
+- the axisymmetric Hertz contact on its axis (Johnson 1985, Eq. 3.45): maximum shear
+  0.31 p0 at z = 0.48 a for nu = 0.3, with grid convergence;
+- plane strain: a long strip carrying the Hertz pressure reproduces McEwen's field
+  (linecontact.stresses) in its middle.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.integrate import dblquad
+from scipy.optimize import minimize_scalar
+
+from linecontact.stresses import strip_stresses
+from tools.bem.stress import (COMPONENTS, StressField, measures, point_load_stresses,
+                              rectangle_stresses)
+
+NU = 0.3
+
+
+@pytest.mark.parametrize("x,y,z", [(0.2, 0.1, 0.5), (1.3, -0.4, 0.3), (-0.7, 1.6, 1.2),
+                                   (0.1, 0.05, 0.3), (0.5, 0.25, 0.15)])
+def test_rectangle_against_quadrature(x, y, z):
+    """Love's closed forms equal the integral of Boussinesq's point-load stresses over
+    the 1 x 0.5 rectangle, every component, to quadrature accuracy (1e-9)."""
+    r = rectangle_stresses(x, y, z, 1.0, 0.5, NU)
+    for c in COMPONENTS:
+        q = dblquad(lambda yy, xx: point_load_stresses(x - xx, y - yy, z, NU)[c],
+                    -0.5, 0.5, -0.25, 0.25, epsabs=1e-11, epsrel=1e-9)[0]
+        assert float(r[c]) == pytest.approx(q, abs=1e-9), c
+
+
+def test_surface_limit():
+    """Just below a uniformly loaded rectangle sigma_z = -p (equilibrium)."""
+    r = rectangle_stresses(0.1, 0.05, 1e-9, 1.0, 0.5, NU)
+    assert float(r["sigma_z"]) == pytest.approx(-1.0, abs=1e-8)
+
+
+def _hertz_axis_max_shear(nu=NU):
+    """Johnson (1985) Eq. 3.45 on the axis (p0 = a = 1), maximised."""
+    def tau(z):
+        sr = -(1 + nu) * (1 - z * np.arctan(1 / z)) + 0.5 / (1 + z * z)
+        sz = -1 / (1 + z * z)
+        return 0.5 * abs(sr - sz)
+    res = minimize_scalar(lambda z: -tau(z), bounds=(0.2, 1.0), method="bounded",
+                          options=dict(xatol=1e-10))
+    return -res.fun, res.x
+
+
+def _grid_axis_max(n):
+    """Max over depth of the Tresca stress at the centre of an n x n grid (n odd: a
+    cell centre on the axis) below the Hertz pressure p0 sqrt(1 - r^2/a^2)."""
+    a, half = 1.0, 1.05
+    dx = 2 * half / n
+    xc = (np.arange(n) - (n - 1) / 2) * dx
+    X, Y = np.meshgrid(xc, xc, indexing="ij")
+    p = np.sqrt(np.maximum(1 - (X * X + Y * Y) / a ** 2, 0.0))
+    f = StressField(n, n, dx, dx, NU, workers=1)
+    zs = np.linspace(0.42, 0.54, 7)
+    c = n // 2
+    v = np.array([measures(f.plane(p, z))["tresca"][c, c] for z in zs])
+    k = int(np.argmax(v))
+    h = zs[1] - zs[0]
+    s = 0.5 * (v[k - 1] - v[k + 1]) / (v[k - 1] - 2 * v[k] + v[k + 1])
+    return v[k] - 0.25 * (v[k - 1] - v[k + 1]) * s, zs[k] + s * h
+
+
+def test_axisymmetric_hertz_axis_and_grid_convergence():
+    """Through the 3D field, the Hertz contact's maximum shear on its axis is 0.310 p0 at
+    z = 0.48 a (Johnson Eq. 3.45, nu = 0.3); the error falls with the grid."""
+    exact, z_exact = _hertz_axis_max_shear()
+    assert round(exact, 2) == 0.31 and round(z_exact, 2) == 0.48
+    e = []
+    for n in (31, 63):
+        v, z = _grid_axis_max(n)
+        e.append(abs(v - exact))
+        assert z == pytest.approx(z_exact, abs=0.01)
+    assert e[1] < 3e-4, e
+    assert e[1] < 0.5 * e[0], f"no convergence: errors {e} on 31 and 63 cells"
+
+
+def test_long_strip_is_plane_strain():
+    """A strip 400 b long carrying the Hertz pressure: in its middle the 3D field equals
+    McEwen's plane-strain field (to the 0.05 b cells: 0.5 % of p0)."""
+    b, L = 1.0, 400.0
+    nx, ny = 200, 60
+    dx, dy = L / nx, 3 * b / ny
+    x = (np.arange(nx) + 0.5) * dx - L / 2
+    y = (np.arange(ny) + 0.5) * dy - 1.5 * b
+    p = np.sqrt(np.maximum(1 - y ** 2 / b ** 2, 0.0))[None, :] * np.ones((nx, 1))
+    f = StressField(nx, ny, dx, dy, NU, workers=1)
+    z = 0.8
+    s3 = f.plane(p, z)
+    i = nx // 2
+    s2 = strip_stresses(y, z, b, 1.0, 0.0, NU)
+    for c3, c2 in (("sigma_x", "sigma_x"), ("sigma_y", "sigma_y"), ("sigma_z", "sigma_z"),
+                   ("tau_yz", "tau_yz")):
+        assert np.max(np.abs(s3[c3][i] - getattr(s2, c2))) < 5e-3, c3
+    assert np.max(np.abs(s3["tau_xy"][i])) < 1e-3 and np.max(np.abs(s3["tau_xz"][i])) < 1e-3

@@ -1,0 +1,206 @@
+"""Subsurface stresses (linecontact.stresses) against exact oracles.
+
+Oracles: direct numerical integration of the Flamant and 2D Cerruti line-load
+solutions (Johnson 1985, Eqs. 2.15 and 2.19) over the Hertz pressure and traction; the
+closed-form stresses on the axis of the Hertz strip (Johnson 1985, Eq. 4.49), maximised
+independently; the orthogonal shear's exact maximum p0/4 at (sqrt(3)/2 b, b/2); the
+definition of the effective case depth (ISO 2639: 550 HV).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+from scipy.optimize import minimize_scalar
+
+from linecontact.roller import ProfiledRoller
+from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
+                                  line_contact_stresses, roller_stresses, strip_maxima,
+                                  strip_stresses)
+from linecontact.validity import OutOfRangeError
+
+ESTAR = 115.385e9
+
+
+def _line_load_integral(y, z, mu):
+    """sigma_y, sigma_z, tau_yz at (y, z) of the unit strip by quadrature of the
+    Flamant (normal) and Cerruti-2D (tangential) line loads."""
+    def comp(k):
+        def f(t):
+            p = np.sqrt(1 - t * t)
+            Y = y - t
+            r4 = (Y * Y + z * z) ** 2
+            normal = (Y * Y * z, z ** 3, Y * z * z)[k]
+            tangential = (Y ** 3, Y * z * z, Y * Y * z)[k]
+            return -2 / np.pi * p * (normal + mu * tangential) / r4
+        return quad(f, -1, 1, limit=400, epsabs=1e-13, epsrel=1e-12)[0]
+    return np.array([comp(k) for k in range(3)])
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.25, 1.0])
+@pytest.mark.parametrize("y,z", [(0.3, 0.5), (-0.7, 0.2), (1.5, 0.4), (-1.3, 1.1),
+                                 (0.0, 0.8), (0.9, 0.05)])
+def test_closed_forms_match_line_load_integration(y, z, mu):
+    """McEwen's closed forms (every component and sign) equal the superposition of
+    Flamant and Cerruti line loads over the strip, to quadrature accuracy."""
+    s = strip_stresses(y, z, 1.0, 1.0, friction=mu)
+    got = np.array([float(s.sigma_y), float(s.sigma_z), float(s.tau_yz)])
+    ref = _line_load_integral(y, z, mu)
+    assert np.max(np.abs(got - ref)) < 1e-10, (got, ref)
+    assert float(s.sigma_x) == pytest.approx(0.3 * (got[0] + got[1]), abs=1e-15)
+
+
+def test_scaling_with_half_width_and_pressure():
+    """The field is self-similar: sigma(y, z; b, p0) = p0 sigma(y/b, z/b; 1, 1)."""
+    u = strip_stresses(0.4, 0.6, 1.0, 1.0, 0.2)
+    s = strip_stresses(0.4e-4, 0.6e-4, 1e-4, 2e9, 0.2)
+    for k in ("sigma_x", "sigma_y", "sigma_z", "tau_yz"):
+        assert float(getattr(s, k)) == pytest.approx(2e9 * float(getattr(u, k)), rel=1e-12)
+
+
+def _axis(zeta, nu=0.3):
+    """Johnson (1985) Eq. 4.49: stresses on the axis of the Hertz strip (p0 = b = 1)."""
+    r = np.sqrt(1 + zeta * zeta)
+    sz = -1 / r
+    sy = -((1 + 2 * zeta * zeta) / r - 2 * zeta)
+    return nu * (sy + sz), sy, sz
+
+
+def test_max_shear_of_the_hertz_strip():
+    """Tresca maximum 0.300 p0 at z = 0.786 b (Johnson 1985, Fig. 4.6): the value and
+    depth from the axis formulas maximised independently, to 1e-7."""
+    res = minimize_scalar(lambda z: -0.5 * (_axis(z)[1] - _axis(z)[2]), bounds=(0.3, 1.5),
+                          method="bounded", options=dict(xatol=1e-10))
+    m = strip_maxima(0.0, 0.3)
+    assert m.value["tresca"] == pytest.approx(-res.fun, abs=1e-7)
+    assert m.z["tresca"] == pytest.approx(res.x, abs=1e-4)
+    assert abs(m.y["tresca"]) < 1e-4
+    assert round(m.value["tresca"], 3) == 0.300 and round(m.z["tresca"], 3) == 0.786
+
+
+def test_von_mises_of_the_hertz_strip():
+    """Von Mises maximum on the axis, nu = 0.3, against the axis formula maximised
+    independently (about 0.56 p0 near 0.70 b)."""
+    def vm(z):
+        sx, sy, sz = _axis(z)
+        return np.sqrt(0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2))
+    res = minimize_scalar(lambda z: -vm(z), bounds=(0.3, 1.5), method="bounded",
+                          options=dict(xatol=1e-10))
+    m = strip_maxima(0.0, 0.3)
+    assert m.value["von_mises"] == pytest.approx(-res.fun, abs=1e-7)
+    assert m.z["von_mises"] == pytest.approx(res.x, abs=1e-4)
+    assert 0.55 < m.value["von_mises"] < 0.57 and 0.69 < m.z["von_mises"] < 0.72
+
+
+def test_orthogonal_shear_of_the_hertz_strip():
+    """Orthogonal shear |tau_yz| max = p0/4 exactly, at y = sqrt(3)/2 b, z = b/2."""
+    m = strip_maxima(0.0, 0.3)
+    assert m.value["orthogonal_shear"] == pytest.approx(0.25, abs=1e-9)
+    assert m.y["orthogonal_shear"] == pytest.approx(np.sqrt(3) / 2, abs=1e-5)
+    assert m.z["orthogonal_shear"] == pytest.approx(0.5, abs=1e-5)
+
+
+def test_maxima_are_the_maxima_of_a_fine_grid():
+    """With traction the reported maxima are not beaten anywhere on a 0.005 b grid."""
+    ys = np.linspace(-1.5, 1.5, 601)[:, None]
+    zs = np.linspace(0.0, 1.5, 301)[None, :]
+    for mu in (0.1, 0.2, 0.4):
+        m = strip_maxima(mu, 0.3)
+        s = strip_stresses(ys, zs, 1.0, 1.0, mu)
+        for k in MEASURES:
+            assert s.measure(k).max() <= m.value[k] * (1 + 1e-9), (mu, k)
+            assert s.measure(k).max() >= m.value[k] * (1 - 1e-3), (mu, k)
+
+
+def test_traction_moves_the_maxima_towards_the_surface():
+    """Johnson (1985) Figs. 7.5-7.7: with a sliding traction the maxima grow and rise;
+    from mu about 0.3 the largest shear is at the surface."""
+    ms = [strip_maxima(mu, 0.3) for mu in (0.0, 0.1, 0.2)]
+    for k in ("tresca", "von_mises", "orthogonal_shear"):
+        v = [m.value[k] for m in ms]
+        z = [m.z[k] for m in ms]
+        assert v[0] < v[1] < v[2], k
+        assert z[0] > z[1] > z[2], k
+    assert strip_maxima(0.35, 0.3).z["tresca"] < 1e-9
+    assert strip_maxima(0.2, 0.3).z["tresca"] > 0.3
+
+
+def test_line_contact_uses_hertz_half_width_and_pressure():
+    """line_contact_stresses = strip maxima x Hertz p0 and b (Johnson Eq. 4.45)."""
+    F, R, L = 4000.0, 5e-3, 10e-3
+    s = line_contact_stresses(F, R, L, ESTAR)
+    b = np.sqrt(4 * F * R / (np.pi * L * ESTAR))
+    p0 = np.sqrt(F * ESTAR / (np.pi * L * R))
+    m = strip_maxima()
+    assert s.worst["tresca"]["value"] == pytest.approx(m.value["tresca"] * p0, rel=1e-12)
+    assert s.worst["tresca"]["z"] == pytest.approx(m.z["tresca"] * b, rel=1e-12)
+
+
+def test_roller_section_field_reproduces_the_worst_value():
+    """The section field below the worst slice of a crowned roller reaches the reported
+    maximum (to the 0.01 b grid) and never exceeds it."""
+    r = ProfiledRoller(5e-3, 14e-3, ESTAR, "circular:Rc=0.5")
+    sol = r.at_force(4200.0)
+    s = roller_stresses(sol, roller=r)
+    w = s.worst["tresca"]
+    b = s.half_width[w["slice"]]
+    sec = s.section(w["x"], np.linspace(-1.5, 1.5, 301) * b, np.linspace(0, 1.5, 151) * b)
+    assert sec.tresca.max() <= w["value"] * (1 + 1e-9)
+    assert sec.tresca.max() >= w["value"] * (1 - 1e-4)
+    prof = s.along_axis([w["z"]])
+    assert prof.tresca.shape == (sol.x.size, 1)
+    assert prof.tresca.max() == pytest.approx(w["value"], rel=1e-9)
+    assert any("tables/stress_accuracy.csv" in n for n in s.notes)
+
+
+def test_bad_input_gets_one_line_errors():
+    """Negative friction, hardness below core, a depth grid above the maximum: one
+    line naming the parameter and its valid range."""
+    with pytest.raises(OutOfRangeError, match=r"^friction = -0.1 .*valid range") as e:
+        strip_maxima(-0.1)
+    assert "\n" not in str(e.value)
+    with pytest.raises(OutOfRangeError, match="core_hardness = 600"):
+        HardnessProfile(580.0, 1e-3, 600.0)
+    with pytest.raises(OutOfRangeError, match="surface_hardness = 500"):
+        HardnessProfile(500.0, 1e-3, 300.0)
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    with pytest.raises(OutOfRangeError, match=r"^depths = .*below it") as e:
+        case_check(s, HardnessProfile(700.0, 0.3e-3, 350.0),
+                   depths=np.linspace(0, 0.5 * s.worst["von_mises"]["z"], 50))
+    assert "\n" not in str(e.value)
+
+
+def test_hardness_profile_meets_its_definition():
+    """HV(0) = surface hardness; HV(CHD) = 550 HV (ISO 2639); decreasing to the core."""
+    h = HardnessProfile(720.0, 0.8e-3, 380.0)
+    z = np.linspace(0, 5e-3, 200)
+    v = h(z)
+    assert float(h(0.0)) == pytest.approx(720.0, abs=1e-12)
+    assert float(h(0.8e-3)) == pytest.approx(550.0, abs=1e-9)
+    assert np.all(np.diff(v) <= 0) and v[-1] == pytest.approx(380.0, abs=1.0)
+
+
+def test_minimum_case_depth_is_where_the_ratio_reaches_one():
+    """At the reported minimum case depth the largest stress/allowable is 1 (to the
+    bisection's 1e-4), above it is below 1 and a shallower case fails."""
+    s = line_contact_stresses(8000.0, 5e-3, 10e-3, ESTAR)
+    h = HardnessProfile(700.0, 0.5e-3, 300.0)
+    c = case_check(s, h, measure="tresca")
+    assert c.min_case_depth is not None
+    at = case_check(s, h.with_case_depth(c.min_case_depth), depths=c.depths,
+                    measure="tresca")
+    assert at.max_ratio == pytest.approx(1.0, abs=2e-3)
+    assert case_check(s, h.with_case_depth(0.9 * c.min_case_depth), depths=c.depths,
+                      measure="tresca").max_ratio > 1.0
+    assert "Pavlina" in c.conversion
+
+
+def test_measured_hardness_table():
+    """A measured profile (depth, HV) is interpolated, and not used beyond its depth."""
+    h = HardnessProfile(depths=[0, 0.5e-3, 1e-3, 3e-3], hardness=[700, 650, 500, 350])
+    assert float(h(0.75e-3)) == pytest.approx(575.0)
+    with pytest.raises(OutOfRangeError, match="^z = "):
+        h(4e-3)
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    c = case_check(s, h)
+    assert c.min_case_depth is None and 0 < c.max_ratio < 1

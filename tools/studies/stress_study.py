@@ -1,0 +1,296 @@
+"""Accuracy of the runtime slice stresses (linecontact.stresses) against a 3D field.
+
+Writes tables/stress_accuracy.csv (``python -m tools.build_tables stress``).
+
+Per case (a roller, a profile, a force F, a tilt theta; no friction, nu = 0.3):
+
+1. The reference: the 3D boundary-element pressure of tools.bem.roller at F and theta
+   (``solve_roller_force``) on an adapted window with ``n_x`` x ``n_y`` cells and on
+   twice as many in each direction on the same window (tools.bem.roller
+   .grid_convergence); below each pressure the 3D stress field of tools.bem.stress
+   (Love's rectangle, one DC-FFT per component and depth plane) on depth planes
+   z/b = 0.1, 0.2, ..., 1.2 (b the BEM's largest contact half-width); the maximum
+   of each measure (Tresca, von Mises, orthogonal shear |tau_yz|) over the cells of
+   each plane, refined in depth by a parabola through the best plane and its two
+   neighbours. The fine grid is the reference; the change from the coarse one is its
+   stated resolution (``bem_change_*``).
+2. The runtime: linecontact.roller.ProfiledRoller (100 slices) at the same F and
+   theta, then linecontact.stresses.roller_stresses: the worst of each measure over the
+   roller, and the wall/CPU time of the stresses against that of the contact solve.
+3. Errors: value/value_3D - 1 per measure (``err_*``) and the depth difference over b
+   (``dz_*``). Edge-loaded cases (the contact reaches a roller end cell on either BEM
+   grid) carry a singular end pressure: the 3D maxima there sit at the end and depend
+   on the grid (their change is printed), so their error is stated apart.
+
+Cases: the roller study's rollers and profiles (tools/studies/roller_study.py; D =
+10 mm, E* = 115.385 GPa): L = 14 mm with the circular crown, ISO/TS 16281, Lundberg's,
+Johns-Gohar's and straight-with-end-relief profiles, L = 30 mm with the ISO profile;
+line loads 100, 800 and 2000 N/mm; tilts 0 and 2 mrad: 36 cases. ``--quick``: 6.
+
+Budget: see the table's ``wall_time`` header (run niced, 2 processes).
+"""
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..bem.roller import grid_convergence, solve_roller_force
+from ..bem.stress import MEASURES, StressField
+from .roller_study import DIAMETER, ESTAR, ROLLERS, make_profile
+from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
+
+REPO = Path(__file__).resolve().parents[2]
+
+POISSON = 0.3
+LINE_LOADS = (1e5, 8e5, 2e6)          #: [N/m]
+TILTS = (0.0, 2e-3)                   #: [rad]
+PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
+            5: "straight with end relief"}
+#: the runtime profile keys (linecontact.profiles) of the study's profiles
+PROFILE_KEYS = ("circular", "iso16281", "lundberg", "johns-gohar", "end-relief")
+CODES = {v: k for k, v in PROFILES.items()}
+DEPTHS_OVER_B = np.round(np.arange(0.10, 1.2001, 0.10), 4)
+
+
+def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
+    """The cases (picklable dicts with a unique 'key')."""
+    combos = [("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
+    loads = LINE_LOADS[::2] if quick else LINE_LOADS
+    tilts = TILTS[::2] if quick else TILTS
+    if quick:
+        combos = combos[:3]
+    tasks = []
+    for roller, prof in combos:
+        L = ROLLERS[roller]
+        for q in loads:
+            for th in tilts:
+                tasks.append(dict(key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}"
+                                      f"-t{th * 1e3:g}",
+                                  roller=roller, profile=prof, radius=DIAMETER / 2,
+                                  length=L, estar=ESTAR, force=q * L, tilt=th, n_x=n_x,
+                                  n_y=n_y, tol=tol))
+    return tasks
+
+
+def field_maxima(res, depths_over_b=DEPTHS_OVER_B, poisson=POISSON):
+    """Maxima of the three measures of the 3D field below a BEM result's pressure:
+    measure -> dict(value [Pa], x [m], y [m], z [m]); planes z = depths_over_b * b."""
+    g = res.grid
+    b = res.half_width
+    f = StressField(g.nx, g.ny, g.dx, g.dy, poisson, workers=1)
+    zs = depths_over_b * b
+    per = {m: [] for m in MEASURES}
+    for z in zs:
+        best = f.maxima(res.pressure, [z])
+        for m in MEASURES:
+            per[m].append(best[m])
+    out = {}
+    x, y = g.x, g.y
+    for m in MEASURES:
+        v = np.array([p["value"] for p in per[m]])
+        k = int(np.argmax(v))
+        zk, vk = zs[k], v[k]
+        if 0 < k < len(zs) - 1:
+            # parabola through planes k-1, k, k+1 (equal spacing h)
+            h = zs[1] - zs[0]
+            a, c = v[k - 1], v[k + 1]
+            den = a - 2 * vk + c
+            if den < 0:
+                s = 0.5 * (a - c) / den
+                zk = zs[k] + s * h
+                vk = vk - 0.25 * (a - c) * s
+        out[m] = dict(value=float(vk), z=float(zk), x=float(x[per[m][k]["i"]]),
+                      y=float(y[per[m][k]["j"]]), plane=k, n_planes=len(zs))
+    return out
+
+
+def bem_case(task):
+    """The 3D references of one case on the two nested grids."""
+    t0 = time.perf_counter()
+    prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
+    g = grid_convergence(solve_roller_force, task["radius"], task["length"],
+                         task["estar"], task["force"], tilt=task["tilt"], profile=prof,
+                         n_x=task["n_x"], n_y=task["n_y"], tol=task["tol"], workers=1,
+                         fields=True)
+    c, f = g["coarse"], g["fine"]
+    t1 = time.perf_counter()
+    mc, mf = field_maxima(c), field_maxima(f)
+    return dict(fine=mf, coarse=mc, edge=bool(c.edge_loaded or f.edge_loaded),
+                half_width=f.half_width, p_max=f.p_max, nx=f.grid.nx, ny=f.grid.ny,
+                contact_seconds=t1 - t0, field_seconds=time.perf_counter() - t1)
+
+
+def runtime_case(task, n_slices=100):
+    """The runtime model and its slice stresses, with their wall and CPU times."""
+    from linecontact.roller import ProfiledRoller
+    from linecontact.stresses import roller_stresses
+    prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
+    model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
+                           n_slices=n_slices)
+    t0, c0 = time.perf_counter(), time.process_time()
+    sol = model.at_force(task["force"], tilt=task["tilt"])
+    t1, c1 = time.perf_counter(), time.process_time()
+    s = roller_stresses(sol, 0.0, POISSON)
+    t2, c2 = time.perf_counter(), time.process_time()
+    return dict(worst=s.worst, edge=bool(sol.edge_loaded), solve_seconds=t1 - t0,
+                solve_cpu=c1 - c0, stress_seconds=t2 - t1, stress_cpu=c2 - c1)
+
+
+def run_case(task):
+    """One case: the 3D references, the runtime and the errors (module docstring)."""
+    ref = bem_case(task)
+    rt = runtime_case(task)
+    b = ref["half_width"]
+    out = dict(bem_edge=ref["edge"], rt_edge=rt["edge"], bem_half_width=b,
+               bem_p_max=ref["p_max"], bem_nx=ref["nx"], bem_ny=ref["ny"],
+               bem_contact_seconds=ref["contact_seconds"],
+               bem_field_seconds=ref["field_seconds"],
+               rt_solve_seconds=rt["solve_seconds"], rt_solve_cpu=rt["solve_cpu"],
+               rt_stress_seconds=rt["stress_seconds"], rt_stress_cpu=rt["stress_cpu"])
+    for m in MEASURES:
+        f, c, r = ref["fine"][m], ref["coarse"][m], rt["worst"][m]
+        out.update({f"bem_{m}": f["value"], f"bem_z_{m}": f["z"], f"bem_x_{m}": f["x"],
+                    f"bem_change_{m}": f["value"] / c["value"] - 1,
+                    f"bem_at_plane_edge_{m}": float(f["plane"] in (0, f["n_planes"] - 1)),
+                    f"rt_{m}": r["value"], f"rt_z_{m}": r["z"], f"rt_x_{m}": r["x"],
+                    f"err_{m}": r["value"] / f["value"] - 1,
+                    f"dz_{m}": (r["z"] - f["z"]) / b})
+    return out
+
+
+def add_arguments(parser):
+    parser.add_argument("--n-x", type=int, default=128,
+                        help="cells along the axis over the contact window, coarser of "
+                             "the two grids (default 128)")
+    parser.add_argument("--n-y", type=int, default=32,
+                        help="cells across the strip |y| <= 1.25 b (default 32)")
+    parser.add_argument("--tol", type=float, default=1e-7,
+                        help="contact-solver tolerance (default 1e-7)")
+    parser.add_argument("--quick", action="store_true", help="6 cases: a smoke run")
+    parser.add_argument("--out", type=Path, default=REPO / "tables",
+                        help="folder for stress_accuracy.csv (default tables/)")
+    add_runner_arguments(parser)
+
+
+def _units():
+    u = {"roller_length": "m", "profile": "-", "force": "N", "line_load": "N/m",
+         "tilt": "rad", "bem_edge": "-", "rt_edge": "-", "bem_half_width": "m",
+         "bem_p_max": "Pa", "bem_nx": "-", "bem_ny": "-"}
+    for m in MEASURES:
+        u.update({f"bem_{m}": "Pa", f"bem_z_{m}": "m", f"bem_x_{m}": "m",
+                  f"bem_change_{m}": "-", f"bem_at_plane_edge_{m}": "-", f"rt_{m}": "Pa",
+                  f"rt_z_{m}": "m", f"rt_x_{m}": "m", f"err_{m}": "-", f"dz_{m}": "-"})
+    u.update({"bem_contact_seconds": "s", "bem_field_seconds": "s",
+              "rt_solve_seconds": "s", "rt_solve_cpu": "s", "rt_stress_seconds": "s",
+              "rt_stress_cpu": "s"})
+    return u
+
+
+def tabulate(tasks, results):
+    units = _units()
+    col = {k: [] for k in units}
+    for t, r in zip(tasks, results):
+        row = dict(roller_length=t["length"], profile=CODES[t["profile"]],
+                   force=t["force"], line_load=t["force"] / t["length"], tilt=t["tilt"])
+        row.update(r)
+        for k in units:
+            col[k].append(float(row[k]))
+    return {k: np.array(v) for k, v in col.items()}
+
+
+def summarise(col):
+    edge = col["bem_edge"] > 0
+    s = {"n_off": int((~edge).sum()), "n_edge": int(edge.sum())}
+    for m in MEASURES:
+        e = np.abs(col[f"err_{m}"])
+        ch = np.abs(col[f"bem_change_{m}"])
+        dz = np.abs(col[f"dz_{m}"])
+        s[f"off_{m}"] = float(e[~edge].max()) if (~edge).any() else float("nan")
+        s[f"edge_{m}"] = float(e[edge].max()) if edge.any() else float("nan")
+        s[f"ch_off_{m}"] = float(ch[~edge].max()) if (~edge).any() else float("nan")
+        s[f"ch_edge_{m}"] = float(ch[edge].max()) if edge.any() else float("nan")
+        s[f"dz_off_{m}"] = float(dz[~edge].max()) if (~edge).any() else float("nan")
+    ratio = col["rt_stress_cpu"] / col["rt_solve_cpu"]
+    s["time_ratio_median"] = float(np.median(ratio))
+    s["time_ratio_max"] = float(ratio.max())
+    return s
+
+
+def run(args):
+    from linecontact.tables import write_table
+
+    tasks = study_tasks(args.n_x, args.n_y, args.tol, args.quick)
+    t0 = time.perf_counter()
+    results = run_study_from_args(run_case, tasks, args, desc="stress study")
+    wall = time.perf_counter() - t0
+    results = [{k: v for k, v in r.items() if k != "resumed"} for r in results]
+    col = tabulate(tasks, results)
+    s = summarise(col)
+    units = ", ".join(f"{k} [{u}]" for k, u in _units().items())
+    D = DIAMETER
+    lo = min(LINE_LOADS) / (ESTAR * D)
+    hi = max(LINE_LOADS) / (ESTAR * D)
+    ld = sorted(L / D for L in ROLLERS.values())
+
+    def errs(prefix):
+        return ", ".join(f"{m} {s[f'{prefix}_{m}']:.3g}" for m in MEASURES)
+
+    meta = table_meta(
+        args.command_line,
+        title="Accuracy of the runtime slice stresses (linecontact.stresses.roller_stresses) "
+              "against the 3D stress field below a 3D boundary-element pressure",
+        source="computed: tools/bem/roller.py (3D BEM pressure at the given force and "
+               "tilt) and tools/bem/stress.py (Love's rectangle stresses, one DC-FFT per "
+               "component and depth plane) against linecontact.roller.ProfiledRoller + "
+               "linecontact.stresses.roller_stresses",
+        units=units,
+        columns="profile codes: " + ", ".join(f"{k} = {v}" for k, v in PROFILES.items())
+                + "; measures: tresca = (sigma_1 - sigma_3)/2, von_mises, orthogonal_shear "
+                  "= |tau_yz| (y across the roller); bem_* = the maximum over the 3D "
+                  "field on the finer grid, bem_z_* its depth (parabola through the depth "
+                  "planes), bem_x_* its position along the roller; bem_change_* = fine/"
+                  "coarse - 1; bem_at_plane_edge_* = 1 where the maximum sits on the first "
+                  "or last depth plane (not bracketed); rt_* = the runtime's worst along "
+                  "the roller; err_* = rt/bem - 1; dz_* = (z_rt - z_bem)/b; *_edge = 1 "
+                  "where the contact reaches a roller end; rt_*_cpu, rt_*_seconds: CPU and "
+                  "wall time of the runtime contact solve and of its stresses",
+        cases=f"D = {D * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa, nu = {POISSON:g}, no "
+              "friction; L = 14 mm: circular crown (Rc 500 mm), iso16281, lundberg and "
+              "johns-gohar (design 800 N/mm), straight with end relief (0.15 L, corner "
+              "radius 50 mm); L = 30 mm: iso16281; line loads "
+              f"{', '.join(f'{q / 1e3:g}' for q in LINE_LOADS)} N/mm; tilts "
+              f"{', '.join(f'{t * 1e3:g}' for t in TILTS)} mrad"
+              + (" (quick subset)" if args.quick else ""),
+        grid=f"BEM: adapted window (contact box x 1.25, |y| <= 1.25 b), {args.n_x} x "
+             f"{args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells (the finer the "
+             f"reference); stress planes z/b = {DEPTHS_OVER_B[0]:g}-{DEPTHS_OVER_B[-1]:g} "
+             "step 0.1 at the cell centres; runtime: 100 slices",
+        tolerance=f"{args.tol:g} (BEM gap error / largest interference); force 1e-6 F",
+        accuracy=f"3D field change coarse to fine, off the ends: {errs('ch_off')}; edge "
+                 f"loaded: {errs('ch_edge')} (a singular end pressure: not converged)",
+        runtime_error=f"largest |rt/bem - 1| off the ends ({s['n_off']} cases): "
+                      f"{errs('off')}; largest depth difference over b off the ends: "
+                      f"{errs('dz_off')}; edge loaded ({s['n_edge']} cases): "
+                      f"{errs('edge')}",
+        timing=f"runtime stresses over the runtime contact solve, CPU: median "
+               f"{s['time_ratio_median']:.3g}, largest {s['time_ratio_max']:.3g}",
+        covered=f"L/D {ld[0]:g}-{ld[-1]:g}; mean line load q/(E* D) {lo:.2g}-{hi:.2g}; "
+                f"tilts 0-{max(TILTS) * 1e3:g} mrad; profiles {', '.join(PROFILE_KEYS)}; "
+                "no friction",
+        covered_l_over_d=f"{ld[0]:g}, {ld[-1]:g}",
+        covered_line_load_over_estar_d=f"{lo:.6g}, {hi:.6g}",
+        covered_tilt_rad=f"0, {max(TILTS):g}",
+        covered_profiles=", ".join(PROFILE_KEYS),
+        slice_error_off_ends=", ".join(f"{m} {s[f'off_{m}']:.3g}" for m in MEASURES),
+        slice_error_edge_loaded=", ".join(f"{m} {s[f'edge_{m}']:.3g}" for m in MEASURES),
+        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers),
+    )
+    args.out.mkdir(parents=True, exist_ok=True)
+    path = args.out / "stress_accuracy.csv"
+    write_table(path, meta, col)
+    print(f"wrote {path}: {len(tasks)} cases in {wall:.0f} s")
+    for k in ("accuracy", "runtime_error", "timing", "wall_time"):
+        print(f"  {k}: {meta[k]}")
+    return 0

@@ -16,6 +16,9 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
+``adhesion``
+    Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
+    MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
 
 Run from the repository root, e.g.::
 
@@ -35,6 +38,7 @@ SUBCOMMANDS = {
     "roller": "tools.studies.roller_study",
     "tangential": "tools.studies.tangential_study",
     "accuracy": "tools.studies.accuracy",
+    "adhesion": "tools.studies.adhesion_study",
 }
 
 

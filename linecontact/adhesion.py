@@ -82,6 +82,7 @@ __all__ = [
     "jkr_cylinder_force_per_length",
     "jkr_cylinder_pull_off",
     "ADHESION_TABLE",
+    "CYLINDER_MODELS",
     "TABOR_JKR",
     "TABOR_DMT",
 ]
@@ -148,11 +149,11 @@ def tabor_parameter(radius, work, estar, z0=0.3e-9):
 
     Examples
     --------
-    A PDMS roller (E* = 2.7 MPa), R = 1 mm, w = 50 mJ/m^2: deep in the JKR regime;
-    steel (E* = 115 GPa) with the same w is DMT-like:
+    A PDMS roller (E* = 2.7 MPa), R = 1 mm, w = 50 mJ/m^2: deep in the JKR regime; a
+    steel fibre (E* = 115 GPa) of R = 1 um with the same w is DMT-like:
 
-    >>> f"{tabor_parameter(1e-3, 0.05, 2.7e6):.0f}", f"{tabor_parameter(1e-3, 0.05, 115e9):.2f}"
-    ('2331', '0.19')
+    >>> f"{tabor_parameter(1e-3, 0.05, 2.7e6):.0f}", f"{tabor_parameter(1e-6, 0.05, 115e9):.2f}"
+    ('2333', '0.19')
 
     References
     ----------
@@ -256,8 +257,8 @@ class AdhesiveContact:
     >>> c = AdhesiveContact(lambda x: x**2 / R, E, w)
     >>> f"{c.pull_off('force')['force'] / (1.5 * np.pi * w * R):.9f}"
     '-1.000000000'
-    >>> f"{c.pull_off('depth')['force'] / (5 / 6 * np.pi * w * R):.9f}"
-    '-1.000000000'
+    >>> f"{c.pull_off('depth')['force'] / (5 / 6 * np.pi * w * R):.7f}"
+    '-1.0000000'
 
     References
     ----------
@@ -308,7 +309,7 @@ class AdhesiveContact:
         >>> m = get_model("universal", 5e-3, 10e-3, 2.7e6)
         >>> c = AdhesiveContact.from_model(m, 0.05)
         >>> f"{c.pull_off('force')['force'] * 1e3:.2f} mN"
-        '-4.68 mN'
+        '-86.18 mN'
         """
         model.profile(np.asarray(0.5 * model.radius * 1e-3))   # no profile: raises
         # the model's own depth range bounds the half-length (d/R <= 0.15 or a table's
@@ -678,7 +679,7 @@ def jkr_cylinder_pull_off(radius, estar, work):
     --------
     >>> F, b = jkr_cylinder_pull_off(1e-3, 1e6, 0.05)
     >>> f"{F:.4f} N/m at b = {b * 1e6:.2f} um"
-    '-0.3726 N/m at b = 31.69 um'
+    '-2.3665 N/m at b = 31.69 um'
 
     References
     ----------
@@ -690,3 +691,192 @@ def jkr_cylinder_pull_off(radius, estar, work):
     w = check_positive("work", work, "J/m^2")
     return out(-3 * np.cbrt(np.pi * E * R * w ** 2 / 16)), out(np.cbrt(2 * R ** 2 * w /
                                                                         (np.pi * E)))
+
+
+# --------------------------------------------------------------------------------------
+# the finite cylinder: the BEM table
+# --------------------------------------------------------------------------------------
+#: Models of a straight, aligned cylinder (the BEM table's geometry).
+CYLINDER_MODELS = frozenset({"universal", "li-popov", "puttock-thwaite", "johnson"})
+
+
+@functools.lru_cache(maxsize=None)
+def _cached_table(name):
+    return read_table(name)
+
+
+def _table(name, directory):
+    table = read_table(name, directory=directory) if directory else _cached_table(name)
+    for col in ("s", "ratio_force", "ratio_depth", "mdr_err_force", "mdr_err_depth",
+                "d_tilde_off"):
+        if col not in table.columns:
+            raise TableError(f"{table.path}: no column {col!r}")
+    s = table.columns["s"]
+    if s.size < 2 or np.any(np.diff(s) <= 0) or s[0] <= 0:
+        raise TableError(f"{table.path}: s must increase strictly from > 0")
+    return table
+
+
+class CylinderAdhesion:
+    r"""Adhesive contact of a finite cylinder: the BEM-corrected pull-off and the MDR's.
+
+    .. math::
+
+        F_c = \rho(s)\,L\,\frac{F_{c,2D}}{L}, \qquad
+        \frac{F_{c,2D}}{L} = -3\left(\frac{\pi E^*Rw^2}{16}\right)^{1/3}, \qquad
+        s = \frac{b_c}{L} = \left(\frac{2\tilde w}{\pi}\right)^{1/3}, \quad
+        \tilde w = \frac{wR^2}{E^*L^3}
+
+    with :math:`\rho(s)` the BEM's ratio (``tables/adhesion_cylinder.csv``), one
+    function for every L/R by self-similarity, interpolated by a monotone cubic
+    (PCHIP) through its rows and the exact long-roller limit :math:`\rho(0) = 1`.
+
+    Parameters
+    ----------
+    model : linecontact.models.ContactModel
+        A straight-cylinder model (:data:`CYLINDER_MODELS`): its R, L, E* and, for the
+        plain MDR values, its MDR profile.
+    work : float
+        Work of adhesion w, 0 < w < inf [J/m^2].
+    table : str, optional
+        Table stem (default :data:`ADHESION_TABLE`).
+    directory : path-like, optional
+        Read the table from this folder instead of tables/.
+
+    Notes
+    -----
+    Valid for 0 < s <= the table's largest s (0.5: the pull-off contact as wide as the
+    roller is long); a larger s is refused (a disc-like contact: the plain rule of Hess
+    is still available as :attr:`mdr`). Between s = 0 and the table's smallest s the
+    ratio is interpolated towards the 2D JKR limit; the table's header records the
+    straight-line fit of its smallest s that supports it (``long_roller_limit``).
+    Below the table the MDR's error is not measured (it grows as s -> 0: the MDR
+    half-length of a long roller is of the order of L, not of b). JKR itself needs a
+    large Tabor parameter (:attr:`tabor`).
+
+    Examples
+    --------
+    A PDMS micro-roller (E* = 2.7 MPa), R = 0.5 mm, L = 2 mm, w = 40 mJ/m^2:
+
+    >>> from linecontact.models import get_model
+    >>> c = CylinderAdhesion(get_model("universal", 0.5e-3, 2e-3, 2.7e6), 0.04)
+    >>> f"s = {c.s:.3g}; 2D JKR {c.pull_off_2d * 1e3:.3f} mN"
+    's = 0.0124; 2D JKR -3.047 mN'
+
+    References
+    ----------
+    .. [1] M. Barquins, J. Adhesion 26 (1988) 1-12.
+    .. [2] R. Pohrt, V. L. Popov, Facta Universitatis, Series Mechanical Engineering
+       13(1) (2015) 3-10 (the BEM's criterion).
+    .. [3] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+       and Friction, Springer (2015), chapter 5 (the MDR's rule).
+    """
+
+    def __init__(self, model, work, *, table=ADHESION_TABLE, directory=None):
+        key = getattr(model, "key", "")
+        if key not in CYLINDER_MODELS:
+            raise OutOfRangeError("model", key or type(model).__name__,
+                                  "one of " + ", ".join(sorted(CYLINDER_MODELS)),
+                                  hint="the BEM table is for a straight, aligned cylinder "
+                                       "with an MDR profile; use AdhesiveContact for "
+                                       "other shapes")
+        self.model = model
+        self.work = _one("work", work, Interval("work", 0.0, np.inf, True, True, "J/m^2"))
+        self.table = _table(table, directory)
+        R, L, E = model.radius, model.length, model.estar
+        self.w_tilde = self.work * R ** 2 / (E * L ** 3)
+        self.s = float(np.cbrt(2 * self.w_tilde / np.pi))
+        cols = self.table.columns
+        s_max = float(cols["s"][-1])
+        if self.s > s_max * (1 + 1e-12):
+            raise OutOfRangeError(
+                "work", self.work, f"0 < w <= {s_max ** 3 * np.pi / 2 * E * L ** 3 / R ** 2:.6g}"
+                " J/m^2", unit="J/m^2",
+                hint=f"s = b_c/L = {self.s:.3g} > {s_max:g}, the BEM table's end: the "
+                     "pull-off contact is wider than the roller is long (a disc-like "
+                     "contact; the plain rule of Hess is AdhesiveContact.from_model)")
+        self.pull_off_2d_per_length, self.half_width_2d = jkr_cylinder_pull_off(R, E,
+                                                                                self.work)
+
+    # ---- table lookups ----------------------------------------------------------------
+    def _ratio(self, column):
+        from scipy.interpolate import PchipInterpolator
+
+        cols = self.table.columns
+        s = np.concatenate([[0.0], cols["s"]])
+        v = np.concatenate([[1.0], cols[column]])
+        return float(PchipInterpolator(s, v)(self.s))
+
+    @property
+    def in_table(self):
+        """True when s lies inside the table's rows (else between 0 and its first)."""
+        return bool(self.s >= self.table.columns["s"][0] * (1 - 1e-12))
+
+    @property
+    def provenance(self):
+        """The table's metadata (title, source, generated_by, accuracy, ...)."""
+        return dict(self.table.meta)
+
+    @property
+    def pull_off_2d(self):
+        """The 2D JKR pull-off of the whole length, L F_c,2D/L [N] (force control)."""
+        return self.pull_off_2d_per_length * self.model.length
+
+    @functools.cached_property
+    def mdr(self):
+        """The plain rule of Hess on the model's profile (:class:`AdhesiveContact`)."""
+        return AdhesiveContact.from_model(self.model, self.work)
+
+    @property
+    def tabor(self):
+        """Tabor parameter of the case, z0 = 0.3 nm [-] (:func:`tabor_parameter`)."""
+        return tabor_parameter(self.model.radius, self.work, self.model.estar)
+
+    def pull_off(self, control="force"):
+        """The BEM-corrected pull-off force, with the plain MDR's beside it.
+
+        Parameters
+        ----------
+        control : {'force', 'depth'}
+            Force or depth control.
+
+        Returns
+        -------
+        dict
+            ``force`` [N] (corrected), ``ratio`` (over the 2D JKR value) [-],
+            ``mdr_force`` [N] (the rule of Hess), ``mdr_error`` (its error against the
+            BEM, mdr/BEM - 1, or NaN below the table's s) [-], ``depth`` [m] (the
+            BEM's depth at the depth-controlled jump-off, NaN under force control or
+            below the table), ``in_table`` (bool).
+        """
+        if control not in _CONTROLS:
+            raise OutOfRangeError("control", control, "one of 'force', 'depth'")
+        ratio = self._ratio(f"ratio_{control}")
+        F = ratio * self.pull_off_2d
+        mdr = self.mdr.pull_off(control)["force"]
+        err, depth = np.nan, np.nan
+        if self.in_table:
+            from scipy.interpolate import PchipInterpolator
+
+            cols = self.table.columns
+            err = float(PchipInterpolator(cols["s"], cols[f"mdr_err_{control}"])(self.s))
+            if control == "depth":
+                dt = float(PchipInterpolator(cols["s"], cols["d_tilde_off"])(self.s))
+                depth = dt * self.model.length ** 2 / self.model.radius
+        return {"force": F, "ratio": ratio, "mdr_force": mdr, "mdr_error": err,
+                "depth": depth, "in_table": self.in_table}
+
+    def zero_load(self):
+        """State at zero load: the 2D JKR half-width and the MDR's half-length and depth.
+
+        Returns
+        -------
+        dict
+            ``half_width_2d`` b0 = (32 R^2 w/(pi E*))^(1/3) [m] (2D JKR, the long-roller
+            value), ``mdr_half_length`` a0 [m] and ``mdr_depth`` d0 [m] (the rule of
+            Hess; not measured by the BEM).
+        """
+        R, E = self.model.radius, self.model.estar
+        z = self.mdr.zero_load()
+        return {"half_width_2d": float(np.cbrt(32 * R ** 2 * self.work / (np.pi * E))),
+                "mdr_half_length": z["contact_radius"], "mdr_depth": z["depth"]}

@@ -60,7 +60,7 @@ POHRT_POPOV_CONSTANT = 0.473201
 START_FACTOR = 1.6
 
 #: Tolerance of the inner solves while the contact set is still moving.
-LOOSE_TOL = 1e-4
+LOOSE_TOL = 1e-3
 
 
 def critical_stress(estar, work, h):

@@ -58,7 +58,7 @@ DIMENSIONS = {
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
-_QUANTITY = re.compile(
+QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
     r"\s*(?P<unit>[A-Za-z\u00b5\u03bc]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
     re.ASCII,
@@ -281,7 +281,7 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
 
 def _parse_one(text, kind):
     """(SI value, None) or (None, reason) for one string: the rule of the module."""
-    m = _QUANTITY.match(text)
+    m = QUANTITY.match(text)
     if m is None:
         return None, _format_reason(text)
     number, unit = m.group("number"), m.group("unit")
@@ -352,7 +352,7 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     numbers = [""] * n
     units = [None] * n
     errors = [""] * n
-    match = _QUANTITY.match
+    match = QUANTITY.match
     for i, cell in enumerate(cells):
         m = match(cell)
         if m is None:

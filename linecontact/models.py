@@ -81,8 +81,8 @@ MODELS: dict = {}
 #: time one of them is asked for by key, so that a one-case calculation does not pay
 #: for their import. A test checks that each module registers its keys.
 DEFINED_IN = {
-    "profiled-roller": "linecontact.roller",
-    "iso16281-slicing": "linecontact.roller",
+    "profiled-roller": "linecontact.roller.laws",
+    "iso16281-slicing": "linecontact.roller.laws",
 }
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.

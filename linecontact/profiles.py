@@ -47,7 +47,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import OutOfRangeError, check_interval, check_positive
+from .validity import Interval, OutOfRangeError, check_interval, check_positive
 
 __all__ = [
     "Profile",
@@ -64,7 +64,12 @@ __all__ = [
     "ISO16281_LONG",
     "parse_profile",
     "parse_angle",
+    "TILT_RANGE",
 ]
+
+#: Tilts theta of the roller's axis accepted by the roller models (the gap linearises
+#: the tilt, theta x, for small angles) [rad].
+TILT_RANGE = Interval("tilt", -0.1, 0.1, low_open=True, high_open=True, unit="rad")
 
 #: The constant of the Johns-Gohar profile, (1 - C b/a) (Johns & Gohar 1981).
 JOHNS_GOHAR_C = 0.3033
@@ -949,3 +954,36 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     if name == "lundberg":
         return LundbergProfile(length, estar, **kw)
     return JohnsGoharProfile(length, need("radius", radius, "m"), estar, **kw)
+
+
+def as_profile(profile, radius, length, estar):
+    """A roller's profile from a :class:`Profile`, a spec (:func:`parse_profile`, read
+    with this R, L, E*) or None (straight); anything else is refused."""
+    if profile is None:
+        return StraightProfile(length)
+    if isinstance(profile, str):
+        return parse_profile(profile, length=length, radius=radius, estar=estar)
+    if not isinstance(profile, Profile):
+        raise OutOfRangeError("profile", repr(profile),
+                              "a linecontact.profiles.Profile, a profile spec or None")
+    return profile
+
+
+def roller_drop(profile, length, x, ends_may_be_inf=False):
+    """The drop P(x) [m] of `profile` on a roller of length L, checking that the profile
+    covers -L/2 <= x <= L/2 and that the drop is finite and >= 0 (or +inf exactly at an
+    end, where a logarithmic profile is infinite, if `ends_may_be_inf`)."""
+    tol = 1e-12 * length
+    if profile.x_min > -length / 2 + tol or profile.x_max < length / 2 - tol:
+        raise OutOfRangeError("profile", profile.label,
+                              f"a profile covering [{-length / 2:.6g}, {length / 2:.6g}] m",
+                              hint=f"it covers [{profile.x_min:.6g}, {profile.x_max:.6g}] m")
+    P = np.asarray(profile.drop(np.clip(x, profile.x_min, profile.x_max)), dtype=float)
+    ok = np.isfinite(P) & (P >= 0)
+    if ends_may_be_inf:
+        ok |= np.isposinf(P) & (np.abs(x) >= length / 2 * (1 - 1e-12))
+    if not np.all(ok):
+        i = int(np.flatnonzero(~ok)[0])
+        raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
+                              where=f"at x = {x[i]:.6g} m")
+    return P

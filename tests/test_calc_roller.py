@@ -1,6 +1,6 @@
 """The calculator's profiled-roller options (``linecontact calc --crown-radius``,
-``--profile``, ``--tilt``; linecontact.calc_roller), called in process through
-linecontact.cli.main.
+``--profile``, ``--tilt``; linecontact.calc.features.roller), called in process through
+linecontact.calc.cli.main.
 
 Each test states the fact it checks and why its tolerance.
 """
@@ -18,7 +18,7 @@ ROLLER = ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
 
 
 def _main(capsys, *argv):
-    from linecontact.cli import main
+    from linecontact.calc.cli import main
 
     status = main(list(argv))
     out, err = capsys.readouterr()
@@ -138,17 +138,28 @@ def test_no_contact_and_whole_roller_are_refused(capsys, tmp_path):
     assert status == 2 and "whole roller" in err
 
 
-def test_batch_refuses_profile_columns(capsys, tmp_path):
-    """A CSV batch with a profile column computes its other rows and refuses the
-    profiled ones in their error cell (profiled rollers are one case or a sweep), exit
-    status 2 as for any failed row."""
+def test_batch_profile_rows_equal_the_one_case_call(capsys, tmp_path):
+    """A CSV batch takes the profile and tilt columns: each profiled row's columns equal
+    the one-case call's profiled-roller row to the printed 6 digits (the same solver on
+    the same inputs), and a row without a profile has empty profiled cells."""
     f = tmp_path / "cases.csv"
-    f.write_text("radius,length,estar,load,crown_radius\n5mm,10mm,115GPa,1kN,0.1\n"
-                 "5mm,10mm,115GPa,1kN,\n")
-    status, out, err = _main(capsys, "calc", str(f))
-    assert status == 2
-    rows = out.strip().splitlines()
-    assert "not computed in a batch" in rows[1] and rows[2].split(",")[-1] == ""
+    f.write_text("radius,length,estar,load,crown_radius,tilt\n5mm,10mm,115GPa,1kN,0.1,\n"
+                 "5mm,10mm,115GPa,2kN,0.2,0.5mrad\n5mm,10mm,115GPa,1kN,,\n")
+    status, out, err = _main(capsys, "calc", str(f), "--si")
+    assert status == 0, err
+    import csv
+    import io
+
+    rows = list(csv.DictReader(io.StringIO(out)))
+    for row, extra in zip(rows[:2], (["--load", "1kN", "--crown-radius", "0.1"],
+                                     ["--load", "2kN", "--crown-radius", "0.2", "--tilt",
+                                      "0.5mrad"])):
+        one = _json(capsys, "calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+                    *extra)["profiled_roller"][0]["rows"][0]
+        for name in ("force", "depth", "stiffness", "moment", "p_max"):
+            col = next(c for c in row if c.startswith(f"profiled_{name}_"))
+            assert float(row[col]) == pytest.approx(one[name], rel=1e-5, abs=1e-12), name
+    assert rows[2]["profiled_force_N"] == "" and rows[2]["error"] == ""
 
 
 def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
@@ -195,7 +206,7 @@ def test_plain_calc_does_not_import_the_roller_model():
     from pathlib import Path
 
     code = ("import sys, io, contextlib\n"
-            "from linecontact.cli import main\n"
+            "from linecontact.calc.cli import main\n"
             "with contextlib.redirect_stdout(io.StringIO()):\n"
             "    main(['calc', '--radius', '5mm', '--length', '10mm', '--estar',"
             " '115GPa', '--load', '1kN'])\n"

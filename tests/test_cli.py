@@ -4,7 +4,7 @@ The first part runs ``python -m linecontact`` from this checkout's root in a
 subprocess, as a user would (start-up, imports, exit status, stdout/stderr). Every such
 command is started once, all of them in parallel at the start of the module (the
 start-up of Python and numpy dominates), and each test then reads the result of the
-command it names. The second part calls :func:`linecontact.cli.main` in-process (the
+command it names. The second part calls :func:`linecontact.calc.cli.main` in-process (the
 same code without a start-up per test) for the input rules, the batch's guarantees and
 the new output columns.
 """
@@ -526,8 +526,8 @@ def test_bad_input_message_states_the_valid_range(results, name):
 
 
 def _main(capsys, *argv):
-    """(status, stdout, stderr) of linecontact.cli.main(argv)."""
-    from linecontact.cli import main
+    """(status, stdout, stderr) of linecontact.calc.cli.main(argv)."""
+    from linecontact.calc.cli import main
 
     status = main(list(argv))
     out, err = capsys.readouterr()
@@ -854,7 +854,7 @@ def _sample(name, tmp_path):
 def test_sample_covers_every_option():
     """The two tests below try every option of `calc --help`: a new option without a
     sample value fails here, not silently untested."""
-    from linecontact.cases import PARAMETERS
+    from linecontact.calc.cases import PARAMETERS
 
     assert set(SAMPLE) == {p.name for p in PARAMETERS}
 
@@ -863,10 +863,10 @@ def test_sample_covers_every_option():
 def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, name):
     """An option of any kind (length, time, text, path, angle, ...) given with a CSV
     batch fills the empty cells of its column: every row is written and either computed
-    or refused in its own 'error' cell (a profile option: 'not computed in a batch', as
-    the docs of linecontact.calc_roller say), status 0 or 2, never an exception. The
-    profile options (text, path kinds) used to crash with KeyError in _units."""
-    from linecontact.cases import option_name
+    or refused in its own 'error' cell, status 0 or 2, never an exception. The profile
+    options (text, path kinds) used to crash with KeyError in _units; a profile option
+    gives every row its profiled-roller columns (a batch takes every option)."""
+    from linecontact.calc.feature import option_name
 
     src = _write_csv(tmp_path / "c.csv", ["name", "radius", "length", "modulus", "poisson",
                                           "load"],
@@ -879,7 +879,7 @@ def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, na
     if status == 2:  # a row refused: it says so in its own cell, the file is written
         assert any(r["error"] for r in rows) and "error" in err
     if name in ("profile", "crown_radius", "tilt"):
-        assert all("not computed in a batch" in r["error"] for r in rows)
+        assert status == 0 and all(float(r["profiled_force_kN"]) > 0 for r in rows), err
 
 
 @pytest.mark.parametrize("name", sorted(set(SAMPLE) - {"radius", "length", "modulus",
@@ -916,7 +916,7 @@ def _odd(value, tmp_path):
 
 
 def _no_traceback(capsys, *argv):
-    from linecontact.cli import main
+    from linecontact.calc.cli import main
 
     status = main(list(argv))  # an exception here fails the test with its traceback
     out, err = capsys.readouterr()
@@ -931,7 +931,7 @@ def test_odd_values_of_every_option_exit_0_or_2(capsys, tmp_path, name):
     one-case value is one line on stderr. (This loop found: a NUL byte in a path, a
     non-UTF-8 profile or Prony file, and profiled-roller solver failures at a 6 um crown
     radius or a 1e-300 N load, all tracebacks before.)"""
-    from linecontact.cases import option_name
+    from linecontact.calc.feature import option_name
 
     base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
             "load": "1kN"}
@@ -979,8 +979,8 @@ def test_odd_csv_files_exit_0_or_2(capsys, tmp_path, text):
 def test_random_text_for_any_option_exits_0_or_2(name, value):
     """Random short text for a random option (hypothesis): status 0 or 2, never a
     traceback."""
-    from linecontact.cli import main
-    from linecontact.cases import option_name
+    from linecontact.calc.cli import main
+    from linecontact.calc.feature import option_name
 
     err = io.StringIO()
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
@@ -1008,7 +1008,7 @@ def test_every_listed_model_key_is_accepted_by_model_option():
     """The keys that --model's message lists as valid (models.available_models(), which
     includes the roller models registered on import of linecontact.roller) are all
     accepted: 'profiled-roller' was listed and then refused as 'unknown model'."""
-    from linecontact.compute import parse_model_option
+    from linecontact.calc.compute import parse_model_option
     from linecontact.models import available_models
 
     for key in available_models():
@@ -1030,7 +1030,7 @@ def test_model_options_take_the_unit_their_docstring_gives():
     a length for an angle is refused naming the option and the valid kind; a number
     option keeps its integer type (n_slices); a named constant still passes as text."""
     from linecontact._units import InputError
-    from linecontact.compute import parse_model_option
+    from linecontact.calc.compute import parse_model_option
 
     tilt = {t: parse_model_option(f"profiled-roller:tilt={t}")[0][2]["tilt"]
             for t in ("1mrad", "0.001", "0.05deg")}

@@ -353,7 +353,7 @@ def test_solution_outside_the_covered_range_names_the_quantity():
 def test_each_covered_bound_is_checked(bound, side):
     # 1 % beyond each bound of the header (the lower tilt bounds are 0: |theta| cannot
     # go below) is outside; a central case is inside
-    from linecontact.roller import _coverage_note
+    from linecontact.roller.coverage import coverage_note
     cov, _ = _covered()
     R, E = 5e-3, 115.385e9
     mid = {k: (lo * hi) ** 0.5 if lo > 0 else hi / 2 for k, (lo, hi) in cov.items()}
@@ -365,7 +365,7 @@ def test_each_covered_bound_is_checked(bound, side):
         th = c["free_tilt_rad"] if free else c["given_tilt_rad"]
         approach = th * L / 2 / c["tilt_drop_over_approach"]
         F = c["line_load_over_estar_d"] * E * 2 * R * L
-        return _coverage_note(R, L, E, "circular", F, th, approach, free_tilt=free)
+        return coverage_note(R, L, E, "circular", F, th, approach, free_tilt=free)
 
     assert "inside the range" in note(mid[bound])
     lo, hi = cov[bound]
@@ -375,8 +375,8 @@ def test_each_covered_bound_is_checked(bound, side):
 
 
 def test_uncovered_profile_and_coarse_slices_are_noted():
-    from linecontact.roller import _coverage_note
+    from linecontact.roller.coverage import coverage_note
     args = (5e-3, 14e-3, 115.385e9)
-    assert "profile 'straight'" in _coverage_note(*args, "straight", 4200.0, 0.0, 1e-5)
-    assert "n_slices = 50" in _coverage_note(*args, "circular", 4200.0, 0.0, 1e-5,
+    assert "profile 'straight'" in coverage_note(*args, "straight", 4200.0, 0.0, 1e-5)
+    assert "n_slices = 50" in coverage_note(*args, "circular", 4200.0, 0.0, 1e-5,
                                              n_slices=50)

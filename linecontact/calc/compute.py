@@ -1,57 +1,31 @@
-"""The calculator's results: every model evaluated on whole arrays of cases, plus the
+"""The calculator's results: every model evaluated on whole arrays of cases, the
 per-row quantities derived from them (Hertz half-width and peak pressure, geometry
-flags, deviation from the best estimate, whole-roller deflection).
+flags, deviation from the best estimate), and the columns of the active features.
 
-Cases (:func:`linecontact.cases.parse_cases`) are grouped by distinct cylinder
-(effective radius, length, E*, raceways): one model object per group and model, each
-evaluated once per group on the array of its loads or depths with
+Cases (:func:`linecontact.calc.cases.parse_cases`) are grouped by distinct contact
+(effective radius, length, E*): one model object per group and model, each evaluated
+once per group on the array of its loads or depths with
 :meth:`linecontact.models.ContactModel.evaluate`. A model that refuses some elements
 (:class:`~linecontact.validity.OutOfRangeError`) is re-evaluated on halves of the
 array until the refused elements are isolated: each of them gets the model's message as
 its ``note``, the others their values. Any other exception is reported the same way,
-in the row's ``error`` (never lost, never stopping the other rows).
+in the row's ``error`` (never lost, never stopping the other rows). Then each active
+feature (:mod:`linecontact.calc.feature`) is asked for its columns over the group's
+rows, and for its extra tables (blocks) once at the end.
 
-Output columns are :data:`FIELDS` (name -> :class:`Field`: heading, SI and engineering
-unit). To add one: add a :class:`Field`, compute its array in :func:`_contact_fields`
-(per contact) or :func:`compute` (per row), and list it in :data:`CONTACT_COLUMNS` or
-:data:`ROLLER_COLUMNS`; the table, CSV and JSON renderers (:mod:`linecontact.render`)
-pick it up from there.
-
-Whole roller between two raceways (``--inner-raceway``, ``--outer-raceway``)
-    The force F [N] passes through two contacts in series: roller on inner raceway
-    (1/R = 1/R1 + 1/Ri) and roller in outer raceway (1/R = 1/R1 - 1/Ro), both of the
-    roller's length L and the same E*. The roller's deflection is the sum of the two
-    contact depths, delta = d_i(F) + d_o(F), and its stiffness the series value
-    k = 1 / (1/k_i + 1/k_o) [N/m]. This is the quantity ISO/TS 16281's whole-roller
-    law describes; it is printed in its own columns (``roller_deflection``,
-    ``roller_stiffness``), apart from the per-contact depth of a single contact.
-    Each contact is modelled as a cylinder of the effective radius on a half-space,
-    which is Hertz's reduction for two parallel cylinders (Johnson 1985, Sec. 4.2)
-    applied to the finite-length models.
+Output columns: the core's :data:`FIELDS` (name -> :class:`Field`: heading, SI and
+engineering unit) and each feature's ``fields``; :func:`all_fields` has them all.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-__all__ = ["Field", "FIELDS", "CONTACT_COLUMNS", "ROLLER_COLUMNS", "DEPTH_OVER_RADIUS_MAX",
-           "HALF_WIDTH_OVER_LENGTH_MAX", "parse_model_option",
-           "compute", "Results"]
+from .feature import Field, flag_text
+from .features import FEATURES
 
-
-@dataclass(frozen=True)
-class Field:
-    """An output quantity: its table heading, SI unit and engineering unit.
-
-    ``factor`` converts SI to the engineering unit (value_eng = factor * value_SI).
-    """
-
-    heading: str
-    si: str
-    eng: str
-    factor: float
+__all__ = ["FIELDS", "CONTACT_COLUMNS", "P0_NOTE", "all_fields", "parse_model_option",
+           "model_id", "compute", "Results"]
 
 
 #: Every numeric output quantity.
@@ -63,45 +37,23 @@ FIELDS = {
     "peak_pressure": Field("p0 (Hertz)", "Pa", "MPa", 1e-6),
     "contact_radius": Field("a (MDR)", "m", "um", 1e6),
     "deviation": Field("vs best", "-", "%", 100.0),
-    "roller_deflection": Field("delta roller", "m", "um", 1e6),
-    "roller_stiffness": Field("k roller", "N/m", "N/um", 1e-6),
-    "depth_inner": Field("d inner", "m", "um", 1e6),
-    "depth_outer": Field("d outer", "m", "um", 1e6),
-    "peak_pressure_inner": Field("p0 inner", "Pa", "MPa", 1e-6),
-    "peak_pressure_outer": Field("p0 outer", "Pa", "MPa", 1e-6),
     "estar": Field("E*", "Pa", "GPa", 1e-9),
     "radius": Field("R", "m", "mm", 1e3),
     "radius_eff": Field("R eff", "m", "mm", 1e3),
     "length": Field("L", "m", "mm", 1e3),
-    # tangential and viscoelastic (linecontact.calc_tangential)
-    "kt_mdr": Field("kt MDR", "N/m", "N/um", 1e-6),
-    "kt_across": Field("kt across", "N/m", "N/um", 1e-6),
-    "kt_along": Field("kt along", "N/m", "N/um", 1e-6),
-    "tangential_load": Field("Q", "N", "kN", 1e-3),
-    "slip_fraction": Field("Q/(mu F)", "-", "%", 100.0),
-    "shift_mdr": Field("u MDR", "m", "um", 1e6),
-    "shift_across": Field("u across", "m", "um", 1e6),
-    "shift_along": Field("u along", "m", "um", 1e6),
-    "time": Field("t", "s", "s", 1.0),
-    "creep_depth": Field("d(t)", "m", "um", 1e6),
-    "depth_long_term": Field("d(inf)", "m", "um", 1e6),
 }
 
 #: Columns of one contact, in order (the given quantity, F or d, comes first).
 CONTACT_COLUMNS = ("force", "depth", "stiffness", "half_width", "peak_pressure",
                    "contact_radius", "deviation")
-#: Columns of a whole roller between two raceways.
-ROLLER_COLUMNS = ("force", "roller_deflection", "roller_stiffness", "depth_inner",
-                  "depth_outer", "peak_pressure_inner", "peak_pressure_outer", "deviation")
 
-#: Depth beyond which a row is flagged: the range of Li & Popov's BEM study (d <= 0.15 R,
-#: docs/theory.md, section 'BEM'); beyond it the gap is no longer y^2/(2R) to within
-#: 1 % (circle vs parabola at y = b) and the tables do not reach.
-DEPTH_OVER_RADIUS_MAX = 0.15
-#: Hertz half-width beyond which a row is flagged: for b > L/2 the end zones, each about
-#: b wide, where the pressure departs from the plane-strain strip meet, so no part of
-#: the roller is in line contact and Eq. 1, 2 and 4 lose their basis.
-HALF_WIDTH_OVER_LENGTH_MAX = 0.5
+
+def all_fields():
+    """Every output column: the core's and every feature's (name -> Field)."""
+    out = dict(FIELDS)
+    for f in FEATURES:
+        out.update(f.fields)
+    return out
 
 P0_NOTE = ("p0: Hertz peak pressure of the plane-strain strip, p0 = sqrt(F E*/(pi R L)) "
            "(Johnson 1985, Eq. 4.45), i.e. at mid-length; at the ends of a straight roller "
@@ -138,8 +90,8 @@ def parse_model_option(spec):
     """
     if spec is None or spec.strip() == "all":
         return None
-    from . import models
-    from ._units import InputError
+    from .. import models
+    from .._units import InputError
 
     valid = "all, or comma-separated KEY[:OPTION=VALUE...] with KEY one of: " + ", ".join(
         models.available_models()
@@ -155,11 +107,11 @@ def parse_model_option(spec):
 
             import_module(models.DEFINED_IN[key])
         if key not in models.MODELS:
-            from ._units import _QUANTITY
+            from .._units import QUANTITY
 
-            raise InputError("--model", spec if _QUANTITY.match(text) else text, valid,
+            raise InputError("--model", spec if QUANTITY.match(text) else text, valid,
                              "a decimal comma in an option? (write c=1.5, not c=1,5)"
-                             if _QUANTITY.match(text) else "unknown model")
+                             if QUANTITY.match(text) else "unknown model")
         defaults = _option_defaults(models.MODELS[key])
         options = {}
         for opt in opts:
@@ -201,7 +153,7 @@ def _option_kind(cls, option):
     """
     import re
 
-    from ._units import DIMENSIONS
+    from .._units import DIMENSIONS
 
     m = re.search(rf"^\s*{re.escape(option)} : [^\n]*\n((?:[ \t]+[^\n]*\n?)*?)"
                   r"(?=^\s*\w+ : |^\s*$|\Z)", cls.__doc__ or "", re.MULTILINE)
@@ -215,7 +167,7 @@ def _option_kind(cls, option):
 def _option_value(name, text, default, kind="dimensionless"):
     """A model option's value, by the type of its default (bool, number, text); a
     number may carry a unit of its `kind` (see :func:`_option_kind`)."""
-    from ._units import _QUANTITY, InputError, parse_bool, parse_quantity
+    from .._units import QUANTITY, InputError, parse_bool, parse_quantity
 
     if isinstance(default, bool):
         return parse_bool(name, text)
@@ -223,7 +175,7 @@ def _option_value(name, text, default, kind="dimensionless"):
         try:
             value = parse_quantity(name, text, kind, positive=False)
         except InputError:
-            if _QUANTITY.match(text) or text[:1] in "+-.0123456789":
+            if QUANTITY.match(text) or text[:1] in "+-.0123456789":
                 raise  # a number with a wrong unit (tilt=1mm), not a name
             return text  # a named constant (e.g. johnson c=johnson1985); the model checks
         # an integer option (n_slices=40) stays an int; 40.5 goes to the model to refuse
@@ -231,7 +183,7 @@ def _option_value(name, text, default, kind="dimensionless"):
     return text
 
 
-def _model_id(model):
+def model_id(model):
     """A short column-safe name: the label as a slug ('Johnson (c = 0.72)' ->
     'johnson-c-0.72')."""
     import re
@@ -246,9 +198,9 @@ def _build(specs, R, L, E, first_only, default_key=None):
     known (from a first call) to be the default model: with `first_only` only that
     model is built, not the whole standard set (a batch of distinct cylinders).
     """
-    from . import models
-    from ._units import InputError
-    from .validity import OutOfRangeError
+    from .. import models
+    from .._units import InputError
+    from ..validity import OutOfRangeError
 
     if specs is None:
         if first_only and default_key is not None:
@@ -272,13 +224,34 @@ def _build(specs, R, L, E, first_only, default_key=None):
 # evaluation
 
 
+class _Model:
+    """A model as the features see it: every attribute of the ContactModel, plus
+    :meth:`at`: the same law (key and options) at another effective radius (built once
+    per radius)."""
+
+    def __init__(self, model, build):
+        self._model = model
+        self._build = build
+        self._at = {}
+
+    def __getattr__(self, name):
+        return getattr(self._model, name)
+
+    def at(self, radius):
+        """The same model at effective radius `radius` [m]."""
+        radius = float(radius)
+        if radius not in self._at:
+            self._at[radius] = self._build(radius)
+        return self._at[radius]
+
+
 def _safe_evaluate(model, given, values, notes, errors, idx):
     """evaluate() on `values`; refused elements isolated by halving.
 
     Returns a dict of arrays (NaN where refused); writes ``notes[idx[i]]`` (out of the
     model's range) or ``errors[idx[i]]`` (any other exception) for refused elements.
     """
-    from .validity import OutOfRangeError
+    from ..validity import OutOfRangeError
 
     n = len(values)
     out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
@@ -320,7 +293,7 @@ def _safe_evaluate(model, given, values, notes, errors, idx):
 
 def _contact_fields(r, R, L, E):
     """Per-contact derived fields from an evaluate() result (arrays): b, p0, flags."""
-    from .classical import hertz_half_width, hertz_peak_pressure
+    from ..classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
     ok = np.isfinite(F) & (F > 0)
@@ -331,20 +304,7 @@ def _contact_fields(r, R, L, E):
         p0[ok] = hertz_peak_pressure(F[ok], R, L, E)
     r["half_width"] = b
     r["peak_pressure"] = p0
-    with np.errstate(invalid="ignore"):
-        r["_deep"] = r["depth"] / R > DEPTH_OVER_RADIUS_MAX
-        r["_wide"] = b / L > HALF_WIDTH_OVER_LENGTH_MAX
     return r
-
-
-def _flag_text(deep, wide, where=""):
-    parts = []
-    if deep:
-        parts.append(f"d > {DEPTH_OVER_RADIUS_MAX:g} R{where}: beyond the parabolic-gap "
-                     "range of the models")
-    if wide:
-        parts.append(f"b > {HALF_WIDTH_OVER_LENGTH_MAX:g} L{where}: not a line contact")
-    return "; ".join(parts)
 
 
 class Results:
@@ -356,43 +316,61 @@ class Results:
         One per model column set: ``fields`` (name -> float array [SI]), ``note`` and
         ``flags`` (object arrays of str), ``label`` (object array of str: the model per
         row), ``id`` (the column suffix) and ``model`` (the model built for the first
-        cylinder, for the JSON header).
+        contact, for the JSON header).
     models : dict
         Model id -> a model object (for provenance).
     errors : list of str
         The row errors (input errors and unexpected exceptions).
-    roller : bool
-        Some rows are whole rollers between raceways.
+    cases : Cases
+        The cases evaluated.
+    label : callable
+        Name of a parameter in messages (``--tilt`` or the column ``tilt``).
+    whole : bool
+        Some rows are a whole body described by a feature (a roller between raceways).
+    contact : bool
+        Some rows are single contacts.
+    whole_columns : list of str
+        The columns of the whole-body rows (shown first).
+    extra : list of str
+        The features' columns, in order.
+    features : list
+        The active features (their notes are printed).
+    blocks : list of Block
+        The features' extra tables.
     deviation : bool
         The deviation column is meaningful (a reference other than the model itself).
     """
 
-    def __init__(self, n, n_sets, errors):
+    def __init__(self, n, n_sets, errors, cases, label):
         self.sets = [
             {"fields": {}, "note": np.full(n, "", dtype=object),
              "flags": np.full(n, "", dtype=object), "label": np.full(n, "", dtype=object),
              "id": ""}
             for _ in range(n_sets)
         ]
-        from .calc_tangential import ALL_COLUMNS
-
         for s in self.sets:
-            for f in set(CONTACT_COLUMNS) | set(ROLLER_COLUMNS) | set(ALL_COLUMNS):
+            for f in CONTACT_COLUMNS:
                 s["fields"][f] = np.full(n, np.nan)
         self.models = {}
         self.errors = errors
-        self.roller = False
+        self.cases = cases
+        self.label = label
+        self.whole = False
+        self.contact = False
+        self.whole_columns = []
+        self.extra = []
+        self.features = []
+        self.blocks = []
         self.deviation = False
-        self.extra = []  # tangential/viscoelastic columns (linecontact.calc_tangential)
 
 
-def compute(cases, errors, specs, *, first_only=False, progress=None):
-    """Evaluate the selected models for every good row.
+def compute(cases, errors, specs, *, first_only=False, progress=None, label=None):
+    """Evaluate the selected models and the active features for every good row.
 
     Parameters
     ----------
-    cases : dict
-        From :func:`linecontact.cases.parse_cases`.
+    cases : Cases
+        From :func:`linecontact.calc.cases.parse_cases`.
     errors : list of str
         Row errors so far (rows with one are skipped); unexpected exceptions are added.
     specs : list or None
@@ -401,56 +379,79 @@ def compute(cases, errors, specs, *, first_only=False, progress=None):
         Only the first model of the standard set (the default best estimate).
     progress : callable, optional
         Called with the number of rows finished after each group.
+    label : callable, optional
+        Name of a parameter in messages (default: the option ``--name``).
 
     Returns
     -------
     Results
     """
+    from .feature import option_name
+
     n = len(errors)
     ok = np.array([not e for e in errors], dtype=bool)
-    R1, Reff, L, E = cases["radius"], cases["radius_eff"], cases["length"], cases["estar"]
-    Ri, Ro = cases["inner_raceway"], cases["outer_raceway"]
-    race = cases["raceways"]
-    key = np.stack([Reff, L, E, np.where(race, Ri, -1.0), np.where(race, Ro, -1.0),
-                    np.where(race, R1, -1.0)], axis=1)
+    key = np.stack([cases.radius_eff, cases.length, cases.estar], axis=1)
     rows = np.flatnonzero(ok)
     if rows.size:
         k = key[rows]
-        order = np.lexsort(k.T[::-1])  # rows of one cylinder become neighbours
+        order = np.lexsort(k.T[::-1])  # rows of one contact become neighbours
         ks = k[order]
         bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
         groups = np.split(rows[order], bounds)
     else:
         groups = []
-    from .models import DEFAULT_MODEL
+    from ..models import DEFAULT_MODEL
 
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
     # the default model alone when it heads the standard set (it does when installed)
     default_key = (DEFAULT_MODEL if specs is None and first_only
                    and probe[0].key == DEFAULT_MODEL else None)
-    results = Results(n, len(probe), errors)
+    results = Results(n, len(probe), errors, cases, label or option_name)
     for s, m in zip(results.sets, probe):
-        s["id"] = _model_id(m)
+        s["id"] = model_id(m)
     reference = specs is not None and not first_only
     ref_key = None
-    if reference:  # the best estimate alone per cylinder, as for a default batch
-        from .models import standard_models
+    if reference:  # the best estimate alone per contact, as for a default batch
+        from ..models import standard_models
 
         first = standard_models(1.0, 1.0, 1.0)[0]
         ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
     results.deviation = len(probe) > 1 or reference
+    active = cases.active()
+    whole = cases.whole()
+    produced = {}
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
-        _compute_groups(results, groups, cases, specs, first_only, default_key,
-                        reference, ref_key, progress)
+        done = 0
+        for g in groups:
+            i0 = g[0]
+            R, L, E = cases.radius_eff[i0], cases.length[i0], cases.estar[i0]
+            try:
+                sets = _build(specs, R, L, E, first_only, default_key)
+                refs = _build(None, R, L, E, True, ref_key) if reference else None
+            except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
+                for i in g:
+                    errors[i] = f"unexpected {type(exc).__name__}: {exc}"
+                continue
+            _evaluate_group(results, g, cases, active, whole, sets, refs,
+                            (specs, L, E, first_only, default_key), produced)
+            done += len(g)
+            if progress is not None:
+                progress(done)
     _no_overflow(results)
     ok = np.array([not e for e in errors], dtype=bool)
-    results.roller = bool(np.any(race & ok))
-    from .calc_tangential import columns as _extra_columns
-
-    results.extra = list(_extra_columns(cases, cases["_present"])) if "_present" in cases \
-        else []
+    results.whole = bool(np.any(whole & ok))
+    results.contact = bool(np.any(~whole & ok))
+    results.features = [f for f, _ in active]
+    for f, st in active:
+        names = [c for c in f.fields if c in produced]
+        if getattr(st, "whole", None) is not None:
+            results.whole_columns += names
+        else:
+            results.extra += names
+    for f, st in active:
+        results.blocks += f.blocks(st, results)
     return results
 
 
@@ -458,47 +459,17 @@ def _no_overflow(results):
     """No 'inf' in any output: a result beyond the double range, or one whose value in
     the engineering unit of the table is (e.g. 1e305 m in um), is not shown ('-') and
     its row's flags say so, for that model (a flag: the other values stand)."""
+    fields = all_fields()
     for s in results.sets:
         for name, arr in s["fields"].items():
-            factor = max(FIELDS[name].factor, 1.0) if name in FIELDS else 1.0
+            factor = max(fields[name].factor, 1.0) if name in fields else 1.0
             with np.errstate(over="ignore", invalid="ignore"):
                 bad = np.isinf(arr) | np.isinf(arr * factor)
             for i in np.flatnonzero(bad):
                 arr[i] = np.nan
-                msg = (f"{FIELDS[name].heading if name in FIELDS else name}: beyond the "
+                msg = (f"{fields[name].heading if name in fields else name}: beyond the "
                        "double-precision range (overflow), not shown")
                 s["flags"][i] = "; ".join(t for t in (s["flags"][i], msg) if t)
-
-
-def _compute_groups(results, groups, cases, specs, first_only, default_key, reference,
-                    ref_key, progress):
-    """Every group of rows of one cylinder (the loop of :func:`compute`)."""
-    errors = results.errors
-    R1, Reff, L, E = cases["radius"], cases["radius_eff"], cases["length"], cases["estar"]
-    Ri, Ro = cases["inner_raceway"], cases["outer_raceway"]
-    race = cases["raceways"]
-    done = 0
-    for g in groups:
-        i0 = g[0]
-        try:
-            if race[i0]:
-                R_in = 1 / (1 / R1[i0] + 1 / Ri[i0])
-                R_out = 1 / (1 / R1[i0] - 1 / Ro[i0])
-                contacts = [R_in, R_out]
-            else:
-                contacts = [Reff[i0]]
-            sets = [_build(specs, R, L[i0], E[i0], first_only, default_key)
-                    for R in contacts]
-            refs = ([_build(None, R, L[i0], E[i0], True, ref_key) for R in contacts]
-                    if reference else None)
-        except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
-            for i in g:
-                errors[i] = f"unexpected {type(exc).__name__}: {exc}"
-            continue
-        _evaluate_group(results, g, cases, contacts, sets, refs, L[i0], E[i0])
-        done += len(g)
-        if progress is not None:
-            progress(done)
 
 
 class _Sink:
@@ -508,89 +479,102 @@ class _Sink:
         pass
 
 
-def _evaluate_group(results, g, cases, contacts, sets, refs, L, E):
-    given = cases["given"][g]
-    values = cases["value"][g]
+def _evaluate_set(model, g, cases, active, whole, notes, errors, produced=None):
+    """One model on the rows g of one contact: the core fields, the features' columns
+    (name -> array over g) and the flags (list over g)."""
+    given = cases.given[g]
+    values = cases.value[g]
+    r = {k: np.full(len(g), np.nan) for k in ("force", "depth", "stiffness",
+                                              "contact_radius")}
+    for which in ("load", "depth"):
+        sel = np.flatnonzero(given == which)
+        if sel.size:
+            rr = _safe_evaluate(model._model if isinstance(model, _Model) else model,
+                                which, values[sel], notes, errors, g[sel])
+            for k in r:
+                r[k][sel] = rr[k]
+    R, L, E = cases.radius_eff[g[0]], cases.length[g[0]], cases.estar[g[0]]
+    r = _contact_fields(r, R, L, E)
+    flags = [""] * len(g)
+    w = whole[g]
+    for j in np.flatnonzero(~w):
+        flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
+    if isinstance(model, Refused):
+        return r, flags
+    for f, st in active:
+        sel = np.flatnonzero(st.rows[g])
+        if not sel.size:
+            continue
+        normal = {k: r[k][sel] for k in ("force", "depth", "stiffness")}
+        cols = f.columns(model, g[sel], normal, st)
+        for name, arr in cols.items():
+            if name == "flags":
+                for j, t in zip(sel, arr):
+                    if t:
+                        flags[j] = "; ".join(x for x in (flags[j], t) if x)
+                continue
+            if name not in r:
+                r[name] = np.full(len(g), np.nan)
+            r[name][sel] = arr
+            if produced is not None:
+                produced[name] = True
+    return r, flags
+
+
+def _evaluate_group(results, g, cases, active, whole, sets, refs, build, produced):
+    specs, L, E, first_only, default_key = build
     errors = results.errors
-    sink = _Sink()  # the reference model's own notes are not reported
-    per_set = []  # j -> list over contacts of field dicts (arrays over g)
-    for j in range(len(sets[0])):
-        per_contact = []
-        for c, R in enumerate(contacts):
-            model = sets[c][j]
-            r = {k: np.full(len(g), np.nan) for k in ("force", "depth", "stiffness",
-                                                      "contact_radius")}
-            notes = results.sets[j]["note"]
-            for which in ("load", "depth"):
-                sel = np.flatnonzero(given == which)
-                if not sel.size:
-                    continue
-                idx = g[sel]
-                rr = _safe_evaluate(model, which, values[sel], notes, errors, idx)
-                for k in r:
-                    r[k][sel] = rr[k]
-            per_contact.append(_contact_fields(r, R, L, E))
-            mid = _model_id(model)
-            if mid not in results.models:
-                results.models[mid] = model
-        per_set.append(per_contact)
+    given = cases.given[g]
+    w = whole[g]
+    compared = {}
+    for _, st in active:
+        if getattr(st, "whole", None) is not None:
+            compared = {"name": st.compared, "rows": st.whole[g]}
+
+    def wrap(m, j):
+        if isinstance(m, Refused):
+            return m
+        return _Model(m, lambda R: _build(specs, R, L, E, first_only, default_key)[j])
+
+    def quantity(r):
+        q = np.where(given == "load", r["depth"], r["force"])
+        if compared:
+            q = np.where(compared["rows"], r.get(compared["name"], np.nan), q)
+        return q
+
+    per_set = []
+    for j, m in enumerate(sets):
         s = results.sets[j]
-        label = sets[0][j].label
-        if s.get("model") is None:  # the first cylinder's model: the JSON entry of a set
-            s["model"] = sets[0][j]
-        s["label"][g] = label
+        model = wrap(m, j)
+        r, flags = _evaluate_set(model, g, cases, active, whole, s["note"], errors, produced)
+        per_set.append(r)
+        mid = model_id(m)
+        if mid not in results.models:
+            results.models[mid] = m
+        if s.get("model") is None:  # the first contact's model: the JSON entry of a set
+            s["model"] = m
+        s["label"][g] = m.label
+        f = s["fields"]
+        for name, arr in r.items():
+            if name not in f:
+                f[name] = np.full(len(errors), np.nan)
+            f[name][g] = arr
+        for k in ("depth", "stiffness", "half_width", "peak_pressure", "contact_radius"):
+            f[k][g[w]] = np.nan  # a whole body: the features' columns say it
+        for k, t in enumerate(flags):
+            if t:
+                s["flags"][g[k]] = t
     ref_q = None
     if refs is not None:
-        ref_contacts = []
-        for c, R in enumerate(contacts):
-            r = {k: np.full(len(g), np.nan) for k in ("force", "depth")}
-            for which in ("load", "depth"):
-                sel = np.flatnonzero(given == which)
-                if sel.size:
-                    rr = _safe_evaluate(refs[c][0], which, values[sel], sink, sink,
-                                        g[sel])
-                    r["force"][sel], r["depth"][sel] = rr["force"], rr["depth"]
-            ref_contacts.append(r)
-        ref_q = _quantity(ref_contacts, given)
+        sink = _Sink()  # the reference model's own notes are not reported
+        model = _Model(refs[0], lambda R: _build(None, R, L, E, True, None)[0]) \
+            if not isinstance(refs[0], Refused) else refs[0]
+        whole_features = [(f, st) for f, st in active if getattr(st, "whole", None) is not None]
+        rr, _ = _evaluate_set(model, g, cases, whole_features, whole, sink, sink)
+        ref_q = quantity(rr)
     elif len(per_set) > 1:
-        ref_q = _quantity(per_set[0], given)
-    for j, per_contact in enumerate(per_set):
-        s = results.sets[j]
-        f = s["fields"]
-        if len(contacts) == 1:
-            r = per_contact[0]
-            for k in ("force", "depth", "stiffness", "half_width", "peak_pressure",
-                      "contact_radius"):
-                f[k][g] = r[k]
-            for k in np.flatnonzero(r["_deep"] | r["_wide"]):
-                s["flags"][g[k]] = _flag_text(r["_deep"][k], r["_wide"][k])
-            if "_present" in cases:  # tangential / viscoelastic columns and flags
-                from .calc_tangential import add_fields
-
-                add_fields(f, s["flags"], g, sets[0][j], r, cases, cases["_present"])
-        else:
-            ri, ro = per_contact
-            f["force"][g] = ri["force"]
-            f["depth_inner"][g] = ri["depth"]
-            f["depth_outer"][g] = ro["depth"]
-            f["roller_deflection"][g] = ri["depth"] + ro["depth"]
+        ref_q = quantity(per_set[0])
+    if ref_q is not None:
+        for j, r in enumerate(per_set):
             with np.errstate(divide="ignore", invalid="ignore"):
-                f["roller_stiffness"][g] = 1 / (1 / ri["stiffness"] + 1 / ro["stiffness"])
-            f["peak_pressure_inner"][g] = ri["peak_pressure"]
-            f["peak_pressure_outer"][g] = ro["peak_pressure"]
-            for k in np.flatnonzero(ri["_deep"] | ri["_wide"] | ro["_deep"] | ro["_wide"]):
-                s["flags"][g[k]] = "; ".join(
-                    t for t in (_flag_text(ri["_deep"][k], ri["_wide"][k], " (inner)"),
-                                _flag_text(ro["_deep"][k], ro["_wide"][k], " (outer)")) if t)
-        if ref_q is not None:
-            with np.errstate(divide="ignore", invalid="ignore"):
-                f["deviation"][g] = _quantity(per_contact, given) / ref_q - 1
-
-
-def _quantity(per_contact, given):
-    """The computed quantity compared between models: the depth (whole roller: the sum
-    of the two contacts' depths) when the force is given, the force when the depth is."""
-    if len(per_contact) == 2:
-        return per_contact[0]["depth"] + per_contact[1]["depth"]
-    r = per_contact[0]
-    return np.where(given == "load", r["depth"], r["force"])
+                results.sets[j]["fields"]["deviation"][g] = quantity(r) / ref_q - 1

@@ -43,10 +43,11 @@ import sys
 
 import numpy as np
 
+from .._units import InputError, parse_quantity
 from . import render
-from ._units import InputError, parse_quantity
-from .cases import BY_NAME, PARAMETERS, RAW_KINDS, bounds_of, option_name, parse_cases
+from .cases import BY_NAME, PARAMETERS, parse_cases
 from .compute import compute
+from .feature import RAW_KINDS, bounds_of, option_name
 
 __all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
 
@@ -241,9 +242,9 @@ def run_batch(args, argv, specs, options):
                 # a bad value is the command line's error (exit 2), not every row's
                 parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
                                bounds=bounds_of(p))
-            # text, path and angle options are checked per row where they are read
-            # (linecontact.cases.RAW_KINDS): e.g. a profile is refused in each row's
-            # 'error' cell, as a profile column is
+            # text and path options are checked per row where they are read
+            # (RAW_KINDS): e.g. a profile is refused in each row's 'error' cell, as a
+            # profile column is
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)
@@ -259,7 +260,8 @@ def run_batch(args, argv, specs, options):
     progress = _Progress(n, args.progress if args.progress is not None
                          else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
     try:
-        results = compute(cases, errors, specs, first_only=first_only, progress=progress)
+        results = compute(cases, errors, specs, first_only=first_only, progress=progress,
+                          label=lambda name: name)
     finally:
         progress.close()
     si = args.si or args.json
@@ -288,12 +290,12 @@ def _col_name(field, si):
 def _result_layout(results, cases, si, multi):
     """Result column names and, for each, a function row index -> cell value."""
     cols, getters = [], []
-    estar = render.scale("estar", cases["estar"], si)
+    estar = render.scale("estar", cases.estar, si)
     cols.append(_col_name("estar", si))
     getters.append(("num", estar))
-    if np.any(cases["radius_eff"] != cases["radius"]):
+    if np.any(cases.radius_eff != cases.radius):
         cols.append(_col_name("radius_eff", si))
-        reff = np.where(cases["raceways"], np.nan, cases["radius_eff"])  # per contact there
+        reff = np.where(cases.whole(), np.nan, cases.radius_eff)  # per contact there
         getters.append(("num", render.scale("radius_eff", reff, si)))
     fields = render.columns_of(results, "load")
     # in a batch the force comes first whatever is given
@@ -309,9 +311,29 @@ def _result_layout(results, cases, si, multi):
         getters.append(("text", s["flags"]))
         cols.append("note" + sfx)
         getters.append(("text", s["note"]))
+    for b in results.blocks:  # a feature's extra rows: columns KEY_FIELD_UNIT
+        n = len(results.errors)
+        for f in b.fields:
+            vals = np.array([np.nan if r is None or r.get(f) is None else float(r[f])
+                             for r in b.rows])
+            cols.append(f"{b.key}_{_col_name_of(f, b.fields[f], si)}")
+            getters.append(("num", vals if si else vals * b.fields[f].factor))
+        for t in b.text_columns:
+            cols.append(f"{b.key}_{t}")
+            getters.append(("text", ["" if r is None else r.get("text", {}).get(t, "")
+                                     for r in b.rows]))
+        cols.append(f"{b.key}_note")
+        getters.append(("text", ["" if r is None else r.get("note", "") for r in b.rows]
+                        if n else []))
     cols.append("error")
     getters.append(("text", results.errors))
     return cols, getters
+
+
+def _col_name_of(name, field, si):
+    u = field.si if si else field.eng
+    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_").replace(" ", "_")
+    return f"{name}_{u}"
 
 
 def _result_cells(getters):
@@ -399,7 +421,7 @@ def _json(argv, results, header, body, out_names, getters, width):
         for h, c in zip(header, cells):
             row[h] = c
         for name, (kind, data) in zip(out_names, getters):
-            row[name] = render._num(data[i]) if kind == "num" else data[i]
+            row[name] = render.num(data[i]) if kind == "num" else data[i]
         rows.append(row)
     doc["rows"] = rows
     return json.dumps(doc, indent=2) + "\n"

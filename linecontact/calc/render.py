@@ -1,8 +1,9 @@
 """Renderers of the calculator's results: the plain-text table, JSON, CSV cells.
 
-The columns come from :mod:`linecontact.compute` (:data:`~linecontact.compute.FIELDS`,
-:data:`~linecontact.compute.CONTACT_COLUMNS`, :data:`~linecontact.compute.ROLLER_COLUMNS`):
-a new output quantity listed there shows up here without a change. Engineering units by
+The columns come from :mod:`linecontact.calc.compute` (the core's
+:data:`~linecontact.calc.compute.FIELDS` and the features' ``fields``); the notes and
+extra tables (blocks) from the active features: a new feature shows up here without a
+change. Engineering units by
 default (F in kN, lengths in um, k in N/um, p0 in MPa, moduli in GPa, R and L in mm),
 SI with ``--si``; JSON is always SI.
 
@@ -18,11 +19,14 @@ import math
 
 import numpy as np
 
-from .calc_tangential import NOTES as _TANGENTIAL_NOTES
-from .compute import CONTACT_COLUMNS, FIELDS, P0_NOTE, ROLLER_COLUMNS, _model_id
+from .compute import CONTACT_COLUMNS, P0_NOTE, all_fields, model_id
+from .features import FEATURES
 
-__all__ = ["PROG", "fmt", "unit", "scale", "columns_of", "json_header", "table_text",
-           "one_json", "write"]
+__all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
+           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write"]
+
+#: Every output column (the core's and the features').
+FIELDS = all_fields()
 
 PROG = "linecontact"
 
@@ -34,13 +38,9 @@ NOTES = {
     "flags": "flags: the row's geometry is outside what the models cover: d > 0.15 R "
              "(beyond the range of the BEM study behind the tables and the parabolic "
              "gap) or Hertz half-width b > L/2 (not a line contact).",
-    "tangential": _TANGENTIAL_NOTES["tangential"],
-    "creep": _TANGENTIAL_NOTES["creep"],
-    "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
-              "the same force, roller_stiffness the two contacts in series; depth_inner "
-              "and depth_outer are the two contacts' own depths (what a single-contact "
-              "row reports as its depth).",
 }
+for _f in FEATURES:
+    NOTES.update(_f.notes)
 
 
 def fmt(value, digits=4):
@@ -67,34 +67,29 @@ def scale(field, value, si):
 
 
 def columns_of(results, given):
-    """The numeric columns, in order: the given quantity first; roller columns when
-    any row is a whole roller; the deviation only when it compares two models."""
+    """The numeric columns, in order: the whole-body columns (with the force) when any
+    row is one; the single-contact columns (the given quantity first) when any row is
+    one; the features' columns; the deviation only when it compares two models."""
     cols = []
-    if results.roller:
-        cols += [c for c in ROLLER_COLUMNS if c != "deviation"]
-    if not results.roller or _any_contact(results):
+    if results.whole:
+        cols += ["force"] + list(results.whole_columns)
+    if results.contact or not results.whole:
         first = "force" if given == "load" else "depth"
         second = "depth" if first == "force" else "force"
         cols += [first, second] + [c for c in CONTACT_COLUMNS
                                    if c not in ("force", "depth", "deviation")]
     seen = []
-    for c in cols:
+    for c in cols + list(results.extra):
         if c not in seen:
             seen.append(c)
-    seen += [c for c in getattr(results, "extra", []) if c not in seen]
     if results.deviation:
         seen.append("deviation")
     return seen
 
 
-def _any_contact(results):
-    f = results.sets[0]["fields"] if results.sets else None
-    return f is not None and bool(np.any(np.isfinite(f["depth"])))
-
-
 def _version():
     try:
-        from . import __version__
+        from .. import __version__
     except ImportError:
         from importlib.metadata import version
 
@@ -138,67 +133,142 @@ def json_header(argv, results):
 
 
 def _case_line(cases, present, si):
-    """The case in one line: R (and R2, R eff, raceways), L, L/R, E* (and moduli)."""
+    """The case in one line: R (and R2, R eff), L, L/R, E* (and moduli), then the given
+    inputs of the active features as typed."""
 
     def q(field, key):
         return f"{fmt(scale(field, float(cases[key][0]), si))} {unit(field, si)}"
 
     line = f"R = {q('radius', 'radius')}"
     if present["radius2"][0]:
-        line += f", R2 = {q('radius', 'radius2')} (R eff = {q('radius_eff', 'radius_eff')})"
-    if cases["raceways"][0]:
-        line += (f", inner raceway {q('radius', 'inner_raceway')}, outer raceway "
-                 f"{q('radius', 'outer_raceway')}")
-    L_over_R = float(cases["length"][0] / cases["radius_eff"][0])
+        line += f", R2 = {q('radius', 'radius2')}"
+    if cases.radius_eff[0] != cases.radius[0]:
+        line += f" (R eff = {q('radius_eff', 'radius_eff')})"
+    L_over_R = float(cases.length[0] / cases.radius_eff[0])
     line += f", L = {q('length', 'length')}, L/R = {fmt(L_over_R)}, E* = {q('estar', 'estar')}"
-    material = cases.get("material")
-    body = material[0] if material is not None else None
-    if present["modulus"][0] or body is not None:
-        if body is None:
-            line += f" (E1 = {q('estar', 'modulus')}, "
-        elif present["prony"][0]:
-            line += (f" at t = 0 (viscoelastic body: Prony series of {body.moduli.size} "
-                     f"terms, E0 = {fmt(body.instantaneous * (1 if si else 1e-9))} "
-                     f"{unit('estar', si)}, E_inf = "
-                     f"{fmt(body.long_term * (1 if si else 1e-9))} {unit('estar', si)}, ")
-        else:
-            line += (f" at t = 0 (viscoelastic body: E0 = {q('estar', 'instantaneous_modulus')}"
-                     f", E_inf = {q('estar', 'long_term_modulus')}, tau = "
-                     f"{fmt(float(cases['relaxation_time'][0]))} s, ")
+    if present["modulus"][0] or present["poisson"][0]:
+        line += " ("
+        if present["modulus"][0]:
+            line += f"E1 = {q('estar', 'modulus')}, "
         line += f"nu1 = {fmt(float(cases['poisson'][0]))}; "
         if present["modulus2"][0]:
             line += f"E2 = {q('estar', 'modulus2')}, nu2 = {fmt(float(cases['poisson2'][0]))})"
         else:
             line += "rigid roller)"
-    if present["friction"][0]:
-        line += f", mu = {fmt(float(cases['friction'][0]))}"
+    given = []
+    for f, _ in cases.active():
+        for p in f.parameters:
+            if present[p.name][0]:
+                typed = _typed(cases, p.name)
+                if typed is not None:
+                    given.append(f"{p.name.replace('_', ' ')} {typed}")
+    if given:
+        line += "; " + ", ".join(given)
     return line
 
 
+def _typed(cases, name):
+    """A parameter's cell in the first row as typed, or None where it varies (a sweep:
+    its values are in the table)."""
+    col = cases.cells.get(name)
+    if col is None:
+        return None
+    if isinstance(col, np.ndarray):
+        return None if len(col) > 1 and np.any(col != col[0]) else fmt(float(col[0]))
+    if len(set(col)) > 1:
+        return None
+    return col[0].strip()
+
+
+#: Units of a swept input in the table: kind -> (engineering unit, factor from SI).
+_INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
+                "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0)}
+
+
+def swept_inputs(cases):
+    """The inputs that vary between the rows of a sweep and are not an output column
+    already (e.g. the tilt of a load x tilt grid): [(Parameter, SI array)]."""
+    from .cases import PARAMETERS
+
+    out = []
+    for p in PARAMETERS:
+        col = cases.cells.get(p.name)
+        if (isinstance(col, np.ndarray) and p.name not in ("load", "depth")
+                and p.name not in FIELDS and len(col) > 1 and np.any(col != col[0])):
+            out.append((p, col))
+    return out
+
+
 def table_text(cases, present, results, si):
-    """Plain-text table of one case or a sweep: one row per model and value."""
-    given = str(cases["given"][0])
+    """Plain-text table of one case or a sweep: one row per model and value (a swept
+    input that is not an output gets its own column), then the features' notes and
+    extra tables."""
+    from .._units import DIMENSIONS
+
+    given = str(cases.given[0])
     cols = columns_of(results, given)
-    header = ["model"] + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols] + ["note"]
-    n = len(cases["value"])
+    swept = swept_inputs(cases)
+    heads = []
+    for p, _ in swept:
+        u = DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]
+        heads.append(f"{p.name.replace('_', ' ')} [{u or '-'}]")
+    header = (["model"] + heads + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols]
+              + ["note"])
+    n = cases.n
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
     for s in results.sets:
         f = s["fields"]
         columns[0].extend(s["label"][:n].tolist())
-        for k, c in enumerate(cols, start=1):
+        for k, (p, col) in enumerate(swept, start=1):
+            columns[k] += _fmt_column(col if si else col * _INPUT_UNITS[p.kind][1])
+        for k, c in enumerate(cols, start=1 + len(swept)):
             columns[k] += _fmt_column(scale(c, f[c], si))
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
     lines = [_case_line(cases, present, si), ""]
     lines += aligned([header] + [list(r) for r in zip(*columns)])
     lines += ["", "Note: " + P0_NOTE]
-    if results.roller:
-        lines.append("Note: " + NOTES["roller"])
-    extra = getattr(results, "extra", [])
-    if any(c.startswith(("kt_", "shift_")) for c in extra):
-        lines.append("Note: " + NOTES["tangential"])
-    if "depth_long_term" in extra:
-        lines.append("Note: " + NOTES["creep"])
-    return "\n".join(lines) + "\n"
+    for f in results.features:
+        lines += ["Note: " + t for t in f.notes.values() if not _block_note(results, t)]
+    return "\n".join(lines) + "\n" + blocks_text(results.blocks, given, si)
+
+
+def _block_note(results, text):
+    return any(b.note == text for b in results.blocks)
+
+
+def blocks_text(blocks, given, si):
+    """The features' extra tables (e.g. the profiled roller's rows), each after its
+    rows' note; blocks of one name share one table."""
+    out = ""
+    names = []
+    for b in blocks:
+        if b.name not in names:
+            names.append(b.name)
+    for name in names:
+        group = [b for b in blocks if b.name == name]
+        fields = group[0].fields
+        first = "force" if given == "load" else "depth"
+        cols = ([first] if first in fields else []) + [c for c in fields if c != first]
+        header = [group[0].label] + [
+            f"{fields[c].heading} [{fields[c].si if si else fields[c].eng}]" for c in cols
+        ] + list(group[0].text_columns) + ["note"]
+        table = []
+        for b in group:
+            for row in b.rows:
+                if row is None:
+                    continue
+                cells = [row.get("label", "")]
+                for c in cols:
+                    val = row.get(c)
+                    cells.append("-" if val is None else
+                                 f"{val if si else val * fields[c].factor:.4g}")
+                cells += [row.get("text", {}).get(t, "-") for t in b.text_columns]
+                table.append(cells + [row.get("note", "")])
+        if not table:
+            continue
+        out += "\n".join([""] + aligned([header] + table) + ["", "Note: " + group[0].note])
+        out += "\n"
+    return out
 
 
 def aligned(rows):
@@ -212,7 +282,7 @@ def aligned(rows):
     return lines
 
 
-def _num(v):
+def num(v):
     """A JSON number: the float, or None (null) for none, NaN or inf."""
     if v is None:
         return None
@@ -220,32 +290,24 @@ def _num(v):
     return v if math.isfinite(v) else None
 
 
-def one_json(argv, cases, present, results, extra=None):
-    """JSON of one case or a sweep: the header, the inputs [SI], rows per model.
-
-    `extra`: further top-level entries (e.g. ``profiled_roller`` of
-    :mod:`linecontact.calc_roller`)."""
+def one_json(argv, cases, present, results):
+    """JSON of one case or a sweep: the header, the inputs [SI], rows per model, and
+    the features' blocks (each under its name, e.g. ``profiled_roller``)."""
     import json
 
-    given = str(cases["given"][0])
+    given = str(cases.given[0])
     cols = columns_of(results, given)
-    inputs = {
-        k: float(cases[k][0])
-        for k in ("radius", "radius2", "radius_eff", "length", "estar", "modulus", "poisson",
-                  "modulus2", "poisson2", "inner_raceway", "outer_raceway", "friction",
-                  "instantaneous_modulus", "long_term_modulus", "relaxation_time")
-        if k in ("radius", "radius_eff", "length", "estar") or present[k][0]
-    }
-    if present["prony"][0]:
-        m = cases["material"][0]
-        inputs["prony"] = None if m is None else {
-            "long_term_modulus": m.long_term, "moduli": m.moduli.tolist(),
-            "times": m.times.tolist()}
-    for k in ("tangential_load", "time"):
-        if present[k][0]:
-            vals = [float(x) for x in cases[k]]
-            inputs[k] = vals if len(set(vals)) > 1 else vals[0]
-    values = [float(v) for v in cases["value"]]
+    inputs = {k: float(cases[k][0]) for k in ("radius", "radius_eff", "length", "estar")}
+    for name in present:
+        if name in inputs or name in ("diameter", "load", "depth") or not present[name][0]:
+            continue
+        col = cases[name]
+        if isinstance(col, np.ndarray):
+            vals = [float(x) for x in col]
+            inputs[name] = vals if len(set(vals)) > 1 else vals[0]
+        else:
+            inputs[name] = col[0].strip()
+    values = [float(v) for v in cases.value]
     inputs[given] = values if len(values) > 1 else values[0]
     doc = json_header(argv, results)
     doc["inputs"] = inputs
@@ -253,14 +315,16 @@ def one_json(argv, cases, present, results, extra=None):
     for entry, s in zip(_entries(doc["models"], results), results.sets):
         rows = []
         for i in range(len(values)):
-            row = {c: _num(s["fields"][c][i]) for c in cols}
+            row = {c: num(s["fields"][c][i]) for c in cols}
             row["flags"] = s["flags"][i]
             row["note"] = s["note"][i]
             rows.append(row)
         entries.append(dict(entry, rows=rows))
     doc["models"] = entries
-    if extra:
-        doc.update(extra)
+    for b in results.blocks:
+        label = next((r["label"] for r in b.rows if r and r.get("label")), b.label)
+        doc.setdefault(b.name, []).append({"label": label, "rows": b.json_rows,
+                                           "units": dict(b.units)})
     return json.dumps(doc, indent=2) + "\n"
 
 
@@ -270,7 +334,7 @@ def _entries(model_docs, results):
     out = []
     for s in results.sets:
         model = s.get("model")
-        m = by_id.get(_model_id(model) if model is not None else s["id"])
+        m = by_id.get(model_id(model) if model is not None else s["id"])
         if m is None:
             label = s["label"][0] or s["id"]
             m = {"key": label, "label": label, "id": s["id"], "provenance": None}

@@ -1,0 +1,99 @@
+"""Where the coupled-slice model's error is known: the range measured against a 3D
+boundary-element solution in the header of ``tables/roller_accuracy.csv``
+(tools/studies/roller_study.py), and the note each solution carries about it.
+"""
+from __future__ import annotations
+
+import math
+
+__all__ = []
+
+
+_COVERAGE = []
+_ACCURACY_TABLE = "roller_accuracy"
+#: relative slack on the covered bounds (the header prints 6 significant digits)
+_COVER_SLACK = 1e-5
+
+
+def _coverage():
+    """The covered_* and runtime_error_* fields of tables/roller_accuracy.csv, parsed
+    once on first use (None if the table or the fields are missing)."""
+    if not _COVERAGE:
+        from ..tables import read_table
+        try:
+            meta = read_table(_ACCURACY_TABLE).meta
+
+            def pair(key):
+                lo, hi = (float(v) for v in meta[key].split(","))
+                return lo, hi
+
+            def errors(key):
+                return {k: float(v) for k, v in
+                        (item.split() for item in meta[key].split(","))}
+
+            cov = dict(
+                l_over_d=pair("covered_l_over_d"),
+                line_load=pair("covered_line_load_over_estar_d"),
+                given_tilt=pair("covered_given_tilt_rad"),
+                free_tilt=pair("covered_free_tilt_rad"),
+                tilt_drop=pair("covered_tilt_drop_over_approach"),
+                profiles=tuple(k.strip() for k in meta["covered_profiles"].split(",")),
+                off=errors("runtime_error_off_ends"),
+                edge=errors("runtime_error_edge_loaded"))
+        except (FileNotFoundError, KeyError, ValueError):
+            cov = None
+        _COVERAGE.append(cov)
+    return _COVERAGE[0]
+
+
+def _pct(v):
+    return f"{100 * v:.2g} %"
+
+
+def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
+                   free_tilt=False, edge_loaded=False, n_slices=100):
+    """The note on where a coupled-slice case lies relative to the range measured in
+    tables/roller_accuracy.csv (L/D with D = 2R, F/(L E* D), |theta| given or free,
+    the tilt drop |theta| L/2 over the largest rigid overlap `approach` [m], the profile
+    key, n_slices >= 100): names each quantity outside, and states the table's largest
+    errors (off the ends, or edge loaded). Bounds with a relative slack of 1e-5 (the
+    header prints 6 digits)."""
+    cov = _coverage()
+    where = "the 3D BEM (tables/roller_accuracy.csv)"
+    if cov is None:
+        return (f"this model's error against {where} is not known here: the table or "
+                "its covered_* fields are missing")
+    D = 2 * radius
+    th = abs(tilt)
+    tkey, tname = ("free_tilt", "zero-moment tilt") if free_tilt else (
+        "given_tilt", "tilt")
+    drop = th * length / 2 / approach if approach > 0 else (0.0 if th == 0 else math.inf)
+    checks = [("L/D", length / D, cov["l_over_d"], ""),
+              ("mean line load q/(E* D)", force / (length * estar * D), cov["line_load"],
+               ""),
+              (f"|{tname}|", th, cov[tkey], " rad"),
+              ("tilt drop |theta| L/2 over the approach", drop, cov["tilt_drop"], "")]
+    outside = [f"{name} = {v:.2g}{u} (measured {lo:.2g}-{hi:.2g}{u})"
+               for name, v, (lo, hi), u in checks
+               if not lo * (1 - _COVER_SLACK) <= v <= hi * (1 + _COVER_SLACK)]
+    if profile_key not in cov["profiles"]:
+        outside.append(f"profile '{profile_key}' (measured: "
+                       f"{', '.join(cov['profiles'])})")
+    if n_slices < 100:
+        outside.append(f"n_slices = {n_slices} (measured with 100)")
+    off, edge = cov["off"], cov["edge"]
+    if edge_loaded:
+        errs = (f"edge loaded: deflection {_pct(edge['depth'])}, moment "
+                f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} (peak "
+                "pressure singular, not reported)")
+    else:
+        errs = (f"contact off the ends: deflection {_pct(off['depth'])}, moment "
+                f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
+                f"zero-moment tilt {_pct(off['tilt'])}")
+    if outside:
+        return (f"{'; '.join(outside)}: outside the range where this model's error was "
+                f"measured against {where}; inside it the largest errors are, {errs}")
+    inside = f"L/D = {length / D:.2g} and mean line load q/(E* D) = " \
+             f"{force / (length * estar * D):.2g}"
+    return (f"{inside} are inside the range where this model's error was measured "
+            f"against {where}: largest errors there, {errs}")

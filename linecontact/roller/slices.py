@@ -1,0 +1,205 @@
+"""The slice equations of the coupled-slice roller model: slice geometry, the Newton /
+active-set solver in scaled variables and the exact stiffness matrix by implicit
+differentiation (the method is described in :mod:`linecontact.roller`).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..profiles import TILT_RANGE
+from ..validity import Interval
+from .kernel import strip_values
+
+__all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE"]
+
+#: Slice counts accepted by the coupled-slice model.
+N_SLICES = Interval("n_slices", 10, 4000)
+
+
+class ConvergenceError(RuntimeError):
+    """The slice equations did not converge (reported, never hidden)."""
+
+
+class SliceEquations:
+    """Slice geometry and the Newton / active-set solver in scaled variables.
+
+    Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
+    """
+
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop):
+        self.R = radius
+        self.E = estar
+        self.n = n
+        self.lo, self.hi = x_lo, x_hi
+        self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
+        self.w = (x_hi - x_lo) / n
+        self.x = x_lo + self.w * (np.arange(n) + 0.5)
+        self.P = drop(self.x)
+        j = np.arange(n)
+        self.logj = np.log(2 * j + 1.0)
+        self.iterations = 0
+
+    def kernels(self, S, b, targets=None):
+        """A, D and their b-derivative parts for targets T (default S) and sources S."""
+        T = S if targets is None else targets
+        span = int(max(T.max(), S.max()) - min(T.min(), S.min()))
+        j = np.arange(span + 1)[:, None]
+        shape = (span + 1, len(S))
+        r, ta, p, tp = (v.reshape(shape) for v in
+                        strip_values(((j + 0.5) * self.w / b[None, :]).ravel()))
+        # a(tau_j) = ln(2j + 1) + ln(w/b) + r(tau_j); columns of differences G[j] - G[j-1]
+        # (j >= 1) and the self term 2 G[0]
+        G = np.empty((4, span + 1, len(S)))
+        rho = np.log(self.w / b)[None, :] + r
+        for g, v in ((G[0], rho), (G[1], p), (G[2], ta), (G[3], tp)):
+            g[1:] = v[1:] - v[:-1]
+            g[0] = 2 * v[0]
+        G[0, 1:] += (self.logj[1:span + 1] - self.logj[:span])[:, None]
+        G[1, 0] -= 4.0
+        m = np.abs(T[:, None] - S[None, :])
+        cols = np.arange(len(S))[None, :]
+        A, D, EA, ED = G[:, m, cols]
+        return A, D, EA, ED
+
+    def jacobian(self, S, q, c):
+        qs, cs = q[S], c[S]
+        b = np.sqrt(qs / cs)
+        A, D, EA, ED = self.kernels(S, b)
+        ns = len(S)
+        J = np.empty((2 * ns, 2 * ns))
+        J[:ns, :ns] = A - 0.5 * EA
+        J[:ns, ns:] = EA * (0.5 * b * b)[None, :]
+        J[ns:, :ns] = -ED * (0.5 / (b * b))[None, :]
+        J[ns:, ns:] = D + 0.5 * ED
+        self._last_kernels = (A, D, EA, ED)
+        return A, D, J
+
+    def newton(self, S, q, c, over, tol):
+        """Damped Newton on (q, c) over the slice set S; slices that keep being driven to
+        q <= 0 leave S (they are outside the contact)."""
+        R = self.R
+        blocked = np.zeros(self.n, int)
+        for _ in range(400):
+            self.iterations += 1
+            A, D, J = self.jacobian(S, q, c)
+            qs, cs = q[S], c[S]
+            ns = len(S)
+            res = np.concatenate([A @ qs - over[S], D @ cs + 1.0 / R])
+            qsc = np.max(qs)
+            colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / R)])
+            rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, R)])
+            step = -np.linalg.solve(J * rowsc[:, None] * colsc[None, :],
+                                    res * rowsc) * colsc
+            dq, dc = step[:ns], step[ns:]
+            # fraction to the boundary: q and c = q/b^2 stay positive
+            alpha = 1.0
+            hit_q = qs + dq <= 0.05 * qs
+            if np.any(hit_q):
+                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
+            hit_c = cs + dc <= 0.2 * cs
+            if np.any(hit_c):
+                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            q[S] = qs + alpha * dq
+            c[S] = cs + alpha * dc
+            if alpha == 1.0:
+                blocked[S] = 0
+                if np.max(np.abs(dq)) <= tol * qsc and np.max(np.abs(dc)) * R <= tol:
+                    return S
+                continue
+            blocked[S[hit_q]] += 1
+            blocked[S[~hit_q]] = 0
+            leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
+            if np.any(leave):
+                q[S[leave]] = 0.0
+                blocked[S[leave]] = 0
+                S = S[~leave]
+                if len(S) == 0:
+                    raise ConvergenceError("every slice left the contact")
+        raise ConvergenceError("Newton iteration on the slice loads did not converge "
+                               "in 400 steps")
+
+    def solve(self, d, theta, warm=None, tol=1e-11):
+        """Active-set solution at depth d and tilt theta; returns (S, q, c)."""
+        n, R = self.n, self.R
+        over = d + theta * self.x - self.P
+        S = np.flatnonzero(over > 0)
+        none_in_contact = ConvergenceError(
+            f"no slice is in contact at d = {d:.6g} m: the contact is narrower than one "
+            "slice (too small a load for the slicing)")
+        if S.size == 0:  # e.g. d - d0 below the rounding of d (a force of 1e-300 N)
+            raise none_in_contact
+        q = np.zeros(n)
+        c = np.full(n, 1.0 / (4 * R))
+        if warm is not None and np.any(warm[0][S] > 0):
+            q[S] = warm[0][S]
+            c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
+            S = S[q[S] > 0]
+        else:
+            # cold start: the linear problem with frozen strip widths, twice (the second
+            # time with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)
+            b0 = np.sqrt(R * over[S])
+            for sweep in range(2):
+                for _ in range(n):
+                    qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
+                    if np.all(qs > 0):
+                        break
+                    S, b0 = S[qs > 0], b0[qs > 0]
+                    if S.size == 0:
+                        raise none_in_contact
+                b0 = np.sqrt(4 * R * qs)
+            q[S] = qs
+        for _ in range(n + 1):
+            S = self.newton(S, q, c, over, tol)
+            rest = np.setdiff1d(np.arange(n), S)
+            if len(rest) == 0:
+                break
+            A = self.kernels(S, np.sqrt(q[S] / c[S]), targets=rest)[0]
+            pen = over[rest] - A @ q[S]
+            add = pen > tol * np.max(over)
+            if not np.any(add):
+                break
+            new = rest[add]
+            q[new] = pen[add] / 10.0
+            c[new] = 1.0 / (4 * R)
+            S = np.union1d(S, new)
+        else:
+            raise ConvergenceError("the active set did not settle")
+        return S, q, c
+
+    def sensitivities(self, S, q, c, th, slope):
+        """The 2x2 stiffness matrix d(F, M)/d(d, theta) of the discrete model.
+
+        Implicit differentiation of the converged equations R(z; d, theta, lo, hi) = 0
+        on the active set, including the motion of the slice grid (its ends lo, hi are
+        the overlap ends, which move with d and theta), so that the result is the
+        exact derivative of the computed F(d, theta) and M(d, theta).
+        """
+        _, _, J = self.jacobian(S, q, c)
+        A, D, EA, ED = self._last_kernels
+        ns, n, w = len(S), self.n, self.w
+        qs, cs, xs = q[S], c[S], self.x[S]
+        k = S + 0.5
+        # columns: d, theta, lo, hi ; rows: -dR/dp
+        rhs = np.zeros((2 * ns, 4))
+        rhs[:ns, 0] = 1.0
+        rhs[:ns, 1] = xs
+        dlnw = np.array([-1.0, 1.0]) / (n * w)                 # d ln w / d(lo, hi)
+        dx = np.stack([1.0 - k / n, k / n], axis=1)            # d x_k / d(lo, hi)
+        ea_q, ed_c = EA @ qs, ED @ cs
+        for g in range(2):
+            rhs[:ns, 2 + g] = -(ea_q * dlnw[g] - (th - slope[S]) * dx[:, g])
+            rhs[ns:, 2 + g] = -ed_c * dlnw[g]
+        qsc = np.max(qs)
+        colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / self.R)])
+        rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, self.R)])
+        z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], rhs * rowsc[:, None])
+        dq = z[:ns] * qsc                                     # d qt / d(d, th, lo, hi)
+        dw = np.array([0.0, 0.0, -1.0 / n, 1.0 / n])
+        dxk = np.zeros((ns, 4))
+        dxk[:, 2:] = dx
+        dF = w * dq.sum(0) + dw * qs.sum()
+        dM = w * (xs[:, None] * dq).sum(0) + dw * (qs * xs).sum() + w * (qs[:, None] * dxk).sum(0)
+        G = np.array([[1.0, 0.0], [0.0, 1.0], self.dlo, self.dhi])   # d(d, th, lo, hi)/d(d, th)
+        return math.pi * self.E * np.array([dF @ G, dM @ G])

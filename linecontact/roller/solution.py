@@ -1,0 +1,190 @@
+"""The solution of a roller model (:class:`RollerSolution`) and the helpers that read the
+contact's extent and peak pressure off the slices.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["RollerSolution"]
+
+
+@dataclass(frozen=True)
+class RollerSolution:
+    """The state of a profiled, tilted roller in contact: loads, stiffness, pressure.
+
+    Returned by :meth:`ProfiledRoller.at_depth`, :meth:`ProfiledRoller.at_force`,
+    :func:`roller_contact` and :func:`iso_slicing`; not built by hand.
+
+    .. math:: F = \\sum_k q_k w, \\qquad M = \\sum_k q_k x_k w
+
+    Parameters
+    ----------
+    depth : float
+        Depth (approach) d of the roller point x = 0 [m].
+    tilt : float
+        Tilt theta, positive when the +x end goes deeper [rad].
+    force : float
+        Normal force F [N].
+    moment : float
+        Moment about x = 0, positive when +x carries more [N m].
+    stiffness : float
+        dF/dd at fixed tilt [N/m].
+    tilt_stiffness : float
+        dM/dtheta at fixed depth [N m/rad].
+    stiffness_matrix : ndarray
+        [[dF/dd, dF/dtheta], [dM/dd, dM/dtheta]] [N/m, N/rad; N, N m/rad].
+    x : ndarray
+        Slice centres [m].
+    q : ndarray
+        Line load q(x_k), 0 outside the contact [N/m].
+    half_width : ndarray
+        Contact half-width b_k across the roller, 0 outside the contact [m].
+    pressure : ndarray
+        Peak pressure of each slice, 2 q_k/(pi b_k) [Pa].
+    p_max : float or None
+        Peak pressure, interpolated between slices; None when edge loaded [Pa].
+    x_at_p_max : float
+        Where the peak sits, the loaded end when edge loaded [m].
+    contact_start : float
+        Start of the contact along x, where q falls to zero [m].
+    contact_end : float
+        End of the contact along x [m].
+    contact_length : float
+        contact_end - contact_start [m].
+    edge_loaded : bool
+        True if the contact reaches an end of the roller (within a slice width or
+        L/1000 of it).
+    edge : str or None
+        ``"-x"``, ``"+x"``, ``"both"`` or None.
+    message : str
+        What p_max means here, or why it is None.
+    method : str
+        ``"coupled slices"`` or ``"ISO/TS 16281 slicing"``.
+    n_slices : int
+        Number of slices [-].
+    iterations : int
+        Newton iterations used [-].
+    notes : tuple of str
+        Warnings about the validity of this solution.
+    p_max_resolved : bool
+        False if the peak sits within two slices of the contact's end (a concentration
+        narrower than the slices, e.g. at a sharp relief): then p_max is not converged.
+
+    Notes
+    -----
+    Valid as the model that produced it (see :class:`ProfiledRoller`): |theta| < 0.1
+    rad, b << R; q, half_width and pressure are per slice, 0 <= q < inf.
+
+    Examples
+    --------
+    >>> from linecontact.roller import roller_contact
+    >>> s = roller_contact(10e-3, 20e-3, 115.385e9, "circular:Rc=0.5", force=1000.0)
+    >>> f"{s.force:.0f} N, {abs(s.moment):.0f} N m, {s.contact_length * 1e3:.1f} mm"
+    '1000 N, 0 N m, 4.6 mm'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 4.2 (Hertz pressure across).
+    """
+
+    depth: float
+    tilt: float
+    force: float
+    moment: float
+    stiffness: float
+    tilt_stiffness: float
+    stiffness_matrix: np.ndarray
+    x: np.ndarray
+    q: np.ndarray
+    half_width: np.ndarray
+    pressure: np.ndarray
+    p_max: object
+    x_at_p_max: float
+    contact_start: float
+    contact_end: float
+    contact_length: float
+    edge_loaded: bool
+    edge: object
+    message: str
+    method: str
+    n_slices: int
+    iterations: int = 0
+    notes: tuple = field(default_factory=tuple)
+    p_max_resolved: bool = True
+
+    def to_dict(self, arrays=True):
+        """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
+
+        Returns
+        -------
+        dict
+            Keys as the attributes, with units in ``"units"``.
+
+        Examples
+        --------
+        >>> from linecontact.roller import roller_contact
+        >>> s = roller_contact(5e-3, 10e-3, 115.385e9, "circular:Rc=0.1", force=500.0)
+        >>> sorted(s.to_dict(arrays=False))[:4]
+        ['contact_end', 'contact_length', 'contact_start', 'depth']
+        """
+        d = {}
+        for k, v in self.__dict__.items():
+            if isinstance(v, np.ndarray):
+                if arrays:
+                    d[k] = v.tolist()
+            elif isinstance(v, tuple):
+                d[k] = list(v)
+            else:
+                d[k] = v
+        d["units"] = {"depth": "m", "tilt": "rad", "force": "N", "moment": "N m",
+                      "stiffness": "N/m", "tilt_stiffness": "N m/rad", "x": "m",
+                      "q": "N/m", "half_width": "m", "pressure": "Pa", "p_max": "Pa",
+                      "x_at_p_max": "m", "contact_start": "m", "contact_end": "m",
+                      "contact_length": "m"}
+        return d
+
+
+def contact_extent(x, q, w, L, lo=None, hi=None):
+    """Ends of the contact from the loaded slices, q extrapolated to zero."""
+    on = np.flatnonzero(q > 0)
+    i0, i1 = on[0], on[-1]
+    n = len(x)
+
+    def end(i, step):
+        # q near a smooth contact edge falls linearly; use the last three loaded slices
+        idx = [i - step * k for k in range(3)]
+        if not all(0 <= j < n and q[j] > 0 for j in idx):
+            idx = idx[:2] if all(0 <= j < n and q[j] > 0 for j in idx[:2]) else idx[:1]
+        if len(idx) == 1:
+            return x[i] + step * w / 2
+        coef = np.polyfit(x[idx], q[idx], len(idx) - 1)
+        roots = np.roots(coef)
+        roots = roots[np.isreal(roots)].real
+        lo, hi = sorted((x[i], x[i] + step * w))
+        roots = roots[(roots >= lo) & (roots <= hi)]
+        if len(roots) == 0:
+            return x[i] + step * w / 2
+        return float(roots[np.argmin(np.abs(roots - x[i]))])
+
+    lo = -L / 2 if lo is None else lo
+    hi = L / 2 if hi is None else hi
+    start = lo if i0 == 0 else end(i0, -1)
+    stop = hi if i1 == n - 1 else end(i1, +1)
+    tol = 1e-9 * L
+    return start, stop, i0 == 0 and lo <= -L / 2 + tol, i1 == n - 1 and hi >= L / 2 - tol
+
+
+def peak_pressure(x, p):
+    """Peak of p over the slices, refined by a parabola through p^2 (exact for Hertz)."""
+    k = int(np.argmax(p))
+    if 0 < k < len(x) - 1 and p[k - 1] > 0 and p[k + 1] > 0:
+        y0, y1, y2 = p[k - 1] ** 2, p[k] ** 2, p[k + 1] ** 2
+        den = y0 - 2 * y1 + y2
+        if den < 0:
+            h = x[1] - x[0]
+            s = 0.5 * (y0 - y2) / den
+            return math.sqrt(y1 - 0.25 * (y0 - y2) * s), float(x[k] + s * h)
+    return float(p[k]), float(x[k])

@@ -377,6 +377,11 @@ class AdhesiveContact:
         return out(np.asarray(self.normal_force(a)) - np.sqrt(8 * np.pi * a ** 3 *
                                                               self.estar * self.work))
 
+    @property
+    def _a_top(self):
+        """The largest half-length evaluated: just inside x_max (rounding)."""
+        return self.x_max * (1 - 1e-9) if np.isfinite(self.x_max) else np.inf
+
     # ---- extrema ----------------------------------------------------------------------
     def _argmin(self, fun, what):
         from scipy.optimize import minimize_scalar
@@ -489,12 +494,14 @@ class AdhesiveContact:
         for dv in d:
             if branch == "stable":
                 lo = max(a_d, self.x_scale * 1e-9)
-                hi = lo * 2
+                hi = min(lo * 2, self._a_top)
                 while float(self.depth(hi)) < dv:
-                    hi *= 2
-                    if hi > self.x_max:
-                        raise OutOfRangeError("depth", float(dv), "a depth inside the "
-                                              "profile's range", unit="m")
+                    if hi >= self._a_top:
+                        raise OutOfRangeError("depth", float(dv), f"d <= "
+                                              f"{float(self.depth(hi)):.6g} m", unit="m",
+                                              hint="the profile's (the model's) range of "
+                                                   "depth ends there")
+                    hi = min(hi * 2, self._a_top)
                 if float(self.depth(lo)) >= dv:
                     res.append(lo)
                     continue
@@ -503,6 +510,41 @@ class AdhesiveContact:
             res.append(brentq(lambda x: float(self.depth(x)) - dv, lo, hi,
                               xtol=lo * 1e-12, rtol=1e-13))
         return out(np.array(res).reshape(np.shape(depth)))
+
+    def depth_at_force(self, force):
+        """Depth d [m] at force F [N] on the force-controlled stable branch (a > a_F).
+
+        Forces below the force-controlled pull-off have no contact and raise
+        :class:`~linecontact.validity.OutOfRangeError` naming the range.
+        """
+        from scipy.optimize import brentq
+
+        F = np.atleast_1d(np.asarray(force, dtype=float))
+        if self.work == 0:
+            lo_F, a_lo = 0.0, self.x_scale * 1e-9
+        else:
+            a_lo = self._a_force
+            lo_F = float(self.force(a_lo))
+        bad = ~(F >= lo_F) | ~np.isfinite(F) | ((F <= 0) if self.work == 0 else False)
+        if np.any(bad):
+            raise OutOfRangeError("force", float(F[bad][0]), f"{lo_F:.6g} <= F < inf N"
+                                  if self.work else "0 < F < inf N", unit="N",
+                                  hint="below the force-controlled pull-off there is no "
+                                       "contact" if self.work else "")
+        res = []
+        for Fv in F:
+            hi = min(a_lo * 2, self._a_top)
+            while float(self.force(hi)) < Fv:
+                if hi >= self._a_top:
+                    raise OutOfRangeError("force", float(Fv), f"F <= {float(self.force(hi)):.6g}"
+                                          " N", unit="N", hint="the profile's (the model's) "
+                                          "range of depth ends there")
+                hi = min(hi * 2, self._a_top)
+            a = a_lo if float(self.force(a_lo)) >= Fv else brentq(
+                lambda x: float(self.force(x)) - Fv, a_lo, hi, xtol=a_lo * 1e-12,
+                rtol=1e-13)
+            res.append(float(self.depth(a)))
+        return out(np.array(res).reshape(np.shape(force)))
 
     def force_at_depth(self, depth, branch="stable"):
         """Force F at depth d [N] on the stable or unstable branch; depth [m]."""

@@ -172,3 +172,14 @@ def test_viscoelastic_limits_and_refusal():
             9 * math.pi * W * R ** 2 / (2 * Ev), rel=1e-10)
     with pytest.raises(OutOfRangeError, match="crack-tip"):
         c.viscoelastic_limit(sls, "1 mm/s")
+
+
+def test_depth_at_force_inverts_force_at_depth():
+    """On the stable branch d(F(d)) = d (the two are inverses, to 1e-9), including at
+    zero and negative forces down to the force-controlled pull-off."""
+    c = sphere()
+    d = np.array([c.pull_off("force")["depth"] * 0.9, 0.0, 3e-5])
+    F = np.asarray(c.force_at_depth(d))
+    assert np.allclose(c.depth_at_force(F), d, rtol=1e-9, atol=1e-15)
+    with pytest.raises(OutOfRangeError, match="force"):
+        c.depth_at_force(1.01 * c.pull_off("force")["force"])

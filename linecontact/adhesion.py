@@ -803,7 +803,10 @@ class CylinderAdhesion:
     >>> from linecontact.models import get_model
     >>> c = CylinderAdhesion(get_model("universal", 0.5e-3, 2e-3, 2.7e6), 0.04)
     >>> f"s = {c.s:.3g}; 2D JKR {c.pull_off_2d * 1e3:.3f} mN"
-    's = 0.0124; 2D JKR -3.047 mN'
+    's = 0.00665; 2D JKR -4.508 mN'
+    >>> r = c.pull_off("force")
+    >>> bool(abs(r["ratio"] - 1) < 0.05), bool(r["mdr_force"] < 1.3 * r["force"])
+    (True, True)
 
     References
     ----------

@@ -840,6 +840,7 @@ SAMPLE = {
     "instantaneous_modulus": "3GPa", "long_term_modulus": "1GPa",
     "relaxation_time": "10s", "prony": "PRONY", "time": "10s",
     "crown_radius": "500mm", "profile": "iso16281", "tilt": "1mrad",
+    "work_of_adhesion": "50mJ/m^2",
 }
 
 

@@ -16,7 +16,8 @@ F_2D = -3 (pi E* R w^2/16)^(1/3) L, i.e. F~_2D = -3 (pi w~^2/16)^(1/3): the rati
 to 1 for a long roller (s -> 0).
 
 Per s (one task per grid, L = R = E* = 1, w = w~): the retraction under depth control
-on square cells of side h = b_c/n (n = --n values, default 8, 16, 32), from a pinned
+on square cells of side h = b_c/n (n = --n values, default 8, 16; and 32 at the larger,
+cheaper s as a check of the extrapolation, --check-n, --check-s), from a pinned
 contact 1.6 b_c wide to the jump-off; the smallest force is the pull-off force under
 force control, the force at the last depth with contact (bisected) the one under depth
 control. Converged value: first-order Richardson extrapolation of the two finest grids,
@@ -44,7 +45,9 @@ import numpy as np
 
 REPO = Path(__file__).resolve().parents[2]
 S_VALUES = (0.05, 0.07, 0.1, 0.14, 0.2, 0.3, 0.5)
-GRIDS = (8, 16, 32)
+GRIDS = (8, 16)
+#: A finer grid run at the cheaper (larger) s only, to check the extrapolation.
+CHECK_N, CHECK_S = 32, (0.2, 0.3, 0.5)
 
 
 def add_arguments(parser):
@@ -54,6 +57,12 @@ def add_arguments(parser):
     parser.add_argument("--n", type=int, nargs="+", default=list(GRIDS),
                         help="cells across b_c, coarse to fine, each twice the last "
                              f"(default {' '.join(map(str, GRIDS))})")
+    parser.add_argument("--check-n", type=int, default=CHECK_N,
+                        help="a finer grid to check the extrapolation (default "
+                             f"{CHECK_N}; 0: none)")
+    parser.add_argument("--check-s", type=float, nargs="+", default=list(CHECK_S),
+                        help="the s values of that check (default "
+                             f"{' '.join(map(str, CHECK_S))})")
     parser.add_argument("--steps", type=int, default=40,
                         help="depth steps of each retraction (default 40)")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
@@ -149,6 +158,9 @@ def run(args):
     grids = sorted(args.n)
     tasks = [{"key": f"s{s:g}_n{n}", "s": float(s), "n": int(n), "steps": args.steps}
              for n in grids[::-1] for s in sorted(args.s, reverse=False)]
+    check = [s for s in args.check_s if s in args.s] if args.check_n else []
+    tasks += [{"key": f"s{s:g}_n{args.check_n}", "s": float(s), "n": int(args.check_n),
+               "steps": args.steps} for s in check]
     own_checkpoint = getattr(args, "checkpoint", None) is None
     if own_checkpoint:
         args.checkpoint = REPO / "out" / "partial_adhesion"
@@ -158,7 +170,17 @@ def run(args):
         for n in (16, 32)] + [{"key": f"punch_{n}", "kind": "punch", "n": n}
                               for n in (32, 64)],
         scheduler=args.scheduler, workers=args.workers, progress=False)
-    cols = assemble(results, grids)
+    cols = assemble([r for r in results if r["n"] in grids], grids)
+    by = {(r["s"], r["n"]): r for r in results}
+    check_lines = []
+    for s_ in check:
+        fine = by[(s_, args.check_n)]["force"] / f2d(s_)
+        mid = by[(s_, grids[-1])]["force"] / f2d(s_)
+        i = int(np.flatnonzero(cols["s"] == s_)[0])
+        check_lines.append(f"s = {s_:g}: n = {args.check_n} gives {fine:.4f}, the "
+                           f"extrapolation from n = {grids[-2]}, {grids[-1]} "
+                           f"{cols['ratio_force'][i]:.4f}, from n = {grids[-1]}, "
+                           f"{args.check_n} {2 * fine - mid:.4f}")
     wall = time.perf_counter() - t0
     k = min(3, cols["s"].size)
     slope, icept = np.polyfit(cols["s"][:k], cols["ratio_force"][:k], 1)
@@ -201,6 +223,7 @@ def run(args):
                  f"staircase-sensitive): {np.abs(cols['grid_change_depth']).max():.1e}; "
                  f"JKR sphere on the same BEM (exact 1): {sph_line}, force control "
                  f"extrapolated {sph_rich:.4f}; Kendall's punch (exact 1): {pun_line}",
+        grid_check="; ".join(check_lines) or "none",
         long_roller_limit=f"straight line through the {k} smallest s: ratio_force = "
                           f"{icept:.4f} + {slope:.3f} s (2D JKR: 1 at s = 0; the end "
                           "effect is linear in b_c/L)",
@@ -214,7 +237,7 @@ def run(args):
         tolerance="1e-9 (CG displacement error on the contact set relative to the "
                   "largest prescribed displacement; 1e-3 while the set moves)",
         s_range=f"[{cols['s'].min():g}, {cols['s'].max():g}]",
-        wall_time=wall_time_line(wall, results, "retractions", args.scheduler,
+        wall_time=wall_time_line(wall, results + oracles, "retractions and oracle runs", args.scheduler,
                                  args.workers),
     )
     args.out.mkdir(parents=True, exist_ok=True)
@@ -224,6 +247,6 @@ def run(args):
         import shutil
         shutil.rmtree(args.checkpoint, ignore_errors=True)
     print(f"wrote {path}: {cols['s'].size} rows in {wall:.0f} s")
-    for key in ("accuracy", "long_roller_limit", "mdr_error"):
+    for key in ("accuracy", "grid_check", "long_roller_limit", "mdr_error"):
         print(f"  {key}: {meta[key]}")
     return 0

@@ -794,7 +794,12 @@ class CylinderAdhesion:
     straight-line fit of its smallest s that supports it (``long_roller_limit``).
     Below the table the MDR's error is not measured (it grows as s -> 0: the MDR
     half-length of a long roller is of the order of L, not of b). JKR itself needs a
-    large Tabor parameter (:attr:`tabor`).
+    large Tabor parameter (:attr:`tabor`). Accuracy of the table: its header's
+    ``accuracy``, ``grid_check`` and ``straight_edge`` lines; the BEM's local criterion
+    reproduces the JKR sphere and Kendall's punch within 2 %, but not a straight edge
+    aligned with its cells, and its ratios do not extrapolate to the exact 2D limit
+    (docs/adhesion.md, section 5): treat the corrected values as uncertain by several
+    per cent.
 
     Examples
     --------
@@ -889,8 +894,10 @@ class CylinderAdhesion:
         -------
         dict
             ``force`` [N] (corrected), ``ratio`` (over the 2D JKR value) [-],
-            ``mdr_force`` [N] (the rule of Hess), ``mdr_error`` (its error against the
-            BEM, mdr/BEM - 1, or NaN below the table's s) [-], ``depth`` [m] (the
+            ``mdr_force`` [N] (the rule of Hess; NaN where the model refuses, e.g. a
+            pull-off beyond its range of depth, with the reason in ``mdr_note``),
+            ``mdr_error`` (its error against the BEM, mdr/BEM - 1, or NaN below the
+            table's s) [-], ``depth`` [m] (the
             BEM's depth at the depth-controlled jump-off, NaN under force control or
             below the table), ``in_table`` (bool).
         """
@@ -898,7 +905,10 @@ class CylinderAdhesion:
             raise OutOfRangeError("control", control, "one of 'force', 'depth'")
         ratio = self._ratio(f"ratio_{control}")
         F = ratio * self.pull_off_2d
-        mdr = self.mdr.pull_off(control)["force"]
+        try:
+            mdr, mdr_note = self.mdr.pull_off(control)["force"], ""
+        except OutOfRangeError as exc:     # e.g. beyond the model's range of depth
+            mdr, mdr_note = np.nan, str(exc).splitlines()[0]
         err, depth = np.nan, np.nan
         if self.in_table:
             from scipy.interpolate import PchipInterpolator
@@ -909,7 +919,7 @@ class CylinderAdhesion:
                 dt = float(PchipInterpolator(cols["s"], cols["d_tilde_off"])(self.s))
                 depth = dt * self.model.length ** 2 / self.model.radius
         return {"force": F, "ratio": ratio, "mdr_force": mdr, "mdr_error": err,
-                "depth": depth, "in_table": self.in_table}
+                "mdr_note": mdr_note, "depth": depth, "in_table": self.in_table}
 
     def zero_load(self):
         """State at zero load: the 2D JKR half-width and the MDR's half-length and depth.

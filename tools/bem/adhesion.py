@@ -302,6 +302,24 @@ def kendall_punch(radius, estar, work, n_radius=32, backend="scipy", tol=1e-10):
             "area_radius": float(np.sqrt(area / np.pi)), "h": h}
 
 
+def strip_punch(length_over_width=40.0, n_width=16, estar=1.0, work=1e-3, tol=1e-10):
+    """The criterion on a straight edge aligned with the cells: a long rigid flat strip
+    punch (|x| <= L/2, |y| <= b, L = length_over_width * b), unit-depth solution scaled
+    until the edge cell at mid-length reaches sigma_c. Returns the line force there over
+    the exact 2D pull-off sqrt(2 pi E* w b) of a flat strip of half-width b (Griffith:
+    K = P'/sqrt(pi b), G = K^2/(2 E*)). 1 would mean the criterion holds on straight
+    edges; Pohrt & Popov's constant was calibrated for another edge (the staircase of a
+    circle), and this ratio measures how far it is from a straight one."""
+    b = 1.0
+    h = b / n_width
+    mx, my = int(round(0.5 * length_over_width * n_width)), n_width
+    op = SymmetricOperator(mx, my, h, h, estar, workers=1)
+    sol = solve_punch(op, np.ones((mx, my), bool), tol=tol)
+    p = sol.pressure
+    line = 2 * h * float(p[0].sum()) * critical_stress(estar, work, h) / float(p[0, -1])
+    return line / np.sqrt(2 * np.pi * estar * work * b)
+
+
 # --------------------------------------------------------------------------------------
 # the finite cylinder
 # --------------------------------------------------------------------------------------

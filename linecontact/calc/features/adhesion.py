@@ -128,12 +128,15 @@ def columns(model, rows, normal, state):
         def bem(_, w=w):
             c = ad.CylinderAdhesion(model, w)
             f, d = c.pull_off("force"), c.pull_off("depth")
-            return [f["force"], d["force"], f["mdr_error"]]
+            return [f["force"], d["force"], f["mdr_error"], c.s, float(f["in_table"])]
 
-        v = each(bem, np.arange(1), sub, width=3, missing=_MISSING)[0]
+        v = each(bem, np.arange(1), sub, width=5, missing=_MISSING)[0]
         note(j, "Fc (BEM): " + short(sub[0]) if sub[0] else "")
         out["pull_off_force"][j], out["pull_off_depth_ctrl"][j] = v[0], v[1]
         out["pull_off_mdr_error"][j] = v[2]
+        if v[4] == 0:
+            note(j, f"Fc: s = b_c/L = {v[3]:.3g} below the BEM table, interpolated towards "
+                    "the 2D JKR limit (MDR error not measured there)")
     return out
 
 

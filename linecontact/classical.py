@@ -11,9 +11,7 @@ bearing formulas of Palmgren and ISO/TS 16281.
 
 References
 ----------
-.. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-   Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71,
-   doi:10.22190/FUME170222003L.
+.. [1] Li & Popov (2017) [li-popov-2017].
 .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
 .. [3] A. Palmgren, Ball and Roller Bearing Engineering, SKF (1959).
 .. [4] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
@@ -130,8 +128,7 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 3.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 3.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
@@ -206,8 +203,7 @@ def hertz_half_width(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 1.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
@@ -254,8 +250,7 @@ def hertz_peak_pressure(force, radius, length, estar):
     ----------
     .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        Eq. 4.45.
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    .. [2] Li & Popov (2017) [li-popov-2017], Eq. 1.
     """
     F = check_positive("force", force, "N")
     R, L, E = _inputs(radius, length, estar)
@@ -308,8 +303,7 @@ def puttock_thwaite_depth(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2.
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
        Melbourne (1969).
@@ -360,8 +354,7 @@ def puttock_thwaite_force(depth, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (inverted
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 (inverted
        in closed form by the MDR, docs/theory.md, section 'MDR').
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -412,8 +405,7 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 and Eq. 13
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 and Eq. 13
        (corrected).
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -459,8 +451,7 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (k = 2 E*
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 (k = 2 E*
        a by the MDR, docs/theory.md, section 'MDR').
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -504,8 +495,7 @@ def puttock_thwaite_profile(x, radius, length):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 with alpha
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 with alpha
        = pi/2, beta = 1 (Eq. 2).
     """
     return lipopov_profile(x, radius, length, **_PT)
@@ -586,8 +576,7 @@ def johnson_equivalent_beta(radius, length, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4 and Eq. 7
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4 and Eq. 7
        (the identity is derived here).
     """
     R = check_positive("radius", radius, "m")
@@ -644,8 +633,7 @@ def johnson_depth(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -688,8 +676,7 @@ def johnson_force(depth, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -732,8 +719,7 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -782,8 +768,7 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], section 1.
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -826,8 +811,7 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], section 1.
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """

@@ -426,7 +426,7 @@ class ContactResult(_Result):
 
     Examples
     --------
-    >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9)
+    >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9, n_slices=40)
     >>> r = c.normal(force=1e3)
     >>> f"{r.depth * 1e6:.3f} um, p0 {r.peak_pressure / 1e6:.0f} MPa", r.model
     ('7.431 um, p0 1522 MPa', 'profiled-roller')
@@ -476,9 +476,14 @@ class TangentialResult(_Result):
     gross_slip_force : float or ndarray
         mu F [N].
     gross_slip_shift : float or ndarray
-        u* = mu E* d/G* (d the approach) [m].
+        u* = mu E* d/G* (d the approach) [m] (with the BEM table's correction for
+        ``method="bem"``).
     reasons : dict
         Output name -> (parameters, reason) for each None field.
+    method : str
+        ``"mdr"`` or ``"bem"``.
+    stiffness_ratio : float or ndarray
+        k_t/k_n used: G*/E*, or the BEM table's ratio in the direction asked [-].
 
     Notes
     -----
@@ -488,7 +493,7 @@ class TangentialResult(_Result):
     Examples
     --------
     >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), material1=Elastic(210e9, 0.3),
-    ...             material2=Elastic(210e9, 0.3))
+    ...             material2=Elastic(210e9, 0.3), n_slices=40)
     >>> t = c.tangential(0.15, force=1e3, tangential_force=-50.0)
     >>> t.state, f"{t.shift * 1e9:.1f} nm"
     ('partial slip', '-320.6 nm')
@@ -505,6 +510,8 @@ class TangentialResult(_Result):
     gross_slip_force: object
     gross_slip_shift: object
     reasons: dict = field(default_factory=dict)
+    method: str = "mdr"
+    stiffness_ratio: object = None
 
 
 @dataclass(frozen=True)
@@ -589,6 +596,17 @@ class _ApproachLaw(ContactModel):
                                                                 self.tilt).stiffness)
 
 
+def _split(sol):
+    """A RacewaySolution over an array of loads as one RacewaySolution per load."""
+    from dataclasses import fields, replace
+
+    arrays = {f.name: np.asarray(getattr(sol, f.name)) for f in fields(sol)
+              if isinstance(getattr(sol, f.name), np.ndarray)}
+    shape = np.shape(sol.force)
+    return tuple(replace(sol, **{k: float(v[idx]) for k, v in arrays.items()})
+                 for idx in np.ndindex(*shape))
+
+
 # --------------------------------------------------------------------------------------
 class Contact:
     """A roller against a counter-body, of given materials: every output of the contact.
@@ -624,6 +642,24 @@ class Contact:
     UnknownNameError
         An unknown model key.
 
+    Attributes
+    ----------
+    estar : float
+        E* [Pa] (instantaneous, E*(0), with a viscoelastic body).
+    gstar : float or None
+        G* [Pa]; None when the contact was given by estar or is viscoelastic.
+    relaxation : PronySeries or None
+        E*(t) with a viscoelastic body.
+    radius : float or None
+        Effective radius of the single contact [m] (None between raceways).
+    profile : Profile
+        The roller's profile, read.
+    tilt : float or str
+        The roller's tilt [rad] or ``"free"``.
+    model : str
+        The model used; ``sliced`` True for a slice model, ``raceways`` True between
+        raceways; ``n_slices`` and ``options`` as given.
+
     Notes
     -----
     Valid within the parts' ranges (0 < R, L, E* < inf, |theta| < 0.1 rad) and the
@@ -635,7 +671,8 @@ class Contact:
     The crowned cam follower of docs/composition.md (steel on steel):
 
     >>> steel = Elastic(210e9, 0.3)
-    >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel)
+    >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel,
+    ...             n_slices=40)
     >>> r = c.normal(force=2e3)
     >>> f"{r.depth * 1e6:.2f} um, k {r.stiffness / 1e6:.0f} N/um"
     '13.21 um, k 227 N/um'
@@ -963,12 +1000,15 @@ class Contact:
             **({"force": v} if force is not None else {"deflection": v}), **kw)
             for v in vals)
 
+        s0 = sols[0]
+
         def arr(name):
             if one:
-                return getattr(sols[0], name)
+                return getattr(s0, name)
             return out(np.array([getattr(s, name) for s in sols]))
 
-        s0 = sols[0]
+        if one and np.ndim(s0.force):
+            sols = _split(s0)       # one solution per load, as for a slice model
         reasons = {}
         why_q = ({"counterbody": "Raceways"}, "a whole roller has two load distributions: "
                  "see solutions[i].inner.q and .outer.q")
@@ -1002,7 +1042,7 @@ class Contact:
 
     # ---- tangential ------------------------------------------------------------------
     def tangential(self, friction, *, force=None, depth=None, tangential_force=None,
-                   shift=None):
+                   shift=None, method="mdr", direction="across"):
         r"""The tangential state under a tangential force or shift (Cattaneo-Mindlin, MDR).
 
         .. math:: k_t = \frac{G^*}{E^*}\,k_n, \qquad
@@ -1024,6 +1064,14 @@ class Contact:
             Tangential force Q, either sign (the sign is the direction) [N].
         shift : float or array_like, optional
             Tangential shift u instead of Q, either sign [m].
+        method : {"mdr", "bem"}, optional
+            ``"mdr"`` (default): the ratio G*/E*; ``"bem"``: a straight cylinder's
+            direction-dependent k_t/k_n and partial-slip correction from the BEM table
+            (:class:`linecontact.tangential.TangentialContact`; straight-cylinder
+            laws only).
+        direction : {"across", "along"}, optional
+            With ``method="bem"``: the shift across the axis (rolling direction) or
+            along it.
 
         Returns
         -------
@@ -1044,7 +1092,8 @@ class Contact:
         Examples
         --------
         >>> steel = Elastic(210e9, 0.3)
-        >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel)
+        >>> c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), steel, steel,
+        ...             n_slices=40)
         >>> t = c.tangential(0.15, force=2e3, tangential_force=100.0)
         >>> f"k_t {t.stiffness / 1e6:.0f} N/um, {t.state}"
         'k_t 187 N/um, partial slip'
@@ -1074,6 +1123,16 @@ class Contact:
                                     "shift": shift},
                                    "give a tangential force or a shift, not both")
         mu = tg.FRICTION.check(friction, name="friction")
+        if method not in ("mdr", "bem"):
+            raise UnknownNameError("method", method, ("mdr", "bem"))
+        if method == "bem":
+            if self.sliced or self.model not in tg.STRAIGHT_CYLINDER_MODELS:
+                raise CombinationError({"method": "bem", "model": self.model,
+                                        "profile": self.profile.label},
+                                       "the BEM table is for a straight, aligned "
+                                       "cylinder; use method='mdr'")
+            return self._tangential_bem(mu, force, depth, tangential_force, shift,
+                                        direction)
         n = self.normal(force=force, depth=depth)
         law = self._law_for("the tangential law")
         e = np.asarray(n.approach, dtype=float)
@@ -1120,19 +1179,104 @@ class Contact:
         return TangentialResult(
             normal=n, friction=float(mu), shear_ratio=float(r), stiffness=kt,
             tangential_force=Q, shift=u, slip_fraction=frac, state=state,
-            gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons)
+            gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons,
+            method="mdr", stiffness_ratio=float(r))
+
+    def _tangential_bem(self, mu, force, depth, Q, u, direction):
+        """Contact.tangential with the BEM table's ratio and slip correction, one
+        TangentialContact per normal load."""
+        from . import tangential as tg
+
+        n = self.normal(force=force, depth=depth)
+        law = self._law_for("the tangential law")
+        e = np.atleast_1d(np.asarray(n.approach, dtype=float))
+        F = np.atleast_1d(np.asarray(n.force, dtype=float))
+        shape = np.shape(n.force)
+        Qb = None if Q is None else np.broadcast_to(np.asarray(Q, float), e.shape)
+        ub = None if u is None else np.broadcast_to(np.asarray(u, float), e.shape)
+        cols = {k: np.full(e.shape, np.nan) for k in ("kt", "ratio", "Q", "u", "ustar")}
+        states = []
+        reasons = {}
+        for k in range(e.size):
+            tc = tg.TangentialContact(law, mu, self.gstar, depth=float(e[k]),
+                                      method="bem", direction=direction)
+            cols["kt"][k], cols["ratio"][k] = tc.stiffness, tc.ratio
+            cols["ustar"][k] = tc.gross_slip_shift
+            if Qb is not None:
+                cols["Q"][k] = Qb[k]
+                if abs(Qb[k]) <= mu * F[k] * (1 + 1e-12):
+                    cols["u"][k] = tc.shift(float(Qb[k]))
+                else:
+                    reasons["shift"] = ({"tangential_force": float(Qb[k]),
+                                         "friction": float(mu)},
+                                        "beyond mu F the contact slides: no static shift")
+            elif ub is not None:
+                cols["u"][k] = ub[k]
+                cols["Q"][k] = tc.force(float(ub[k]))
+            frac = abs(cols["Q"][k]) / (mu * F[k]) if Qb is not None or ub is not None \
+                else 0.0
+            states.append("gross slip" if frac >= 1 - 1e-12 else
+                          "stick" if frac == 0 else "partial slip")
+
+        def shaped(v):
+            return out(v.reshape(shape))
+
+        loaded = Qb is not None or ub is not None
+        if not loaded:
+            why = ({"tangential_force": None, "shift": None}, "no tangential load given")
+            reasons.update(tangential_force=why, shift=why, slip_fraction=why)
+        state = states[0] if not shape else np.array(states).reshape(shape)
+        shift_out = None if "shift" in reasons else (shaped(cols["u"]) if loaded
+                                                     else None)
+        return TangentialResult(
+            normal=n, friction=float(mu),
+            shear_ratio=float(tg.SHEAR_RATIO.check(self.gstar / self.estar,
+                                                   name="gstar/estar")),
+            stiffness=shaped(cols["kt"]),
+            tangential_force=shaped(cols["Q"]) if loaded else None, shift=shift_out,
+            slip_fraction=shaped(np.abs(cols["Q"]) / (mu * F)) if loaded else None,
+            state=state, gross_slip_force=shaped(mu * F),
+            gross_slip_shift=shaped(cols["ustar"]), reasons=reasons, method="bem",
+            stiffness_ratio=shaped(cols["ratio"]))
 
     # ---- time ------------------------------------------------------------------------
-    def _visco(self, what):
+    def _visco(self, what, whole=False):
+        """The laws of the contacts whose Lee-Radok history is asked: one, or the two of
+        a whole roller (creep only: a held force passes through both)."""
         if self.relaxation is None:
             raise CombinationError({"material1": "Elastic", "material2": "Elastic"},
                                    f"{what} needs a viscoelastic body")
-        if self.raceways:
+        if not self.raceways:
+            return [self._law_for(what)]
+        if not whole:
             raise CombinationError({"counterbody": "Raceways", self.viscoelastic:
                                     "Viscoelastic"},
-                                   f"{what} of a whole roller between raceways is not "
-                                   "modelled; compute one contact")
-        return self._law_for(what)
+                                   f"{what} of a whole roller between raceways (a held "
+                                   "ring approach shared by two relaxing contacts) is "
+                                   "not modelled; ask creep under a held force")
+        from .models import get_model
+
+        radii = self.counterbody.effective_radii(self.roller.radius)
+        if not self.sliced:
+            return [get_model(self.model, R, self.roller.length, self.estar,
+                              **self.options) for R in radii]
+        psi = self.counterbody.misalignment
+        if self.tilt == FREE and psi != 0.0:
+            raise CombinationError({"tilt": FREE, "misalignment": psi},
+                                   f"{what} needs each contact's geometry fixed while it "
+                                   "is loaded; the free tilt between misaligned rings "
+                                   "changes with the load: give the tilt as a number",
+                                   unit={"misalignment": "rad"})
+        th = self._fixed_tilt(what)
+        from .roller import ProfiledRoller
+
+        if self.model != "profiled-roller":
+            raise CombinationError({"model": self.model}, "the creep laws use the "
+                                   "coupled-slice model; use model='profiled-roller'")
+        return [_ApproachLaw(ProfiledRoller(R, self.roller.length, self.estar,
+                                            self.profile,
+                                            n_slices=self.n_slices or 100), t,
+                             self.model) for R, t in zip(radii, (th, psi - th))]
 
     def creep(self, time, *, force):
         r"""Depth under a held force or a force history (Lee & Radok's creep).
@@ -1154,13 +1298,15 @@ class Contact:
         -----
         Valid while the depth grows (refused otherwise, see
         :func:`linecontact.viscoelastic.creep_depth`), a fixed tilt (a free one only
-        where it is zero).
+        where it is zero). Between raceways the two contacts creep in series under the
+        same force: their depths add (the ring approach).
 
         Examples
         --------
         >>> from linecontact.viscoelastic import StandardLinearSolid
         >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.2), material1=Elastic(210e9, 0.3),
-        ...             material2=Viscoelastic(StandardLinearSolid(3e9, 1e9, 10.0), 0.4))
+        ...             material2=Viscoelastic(StandardLinearSolid(3e9, 1e9, 10.0), 0.4),
+        ...             n_slices=40)
         >>> r = c.creep([0.0, 1e4], force=100.0)
         >>> f"{r.depth[1] / r.depth[0]:.3f}"
         '2.066'
@@ -1171,15 +1317,18 @@ class Contact:
         """
         from .viscoelastic import creep_depth
 
-        law = self._visco("creep")
+        laws = self._visco("creep", whole=True)
         t = np.asarray(time, dtype=float)
         F = np.broadcast_to(np.asarray(force, dtype=float), t.shape).astype(float)
-        e = creep_depth(law, self.relaxation, t, F)
         jinf = self.relaxation.creep_terms[0]
-        long_term = float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0 else 0.0
-        d0 = getattr(law, "d0", 0.0)
-        return CreepResult(time=t, force=F, depth=out(e + d0),
-                           long_term_depth=long_term + d0, model=self.model)
+        depth, long_term = np.zeros(t.shape), 0.0
+        for law in laws:                                # contacts in series: depths add
+            d0 = getattr(law, "d0", 0.0)
+            depth += creep_depth(law, self.relaxation, t, F) + d0
+            long_term += (float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0
+                          else 0.0) + d0
+        return CreepResult(time=t, force=F, depth=out(depth), long_term_depth=long_term,
+                           model=self.model)
 
     def relaxation_history(self, time, *, depth):
         r"""Force under a held depth or a depth history (Lee & Radok's relaxation).
@@ -1217,7 +1366,7 @@ class Contact:
         """
         from .viscoelastic import force_history
 
-        law = self._visco("relaxation")
+        law = self._visco("relaxation")[0]
         t = np.asarray(time, dtype=float)
         d = np.broadcast_to(np.asarray(depth, dtype=float), t.shape).astype(float)
         d0 = getattr(law, "d0", 0.0)

@@ -53,8 +53,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import (OutOfRangeError, check_flag, check_interval, check_positive,
-                       document, out)
+from .validity import (OutOfRangeError, UnknownNameError, check_flag, check_interval,
+                       check_positive, document, out)
 
 __all__ = [
     "ContactModel",
@@ -170,8 +170,7 @@ def scales_are_normal(radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71 (the
+    .. [1] Li & Popov (2017) [li-popov-2017] (the
        dimensionless variables of Eq. 9).
     """
     L = np.asarray(length, dtype=float)
@@ -274,6 +273,20 @@ class ContactModel(abc.ABC):
     def check_applicable(self):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
 
+    def check_starts_at_zero(self):
+        """Raise :class:`~linecontact.validity.CombinationError` unless F(d) starts at
+        d = 0 (:attr:`first_contact_depth`), as the tangential and viscoelastic laws
+        built on F(d) take it."""
+        d0 = self.first_contact_depth
+        if d0 != 0.0:
+            from .validity import CombinationError
+
+            raise CombinationError({"model": self.label, "first_contact_depth": d0},
+                                   "the law's force starts at a nonzero depth (a tilted "
+                                   "roller); use linecontact.contact.Contact, which takes "
+                                   "the law in the approach from first contact",
+                                   unit={"first_contact_depth": "m"})
+
     def __repr__(self):
         return (f"<{type(self).__name__} {self.label}: R = {self.radius:g} m, "
                 f"L = {self.length:g} m, E* = {self.estar:g} Pa>")
@@ -298,6 +311,11 @@ class ContactModel(abc.ABC):
     def contact_radius(self, depth):
         """MDR contact half-length a = k / (2 E*) [m] at depth d [m]."""
         return out(np.asarray(self.stiffness(depth)) / (2 * self.estar))
+
+    #: Depth at which the law's force starts [m]: 0 for a cylinder, negative for a
+    #: tilted roller whose depth is that of its centre. The laws built on F(d) with
+    #: F(0) = 0 (tangential, viscoelastic) refuse a law that starts elsewhere.
+    first_contact_depth = 0.0
 
     #: Why a model without an MDR profile has none (the end of the NotImplementedError
     #: message of :meth:`profile`); each such model states its own reason.
@@ -356,8 +374,7 @@ class ContactModel(abc.ABC):
 
         References
         ----------
-        .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-           Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+        .. [1] Li & Popov (2017) [li-popov-2017].
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
@@ -429,8 +446,7 @@ class LiPopovModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7, 9,
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7, 9,
        11 and Table 1.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
@@ -539,8 +555,7 @@ class PuttockThwaiteModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2.
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
        Melbourne (1969).
@@ -604,8 +619,7 @@ class JohnsonModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
     """
 
@@ -679,8 +693,7 @@ class KunzModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -886,8 +899,7 @@ class UniversalModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     """
 
     key = "universal"
@@ -1068,8 +1080,10 @@ def get_model(key, radius, length, estar, **options):
 
     Raises
     ------
+    UnknownNameError
+        Unknown key (the message lists the valid ones).
     OutOfRangeError
-        Unknown key (the message lists the valid ones) or bad R, L, E*.
+        Bad R, L, E*.
     FileNotFoundError
         The model's table is missing (the message names the file).
 
@@ -1085,13 +1099,12 @@ def get_model(key, radius, length, estar, **options):
     >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
+    linecontact.validity.UnknownNameError: model = 'hertz' is not a known name; valid: ...
     """
     if key not in MODELS and key in DEFINED_IN:
         import_module(DEFINED_IN[key])
     if key not in MODELS:
-        raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in available_models()))
+        raise UnknownNameError("model", key, available_models())
     return MODELS[key](radius, length, estar, **options)
 
 

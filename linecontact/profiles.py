@@ -47,7 +47,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import Interval, OutOfRangeError, check_interval, check_positive
+from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
+                       check_positive)
 
 __all__ = [
     "Profile",
@@ -891,15 +892,15 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     >>> parse_profile("cone", length=10e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: profile = 'cone' is outside the valid range one of straight, end-relief, circular, iso16281, lundberg, johns-gohar, file:PATH.csv
+    linecontact.validity.UnknownNameError: profile = 'cone' is not a known name; valid: 'straight', 'end-relief', 'circular', 'iso16281', 'lundberg', 'johns-gohar', 'file:PATH.csv'
 
     References
     ----------
     See the module docstring for each profile's source.
     """
-    valid_names = ", ".join(k if k != "file" else "file:PATH.csv" for k in PROFILE_KEYS)
+    valid_names = [k if k != "file" else "file:PATH.csv" for k in PROFILE_KEYS]
     if not isinstance(spec, str) or not spec.strip():
-        raise OutOfRangeError("profile", str(spec), "one of " + valid_names)
+        raise UnknownNameError("profile", str(spec), valid_names)
     spec = spec.strip()
     name, _, rest = spec.partition(":")
     name = name.strip().lower()
@@ -910,7 +911,7 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
         prof = TabulatedProfile.from_csv(rest.strip())
         return prof
     if name not in _OPTIONS:
-        raise OutOfRangeError("profile", spec.split(":")[0], "one of " + valid_names)
+        raise UnknownNameError("profile", spec.split(":")[0], valid_names)
     aliases = _OPTIONS[name]
     kw = {}
     if rest.strip():
@@ -922,7 +923,7 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
                                       "opt=value", hint=f"in {spec!r}")
             if key not in aliases:
                 opts = sorted({a for a in aliases}) or ["none"]
-                raise OutOfRangeError(f"{name} option", key, "one of " + ", ".join(opts))
+                raise UnknownNameError(f"{name} option", key, opts)
             kwname, kind = aliases[key]
             if kwname in kw:
                 raise OutOfRangeError(f"{name} option", key, "each option once")

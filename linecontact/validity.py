@@ -111,6 +111,8 @@ class UnknownNameError(ValueError):
         The unknown name (printed with repr).
     valid : iterable of str
         The names accepted there.
+    hint : str, optional
+        What to do instead; appended to the message.
 
     Notes
     -----
@@ -127,15 +129,21 @@ class UnknownNameError(ValueError):
     (True, False)
     """
 
-    def __init__(self, parameter, value, valid):
+    def __init__(self, parameter, value, valid, *, hint=""):
         self.parameter = parameter
         self.value = value
         self.valid = tuple(valid)
+        self.hint = hint
         names = ", ".join(repr(v) for v in self.valid)
-        super().__init__(f"{parameter} = {value!r} is not a known name; valid: {names}")
+        msg = f"{parameter} = {value!r} is not a known name; valid: {names}"
+        super().__init__(msg + (f"; {hint}" if hint else ""))
 
     def __reduce__(self):
-        return (UnknownNameError, (self.parameter, self.value, self.valid))
+        return (_rebuild_name, (self.parameter, self.value, self.valid, self.hint))
+
+
+def _rebuild_name(parameter, value, valid, hint):
+    return UnknownNameError(parameter, value, valid, hint=hint)
 
 
 class CombinationError(ValueError):

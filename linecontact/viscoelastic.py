@@ -51,7 +51,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import OutOfRangeError, check_interval, check_positive, out
+from .validity import (OutOfRangeError, UnknownNameError, check_interval, check_positive,
+                       out)
 
 __all__ = [
     "PronySeries",
@@ -451,6 +452,9 @@ def _hereditary(kinf, k, theta, t, g):
 
 
 def _unit_law(model, depth):
+    check = getattr(model, "check_starts_at_zero", None)
+    if check is not None:
+        check()
     d = np.asarray(depth, dtype=float)
     res = np.zeros(d.shape)
     pos = d > 0
@@ -461,7 +465,7 @@ def _unit_law(model, depth):
 
 def _shrinking(t, depth, unloading, what):
     if unloading not in ("raise", "warn"):
-        raise OutOfRangeError("unloading", unloading, "one of 'raise', 'warn'")
+        raise UnknownNameError("unloading", unloading, ("raise", "warn"))
     dd = np.diff(depth)
     bad = dd < -1e-12 * np.maximum(np.abs(depth[1:]), np.abs(depth[:-1]))
     if not np.any(bad):

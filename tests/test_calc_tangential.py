@@ -167,7 +167,7 @@ def test_prony_file_and_an_elastic_roller(capsys, tmp_path):
     (SLS + ["--modulus", "2GPa"], "--modulus"),
     (SLS + ["--friction", "0.1"], "--friction"),
     (ELASTIC + ["--friction", "0.1", "--inner-raceway", "20mm", "--outer-raceway",
-                "40mm"], "--friction"),
+                "30mm"], "--friction"),
     (SLS + ["--time", "5m"], "--time"),
     (SLS + ["--time", "-1s"], "--time"),
     (SLS + ["--time", "-1s:10s:3"], "--time"),

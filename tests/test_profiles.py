@@ -155,12 +155,25 @@ def test_parse_profile_names_options_and_units():
     assert parse_profile("end-relief:r=2mm", length=L).corner_radius == pytest.approx(2e-3)
 
 
+def test_parse_profile_refuses_unknown_names_listing_the_valid_ones():
+    """An unknown profile or option name is an UnknownNameError (not an
+    OutOfRangeError: a name has no range) naming it and listing the valid ones, in one
+    line."""
+    from linecontact.validity import UnknownNameError
+
+    for spec, param, fragment in (("cone", "profile",
+                                   "'straight', 'end-relief', 'circular'"),
+                                  ("circular:radius=1", "circular option", "'Rc'")):
+        with pytest.raises(UnknownNameError) as err:
+            parse_profile(spec, length=L)
+        assert err.value.parameter == param and fragment in str(err.value)
+        assert "\n" not in str(err.value)
+
+
 @pytest.mark.parametrize("spec, kw, param, fragment", [
-    ("cone", {}, "profile", "one of straight, end-relief, circular"),
     ("circular:Rc=-0.2", {}, "Rc", "a length > 0"),
     ("circular:Rc=0", {}, "Rc", "a length > 0"),
     ("circular", {}, "crown_radius", "(0, inf) m"),
-    ("circular:radius=1", {}, "circular option", "one of"),
     ("circular:Rc=5kN", {}, "Rc", "length"),
     ("lundberg", {"estar": E}, "design_force", "(0, inf) N"),
     ("end-relief:l=1mm,drop=-2um", {}, "drop", "a length > 0"),
@@ -171,7 +184,7 @@ def test_parse_profile_names_options_and_units():
     ("file:", {}, "profile", "file:PATH.csv"),
 ])
 def test_parse_profile_refuses_bad_input(spec, kw, param, fragment):
-    """Unknown names and options, missing or non-positive values (crown radius <= 0,
+    """Missing or non-positive values (crown radius <= 0,
     negative relief drop), a force where a length belongs: OutOfRangeError naming the
     parameter, the value and the valid range, in one line."""
     with pytest.raises(OutOfRangeError) as err:

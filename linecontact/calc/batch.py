@@ -283,7 +283,7 @@ def run_batch(args, argv, specs, options):
 
 def _col_name(field, si):
     u = render.unit(field, si)
-    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_")
+    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_").replace(" ", "_")
     return f"{field}_{u}"
 
 

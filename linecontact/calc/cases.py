@@ -166,7 +166,9 @@ def parse_cases(cells, n, label=option_name):
         u_given = np.array([c.strip() != "" for c in uniq], dtype=bool)
         u_values = np.full(len(uniq), np.nan)
         u_errors = [""] * len(uniq)
-        gi = np.flatnonzero(u_given)
+        words = np.array([c.strip().lower() in p.words for c in uniq], dtype=bool) \
+            if p.words else np.zeros(len(uniq), bool)
+        gi = np.flatnonzero(u_given & ~words)
         if gi.size:
             parsed, errs = parse_column(label(p.name), [uniq[i] for i in gi], p.kind,
                                         positive=p.positive, bounds=bounds_of(p))

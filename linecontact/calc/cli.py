@@ -266,10 +266,11 @@ def main(argv=None):
     except ValueError as exc:
         # InputError, BatchError (ours) or the library's OutOfRangeError
         from .._units import InputError
-        from ..validity import OutOfRangeError
+        from ..validity import CombinationError, OutOfRangeError, UnknownNameError
         from .batch import BatchError
 
-        if not isinstance(exc, (InputError, OutOfRangeError, BatchError)):
+        if not isinstance(exc, (InputError, OutOfRangeError, BatchError, CombinationError,
+                                UnknownNameError)):
             raise
         _error(str(exc))
         return 2

@@ -19,6 +19,8 @@ engineering unit) and each feature's ``fields``; :func:`all_fields` has them all
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from .feature import Field, flag_text
@@ -220,91 +222,166 @@ def _build(specs, R, L, E, first_only, default_key=None):
     return chosen
 
 
+def _spec_of(model):
+    """(text, key, options) of a built model (the standard set's: the options it was
+    built with, read back from its attributes)."""
+    options = {}
+    for name in _option_defaults(type(model)):
+        if hasattr(model, name):
+            options[name] = getattr(model, name)
+    return (model.label, model.key, options)
+
+
 # ---------------------------------------------------------------------------------------
 # evaluation
 
 
 class _Model:
-    """A model as the features see it: every attribute of the ContactModel, plus
-    :meth:`at`: the same law (key and options) at another effective radius (built once
-    per radius)."""
+    """A model as the features see it: every attribute of the contact's law (a
+    :class:`~linecontact.models.ContactModel`), plus ``contact``: the library's
+    :class:`~linecontact.contact.Contact` when the row's contact is composed (a profile,
+    a tilt, raceways; None for a plain straight contact)."""
 
-    def __init__(self, model, build):
-        self._model = model
-        self._build = build
-        self._at = {}
+    def __init__(self, law, contact=None):
+        self._law = law
+        self.contact = contact
 
     def __getattr__(self, name):
-        return getattr(self._model, name)
+        if name.startswith("__"):
+            raise AttributeError(name)
+        law = self._law
+        if law is None:
+            law = self.contact.law()  # raises CombinationError for a whole roller
+            self._law = law
+        return getattr(law, name)
 
-    def at(self, radius):
-        """The same model at effective radius `radius` [m]."""
-        radius = float(radius)
-        if radius not in self._at:
-            self._at[radius] = self._build(radius)
-        return self._at[radius]
 
+def _safe_evaluate(evaluate, label, given, values, notes, errors, idx):
+    """evaluate(given, values) -> dict of arrays; refused elements isolated by halving.
 
-def _safe_evaluate(model, given, values, notes, errors, idx):
-    """evaluate() on `values`; refused elements isolated by halving.
-
-    Returns a dict of arrays (NaN where refused); writes ``notes[idx[i]]`` (out of the
-    model's range) or ``errors[idx[i]]`` (any other exception) for refused elements.
+    Returns a dict of arrays (NaN where refused; ``solution`` an object array); writes
+    ``notes[idx[i]]`` (out of the model's range, a combination the library refuses, a
+    solver that did not converge) or ``errors[idx[i]]`` (any other exception).
     """
-    from ..validity import OutOfRangeError
+    import sys
+
+    from ..validity import CombinationError, OutOfRangeError
+
+    def converged(exc):
+        roller = sys.modules.get("linecontact.roller")  # imported only by a slice model
+        return roller is None or not isinstance(exc, roller.ConvergenceError)
 
     n = len(values)
-    out = {k: np.full(n, np.nan) for k in ("force", "depth", "stiffness", "contact_radius")}
+    out = {k: np.full(n, np.nan) for k in _NORMAL}
+    out["solution"] = np.full(n, None, dtype=object)
     out["force" if given == "load" else "depth"][:] = values  # given, even where refused
-    if not isinstance(model, Refused):
-        try:
-            model.check_applicable()  # refused for the whole cylinder: one message
-        except OutOfRangeError as exc:
-            model = Refused(model.label, exc)
-    if isinstance(model, Refused):
-        for i in idx:
-            notes[i] = str(model.exc)
-        return out
     stack = [(0, n)]
     while stack:
         lo, hi = stack.pop()
         try:
-            r = model.evaluate(**{("force" if given == "load" else "depth"): values[lo:hi]})
-        except OutOfRangeError as exc:
-            if hi - lo == 1:
-                notes[idx[lo]] = str(exc)
-            else:
-                mid = (lo + hi) // 2
-                stack += [(mid, hi), (lo, mid)]
-            continue
+            r = evaluate(given, values[lo:hi])
         except Exception as exc:  # noqa: BLE001 - reported in the row, never lost
+            said = isinstance(exc, (OutOfRangeError, CombinationError)) or not converged(exc)
+            if not said:
+                if hi - lo == 1:
+                    detail = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
+                    errors[idx[lo]] = (f"{label}: unexpected {type(exc).__name__}"
+                                       + (f": {detail}" if detail else ""))
+                else:
+                    mid = (lo + hi) // 2
+                    stack += [(mid, hi), (lo, mid)]
+                continue
             if hi - lo == 1:
-                detail = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
-                errors[idx[lo]] = (f"{model.label}: unexpected {type(exc).__name__}"
-                                   + (f": {detail}" if detail else ""))
+                text = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
+                notes[idx[lo]] = (str(exc) if converged(exc)
+                                  else f"{label}: not computed: {text}")
             else:
                 mid = (lo + hi) // 2
                 stack += [(mid, hi), (lo, mid)]
             continue
         for k in out:
-            out[k][lo:hi] = r[k]
+            v = r.get(k)
+            if v is not None:
+                out[k][lo:hi] = v
     return out
 
 
-def _contact_fields(r, R, L, E):
-    """Per-contact derived fields from an evaluate() result (arrays): b, p0, flags."""
+#: The normal-contact quantities the core keeps per row (NaN where not defined).
+_NORMAL = ("force", "depth", "stiffness", "contact_radius", "half_width", "peak_pressure",
+           "moment", "tilt", "tilt_stiffness")
+
+
+def _law_evaluator(model):
+    """evaluate(given, values) of a plain straight contact: the law on the whole array
+    (Hertz's half-width and p0 of the strip follow in _hertz, as in
+    linecontact.contact.Contact.normal)."""
+
+    def evaluate(given, values):
+        model.check_applicable()  # refused for the whole cylinder: one message
+        return model.evaluate(**{("force" if given == "load" else "depth"): values})
+
+    return evaluate
+
+
+def _hertz(r, R, L, E):
+    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force
+    (the given force also where the model refused the row: they do not depend on it)."""
     from ..classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
     ok = np.isfinite(F) & (F > 0)
-    b = np.full(F.shape, np.nan)
-    p0 = np.full(F.shape, np.nan)
     if ok.any():
-        b[ok] = hertz_half_width(F[ok], R, L, E)
-        p0[ok] = hertz_peak_pressure(F[ok], R, L, E)
-    r["half_width"] = b
-    r["peak_pressure"] = p0
-    return r
+        r["half_width"][ok] = hertz_half_width(F[ok], R, L, E)
+        r["peak_pressure"][ok] = hertz_peak_pressure(F[ok], R, L, E)
+
+
+def _contact_evaluator(contact):
+    """evaluate(given, values) of a composed contact: Contact.normal (one solve per
+    value for a slice model; the two contacts in series between raceways)."""
+
+    def evaluate(given, values):
+        if contact.raceways and not contact.sliced and np.ndim(values) > 0:
+            # one solution per value (a law between raceways solves arrays at once, but
+            # the features read each row's two contacts from its own solution)
+            parts = [evaluate(given, float(x)) for x in values]
+            return {k: np.concatenate([np.atleast_1d(np.asarray(p[k], dtype=object
+                                                                 if k == "solution"
+                                                                 else float))
+                                       for p in parts]) for k in parts[0]}
+        res = contact.normal(**{("force" if given == "load" else "depth"): values})
+        out = {k: getattr(res, k, None) for k in _NORMAL if k != "contact_radius"}
+        if contact.sliced:  # no Hertz strip: the slice model's own peak (p_max) says it
+            out["half_width"] = out["peak_pressure"] = None
+        if not contact.sliced and not contact.raceways:
+            law = contact.law()
+            out["contact_radius"] = law.contact_radius(res.depth)
+        sols = list(res.solutions)
+        if np.ndim(values) == 0:
+            out["solution"] = np.array(sols[:1] + [None], dtype=object)[:1]
+        elif len(sols) == len(values):
+            out["solution"] = np.array(sols + [None], dtype=object)[:-1]
+        elif len(sols) == 1:  # a law between raceways: one solution over the array
+            out["solution"] = np.array([sols[0]] * len(values) + [None], dtype=object)[:-1]
+        return {k: v for k, v in out.items() if v is not None}
+
+    return evaluate
+
+
+def _contact_label(contact, spec_text):
+    """A column-set label for a composed contact: the law's, or the slice method's with
+    the profile and the tilt."""
+    if contact.sliced:
+        name = {"profiled-roller": "Profiled roller",
+                "iso16281-slicing": "ISO/TS 16281 slicing"}.get(contact.model, spec_text)
+        tilt = contact.tilt
+        text = (", free tilt" if tilt == "free" else
+                f", tilt {tilt * 1e3:.4g} mrad" if tilt else "")
+        return f"{name} ({contact.profile.label}{text})"
+    if contact.raceways:
+        from ..models import get_model
+
+        return get_model(contact.model, 1.0, 1.0, 1.0, **contact.options).label
+    return contact.law().label
 
 
 class Results:
@@ -345,7 +422,7 @@ class Results:
         self.sets = [
             {"fields": {}, "note": np.full(n, "", dtype=object),
              "flags": np.full(n, "", dtype=object), "label": np.full(n, "", dtype=object),
-             "id": ""}
+             "id": "", "solution": np.full(n, None, dtype=object)}
             for _ in range(n_sets)
         ]
         for s in self.sets:
@@ -364,6 +441,44 @@ class Results:
         self.deviation = False
 
 
+def _core_parts(cases, i):
+    """The library parts of row i from the core inputs: Roller keywords, counter-body,
+    materials (:mod:`linecontact.contact`)."""
+    import math
+
+    from ..contact import Concave, Convex, Elastic, Flat
+
+    v, P = cases.values, cases.present
+    parts = {"radius": float(cases.radius[i]), "length": float(cases.length[i])}
+    if P["radius2"][i]:
+        r2 = float(v["radius2"][i])
+        parts["counterbody"] = Convex(r2) if r2 > 0 else Concave(-r2)
+    else:
+        parts["counterbody"] = Flat()
+    if P["estar"][i]:
+        parts["estar"] = float(v["estar"][i])
+    else:
+        parts["material1"] = (Elastic(float(v["modulus2"][i]), float(v["poisson2"][i]))
+                              if P["modulus2"][i] else Elastic(math.inf))
+        if P["modulus"][i]:
+            parts["material2"] = Elastic(float(v["modulus"][i]), float(v["poisson"][i]))
+    return parts
+
+
+def _build_contact(parts, key, options):
+    """A library Contact from the row's parts (core and features) and a model."""
+    from ..contact import Contact, Roller
+
+    p = dict(parts)
+    roller = Roller(p.pop("radius"), p.pop("length"), profile=p.pop("profile", None),
+                    crown_radius=p.pop("crown_radius", None), tilt=p.pop("tilt", 0.0))
+    counterbody = p.pop("counterbody")
+    if "estar" in p:
+        return Contact(roller, counterbody, estar=p["estar"], model=key, **options)
+    return Contact(roller, counterbody, p.get("material1"), p.get("material2"), model=key,
+                   **options)
+
+
 def compute(cases, errors, specs, *, first_only=False, progress=None, label=None):
     """Evaluate the selected models and the active features for every good row.
 
@@ -374,9 +489,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     errors : list of str
         Row errors so far (rows with one are skipped); unexpected exceptions are added.
     specs : list or None
-        From :func:`parse_model_option` (None: the standard set).
+        From :func:`parse_model_option` (None: the standard set, or the default set of
+        a feature that describes the contact, e.g. the profiled roller's).
     first_only : bool
-        Only the first model of the standard set (the default best estimate).
+        Only the first model of the set (the default best estimate).
     progress : callable, optional
         Called with the number of rows finished after each group.
     label : callable, optional
@@ -389,8 +505,36 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     from .feature import option_name
 
     n = len(errors)
+    active = cases.active()
+    composed = [(f, st) for f, st in active if getattr(st, "parts", None) is not None]
+    # rows whose contact a feature composes (profile, tilt, raceways): one integer code
+    # per distinct set of parts, so that they group with their own kind
+    codes = np.zeros(n)
+    parts_of = {}
     ok = np.array([not e for e in errors], dtype=bool)
-    key = np.stack([cases.radius_eff, cases.length, cases.estar], axis=1)
+    if composed:
+        seen = {}
+        for i in np.flatnonzero(ok):
+            extra = {}
+            for f, st in composed:
+                if st.rows[i]:
+                    extra.update(st.parts(i))
+            if extra:
+                key = tuple(sorted(extra.items()))
+                codes[i] = seen.setdefault(key, len(seen) + 1)
+                parts_of[i] = extra
+    v, P = cases.values, cases.present
+
+    def col(a):
+        a = np.asarray(a, dtype=float)
+        return np.where(np.isnan(a), -1.0, a)
+
+    key = np.stack([col(cases.radius_eff), col(cases.length), col(cases.estar), codes,
+                    col(cases.radius), col(np.where(P["radius2"], v["radius2"], np.nan)),
+                    col(np.where(P["modulus"], v["modulus"], np.nan)),
+                    col(np.where(P["poisson"], v["poisson"], np.nan)),
+                    col(np.where(P["modulus2"], v["modulus2"], np.nan)),
+                    col(np.where(P["poisson2"], v["poisson2"], np.nan))], axis=1)
     rows = np.flatnonzero(ok)
     if rows.size:
         k = key[rows]
@@ -403,10 +547,25 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     from ..models import DEFAULT_MODEL
 
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
+    default_specs = None if specs is not None else [_spec_of(m) for m in probe]
+    feature_sets = {}
+    for f, st in composed:
+        keys = getattr(st, "models", None)
+        if keys:
+            feature_sets[f.name] = [(k, k, {}) for k in (keys[:1] if first_only else keys)]
+    n_sets = len(probe)
+    if specs is None and feature_sets:
+        # every good row composed by a feature with its own default set: that set
+        covered = np.zeros(n, bool)
+        for f, st in composed:
+            if f.name in feature_sets:
+                covered |= st.rows
+        if np.all(covered[ok]):
+            n_sets = max(len(s) for s in feature_sets.values())
     # the default model alone when it heads the standard set (it does when installed)
     default_key = (DEFAULT_MODEL if specs is None and first_only
                    and probe[0].key == DEFAULT_MODEL else None)
-    results = Results(n, len(probe), errors, cases, label or option_name)
+    results = Results(n, n_sets, errors, cases, label or option_name)
     for s, m in zip(results.sets, probe):
         s["id"] = model_id(m)
     reference = specs is not None and not first_only
@@ -416,8 +575,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
 
         first = standard_models(1.0, 1.0, 1.0)[0]
         ref_key = DEFAULT_MODEL if first.key == DEFAULT_MODEL else None
-    results.deviation = len(probe) > 1 or reference
-    active = cases.active()
+    results.deviation = n_sets > 1 or reference
     whole = cases.whole()
     produced = {}
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
@@ -426,19 +584,31 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
         done = 0
         for g in groups:
             i0 = g[0]
-            R, L, E = cases.radius_eff[i0], cases.length[i0], cases.estar[i0]
             try:
-                sets = _build(specs, R, L, E, first_only, default_key)
-                refs = _build(None, R, L, E, True, ref_key) if reference else None
+                if i0 in parts_of:
+                    sets, refs = _composed_sets(cases, i0, parts_of[i0], specs,
+                                                default_specs, feature_sets, composed,
+                                                reference, errors, g)
+                    if sets is None:
+                        continue
+                else:
+                    R, L, E = cases.radius_eff[i0], cases.length[i0], cases.estar[i0]
+                    sets = [(m, None) for m in _build(specs, R, L, E, first_only,
+                                                      default_key)]
+                    refs = ([(m, None) for m in _build(None, R, L, E, True, ref_key)]
+                            if reference else None)
             except Exception as exc:  # noqa: BLE001 - reported in the rows, never lost
                 for i in g:
                     errors[i] = f"unexpected {type(exc).__name__}: {exc}"
                 continue
-            _evaluate_group(results, g, cases, active, whole, sets, refs,
-                            (specs, L, E, first_only, default_key), produced)
+            _evaluate_group(results, g, cases, active, whole, sets, refs, produced)
             done += len(g)
             if progress is not None:
                 progress(done)
+    names = set().union(*(s["fields"] for s in results.sets))
+    for s in results.sets:  # a set some groups do not have: its values are none there
+        for name in names - set(s["fields"]):
+            s["fields"][name] = np.full(n, np.nan)
     _no_overflow(results)
     ok = np.array([not e for e in errors], dtype=bool)
     results.whole = bool(np.any(whole & ok))
@@ -455,6 +625,47 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     return results
 
 
+def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, composed,
+                   reference, errors, g):
+    """(sets, refs) of a composed contact: one library Contact per model of the set
+    (a Refused stand-in where the library refuses the model for this contact), or
+    (None, None) with the rows' errors set when the library refuses the combination
+    whatever the model (raceways that do not fit, ...)."""
+    from ..validity import CombinationError, OutOfRangeError
+
+    parts = dict(_core_parts(cases, i0), **extra)
+    try:
+        default = _build_contact(parts, None, {})  # the combination, its default model
+    except (CombinationError, OutOfRangeError) as exc:
+        for i in g:
+            errors[i] = str(exc)
+        return None, None
+    chosen = specs
+    if chosen is None:
+        # the library's default decides: a slice model (profile, tilt) -> the feature's
+        # set; a straight law (e.g. a straight roller whose free tilt is 0 by symmetry)
+        # -> the standard set
+        chosen = default_specs
+        for f, st in composed:
+            if f.name in feature_sets and st.rows[i0] and default.sliced:
+                chosen = feature_sets[f.name]
+    sets = []
+    for text, key, options in chosen:
+        try:
+            c = _build_contact(parts, key, options)
+        except (CombinationError, OutOfRangeError) as exc:
+            sets.append((Refused(text, exc), None))
+            continue
+        sets.append((c, text))
+    refs = None
+    if reference:
+        try:
+            refs = [(_build_contact(parts, None, {}), "default")]
+        except (CombinationError, OutOfRangeError) as exc:
+            refs = [(Refused("default", exc), None)]
+    return sets, refs
+
+
 def _no_overflow(results):
     """No 'inf' in any output: a result beyond the double range, or one whose value in
     the engineering unit of the table is (e.g. 1e305 m in um), is not shown ('-') and
@@ -462,6 +673,8 @@ def _no_overflow(results):
     fields = all_fields()
     for s in results.sets:
         for name, arr in s["fields"].items():
+            if arr.dtype.kind != "f":
+                continue
             factor = max(fields[name].factor, 1.0) if name in fields else 1.0
             with np.errstate(over="ignore", invalid="ignore"):
                 bad = np.isinf(arr) | np.isinf(arr * factor)
@@ -479,33 +692,48 @@ class _Sink:
         pass
 
 
-def _evaluate_set(model, g, cases, active, whole, notes, errors, produced=None):
-    """One model on the rows g of one contact: the core fields, the features' columns
-    (name -> array over g) and the flags (list over g)."""
+def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
+    """One model (a law, or a composed Contact) on the rows g of one contact: the core
+    fields, the features' columns (name -> array over g) and the flags (list over g)."""
+    obj, text = item
     given = cases.given[g]
     values = cases.value[g]
-    r = {k: np.full(len(g), np.nan) for k in ("force", "depth", "stiffness",
-                                              "contact_radius")}
-    for which in ("load", "depth"):
-        sel = np.flatnonzero(given == which)
-        if sel.size:
-            rr = _safe_evaluate(model._model if isinstance(model, _Model) else model,
-                                which, values[sel], notes, errors, g[sel])
-            for k in r:
-                r[k][sel] = rr[k]
-    R, L, E = cases.radius_eff[g[0]], cases.length[g[0]], cases.estar[g[0]]
-    r = _contact_fields(r, R, L, E)
+    refused = isinstance(obj, Refused)
+    if refused:
+        model, label = None, obj.label
+    elif text is None:  # a plain law
+        model, label = _Model(obj), obj.label
+        evaluate = _law_evaluator(obj)
+    else:
+        model, label = _Model(None, obj), _contact_label(obj, text)
+        evaluate = _contact_evaluator(obj)
+    r = {k: np.full(len(g), np.nan) for k in _NORMAL}
+    r["solution"] = np.full(len(g), None, dtype=object)
+    if refused:
+        for i in g:
+            notes[i] = str(obj.exc)
+    else:
+        for which in ("load", "depth"):
+            sel = np.flatnonzero(given == which)
+            if sel.size:
+                rr = _safe_evaluate(evaluate, label, which, values[sel], notes, errors,
+                                    g[sel])
+                for k in r:
+                    r[k][sel] = rr[k]
+    L = cases.length[g[0]]
+    if text is None:  # a plain straight contact (or its refused stand-in)
+        _hertz(r, cases.radius_eff[g[0]], L, cases.estar[g[0]])
     flags = [""] * len(g)
     w = whole[g]
     for j in np.flatnonzero(~w):
-        flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
-    if isinstance(model, Refused):
-        return r, flags
+        flags[j] = flag_text(r["depth"][j], r["half_width"][j], cases.radius_eff[g[0]], L)
+    if refused:
+        return r, flags, label, obj
     for f, st in active:
-        sel = np.flatnonzero(st.rows[g])
+        sel = np.flatnonzero(st.rows[g] & np.isfinite(r["force"]) & np.isfinite(r["depth"]))
         if not sel.size:
             continue
-        normal = {k: r[k][sel] for k in ("force", "depth", "stiffness")}
+        normal = {k: r[k][sel] for k in r}
         cols = f.columns(model, g[sel], normal, st)
         for name, arr in cols.items():
             if name == "flags":
@@ -518,11 +746,10 @@ def _evaluate_set(model, g, cases, active, whole, notes, errors, produced=None):
             r[name][sel] = arr
             if produced is not None:
                 produced[name] = True
-    return r, flags
+    return r, flags, label, obj
 
 
-def _evaluate_group(results, g, cases, active, whole, sets, refs, build, produced):
-    specs, L, E, first_only, default_key = build
+def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
     errors = results.errors
     given = cases.given[g]
     w = whole[g]
@@ -531,11 +758,6 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, build, produce
         if getattr(st, "whole", None) is not None:
             compared = {"name": st.compared, "rows": st.whole[g]}
 
-    def wrap(m, j):
-        if isinstance(m, Refused):
-            return m
-        return _Model(m, lambda R: _build(specs, R, L, E, first_only, default_key)[j])
-
     def quantity(r):
         q = np.where(given == "load", r["depth"], r["force"])
         if compared:
@@ -543,19 +765,28 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, build, produce
         return q
 
     per_set = []
-    for j, m in enumerate(sets):
+    for j, item in enumerate(sets[:len(results.sets)]):
         s = results.sets[j]
-        model = wrap(m, j)
-        r, flags = _evaluate_set(model, g, cases, active, whole, s["note"], errors, produced)
+        r, flags, label, obj = _evaluate_set(item, g, cases, active, whole, s["note"],
+                                             errors, produced)
         per_set.append(r)
-        mid = model_id(m)
-        if mid not in results.models:
-            results.models[mid] = m
-        if s.get("model") is None:  # the first contact's model: the JSON entry of a set
-            s["model"] = m
-        s["label"][g] = m.label
+        if not s.get("named"):  # the column suffix of the set: its first model's
+            s["id"] = (model_id(obj) if item[1] is None and not isinstance(obj, Refused)
+                       else re.sub(r"[^a-z0-9.]+", "-", str(item[1] or obj.label).lower())
+                       .strip("-"))
+            s["named"] = True
+        if not isinstance(obj, Refused) and item[1] is None:
+            mid = model_id(obj)
+            if mid not in results.models:
+                results.models[mid] = obj
+            if s.get("model") is None:  # the first contact's model: its JSON entry
+                s["model"] = obj
+        s["label"][g] = label
         f = s["fields"]
         for name, arr in r.items():
+            if name == "solution":
+                s["solution"][g] = arr
+                continue
             if name not in f:
                 f[name] = np.full(len(errors), np.nan)
             f[name][g] = arr
@@ -567,10 +798,8 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, build, produce
     ref_q = None
     if refs is not None:
         sink = _Sink()  # the reference model's own notes are not reported
-        model = _Model(refs[0], lambda R: _build(None, R, L, E, True, None)[0]) \
-            if not isinstance(refs[0], Refused) else refs[0]
         whole_features = [(f, st) for f, st in active if getattr(st, "whole", None) is not None]
-        rr, _ = _evaluate_set(model, g, cases, whole_features, whole, sink, sink)
+        rr, _, _, _ = _evaluate_set(refs[0], g, cases, whole_features, whole, sink, sink)
         ref_q = quantity(rr)
     elif len(per_set) > 1:
         ref_q = quantity(per_set[0])

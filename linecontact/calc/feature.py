@@ -35,21 +35,30 @@ How to add a feature (one module + one registration line)
            rows of ``mask`` with one line (the parameter as the user wrote it, its
            value as typed, the valid range, the reason); ``fail.label(name)`` is the
            parameter as written (``--tilt`` or the column ``tilt``), ``fail.cell(name,
-           i)`` its text in row i, ``fail.batch`` True for a CSV batch. Return None
+           i)`` its text in row i, ``fail.batch`` True for a CSV batch,
+           ``fail.message(mask, text)`` refuses with a library's own one-line message
+           (a :class:`~linecontact.validity.CombinationError`). Return None
            when none of the feature's inputs is given (the feature is then inactive and
            costs nothing: import heavy modules inside ``columns``/``blocks``), else a
            :class:`State` whose ``rows`` marks where it is active.
        ``columns(model, rows, normal, state) -> dict``
            For the indices ``rows`` (int array of case rows, all of one contact and one
-           model), ``model`` the :class:`linecontact.models.ContactModel` of that
-           contact (``model.radius``, ``model.length``, ``model.estar``, every method;
-           ``model.at(radius)`` is the same law, key and options, at another effective
-           radius, e.g. a second contact of the same roller) and ``normal``
-           the normal-contact results over ``rows`` (``force``, ``depth``,
-           ``stiffness`` [SI arrays, NaN where the model refused]): return name ->
-           array over ``rows`` for the names of ``fields`` it computes, plus optionally
-           ``"flags"``: a sequence of str (one per row, ``""`` for none) added to the
-           rows' note cell. Called once per contact group and model set.
+           model, each with a computed normal state): ``model`` is that contact's law, a
+           :class:`linecontact.models.ContactModel` (``model.radius``,
+           ``model.length``, ``model.estar``, every method; a profiled roller's law is
+           its coupled-slice F(d)), and ``model.contact`` the library's
+           :class:`linecontact.contact.Contact` where a feature composed the contact (a
+           profile, a tilt, raceways; None for a plain straight contact; a whole
+           roller between raceways has no single law: use ``model.contact``).
+           ``normal``: the normal state over ``rows``, SI arrays ``force``, ``depth``,
+           ``stiffness``, ``half_width``, ``peak_pressure``, ``contact_radius``,
+           ``moment``, ``tilt``, ``tilt_stiffness`` (NaN where not defined), and
+           ``solution`` (object array: the library's
+           :class:`~linecontact.roller.RollerSolution` or
+           :class:`~linecontact.raceway.RacewaySolution` of the row, else None).
+           Return name -> array over ``rows`` for the names of ``fields`` it computes,
+           plus optionally ``"flags"``: a sequence of str (one per row, ``""`` for
+           none) added to the rows' note cell. Called once per contact group and model.
        ``blocks(state, results) -> list[Block]``
            Extra tables printed after the main one (``[]`` for none), e.g. the profiled
            roller's rows. ``results.errors`` is the list of row errors: a one-case
@@ -117,6 +126,9 @@ class Parameter:
     sweep : bool
         May be a sweep ``START:STOP:N`` on the command line (every numeric parameter
         may: two sweeps give the grid).
+    words : tuple of str
+        Words accepted besides a number (e.g. ``("free",)`` for the tilt): such a cell
+        is given (``present``) with the value NaN; ``fail.cell(name, i)`` has the word.
     """
 
     name: str
@@ -126,6 +138,7 @@ class Parameter:
     positive: bool = True
     bounds: str | None = None
     sweep: bool = True
+    words: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -159,6 +172,15 @@ class State:
         the field named by ``compared``.
     ``compared``
         With ``whole``: the name of the feature's field compared between models.
+    ``parts``
+        Callable i -> dict: the feature's parts of the library contact of row i
+        (:class:`linecontact.contact.Contact`): Roller keywords (``profile``,
+        ``crown_radius``, ``tilt``) or ``counterbody`` (e.g. a
+        :class:`~linecontact.raceway.Raceways`). Rows with parts are evaluated as that
+        composed contact (hashable values: rows with equal parts share one).
+    ``models``
+        Tuple of model keys: the default model set of the feature's rows (instead of
+        the standard set of a straight cylinder), e.g. the slice models.
     """
 
     def __init__(self, rows, **attrs):
@@ -221,6 +243,13 @@ class Fail:
         self.cells = cells
         self.label = label
         self.batch = batch
+
+    def message(self, mask, text):
+        """Refuse the rows of `mask` with `text` as it is (a library's one-line
+        refusal, e.g. a CombinationError naming its parameters and values)."""
+        for i in np.flatnonzero(mask):
+            if not self.errors[i]:
+                self.errors[i] = str(text)
 
     def cell(self, name, i):
         """The text of parameter `name` in row i, as typed ("" if not given)."""

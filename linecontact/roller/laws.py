@@ -37,6 +37,17 @@ class _SolvedRoller(ContactModel):
         self.tilt = TILT_RANGE.check(tilt).item()
 
     @property
+    def first_contact_depth(self):
+        """Depth of the roller's centre at first contact at this tilt [m]."""
+        from ..profiles import roller_drop
+
+        if isinstance(self, ProfiledRollerModel):
+            return self.roller.first_contact_depth(self.tilt)
+        L, n = self.length, self.n_slices
+        x = -L / 2 + L / n * (np.arange(n) + 0.5)
+        return float(np.min(roller_drop(self.axial_profile, L, x) - x * np.tan(self.tilt)))
+
+    @property
     def label(self):
         s = f"{self._name} ({self.axial_profile.label}"
         if self.tilt:

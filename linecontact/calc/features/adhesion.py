@@ -64,11 +64,17 @@ def resolve(values, present, fail):
     rows = P["work_of_adhesion"]
     if not rows.any():
         return None
-    fail(rows & (P["inner_raceway"] | P["outer_raceway"]), "work_of_adhesion",
+    raceways = np.zeros_like(rows)
+    for nm in ("inner_raceway", "outer_raceway", "inner_raceway_diameter",
+               "outer_raceway_diameter"):
+        if nm in P:
+            raceways |= P[nm]
+    fail(rows & raceways, "work_of_adhesion",
          "one contact (without the raceways)", "not available for a whole roller")
     visco = np.zeros_like(rows)
     for nm in ("instantaneous_modulus", "long_term_modulus", "relaxation_time", "prony"):
-        visco |= P[nm]
+        if nm in P:
+            visco |= P[nm]
     fail(rows & visco, "work_of_adhesion", "an elastic body (without "
          f"{label('instantaneous_modulus')}, {label('prony')}, ...)",
          "a viscoelastic pull-off depends on the speed of the receding contact edge, "

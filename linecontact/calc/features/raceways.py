@@ -1,19 +1,21 @@
-"""Feature: a whole roller between two raceways (``--inner-raceway``, ``--outer-raceway``).
+"""Feature: a whole roller between two raceways (``--inner-raceway``,
+``--outer-raceway``, or their diameters; ``--misalignment``).
 
-The force F [N] passes through two contacts in series: roller on the inner raceway
-(1/R = 1/R1 + 1/Ri) and roller in the outer raceway (1/R = 1/R1 - 1/Ro), both of the
-roller's length L and the same E*. The roller's deflection is the sum of the two contact
-depths, delta = d_i(F) + d_o(F), and its stiffness the series value
-k = 1 / (1/k_i + 1/k_o) [N/m], printed in their own columns (``roller_deflection``,
-``roller_stiffness``) apart from the per-contact depth of a single contact. Each contact
-is a cylinder of the effective radius on a half-space, Hertz's reduction for two
-parallel cylinders (Johnson 1985, Sec. 4.2) applied to the finite-length models.
+The roller and its two contacts are :func:`linecontact.raceway.roller_between_raceways`
+(through :class:`linecontact.contact.Contact` with :class:`~linecontact.raceway.Raceways`):
+the force F [N] passes through the inner contact (1/R = 1/R1 + 1/Ri) and the outer one
+(1/R = 1/R1 - 1/Ro) in series, the roller deflection (ring approach) is the sum of their
+depths and its stiffness the series value, for any contact law; a profiled or tilted
+roller (``--crown-radius``, ``--profile``, ``--tilt``, ``--tilt free`` for moment
+equilibrium) is solved by coupled slices on both contacts. A pair of raceways that does
+not fit the roller (Ro - Ri not the roller diameter within 1 %) is refused with the
+numbers.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State, flag_text
+from ..feature import Field, Parameter, State
 
 __all__: list = []
 
@@ -24,6 +26,13 @@ parameters = (
     Parameter("inner_raceway", "length", "radius Ri of the inner raceway (convex)", group),
     Parameter("outer_raceway", "length", "radius Ro of the outer raceway (concave; "
               "give it positive)", group),
+    Parameter("inner_raceway_diameter", "length", "diameter 2 Ri of the inner raceway "
+              "(as data sheets give it; instead of --inner-raceway)", group),
+    Parameter("outer_raceway_diameter", "length", "diameter 2 Ro of the outer raceway "
+              "(instead of --outer-raceway)", group),
+    Parameter("misalignment", "angle", "tilt of the outer ring against the inner ring "
+              "in the roller's plane, e.g. 0.5mrad (needs a profiled or tilted roller "
+              "model: coupled slices)", group, positive=False),
 )
 
 fields = {
@@ -31,88 +40,106 @@ fields = {
     "roller_stiffness": Field("k roller", "N/m", "N/um", 1e-6),
     "depth_inner": Field("d inner", "m", "um", 1e6),
     "depth_outer": Field("d outer", "m", "um", 1e6),
-    "peak_pressure_inner": Field("p0 inner", "Pa", "MPa", 1e-6),
-    "peak_pressure_outer": Field("p0 outer", "Pa", "MPa", 1e-6),
+    "peak_pressure_inner": Field("p inner", "Pa", "MPa", 1e-6),
+    "peak_pressure_outer": Field("p outer", "Pa", "MPa", 1e-6),
+    "clearance": Field("clearance", "m", "um", 1e6),
 }
 
 notes = {
-    "roller": "whole roller: roller_deflection = d(inner contact) + d(outer contact) at "
-              "the same force, roller_stiffness the two contacts in series; depth_inner "
-              "and depth_outer are the two contacts' own depths (what a single-contact "
-              "row reports as its depth).",
+    "roller": "whole roller (linecontact.raceway): roller_deflection = d(inner contact) + "
+              "d(outer contact) at the same force (the ring approach at the roller's "
+              "centre), roller_stiffness the two contacts in series; depth_inner and "
+              "depth_outer are the two contacts' own depths; p inner/outer: Hertz p0 of "
+              "each strip for a law, the slice model's peak for a profiled roller; "
+              "clearance: Ro - Ri - 2 R1.",
 }
 
 
 def resolve(values, present, fail):
-    """Both raceways or neither; not with --radius2 or --depth; the roller fits."""
+    """Each raceway as a radius or a diameter, both or neither; not with --radius2; the
+    pair must fit the roller (linecontact.raceway.check_fit)."""
+    from ...raceway import check_fit
+    from ...validity import CombinationError
+
     P, v, label = present, values, fail.label
-    rows = P["inner_raceway"] | P["outer_raceway"]
+    given = {s: P[f"{s}_raceway"] | P[f"{s}_raceway_diameter"] for s in ("inner", "outer")}
+    rows = given["inner"] | given["outer"] | P["misalignment"]
     if not rows.any():
         return None
-    both = f"{label('inner_raceway')} and {label('outer_raceway')} together"
-    fail(P["inner_raceway"] & ~P["outer_raceway"], "outer_raceway", both,
+    radii = {}
+    for side in ("inner", "outer"):
+        r, d = f"{side}_raceway", f"{side}_raceway_diameter"
+        fail(P[r] & P[d], d, f"either {label(r)} or {label(d)}, not both",
+             f"conflicts with {label(r)}")
+        radii[side] = np.where(P[r], v[r], v[d] / 2)
+    both = (f"{label('inner_raceway')} and {label('outer_raceway')} (or their diameters) "
+            "together")
+    fail(given["inner"] & ~given["outer"], "outer_raceway", both,
          f"missing (needed with {label('inner_raceway')})")
-    fail(P["outer_raceway"] & ~P["inner_raceway"], "inner_raceway", both,
+    fail(given["outer"] & ~given["inner"], "inner_raceway", both,
          f"missing (needed with {label('outer_raceway')})")
+    fail(P["misalignment"] & ~(given["inner"] & given["outer"]), "misalignment", both,
+         "no raceways given")
     fail(rows & P["radius2"], "radius2",
          f"either {label('radius2')} (one contact) or the raceways (a whole roller)",
          "conflicts with the raceways")
-    fail(rows & P["depth"], "depth",
-         f"{label('load')} with the raceways (the two contacts share the force)",
-         "a depth cannot be split between two contacts")
+    with np.errstate(invalid="ignore"):
+        fail(P["misalignment"] & ~(np.abs(v["misalignment"]) < 0.1), "misalignment",
+             "(-0.1, 0.1) rad", "the roller models linearise the tilt (small angles)")
     R1 = v["radius"]
+    for i in np.flatnonzero(given["inner"] & given["outer"]):
+        try:
+            check_fit(float(R1[i]), float(radii["inner"][i]), float(radii["outer"][i]))
+        except CombinationError as exc:  # the library's reason, said for the options
+            name = "outer_raceway" if P["outer_raceway"][i] else "outer_raceway_diameter"
+            fail(np.arange(len(rows)) == i, name,
+                 f"{label('outer_raceway')} - {label('inner_raceway')} = the roller "
+                 "diameter 2 R1 (+ a radial clearance within 1 % of it)", exc.reason)
+        except ValueError:
+            pass  # a value out of range: its own message comes from the core
     with np.errstate(invalid="ignore", divide="ignore"):
-        outer_ok = v["outer_raceway"] > R1
-        fail(rows & P["outer_raceway"] & ~outer_ok, "outer_raceway",
-             f"{label('outer_raceway')} > roller radius",
-             "the roller does not fit inside the outer raceway")
-        r_in = 1 / (1 / R1 + 1 / v["inner_raceway"])
-        r_out = 1 / (1 / R1 - 1 / v["outer_raceway"])
-    return State(rows, radius_eff=np.where(rows, r_in, np.nan), radius_outer=r_out,
-                 whole=rows, compared="roller_deflection")
+        r_in = 1 / (1 / R1 + 1 / radii["inner"])
+    psi = np.where(P["misalignment"], v["misalignment"], 0.0)
+    state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
+                  compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],
+                  psi=psi)
+    state.parts = lambda i: _parts(state, i)
+    return state
+
+
+def _parts(state, i):
+    from ...raceway import Raceways
+
+    return {"counterbody": Raceways(float(state.inner[i]), float(state.outer[i]),
+                                    misalignment=float(state.psi[i]))}
 
 
 def columns(model, rows, normal, state):
-    """The whole roller: the core evaluated the inner contact; the outer one here."""
-    from ...classical import hertz_half_width, hertz_peak_pressure
-
-    R_out = float(state.radius_outer[rows[0]])
-    outer = model.at(R_out)
-    F = normal["force"]
-    ok = np.isfinite(F) & (F > 0)
-    d_out = np.full(F.shape, np.nan)
-    k_out = np.full(F.shape, np.nan)
-    flags = [""] * len(rows)
-    from ...validity import OutOfRangeError
-
-    if ok.any():
-        try:
-            r = outer.evaluate(force=F[ok])
-            d_out[ok], k_out[ok] = r["depth"], r["stiffness"]
-        except OutOfRangeError as exc:
-            for j in np.flatnonzero(ok):
-                flags[j] = f"outer contact: {str(exc).split('; ')[0]}"
-    L, E = model.length, model.estar
-    with np.errstate(divide="ignore", invalid="ignore"):
-        F1 = np.where(ok, F, 1.0)
-        p_in = np.where(ok, hertz_peak_pressure(F1, model.radius, L, E), np.nan)
-        p_out = np.where(ok, hertz_peak_pressure(F1, R_out, L, E), np.nan)
-        b_in = np.where(ok, hertz_half_width(F1, model.radius, L, E), np.nan)
-        b_out = np.where(ok, hertz_half_width(F1, R_out, L, E), np.nan)
-        for j in range(len(rows)):
-            text = "; ".join(t for t in (
-                flag_text(normal["depth"][j], b_in[j], model.radius, L, " (inner)"),
-                flag_text(d_out[j], b_out[j], R_out, L, " (outer)"), flags[j]) if t)
-            flags[j] = text
-        return {
-            "roller_deflection": normal["depth"] + d_out,
-            "roller_stiffness": 1 / (1 / normal["stiffness"] + 1 / k_out),
-            "depth_inner": normal["depth"],
-            "depth_outer": d_out,
-            "peak_pressure_inner": p_in,
-            "peak_pressure_outer": p_out,
-            "flags": flags,
-        }
+    """The whole roller's columns from its solution (linecontact.raceway.RacewaySolution)."""
+    n = len(rows)
+    out = {k: np.full(n, np.nan) for k in fields}
+    out["roller_deflection"] = normal["depth"]
+    out["roller_stiffness"] = normal["stiffness"]
+    flags = [""] * n
+    for j, sol in enumerate(normal["solution"]):
+        if sol is None:
+            continue
+        out["depth_inner"][j] = sol.depth_inner
+        out["depth_outer"][j] = sol.depth_outer
+        for side in ("inner", "outer"):
+            p = getattr(sol, f"peak_pressure_{side}")
+            if p is not None:
+                out[f"peak_pressure_{side}"][j] = p
+            else:
+                flags[j] = "; ".join(t for t in (flags[j], f"p {side}: singular at the "
+                                                 "loaded end (edge loading)") if t)
+        # Ro - Ri - 2 R1 of a pair that fits exactly: rounding noise printed as 0
+        out["clearance"][j] = 0.0 if abs(sol.clearance) < 1e-9 * sol.radius_outer \
+            else sol.clearance
+        if sol.notes:
+            flags[j] = "; ".join([t for t in (flags[j],) if t] + list(sol.notes))
+    out["flags"] = flags
+    return out
 
 
 def blocks(state, results):

@@ -111,6 +111,9 @@ def columns(model, rows, normal, state):
     sel = np.flatnonzero(state.friction_given[rows] & ok)
     if not sel.size:
         return out
+    if model.contact is not None:  # a composed contact: the library's own tangential law
+        _composed(model.contact, rows, sel, F, state, out, note)
+        return out
     r = rows[sel]
     gstar = np.atleast_1d(tg.effective_shear_modulus(state.e1[r], state.nu1[r],
                                                      state.e2[r], state.nu2[r]))
@@ -160,6 +163,34 @@ def columns(model, rows, normal, state):
                                      np.abs(frac[partial][good]))
             out[f"shift_{direction}"][s3[good]] = u
     return out
+
+
+def _composed(contact, rows, sel, F, state, out, note):
+    """k_t, Q/(mu F) and the shift of a composed contact (a profiled or tilted roller):
+    :meth:`linecontact.contact.Contact.tangential`, the MDR on the contact's own F(d);
+    the BEM table's across/along values are for a straight, aligned cylinder only."""
+    from ...validity import CombinationError, OutOfRangeError
+
+    for j in sel:
+        i = rows[j]
+        Q = float(state.tangential_load[i]) if state.loaded[i] else None
+        try:
+            t = contact.tangential(float(state.friction[i]), force=float(F[j]),
+                                   tangential_force=Q)
+        except (CombinationError, OutOfRangeError) as exc:
+            note(j, f"kt: {short(str(exc))}")
+            continue
+        out["kt_mdr"][j] = t.stiffness
+        note(j, "kt across/along: the BEM table is for a straight, aligned cylinder")
+        if Q is None:
+            continue
+        out["tangential_load"][j] = Q
+        out["slip_fraction"][j] = np.sign(Q) * t.slip_fraction
+        if t.shift is not None:
+            out["shift_mdr"][j] = t.shift
+        note(j, {"gross slip": "gross slip: |Q| >= mu F, the contact slides (no static "
+                 "shift)" if t.shift is None else "gross slip onset: |Q| = mu F"}.get(
+                     str(t.state), str(t.state)))
 
 
 def _slip_correction(model, direction, depth, gstar, q):

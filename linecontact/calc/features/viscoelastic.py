@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State, each, short
+from ..feature import Field, Parameter, State, short
 
 __all__: list = []
 
@@ -53,22 +53,6 @@ notes = {
              "exact while the contact grows), d(t) = F1^-1(F J*(t)); d(inf): long-term "
              "depth; the other columns are the instantaneous response (E* from E0).",
 }
-
-
-class _Material:
-    """Creep function of the effective modulus: (1 - nu1^2) J1(t) + (1 - nu2^2)/E2."""
-
-    def __init__(self, body, poisson, modulus2, poisson2):
-        self.body = body
-        self.factor = 1.0 - poisson ** 2
-        self.rigid = 0.0 if not np.isfinite(modulus2) else (1.0 - poisson2 ** 2) / modulus2
-
-    def creep(self, t):
-        return self.factor * np.asarray(self.body.creep(t)) + self.rigid
-
-    @property
-    def long_term_compliance(self):
-        return self.factor / self.body.long_term + self.rigid
 
 
 def resolve(values, present, fail):
@@ -154,16 +138,25 @@ def resolve(values, present, fail):
                 files[path] = ("a readable CSV file (tau_s, E_Pa, '# E_inf: VALUE')",
                                f"not a usable path ({exc})")
         store(files[path], i, "prony")
-    return State(visco, modulus=E0, bodies=bodies, time=v["time"], timed=P["time"],
-                 loaded=P["load"], nu1=v["poisson"],
-                 e2=np.where(P["modulus2"], v["modulus2"], np.inf),
-                 nu2=np.where(P["poisson2"], v["poisson2"], 0.0),
-                 any_time=bool(P["time"].any()))
+    state = State(visco, modulus=E0, bodies=bodies, time=v["time"], timed=P["time"],
+                  loaded=P["load"], nu1=v["poisson"], any_time=bool(P["time"].any()))
+    state.parts = lambda i: _parts(state, i)
+    return state
+
+
+def _parts(state, i):
+    """The viscoelastic second body of row i (the counter-body's material)."""
+    from ...contact import Viscoelastic
+
+    if state.bodies[i] is None:
+        return {}
+    return {"material2": Viscoelastic(state.bodies[i], float(state.nu1[i]))}
 
 
 def columns(model, rows, normal, state):
-    """d(inf) and, with --time, d(t) under the held force, for the rows of one contact."""
-    from ...viscoelastic import step_creep_depth
+    """d(inf) and, with --time, d(t) under the held force, for the rows of one contact:
+    :meth:`linecontact.contact.Contact.creep` (Lee & Radok) of the composed contact."""
+    from ...validity import CombinationError, OutOfRangeError
 
     n = len(rows)
     out = {"depth_long_term": np.full(n, np.nan)}
@@ -171,41 +164,40 @@ def columns(model, rows, normal, state):
         out.update(time=np.full(n, np.nan), creep_depth=np.full(n, np.nan))
     flags = [""] * n
     out["flags"] = flags
-    F, d = normal["force"], normal["depth"]
-    ok = np.isfinite(d) & (d > 0) & np.isfinite(F)
-    # creep under a held force (with a given depth the force would relax instead)
-    vis = np.array([state.bodies[i] is not None for i in rows], bool) & ok \
-        & state.loaded[rows]
-    keys = {}  # rows with the same body and second-body constants: evaluated together
-    for j in np.flatnonzero(vis):
-        i = rows[j]
-        keys.setdefault((id(state.bodies[i]), state.nu1[i], state.e2[i], state.nu2[i]),
-                        []).append(j)
-
-    def note(j, text):
-        if text:
-            flags[j] = "; ".join(t for t in (flags[j], text) if t)
-
-    for (_, nu1, e2, n2), js in keys.items():
-        js = np.array(js)
-        mat = _Material(state.bodies[rows[js[0]]], nu1, e2, n2)
-        sub = [""] * js.size
-        out["depth_long_term"][js] = each(lambda ii: model.depth(
-            F[js][ii] * mat.long_term_compliance * model.estar), np.arange(js.size), sub)
-        for j, t in zip(js, sub):
-            note(j, _creep_note("d(inf)", "E*_0/E*_inf", t))
-        timed = state.timed[rows[js]]
-        if timed.any():
-            jt = js[timed]
-            t_ = state.time[rows[jt]]
-            out["time"][jt] = t_
-            sub = [""] * jt.size
-            out["creep_depth"][jt] = each(
-                lambda ii: step_creep_depth(model, mat, F[jt][ii], t_[ii]),
-                np.arange(jt.size), sub)
-            for j, t in zip(jt, sub):
-                note(j, _creep_note("d(t)", "E*_0 J*(t)", t))
+    contact = model.contact
+    if contact is None:
+        return out
+    F = normal["force"]
+    for j, i in enumerate(rows):
+        # creep under a held force (with a given depth the force would relax instead)
+        if state.bodies[i] is None or not state.loaded[i]:
+            continue
+        notes = []
+        if state.timed[i]:
+            t = float(state.time[i])
+            out["time"][j] = t
+            try:
+                out["creep_depth"][j] = _creep_only(contact, t, float(F[j]))
+            except (CombinationError, OutOfRangeError) as exc:
+                notes.append(_creep_note("d(t)", "E*_0 J*(t)", str(exc)))
+        try:
+            out["depth_long_term"][j] = contact.creep([0.0], force=float(F[j])).long_term_depth
+        except (CombinationError, OutOfRangeError) as exc:
+            notes.append(_creep_note("d(inf)", "E*_0/E*_inf", str(exc)))
+        flags[j] = "; ".join(notes)
     return out
+
+
+def _creep_only(contact, t, force):
+    """d(t) under a force held from 0: linecontact.viscoelastic.creep_depth with the
+    contact's law and effective relaxation, as Contact.creep computes it, without the
+    long-term depth that Contact.creep computes with it (and refuses where it alone is
+    beyond the model's range)."""
+    from ...viscoelastic import creep_depth
+
+    law = contact.law()
+    e = creep_depth(law, contact.relaxation, np.array([0.0, t]), np.array([force, force]))
+    return float(e[-1]) + getattr(law, "d0", 0.0)
 
 
 def _creep_note(column, factor, text):

@@ -60,13 +60,14 @@ DIMENSIONS = {
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
 QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
-    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
+    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
     re.ASCII,
 )
 # re.ASCII: \s and the class above never match other scripts' digits or spaces; the
-# micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm").
+# micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm"), and the
+# capital \u039c so that "5 ΜM" (µm typed in capitals) gets its "did you mean".
 # A compound name (``mJ/m^2``) is matched as ONE name and converted only if it is a
-# built-in unit (:data:`COMPOUND_UNITS`); it is never handed to pint as an expression.
+# built-in unit (the surface energies of BUILTIN_UNITS); it is never handed to pint.
 
 #: Smallest positive normal float: below it a value has lost precision (subnormal).
 _TINY = sys.float_info.min
@@ -183,8 +184,33 @@ def _unit_factor(unit, kind):
                 result = f"expected {_a(kind)}, got {_describe_unit(u)}"
             else:
                 result = float(ureg.Quantity(1.0, u).to(si).magnitude)
+    if isinstance(result, str):
+        result += _did_you_mean(unit, kind)
     _FACTORS[key] = result
     return result
+
+
+#: Typical size of each kind in SI, to order the suggestions of :func:`_did_you_mean`
+#: (the unit nearest to it first: 'MM' -> 'mm' before 'Mm').
+_TYPICAL = {"length": 1e-3, "force": 1e3, "pressure": 1e9, "angle": 1e-3, "time": 1.0}
+
+
+def _did_you_mean(unit, kind):
+    """' (did you mean 'mm'?)' for a refused unit name: the units of `kind` that differ
+    from it only in letter case ('5MM' is megamolar, '1KN' nothing), else a close
+    spelling (difflib); '' when there is none."""
+    import difflib
+    import math
+
+    names = BUILTIN_UNITS.get(kind, {})
+    same = [u for u in names if u.casefold() == unit.casefold() and u != unit]
+    if not same:
+        same = difflib.get_close_matches(unit, list(names), n=2, cutoff=0.75)
+    if not same:
+        return ""
+    typical = math.log10(_TYPICAL.get(kind, 1.0))
+    same.sort(key=lambda u: abs(math.log10(names[u]) - typical))
+    return " (did you mean " + " or ".join(repr(u) for u in same) + "?)"
 
 
 def _describe_unit(u):

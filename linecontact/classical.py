@@ -7,15 +7,15 @@ E' = 2 E* instead, which is *not* what these functions take.
 Contents: effective modulus (Eq. 3), Hertz half-width (Eq. 1), Puttock & Thwaite
 (Eq. 2) with its inverse and its stiffness (the paper's Eq. 13 corrected), the
 Johnson-type family (Eq. 4), Kunz & de Maria's linear law, and the steel-only rolling
-bearing formulas of Palmgren and ISO/TS 16281.
+bearing formulas of Palmgren and ISO 16281.
 
 References
 ----------
 .. [1] Li & Popov (2017) [li-popov-2017].
 .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
 .. [3] A. Palmgren, Ball and Roller Bearing Engineering, SKF (1959).
-.. [4] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-   reference rating life for universally loaded bearings.
+.. [4] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+   reference rating life for universally loaded rolling bearings.
 """
 from __future__ import annotations
 
@@ -823,7 +823,7 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
 
 
 # --------------------------------------------------------------------------------------
-# Palmgren, ISO/TS 16281 (steel only)
+# Palmgren, ISO 16281 (steel only)
 # --------------------------------------------------------------------------------------
 STEEL_MODULUS = 210e9
 STEEL_POISSON = 0.3
@@ -831,7 +831,7 @@ STEEL_POISSON = 0.3
 STEEL_ESTAR = STEEL_MODULUS / (2 * (1 - STEEL_POISSON**2))
 #: Relative tolerance on E* within which the steel formulas are accepted.
 STEEL_ESTAR_TOLERANCE = 0.10
-#: E* accepted by the steel-only formulas (Palmgren, ISO/TS 16281).
+#: E* accepted by the steel-only formulas (Palmgren, ISO 16281).
 STEEL_ESTAR_RANGE = Interval("estar", STEEL_ESTAR * (1 - STEEL_ESTAR_TOLERANCE),
                              STEEL_ESTAR * (1 + STEEL_ESTAR_TOLERANCE), unit="Pa")
 _STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu = 0.3, "
@@ -841,7 +841,7 @@ _STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu
 
 #: Palmgren's coefficient, d [mm] = 3.84e-5 F[N]^0.9 / L[mm]^0.8 (one contact).
 PALMGREN_C = 3.84e-5
-#: ISO/TS 16281 per-contact coefficient, d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8.
+#: ISO 16281 per-contact coefficient, d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8.
 ISO16281_C = 3.97e-5
 
 
@@ -945,7 +945,7 @@ def palmgren_force(depth, length, estar):
 
 @document(STEEL=STEEL_ESTAR_RANGE)
 def iso16281_depth(force, length, estar):
-    r"""Depth of one roller-raceway contact per ISO/TS 16281 (steel only).
+    r"""Depth of one roller-raceway contact per ISO 16281 (steel only).
 
     .. math:: d\,[\mathrm{mm}] = 3.97\times10^{-5}\,
               \frac{F\,[\mathrm{N}]^{0.9}}{L\,[\mathrm{mm}]^{0.8}}
@@ -978,8 +978,8 @@ def iso16281_depth(force, length, estar):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-       reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded rolling bearings.
     """
     return _steel_depth(force, length, estar, ISO16281_C)
 
@@ -1016,7 +1016,7 @@ def iso16281_force(depth, length, estar):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-       reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded rolling bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)

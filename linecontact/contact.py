@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .models import ContactModel
-from .profiles import TILT_RANGE, CircularCrownProfile, as_profile
+from .profiles import FREE_TILT, TILT_RANGE, CircularCrownProfile, as_profile, is_free_tilt
 from .raceway import SLICE_MODELS, Raceways, roller_between_raceways
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
                        check_positive, out)
@@ -69,7 +69,7 @@ __all__ = [
 ]
 
 #: The tilt value asking for moment equilibrium.
-FREE = "free"
+FREE = FREE_TILT
 #: Law used for a straight, aligned roller when no model is named.
 DEFAULT_LAW = "universal"
 #: Model used for a profiled or tilted roller when no model is named.
@@ -86,11 +86,7 @@ def _radius(name, radius, diameter):
 
 
 def _tilt(tilt):
-    if isinstance(tilt, str):
-        if tilt != FREE:
-            raise UnknownNameError("tilt", tilt, [FREE, "a number [rad]"])
-        return FREE
-    return TILT_RANGE.check(tilt).item()
+    return FREE if is_free_tilt(tilt) else TILT_RANGE.check(tilt).item()
 
 
 # --------------------------------------------------------------------------------------
@@ -375,6 +371,21 @@ class _Result:
             raise CombinationError(self.reasons[name][0] | {"output": name},
                                    self.reasons[name][1])
         return value
+
+    def to_dict(self):
+        """Every output by name (:func:`linecontact.tabular.to_dict`)."""
+        from .tabular import to_dict
+        return to_dict(self)
+
+    def to_frame(self):
+        """A pandas DataFrame, one row per load or time (:func:`linecontact.tabular.to_frame`)."""
+        from .tabular import to_frame
+        return to_frame(self)
+
+    def _repr_html_(self):
+        """The table Jupyter shows (:func:`linecontact.tabular.html_table`)."""
+        from .tabular import html_table
+        return html_table(self)
 
 
 @dataclass(frozen=True)
@@ -895,44 +906,14 @@ class Contact:
     def _solve_one(self, force, depth):
         from .roller import iso_slicing
 
-        tilt = None if self.tilt == FREE else self.tilt
         if self.model == "iso16281-slicing":
-            if depth is not None and tilt is None:
-                tilt = self._free_tilt_at_depth(depth, iso=True)
             return iso_slicing(self.radius, self.roller.length, self.estar, self.profile,
-                               force=force, depth=depth, tilt=tilt,
+                               force=force, depth=depth, tilt=self.tilt,
                                n_slices=self.n_slices or 30)
         r = self._slice_roller()
         if force is not None:
-            return r.at_force(force, tilt)
-        if tilt is None:
-            return self._free_tilt_at_depth(depth)
-        return r.at_depth(depth, tilt)
-
-    def _free_tilt_at_depth(self, depth, iso=False):
-        """Moment equilibrium at a given centre depth: Newton on theta (dM/dtheta =
-        K[1, 1] at fixed depth)."""
-        from .roller import ConvergenceError, iso_slicing
-
-        def at(th):
-            if iso:
-                return iso_slicing(self.radius, self.roller.length, self.estar,
-                                   self.profile, depth=depth, tilt=th,
-                                   n_slices=self.n_slices or 30)
-            return self._slice_roller().at_depth(depth, th)
-
-        th, lo, hi = 0.0, -TILT_RANGE.high, TILT_RANGE.high
-        for _ in range(60):
-            s = at(th)
-            if abs(s.moment) <= 1e-10 * s.force * self.roller.length:
-                return th if iso else s
-            if s.moment > 0:
-                hi = th
-            else:
-                lo = th
-            new = th - s.moment / s.stiffness_matrix[1, 1]
-            th = new if lo < new < hi else 0.5 * (lo + hi)
-        raise ConvergenceError(f"no zero-moment tilt at depth {depth:g} m")
+            return r.at_force(force, self.tilt)
+        return r.at_depth(depth, self.tilt)
 
     def _slices_normal(self, force, depth):
         given = force if force is not None else depth

@@ -219,10 +219,36 @@ class ContactModel(abc.ABC):
     #: Registry key.
     key: str = ""
 
+    def __init_subclass__(cls, **kwargs):
+        """Every model's constructor refuses an unknown keyword (``cc=`` for Johnson's
+        ``c``) with one line listing the valid ones (:class:`UnknownNameError`), not
+        Python's bare TypeError."""
+        super().__init_subclass__(**kwargs)
+        init = cls.__dict__.get("__init__")
+        if init is None or getattr(init, "_keywords_checked", False):
+            return
+        import functools
+        import inspect
+
+        params = inspect.signature(init).parameters
+        if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+            return
+        names = [n for n in params if n != "self"]
+
+        @functools.wraps(init)
+        def checked(self, *args, **options):
+            for name in options:
+                if name not in params:
+                    raise UnknownNameError(f"{cls.__name__} keyword", name, names)
+            return init(self, *args, **options)
+
+        checked._keywords_checked = True
+        cls.__init__ = checked
+
     def __init__(self, radius, length, estar, **options):
         if options:
-            raise TypeError(f"model {self.key!r} takes no option(s) "
-                            f"{', '.join(sorted(options))}")
+            raise UnknownNameError(f"{type(self).__name__} keyword", sorted(options)[0],
+                                   ["radius", "length", "estar"])
         self.radius = _scalar("radius", radius, "m")
         self.length = _scalar("length", length, "m")
         self.estar = _scalar("estar", estar, "Pa")
@@ -809,7 +835,7 @@ class PalmgrenModel(_SteelModel):
 @register
 @document(STEEL=_c.STEEL_ESTAR_RANGE)
 class ISO16281Model(_SteelModel):
-    """ISO/TS 16281 per-contact roller deflection (steel only).
+    """ISO 16281 per-contact roller deflection (steel only).
 
     Parameters
     ----------
@@ -834,16 +860,16 @@ class ISO16281Model(_SteelModel):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the
-       modified reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the
+       modified reference rating life for universally loaded rolling bearings.
     """
 
     key = "iso16281"
-    label = "ISO/TS 16281"
+    label = "ISO 16281"
     accuracy_tag = "iso16281"
     _depth_fn = staticmethod(_c.iso16281_depth)
     _force_fn = staticmethod(_c.iso16281_force)
-    _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
+    _source = ("ISO 16281:2025: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
@@ -1114,7 +1140,7 @@ def standard_models(radius, length, estar):
     Universal curve (the best estimate, :data:`DEFAULT_MODEL`), Li-Popov Table 1 spline,
     Li-Popov Eq. 11, Li-Popov regenerated (only if ``tables/lipopov_regenerated.csv``
     exists: an optional coefficient set), Puttock-Thwaite, Johnson c = 1, 0.72, 0.572,
-    Kunz, Palmgren, ISO/TS 16281.
+    Kunz, Palmgren, ISO 16281.
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise

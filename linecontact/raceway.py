@@ -22,7 +22,7 @@ and the ring approach at the roller's centre is the sum of their depths,
 Profiled or tilted rollers
 --------------------------
 With a profile, a tilt or misaligned rings, each contact is the coupled-slice model of
-:mod:`linecontact.roller` (or ISO/TS 16281 slicing). The roller's tilt theta is
+:mod:`linecontact.roller` (or ISO 16281 slicing). The roller's tilt theta is
 measured against the inner raceway (positive when its +x end goes deeper into the inner
 ring); with the outer ring misaligned by psi (positive when the rings close at +x, the
 ring approach being :math:`\delta + \psi x`), the tilt of the roller against the outer
@@ -50,8 +50,8 @@ References
 ----------
 .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section 4.2
    (two cylinders with parallel axes).
-.. [2] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-   reference rating life for universally loaded bearings (roller between raceways,
+.. [2] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+   reference rating life for universally loaded rolling bearings (roller between raceways,
    slicing, misalignment).
 .. [3] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007),
    chapter on roller-raceway deflection (contacts in series).
@@ -63,7 +63,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .profiles import TILT_RANGE
+from .profiles import TILT_RANGE, is_free_tilt
 from .validity import (CombinationError, Interval, OutOfRangeError, UnknownNameError,
                        check_positive, out)
 
@@ -462,7 +462,7 @@ def roller_between_raceways(radius, length, estar, raceways, *, force=None,
 
     References
     ----------
-    K. L. Johnson, Contact Mechanics (1985), section 4.2; ISO/TS 16281:2008.
+    K. L. Johnson, Contact Mechanics (1985), section 4.2; ISO 16281:2025.
     """
     from .models import available_models, get_model
     from .profiles import as_profile
@@ -477,9 +477,7 @@ def roller_between_raceways(radius, length, estar, raceways, *, force=None,
                                "give exactly one of force and deflection")
     clearance = raceways.check_fit(R1)
     R_in, R_out = raceways.effective_radii(R1)
-    free = isinstance(tilt, str)
-    if free and tilt != "free":
-        raise UnknownNameError("tilt", tilt, ["free", "a number [rad]"])
+    free = is_free_tilt(tilt)
     th = None if free else TILT_RANGE.check(tilt).item()
     psi = raceways.misalignment
     prof = as_profile(profile, R1, L, E)

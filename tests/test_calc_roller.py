@@ -35,7 +35,7 @@ def test_crown_radius_prints_the_hertz_contact(capsys):
     """--crown-radius makes the contact the crowned roller's: for a crown that stays
     inside the roller its coupled-slice row is the Hertz contact, approach 7.024 um
     and p0 1102 MPa (R 10 mm, Rc 500 mm, 1 kN, printed to 4 digits: 7.024 and 1102),
-    not edge loaded; ISO/TS 16281 slicing follows as its own row, and no
+    not edge loaded; ISO 16281 slicing follows as its own row, and no
     straight-cylinder law is printed as if it were this roller's."""
     status, out, err = _main(capsys, *CROWN, "--load", "1kN", "--crown-radius", "500mm")
     assert status == 0, err
@@ -44,7 +44,7 @@ def test_crown_radius_prints_the_hertz_contact(capsys):
     row = lines[0].split()
     h = hertz_contact(1000.0, 0.5, 0.01, 115.385e9)
     assert f"{h.approach * 1e6:.4g}" in row and f"{h.p0 / 1e6:.4g}" in row
-    assert "ISO/TS 16281 slicing (circular crown (Rc = 500 mm))" in out
+    assert "ISO 16281 slicing (circular crown (Rc = 500 mm))" in out
     assert "Universal curve" not in out and "Li-Popov" not in out
 
 
@@ -77,14 +77,17 @@ def test_json_carries_q_of_x(capsys):
 
 
 def test_straight_roller_reports_edge_loading_not_a_number(capsys):
-    """A straight roller (--tilt only) is edge loaded: its peak pressure is singular on
-    a half-space, so the profiled row prints '-' for p max, 'both ends' for the edge,
-    and says why; the JSON has p_max null and edge_loaded true."""
-    status, out, err = _main(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    """A straight roller solved by coupled slices (--model profiled-roller; without it
+    a straight aligned roller is the universal law, as in Contact) is edge loaded: its
+    peak pressure is singular on a half-space, so the row prints '-' for p max and says
+    why (both ends); the JSON has p_max null and edge_loaded true."""
+    argv = (*ROLLER, "--load", "1kN", "--tilt", "0", "--model", "profiled-roller")
+    status, out, err = _main(capsys, *argv)
     assert status == 0, err
     row = next(ln for ln in out.splitlines() if ln.startswith("Profiled roller"))
     assert "both ends" in row and "singular" in row
-    doc = _json(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    doc = _json(capsys, *argv)
+    assert doc["models"][0]["rows"][0]["p_max"] is None
     r = doc["profiled_roller"][0]["rows"][0]
     assert r["p_max"] is None and r["edge_loaded"] is True
 
@@ -251,7 +254,7 @@ def test_plain_calc_does_not_import_the_roller_model():
 
 
 def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
-    """ISO/TS 16281's reference profile is a drop of 0.00035 D ln(...) with D the
+    """ISO 16281's reference profile is a drop of 0.00035 D ln(...) with D the
     roller's own diameter. Against a convex raceway (--radius2) the slices see the
     effective radius 1/R = 1/R1 + 1/R2, but the profile must still use D = 2 R1
     (10 mm here, not 2 R_eff = 8 mm, which made the drop 20 % too shallow)."""
@@ -259,4 +262,4 @@ def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
                              "10mm", "--estar", "115GPa", "--load", "1kN",
                              "--profile", "iso16281")
     assert status == 0, err
-    assert "ISO/TS 16281 (D = 10 mm" in out and "D = 8 mm" not in out
+    assert "ISO 16281 (D = 10 mm" in out and "D = 8 mm" not in out

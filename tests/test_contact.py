@@ -167,7 +167,7 @@ def test_viscoelastic_body_against_an_elastic_one_adds_compliances():
     (the compliances add), for a three-term Prony series (inverted numerically) and a
     standard linear solid (closed form), at five times (1e-10)."""
     t = np.array([0.0, 0.05, 3.0, 200.0, 1e5])
-    for body in (PronySeries(1e9, [2e9, 1e9, 0.5e9], [0.1, 10.0, 300.0]),
+    for body in (PronySeries(1e9, moduli=[2e9, 1e9, 0.5e9], times=[0.1, 10.0, 300.0]),
                  StandardLinearSolid(3e9, 1e9, 10.0)):
         m = effective_relaxation(body, 0.4, 210e9, 0.3)
         expect = (1 - 0.4 ** 2) * body.creep(t) + (1 - 0.3 ** 2) / 210e9
@@ -339,3 +339,25 @@ def test_bem_tangential_of_a_straight_cylinder_is_the_tables_and_refused_for_a_c
         assert t.shift == pytest.approx(tc.shift(-50.0), rel=1e-12) and t.shift < 0
     with pytest.raises(CombinationError, match="straight, aligned cylinder"):
         crowned().tangential(0.1, force=100.0, method="bem")
+
+
+def test_no_tilt_is_aligned_in_every_roller_entry_point():
+    """Decided behaviour, the same in every entry point: no tilt given is an aligned
+    roller (ProfiledRoller.at_force, roller_contact, iso_slicing: tilt 0 and a moment for
+    an offset crown); 'free' asks for zero moment; None is refused as ambiguous
+    (UnknownNameError)."""
+    from linecontact.roller import iso_slicing, roller_contact
+
+    prof = "circular:Rc=0.1,x0=1mm"
+    r = ProfiledRoller(5e-3, 10e-3, 115e9, prof, n_slices=N)
+    for s in (r.at_force(800.0), roller_contact(5e-3, 10e-3, 115e9, prof, force=800.0,
+                                                n_slices=N),
+              iso_slicing(5e-3, 10e-3, 115.38e9, prof, force=800.0)):
+        assert s.tilt == 0.0 and s.moment > 0
+    for s in (r.at_force(800.0, "free"), r.at_depth(r.at_force(800.0, "free").depth,
+                                                    "free"),
+              iso_slicing(5e-3, 10e-3, 115.38e9, prof, force=800.0, tilt="free"),
+              iso_slicing(5e-3, 10e-3, 115.38e9, prof, depth=2e-5, tilt="free")):
+        assert abs(s.moment) <= 1e-9 * s.force * 10e-3 and s.tilt < 0
+    with pytest.raises(UnknownNameError, match="aligned"):
+        r.at_force(800.0, None)

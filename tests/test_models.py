@@ -207,7 +207,7 @@ def test_standard_models_order_and_labels():
     assert [m.label for m in rows] == [
         "Li-Popov (Table 1 spline)", "Li-Popov (Eq. 11)", "Puttock-Thwaite",
         "Johnson (c = 1)", "Johnson (c = 0.72)", "Johnson (c = 0.572)", "Kunz (c = 0.175)",
-        "Palmgren", "ISO/TS 16281"]
+        "Palmgren", "ISO 16281"]
     for m in rows:
         assert isinstance(m, ContactModel) and isinstance(m.provenance, dict)
 

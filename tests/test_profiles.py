@@ -39,7 +39,7 @@ def test_builtin_profiles_are_symmetric_nonnegative_and_zero_at_the_centre(prof)
 
 
 def test_iso16281_branches():
-    """ISO/TS 16281: for L <= 2.5 D, P = 0.00035 D ln[1/(1 - (2x/L)^2)]; for L > 2.5 D
+    """ISO 16281: for L <= 2.5 D, P = 0.00035 D ln[1/(1 - (2x/L)^2)]; for L > 2.5 D
     the middle (|x| <= (L - 2.5 D)/2) is flat and the ends carry 0.0005 D ln[1/(1 - t^2)]
     over 1.25 D each; the drop is continuous at the flat's end and infinite at x = L/2.
     Exact formulas: 1e-14."""
@@ -207,7 +207,7 @@ def test_parse_angle():
 
 
 def test_iso16281_default_diameter_is_the_rollers_not_twice_an_effective_radius():
-    """ISO/TS 16281's reference profile scales with the roller diameter D. Against a
+    """ISO 16281's reference profile scales with the roller diameter D. Against a
     raceway the contact's radius is the effective one (R 5 mm on an inner ring of
     20 mm: R_eff = 4 mm), so `diameter` gives D; without it D = 2 radius (a flat)."""
     L = 10e-3

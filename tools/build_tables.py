@@ -11,7 +11,7 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
     The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
     beta: tables/lipopov_regenerated.csv and the raw curves (tools.studies.paper_study).
 ``roller``
-    Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
+    Profiled and tilted rollers, runtime and ISO 16281 slicing against the 3D BEM:
     tables/roller_accuracy.csv (tools.studies.roller_study).
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
@@ -19,6 +19,9 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``adhesion``
     Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
     MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
+``bearing``
+    Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
+    spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
 
 Run from the repository root, e.g.::
 
@@ -39,6 +42,7 @@ SUBCOMMANDS = {
     "tangential": "tools.studies.tangential_study",
     "accuracy": "tools.studies.accuracy",
     "adhesion": "tools.studies.adhesion_study",
+    "bearing": "tools.studies.bearing_study",
 }
 
 

@@ -2,15 +2,20 @@
 
 Reading
     The file is read with the csv module (UTF-8, a byte-order mark allowed), every cell
-    as the text it is. Columns named like a parameter of :mod:`linecontact.cases`
+    as the text it is. Columns named like a parameter of :mod:`linecontact.calc.cases`
     (case-insensitive, surrounding spaces ignored) are inputs; options on the command
-    line fill empty or missing cells. Cells follow the rules of
-    :mod:`linecontact._units` (a number with one unit name), parsed once per column.
+    line fill empty or missing cells, and a filled cell that differs from the option
+    (by value) is an error in its row (never silently overridden either way). Cells
+    follow the rules of :mod:`linecontact._units` (a number with one unit name), parsed
+    once per column. A column that looks like an input but would not be read (a unit
+    in the header, 'radius [mm]'; a close spelling, 'lode') refuses the file, naming
+    its match; so does a semicolon-separated header.
 
 Writing: no user data is ever lost
     Every input row is written, in its place, with all its cells exactly as read
     (a short row is padded with empty cells; cells beyond the header go under unnamed
-    columns), followed by the result columns:
+    columns, and such a row is an error: its cells are shifted), followed by the result
+    columns:
     ``estar_GPa``, then per model ``model``, ``force_kN``, ``depth_um``,
     ``stiffness_N_per_um``, ``half_width_um``, ``peak_pressure_MPa``,
     ``contact_radius_um`` (whole rollers: ``roller_deflection_um``,
@@ -59,6 +64,61 @@ class BatchError(ValueError):
     """The file as a whole cannot be used (one line, naming the file)."""
 
 
+def _unread_lookalikes(path, header, names, known):
+    """Refuse a column that looks like an input but would not be read: a parameter's
+    name with a unit in it ('radius [mm]', 'load_kN', 'E (GPa)') or a close spelling
+    ('lode', 'raduis'), when that parameter is not itself a column. Units go in the
+    cells (5mm), never in the header."""
+    import difflib
+    import re
+
+    from .compute import all_fields
+
+    # a file written by the calculator (it ends with the 'error' column) holds its
+    # result columns, named like inputs with units (force_kN): those are not inputs
+    rerun = any(re.sub(r"^result[0-9]*_", "", h) == "error" for h in names)
+    results = {_col_name(f, si).lower() for f in all_fields()
+               for si in (False, True)} if rerun else set()
+    for j, h in enumerate(names):
+        if h in BY_NAME or not h:
+            continue
+        plain = re.sub(r"^result[0-9]*_", "", h)
+        if any(plain == r or plain.startswith(r + "_") for r in results):
+            continue  # a result column of an earlier run (a rerun on its own output)
+        base = re.split(r"\s*[\[(]|_(?=[a-z]+$)|\s+in\s+|\s+", h.strip())[0]
+        if base in BY_NAME and base not in known:
+            match = base
+        else:
+            close = difflib.get_close_matches(h, list(BY_NAME), n=1, cutoff=0.75)
+            match = close[0] if close and close[0] not in known else None
+        if match is not None:
+            raise BatchError(
+                f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
+                f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
+                "under 'radius'; rename the column if it is your own)")
+
+
+def _refuse_conflicts(cases, cells, conflicts, errors):
+    """A command-line option fills the EMPTY cells of its column; a filled cell that
+    differs from it (by value in SI, or as text for files and profiles) is an error in
+    that row, naming both, never silently overridden one way or the other."""
+    for name, (opt, si, filled) in conflicts.items():
+        values = cases.values[name]
+        for i in np.flatnonzero(filled):
+            if errors[i]:
+                continue
+            if si is None:
+                same = str(cells[name][i]).strip() == str(opt).strip()
+            else:
+                v = values[i]
+                same = bool(np.isfinite(v)) and abs(v - si) <= 1e-12 * max(abs(si), abs(v))
+            if not same:
+                errors[i] = str(InputError(
+                    name, cells[name][i], f"the cell or {option_name(name)}, not both",
+                    f"conflicts with {option_name(name)} {opt} on the command line (the "
+                    "option fills empty cells only; clear the cell or drop the option)"))
+
+
 def read_table(path):
     """(header, rows, lines) of a CSV file, cells as text; BatchError with the reason.
 
@@ -99,6 +159,11 @@ def read_table(path):
         header, body = rows.header(), rows.body()
     else:
         header, body = rows[0], rows[1:]
+    if len(header) == 1 and header[0].count(";") >= 1:
+        raise BatchError(f"{str(path)!r}: the header {header[0]!r} is separated by "
+                         "semicolons; expected a comma-separated file (cells separated "
+                         "by commas, numbers with a decimal point: 5.5mm), e.g. saved "
+                         "as 'CSV UTF-8 (comma delimited)'")
     if not body:
         raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
                          "per row under the header")
@@ -208,6 +273,7 @@ def run_batch(args, argv, specs, options):
             if h in known:
                 raise BatchError(f"{str(args.csv)!r}: column {header[j]!r} appears twice")
             known[h] = j
+    _unread_lookalikes(args.csv, header, names, known)
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
@@ -219,6 +285,7 @@ def run_batch(args, argv, specs, options):
     full = flat or min(map(len, body)) >= width  # no short row (the usual case)
     transposed = None
     cells = {}
+    conflicts = {}  # parameter -> (option text, option SI or None, filled cells)
     for p in PARAMETERS:
         j = known.get(p.name)
         opt = options.get(p.name)
@@ -240,14 +307,32 @@ def run_batch(args, argv, specs, options):
                     raise InputError(option_name(p.name), opt,
                                      "one value per row in a batch", "a sweep")
                 # a bad value is the command line's error (exit 2), not every row's
-                parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
-                               bounds=bounds_of(p))
+                si = parse_quantity(option_name(p.name), opt, p.kind,
+                                    positive=p.positive, bounds=bounds_of(p))
+            else:
+                si = None
             # text and path options are checked per row where they are read
             # (RAW_KINDS): e.g. a profile is refused in each row's 'error' cell, as a
-            # profile column is
+            # profile column is. The option fills EMPTY cells only; a filled cell that
+            # says something else is a conflict, refused in its row (below)
+            if j is not None:
+                conflicts[p.name] = (opt, si, [bool(c.strip()) for c in col])
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
+    render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
+                                                if p.kind == "path" and p.name in cells
+                                                for c in cells[p.name]})
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)
+    _refuse_conflicts(cases, cells, conflicts, errors)
+    if not flat:  # a row with more cells than the header: its cells are shifted or
+        # split (a decimal comma), so that error comes before any other of the row
+        for i, r in enumerate(body):
+            if len(r) > len(names):
+                errors[i] = str(InputError(
+                    f"row {i + 1}", ",".join(r[len(names):]),
+                    f"at most {len(names)} cells, one per header column",
+                    f"{len(r)} cells under a header of {len(names)} columns (a decimal "
+                    "comma, or a missing header name?)"))
     for name in ("load", "depth"):  # a sweep in a cell: say so, not just "not a number"
         col = cells.get(name)
         if col is None:

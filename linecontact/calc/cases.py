@@ -29,33 +29,40 @@ from .._units import parse_column
 from .feature import RAW_KINDS, Fail, Parameter, bounds_of, option_name
 from .features import FEATURES
 
-__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases"]
+__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases", "likely_cause"]
 
 _CYL = "cylinder (roller)"
 _BODY = "second body and materials"
 _LOAD = "load (exactly one)"
 
+#: Magnitudes the core quantities have in practice [SI] (Parameter.plausible): roller
+#: dimensions 0.1 mm to 2 m, depths 0.1 nm to 1 cm, moduli 1 kPa (gels) to 10 TPa
+#: (above diamond), forces 1 mN to 100 MN.
+_SIZE, _DEPTH, _MODULUS, _FORCE = (1e-4, 2.0), (1e-10, 1e-2), (1e3, 1e13), (1e-3, 1e8)
+
 #: The core inputs (every case has a roller, a second body and a load).
 CORE = (
-    Parameter("radius", "length", "roller radius R1", _CYL),
-    Parameter("diameter", "length", "roller diameter D = 2 R1 (instead of --radius)", _CYL),
-    Parameter("length", "length", "roller length L", _CYL),
+    Parameter("radius", "length", "roller radius R1", _CYL, plausible=_SIZE),
+    Parameter("diameter", "length", "roller diameter D = 2 R1 (instead of --radius)", _CYL,
+              plausible=_SIZE),
+    Parameter("length", "length", "roller length L", _CYL, plausible=_SIZE),
     Parameter("radius2", "length", "radius R2 of the second body at the contact, negative "
               "if concave (e.g. a raceway bore): 1/R = 1/R1 + 1/R2; default: flat", _BODY,
-              positive=False),
+              positive=False, plausible=_SIZE),
     Parameter("modulus", "pressure", "Young's modulus E1 of the second body "
-              "(the half-space)", _BODY),
+              "(the half-space)", _BODY, plausible=_MODULUS),
     Parameter("poisson", "dimensionless", "Poisson's ratio nu1 of the second body", _BODY,
               bounds="POISSON_RATIO"),
     Parameter("modulus2", "pressure", "Young's modulus E2 of the roller "
-              "(default: rigid)", _BODY),
+              "(default: rigid)", _BODY, plausible=_MODULUS),
     Parameter("poisson2", "dimensionless", "Poisson's ratio nu2 of the roller", _BODY,
               bounds="POISSON_RATIO"),
     Parameter("estar", "pressure", "effective modulus E* of Eq. 3 (instead of the moduli)",
-              _BODY),
-    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N", _LOAD),
+              _BODY, plausible=_MODULUS),
+    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N", _LOAD,
+              plausible=_FORCE),
     Parameter("depth", "length", "indentation depth d of one contact (rigid-body "
-              "approach), or a sweep START:STOP:N", _LOAD),
+              "approach), or a sweep START:STOP:N", _LOAD, plausible=_DEPTH),
 )
 
 #: Every input, in ``--help`` order: the core, then each feature's.
@@ -183,6 +190,7 @@ def parse_cases(cells, n, label=option_name):
                 if not errors[j]:
                     errors[j] = u_errors[inv[j]]
     cases = Cases(n, values, present, raw)
+    cases.label = label
     _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
     return cases, present, errors
 
@@ -281,3 +289,52 @@ def _resolve(cases, errors, fail):
     cases.length = v["length"]
     cases.given, cases.value = given, value
     v.update(radius_eff=radius_eff, estar=estar)
+
+
+#: Units tried, in order, to bring an implausible bare number into its range.
+_SUGGEST = {"length": ("mm", "um", "cm"), "pressure": ("GPa", "MPa", "kPa"),
+            "force": ("kN", "N", "MN")}
+
+
+def likely_cause(cases, i, kinds=None):
+    """'' or '; likely cause: ...' naming the inputs of row i typed as a BARE number
+    whose SI value is implausible for its quantity (Parameter.plausible), with the
+    unit that would make it plausible: a case that fails with ``--modulus 210`` (210
+    Pa) is blamed on the modulus, not on the force the model then cannot carry.
+    `kinds`: only inputs of these kinds (``{"length"}`` for a refused L/R), else all.
+
+    Examples
+    --------
+    >>> cases, _, errors = parse_cases({"radius": ["5mm"], "length": ["10mm"],
+    ...     "modulus": ["210"], "poisson": ["0.3"], "load": ["1kN"]}, 1)
+    >>> likely_cause(cases, 0)
+    "; likely cause: --modulus = '210' is 210 Pa (a bare number is SI), implausible for this quantity (1000 to 1e+13 Pa): 210GPa?"
+    """
+    import re
+
+    from .._units import BUILTIN_UNITS, DIMENSIONS
+
+    label = getattr(cases, "label", option_name)
+    causes = []
+    for p in PARAMETERS:
+        if p.plausible is None or not cases.present[p.name][i]:
+            continue
+        if kinds is not None and p.kind not in kinds:
+            continue
+        col = cases.cells.get(p.name)
+        if col is None or isinstance(col, np.ndarray):
+            continue  # a sweep: typed with its own START/STOP
+        text = str(col[i]).strip()
+        if not re.fullmatch(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?", text):
+            continue  # a unit was given: the user chose the magnitude
+        v = abs(float(cases.values[p.name][i]))
+        lo, hi = p.plausible
+        if not v or lo <= v <= hi:
+            continue
+        si = DIMENSIONS[p.kind][1]
+        hint = next((f"{text}{u}" for u in _SUGGEST.get(p.kind, ())
+                     if lo <= v * BUILTIN_UNITS[p.kind][u] <= hi), "")
+        causes.append(f"{label(p.name)} = {text!r} is {v:g} {si} (a bare number is SI), "
+                      f"implausible for this quantity ({lo:g} to {hi:g} {si})"
+                      + (f": {hint}?" if hint else ""))
+    return "; likely cause: " + "; ".join(causes) if causes else ""

@@ -136,15 +136,28 @@ def build_parser():
     out.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")
     out.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
     out.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    out.add_argument("--plot", metavar="FILE", help="also draw the case (one case or a "
+                     "sweep): F(d) of the models where each applies, with the computed "
+                     "points, and a profiled roller's q(x); PNG, SVG or PDF by the "
+                     "extension; needs matplotlib (pip install 'linecontact[plot]')")
     out.add_argument("--progress", dest="progress", action="store_true", default=None,
                      help="progress bar on stderr for a batch (default: batches of 10000 "
                      "rows or more, on a terminal)")
     out.add_argument("--no-progress", dest="progress", action="store_false",
                      help="no progress bar")
+    from .bearing import add_parser as add_bearing
+
+    add_bearing(sub)
     return parser
 
 
-_VALUE_OPTIONS = {option_name(p.name) for p in PARAMETERS}
+def _value_options():
+    from .bearing import PARAMETERS as BEARING
+
+    return {option_name(p.name) for p in PARAMETERS + BEARING}
+
+
+_VALUE_OPTIONS = _value_options()
 _NEGATIVE = re.compile(r"^-(\d|\.\d)")
 
 
@@ -219,10 +232,19 @@ def _calc_one(args, argv, specs):
     bad = next((e for e in errors if e), "")
     if bad:  # an unexpected failure of a model, or a feature's one-case refusal
         raise _Failed(bad)
+    if args.plot is not None:  # refuse a bad file name before anything is written
+        from ..plot import FORMATS
+        from ..validity import OutOfRangeError
+        if args.plot.rsplit(".", 1)[-1].lower() not in FORMATS:
+            raise OutOfRangeError("--plot", args.plot, "a name ending in .png, .svg "
+                                  "or .pdf")
     if args.json:
         render.write(render.one_json(argv, cases, present, results), args.output)
     else:
         render.write(render.table_text(cases, present, results, args.si), args.output)
+    if args.plot is not None:
+        from .figure import draw_results
+        draw_results(results, args.plot)
     computed = any(not note for s in results.sets for note in s["note"])
     if not computed:
         notes = [s["note"][0] for s in results.sets]
@@ -235,8 +257,8 @@ class _Failed(Exception):
     """A one-line error message already composed."""
 
 
-def _error(message):
-    print(f"{PROG} calc: error: {message}", file=sys.stderr)
+def _error(message, command="calc"):
+    print(f"{PROG} {command}: error: {message}", file=sys.stderr)
 
 
 def main(argv=None):
@@ -250,12 +272,22 @@ def main(argv=None):
     if args.command is None:
         parser.print_help(sys.stderr)
         return 2
+    if args.command == "bearing":
+        return _bearing(args, argv)
     try:
         from .compute import parse_model_option
 
         specs = parse_model_option(args.model)
+        from . import render
+
+        render.refuse_input_as_output(args.output, [args.csv] + [
+            getattr(args, p.name) for p in PARAMETERS if p.kind == "path"])
         if args.csv is not None:
             from .batch import run_batch
+
+            if getattr(args, "plot", None) is not None:
+                raise _Failed("--plot draws one case or a sweep, not a CSV batch (read "
+                              "the batch's output into linecontact.plot instead)")
 
             options = {p.name: getattr(args, p.name) for p in PARAMETERS}
             return run_batch(args, argv, specs, options)
@@ -281,8 +313,36 @@ def main(argv=None):
         return 1
     except KeyboardInterrupt:
         return 130
+    except ImportError as exc:  # --plot without matplotlib: say how to install it
+        from ..plot import MissingDependencyError
+
+        if not isinstance(exc, MissingDependencyError):
+            raise
+        _error(str(exc))
+        return 2
     except OSError as exc:  # the output file (render.OutputError names it) and others
         name = getattr(exc, "filename", None)
         reason = exc.strerror or str(exc) or type(exc).__name__
         _error(f"{name!r}: {reason}" if name else reason)
+        return 2
+
+
+def _bearing(args, argv):
+    """``linecontact bearing``: bad input is one line on stderr, status 2."""
+    from .bearing import run
+
+    try:
+        return run(args, argv)
+    except ValueError as exc:  # InputError, OutOfRangeError, CombinationError, ...
+        _error(str(exc).splitlines()[0] if str(exc) else type(exc).__name__, "bearing")
+        return 2
+    except BrokenPipeError:
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except OSError as exc:
+        name = getattr(exc, "filename", None)
+        reason = exc.strerror or str(exc) or type(exc).__name__
+        _error(f"{name!r}: {reason}" if name else reason, "bearing")
         return 2

@@ -23,7 +23,7 @@ import re
 
 import numpy as np
 
-from .feature import Field, flag_text
+from .feature import DEPTH_OVER_RADIUS_MAX, HALF_WIDTH_OVER_LENGTH_MAX, Field, flag_text
 from .features import FEATURES
 
 __all__ = ["FIELDS", "CONTACT_COLUMNS", "P0_NOTE", "all_fields", "parse_model_option",
@@ -202,7 +202,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
     """
     from .. import models
     from .._units import InputError
-    from ..validity import OutOfRangeError
+    from ..validity import OutOfRangeError, UnknownNameError
 
     if specs is None:
         if first_only and default_key is not None:
@@ -215,7 +215,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
             chosen.append(models.get_model(key, R, L, E, **options))
         except OutOfRangeError as exc:  # refused for this cylinder: a row with a note
             chosen.append(Refused(text, exc))
-        except TypeError as exc:  # an option the model does not take
+        except (TypeError, UnknownNameError) as exc:  # an option the model does not take
             raise InputError(
                 "--model", text, "options the model takes (see its docstring)", str(exc)
             ) from None
@@ -256,13 +256,48 @@ class _Model:
         return getattr(law, name)
 
 
-def _safe_evaluate(evaluate, label, given, values, notes, errors, idx):
+def _user_note(exc, given, cases, i):
+    """The note of a row a model refuses, in the user's words: the option or column
+    they wrote (``--load = '1kN'``, not "force = 1000 N (element [0] of shape (1,))"),
+    the cylinder it was refused for (the geometry and E* decide a model's range),
+    the model's own reason, and the likely cause among the inputs
+    (:func:`linecontact.calc.cases.likely_cause`)."""
+    from .cases import likely_cause
+    from .feature import option_name
+
+    label = getattr(cases, "label", option_name)
+    parameter = getattr(exc, "parameter", None)
+    if parameter in ("force", "depth") and getattr(exc, "valid", None):
+        name = "load" if given == "load" else "depth"
+        col = cases.cells.get(name)
+        typed = (str(col[i]).strip() if col is not None and not isinstance(col, np.ndarray)
+                 else f"{cases.value[i]:.6g} {'N' if name == 'load' else 'm'}")
+        text = (f"{label(name)} = {typed!r} is outside this model's range {exc.valid} "
+                f"for R = {cases.radius_eff[i]:.6g} m, L = {cases.length[i]:.6g} m, "
+                f"E* = {cases.estar[i]:.6g} Pa")
+        if getattr(exc, "hint", ""):
+            text += f"; {exc.hint}"
+    elif parameter == "estar" and not cases.present["estar"][i]:
+        text = str(exc).replace(
+            "estar = ", f"E* = (from {label('modulus')} and {label('poisson')}) ", 1)
+    else:
+        text = str(exc)
+    # the inputs a refusal can come from: a ratio of lengths, a modulus, or (a force or
+    # depth range) all of them
+    kinds = {"L/R": {"length"}, "length_over_radius": {"length"},
+             "estar": {"pressure"}}.get(parameter)
+    return text + likely_cause(cases, i, kinds)
+
+
+def _safe_evaluate(evaluate, label, given, values, notes, errors, idx, describe=None):
     """evaluate(given, values) -> dict of arrays; refused elements isolated by halving.
 
     Returns a dict of arrays (NaN where refused; ``solution`` an object array); writes
     ``notes[idx[i]]`` (out of the model's range, a combination the library refuses, a
-    solver that did not converge) or ``errors[idx[i]]`` (any other exception).
+    solver that did not converge) or ``errors[idx[i]]`` (any other exception);
+    ``describe(exc, row)`` words a refusal for the user (default ``str(exc)``).
     """
+    describe = describe or (lambda exc, row: str(exc))
     import sys
 
     from ..validity import CombinationError, OutOfRangeError
@@ -293,7 +328,7 @@ def _safe_evaluate(evaluate, label, given, values, notes, errors, idx):
                 continue
             if hi - lo == 1:
                 text = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
-                notes[idx[lo]] = (str(exc) if converged(exc)
+                notes[idx[lo]] = (describe(exc, idx[lo]) if converged(exc)
                                   else f"{label}: not computed: {text}")
             else:
                 mid = (lo + hi) // 2
@@ -317,19 +352,20 @@ def _law_evaluator(model):
     linecontact.contact.Contact.normal)."""
 
     def evaluate(given, values):
-        model.check_applicable()  # refused for the whole cylinder: one message
         return model.evaluate(**{("force" if given == "load" else "depth"): values})
 
     return evaluate
 
 
 def _hertz(r, R, L, E):
-    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force
-    (the given force also where the model refused the row: they do not depend on it)."""
+    """Hertz's half-width b and strip peak pressure p0 of a plain contact from its force,
+    only in the rows the model computed (a finite depth): a row no model covers shows
+    no number at all (issue 22: a radius of 1e30 m printed b = 1e18 um and p0 =
+    6e-14 MPa beside a refused depth)."""
     from ..classical import hertz_half_width, hertz_peak_pressure
 
     F = r["force"]
-    ok = np.isfinite(F) & (F > 0)
+    ok = np.isfinite(F) & (F > 0) & np.isfinite(r["depth"])
     if ok.any():
         r["half_width"][ok] = hertz_half_width(F[ok], R, L, E)
         r["peak_pressure"][ok] = hertz_peak_pressure(F[ok], R, L, E)
@@ -372,7 +408,7 @@ def _contact_label(contact, spec_text):
     the profile and the tilt."""
     if contact.sliced:
         name = {"profiled-roller": "Profiled roller",
-                "iso16281-slicing": "ISO/TS 16281 slicing"}.get(contact.model, spec_text)
+                "iso16281-slicing": "ISO 16281 slicing"}.get(contact.model, spec_text)
         tilt = contact.tilt
         text = (", free tilt" if tilt == "free" else
                 f", tilt {tilt * 1e3:.4g} mrad" if tilt else "")
@@ -382,6 +418,19 @@ def _contact_label(contact, spec_text):
 
         return get_model(contact.model, 1.0, 1.0, 1.0, **contact.options).label
     return contact.law().label
+
+
+class _Entry:
+    """The JSON header entry of a composed contact's model: key, label, provenance."""
+
+    def __init__(self, contact, label):
+        self.key = contact.model
+        self.label = label
+        try:
+            prov = contact.law().provenance
+        except Exception:  # noqa: BLE001 - a whole roller or a free tilt: no single law
+            prov = {"model": contact.model, "composed": "linecontact.contact.Contact"}
+        self.provenance = prov
 
 
 class Results:
@@ -698,6 +747,13 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
     obj, text = item
     given = cases.given[g]
     values = cases.value[g]
+    if text is None and not isinstance(obj, Refused):
+        from ..validity import OutOfRangeError
+
+        try:
+            obj.check_applicable()  # refused for the whole cylinder: one message
+        except OutOfRangeError as exc:
+            obj = Refused(obj.label, exc)
     refused = isinstance(obj, Refused)
     if refused:
         model, label = None, obj.label
@@ -710,14 +766,18 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
     r = {k: np.full(len(g), np.nan) for k in _NORMAL}
     r["solution"] = np.full(len(g), None, dtype=object)
     if refused:
+        for which, name in (("load", "force"), ("depth", "depth")):
+            sel = given == which
+            r[name][sel] = values[sel]  # the given quantity, even where refused
         for i in g:
-            notes[i] = str(obj.exc)
+            notes[i] = _user_note(obj.exc, given[0], cases, i)
     else:
         for which in ("load", "depth"):
             sel = np.flatnonzero(given == which)
             if sel.size:
                 rr = _safe_evaluate(evaluate, label, which, values[sel], notes, errors,
-                                    g[sel])
+                                    g[sel], lambda exc, i, w=which: _user_note(
+                                        exc, w, cases, i))
                 for k in r:
                     r[k][sel] = rr[k]
     L = cases.length[g[0]]
@@ -725,8 +785,12 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         _hertz(r, cases.radius_eff[g[0]], L, cases.estar[g[0]])
     flags = [""] * len(g)
     w = whole[g]
-    for j in np.flatnonzero(~w):
-        flags[j] = flag_text(r["depth"][j], r["half_width"][j], cases.radius_eff[g[0]], L)
+    R = cases.radius_eff[g[0]]
+    with np.errstate(invalid="ignore"):  # only the flagged rows are worded (a long sweep)
+        odd = ~w & ((r["depth"] / R > DEPTH_OVER_RADIUS_MAX)
+                    | (r["half_width"] / L > HALF_WIDTH_OVER_LENGTH_MAX))
+    for j in np.flatnonzero(odd):
+        flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
     if refused:
         return r, flags, label, obj
     for f, st in active:
@@ -771,16 +835,20 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
                                              errors, produced)
         per_set.append(r)
         if not s.get("named"):  # the column suffix of the set: its first model's
-            s["id"] = (model_id(obj) if item[1] is None and not isinstance(obj, Refused)
+            s["id"] = (model_id(item[0]) if item[1] is None
+                       and not isinstance(item[0], Refused)
                        else re.sub(r"[^a-z0-9.]+", "-", str(item[1] or obj.label).lower())
                        .strip("-"))
             s["named"] = True
-        if not isinstance(obj, Refused) and item[1] is None:
-            mid = model_id(obj)
+        first = item[0]  # the model as built (its provenance even where it refused)
+        if not isinstance(first, Refused) and item[1] is not None:
+            first = _Entry(first, label)  # a composed contact: its model's entry
+        if not isinstance(first, Refused):
+            mid = model_id(first)
             if mid not in results.models:
-                results.models[mid] = obj
+                results.models[mid] = first
             if s.get("model") is None:  # the first contact's model: its JSON entry
-                s["model"] = obj
+                s["model"] = first
         s["label"][g] = label
         f = s["fields"]
         for name, arr in r.items():

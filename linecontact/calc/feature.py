@@ -126,6 +126,11 @@ class Parameter:
     sweep : bool
         May be a sweep ``START:STOP:N`` on the command line (every numeric parameter
         may: two sweeps give the grid).
+    plausible : tuple of float, optional
+        ``(low, high)`` [SI]: the magnitudes this quantity has in practice (of
+        |value|). A BARE number outside it (SI by the input rule: ``--modulus 210``
+        is 210 Pa) is not refused, but named as the likely cause when its case then
+        fails (:func:`linecontact.calc.cases.likely_cause`).
     words : tuple of str
         Words accepted besides a number (e.g. ``("free",)`` for the tilt): such a cell
         is given (``present``) with the value NaN; ``fail.cell(name, i)`` has the word.
@@ -138,6 +143,7 @@ class Parameter:
     positive: bool = True
     bounds: str | None = None
     sweep: bool = True
+    plausible: tuple | None = None
     words: tuple = ()
 
 

@@ -344,18 +344,63 @@ def _entries(model_docs, results):
 
 
 def write(text, path):
-    """Write `text` to stdout or to the file `path` (errors name the file)."""
+    """Write `text` to stdout or to the file `path` (errors name the file).
+
+    The file is written atomically: into a temporary file beside it, renamed onto
+    `path` only once complete (``os.replace``), so an interrupted or failed run
+    leaves the old file, or none, never a partial one.
+    """
+    import os
     import sys
+    import tempfile
 
     if path is None:
         sys.stdout.write(text)
         sys.stdout.flush()  # a closed pipe shows here, inside main's error handling
         return
+    tmp = None
     try:
-        with open(path, "w", encoding="utf-8", newline="") as fh:
+        folder = os.path.dirname(os.path.abspath(path))
+        fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".",
+                                   suffix=".part", dir=folder)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
             fh.write(text)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # as open() would create it, not mkstemp's 0600
+        os.replace(tmp, path)
+        tmp = None
     except (OSError, ValueError) as exc:  # ValueError: an embedded NUL in the path
         raise OutputError(path, exc) from None
+    finally:
+        if tmp is not None:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+
+
+def refuse_input_as_output(output, inputs):
+    """Raise :class:`OutputError` if the output file `output` is one of the `inputs`
+    (the CSV batch, a Prony file, ...): writing it would destroy the input. Compared
+    as files (same inode where both exist, else the same absolute path)."""
+    import os
+
+    if output is None:
+        return
+    for name in inputs:
+        if not name:
+            continue
+        try:
+            same = (os.path.samefile(output, name) if os.path.exists(output)
+                    and os.path.exists(name)
+                    else os.path.abspath(output) == os.path.abspath(name))
+        except (OSError, ValueError):
+            continue
+        if same:
+            raise OutputError(output, ValueError(
+                f"-o names the input file {str(name)!r}, which would be overwritten; "
+                "give another output file"))
 
 
 class OutputError(OSError):

@@ -18,7 +18,7 @@
 With any of them the contact is the library's composed contact
 (:class:`linecontact.contact.Contact` with a :class:`~linecontact.contact.Roller` of
 that profile and tilt): its models are the coupled-slice model (``profiled-roller``,
-100 slices) and, for steel, ISO/TS 16281 slicing (``iso16281-slicing``, 30 slices), and
+100 slices) and, for steel, ISO 16281 slicing (``iso16281-slicing``, 30 slices), and
 a straight-cylinder law named with ``--model`` is refused for it. Every other feature
 composes with it: the tangential law is the profiled contact's own (from its F(d)), the
 raceways carry the profiled roller on both contacts. Columns: moment, tilt, tilt
@@ -42,7 +42,7 @@ group = "profiled and tilted roller"
 parameters = (
     Parameter("crown_radius", "length", "crown radius Rc of a circular crown, drop "
               "x^2/(2 Rc): the contact becomes the profiled roller's (coupled slices, "
-              "ISO/TS 16281 slicing)", group),
+              "ISO 16281 slicing)", group),
     Parameter("profile", "text", "roller profile NAME[:OPT=VAL,...]: iso16281[:D=..], "
               "lundberg[:F0=..], johns-gohar[:F0=..], circular:Rc=.., end-relief:r=.. or "
               "end-relief:l=..,angle=.. (or drop=..), file:PATH.csv (x, drop in m)",
@@ -57,7 +57,7 @@ NAMES = tuple(p.name for p in parameters)
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
         "coupling along the axis; linecontact.roller), 100 slices; M: moment about the "
         "roller centre; p max: peak pressure (not printed where the contact reaches a "
-        "roller end: singular there on a half-space, 'edge'); ISO/TS 16281 slicing: "
+        "roller end: singular there on a half-space, 'edge'); ISO 16281 slicing: "
         "uncoupled slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
 
 notes = {"profiled_roller": NOTE}

@@ -54,17 +54,20 @@ DIMENSIONS = {
     "dimensionless": ("", "", "0.3"),
     "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
+    "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
 QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
-    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+)?\s*$",
+    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
     re.ASCII,
 )
 # re.ASCII: \s and the class above never match other scripts' digits or spaces; the
 # micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm"), and the
 # capital \u039c so that "5 ΜM" (µm typed in capitals) gets its "did you mean".
+# A compound name (``mJ/m^2``) is matched as ONE name and converted only if it is a
+# built-in unit (the surface energies of BUILTIN_UNITS); it is never handed to pint.
 
 #: Smallest positive normal float: below it a value has lost precision (subnormal).
 _TINY = sys.float_info.min
@@ -140,6 +143,8 @@ BUILTIN_UNITS = {
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
     "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180},
     "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
+    "surface_energy": {"J/m^2": 1.0, "mJ/m^2": 1e-3, "uJ/m^2": 1e-6, "N/m": 1.0,
+                       "mN/m": 1e-3},
 }
 
 
@@ -147,7 +152,7 @@ def _a(kind):
     """'a length', 'an angle', 'a number' (for 'dimensionless')."""
     if kind == "dimensionless":
         return "a number"
-    return f"{'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+    return f"{'an' if kind[0] in 'aeiou' else 'a'} {kind.replace('_', ' ')}"
 
 
 def _unit_factor(unit, kind):
@@ -164,6 +169,10 @@ def _unit_factor(unit, kind):
         result = f"expected a pure number, got the unit {unit!r}"
     elif unit in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][unit]
+    elif "/" in unit:
+        names = [n for units in BUILTIN_UNITS.values() for n in units if "/" in n]
+        result = (f"unknown unit {unit!r} (the compound names understood are "
+                  f"{', '.join(names)})")
     else:
         ureg = _registry()
         try:

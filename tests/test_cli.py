@@ -852,7 +852,7 @@ SAMPLE = {
     "relaxation_time": "10s", "prony": "PRONY", "time": "10s",
     "crown_radius": "500mm", "profile": "iso16281", "tilt": "1mrad",
     "inner_raceway_diameter": "40mm", "outer_raceway_diameter": "50mm",
-    "misalignment": "0.1mrad",
+    "misalignment": "0.1mrad", "work_of_adhesion": "50mJ/m^2",
     "stresses": "yes", "sliding_friction": "0.1", "stress_field": "0mm",
     "surface_hardness": "700", "case_depth": "0.5mm", "core_hardness": "350",
     "hardness_profile": "HARDNESS",

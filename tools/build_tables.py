@@ -19,6 +19,9 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
+``adhesion``
+    Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
+    MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
 ``bearing``
     Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
     spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
@@ -42,6 +45,7 @@ SUBCOMMANDS = {
     "tangential": "tools.studies.tangential_study",
     "stress": "tools.studies.stress_study",
     "accuracy": "tools.studies.accuracy",
+    "adhesion": "tools.studies.adhesion_study",
     "bearing": "tools.studies.bearing_study",
 }
 

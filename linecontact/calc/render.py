@@ -182,7 +182,8 @@ def _typed(cases, name):
 
 #: Units of a swept input in the table: kind -> (engineering unit, factor from SI).
 _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
-                "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0)}
+                "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0),
+                "surface_energy": ("mJ/m^2", 1e3)}
 
 
 def swept_inputs(cases):

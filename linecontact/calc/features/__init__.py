@@ -1,8 +1,8 @@
 """The calculator's features (see :mod:`linecontact.calc.feature` for the shape of one
 and how to add one). :data:`FEATURES` is the one registration point: its order is the
 order of the ``--help`` sections, of the rules and of the output columns."""
-from . import raceways, roller, stresses, tangential, viscoelastic
+from . import adhesion, raceways, roller, stresses, tangential, viscoelastic
 
 __all__ = ["FEATURES"]
 
-FEATURES = (raceways, roller, tangential, viscoelastic, stresses)
+FEATURES = (raceways, roller, tangential, viscoelastic, stresses, adhesion)

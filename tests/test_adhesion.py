@@ -1,0 +1,186 @@
+"""The rule of Hess (linecontact.adhesion) against exact oracles.
+
+- JKR sphere (Johnson, Kendall & Roberts 1971) through the generic code, g = x^2/R:
+  pull-off 1.5 pi w R (force control), 5/6 pi w R (depth control), zero-load radius
+  a0 = (9 pi w R^2/(2 E*))^(1/3), and the JKR force-depth law on both branches;
+- Kendall's punch (1971): F = -sqrt(8 pi a^3 E* w);
+- w = 0: the non-adhesive law exactly;
+- the 2D JKR cylinder (Barquins 1988): its pull-off is the minimum of its F/L(b);
+- the finite cylinder's corrected law tends to the 2D JKR value per length (long roller).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from linecontact.adhesion import (AdhesiveContact, CylinderAdhesion,
+                                  jkr_cylinder_force_per_length, jkr_cylinder_pull_off,
+                                  tabor_note, tabor_parameter)
+from linecontact.models import get_model
+from linecontact.validity import OutOfRangeError
+
+R, E, W = 10e-3, 1.5e6, 0.04
+
+
+def sphere(work=W, closed=False):
+    nf = (lambda a: 4 * E * np.asarray(a) ** 3 / (3 * R)) if closed else None
+    return AdhesiveContact(lambda x: x ** 2 / R, E, work, normal_force=nf)
+
+
+@pytest.mark.parametrize("closed", [False, True])
+def test_jkr_sphere_pull_off_both_controls(closed):
+    """JKR: -3/2 pi w R under force control, -5/6 pi w R under depth control, for the
+    quadrature F_N and the closed form alike (to 1e-9: Brent's tolerance 1e-12 in a at a
+    stationary point)."""
+    c = sphere(closed=closed)
+    assert c.pull_off("force")["force"] == pytest.approx(-1.5 * math.pi * W * R, rel=1e-9)
+    assert c.pull_off("depth")["force"] == pytest.approx(-5 / 6 * math.pi * W * R, rel=1e-8)
+
+
+def test_jkr_sphere_radii_and_depths():
+    """JKR radii: a_c^3 = 9 pi w R^2/(8 E*) at force-controlled pull-off, a0^3 = 4 a_c^3 at
+    zero load, a_d^3 = a_c^3/9 at depth-controlled pull-off, where d = -3 a_d^2/R."""
+    c = sphere()
+    ac3 = 9 * math.pi * W * R ** 2 / (8 * E)
+    assert c.pull_off("force")["contact_radius"] ** 3 == pytest.approx(ac3, rel=1e-9)
+    assert c.zero_load()["contact_radius"] ** 3 == pytest.approx(4 * ac3, rel=1e-12)
+    off = c.pull_off("depth")
+    assert off["contact_radius"] ** 3 == pytest.approx(ac3 / 9, rel=1e-8)
+    assert off["depth"] == pytest.approx(-3 * off["contact_radius"] ** 2 / R, rel=1e-8)
+
+
+def test_jkr_sphere_force_depth_both_branches():
+    """At any depth the force on either branch satisfies JKR's parametric law
+    F = 4E* a^3/(3R) - sqrt(8 pi a^3 E* w), d = a^2/R - sqrt(2 pi a w/E*) (to 1e-10)."""
+    c = sphere()
+    d_off = c.pull_off("depth")["depth"]
+    for branch, depths in (("stable", np.linspace(d_off * 0.999, 5e-5, 7)),
+                           ("unstable", np.linspace(d_off * 0.999, d_off * 0.01, 5))):
+        a = np.asarray(c.radius_at_depth(depths, branch))
+        assert np.allclose(a ** 2 / R - np.sqrt(2 * math.pi * a * W / E), depths,
+                           rtol=1e-10, atol=1e-20)
+        F = np.asarray(c.force_at_depth(depths, branch))
+        assert np.allclose(F, 4 * E * a ** 3 / (3 * R) - np.sqrt(8 * math.pi * a ** 3 * E * W),
+                           rtol=1e-9)
+    with pytest.raises(OutOfRangeError, match="depth"):
+        c.force_at_depth(1.01 * d_off)
+
+
+def test_kendall_punch():
+    """A flat punch of radius a (g = 0 for x < a): the rule of Hess gives Kendall's
+    pull-off F = -sqrt(8 pi a^3 E* w) at the contact radius a (F_N(a) = 0)."""
+    a = 2e-3
+    c = AdhesiveContact(lambda x: 0.0 if x <= a else 1.0, E, W)
+    assert c.force(a) == pytest.approx(-math.sqrt(8 * math.pi * a ** 3 * E * W), rel=1e-12)
+    # the edge springs detach at d = -sqrt(2 pi a w/E*): F = 2 E* a d there, the same value
+    assert 2 * E * a * c.depth(a) == pytest.approx(c.force(a), rel=1e-12)
+
+
+def test_zero_work_is_the_non_adhesive_law():
+    """w = 0: F(d) on the (one) branch equals the model's own F(d) to rounding, and there
+    is no pull-off."""
+    m = get_model("universal", 5e-3, 10e-3, 2.7e6)
+    c = AdhesiveContact.from_model(m, 0.0)
+    d = np.array([1e-7, 1e-6, 1e-5])
+    assert np.allclose(c.force_at_depth(d), m.force(d), rtol=1e-10)
+    s = sphere(work=0.0)
+    assert s.force_at_depth(1e-6) == pytest.approx(4 / 3 * E * math.sqrt(R) * 1e-9, rel=1e-9)
+    with pytest.raises(OutOfRangeError, match="work"):
+        s.pull_off("force")
+
+
+def test_hysteresis_energy_of_jkr_sphere():
+    """The energy lost per depth-controlled cycle is the area between the curves: the
+    integral of -F over the stable branch from the pull-off depth to 0, here checked
+    against an independent quadrature in a of the closed-form JKR law (to 1e-4)."""
+    from scipy.integrate import quad
+
+    c = sphere()
+    h = c.hysteresis(5e-5)
+    ad = c.pull_off("depth")["contact_radius"]
+    a0 = float(c.radius_at_depth(0.0))
+
+    def integrand(a):
+        F = 4 * E * a ** 3 / (3 * R) - math.sqrt(8 * math.pi * a ** 3 * E * W)
+        dd = 2 * a / R - 0.5 * math.sqrt(2 * math.pi * W / (E * a))
+        return -F * dd
+
+    ref, _ = quad(integrand, ad, a0, epsrel=1e-12)
+    assert h["energy"] == pytest.approx(ref, rel=1e-4)
+    assert h["approach_force"][0] == 0 and h["retraction_force"][-1] < 0
+
+
+def test_2d_jkr_pull_off_is_the_minimum_of_its_law():
+    """Barquins' pull-off F_c/L = -3 (pi E* R w^2/16)^(1/3) at b_c = (2 R^2 w/(pi E*))^(1/3)
+    is the minimum of F/L(b) = pi E* b^2/(4R) - sqrt(2 pi E* w b)."""
+    from scipy.optimize import minimize_scalar
+
+    F, b = jkr_cylinder_pull_off(R, E, W)
+    res = minimize_scalar(lambda x: jkr_cylinder_force_per_length(x * b, R, E, W),
+                          bounds=(0.1, 10), method="bounded", options={"xatol": 1e-10})
+    assert res.x == pytest.approx(1.0, rel=1e-6)
+    assert res.fun == pytest.approx(F, rel=1e-12)
+
+
+def test_long_roller_limit_within_one_percent_of_2d_jkr():
+    """A long roller (s = b_c/L = 1e-3): the corrected pull-off per unit length is the 2D
+    JKR value within 1 %; the plain MDR rule is not (its edge term scales with the MDR
+    half-length ~ L, not with b; its pull-off lies beyond d = 0.15 R here, so the model
+    is asked with extrapolate=True)."""
+    Rr, L, Ee = 1e-3, 0.2, 2.7e6
+    w = math.pi / 2 * 1e-3 ** 3 * Ee * L ** 3 / Rr ** 2
+    c = CylinderAdhesion(get_model("universal", Rr, L, Ee, extrapolate=True), w)
+    assert c.s == pytest.approx(1e-3, rel=1e-9)
+    F2, _ = jkr_cylinder_pull_off(Rr, Ee, w)
+    res = c.pull_off("force")
+    assert abs(res["force"] / L / F2 - 1) < 0.01
+    assert abs(res["mdr_force"] / L / F2 - 1) > 0.1
+
+
+def test_cylinder_table_refuses_beyond_its_end_and_other_shapes():
+    """s beyond the table's largest value and a model without the cylinder's geometry
+    are refused with the parameter named."""
+    m = get_model("universal", 1e-3, 1e-3, 1e6)
+    with pytest.raises(OutOfRangeError, match="work"):
+        CylinderAdhesion(m, 1e3)
+    with pytest.raises(OutOfRangeError, match="model"):
+        CylinderAdhesion(get_model("kunz", 1e-3, 1e-3, 1e6), 0.01)
+
+
+def test_tabor_parameter_and_regimes():
+    """mu_T = (R w^2/(E*^2 z0^3))^(1/3); the note names JKR above 5 and DMT below 1."""
+    assert tabor_parameter(1.0, 1.0, 1.0, z0=1.0) == pytest.approx(1.0)
+    assert tabor_parameter(8.0, 1.0, 1.0, z0=1.0) == pytest.approx(2.0)
+    assert "JKR regime" in tabor_note(10.0)
+    assert "DMT-like" in tabor_note(0.5)
+
+
+def test_viscoelastic_limits_and_refusal():
+    """Relaxed and instantaneous limits are JKR with E*(inf) and E*(0) (the sphere's
+    pull-off does not depend on E*, its zero-load radius does); any rate in between is
+    refused with the reason."""
+    from linecontact.viscoelastic import StandardLinearSolid
+
+    sls = StandardLinearSolid(3e6, 1e6, 0.1)
+    c = sphere()
+    for limit, Ev in (("relaxed", 1e6), ("instantaneous", 3e6)):
+        v = c.viscoelastic_limit(sls, limit)
+        assert v.estar == pytest.approx(Ev)
+        assert v.pull_off("force")["force"] == pytest.approx(-1.5 * math.pi * W * R, rel=1e-9)
+        assert v.zero_load()["contact_radius"] ** 3 == pytest.approx(
+            9 * math.pi * W * R ** 2 / (2 * Ev), rel=1e-10)
+    with pytest.raises(OutOfRangeError, match="crack-tip"):
+        c.viscoelastic_limit(sls, "1 mm/s")
+
+
+def test_depth_at_force_inverts_force_at_depth():
+    """On the stable branch d(F(d)) = d (the two are inverses, to 1e-9), including at
+    zero and negative forces down to the force-controlled pull-off."""
+    c = sphere()
+    d = np.array([c.pull_off("force")["depth"] * 0.9, 0.0, 3e-5])
+    F = np.asarray(c.force_at_depth(d))
+    assert np.allclose(c.depth_at_force(F), d, rtol=1e-9, atol=1e-15)
+    with pytest.raises(OutOfRangeError, match="force"):
+        c.depth_at_force(1.01 * c.pull_off("force")["force"])

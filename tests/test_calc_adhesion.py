@@ -1,0 +1,71 @@
+"""The calculator's adhesion option (linecontact.calc.features.adhesion).
+
+Run in-process through linecontact.calc.cli.main. Facts checked: every printed number is
+the library's (same functions: rtol 1e-12 on the JSON's floats); units J/m^2 and mJ/m^2
+give the same case; every bad combination is one line on stderr naming the parameter,
+exit status 2.
+"""
+import json
+
+import numpy as np
+import pytest
+
+from linecontact.adhesion import AdhesiveContact, CylinderAdhesion, tabor_parameter
+from linecontact.calc.cli import main
+from linecontact.classical import effective_modulus
+from linecontact.models import get_model
+
+CASE = ["calc", "--radius", "0.5mm", "--length", "2mm", "--modulus", "2MPa",
+        "--poisson", "0.5", "--model", "universal"]
+
+
+def _row(capsys, argv):
+    assert main(argv + ["--json"]) == 0
+    return json.loads(capsys.readouterr().out)["models"][0]["rows"][0]
+
+
+def test_columns_are_the_library_values(capsys):
+    """Pull-off (BEM-corrected, both controls; MDR), zero load, the depth at the load
+    with adhesion and the Tabor parameter equal the library's."""
+    row = _row(capsys, CASE + ["--load", "10mN", "--work-of-adhesion", "40mJ/m^2"])
+    E = effective_modulus(2e6, 0.5)
+    m = get_model("universal", 0.5e-3, 2e-3, E)
+    c = CylinderAdhesion(m, 0.04)
+    mdr = AdhesiveContact.from_model(m, 0.04)
+    assert row["pull_off_force"] == pytest.approx(c.pull_off("force")["force"], rel=1e-12)
+    assert row["pull_off_depth_ctrl"] == pytest.approx(c.pull_off("depth")["force"],
+                                                       rel=1e-12)
+    assert row["pull_off_mdr"] == pytest.approx(mdr.pull_off("force")["force"], rel=1e-12)
+    assert row["zero_load_depth"] == pytest.approx(mdr.zero_load()["depth"], rel=1e-12)
+    assert row["depth_adhesive"] == pytest.approx(mdr.depth_at_force(0.01), rel=1e-12)
+    assert row["tabor"] == pytest.approx(tabor_parameter(0.5e-3, 0.04, E), rel=1e-12)
+    assert row["depth_adhesive"] > row["depth"], "adhesion pulls the roller in deeper"
+
+
+def test_depth_given_gives_the_adhesive_force(capsys):
+    """With --depth the row has the force at that depth with adhesion (rule of Hess),
+    smaller than without: adhesion adds tension at the contact edge."""
+    row = _row(capsys, CASE + ["--depth", "5um", "--work-of-adhesion", "0.04 J/m^2"])
+    m = get_model("universal", 0.5e-3, 2e-3, effective_modulus(2e6, 0.5))
+    F = AdhesiveContact.from_model(m, 0.04).force_at_depth(5e-6)
+    assert row["force_adhesive"] == pytest.approx(F, rel=1e-12)
+    assert row["force_adhesive"] < row["force"]
+
+
+@pytest.mark.parametrize("extra, word", [
+    (["--work-of-adhesion", "40mJ/m"], "unknown unit"),
+    (["--work-of-adhesion", "5mm"], "surface energy"),
+    (["--work-of-adhesion", "-1mJ/m^2"], "work-of-adhesion"),
+    (["--work-of-adhesion", "40mJ/m^2", "--inner-raceway", "20mm", "--outer-raceway",
+      "21mm"], "raceways"),
+    (["--work-of-adhesion", "40mJ/m^2", "--instantaneous-modulus", "3MPa",
+      "--long-term-modulus", "1MPa", "--relaxation-time", "1s"], "receding"),
+])
+def test_bad_combinations_are_one_line(capsys, extra, word):
+    """A bad unit, a negative w, w with the raceways or with a viscoelastic body: one
+    line on stderr naming the parameter, exit status 2."""
+    argv = [a for a in CASE if a not in ("--modulus", "2MPa")] if "--instantaneous-modulus" \
+        in extra else CASE
+    assert main(argv + ["--load", "10mN"] + extra) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and word in err and "work" in err, err

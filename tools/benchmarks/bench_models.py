@@ -5,8 +5,8 @@ CPU time (``time.process_time``, median of ``--repeat`` runs) for N values sprea
 0.2-2 times the depth and force of a 5 mm x 10 mm steel roller at 1 kN. Two pairs run
 the algorithm before and after in the same process, interleaved:
 
-- universal d(F): the spline's own inverse (``NotAKnotSpline.solve``) against the
-  whole-spline Newton iteration (``UniversalCurve._newton``, still used for the MDR
+- universal d(F): the tabulated inverse spline polished by one Newton step
+  (``NotAKnotSpline.solve_fast``) against the whole-spline Newton iteration (``UniversalCurve._newton``, still used for the MDR
   profile);
 - partial-slip force with the BEM slip correction (``TangentialContact.force``,
   method "bem"): the bracketing table and Illinois steps against the 60-step
@@ -83,11 +83,12 @@ def main(argv=None):
     u = models.get_model("universal", R, L, ESTAR)
     c = u.curve
     lp = np.log(np.clip(u._psi_of_force(s * F0), c.psi_min, c.psi_max))
-    z0 = np.interp(lp, c._lnpsi, c._z)
+    c.depth_of_psi(np.exp(lp[:2]))      # builds the inverse table
     old, new, ratio = paired(
-        lambda: c._newton(lp, c._spline, c._slope, z0, c._z[0], c._z[-1]),
-        lambda: c._spline.solve(lp), rep)
-    print(f"\nuniversal d(F) core, whole-spline Newton / spline inverse: {old:.3f} / "
+        lambda: c._newton(lp, c._spline, c._slope, np.interp(lp, c._lnpsi, c._z),
+                          c._z[0], c._z[-1]),
+        lambda: c._spline.solve_fast(lp, c._inverse), rep)
+    print(f"\nuniversal d(F) core, whole-spline Newton / tabulated inverse: {old:.3f} / "
           f"{new:.3f} s, ratio {ratio:.1f}")
     for method in ("mdr", "bem"):
         tc = TangentialContact(u, 0.3, 0.8 * ESTAR, force=F0, method=method)

@@ -8,7 +8,7 @@ model; docs/theory.md, section 'Self-similarity'). SI units in and out (m, N, Pa
 everything is vectorised over numpy arrays. Each model states its error against the BEM
 (``model.measured_error``, from tables/model_accuracy.csv).
 
-Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO/TS 16281),
+Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO 16281),
 :mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.universal` (the universal
 curve), :mod:`~linecontact.mdr` (general MDR transforms), :mod:`~linecontact.models` (one
 interface for all models), :mod:`~linecontact.tables` (shipped data),

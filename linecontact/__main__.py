@@ -3,6 +3,6 @@
 if __name__ == "__main__":  # guarded: pytest --doctest-modules imports this module
     import sys
 
-    from linecontact.cli import main
+    from linecontact.calc.cli import main
 
     sys.exit(main())

@@ -57,13 +57,14 @@ DIMENSIONS = {
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
-_QUANTITY = re.compile(
+QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
-    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc]+)?\s*$",
+    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+)?\s*$",
     re.ASCII,
 )
 # re.ASCII: \s and the class above never match other scripts' digits or spaces; the
-# micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm").
+# micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm"), and the
+# capital \u039c so that "5 ΜM" (µm typed in capitals) gets its "did you mean".
 
 #: Smallest positive normal float: below it a value has lost precision (subnormal).
 _TINY = sys.float_info.min
@@ -174,8 +175,33 @@ def _unit_factor(unit, kind):
                 result = f"expected {_a(kind)}, got {_describe_unit(u)}"
             else:
                 result = float(ureg.Quantity(1.0, u).to(si).magnitude)
+    if isinstance(result, str):
+        result += _did_you_mean(unit, kind)
     _FACTORS[key] = result
     return result
+
+
+#: Typical size of each kind in SI, to order the suggestions of :func:`_did_you_mean`
+#: (the unit nearest to it first: 'MM' -> 'mm' before 'Mm').
+_TYPICAL = {"length": 1e-3, "force": 1e3, "pressure": 1e9, "angle": 1e-3, "time": 1.0}
+
+
+def _did_you_mean(unit, kind):
+    """' (did you mean 'mm'?)' for a refused unit name: the units of `kind` that differ
+    from it only in letter case ('5MM' is megamolar, '1KN' nothing), else a close
+    spelling (difflib); '' when there is none."""
+    import difflib
+    import math
+
+    names = BUILTIN_UNITS.get(kind, {})
+    same = [u for u in names if u.casefold() == unit.casefold() and u != unit]
+    if not same:
+        same = difflib.get_close_matches(unit, list(names), n=2, cutoff=0.75)
+    if not same:
+        return ""
+    typical = math.log10(_TYPICAL.get(kind, 1.0))
+    same.sort(key=lambda u: abs(math.log10(names[u]) - typical))
+    return " (did you mean " + " or ".join(repr(u) for u in same) + "?)"
 
 
 def _describe_unit(u):
@@ -272,7 +298,7 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
 
 def _parse_one(text, kind):
     """(SI value, None) or (None, reason) for one string: the rule of the module."""
-    m = _QUANTITY.match(text)
+    m = QUANTITY.match(text)
     if m is None:
         return None, _format_reason(text)
     number, unit = m.group("number"), m.group("unit")
@@ -343,7 +369,7 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     numbers = [""] * n
     units = [None] * n
     errors = [""] * n
-    match = _QUANTITY.match
+    match = QUANTITY.match
     for i, cell in enumerate(cells):
         m = match(cell)
         if m is None:

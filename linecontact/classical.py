@@ -7,17 +7,15 @@ E' = 2 E* instead, which is *not* what these functions take.
 Contents: effective modulus (Eq. 3), Hertz half-width (Eq. 1), Puttock & Thwaite
 (Eq. 2) with its inverse and its stiffness (the paper's Eq. 13 corrected), the
 Johnson-type family (Eq. 4), Kunz & de Maria's linear law, and the steel-only rolling
-bearing formulas of Palmgren and ISO/TS 16281.
+bearing formulas of Palmgren and ISO 16281.
 
 References
 ----------
-.. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-   Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71,
-   doi:10.22190/FUME170222003L.
+.. [1] Li & Popov (2017) [li-popov-2017].
 .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
 .. [3] A. Palmgren, Ball and Roller Bearing Engineering, SKF (1959).
-.. [4] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-   reference rating life for universally loaded bearings.
+.. [4] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+   reference rating life for universally loaded rolling bearings.
 """
 from __future__ import annotations
 
@@ -130,8 +128,7 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 3.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 3.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
@@ -206,8 +203,7 @@ def hertz_half_width(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 1.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
@@ -254,8 +250,7 @@ def hertz_peak_pressure(force, radius, length, estar):
     ----------
     .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        Eq. 4.45.
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 1.
+    .. [2] Li & Popov (2017) [li-popov-2017], Eq. 1.
     """
     F = check_positive("force", force, "N")
     R, L, E = _inputs(radius, length, estar)
@@ -308,8 +303,7 @@ def puttock_thwaite_depth(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2.
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
        Melbourne (1969).
@@ -360,8 +354,7 @@ def puttock_thwaite_force(depth, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (inverted
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 (inverted
        in closed form by the MDR, docs/theory.md, section 'MDR').
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -412,8 +405,7 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 and Eq. 13
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 and Eq. 13
        (corrected).
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -459,8 +451,7 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2 (k = 2 E*
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2 (k = 2 E*
        a by the MDR, docs/theory.md, section 'MDR').
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
@@ -504,8 +495,7 @@ def puttock_thwaite_profile(x, radius, length):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 with alpha
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 with alpha
        = pi/2, beta = 1 (Eq. 2).
     """
     return lipopov_profile(x, radius, length, **_PT)
@@ -586,8 +576,7 @@ def johnson_equivalent_beta(radius, length, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4 and Eq. 7
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4 and Eq. 7
        (the identity is derived here).
     """
     R = check_positive("radius", radius, "m")
@@ -644,8 +633,7 @@ def johnson_depth(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -688,8 +676,7 @@ def johnson_force(depth, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -732,8 +719,7 @@ def johnson_stiffness(force, radius, length, estar, c=1.0):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985) (c = 1).
     """
     R, L, E, cc, coeffs, hint = _johnson(radius, length, estar, c)
@@ -782,8 +768,7 @@ def kunz_force(depth, length, estar, c=KUNZ_C):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], section 1.
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -826,8 +811,7 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, section 1.
+    .. [1] Li & Popov (2017) [li-popov-2017], section 1.
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -839,7 +823,7 @@ def kunz_depth(force, length, estar, c=KUNZ_C):
 
 
 # --------------------------------------------------------------------------------------
-# Palmgren, ISO/TS 16281 (steel only)
+# Palmgren, ISO 16281 (steel only)
 # --------------------------------------------------------------------------------------
 STEEL_MODULUS = 210e9
 STEEL_POISSON = 0.3
@@ -847,7 +831,7 @@ STEEL_POISSON = 0.3
 STEEL_ESTAR = STEEL_MODULUS / (2 * (1 - STEEL_POISSON**2))
 #: Relative tolerance on E* within which the steel formulas are accepted.
 STEEL_ESTAR_TOLERANCE = 0.10
-#: E* accepted by the steel-only formulas (Palmgren, ISO/TS 16281).
+#: E* accepted by the steel-only formulas (Palmgren, ISO 16281).
 STEEL_ESTAR_RANGE = Interval("estar", STEEL_ESTAR * (1 - STEEL_ESTAR_TOLERANCE),
                              STEEL_ESTAR * (1 + STEEL_ESTAR_TOLERANCE), unit="Pa")
 _STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu = 0.3, "
@@ -857,7 +841,7 @@ _STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu
 
 #: Palmgren's coefficient, d [mm] = 3.84e-5 F[N]^0.9 / L[mm]^0.8 (one contact).
 PALMGREN_C = 3.84e-5
-#: ISO/TS 16281 per-contact coefficient, d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8.
+#: ISO 16281 per-contact coefficient, d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8.
 ISO16281_C = 3.97e-5
 
 
@@ -961,7 +945,7 @@ def palmgren_force(depth, length, estar):
 
 @document(STEEL=STEEL_ESTAR_RANGE)
 def iso16281_depth(force, length, estar):
-    r"""Depth of one roller-raceway contact per ISO/TS 16281 (steel only).
+    r"""Depth of one roller-raceway contact per ISO 16281 (steel only).
 
     .. math:: d\,[\mathrm{mm}] = 3.97\times10^{-5}\,
               \frac{F\,[\mathrm{N}]^{0.9}}{L\,[\mathrm{mm}]^{0.8}}
@@ -994,8 +978,8 @@ def iso16281_depth(force, length, estar):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-       reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded rolling bearings.
     """
     return _steel_depth(force, length, estar, ISO16281_C)
 
@@ -1032,7 +1016,7 @@ def iso16281_force(depth, length, estar):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-       reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+       reference rating life for universally loaded rolling bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)

@@ -56,9 +56,7 @@ the CLI lists both.
 
 References
 ----------
-.. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-   Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71,
-   doi:10.22190/FUME170222003L.
+.. [1] Li & Popov (2017) [li-popov-2017].
 .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
    Friction, Springer (2015).
 """
@@ -71,8 +69,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from ._numerics import NotAKnotSpline, log1p_excess_root
 from .tables import available_tables, read_table, table_path
-from .validity import (Interval, OutOfRangeError, check_interval, check_positive,
-                       document, out)
+from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
+                       check_positive, document, out)
 
 __all__ = [
     "ALPHA_EQ11",
@@ -147,8 +145,7 @@ class CoefficientSet:
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Table 1 and
+    .. [1] Li & Popov (2017) [li-popov-2017], Table 1 and
        Eq. 11.
     """
 
@@ -263,10 +260,9 @@ def coefficient_set(name="published"):
     try:
         path = table_path(stem)
     except FileNotFoundError:
-        raise OutOfRangeError("coefficients", name, "one of "
-                              + ", ".join(repr(n) for n in available_coefficient_sets()),
-                              hint="a table set NAME is read from tables/lipopov_NAME.csv"
-                              ) from None
+        raise UnknownNameError("coefficients", name, available_coefficient_sets(),
+                               hint="a table set NAME is read from "
+                                    "tables/lipopov_NAME.csv") from None
     key = (str(path), os.stat(path).st_mtime_ns)
     if key not in _CACHE:
         _CACHE[key] = _table_set(name, stem)
@@ -388,8 +384,7 @@ def lipopov_depth_limit(radius, length, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
     """
@@ -431,8 +426,7 @@ def lipopov_force_limit(radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 (MDR force
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 (MDR force
        at the bound).
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
@@ -474,8 +468,7 @@ def dimensionless_profile(x_tilde, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8 and 9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8 and 9.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
     """
@@ -522,8 +515,7 @@ def lipopov_profile(x, radius, length, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
     """
@@ -589,8 +581,7 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 with the
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 with the
        MDR rules (docs/theory.md, section 'MDR').
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
@@ -651,8 +642,7 @@ def lipopov_depth(force, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 and 9
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 and 9
        (Eq. 2 for alpha = pi/2, beta = 1).
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
@@ -697,8 +687,7 @@ def lipopov_contact_radius(depth, radius, length, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
     """
@@ -743,8 +732,7 @@ def lipopov_stiffness(depth, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 (k = 2 E*
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 (k = 2 E*
        a).
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
@@ -793,8 +781,7 @@ def lipopov_stiffness_at_force(force, radius, length, estar, *, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7 and Eq. 13
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7 and Eq. 13
        (corrected).
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015).
@@ -857,8 +844,7 @@ def dimensionless_contact_radius(d_tilde, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8-9.
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
@@ -901,8 +887,7 @@ def dimensionless_force(d_tilde, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8-9.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
     """
@@ -946,8 +931,7 @@ def dimensionless_stiffness(d_tilde, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8-9.
     """
     a, b = _coeffs(alpha, beta)
     d = _d_tilde_checked(d_tilde, b)
@@ -992,8 +976,7 @@ def dimensionless_depth(f_tilde, alpha, beta):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 8-9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8-9.
     """
     a, b = _coeffs(alpha, beta)
     f = check_interval(
@@ -1052,8 +1035,7 @@ def effective_beta(d_tilde, f_tilde, alpha=ALPHA_EQ11):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7-9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7-9.
     """
     d = check_positive("d_tilde", d_tilde)
     f = check_positive("f_tilde", f_tilde)
@@ -1104,8 +1086,7 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 9.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 9.
     """
     from scipy.optimize import least_squares
     x = np.ravel(check_positive("x_tilde", x_tilde))

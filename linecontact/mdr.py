@@ -21,9 +21,7 @@ References
 ----------
 .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
    Friction, Springer (2015).
-.. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-   Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71,
-   doi:10.22190/FUME170222003L, section 3.
+.. [2] Li & Popov (2017) [li-popov-2017], section 3.
 .. [3] docs/theory.md, section 'MDR'.
 """
 from __future__ import annotations
@@ -324,8 +322,7 @@ def mdr_profile_from_stiffness(depth, stiffness, estar):
     ----------
     .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [2] Li & Popov (2017) [li-popov-2017].
     .. [3] docs/theory.md, section 'MDR'.
     """
     d, k = _samples(depth, stiffness, _SAMPLED_STIFFNESS)
@@ -386,8 +383,7 @@ def mdr_profile_from_force(depth, force, estar):
     ----------
     .. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [2] Li & Popov (2017) [li-popov-2017].
     .. [3] docs/theory.md, section 'MDR'.
     """
     d, F = _samples(depth, force, _SAMPLED_FORCE)

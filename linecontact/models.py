@@ -53,8 +53,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import (OutOfRangeError, check_flag, check_interval, check_positive,
-                       document, out)
+from .validity import (OutOfRangeError, UnknownNameError, check_flag, check_interval,
+                       check_positive, document, out)
 
 __all__ = [
     "ContactModel",
@@ -170,8 +170,7 @@ def scales_are_normal(radius, length, estar):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71 (the
+    .. [1] Li & Popov (2017) [li-popov-2017] (the
        dimensionless variables of Eq. 9).
     """
     L = np.asarray(length, dtype=float)
@@ -220,10 +219,36 @@ class ContactModel(abc.ABC):
     #: Registry key.
     key: str = ""
 
+    def __init_subclass__(cls, **kwargs):
+        """Every model's constructor refuses an unknown keyword (``cc=`` for Johnson's
+        ``c``) with one line listing the valid ones (:class:`UnknownNameError`), not
+        Python's bare TypeError."""
+        super().__init_subclass__(**kwargs)
+        init = cls.__dict__.get("__init__")
+        if init is None or getattr(init, "_keywords_checked", False):
+            return
+        import functools
+        import inspect
+
+        params = inspect.signature(init).parameters
+        if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+            return
+        names = [n for n in params if n != "self"]
+
+        @functools.wraps(init)
+        def checked(self, *args, **options):
+            for name in options:
+                if name not in params:
+                    raise UnknownNameError(f"{cls.__name__} keyword", name, names)
+            return init(self, *args, **options)
+
+        checked._keywords_checked = True
+        cls.__init__ = checked
+
     def __init__(self, radius, length, estar, **options):
         if options:
-            raise TypeError(f"model {self.key!r} takes no option(s) "
-                            f"{', '.join(sorted(options))}")
+            raise UnknownNameError(f"{type(self).__name__} keyword", sorted(options)[0],
+                                   ["radius", "length", "estar"])
         self.radius = _scalar("radius", radius, "m")
         self.length = _scalar("length", length, "m")
         self.estar = _scalar("estar", estar, "Pa")
@@ -274,6 +299,20 @@ class ContactModel(abc.ABC):
     def check_applicable(self):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
 
+    def check_starts_at_zero(self):
+        """Raise :class:`~linecontact.validity.CombinationError` unless F(d) starts at
+        d = 0 (:attr:`first_contact_depth`), as the tangential and viscoelastic laws
+        built on F(d) take it."""
+        d0 = self.first_contact_depth
+        if d0 != 0.0:
+            from .validity import CombinationError
+
+            raise CombinationError({"model": self.label, "first_contact_depth": d0},
+                                   "the law's force starts at a nonzero depth (a tilted "
+                                   "roller); use linecontact.contact.Contact, which takes "
+                                   "the law in the approach from first contact",
+                                   unit={"first_contact_depth": "m"})
+
     def __repr__(self):
         return (f"<{type(self).__name__} {self.label}: R = {self.radius:g} m, "
                 f"L = {self.length:g} m, E* = {self.estar:g} Pa>")
@@ -298,6 +337,11 @@ class ContactModel(abc.ABC):
     def contact_radius(self, depth):
         """MDR contact half-length a = k / (2 E*) [m] at depth d [m]."""
         return out(np.asarray(self.stiffness(depth)) / (2 * self.estar))
+
+    #: Depth at which the law's force starts [m]: 0 for a cylinder, negative for a
+    #: tilted roller whose depth is that of its centre. The laws built on F(d) with
+    #: F(0) = 0 (tangential, viscoelastic) refuse a law that starts elsewhere.
+    first_contact_depth = 0.0
 
     #: Why a model without an MDR profile has none (the end of the NotImplementedError
     #: message of :meth:`profile`); each such model states its own reason.
@@ -356,8 +400,7 @@ class ContactModel(abc.ABC):
 
         References
         ----------
-        .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-           Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+        .. [1] Li & Popov (2017) [li-popov-2017].
         """
         if (force is None) == (depth is None):
             raise TypeError("evaluate() takes exactly one of force= or depth=")
@@ -429,8 +472,7 @@ class LiPopovModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7, 9,
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 7, 9,
        11 and Table 1.
     .. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact
        Mechanics and Friction, Springer (2015).
@@ -539,8 +581,7 @@ class PuttockThwaiteModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 2.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 2.
     .. [2] M. J. Puttock, E. G. Thwaite, Elastic compression of spheres and cylinders at
        point and line contact, National Standards Laboratory Technical Paper 25, CSIRO,
        Melbourne (1969).
@@ -604,8 +645,7 @@ class JohnsonModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 4.
+    .. [1] Li & Popov (2017) [li-popov-2017], Eq. 4.
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985).
     """
 
@@ -679,8 +719,7 @@ class KunzModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders",
-       Facta Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     .. [2] Kunz & de Maria (2002), experiments on parallel cylinders, as cited by Li &
        Popov (2017) [1].
     """
@@ -796,7 +835,7 @@ class PalmgrenModel(_SteelModel):
 @register
 @document(STEEL=_c.STEEL_ESTAR_RANGE)
 class ISO16281Model(_SteelModel):
-    """ISO/TS 16281 per-contact roller deflection (steel only).
+    """ISO 16281 per-contact roller deflection (steel only).
 
     Parameters
     ----------
@@ -821,16 +860,16 @@ class ISO16281Model(_SteelModel):
 
     References
     ----------
-    .. [1] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the
-       modified reference rating life for universally loaded bearings.
+    .. [1] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the
+       modified reference rating life for universally loaded rolling bearings.
     """
 
     key = "iso16281"
-    label = "ISO/TS 16281"
+    label = "ISO 16281"
     accuracy_tag = "iso16281"
     _depth_fn = staticmethod(_c.iso16281_depth)
     _force_fn = staticmethod(_c.iso16281_force)
-    _source = ("ISO/TS 16281:2008: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
+    _source = ("ISO 16281:2025: d [mm] = 3.97e-5 F[N]^0.9 / L[mm]^0.8 per contact "
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
@@ -886,8 +925,7 @@ class UniversalModel(ContactModel):
 
     References
     ----------
-    .. [1] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71.
+    .. [1] Li & Popov (2017) [li-popov-2017].
     """
 
     key = "universal"
@@ -1068,8 +1106,10 @@ def get_model(key, radius, length, estar, **options):
 
     Raises
     ------
+    UnknownNameError
+        Unknown key (the message lists the valid ones).
     OutOfRangeError
-        Unknown key (the message lists the valid ones) or bad R, L, E*.
+        Bad R, L, E*.
     FileNotFoundError
         The model's table is missing (the message names the file).
 
@@ -1085,13 +1125,12 @@ def get_model(key, radius, length, estar, **options):
     >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: model = 'hertz' is outside the valid range ...
+    linecontact.validity.UnknownNameError: model = 'hertz' is not a known name; valid: ...
     """
     if key not in MODELS and key in DEFINED_IN:
         import_module(DEFINED_IN[key])
     if key not in MODELS:
-        raise OutOfRangeError("model", key, "one of "
-                              + ", ".join(repr(k) for k in available_models()))
+        raise UnknownNameError("model", key, available_models())
     return MODELS[key](radius, length, estar, **options)
 
 
@@ -1101,7 +1140,7 @@ def standard_models(radius, length, estar):
     Universal curve (the best estimate, :data:`DEFAULT_MODEL`), Li-Popov Table 1 spline,
     Li-Popov Eq. 11, Li-Popov regenerated (only if ``tables/lipopov_regenerated.csv``
     exists: an optional coefficient set), Puttock-Thwaite, Johnson c = 1, 0.72, 0.572,
-    Kunz, Palmgren, ISO/TS 16281.
+    Kunz, Palmgren, ISO 16281.
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise

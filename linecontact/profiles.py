@@ -18,14 +18,14 @@ key                drop P(x)                                        source
 ``end-relief``     corner radius r over the last l: r - sqrt(r^2 -   ISO 3096, ISO 12297
                    s^2); dub-off: s tan(alpha); s = |x| - (L/2 - l)  (roller geometry)
 ``circular``       (x - x0)^2 / (2 Rc)                               Johnson (1985) 4.2
-``iso16281``       0.00035 D ln[1/(1 - (2x/L)^2)] (L <= 2.5 D);      ISO/TS 16281:2008
+``iso16281``       0.00035 D ln[1/(1 - (2x/L)^2)] (L <= 2.5 D);      ISO 16281:2025
                    flat middle and 0.0005 D ln[1/(1 - t^2)] (L > 2.5 D)
 ``lundberg``       F0/(pi L E*) ln[1/(1 - (2x/L)^2)]                 Lundberg (1939)
 ``johns-gohar``    F0/(pi L E*) ln[1/(1 - (1 - 0.3033 b/a)(x/a)^2)]  Johns & Gohar (1981)
 ``file:PATH.csv``  linear interpolation of a table (x, drop)        user data
 =================  ===============================================  ==================
 
-The two logarithmic profiles of ISO/TS 16281 and Lundberg are infinite at x = +-L/2
+The two logarithmic profiles of ISO 16281 and Lundberg are infinite at x = +-L/2
 (``drop`` returns ``inf`` there, which is the formula, not an error); the slice models
 evaluate them at slice centres only, which lie inside.
 
@@ -35,8 +35,8 @@ References
    des Ingenieurwesens 10 (1939) 201-211.
 .. [2] P. M. Johns, R. Gohar, "Roller bearings under radial and eccentric loads",
    Tribology International 14 (1981) 131-136.
-.. [3] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-   reference rating life for universally loaded bearings (reference roller profile).
+.. [3] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+   reference rating life for universally loaded rolling bearings (reference roller profile).
 .. [4] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section 4.2.
 """
 from __future__ import annotations
@@ -47,7 +47,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import OutOfRangeError, check_interval, check_positive
+from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
+                       check_positive)
 
 __all__ = [
     "Profile",
@@ -64,13 +65,23 @@ __all__ = [
     "ISO16281_LONG",
     "parse_profile",
     "parse_angle",
+    "TILT_RANGE",
+    "FREE_TILT",
+    "is_free_tilt",
 ]
+
+#: Tilts theta of the roller's axis accepted by the roller models (the gap linearises
+#: the tilt, theta x, for small angles) [rad].
+TILT_RANGE = Interval("tilt", -0.1, 0.1, low_open=True, high_open=True, unit="rad")
+#: The tilt value that asks for the roller's moment equilibrium (zero moment about its
+#: centre); a number holds the tilt, 0 (the default everywhere) keeps it aligned.
+FREE_TILT = "free"
 
 #: The constant of the Johns-Gohar profile, (1 - C b/a) (Johns & Gohar 1981).
 JOHNS_GOHAR_C = 0.3033
-#: ISO/TS 16281 reference profile coefficient for L <= 2.5 D (drop = c D ln ...).
+#: ISO 16281 reference profile coefficient for L <= 2.5 D (drop = c D ln ...).
 ISO16281_SHORT = 0.00035
-#: ISO/TS 16281 reference profile coefficient for L > 2.5 D (outside the flat middle).
+#: ISO 16281 reference profile coefficient for L > 2.5 D (outside the flat middle).
 ISO16281_LONG = 0.0005
 
 # a relative allowance at the ends of the x range, for slice centres computed in
@@ -380,7 +391,7 @@ def _log_drop(coef, t):
 
 
 class ISO16281Profile(Profile):
-    r"""The ISO/TS 16281 reference logarithmic roller profile (both branches).
+    r"""The ISO 16281 reference logarithmic roller profile (both branches).
 
     With D the roller diameter:
 
@@ -415,11 +426,11 @@ class ISO16281Profile(Profile):
 
     References
     ----------
-    ISO/TS 16281:2008, section on the roller profile; Lundberg (1939).
+    ISO 16281:2025, section on the roller profile; Lundberg (1939).
     """
 
     key = "iso16281"
-    reference = "ISO/TS 16281:2008 reference roller profile"
+    reference = "ISO 16281:2025 reference roller profile"
 
     def __init__(self, length, diameter):
         _symmetric_range(self, length)
@@ -440,7 +451,7 @@ class ISO16281Profile(Profile):
     @property
     def label(self):
         branch = "L > 2.5 D, flat middle" if self.long else "L <= 2.5 D"
-        return f"ISO/TS 16281 (D = {self.diameter * 1e3:.4g} mm, {branch})"
+        return f"ISO 16281 (D = {self.diameter * 1e3:.4g} mm, {branch})"
 
 
 class LundbergProfile(Profile):
@@ -882,19 +893,19 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     >>> parse_profile("circular:Rc=0.5", length=20e-3).label
     'circular crown (Rc = 500 mm)'
     >>> parse_profile("iso16281", length=10e-3, radius=5e-3).label
-    'ISO/TS 16281 (D = 10 mm, L <= 2.5 D)'
+    'ISO 16281 (D = 10 mm, L <= 2.5 D)'
     >>> parse_profile("cone", length=10e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: profile = 'cone' is outside the valid range one of straight, end-relief, circular, iso16281, lundberg, johns-gohar, file:PATH.csv
+    linecontact.validity.UnknownNameError: profile = 'cone' is not a known name; valid: 'straight', 'end-relief', 'circular', 'iso16281', 'lundberg', 'johns-gohar', 'file:PATH.csv'
 
     References
     ----------
     See the module docstring for each profile's source.
     """
-    valid_names = ", ".join(k if k != "file" else "file:PATH.csv" for k in PROFILE_KEYS)
+    valid_names = [k if k != "file" else "file:PATH.csv" for k in PROFILE_KEYS]
     if not isinstance(spec, str) or not spec.strip():
-        raise OutOfRangeError("profile", str(spec), "one of " + valid_names)
+        raise UnknownNameError("profile", str(spec), valid_names)
     spec = spec.strip()
     name, _, rest = spec.partition(":")
     name = name.strip().lower()
@@ -905,7 +916,7 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
         prof = TabulatedProfile.from_csv(rest.strip())
         return prof
     if name not in _OPTIONS:
-        raise OutOfRangeError("profile", spec.split(":")[0], "one of " + valid_names)
+        raise UnknownNameError("profile", spec.split(":")[0], valid_names)
     aliases = _OPTIONS[name]
     kw = {}
     if rest.strip():
@@ -917,7 +928,7 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
                                       "opt=value", hint=f"in {spec!r}")
             if key not in aliases:
                 opts = sorted({a for a in aliases}) or ["none"]
-                raise OutOfRangeError(f"{name} option", key, "one of " + ", ".join(opts))
+                raise UnknownNameError(f"{name} option", key, opts)
             kwname, kind = aliases[key]
             if kwname in kw:
                 raise OutOfRangeError(f"{name} option", key, "each option once")
@@ -982,3 +993,43 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
         raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
                               where=f"at x = {x[i]:.6g} m")
     return P
+
+
+def is_free_tilt(tilt):
+    """Whether a tilt argument asks for moment equilibrium (``"free"``) or holds a
+    number; any other word, and None, is refused.
+
+    Parameters
+    ----------
+    tilt : float or str
+        A tilt theta [rad] (a number, checked where it is used) or ``"free"``.
+
+    Returns
+    -------
+    bool
+        True for ``"free"``.
+
+    Raises
+    ------
+    UnknownNameError
+        Another word, or None (ambiguous: give 0 for an aligned roller or ``"free"``).
+
+    Notes
+    -----
+    Valid for any input (a classification); the range |theta| < 0.1 rad is checked by
+    :data:`TILT_RANGE` where the number is used.
+
+    Examples
+    --------
+    >>> is_free_tilt("free"), is_free_tilt(0.0), is_free_tilt(1e-3)
+    (True, False, False)
+    """
+    if isinstance(tilt, str):
+        if tilt == FREE_TILT:
+            return True
+        raise UnknownNameError("tilt", tilt, [FREE_TILT, "a number [rad]"])
+    if tilt is None:
+        raise UnknownNameError("tilt", None, [FREE_TILT, "a number [rad]"],
+                               hint="0 for an aligned roller, 'free' for moment "
+                                    "equilibrium")
+    return False

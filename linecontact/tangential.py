@@ -65,8 +65,8 @@ import numpy as np
 
 from .classical import MODULUS_OR_RIGID, effective_modulus, _two_bodies
 from .tables import TableError, read_table
-from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval,
-                       check_positive, document, out)
+from .validity import (POISSON_RATIO, Interval, OutOfRangeError, UnknownNameError,
+                       check_interval, check_positive, document, out)
 
 __all__ = [
     "shear_modulus",
@@ -325,6 +325,9 @@ def _ratio(gstar, estar):
 # --------------------------------------------------------------------------------------
 def _law(model, depth):
     """F(z) of the model with F(0) = 0 (every contact law starts at zero force)."""
+    check = getattr(model, "check_starts_at_zero", None)
+    if check is not None:
+        check()
     z = np.asarray(depth, dtype=float)
     res = np.zeros(z.shape)
     pos = z > 0
@@ -428,11 +431,11 @@ def tangential_stiffness(model, depth, gstar, *, method="mdr", direction="across
 
 def _stiffness_ratio(model, depth, gstar, method, direction):
     if method not in _METHODS:
-        raise OutOfRangeError("method", method, "one of 'mdr', 'bem'")
+        raise UnknownNameError("method", method, _METHODS)
     if method == "mdr":
         return _ratio(gstar, model.estar)
     if direction not in _DIRECTIONS:
-        raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+        raise UnknownNameError("direction", direction, _DIRECTIONS)
     return cylinder_stiffness_ratios(model, depth, gstar)[direction]
 
 
@@ -563,7 +566,7 @@ def tangential_shift(model, depth, tangential_force, friction, gstar, *, ratio=N
 
 def _check_beyond(beyond):
     if beyond not in ("raise", "saturate"):
-        raise OutOfRangeError("beyond", beyond, "one of 'raise', 'saturate'")
+        raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
 
 
 def _ft(model, d, shift, mu, r, beyond):
@@ -680,7 +683,7 @@ class TangentialContact:
             self.depth = float(_scalar_check(check_positive("depth", depth, "m"), "depth"))
             self.normal_force = float(model.force(self.depth))
         if method not in _METHODS:
-            raise OutOfRangeError("method", method, "one of 'mdr', 'bem'")
+            raise UnknownNameError("method", method, _METHODS)
         self.method = method
         self.direction = direction
         self.mdr_ratio = float(_ratio(self.gstar, model.estar))
@@ -689,7 +692,7 @@ class TangentialContact:
             self.ratio = self.mdr_ratio
         else:
             if direction not in _DIRECTIONS:
-                raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+                raise UnknownNameError("direction", direction, _DIRECTIONS)
             table = table if table is not None else cylinder_tangential_table()
             ratios = cylinder_stiffness_ratios(model, self.depth, self.gstar, table=table)
             self.ratio = float(ratios[direction])
@@ -1071,7 +1074,7 @@ class CylinderTangentialTable:
     def ratio(self, direction, nu, d_tilde):
         """Full-stick k_t/k_n [-] in `direction` ("across"/"along") at (nu, d~)."""
         if direction not in _DIRECTIONS:
-            raise OutOfRangeError("direction", direction, "one of 'across', 'along'")
+            raise UnknownNameError("direction", direction, _DIRECTIONS)
         c = self._interp(f"kt_kn_{direction}", nu, d_tilde)
         nu = np.asarray(nu, dtype=float)
         return out(c * 2 * (1 - nu) / (2 - nu))
@@ -1080,7 +1083,7 @@ class CylinderTangentialTable:
         """Any column of the table [its unit] interpolated at (nu, d~) (e.g. the study's
         measured partial-slip error ``ft_err_scaled_across``)."""
         if column not in self._grid:
-            raise OutOfRangeError("column", column, "one of " + ", ".join(self._grid))
+            raise UnknownNameError("column", column, list(self._grid))
         v = self._interp(column, nu, d_tilde)
         if column.startswith("kt_kn_"):
             nu = np.asarray(nu, dtype=float)

@@ -88,8 +88,7 @@ class UniversalCurve:
     References
     ----------
     .. [1] docs/theory.md, sections 'Self-similarity' and 'BEM'.
-    .. [2] Q. Li, V. L. Popov, "Normal line contact of finite-length cylinders", Facta
-       Universitatis, Series Mechanical Engineering 15(1) (2017) 63-71, Eq. 7.
+    .. [2] Li & Popov (2017) [li-popov-2017], Eq. 7.
     """
 
     alpha_small = math.pi / 2

@@ -20,6 +20,8 @@ import numpy as np
 
 __all__ = [
     "OutOfRangeError",
+    "UnknownNameError",
+    "CombinationError",
     "Interval",
     "check_positive",
     "check_interval",
@@ -95,6 +97,99 @@ class OutOfRangeError(ValueError):
 
 def _rebuild(parameter, value, valid, unit, hint, where):
     return OutOfRangeError(parameter, value, valid, unit=unit, hint=hint, where=where)
+
+
+class UnknownNameError(ValueError):
+    """A name (a model key, a profile, an option, a method) that is not one of the known
+    names; the message lists them.
+
+    Parameters
+    ----------
+    parameter : str
+        Name of the parameter that took the name, as in the function signature.
+    value : object
+        The unknown name (printed with repr).
+    valid : iterable of str
+        The names accepted there.
+    hint : str, optional
+        What to do instead; appended to the message.
+
+    Notes
+    -----
+    Not an :class:`OutOfRangeError`: a name has no range. The attributes
+    ``parameter``, ``value`` and ``valid`` (a tuple) keep what was given; the error
+    survives pickling.
+
+    Examples
+    --------
+    >>> err = UnknownNameError("model", "hertz", ["universal", "kunz"])
+    >>> str(err)
+    "model = 'hertz' is not a known name; valid: 'universal', 'kunz'"
+    >>> isinstance(err, ValueError), isinstance(err, OutOfRangeError)
+    (True, False)
+    """
+
+    def __init__(self, parameter, value, valid, *, hint=""):
+        self.parameter = parameter
+        self.value = value
+        self.valid = tuple(valid)
+        self.hint = hint
+        names = ", ".join(repr(v) for v in self.valid)
+        msg = f"{parameter} = {value!r} is not a known name; valid: {names}"
+        super().__init__(msg + (f"; {hint}" if hint else ""))
+
+    def __reduce__(self):
+        return (_rebuild_name, (self.parameter, self.value, self.valid, self.hint))
+
+
+def _rebuild_name(parameter, value, valid, hint):
+    return UnknownNameError(parameter, value, valid, hint=hint)
+
+
+class CombinationError(ValueError):
+    """Inputs that are each valid but whose combination is not defined physically (or
+    not by the methods here): names every parameter and value involved, and why.
+
+    Parameters
+    ----------
+    parameters : dict
+        Parameter name -> the value given (numbers printed with 6 digits, other values
+        with repr), in the order they should be named.
+    reason : str
+        Why the combination is refused (one clause, no trailing period).
+    unit : dict, optional
+        Parameter name -> unit of its value, printed after it.
+
+    Notes
+    -----
+    One line, ``a = 1, b = 'x': reason``. The attributes ``parameters``, ``reason`` and
+    ``unit`` keep what was given; the error survives pickling.
+
+    Examples
+    --------
+    >>> err = CombinationError({"tilt": "free", "material2": "viscoelastic"},
+    ...                        "Lee-Radok needs a contact shape fixed in time")
+    >>> str(err)
+    "tilt = 'free', material2 = 'viscoelastic': Lee-Radok needs a contact shape fixed in time"
+    """
+
+    def __init__(self, parameters, reason, unit=None):
+        self.parameters = dict(parameters)
+        self.reason = reason
+        self.unit = dict(unit or {})
+        parts = []
+        for name, value in self.parameters.items():
+            if isinstance(value, (float, int, np.floating, np.integer)) and not isinstance(
+                    value, bool):
+                shown = f"{float(value):.6g}"
+            else:
+                shown = repr(value)
+            u = self.unit.get(name, "")
+            parts.append(f"{name} = {shown}{' ' + u if u else ''}")
+        super().__init__(f"{', '.join(parts)}: {reason}")
+
+    def __reduce__(self):
+        return (CombinationError, (self.parameters, self.reason, self.unit))
 
 
 def _fmt(x):

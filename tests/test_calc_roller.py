@@ -1,6 +1,6 @@
 """The calculator's profiled-roller options (``linecontact calc --crown-radius``,
-``--profile``, ``--tilt``; linecontact.calc_roller), called in process through
-linecontact.cli.main.
+``--profile``, ``--tilt``; linecontact.calc.features.roller), called in process through
+linecontact.calc.cli.main.
 
 Each test states the fact it checks and why its tolerance.
 """
@@ -18,7 +18,7 @@ ROLLER = ["calc", "--radius", "5mm", "--length", "10mm", "--modulus", "210GPa",
 
 
 def _main(capsys, *argv):
-    from linecontact.cli import main
+    from linecontact.calc.cli import main
 
     status = main(list(argv))
     out, err = capsys.readouterr()
@@ -32,10 +32,11 @@ def _json(capsys, *argv):
 
 
 def test_crown_radius_prints_the_hertz_contact(capsys):
-    """--crown-radius adds the profiled-roller rows beside the straight ones: for a
-    crown that stays inside the roller they are the Hertz contact, approach 7.024 um
+    """--crown-radius makes the contact the crowned roller's: for a crown that stays
+    inside the roller its coupled-slice row is the Hertz contact, approach 7.024 um
     and p0 1102 MPa (R 10 mm, Rc 500 mm, 1 kN, printed to 4 digits: 7.024 and 1102),
-    not edge loaded; ISO/TS 16281 slicing follows as its own row."""
+    not edge loaded; ISO 16281 slicing follows as its own row, and no
+    straight-cylinder law is printed as if it were this roller's."""
     status, out, err = _main(capsys, *CROWN, "--load", "1kN", "--crown-radius", "500mm")
     assert status == 0, err
     lines = [ln for ln in out.splitlines() if ln.startswith("Profiled roller")]
@@ -43,8 +44,17 @@ def test_crown_radius_prints_the_hertz_contact(capsys):
     row = lines[0].split()
     h = hertz_contact(1000.0, 0.5, 0.01, 115.385e9)
     assert f"{h.approach * 1e6:.4g}" in row and f"{h.p0 / 1e6:.4g}" in row
-    assert "ISO/TS 16281 slicing (circular crown (Rc = 500 mm))" in out
-    assert "Universal curve" in out or "Li-Popov" in out     # the straight rows are kept
+    assert "ISO 16281 slicing (circular crown (Rc = 500 mm))" in out
+    assert "Universal curve" not in out and "Li-Popov" not in out
+
+
+def test_straight_law_with_a_profile_is_refused_as_the_api_refuses_it(capsys):
+    """--model li-popov with --crown-radius: a straight-cylinder law has no profile;
+    the row says so (the library's CombinationError) instead of printing the straight
+    roller (status 2: nothing computed)."""
+    status, out, err = _main(capsys, *CROWN, "--load", "1kN", "--crown-radius", "500mm",
+                             "--model", "li-popov")
+    assert status == 2 and "straight-cylinder law has no profile or tilt" in err, err
 
 
 def test_json_carries_q_of_x(capsys):
@@ -54,8 +64,8 @@ def test_json_carries_q_of_x(capsys):
     doc = _json(capsys, *ROLLER, "--load", "1kN", "--profile", "iso16281", "--tilt",
                 "0.5mrad")
     blocks = doc["profiled_roller"]
-    assert [b["label"].split(" (")[0] for b in blocks] == ["Profiled roller",
-                                                           "ISO/TS 16281 slicing"]
+    assert [b["label"].split(" (")[0] for b in blocks] == ["Profiled roller"]
+    assert doc["models"][0]["rows"][0]["moment"] > 0
     row = blocks[0]["rows"][0]
     x, q = row["x"], row["q"]
     assert len(x) == len(q) == 100
@@ -67,14 +77,17 @@ def test_json_carries_q_of_x(capsys):
 
 
 def test_straight_roller_reports_edge_loading_not_a_number(capsys):
-    """A straight roller (--tilt only) is edge loaded: its peak pressure is singular on
-    a half-space, so the profiled row prints '-' for p max, 'both ends' for the edge,
-    and says why; the JSON has p_max null and edge_loaded true."""
-    status, out, err = _main(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    """A straight roller solved by coupled slices (--model profiled-roller; without it
+    a straight aligned roller is the universal law, as in Contact) is edge loaded: its
+    peak pressure is singular on a half-space, so the row prints '-' for p max and says
+    why (both ends); the JSON has p_max null and edge_loaded true."""
+    argv = (*ROLLER, "--load", "1kN", "--tilt", "0", "--model", "profiled-roller")
+    status, out, err = _main(capsys, *argv)
     assert status == 0, err
     row = next(ln for ln in out.splitlines() if ln.startswith("Profiled roller"))
     assert "both ends" in row and "singular" in row
-    doc = _json(capsys, *ROLLER, "--load", "1kN", "--tilt", "0")
+    doc = _json(capsys, *argv)
+    assert doc["models"][0]["rows"][0]["p_max"] is None
     r = doc["profiled_roller"][0]["rows"][0]
     assert r["p_max"] is None and r["edge_loaded"] is True
 
@@ -125,30 +138,64 @@ def test_profile_format_problems_name_the_option_not_a_range(capsys, tmp_path):
         assert err.count("valid") == 1 and "outside the valid range" not in err, err
 
 
-def test_no_contact_and_whole_roller_are_refused(capsys, tmp_path):
+def test_no_contact_is_refused(capsys, tmp_path):
     """A depth at which the roller does not touch at all (a measured profile whose
-    smallest drop, 2 um, exceeds the depth, 1 um), and the profile options with the
-    raceways (a whole roller), exit 2 with one line naming the parameter."""
+    smallest drop, 2 um, exceeds the depth, 1 um) exits 2 with one line naming the
+    depth."""
     f = tmp_path / "p.csv"
     f.write_text("x,drop\n-0.005,3e-6\n0,2e-6\n0.005,3e-6\n")
     status, _, err = _main(capsys, *ROLLER, "--depth", "1um", "--profile", f"file:{f}")
     assert status == 2 and err.count("\n") == 1 and "depth" in err
-    status, _, err = _main(capsys, *ROLLER, "--load", "1kN", "--crown-radius", "0.1",
-                           "--inner-raceway", "20mm", "--outer-raceway", "30mm")
-    assert status == 2 and "whole roller" in err
 
 
-def test_batch_refuses_profile_columns(capsys, tmp_path):
-    """A CSV batch with a profile column computes its other rows and refuses the
-    profiled ones in their error cell (profiled rollers are one case or a sweep), exit
-    status 2 as for any failed row."""
+def test_crowned_roller_between_raceways_is_the_library_composition(capsys):
+    """A crowned roller between raceways, tilt free: the calculator's row is
+    linecontact.raceway.roller_between_raceways of the same inputs (the same solver:
+    equal to rtol 1e-9), its deflection the sum of the two contacts' depths (exact
+    identity of the series contacts), and its free tilt 0 for a symmetric crown between
+    aligned rings (|theta| < 1e-9 rad)."""
+    from linecontact.raceway import Raceways, roller_between_raceways
+
+    doc = _json(capsys, *ROLLER, "--load", "1kN", "--crown-radius", "0.1",
+                "--inner-raceway", "20mm", "--outer-raceway", "30mm", "--tilt", "free")
+    row = doc["models"][0]["rows"][0]
+    from linecontact.classical import effective_modulus
+
+    s = roller_between_raceways(5e-3, 10e-3, effective_modulus(210e9, 0.3),
+                                Raceways(20e-3, 30e-3), force=1e3, profile="circular:Rc=0.1",
+                                tilt="free")
+    assert row["roller_deflection"] == pytest.approx(s.deflection, rel=1e-9)
+    assert row["roller_stiffness"] == pytest.approx(s.stiffness, rel=1e-9)
+    assert row["roller_deflection"] == pytest.approx(row["depth_inner"] + row["depth_outer"],
+                                                     rel=1e-12)
+    assert abs(row["tilt"]) < 1e-9
+
+
+def test_batch_profile_rows_equal_the_one_case_call(capsys, tmp_path):
+    """A CSV batch takes the profile and tilt columns: each profiled row's columns equal
+    the one-case call's first (coupled-slice) row to the printed 6 digits (the same
+    solver on the same inputs), and a row without a profile is the straight cylinder's
+    (default model) with empty roller cells."""
     f = tmp_path / "cases.csv"
-    f.write_text("radius,length,estar,load,crown_radius\n5mm,10mm,115GPa,1kN,0.1\n"
-                 "5mm,10mm,115GPa,1kN,\n")
-    status, out, err = _main(capsys, "calc", str(f))
-    assert status == 2
-    rows = out.strip().splitlines()
-    assert "not computed in a batch" in rows[1] and rows[2].split(",")[-1] == ""
+    f.write_text("radius,length,estar,load,crown_radius,tilt\n5mm,10mm,115GPa,1kN,0.1,\n"
+                 "5mm,10mm,115GPa,2kN,0.2,0.5mrad\n5mm,10mm,115GPa,1kN,,\n")
+    status, out, err = _main(capsys, "calc", str(f), "--si")
+    assert status == 0, err
+    import csv
+    import io
+
+    rows = list(csv.DictReader(io.StringIO(out)))
+    for row, extra in zip(rows[:2], (["--load", "1kN", "--crown-radius", "0.1"],
+                                     ["--load", "2kN", "--crown-radius", "0.2", "--tilt",
+                                      "0.5mrad"])):
+        one = _json(capsys, "calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+                    *extra)["models"][0]["rows"][0]
+        for name in ("force", "depth", "stiffness", "moment", "p_max"):
+            col = next(c for c in row if c.startswith(f"{name}_"))
+            assert float(row[col]) == pytest.approx(one[name], rel=1e-5, abs=1e-12), name
+    assert rows[2]["moment_N_m"] == "" and rows[2]["error"] == ""
+    assert rows[2]["model"].startswith("Universal") and rows[0]["model"].startswith(
+        "Profiled roller")
 
 
 def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
@@ -195,7 +242,7 @@ def test_plain_calc_does_not_import_the_roller_model():
     from pathlib import Path
 
     code = ("import sys, io, contextlib\n"
-            "from linecontact.cli import main\n"
+            "from linecontact.calc.cli import main\n"
             "with contextlib.redirect_stdout(io.StringIO()):\n"
             "    main(['calc', '--radius', '5mm', '--length', '10mm', '--estar',"
             " '115GPa', '--load', '1kN'])\n"
@@ -207,7 +254,7 @@ def test_plain_calc_does_not_import_the_roller_model():
 
 
 def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
-    """ISO/TS 16281's reference profile is a drop of 0.00035 D ln(...) with D the
+    """ISO 16281's reference profile is a drop of 0.00035 D ln(...) with D the
     roller's own diameter. Against a convex raceway (--radius2) the slices see the
     effective radius 1/R = 1/R1 + 1/R2, but the profile must still use D = 2 R1
     (10 mm here, not 2 R_eff = 8 mm, which made the drop 20 % too shallow)."""
@@ -215,4 +262,4 @@ def test_iso_profile_on_a_raceway_scales_with_the_roller_diameter(capsys):
                              "10mm", "--estar", "115GPa", "--load", "1kN",
                              "--profile", "iso16281")
     assert status == 0, err
-    assert "ISO/TS 16281 (D = 10 mm" in out and "D = 8 mm" not in out
+    assert "ISO 16281 (D = 10 mm" in out and "D = 8 mm" not in out

@@ -1,4 +1,4 @@
-"""Classical closed forms (Li & Popov 2017 Eqs. 1-4, Kunz, Palmgren, ISO/TS 16281).
+"""Classical closed forms (Li & Popov 2017 Eqs. 1-4, Kunz, Palmgren, ISO 16281).
 
 Each test states the fact it checks in its docstring and assertion message.
 """
@@ -191,7 +191,7 @@ def test_kunz_linear_law(d):
     assert kunz_depth(F, L, E_STEEL) == pytest.approx(d, rel=1e-14)
 
 
-# ---- Palmgren, ISO/TS 16281 ----------------------------------------------------------------
+# ---- Palmgren, ISO 16281 ----------------------------------------------------------------
 def test_sanity_figure_palmgren():
     """Issue sanity figure: steel, L = 10 mm, 1 kN: Palmgren gives about 3.05 um."""
     assert palmgren_depth(1e3, L, E_STEEL) == pytest.approx(3.05e-6, abs=0.005e-6)
@@ -200,7 +200,7 @@ def test_sanity_figure_palmgren():
 @given(F=forces, Lmm=st.floats(1.0, 100.0))
 def test_palmgren_and_iso_convert_mm_to_si(F, Lmm):
     """The source formulas are d[mm] = C F[N]^0.9 / L[mm]^0.8; the SI functions return
-    exactly that depth in metres (C = 3.84e-5 Palmgren, 3.97e-5 ISO/TS 16281)."""
+    exactly that depth in metres (C = 3.84e-5 Palmgren, 3.97e-5 ISO 16281)."""
     assert palmgren_depth(F, Lmm * 1e-3, E_STEEL) == pytest.approx(
         1e-3 * PALMGREN_C * F**0.9 / Lmm**0.8, rel=1e-12)
     assert iso16281_depth(F, Lmm * 1e-3, E_STEEL) == pytest.approx(
@@ -209,13 +209,13 @@ def test_palmgren_and_iso_convert_mm_to_si(F, Lmm):
 
 @given(F=forces)
 def test_palmgren_and_iso_inverses(F):
-    """Round trips: palmgren_force(palmgren_depth(F)) = F, same for ISO/TS 16281."""
+    """Round trips: palmgren_force(palmgren_depth(F)) = F, same for ISO 16281."""
     assert palmgren_force(palmgren_depth(F, L, E_STEEL), L, E_STEEL) == pytest.approx(F, rel=1e-12)
     assert iso16281_force(iso16281_depth(F, L, E_STEEL), L, E_STEEL) == pytest.approx(F, rel=1e-12)
 
 
 def test_iso16281_per_contact_is_half_the_whole_roller_form():
-    """ISO/TS 16281's whole-roller Q = 35948 L^(8/9) delta^(10/9) (N, mm) covers two
+    """ISO 16281's whole-roller Q = 35948 L^(8/9) delta^(10/9) (N, mm) covers two
     contacts: half its delta is the per-contact 3.97e-5 F^0.9/L^0.8 (to the 3 digits of
     the coefficient)."""
     F, Lmm = 1e3, 10.0
@@ -226,7 +226,7 @@ def test_iso16281_per_contact_is_half_the_whole_roller_form():
 
 @pytest.mark.parametrize("fn", [palmgren_depth, iso16281_depth, palmgren_force, iso16281_force])
 def test_steel_formulas_refuse_other_materials(fn):
-    """Palmgren and ISO/TS 16281 are steel-only: E* outside 115.38 GPa +- 10 % raises
+    """Palmgren and ISO 16281 are steel-only: E* outside 115.38 GPa +- 10 % raises
     (aluminium on steel, E* ~ 38 GPa, is refused; 110 GPa is accepted)."""
     e_alu = effective_modulus(70e9, 0.33, 210e9, 0.3)
     with pytest.raises(OutOfRangeError) as err:

@@ -266,11 +266,13 @@ def test_table1_and_eq11_disagree_at_L_over_R_5_and_6():
 
 
 def test_unknown_coefficient_set_lists_the_valid_ones():
-    """An unknown set name raises OutOfRangeError listing 'eq11' and 'published'."""
-    with pytest.raises(OutOfRangeError) as err:
+    """An unknown set name raises UnknownNameError listing 'eq11' and 'published'."""
+    from linecontact.validity import UnknownNameError
+
+    with pytest.raises(UnknownNameError) as err:
         coefficient_set("tabel1")
     assert err.value.parameter == "coefficients"
-    assert "'eq11'" in err.value.valid and "'published'" in err.value.valid
+    assert "eq11" in err.value.valid and "'published'" in str(err.value)
     assert available_coefficient_sets()[:2] == ["eq11", "published"]
 
 

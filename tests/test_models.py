@@ -207,7 +207,7 @@ def test_standard_models_order_and_labels():
     assert [m.label for m in rows] == [
         "Li-Popov (Table 1 spline)", "Li-Popov (Eq. 11)", "Puttock-Thwaite",
         "Johnson (c = 1)", "Johnson (c = 0.72)", "Johnson (c = 0.572)", "Kunz (c = 0.175)",
-        "Palmgren", "ISO/TS 16281"]
+        "Palmgren", "ISO 16281"]
     for m in rows:
         assert isinstance(m, ContactModel) and isinstance(m.provenance, dict)
 
@@ -234,11 +234,15 @@ def test_regenerated_table_drops_in_without_code_change(tmp_path, monkeypatch):
 
 
 def test_unknown_model_key_lists_valid_keys():
-    """An unknown key raises OutOfRangeError listing the registered keys."""
-    with pytest.raises(OutOfRangeError) as err:
+    """An unknown key raises UnknownNameError (a ValueError, not an OutOfRangeError: a
+    name has no range) listing the registered keys."""
+    from linecontact.validity import UnknownNameError
+
+    with pytest.raises(UnknownNameError) as err:
         get_model("hertz", R5, L5, E)
+    assert not isinstance(err.value, OutOfRangeError)
     for key in ("li-popov", "puttock-thwaite", "johnson", "kunz", "palmgren", "iso16281"):
-        assert repr(key) in err.value.valid
+        assert key in err.value.valid and repr(key) in str(err.value)
 
 
 def test_register_adds_a_model(monkeypatch):

@@ -39,7 +39,7 @@ def test_builtin_profiles_are_symmetric_nonnegative_and_zero_at_the_centre(prof)
 
 
 def test_iso16281_branches():
-    """ISO/TS 16281: for L <= 2.5 D, P = 0.00035 D ln[1/(1 - (2x/L)^2)]; for L > 2.5 D
+    """ISO 16281: for L <= 2.5 D, P = 0.00035 D ln[1/(1 - (2x/L)^2)]; for L > 2.5 D
     the middle (|x| <= (L - 2.5 D)/2) is flat and the ends carry 0.0005 D ln[1/(1 - t^2)]
     over 1.25 D each; the drop is continuous at the flat's end and infinite at x = L/2.
     Exact formulas: 1e-14."""
@@ -155,12 +155,25 @@ def test_parse_profile_names_options_and_units():
     assert parse_profile("end-relief:r=2mm", length=L).corner_radius == pytest.approx(2e-3)
 
 
+def test_parse_profile_refuses_unknown_names_listing_the_valid_ones():
+    """An unknown profile or option name is an UnknownNameError (not an
+    OutOfRangeError: a name has no range) naming it and listing the valid ones, in one
+    line."""
+    from linecontact.validity import UnknownNameError
+
+    for spec, param, fragment in (("cone", "profile",
+                                   "'straight', 'end-relief', 'circular'"),
+                                  ("circular:radius=1", "circular option", "'Rc'")):
+        with pytest.raises(UnknownNameError) as err:
+            parse_profile(spec, length=L)
+        assert err.value.parameter == param and fragment in str(err.value)
+        assert "\n" not in str(err.value)
+
+
 @pytest.mark.parametrize("spec, kw, param, fragment", [
-    ("cone", {}, "profile", "one of straight, end-relief, circular"),
     ("circular:Rc=-0.2", {}, "Rc", "a length > 0"),
     ("circular:Rc=0", {}, "Rc", "a length > 0"),
     ("circular", {}, "crown_radius", "(0, inf) m"),
-    ("circular:radius=1", {}, "circular option", "one of"),
     ("circular:Rc=5kN", {}, "Rc", "length"),
     ("lundberg", {"estar": E}, "design_force", "(0, inf) N"),
     ("end-relief:l=1mm,drop=-2um", {}, "drop", "a length > 0"),
@@ -171,7 +184,7 @@ def test_parse_profile_names_options_and_units():
     ("file:", {}, "profile", "file:PATH.csv"),
 ])
 def test_parse_profile_refuses_bad_input(spec, kw, param, fragment):
-    """Unknown names and options, missing or non-positive values (crown radius <= 0,
+    """Missing or non-positive values (crown radius <= 0,
     negative relief drop), a force where a length belongs: OutOfRangeError naming the
     parameter, the value and the valid range, in one line."""
     with pytest.raises(OutOfRangeError) as err:
@@ -194,7 +207,7 @@ def test_parse_angle():
 
 
 def test_iso16281_default_diameter_is_the_rollers_not_twice_an_effective_radius():
-    """ISO/TS 16281's reference profile scales with the roller diameter D. Against a
+    """ISO 16281's reference profile scales with the roller diameter D. Against a
     raceway the contact's radius is the effective one (R 5 mm on an inner ring of
     20 mm: R_eff = 4 mm), so `diameter` gives D; without it D = 2 radius (a flat)."""
     L = 10e-3

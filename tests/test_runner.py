@@ -10,7 +10,11 @@ Facts checked:
   their checkpoints;
 - resume without a checkpoint folder is refused (it would run every task again);
 - the same study runs through a `dask scheduler` and a `dask worker` started as separate
-  processes on localhost (what `--scheduler ADDRESS` does on a cluster);
+  processes on localhost (what `--scheduler ADDRESS` does on a cluster), both started
+  OUTSIDE the repository (cwd a temporary folder, PYTHONPATH without the checkout), so
+  they have the installed linecontact but cannot import tools/ or this test module: the
+  runner ships the study code with the tasks;
+- a worker whose linecontact differs from this checkout's is refused, naming both;
 - table_meta gives every table the same generated_by/date/version lines.
 """
 from __future__ import annotations
@@ -123,6 +127,13 @@ def _free_port():
         return s.getsockname()[1]
 
 
+def _outside_env():
+    """This environment with the checkout (and tests/) taken off PYTHONPATH."""
+    keep = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep)
+            if p and not Path(p).resolve().is_relative_to(REPO)]
+    return dict(os.environ, PYTHONPATH=os.pathsep.join(keep))
+
+
 @pytest.fixture(scope="module")
 def scheduler_and_worker(tmp_path_factory):
     """`dask scheduler` and one `dask worker --nthreads 1` as separate processes on
@@ -131,18 +142,25 @@ def scheduler_and_worker(tmp_path_factory):
     (the worker, then the scheduler; killed if one has not stopped within 5 s)."""
     from dask.distributed import Client
     logs_dir = tmp_path_factory.mktemp("dask")
+    outside = tmp_path_factory.mktemp("outside")        # cwd of both: not the checkout
     port = _free_port()
     address = f"tcp://127.0.0.1:{port}"
-    # the worker imports the tasks: tools/ from the repository root, square() from here
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
-        [str(REPO), str(REPO / "tests"), os.environ.get("PYTHONPATH", "")]))
+    env = _outside_env()
+    # the premise: from there, linecontact imports (installed) but tools/ does not
+    probe = subprocess.run(
+        [sys.executable, "-c", "import importlib.util as u, linecontact; "
+                               "print(u.find_spec('tools') is None)"],
+        cwd=outside, env=env, capture_output=True, text=True, timeout=60)
+    assert probe.stdout.strip() == "True", \
+        f"the dask processes would see the checkout: {probe.stdout} {probe.stderr}"
     procs, logs = [], []
 
     def start(*argv):
         log = open(logs_dir / f"{argv[0]}.log", "w")
         logs.append(log)
-        procs.append(subprocess.Popen([sys.executable, "-m", "dask", *argv], cwd=REPO,
-                                      env=env, stdout=log, stderr=subprocess.STDOUT))
+        procs.append(subprocess.Popen([sys.executable, "-m", "dask", *argv],
+                                      cwd=outside, env=env, stdout=log,
+                                      stderr=subprocess.STDOUT))
 
     try:
         start("scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard")
@@ -192,3 +210,15 @@ def test_universal_study_cli_through_the_scheduler(tmp_path, scheduler_and_worke
     for name in ("Psi", "dPsi", "beta_eff"):
         assert remote.columns[name].tolist() == local.columns[name].tolist(), name
     assert not (tmp_path / "remote" / "partial_universal").exists()
+
+
+def test_worker_with_other_linecontact_is_refused(scheduler_and_worker):
+    """The check that guards every study on a cluster: a fingerprint other than the
+    workers' is refused with both named (here the expected one is made up)."""
+    from dask.distributed import Client
+    from tools.studies.runner import check_same_linecontact, ship_study_code
+    with Client(scheduler_and_worker, timeout="60s") as client:
+        ship_study_code(client)                  # the workers' own code agrees
+        with pytest.raises(RuntimeError, match=r"1 of 1 dask workers .*here: linecontact "
+                                               r"0\.0 sha1 000"):
+            check_same_linecontact(client, expected="linecontact 0.0 sha1 000")

@@ -25,7 +25,7 @@ from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
                                     equivalent_poisson, gross_slip_shift, shear_modulus,
                                     shear_ratio, tangential_force, tangential_shift,
                                     tangential_stiffness)
-from linecontact.validity import OutOfRangeError
+from linecontact.validity import OutOfRangeError, UnknownNameError
 
 from oracle_laws import FlatPunch, HertzSphere  # tests/oracle_laws.py
 
@@ -265,7 +265,7 @@ def test_table_reproduces_its_nodes_and_refuses_outside(tmp_path):
         t.ratio("across", 0.3, 2e-2)
     with pytest.raises(OutOfRangeError, match="nu"):
         t.ratio("along", 0.6, 1e-3)
-    with pytest.raises(OutOfRangeError, match="direction"):
+    with pytest.raises(UnknownNameError, match="direction"):
         t.ratio("diagonal", 0.3, 1e-3)
 
 
@@ -341,7 +341,7 @@ def test_measured_slip_error_is_reported_when_the_table_has_it(tmp_path):
     r = cylinder_stiffness_ratios(m, 2e-6, GSTAR, table=t)
     assert r["slip_error_across"] == pytest.approx(0.012, rel=1e-12, abs=0)
     assert r["slip_error_along"] == pytest.approx(0.007, rel=1e-12, abs=0)
-    with pytest.raises(OutOfRangeError, match="column"):
+    with pytest.raises(UnknownNameError, match="column"):
         t.value("no_such_column", 0.3, 1e-4)
 
 

@@ -262,3 +262,32 @@ def test_a_geometric_sweep_has_equal_ratios_and_stays_finite(e0, e1, n):
     span = abs(math.log(stop) - math.log(start))
     assert np.allclose(steps, (math.log(stop) - math.log(start)) / (n - 1),
                        rtol=0, atol=1e-9 * max(span, 1.0))
+
+
+from linecontact._units import BUILTIN_UNITS  # noqa: E402
+
+_CASE_VARIANTS = [(kind, unit) for kind, names in BUILTIN_UNITS.items() for unit in names]
+
+
+@given(st.sampled_from(_CASE_VARIANTS),
+       st.sampled_from([str.upper, str.lower, str.swapcase, str.title, str.capitalize]),
+       st.floats(0.01, 1000))
+def test_a_unit_in_the_wrong_case_is_refused_with_did_you_mean(pair, change, x):
+    """A unit name typed in the wrong case ('5MM' is megamolar to pint, '1KN' unknown)
+    is either a unit of the same kind as typed (SI names are case-sensitive: 'Mm' is a
+    megametre, accepted as such) or refused with 'did you mean' naming the unit of that
+    kind it matches apart from case; never read as something else."""
+    kind, unit = pair
+    typed = change(unit)
+    assume(typed != unit)
+    text = f"{x!r}{typed}"
+    try:
+        value = parse_quantity("--x", text, kind)
+    except InputError as exc:
+        assert "did you mean" in str(exc) and repr(unit) in str(exc), str(exc)
+    else:
+        # accepted only as a genuine unit of this kind, converting by its own factor
+        import linecontact._units as units
+
+        factor = units._unit_factor(typed, kind)
+        assert isinstance(factor, float) and math.isclose(value, x * factor, rel_tol=1e-15)

@@ -11,11 +11,14 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
     The paper's study (Li & Popov 2017, section 3): BEM sweeps per L/R, fitted alpha,
     beta: tables/lipopov_regenerated.csv and the raw curves (tools.studies.paper_study).
 ``roller``
-    Profiled and tilted rollers, runtime and ISO/TS 16281 slicing against the 3D BEM:
+    Profiled and tilted rollers, runtime and ISO 16281 slicing against the 3D BEM:
     tables/roller_accuracy.csv (tools.studies.roller_study).
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
+``bearing``
+    Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
+    spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
 
 Run from the repository root, e.g.::
 
@@ -35,6 +38,7 @@ SUBCOMMANDS = {
     "roller": "tools.studies.roller_study",
     "tangential": "tools.studies.tangential_study",
     "accuracy": "tools.studies.accuracy",
+    "bearing": "tools.studies.bearing_study",
 }
 
 

@@ -85,7 +85,7 @@ Modules
 ``coverage``   the note on where a case lies against tables/roller_accuracy.csv
 ``solution``   :class:`RollerSolution`, contact extent and peak pressure off the slices
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)
-``iso``        :func:`iso_slicing` (ISO/TS 16281, uncoupled slices)
+``iso``        :func:`iso_slicing` (ISO 16281, uncoupled slices)
 ``laws``       :class:`ProfiledRollerModel`, :class:`ISOSlicingModel` (registered laws)
 
 References
@@ -100,8 +100,8 @@ References
    concentrations in non-Hertzian line contacts", J. Tribology 126 (2004) 436-442.
 .. [5] H. Fujiwara, T. Kawase, "Logarithmic profiles of rollers in roller bearings and
    optimization of the profiles", Proc. JSME C 72 (2006) 3022-3029.
-.. [6] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified
-   reference rating life for universally loaded bearings (slicing method).
+.. [6] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified
+   reference rating life for universally loaded rolling bearings (slicing method).
 """
 from __future__ import annotations
 

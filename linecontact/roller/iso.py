@@ -1,10 +1,10 @@
-"""ISO/TS 16281 slicing of a profiled, tilted roller: uncoupled nonlinear slice springs
+"""ISO 16281 slicing of a profiled, tilted roller: uncoupled nonlinear slice springs
 with the misalignment term, for comparison with the coupled-slice model.
 
 References
 ----------
-ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified reference
-rating life for universally loaded bearings (slicing method).
+ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for calculating the modified reference
+rating life for universally loaded rolling bearings (slicing method).
 """
 from __future__ import annotations
 
@@ -12,14 +12,14 @@ import math
 
 import numpy as np
 
-from ..profiles import as_profile, roller_drop
+from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_interval, check_positive
 from .slices import N_SLICES, TILT_RANGE
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["iso_slicing", "ISO_MIN_SLICES"]
 
-#: ISO/TS 16281 asks for at least 30 slices.
+#: ISO 16281 asks for at least 30 slices.
 ISO_MIN_SLICES = 30
 
 
@@ -38,9 +38,9 @@ def _iso_state(P, x, L, E, n, d, th):
     return Q, float(Q.sum()), float((Q * x).sum()), K
 
 
-def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, tilt=None,
+def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, tilt=0.0,
                 n_slices=30):
-    """ISO/TS 16281 slicing: uncoupled nonlinear slice springs with the misalignment term.
+    """ISO 16281 slicing: uncoupled nonlinear slice springs with the misalignment term.
 
     .. math::
 
@@ -66,16 +66,16 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
         Profile drop (None: straight) [-].
     depth, force : float
         Exactly one: depth d [m] or force F [N].
-    tilt : float or None
-        Tilt theta [rad] (sign as the coupled model: positive loads +x); with `force`,
-        None solves for zero moment.
+    tilt : float or str
+        Tilt theta [rad] (sign as the coupled model: positive loads +x; default 0,
+        aligned), or ``"free"`` for zero moment at the force or depth given.
     n_slices : int
         n >= 30 as the standard asks [-] (default 30).
 
     Returns
     -------
     RollerSolution
-        With method ``"ISO/TS 16281 slicing"``; ``p_max`` is the largest slice pressure
+        With method ``"ISO 16281 slicing"``; ``p_max`` is the largest slice pressure
         (the method has no edge peak; ``edge_loaded`` still says if an end is loaded).
 
     Raises
@@ -102,7 +102,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
 
     References
     ----------
-    ISO/TS 16281:2008 (slicing method); Palmgren (1959).
+    ISO 16281:2025 (slicing method); Palmgren (1959).
     """
     from ..classical import STEEL_ESTAR_RANGE, _STEEL_HINT
     R = float(check_positive("radius", radius, "m"))
@@ -110,7 +110,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     E = float(check_positive("estar", estar, "Pa"))
     STEEL_ESTAR_RANGE.check(E, hint=_STEEL_HINT)
     n = check_interval("n_slices", n_slices, ISO_MIN_SLICES, N_SLICES.high,
-                       hint="ISO/TS 16281 asks for at least 30 slices").item()
+                       hint="ISO 16281 asks for at least 30 slices").item()
     n = int(n)
     prof = as_profile(profile, R, L, E)
     w = L / n
@@ -123,11 +123,35 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     def d_first(th):
         return float(np.min(P - x * math.tan(th)))
 
+    free = is_free_tilt(tilt)
+
+    def zero_moment(moment, what, value, unit):
+        """The tilt at which moment(theta) vanishes (M increases with theta)."""
+        from scipy.optimize import brentq
+
+        m0 = moment(0.0)
+        if m0 == 0.0:
+            return 0.0
+        step = -math.copysign(1e-6, m0)          # bracket the root
+        while moment(step) * m0 > 0:
+            step *= 4
+            if abs(step) >= TILT_RANGE.high:
+                raise OutOfRangeError(what, value, "a load with a zero-moment tilt "
+                                      "below 0.1 rad", unit=unit)
+        return brentq(moment, min(0.0, step), max(0.0, step), xtol=1e-15, rtol=1e-13,
+                      maxiter=200)
+
     if depth is not None:
-        th = 0.0 if tilt is None else TILT_RANGE.check(tilt).item()
-        d0 = d_first(th)
-        d = check_interval("depth", depth, d0, np.inf, low_open=True, high_open=True,
-                           unit="m", hint=f"no contact at or below {d0:.6g} m").item()
+        def depth_checked(th):
+            d0 = d_first(th)
+            return check_interval("depth", depth, d0, np.inf, low_open=True,
+                                  high_open=True, unit="m",
+                                  hint=f"no contact at or below {d0:.6g} m").item()
+
+        th = (zero_moment(lambda t: _iso_state(P, x, L, E, n, depth_checked(t), t)[2],
+                          "depth", float(depth), "m") if free
+              else TILT_RANGE.check(tilt).item())
+        d = depth_checked(th)
     else:
         from scipy.optimize import brentq
         F0 = float(check_positive("force", force, "N"))
@@ -140,24 +164,8 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
             return brentq(lambda e: _iso_state(P, x, L, E, n, d0 + e, th)[1] - F0,
                           0.0, hi, xtol=1e-15 * L, rtol=1e-14, maxiter=200) + d0
 
-        if tilt is not None:
-            th = TILT_RANGE.check(tilt).item()
-        else:
-            def moment(th):
-                return _iso_state(P, x, L, E, n, depth_at(th), th)[2]
-            m0 = moment(0.0)
-            if m0 == 0.0:
-                th = 0.0
-            else:
-                # M increases with theta at constant F; bracket the root
-                step = -math.copysign(1e-6, m0)
-                while moment(step) * m0 > 0:
-                    step *= 4
-                    if abs(step) >= TILT_RANGE.high:
-                        raise OutOfRangeError("force", F0, "a load with a zero-moment tilt "
-                                              "below 0.1 rad", unit="N")
-                th = brentq(moment, min(0.0, step), max(0.0, step), xtol=1e-15,
-                            rtol=1e-13, maxiter=200)
+        th = (zero_moment(lambda t: _iso_state(P, x, L, E, n, depth_at(t), t)[2],
+                          "force", F0, "N") if free else TILT_RANGE.check(tilt).item())
         d = depth_at(th)
     Q, F, M, K = _iso_state(P, x, L, E, n, d, th)
     q = Q / w
@@ -167,7 +175,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     edge = {(True, True): "both", (True, False): "-x", (False, True): "+x"}.get(
         (lo_edge, hi_edge))
     pm, xm = peak_pressure(x, p)
-    msg = ("largest slice pressure of uncoupled 2D Hertz slices (ISO/TS 16281); the "
+    msg = ("largest slice pressure of uncoupled 2D Hertz slices (ISO 16281); the "
            "method has no edge peak")
     if edge is not None:
         msg += f"; the contact reaches the roller end ({edge}), where the true pressure " \
@@ -177,4 +185,4 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
         tilt_stiffness=float(K[1, 1]), stiffness_matrix=K, x=x, q=q, half_width=b,
         pressure=p, p_max=pm, x_at_p_max=xm, contact_start=start, contact_end=stop,
         contact_length=stop - start, edge_loaded=edge is not None, edge=edge,
-        message=msg, method="ISO/TS 16281 slicing", n_slices=n)
+        message=msg, method="ISO 16281 slicing", n_slices=n)

@@ -37,6 +37,17 @@ class _SolvedRoller(ContactModel):
         self.tilt = TILT_RANGE.check(tilt).item()
 
     @property
+    def first_contact_depth(self):
+        """Depth of the roller's centre at first contact at this tilt [m]."""
+        from ..profiles import roller_drop
+
+        if isinstance(self, ProfiledRollerModel):
+            return self.roller.first_contact_depth(self.tilt)
+        L, n = self.length, self.n_slices
+        x = -L / 2 + L / n * (np.arange(n) + 0.5)
+        return float(np.min(roller_drop(self.axial_profile, L, x) - x * np.tan(self.tilt)))
+
+    @property
     def label(self):
         s = f"{self._name} ({self.axial_profile.label}"
         if self.tilt:
@@ -131,7 +142,7 @@ class ProfiledRollerModel(_SolvedRoller):
 
 @register
 class ISOSlicingModel(_SolvedRoller):
-    """ISO/TS 16281 slicing of a profiled, tilted roller as a contact law (steel only).
+    """ISO 16281 slicing of a profiled, tilted roller as a contact law (steel only).
 
     .. math:: F(d) = \\sum_k \\frac{c}{n}\\,(d + x_k\\tan\\theta - P(x_k))_+^{10/9}
 
@@ -160,13 +171,13 @@ class ISOSlicingModel(_SolvedRoller):
 
     References
     ----------
-    ISO/TS 16281:2008.
+    ISO 16281:2025.
     """
 
     key = "iso16281-slicing"
-    no_profile_reason = "uncoupled slices, each with the empirical ISO/TS 16281 law"
+    no_profile_reason = "uncoupled slices, each with the empirical ISO 16281 law"
 
-    _name = "ISO/TS 16281 slicing"
+    _name = "ISO 16281 slicing"
 
     def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=30):
         super().__init__(radius, length, estar, tilt)
@@ -175,7 +186,7 @@ class ISOSlicingModel(_SolvedRoller):
 
     @property
     def provenance(self):
-        return {"model": self.label, "method": "ISO/TS 16281:2008 slicing, uncoupled "
+        return {"model": self.label, "method": "ISO 16281:2025 slicing, uncoupled "
                 "slices", "profile": self.axial_profile.provenance, "tilt_rad": self.tilt}
 
     def check_applicable(self):

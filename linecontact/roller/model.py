@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from ..profiles import as_profile, roller_drop
+from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_interval, check_positive
 from .coverage import coverage_note
 from .slices import N_SLICES, TILT_RANGE, ConvergenceError, SliceEquations
@@ -172,15 +172,18 @@ class ProfiledRoller:
 
         Parameters
         ----------
-        depth : float
+        depth : float or array_like
             Depth d of the roller point x = 0 [m]; must exceed
-            :meth:`first_contact_depth` (else there is no contact).
-        tilt : float, optional
-            Tilt theta, |theta| < 0.1 [rad].
+            :meth:`first_contact_depth` (else there is no contact). An array of
+            several depths gives an array of solutions, one per depth (one value,
+            also in a one-element array, gives one solution).
+        tilt : float or str, optional
+            Tilt theta, |theta| < 0.1 [rad] (default 0: aligned); ``"free"``: the tilt
+            at which the moment about x = 0 vanishes at this depth.
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `depth`)
 
         Raises
         ------
@@ -193,6 +196,10 @@ class ProfiledRoller:
         >>> f"{r.at_depth(7.0244e-6).force:.0f} N"
         '1000 N'
         """
+        if np.size(depth) != 1:
+            return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
+        if is_free_tilt(tilt):
+            return self._free_tilt_at_depth(depth)
         th = TILT_RANGE.check(tilt).item()
         d0 = self.first_contact_depth(th)
         d = check_interval("depth", depth, d0, np.inf, low_open=True, high_open=True,
@@ -237,7 +244,7 @@ class ProfiledRoller:
         near = max(s.w, 1e-3 * self.length)
         lo_edge = lo_edge or start <= -self.length / 2 + near
         hi_edge = hi_edge or stop >= self.length / 2 - near
-        # an end where the drop is infinite (Lundberg, ISO/TS 16281: ln 1/(1 - (2x/L)^2))
+        # an end where the drop is infinite (Lundberg, ISO 16281: ln 1/(1 - (2x/L)^2))
         # is never reached: the rigid overlap ends before it, the contact with it, and the
         # pressure stays finite (3D BEM, Lundberg at its design load, R 5 mm, L 10 mm,
         # 1 kN: contact ends 9.8 um before each end, peak 972 MPa 28 um from it, converged
@@ -335,24 +342,28 @@ class ProfiledRoller:
             e = en
         raise ConvergenceError(f"no depth found for force {F0:g} N")
 
-    def at_force(self, force, tilt=None, tol=1e-10):
-        """Solve at force F, with a given tilt or (tilt=None) at zero moment.
+    def at_force(self, force, tilt=0.0, tol=1e-10):
+        """Solve at force F, with a given tilt (default 0, aligned) or (tilt="free") at
+        zero moment.
 
         .. math:: \\sum_k q_k w = F, \\qquad \\sum_k q_k x_k w = 0 \\text{ (tilt free)}
 
         Parameters
         ----------
-        force : float
-            Normal force F, 0 < F < inf [N].
-        tilt : float or None, optional
-            Tilt theta [rad], |theta| < 0.1; None (default) solves for the tilt at
-            which the moment about x = 0 vanishes (a roller free to tilt).
+        force : float or array_like
+            Normal force F, 0 < F < inf [N]. An array of several forces gives an
+            array of solutions, one per force (one value, also in a one-element array,
+            gives one solution).
+        tilt : float or str, optional
+            Tilt theta [rad], |theta| < 0.1 (default 0: aligned); ``"free"`` solves
+            for the tilt at which the moment about x = 0 vanishes (a roller free to
+            tilt).
         tol : float, optional
             Relative tolerance on F (and on M/(F L)) [-].
 
         Returns
         -------
-        RollerSolution
+        RollerSolution, or an object ndarray of them (shape of `force`)
 
         Examples
         --------
@@ -361,8 +372,10 @@ class ProfiledRoller:
         >>> f"M/F = {s.moment / s.force * 1e3:.3f} mm"
         'M/F = 1.000 mm'
         """
+        if np.size(force) != 1:
+            return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
-        if tilt is not None:
+        if not is_free_tilt(tilt):
             th = TILT_RANGE.check(tilt).item()
             return self._solution(*self._depth_at_force(F0, th, tol))
         L = self.length
@@ -410,15 +423,32 @@ class ProfiledRoller:
             st = self._forces(d, th)
         return None
 
+    def _free_tilt_at_depth(self, depth):
+        """Zero moment at a given centre depth: Newton on theta with dM/dtheta = K[1, 1]
+        at fixed depth, safeguarded by bisection on the bracket it builds."""
+        L = self.length
+        th, lo, hi = 0.0, -TILT_RANGE.high, TILT_RANGE.high
+        for _ in range(60):
+            s = self.at_depth(depth, th)
+            if abs(s.moment) <= 1e-10 * s.force * L:
+                return s
+            if s.moment > 0:
+                hi = th
+            else:
+                lo = th
+            new = th - s.moment / s.stiffness_matrix[1, 1]
+            th = new if lo < new < hi else 0.5 * (lo + hi)
+        raise ConvergenceError(f"no zero-moment tilt at depth {depth:g} m")
+
 
 def roller_contact(radius, length, estar, profile=None, *, depth=None, force=None,
-                   tilt=None, n_slices=100):
+                   tilt=0.0, n_slices=100):
     """Solve a profiled, tilted roller on a flat at a depth or a force (coupled slices).
 
     .. math:: h(x, y) = y^2/(2R) + P(x) - \\theta x
 
-    Give exactly one of `depth` (with `tilt`, default 0) or `force` (with `tilt`, or
-    without it for zero moment).
+    Give exactly one of `depth` or `force`, and the tilt (default 0: aligned; ``"free"``
+    for zero moment).
 
     Parameters
     ----------
@@ -434,8 +464,8 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
         Depth d [m].
     force : float, optional
         Force F [N].
-    tilt : float, optional
-        Tilt theta [rad].
+    tilt : float or str, optional
+        Tilt theta [rad] (default 0), or ``"free"``.
     n_slices : int, optional
         Number of slices [-] (default 100).
 
@@ -468,5 +498,20 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
                               "exactly one of depth, force")
     r = ProfiledRoller(radius, length, estar, profile, n_slices=n_slices)
     if depth is not None:
-        return r.at_depth(depth, 0.0 if tilt is None else tilt)
+        return r.at_depth(depth, tilt)
     return r.at_force(force, tilt)
+
+
+def _each(solve, values, name, unit):
+    """An object array of `solve(v)` over the array `values` (same shape), each value
+    checked first (finite numbers), so that an array of forces or depths is accepted
+    wherever one is."""
+    v = np.asarray(values, dtype=float)
+    if not np.all(np.isfinite(v)):
+        i = int(np.argmax(~np.isfinite(v.ravel())))
+        raise OutOfRangeError(name, float(v.ravel()[i]), f"finite values [{unit}]",
+                              unit=unit, where=f"element {i}")
+    out = np.empty(v.shape, dtype=object)
+    for idx in np.ndindex(v.shape):
+        out[idx] = solve(float(v[idx]))
+    return out

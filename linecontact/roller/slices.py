@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from ..profiles import TILT_RANGE
 from ..validity import Interval
 from .kernel import strip_values
 
@@ -15,8 +16,6 @@ __all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE"]
 
 #: Slice counts accepted by the coupled-slice model.
 N_SLICES = Interval("n_slices", 10, 4000)
-#: Tilts accepted (the gap linearises the tilt: theta x for small angles).
-TILT_RANGE = Interval("tilt", -0.1, 0.1, low_open=True, high_open=True, unit="rad")
 
 
 class ConvergenceError(RuntimeError):

@@ -62,7 +62,7 @@ class RollerSolution:
     message : str
         What p_max means here, or why it is None.
     method : str
-        ``"coupled slices"`` or ``"ISO/TS 16281 slicing"``.
+        ``"coupled slices"`` or ``"ISO 16281 slicing"``.
     n_slices : int
         Number of slices [-].
     iterations : int

@@ -6,7 +6,7 @@ What it measures:
 
 1. accuracy, on every case of tables/roller_accuracy.csv (the BEM reference of
    tools/studies/roller_study.py, finer of two nested grids): the runtime coupled-slice model
-   (linecontact.roller) and ISO/TS 16281 slicing are re-run now, at the case's force and
+   (linecontact.roller) and ISO 16281 slicing are re-run now, at the case's force and
    tilt, and compared with the stored BEM deflection, moment and peak pressure (error
    definitions: tools/studies/roller_study.py). Targets (issue 9, item 8): runtime within 1 % in
    deflection and moment and within 5 % in peak pressure wherever the contact stays off
@@ -141,7 +141,7 @@ def report(rows, bem, table_path):
         f"{max(abs(r['rt_k'][1]) for r in rows):.2%} (BEM: rigid punch on its staircase "
         "contact set)")
     say("")
-    say("ISO/TS 16281 slicing against the converged BEM (same cases)")
+    say("ISO 16281 slicing against the converged BEM (same cases)")
     for subset, label in ((off, "off the ends"), (edge, "edge loaded")):
         for k, name in enumerate(names):
             if label == "edge loaded" and name == "p_max":

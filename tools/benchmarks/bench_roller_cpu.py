@@ -5,9 +5,9 @@
 
 Each case as the study runs it (tools/studies/roller_study.py, ``runtime_case``): a new
 ``linecontact.roller.ProfiledRoller`` (100 slices) per case, then one
-``at_force(F, tilt)`` (tilt None: zero moment), timed with ``time.process_time`` (CPU
-time, not wall: the shared machine's load does not enter); the cases run in table order
-in one process, so the first includes the one-time build of the strip-function table.
+``at_force(F, tilt)`` (a task's tilt None: ``tilt="free"``, zero moment), timed with
+``time.process_time`` (CPU time, not wall: the shared machine's load does not enter);
+the cases run in table order in one process, so the first includes the one-time build of the strip-function table.
 ``--repeat`` runs the whole list again and keeps each case's median. ``--save`` writes
 the results (depth, moment, tilt, p_max, edge, CPU time); ``--against`` compares with a
 saved run: the largest change in depth (over the case's largest approach), moment (over
@@ -42,7 +42,7 @@ def run(repeat=1):
             model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof,
                                    n_slices=100)
             c0 = time.process_time()
-            r = model.at_force(t["force"], tilt=t["tilt"])
+            r = model.at_force(t["force"], tilt="free" if t["tilt"] is None else t["tilt"])
             times[i].append(time.process_time() - c0)
             out[i] = dict(case=i, profile=t["profile"], force=t["force"], tilt=r.tilt,
                           given_tilt=t["tilt"], depth=r.depth, moment=r.moment,

@@ -23,7 +23,7 @@ Li-Popov form with the paper's Table 1 spline (0.1 <= L/R <= 6), with the Eq. 11
 constants (given for L/R >= 5; evaluated below that too, the figure marks where), with
 the regenerated coefficients (if tables/lipopov_regenerated.csv exists), Eq. 2
 (Puttock-Thwaite), the Johnson-type Eq. 4 with c = 1, 0.72, 0.572, Kunz's linear law and
-the steel-only Palmgren and ISO/TS 16281 formulas. All are compared at the E* of steel
+the steel-only Palmgren and ISO 16281 formulas. All are compared at the E* of steel
 on steel: every model's F is proportional to E* except the two steel formulas, which
 apply to steel only; and each obeys F(lambda R, lambda L, lambda d) = lambda^2 F at fixed
 E* (tests/test_models.py), so the errors depend on L/R and d/R alone. Where a model has
@@ -74,7 +74,7 @@ def comparison_models():
         models.append((m.accuracy_tag, f"Eq. 4, Johnson c = {c:g}", "johnson", dict(c=c)))
     models += [("kunz", "Kunz (F = 0.175 E* L d)", "kunz", {}),
                ("palmgren", "Palmgren (steel)", "palmgren", {}),
-               ("iso16281", "ISO/TS 16281 (steel)", "iso16281", {})]
+               ("iso16281", "ISO 16281 (steel)", "iso16281", {})]
     return models
 
 

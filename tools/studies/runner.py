@@ -9,9 +9,12 @@ Tasks go to a ``dask.distributed`` client:
   backend for one thread too);
 - with ``--scheduler ADDRESS`` (e.g. ``tcp://host:8786``) an existing cluster started
   with ``dask scheduler`` and ``dask worker ADDRESS --nthreads 1`` on each machine
-  (README.md, "Running a study on a cluster"). The workers must be able to import
-  ``tools`` and ``linecontact``: start them from the repository root or put it on their
-  ``PYTHONPATH``.
+  (docs/cluster.md). The scheduler and the workers need linecontact installed (the
+  same code as this checkout: checked before any task runs), not the repository: the
+  study code travels with the tasks (:func:`ship_study_code`). The ``tools`` package
+  is uploaded to the cluster as a zip (``Client.upload_file``, which also reaches
+  workers that join later), and a task function defined elsewhere in the checkout
+  (a test, a script) is pickled by value with cloudpickle.
 
 Each task is a picklable dict with a unique ``"key"`` (str). As results arrive, the
 client (this process, never a worker) saves each one in the checkpoint folder as
@@ -34,10 +37,13 @@ import pickle
 import re
 import subprocess
 import sys
+import tempfile
+import zipfile
 from pathlib import Path
 
 __all__ = ["add_runner_arguments", "run_study", "run_study_from_args", "table_meta",
-           "wall_time_line", "code_version", "DEFAULT_WORKERS"]
+           "wall_time_line", "code_version", "ship_study_code", "check_same_linecontact",
+           "linecontact_fingerprint", "DEFAULT_WORKERS"]
 
 #: Worker processes of the default LocalCluster (the 2 cores of the reference machine).
 DEFAULT_WORKERS = 2
@@ -123,6 +129,116 @@ def _save(folder, task, result):
     with open(tmp, "wb") as fh:
         pickle.dump({"task": task, "result": result}, fh, protocol=pickle.HIGHEST_PROTOCOL)
     os.replace(tmp, path)
+
+
+#: The repository root: the parent of the ``tools`` package.
+_TOOLS = Path(__file__).resolve().parents[1]
+_REPO = _TOOLS.parent
+
+
+def linecontact_fingerprint():
+    """SHA-1 of the Python sources of the linecontact package that this interpreter
+    imports (relative paths and bytes of every ``*.py``, the data tables excluded),
+    with its version: two processes compute the same numbers only if these agree.
+
+    >>> linecontact_fingerprint().startswith("linecontact ")
+    True
+    """
+    import linecontact
+    root = Path(linecontact.__file__).resolve().parent
+    digest = hashlib.sha1()
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root)
+        if rel.parts[0] == "tables" or "__pycache__" in rel.parts:
+            continue
+        digest.update(rel.as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return f"linecontact {linecontact.__version__} sha1 {digest.hexdigest()[:12]}"
+
+
+def _zip_tools(folder):
+    """The ``tools`` package (its ``*.py`` files) as a zip named by its content hash,
+    in `folder`; the path of the zip."""
+    files = sorted(p for p in _TOOLS.rglob("*.py") if "__pycache__" not in p.parts)
+    digest = hashlib.sha1()
+    for p in files:
+        digest.update(p.relative_to(_REPO).as_posix().encode() + b"\0" + p.read_bytes())
+    path = Path(folder) / f"linecontact_tools_{digest.hexdigest()[:12]}.zip"
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
+        for p in files:
+            # a fixed date: the same sources give the same bytes
+            info = zipfile.ZipInfo(p.relative_to(_REPO).as_posix(), (1980, 1, 1, 0, 0, 0))
+            zf.writestr(info, p.read_bytes(), zipfile.ZIP_DEFLATED)
+    return path
+
+
+# Run on the scheduler and every worker before the upload, as source text through the
+# builtin exec (so it needs nothing from this repository there): a long-lived process
+# forgets the tools modules it imported from an older upload, which would otherwise
+# shadow the new zip's (importing a package reloads only its __init__).
+_FORGET_TOOLS = """import sys
+for _name in [m for m in sys.modules if m == "tools" or m.startswith("tools.")]:
+    del sys.modules[_name]
+"""
+
+
+def _by_value_modules(func):
+    """Modules of this checkout outside ``tools`` (uploaded) and ``linecontact``
+    (installed on the cluster) that `func` comes from: a test or a script, which the
+    workers cannot import, so it is pickled by value."""
+    module = sys.modules.get(getattr(func, "__module__", None) or "")
+    top = (module.__name__.split(".")[0] if module else "")
+    file = getattr(module, "__file__", None)
+    if module is None or top in ("tools", "linecontact", "__main__") or not file:
+        return []
+    try:
+        Path(file).resolve().relative_to(_REPO)
+    except ValueError:
+        return []            # an installed package: the cluster has its own
+    return [module]
+
+
+def _run_pickled(task, func_pickle):
+    """The task as the cluster runs it: `func_pickle` (cloudpickle of the study
+    function, by value where the cluster lacks its module) called on `task`."""
+    import pickle as _pickle
+    return _pickle.loads(func_pickle)(task)
+
+
+def ship_study_code(client):
+    """Make this checkout's study code importable on a Dask cluster whose scheduler and
+    workers have linecontact installed but not the repository.
+
+    The ``tools`` package is zipped and sent with ``Client.upload_file`` (the scheduler
+    and every worker, present and future, put it first on ``sys.path``; modules of an
+    older upload are forgotten first). Then the workers' linecontact must be this
+    checkout's (:func:`linecontact_fingerprint`): a study computed by other code than
+    the version its table names would be a lie.
+
+    Raises
+    ------
+    RuntimeError
+        A worker imports a linecontact with other sources than this process (it names
+        the worker, both fingerprints and what to install).
+    """
+    client.run_on_scheduler(exec, _FORGET_TOOLS, {})
+    client.run(exec, _FORGET_TOOLS, {})
+    with tempfile.TemporaryDirectory(prefix="linecontact-ship-") as folder:
+        client.upload_file(str(_zip_tools(folder)))
+    check_same_linecontact(client)
+
+
+def check_same_linecontact(client, expected=None):
+    """RuntimeError unless every worker's :func:`linecontact_fingerprint` equals
+    `expected` (default: this process's)."""
+    expected = expected or linecontact_fingerprint()
+    found = client.run(linecontact_fingerprint)
+    other = {w: f for w, f in found.items() if f != expected}
+    if other:
+        worker, theirs = sorted(other.items())[0]
+        raise RuntimeError(
+            f"{len(other)} of {len(found)} dask workers run other linecontact code "
+            f"than this checkout (worker {worker}: {theirs}; here: {expected}); "
+            f"install this checkout on them (pip install {_REPO}) and restart them")
 
 
 def _client(scheduler, workers):
@@ -213,9 +329,22 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
 
 def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar):
     from dask.distributed import as_completed
+    import cloudpickle
     client, cluster = _client(scheduler, workers)
     try:
-        futures = client.map(func, todo, pure=False)
+        # a local cluster's scheduler is this process and its workers start with this
+        # sys.path: they import the code from the checkout like this process does
+        if scheduler:
+            ship_study_code(client)
+        by_value = _by_value_modules(func) if scheduler else []
+        for module in by_value:
+            cloudpickle.register_pickle_by_value(module)
+        try:
+            func_pickle = cloudpickle.dumps(func)
+        finally:
+            for module in by_value:
+                cloudpickle.unregister_pickle_by_value(module)
+        futures = client.map(_run_pickled, todo, func_pickle=func_pickle, pure=False)
         task_of = {f.key: t for f, t in zip(futures, todo)}
         for fut in as_completed(futures):
             task = task_of[fut.key]

@@ -16,20 +16,18 @@ Usage (``linecontact calc --help`` has the full list)::
     linecontact calc ... --load 1kN --profile iso16281 --json          # ... with q(x)
 
 Where things are
-    :mod:`linecontact.cases`   the inputs (options = CSV columns) and their checks;
-    :mod:`linecontact._units`  the rule for a value: a number with one unit name;
-    :mod:`linecontact.compute` evaluation of the models on whole arrays, derived columns;
-    :mod:`linecontact.render`  table, JSON (one header) and output files;
-    :mod:`linecontact.batch`   CSV in and out.
+    :mod:`linecontact.calc.cases`    the core inputs (options = CSV columns), the rules;
+    :mod:`linecontact.calc.feature`  the shape of a feature (and how to add one);
+    :mod:`linecontact.calc.features` raceways, profiled roller, tangential, viscoelastic;
+    :mod:`linecontact.calc.compute`  evaluation of the models on whole arrays;
+    :mod:`linecontact.calc.render`   table, JSON (one header) and output files;
+    :mod:`linecontact.calc.batch`    CSV in and out;
+    :mod:`linecontact._units`        the rule for a value: a number with one unit name.
 
-Adding options and output (e.g. profiled rollers, tangential contact)
-    Options: add :class:`~linecontact.cases.Parameter` entries with a new group title
-    to :data:`linecontact.cases.PARAMETERS` (they become ``--options``, CSV columns and
-    ``--help`` sections here, with no change to this module) and any rule between them
-    to ``linecontact.cases._resolve``. Output: add a
-    :class:`~linecontact.compute.Field` and compute it in :mod:`linecontact.compute`;
-    the table, JSON and CSV renderers list it from there. A flag that is not a value
-    (like ``--linear``) is added in :func:`_build_parser` below.
+Adding options and output: a feature (see :mod:`linecontact.calc.feature`); its
+parameters become ``--options``, CSV columns and ``--help`` sections here with no
+change to this module. A flag that is not a value (like ``--linear``) or a subcommand is
+added in :func:`build_parser` below.
 
 Inputs
     Values may carry ONE unit name ("5mm", "0.2 in", "210 GPa", "1kN"); bare numbers are
@@ -53,8 +51,10 @@ Output
     each model's provenance.
 
 Sweeps
-    ``--load START:STOP:N`` (or ``--depth``): N values from START to STOP, both
-    included, spaced geometrically (equal ratios); ``--linear`` spaces them evenly.
+    Any numeric option ``--NAME START:STOP:N``: N values from START to STOP, both
+    included, spaced geometrically (equal ratios); ``--linear`` spaces them evenly, as
+    does a sweep of a signed quantity through zero (``--tilt -1mrad:1mrad:5``). Two or
+    more sweeps give the grid (every combination; the first option varies slowest).
 
 Batch
     ``linecontact calc FILE.csv``: see :mod:`linecontact.batch` (user columns are never
@@ -77,7 +77,8 @@ import argparse
 import re
 import sys
 
-from .cases import PARAMETERS, option_name
+from .cases import PARAMETERS
+from .feature import RAW_KINDS, option_name
 
 __all__ = ["main"]
 
@@ -91,7 +92,7 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
-def _build_parser():
+def build_parser():
     parser = _Parser(
         prog=PROG,
         description="Stiffness and deflection of a finite cylinder (roller) pressed on its "
@@ -105,8 +106,9 @@ def _build_parser():
         "MDR contact half-length of a roller of radius R and length L, one row per "
         "model. A value is a number with one unit name ('5mm', '0.2 in', '210 GPa', "
         "'1kN'); bare numbers are SI.",
-        epilog="Sweeps: --load START:STOP:N (or --depth) gives N values from START to STOP, "
-        "both included, spaced geometrically; --linear spaces them evenly. Batch: "
+        epilog="Sweeps: --NAME START:STOP:N (any numeric option) gives N values from START "
+        "to STOP, both included, spaced geometrically; --linear spaces them evenly (a "
+        "signed range through zero always is); two sweeps give the grid. Batch: "
         "FILE.csv holds one case per row with columns named like the options (inner_raceway "
         "for --inner-raceway); results are appended as columns, user columns are kept. "
         "Exit status 2 on bad input.",
@@ -134,15 +136,28 @@ def _build_parser():
     out.add_argument("--si", action="store_true", help="output in SI units (m, N, N/m, Pa)")
     out.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
     out.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    out.add_argument("--plot", metavar="FILE", help="also draw the case (one case or a "
+                     "sweep): F(d) of the models where each applies, with the computed "
+                     "points, and a profiled roller's q(x); PNG, SVG or PDF by the "
+                     "extension; needs matplotlib (pip install 'linecontact[plot]')")
     out.add_argument("--progress", dest="progress", action="store_true", default=None,
                      help="progress bar on stderr for a batch (default: batches of 10000 "
                      "rows or more, on a terminal)")
     out.add_argument("--no-progress", dest="progress", action="store_false",
                      help="no progress bar")
+    from .bearing import add_parser as add_bearing
+
+    add_bearing(sub)
     return parser
 
 
-_VALUE_OPTIONS = {option_name(p.name) for p in PARAMETERS}
+def _value_options():
+    from .bearing import PARAMETERS as BEARING
+
+    return {option_name(p.name) for p in PARAMETERS + BEARING}
+
+
+_VALUE_OPTIONS = _value_options()
 _NEGATIVE = re.compile(r"^-(\d|\.\d)")
 
 
@@ -162,56 +177,74 @@ def _join_negative_values(argv):
     return out
 
 
-def _calc_one(args, argv, specs):
-    """One case or a sweep: a table (or JSON) with one row per model and value."""
+def sweep_cells(raw, linear=False):
+    """Cells of a command line with sweeps: name -> ndarray of SI floats (a sweep, or
+    the grid of several: every combination, the first varying slowest) or list of str.
+
+    Returns (cells, n). A sweep of a signed quantity whose range includes zero or a
+    negative end is spaced linearly (a geometric one has no such values).
+    """
     import numpy as np
 
+    from .._units import parse_quantity, parse_sweep
+
+    sweeps = {}
+    for p in PARAMETERS:
+        text = raw.get(p.name)
+        if not (p.sweep and p.kind not in RAW_KINDS and text is not None and ":" in text):
+            continue
+        lin = linear
+        if not p.positive and not lin:
+            ends = text.split(":")[:2]
+            try:
+                lin = any(parse_quantity(option_name(p.name), e, p.kind, positive=False) <= 0
+                          for e in ends)
+            except ValueError:
+                pass  # parse_sweep says what is wrong
+        sweeps[p.name] = np.array(parse_sweep(option_name(p.name), text, p.kind,
+                                              linear=lin, positive=p.positive))
+    n = 1
+    for arr in sweeps.values():
+        n *= len(arr)
+    if n > 100000:
+        raise _Failed(f"{' x '.join(option_name(k) for k in sweeps)}: a grid of {n} cases; "
+                      "valid: at most 100000 (or a CSV batch)")
+    grids = np.meshgrid(*sweeps.values(), indexing="ij") if sweeps else []
+    cells = {k: g.ravel() for k, g in zip(sweeps, grids)}
+    for k, v in raw.items():
+        if v is not None and k not in cells:
+            cells[k] = [v] * n
+    return cells, n
+
+
+def _calc_one(args, argv, specs):
+    """One case or a sweep: a table (or JSON) with one row per model and value."""
     from . import render
-    from ._units import parse_sweep
-    from .cases import BY_NAME, parse_cases
+    from .cases import parse_cases
     from .compute import compute
 
     raw = {p.name: getattr(args, p.name) for p in PARAMETERS}
-    n = 1
-    swept = None
-    for p in PARAMETERS:
-        name = p.name
-        other = {"load": "depth", "depth": "load"}.get(name)
-        if not (p.sweep and raw[name] is not None and ":" in raw[name]):
-            continue
-        if other is not None and raw[other] is not None:
-            continue  # load and depth together: parse_cases says so
-        if swept is not None:
-            raise _Failed(f"{option_name(name)} = {raw[name]!r}: a second sweep; valid: "
-                          f"one sweep at a time (already {option_name(swept)})")
-        sweep = np.array(parse_sweep(option_name(name), raw[name], BY_NAME[name].kind,
-                                     linear=args.linear, positive=p.positive))
-        n = len(sweep)
-        raw[name] = sweep
-        swept = name
-    cells = {
-        k: (v if isinstance(v, np.ndarray) else [v] * n) for k, v in raw.items() if v is not None
-    }
+    cells, n = sweep_cells(raw, args.linear)
     cases, present, errors = parse_cases(cells, n)
     if errors[0]:
         raise _Failed(errors[0])
     results = compute(cases, errors, specs)
-    if errors[0]:  # an unexpected failure of a model: said, not hidden
-        raise _Failed(errors[0])
-    from . import calc_roller
-
-    rollers = calc_roller.solve(cases, errors)  # profiled roller (issue 9), if asked
     bad = next((e for e in errors if e), "")
-    if bad:
+    if bad:  # an unexpected failure of a model, or a feature's one-case refusal
         raise _Failed(bad)
+    if args.plot is not None:  # refuse a bad file name before anything is written
+        from ..plot import FORMATS
+        from ..validity import OutOfRangeError
+        if args.plot.rsplit(".", 1)[-1].lower() not in FORMATS:
+            raise OutOfRangeError("--plot", args.plot, "a name ending in .png, .svg "
+                                  "or .pdf")
     if args.json:
-        extra = {"profiled_roller": calc_roller.json_blocks(rollers)} if rollers else None
-        render.write(render.one_json(argv, cases, present, results, extra=extra),
-                     args.output)
+        render.write(render.one_json(argv, cases, present, results), args.output)
     else:
-        text = render.table_text(cases, present, results, args.si)
-        text += calc_roller.table_text(rollers, str(cases["given"][0]), args.si)
-        render.write(text, args.output)
+        render.write(render.table_text(cases, present, results, args.si), args.output)
+    if args.plot is not None:
+        from .figure import draw_results
+        draw_results(results, args.plot)
     computed = any(not note for s in results.sets for note in s["note"])
     if not computed:
         notes = [s["note"][0] for s in results.sets]
@@ -224,14 +257,14 @@ class _Failed(Exception):
     """A one-line error message already composed."""
 
 
-def _error(message):
-    print(f"{PROG} calc: error: {message}", file=sys.stderr)
+def _error(message, command="calc"):
+    print(f"{PROG} {command}: error: {message}", file=sys.stderr)
 
 
 def main(argv=None):
     """Entry point of the ``linecontact`` console script; returns the exit status."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    parser = _build_parser()
+    parser = build_parser()
     try:
         args = parser.parse_args(_join_negative_values(argv))
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
@@ -239,12 +272,22 @@ def main(argv=None):
     if args.command is None:
         parser.print_help(sys.stderr)
         return 2
+    if args.command == "bearing":
+        return _bearing(args, argv)
     try:
         from .compute import parse_model_option
 
         specs = parse_model_option(args.model)
+        from . import render
+
+        render.refuse_input_as_output(args.output, [args.csv] + [
+            getattr(args, p.name) for p in PARAMETERS if p.kind == "path"])
         if args.csv is not None:
             from .batch import run_batch
+
+            if getattr(args, "plot", None) is not None:
+                raise _Failed("--plot draws one case or a sweep, not a CSV batch (read "
+                              "the batch's output into linecontact.plot instead)")
 
             options = {p.name: getattr(args, p.name) for p in PARAMETERS}
             return run_batch(args, argv, specs, options)
@@ -254,11 +297,12 @@ def main(argv=None):
         return 2
     except ValueError as exc:
         # InputError, BatchError (ours) or the library's OutOfRangeError
-        from ._units import InputError
+        from .._units import InputError
+        from ..validity import CombinationError, OutOfRangeError, UnknownNameError
         from .batch import BatchError
-        from .validity import OutOfRangeError
 
-        if not isinstance(exc, (InputError, OutOfRangeError, BatchError)):
+        if not isinstance(exc, (InputError, OutOfRangeError, BatchError, CombinationError,
+                                UnknownNameError)):
             raise
         _error(str(exc))
         return 2
@@ -269,8 +313,36 @@ def main(argv=None):
         return 1
     except KeyboardInterrupt:
         return 130
+    except ImportError as exc:  # --plot without matplotlib: say how to install it
+        from ..plot import MissingDependencyError
+
+        if not isinstance(exc, MissingDependencyError):
+            raise
+        _error(str(exc))
+        return 2
     except OSError as exc:  # the output file (render.OutputError names it) and others
         name = getattr(exc, "filename", None)
         reason = exc.strerror or str(exc) or type(exc).__name__
         _error(f"{name!r}: {reason}" if name else reason)
+        return 2
+
+
+def _bearing(args, argv):
+    """``linecontact bearing``: bad input is one line on stderr, status 2."""
+    from .bearing import run
+
+    try:
+        return run(args, argv)
+    except ValueError as exc:  # InputError, OutOfRangeError, CombinationError, ...
+        _error(str(exc).splitlines()[0] if str(exc) else type(exc).__name__, "bearing")
+        return 2
+    except BrokenPipeError:
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except OSError as exc:
+        name = getattr(exc, "filename", None)
+        reason = exc.strerror or str(exc) or type(exc).__name__
+        _error(f"{name!r}: {reason}" if name else reason, "bearing")
         return 2

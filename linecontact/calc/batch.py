@@ -2,15 +2,20 @@
 
 Reading
     The file is read with the csv module (UTF-8, a byte-order mark allowed), every cell
-    as the text it is. Columns named like a parameter of :mod:`linecontact.cases`
+    as the text it is. Columns named like a parameter of :mod:`linecontact.calc.cases`
     (case-insensitive, surrounding spaces ignored) are inputs; options on the command
-    line fill empty or missing cells. Cells follow the rules of
-    :mod:`linecontact._units` (a number with one unit name), parsed once per column.
+    line fill empty or missing cells, and a filled cell that differs from the option
+    (by value) is an error in its row (never silently overridden either way). Cells
+    follow the rules of :mod:`linecontact._units` (a number with one unit name), parsed
+    once per column. A column that looks like an input but would not be read (a unit
+    in the header, 'radius [mm]'; a close spelling, 'lode') refuses the file, naming
+    its match; so does a semicolon-separated header.
 
 Writing: no user data is ever lost
     Every input row is written, in its place, with all its cells exactly as read
     (a short row is padded with empty cells; cells beyond the header go under unnamed
-    columns), followed by the result columns:
+    columns, and such a row is an error: its cells are shifted), followed by the result
+    columns:
     ``estar_GPa``, then per model ``model``, ``force_kN``, ``depth_um``,
     ``stiffness_N_per_um``, ``half_width_um``, ``peak_pressure_MPa``,
     ``contact_radius_um`` (whole rollers: ``roller_deflection_um``,
@@ -43,10 +48,11 @@ import sys
 
 import numpy as np
 
+from .._units import InputError, parse_quantity
 from . import render
-from ._units import InputError, parse_quantity
-from .cases import BY_NAME, PARAMETERS, RAW_KINDS, bounds_of, option_name, parse_cases
+from .cases import BY_NAME, PARAMETERS, parse_cases
 from .compute import compute
+from .feature import RAW_KINDS, bounds_of, option_name
 
 __all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
 
@@ -56,6 +62,61 @@ PROGRESS_ROWS = 10000
 
 class BatchError(ValueError):
     """The file as a whole cannot be used (one line, naming the file)."""
+
+
+def _unread_lookalikes(path, header, names, known):
+    """Refuse a column that looks like an input but would not be read: a parameter's
+    name with a unit in it ('radius [mm]', 'load_kN', 'E (GPa)') or a close spelling
+    ('lode', 'raduis'), when that parameter is not itself a column. Units go in the
+    cells (5mm), never in the header."""
+    import difflib
+    import re
+
+    from .compute import all_fields
+
+    # a file written by the calculator (it ends with the 'error' column) holds its
+    # result columns, named like inputs with units (force_kN): those are not inputs
+    rerun = any(re.sub(r"^result[0-9]*_", "", h) == "error" for h in names)
+    results = {_col_name(f, si).lower() for f in all_fields()
+               for si in (False, True)} if rerun else set()
+    for j, h in enumerate(names):
+        if h in BY_NAME or not h:
+            continue
+        plain = re.sub(r"^result[0-9]*_", "", h)
+        if any(plain == r or plain.startswith(r + "_") for r in results):
+            continue  # a result column of an earlier run (a rerun on its own output)
+        base = re.split(r"\s*[\[(]|_(?=[a-z]+$)|\s+in\s+|\s+", h.strip())[0]
+        if base in BY_NAME and base not in known:
+            match = base
+        else:
+            close = difflib.get_close_matches(h, list(BY_NAME), n=1, cutoff=0.75)
+            match = close[0] if close and close[0] not in known else None
+        if match is not None:
+            raise BatchError(
+                f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
+                f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
+                "under 'radius'; rename the column if it is your own)")
+
+
+def _refuse_conflicts(cases, cells, conflicts, errors):
+    """A command-line option fills the EMPTY cells of its column; a filled cell that
+    differs from it (by value in SI, or as text for files and profiles) is an error in
+    that row, naming both, never silently overridden one way or the other."""
+    for name, (opt, si, filled) in conflicts.items():
+        values = cases.values[name]
+        for i in np.flatnonzero(filled):
+            if errors[i]:
+                continue
+            if si is None:
+                same = str(cells[name][i]).strip() == str(opt).strip()
+            else:
+                v = values[i]
+                same = bool(np.isfinite(v)) and abs(v - si) <= 1e-12 * max(abs(si), abs(v))
+            if not same:
+                errors[i] = str(InputError(
+                    name, cells[name][i], f"the cell or {option_name(name)}, not both",
+                    f"conflicts with {option_name(name)} {opt} on the command line (the "
+                    "option fills empty cells only; clear the cell or drop the option)"))
 
 
 def read_table(path):
@@ -98,6 +159,11 @@ def read_table(path):
         header, body = rows.header(), rows.body()
     else:
         header, body = rows[0], rows[1:]
+    if len(header) == 1 and header[0].count(";") >= 1:
+        raise BatchError(f"{str(path)!r}: the header {header[0]!r} is separated by "
+                         "semicolons; expected a comma-separated file (cells separated "
+                         "by commas, numbers with a decimal point: 5.5mm), e.g. saved "
+                         "as 'CSV UTF-8 (comma delimited)'")
     if not body:
         raise BatchError(f"{str(path)!r}: only a header row, no cases; expected one case "
                          "per row under the header")
@@ -207,6 +273,7 @@ def run_batch(args, argv, specs, options):
             if h in known:
                 raise BatchError(f"{str(args.csv)!r}: column {header[j]!r} appears twice")
             known[h] = j
+    _unread_lookalikes(args.csv, header, names, known)
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
@@ -218,6 +285,7 @@ def run_batch(args, argv, specs, options):
     full = flat or min(map(len, body)) >= width  # no short row (the usual case)
     transposed = None
     cells = {}
+    conflicts = {}  # parameter -> (option text, option SI or None, filled cells)
     for p in PARAMETERS:
         j = known.get(p.name)
         opt = options.get(p.name)
@@ -239,14 +307,32 @@ def run_batch(args, argv, specs, options):
                     raise InputError(option_name(p.name), opt,
                                      "one value per row in a batch", "a sweep")
                 # a bad value is the command line's error (exit 2), not every row's
-                parse_quantity(option_name(p.name), opt, p.kind, positive=p.positive,
-                               bounds=bounds_of(p))
-            # text, path and angle options are checked per row where they are read
-            # (linecontact.cases.RAW_KINDS): e.g. a profile is refused in each row's
-            # 'error' cell, as a profile column is
+                si = parse_quantity(option_name(p.name), opt, p.kind,
+                                    positive=p.positive, bounds=bounds_of(p))
+            else:
+                si = None
+            # text and path options are checked per row where they are read
+            # (RAW_KINDS): e.g. a profile is refused in each row's 'error' cell, as a
+            # profile column is. The option fills EMPTY cells only; a filled cell that
+            # says something else is a conflict, refused in its row (below)
+            if j is not None:
+                conflicts[p.name] = (opt, si, [bool(c.strip()) for c in col])
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
+    render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
+                                                if p.kind == "path" and p.name in cells
+                                                for c in cells[p.name]})
     cases, present, errors = parse_cases(cells, n, label=lambda name: name)
+    _refuse_conflicts(cases, cells, conflicts, errors)
+    if not flat:  # a row with more cells than the header: its cells are shifted or
+        # split (a decimal comma), so that error comes before any other of the row
+        for i, r in enumerate(body):
+            if len(r) > len(names):
+                errors[i] = str(InputError(
+                    f"row {i + 1}", ",".join(r[len(names):]),
+                    f"at most {len(names)} cells, one per header column",
+                    f"{len(r)} cells under a header of {len(names)} columns (a decimal "
+                    "comma, or a missing header name?)"))
     for name in ("load", "depth"):  # a sweep in a cell: say so, not just "not a number"
         col = cells.get(name)
         if col is None:
@@ -259,7 +345,8 @@ def run_batch(args, argv, specs, options):
     progress = _Progress(n, args.progress if args.progress is not None
                          else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
     try:
-        results = compute(cases, errors, specs, first_only=first_only, progress=progress)
+        results = compute(cases, errors, specs, first_only=first_only, progress=progress,
+                          label=lambda name: name)
     finally:
         progress.close()
     si = args.si or args.json
@@ -281,19 +368,19 @@ def run_batch(args, argv, specs, options):
 
 def _col_name(field, si):
     u = render.unit(field, si)
-    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_")
+    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_").replace(" ", "_")
     return f"{field}_{u}"
 
 
 def _result_layout(results, cases, si, multi):
     """Result column names and, for each, a function row index -> cell value."""
     cols, getters = [], []
-    estar = render.scale("estar", cases["estar"], si)
+    estar = render.scale("estar", cases.estar, si)
     cols.append(_col_name("estar", si))
     getters.append(("num", estar))
-    if np.any(cases["radius_eff"] != cases["radius"]):
+    if np.any(cases.radius_eff != cases.radius):
         cols.append(_col_name("radius_eff", si))
-        reff = np.where(cases["raceways"], np.nan, cases["radius_eff"])  # per contact there
+        reff = np.where(cases.whole(), np.nan, cases.radius_eff)  # per contact there
         getters.append(("num", render.scale("radius_eff", reff, si)))
     fields = render.columns_of(results, "load")
     # in a batch the force comes first whatever is given
@@ -309,9 +396,29 @@ def _result_layout(results, cases, si, multi):
         getters.append(("text", s["flags"]))
         cols.append("note" + sfx)
         getters.append(("text", s["note"]))
+    for b in results.blocks:  # a feature's extra rows: columns KEY_FIELD_UNIT
+        n = len(results.errors)
+        for f in b.fields:
+            vals = np.array([np.nan if r is None or r.get(f) is None else float(r[f])
+                             for r in b.rows])
+            cols.append(f"{b.key}_{_col_name_of(f, b.fields[f], si)}")
+            getters.append(("num", vals if si else vals * b.fields[f].factor))
+        for t in b.text_columns:
+            cols.append(f"{b.key}_{t}")
+            getters.append(("text", ["" if r is None else r.get("text", {}).get(t, "")
+                                     for r in b.rows]))
+        cols.append(f"{b.key}_note")
+        getters.append(("text", ["" if r is None else r.get("note", "") for r in b.rows]
+                        if n else []))
     cols.append("error")
     getters.append(("text", results.errors))
     return cols, getters
+
+
+def _col_name_of(name, field, si):
+    u = field.si if si else field.eng
+    u = {"%": "pct", "-": "fraction"}.get(u, u).replace("/", "_per_").replace(" ", "_")
+    return f"{name}_{u}"
 
 
 def _result_cells(getters):
@@ -399,7 +506,7 @@ def _json(argv, results, header, body, out_names, getters, width):
         for h, c in zip(header, cells):
             row[h] = c
         for name, (kind, data) in zip(out_names, getters):
-            row[name] = render._num(data[i]) if kind == "num" else data[i]
+            row[name] = render.num(data[i]) if kind == "num" else data[i]
         rows.append(row)
     doc["rows"] = rows
     return json.dumps(doc, indent=2) + "\n"

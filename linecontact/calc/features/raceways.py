@@ -1,0 +1,147 @@
+"""Feature: a whole roller between two raceways (``--inner-raceway``,
+``--outer-raceway``, or their diameters; ``--misalignment``).
+
+The roller and its two contacts are :func:`linecontact.raceway.roller_between_raceways`
+(through :class:`linecontact.contact.Contact` with :class:`~linecontact.raceway.Raceways`):
+the force F [N] passes through the inner contact (1/R = 1/R1 + 1/Ri) and the outer one
+(1/R = 1/R1 - 1/Ro) in series, the roller deflection (ring approach) is the sum of their
+depths and its stiffness the series value, for any contact law; a profiled or tilted
+roller (``--crown-radius``, ``--profile``, ``--tilt``, ``--tilt free`` for moment
+equilibrium) is solved by coupled slices on both contacts. A pair of raceways that does
+not fit the roller (Ro - Ri not the roller diameter within 1 %) is refused with the
+numbers.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..feature import Field, Parameter, State
+
+__all__: list = []
+
+name = "raceways"
+group = "whole roller between two raceways (instead of --radius2)"
+
+parameters = (
+    Parameter("inner_raceway", "length", "radius Ri of the inner raceway (convex)", group),
+    Parameter("outer_raceway", "length", "radius Ro of the outer raceway (concave; "
+              "give it positive)", group),
+    Parameter("inner_raceway_diameter", "length", "diameter 2 Ri of the inner raceway "
+              "(as data sheets give it; instead of --inner-raceway)", group),
+    Parameter("outer_raceway_diameter", "length", "diameter 2 Ro of the outer raceway "
+              "(instead of --outer-raceway)", group),
+    Parameter("misalignment", "angle", "tilt of the outer ring against the inner ring "
+              "in the roller's plane, e.g. 0.5mrad (needs a profiled or tilted roller "
+              "model: coupled slices)", group, positive=False),
+)
+
+fields = {
+    "roller_deflection": Field("delta roller", "m", "um", 1e6),
+    "roller_stiffness": Field("k roller", "N/m", "N/um", 1e-6),
+    "depth_inner": Field("d inner", "m", "um", 1e6),
+    "depth_outer": Field("d outer", "m", "um", 1e6),
+    "peak_pressure_inner": Field("p inner", "Pa", "MPa", 1e-6),
+    "peak_pressure_outer": Field("p outer", "Pa", "MPa", 1e-6),
+    "clearance": Field("clearance", "m", "um", 1e6),
+}
+
+notes = {
+    "roller": "whole roller (linecontact.raceway): roller_deflection = d(inner contact) + "
+              "d(outer contact) at the same force (the ring approach at the roller's "
+              "centre), roller_stiffness the two contacts in series; depth_inner and "
+              "depth_outer are the two contacts' own depths; p inner/outer: Hertz p0 of "
+              "each strip for a law, the slice model's peak for a profiled roller; "
+              "clearance: Ro - Ri - 2 R1.",
+}
+
+
+def resolve(values, present, fail):
+    """Each raceway as a radius or a diameter, both or neither; not with --radius2; the
+    pair must fit the roller (linecontact.raceway.check_fit)."""
+    from ...raceway import check_fit
+    from ...validity import CombinationError
+
+    P, v, label = present, values, fail.label
+    given = {s: P[f"{s}_raceway"] | P[f"{s}_raceway_diameter"] for s in ("inner", "outer")}
+    rows = given["inner"] | given["outer"] | P["misalignment"]
+    if not rows.any():
+        return None
+    radii = {}
+    for side in ("inner", "outer"):
+        r, d = f"{side}_raceway", f"{side}_raceway_diameter"
+        fail(P[r] & P[d], d, f"either {label(r)} or {label(d)}, not both",
+             f"conflicts with {label(r)}")
+        radii[side] = np.where(P[r], v[r], v[d] / 2)
+    both = (f"{label('inner_raceway')} and {label('outer_raceway')} (or their diameters) "
+            "together")
+    fail(given["inner"] & ~given["outer"], "outer_raceway", both,
+         f"missing (needed with {label('inner_raceway')})")
+    fail(given["outer"] & ~given["inner"], "inner_raceway", both,
+         f"missing (needed with {label('outer_raceway')})")
+    fail(P["misalignment"] & ~(given["inner"] & given["outer"]), "misalignment", both,
+         "no raceways given")
+    fail(rows & P["radius2"], "radius2",
+         f"either {label('radius2')} (one contact) or the raceways (a whole roller)",
+         "conflicts with the raceways")
+    with np.errstate(invalid="ignore"):
+        fail(P["misalignment"] & ~(np.abs(v["misalignment"]) < 0.1), "misalignment",
+             "(-0.1, 0.1) rad", "the roller models linearise the tilt (small angles)")
+    R1 = v["radius"]
+    for i in np.flatnonzero(given["inner"] & given["outer"]):
+        try:
+            check_fit(float(R1[i]), float(radii["inner"][i]), float(radii["outer"][i]))
+        except CombinationError as exc:  # the library's reason, said for the options
+            name = "outer_raceway" if P["outer_raceway"][i] else "outer_raceway_diameter"
+            fail(np.arange(len(rows)) == i, name,
+                 f"{label('outer_raceway')} - {label('inner_raceway')} = the roller "
+                 "diameter 2 R1 (+ a radial clearance within 1 % of it)", exc.reason)
+        except ValueError:
+            pass  # a value out of range: its own message comes from the core
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r_in = 1 / (1 / R1 + 1 / radii["inner"])
+    psi = np.where(P["misalignment"], v["misalignment"], 0.0)
+    state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
+                  compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],
+                  psi=psi)
+    state.parts = lambda i: _parts(state, i)
+    return state
+
+
+def _parts(state, i):
+    from ...raceway import Raceways
+
+    return {"counterbody": Raceways(float(state.inner[i]), float(state.outer[i]),
+                                    misalignment=float(state.psi[i]))}
+
+
+def columns(model, rows, normal, state):
+    """The whole roller's columns from its solution (linecontact.raceway.RacewaySolution)."""
+    n = len(rows)
+    out = {k: np.full(n, np.nan) for k in fields}
+    out["roller_deflection"] = normal["depth"]
+    out["roller_stiffness"] = normal["stiffness"]
+    flags = [""] * n
+    for j, sol in enumerate(normal["solution"]):
+        if sol is None:
+            continue
+        out["depth_inner"][j] = sol.depth_inner
+        out["depth_outer"][j] = sol.depth_outer
+        for side in ("inner", "outer"):
+            p = getattr(sol, f"peak_pressure_{side}")
+            if p is not None:
+                out[f"peak_pressure_{side}"][j] = p
+            else:
+                flags[j] = "; ".join(t for t in (flags[j], f"p {side}: singular at the "
+                                                 "loaded end (edge loading)") if t)
+        # Ro - Ri - 2 R1 of a pair that fits exactly: rounding noise printed as 0
+        out["clearance"][j] = 0.0 if abs(sol.clearance) < 1e-9 * sol.radius_outer \
+            else sol.clearance
+        if sol.notes:
+            flags[j] = "; ".join([t for t in (flags[j],) if t] + list(sol.notes))
+    out["flags"] = flags
+    return out
+
+
+def blocks(state, results):
+    """No extra table."""
+    return []

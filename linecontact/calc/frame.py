@@ -1,0 +1,138 @@
+"""Cases in a pandas DataFrame, results as a DataFrame: the CSV batch for notebooks.
+
+:func:`calc_frame` takes a DataFrame whose columns are named like the CSV batch's
+(``radius``, ``length``, ``estar``, ``load``, ``crown_radius``, ``inner_raceway``, ...:
+the options of ``linecontact calc`` without the dashes) and returns a DataFrame of the
+same rows by exactly the batch's rules (:mod:`linecontact.calc.batch`), because it IS
+the batch: the frame is written as a CSV, run through
+:func:`linecontact.calc.batch.run_batch` with JSON output (SI units, full precision)
+and read back.
+
+- Cells are unit strings (``"5 mm"``, ``"1kN"``) or numbers, which are SI (m, N, Pa),
+  as in a CSV file; an empty cell (None, NaN) is "not given" and is filled by a keyword
+  option of the same name (``calc_frame(df, estar="115GPa")``).
+- Every user column is kept, untouched (values and dtypes), in its place and the
+  result columns follow in SI (``estar_Pa``, ``model``, ``force_N``, ``depth_m``, ...,
+  ``flags``, ``note``, and one ``error`` column); a result column whose name the user
+  already has gets the batch's ``result_`` prefix.
+- A row that cannot be computed keeps its place and says why in ``error``; the
+  others are computed. Nothing is raised for a bad row; a bad frame as a whole (no
+  case column, a column twice) raises the batch's ValueError.
+- ``result.attrs["linecontact"]`` holds the batch's JSON header (version, units of
+  every column, notes, the models' provenance).
+
+pandas is optional (``pip install 'linecontact[pandas]'``) and imported only here,
+never on the one-case path.
+
+Example::
+
+    import pandas as pd
+    from linecontact.calc.frame import calc_frame
+    cases = pd.DataFrame({"radius": ["5mm", "6mm"], "length": ["10mm", "12mm"],
+                          "load": [1000.0, 2000.0]})
+    out = calc_frame(cases, estar="115.38GPa")
+    out[["radius", "load", "depth_m", "stiffness_N_per_m", "error"]]
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import csv
+import io
+import json
+import math
+import numbers
+import tempfile
+from pathlib import Path
+
+from .cases import PARAMETERS
+
+__all__ = ["calc_frame"]
+
+
+def _cell(value):
+    """A DataFrame cell as CSV text: numbers as repr (SI), nothing as empty."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return str(value)
+    if isinstance(value, numbers.Real):
+        v = float(value)
+        return "" if math.isnan(v) else repr(v)
+    try:
+        import pandas as pd
+        if pd.isna(value):
+            return ""
+    except (TypeError, ValueError):
+        pass
+    return str(value)
+
+
+def calc_frame(cases, *, model=None, **options):
+    """Evaluate every row of `cases` by the CSV batch's rules; the results as a DataFrame.
+
+    Parameters
+    ----------
+    cases : pandas.DataFrame
+        One case per row; columns named like the batch's (see the module docstring).
+    model : str, optional
+        Models as ``--model`` takes them (``"johnson:c=0.72,universal"``, ``"all"``);
+        default the batch's: the best estimate only.
+    **options
+        Values for empty or missing cells, by parameter name (``estar="115GPa"``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        The user's columns, then the result columns [SI], same index and row order.
+
+    Raises
+    ------
+    ValueError
+        A frame the batch refuses as a whole, or an option value it refuses (one line,
+        naming it); an unknown option name.
+    """
+    import pandas as pd
+
+    from .batch import run_batch
+    from .compute import parse_model_option
+
+    if not isinstance(cases, pd.DataFrame):
+        raise TypeError(f"cases must be a pandas DataFrame, not {type(cases).__name__}")
+    known = {p.name for p in PARAMETERS}
+    unknown = sorted(set(options) - known)
+    if unknown:
+        from ..validity import UnknownNameError
+        raise UnknownNameError("option", unknown[0], sorted(known))
+    if len(cases) == 0:
+        raise ValueError("cases: the DataFrame has no rows; expected one case per row")
+    header = [str(c) for c in cases.columns]
+    specs = parse_model_option(model)
+    opts = {p.name: (None if options.get(p.name) is None else _cell(options[p.name]))
+            for p in PARAMETERS}
+    with tempfile.TemporaryDirectory(prefix="linecontact-frame-") as folder:
+        src, dst = Path(folder, "cases.csv"), Path(folder, "results.json")
+        with open(src, "w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh, lineterminator="\n")
+            w.writerow(header)
+            for row in cases.itertuples(index=False, name=None):
+                w.writerow([_cell(v) for v in row])
+        args = argparse.Namespace(csv=str(src), model=model, progress=False, si=True,
+                                  json=True, output=str(dst), plot=None, linear=False)
+        # the batch's "N of M rows failed" line: the error column says it, row by row
+        with contextlib.redirect_stderr(io.StringIO()):
+            run_batch(args, ["calc", "<DataFrame>"], specs, opts)
+        doc = json.loads(dst.read_text(encoding="utf-8"))
+    rows = doc.pop("rows")
+    names = [k for k in rows[0] if k not in set(header)] if rows else []
+    out = cases.copy()
+    for name in names:
+        values = [r.get(name) for r in rows]
+        if all(v is None or isinstance(v, (int, float)) for v in values):
+            values = [math.nan if v is None else float(v) for v in values]
+            out[name] = pd.Series(values, index=cases.index, dtype=float)
+        else:
+            out[name] = pd.Series(["" if v is None else v for v in values],
+                                  index=cases.index, dtype=object)
+    out.attrs["linecontact"] = doc
+    return out

@@ -1,0 +1,267 @@
+"""No input silently ignored (issue 22): the calculator's rules for command-line options
+against CSV cells, CSV headers and rows, output files, messages and uncovered output.
+
+Each test holds one rule over a class of inputs (generated where the class is large):
+- a command-line option fills the EMPTY cells of its column; a filled cell that says
+  something else is an error in that row (the cell and the option named);
+- a column that looks like an input but would not be read (a unit in the header, a
+  close spelling) refuses the file naming its match; a row with more cells than the
+  header is an error in that row; a semicolon-separated file is refused with that hint;
+- ``-o`` naming an input file is refused and the input left intact; every output file
+  is written whole or not at all (a temporary file renamed at the end).
+"""
+from __future__ import annotations
+
+import contextlib
+import csv
+import io
+import os
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from linecontact.calc import render
+from linecontact.calc.cases import BY_NAME
+from linecontact.calc.cli import main
+
+HEADER = "radius,length,modulus,poisson,load"
+ROW = "5mm,10mm,210GPa,0.3,{load}"
+
+
+def _calc(argv):
+    """(status, stdout, stderr) of ``linecontact calc ARGV`` run in this process."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        status = main(["calc", *argv])
+    return status, out.getvalue(), err.getvalue()
+
+
+def _rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+@settings(max_examples=25, deadline=None)
+@given(cell=st.sampled_from(["1kN", "1000", "1000 N", "2kN", "2000", "0.5kN", "", "3kN"]),
+       option=st.sampled_from(["1kN", "1000", "2kN", "2000N"]))
+def test_an_option_and_a_filled_cell_that_differ_are_refused_in_that_row(
+        tmp_path_factory, cell, option):
+    """--load fills an empty cell; a filled cell equal to it in SI (1kN = 1000) is
+    computed; one that differs is an error in its row naming the cell and the option,
+    never silently computed with one of the two."""
+    path = tmp_path_factory.mktemp("conflict") / "bom.csv"
+    path.write_text(HEADER + "\n" + ROW.format(load=cell) + "\n")
+    status, out, err = _calc([str(path), "--load", option])
+    row = _rows(out)[0]
+    si = {"1kN": 1e3, "1000": 1e3, "1000 N": 1e3, "2kN": 2e3, "2000": 2e3, "2000N": 2e3,
+          "0.5kN": 500.0, "3kN": 3e3}
+    if cell == "" or si[cell] == si[option]:
+        assert status == 0 and row["error"] == ""
+        assert float(row["force_kN"]) == pytest.approx(si[option] / 1e3, rel=1e-12)
+    else:
+        assert status == 2 and row["force_kN"] == ""
+        assert "conflicts with --load" in row["error"] and repr(cell) in row["error"]
+
+
+@pytest.mark.parametrize("name", sorted(BY_NAME))
+@pytest.mark.parametrize("form", ["{} [mm]", "{} (GPa)", "{}_kN", "{} in mm"])
+def test_a_column_named_with_a_unit_is_refused_naming_the_parameter(
+        tmp_path, name, form):
+    """Every parameter's name written with a unit in the header ('radius [mm]') is
+    not read: the file is refused and the message names the parameter it matches."""
+    path = tmp_path / "units.csv"
+    path.write_text(f"{form.format(name)},other\n5,x\n")
+    status, out, err = _calc([str(path)])
+    assert status == 2 and f"did you mean {name!r}" in err, err
+
+
+@pytest.mark.parametrize("typo,name", [("lode", "load"), ("raduis", "radius"),
+                                       ("lenght", "length"), ("modulos", "modulus"),
+                                       ("poison", "poisson"), ("dept", "depth")])
+def test_a_misspelt_column_is_refused_naming_its_close_match(tmp_path, typo, name):
+    """A close spelling of a parameter (difflib ratio >= 0.75) is not silently a user
+    column: the file is refused naming the parameter."""
+    path = tmp_path / "typo.csv"
+    header = HEADER.replace(name, typo) if name in HEADER else HEADER + f",{typo}"
+    path.write_text(header + "\n" + ROW.format(load="1kN") + (",1" if name not in HEADER
+                                                           else "") + "\n")
+    status, out, err = _calc([str(path)])
+    assert status == 2 and f"did you mean {name!r}" in err, err
+
+
+def test_a_rerun_on_its_own_output_is_not_refused(tmp_path):
+    """The result columns of an earlier run (force_kN, depth_um, ...) look like inputs
+    with units but are the calculator's own: a rerun on its output is accepted."""
+    first = tmp_path / "first.csv"
+    src = tmp_path / "in.csv"
+    src.write_text(HEADER + "\n" + ROW.format(load="1kN") + "\n")
+    assert _calc([str(src), "-o", str(first)])[0] == 0
+    status, out, err = _calc([str(first)])
+    assert status == 0, err
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.integers(1, 4))
+def test_a_row_with_more_cells_than_the_header_is_an_error_in_that_row(
+        tmp_path_factory, extra):
+    """A row with more cells than the header (a decimal comma, a missing header name)
+    is an error in that row, whatever else it holds; the other rows are computed."""
+    path = tmp_path_factory.mktemp("wide") / "wide.csv"
+    wide = ROW.format(load="1kN") + ",1" * extra
+    path.write_text(HEADER + "\n" + ROW.format(load="1kN") + "\n" + wide + "\n")
+    status, out, err = _calc([str(path)])
+    rows = _rows(out)
+    assert status == 2 and rows[0]["error"] == ""
+    assert f"{5 + extra} cells under a header of 5 columns" in rows[1]["error"]
+
+
+def test_a_semicolon_separated_file_is_refused_with_that_hint(tmp_path):
+    """A file separated by semicolons (a European spreadsheet export) is one column
+    to a CSV reader: refused, saying semicolons, not 'no case columns'."""
+    path = tmp_path / "semi.csv"
+    path.write_text(HEADER.replace(",", ";") + "\n" + ROW.format(load="1kN").replace(
+        ",", ";") + "\n")
+    status, out, err = _calc([str(path)])
+    assert status == 2 and "semicolons" in err and "comma-separated" in err
+
+
+@pytest.mark.parametrize("spelled", ["same", "dot", "absolute"])
+def test_output_naming_the_input_file_is_refused_and_the_input_kept(
+        tmp_path, monkeypatch, spelled):
+    """-o naming the input CSV, however spelled (the same path, ./x/../FILE, absolute),
+    is refused before anything is written: the input is byte for byte unchanged."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "x").mkdir()
+    path = tmp_path / "bom.csv"
+    text = HEADER + "\n" + ROW.format(load="1kN") + "\n"
+    path.write_text(text)
+    out = {"same": "bom.csv", "dot": "./x/../bom.csv", "absolute": str(path)}[spelled]
+    status, _, err = _calc(["bom.csv", "-o", out])
+    assert status == 2 and "input file" in err
+    assert path.read_text() == text
+
+
+def test_output_naming_the_prony_file_is_refused(tmp_path):
+    """Any input file counts, not only the batch: -o naming the --prony file."""
+    prony = tmp_path / "p.csv"
+    prony.write_text("# E_inf: 1e9\ntau_s,E_Pa\n0.1,2e9\n")
+    before = prony.read_text()
+    status, _, err = _calc(["--radius", "5mm", "--length", "10mm", "--poisson", "0.3",
+                            "--prony", str(prony), "--load", "1kN", "--time", "1s",
+                            "-o", str(prony)])
+    assert status == 2 and "input file" in err and prony.read_text() == before
+
+
+def test_an_output_file_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
+    """The output is written to a temporary file renamed at the end: when the write
+    fails midway, the previous file is intact and no partial or temporary file is
+    left in the folder."""
+    target = tmp_path / "out.csv"
+    target.write_text("previous\n")
+
+    class Boom(OSError):
+        pass
+
+    real_fdopen = os.fdopen
+
+    def failing_fdopen(fd, *a, **k):
+        fh = real_fdopen(fd, *a, **k)
+
+        class Half:
+            def __enter__(self):
+                return self
+
+            def __exit__(self, *exc):
+                fh.close()
+
+            def write(self, text):
+                fh.write(text[: len(text) // 2])
+                raise Boom("disk full")
+
+        return Half()
+
+    monkeypatch.setattr(os, "fdopen", failing_fdopen)
+    with pytest.raises(render.OutputError, match="disk full"):
+        render.write("a,b\n1,2\n" * 100, str(target))
+    monkeypatch.undo()
+    assert target.read_text() == "previous\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.csv"]
+    render.write("new\n", str(target))
+    assert target.read_text() == "new\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.csv"]
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.lists(st.tuples(st.integers(-5, 30), st.integers(-3, 9)), min_size=1,
+                max_size=12))
+def test_no_derived_value_is_printed_where_no_model_covers_the_row(tmp_path_factory,
+                                                                   cases):
+    """Output no model covers is not a number: in every model's columns the Hertz
+    half-width and peak pressure (and the MDR contact radius) are shown exactly where
+    the model computed the depth, for radii 1e-5..1e30 m and loads 1e-3..1e9 N (a
+    radius of 1e30 m printed b = 1e18 um, p0 = 6e-14 MPa beside a refused depth)."""
+    path = tmp_path_factory.mktemp("uncovered") / "c.csv"
+    path.write_text("radius,load\n" + "".join(f"1e{r},1e{f}\n" for r, f in cases))
+    status, out, err = _calc([str(path), "--length", "10mm", "--modulus", "210GPa",
+                              "--poisson", "0.3", "--model", "all", "--si"])
+    rows = _rows(out)
+    depth_cols = [c for c in rows[0] if c.startswith("depth_m")]
+    assert depth_cols
+    for row in rows:
+        for col in depth_cols:
+            suffix = col[len("depth_m"):]
+            for derived in ("half_width_m", "peak_pressure_Pa", "contact_radius_m"):
+                if derived + suffix in row:
+                    assert (row[derived + suffix] == "") == (row[col] == ""), (
+                        derived + suffix, row)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.sampled_from(["load", "depth"]), st.integers(9, 12),
+       st.sampled_from(["", " N", "kN"]))
+def test_a_refused_row_names_the_option_as_typed_never_internal_wording(which, e, unit):
+    """A load or depth outside a model's range is reported with the option the user
+    wrote and the value as typed (--load = '1e9kN'), the cylinder it was refused for
+    (R, L, E*: the geometry decides the range), and never the library's internal
+    wording ('force = ... (element [0] of shape (1,))')."""
+    unit = {"load": unit, "depth": {"": "", " N": " m", "kN": "mm"}[unit]}[which]
+    typed = f"1e{e}{unit}"
+    status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--modulus",
+                              "210GPa", "--poisson", "0.3", f"--{which}", typed,
+                              "--model", "li-popov"])
+    text = out + err
+    assert f"--{which} = {typed!r}" in text and "for R = 0.005 m" in text, text
+    assert "element [" not in text and "of shape" not in text
+
+
+PLAUSIBLE = [("radius", "5"), ("length", "10"), ("modulus", "210"), ("modulus", "70"),
+             ("load", "1e9")]
+
+
+@pytest.mark.parametrize("name,bare", PLAUSIBLE)
+def test_an_implausible_bare_number_is_named_as_the_likely_cause(name, bare):
+    """A bare number is SI (--modulus 210 is 210 Pa, --radius 5 is 5 m): not refused,
+    but when the case then fails the message names it as the likely cause with the
+    unit that makes it plausible; the same value typed with a unit is the user's
+    choice and is not blamed."""
+    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
+            "load": "1kN"}
+    argv = [a for k, v in {**base, name: bare}.items() for a in (f"--{k}", v)]
+    status, out, err = _calc(argv + ["--model", "li-popov"])
+    text = out + err
+    assert status == 2 and f"likely cause: --{name} = {bare!r}" in text, text
+    # the suggested unit, when there is one, makes the value plausible
+    from linecontact._units import parse_quantity
+    from linecontact.calc.cases import BY_NAME
+
+    p = BY_NAME[name]
+    tail = text.split(f"likely cause: --{name} = {bare!r}")[1].split("\n")[0]
+    if tail.endswith("?"):
+        suggested = tail.rsplit(": ", 1)[1][:-1]
+        lo, hi = p.plausible
+        assert lo <= parse_quantity("x", suggested, p.kind) <= hi, suggested
+    # with the unit spelled out (the same SI value) the user chose it: no blame
+    si = {"radius": "m", "length": "m", "modulus": "Pa", "load": "N"}[name]
+    argv = [a for k, v in {**base, name: bare + si}.items() for a in (f"--{k}", v)]
+    status, out, err = _calc(argv + ["--model", "li-popov"])
+    assert "likely cause" not in out + err

@@ -1,0 +1,100 @@
+"""Cases as a DataFrame (linecontact/calc/frame.py): the CSV batch's rules, for pandas.
+
+Facts checked:
+- the results are the library's numbers at full precision (the universal curve's d(F)
+  to 1e-12) and the same as `linecontact calc FILE.csv --si` for the same cells (to the
+  CSV's 6 printed digits);
+- every user column is kept with its values, dtype and the frame's index; a result
+  column named like a user column gets the batch's result_ prefix;
+- a bad row keeps its place and says why in `error` while the others are computed; an
+  option fills empty cells only; bare numbers are SI;
+- a frame the batch refuses as a whole raises ValueError naming the problem.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import math
+
+import numpy as np
+import pytest
+
+pd = pytest.importorskip("pandas")
+
+from linecontact.calc.cli import main
+from linecontact.calc.frame import calc_frame
+from linecontact.models import get_model
+
+
+def _cases():
+    return pd.DataFrame({"tag": ["a", "b", "c", "d"],
+                         "radius": ["5mm", 6e-3, "-1mm", "5 mm"],
+                         "length": ["10mm", "12mm", "10mm", "10mm"],
+                         "load": [1000.0, "2kN", 500.0, None],
+                         "weight": [1, 2, 3, 4]},
+                        index=[10, 11, 12, 13])
+
+
+def test_results_are_the_librarys_and_the_batchs(tmp_path, capsys):
+    cases = _cases()
+    out = calc_frame(cases, estar="115.38GPa", load="700N")
+    # user columns untouched, same index and dtypes
+    assert list(out.index) == [10, 11, 12, 13]
+    for c in cases.columns:
+        assert out[c].tolist() == cases[c].tolist(), c
+        assert out[c].dtype == cases[c].dtype, c
+    # the library at full precision: row a is R 5 mm, L 10 mm, F 1 kN; row d's load
+    # is the option (its cell was empty)
+    uni = get_model("universal", 5e-3, 10e-3, 115.38e9)
+    assert out.loc[10, "depth_m"] == pytest.approx(float(uni.depth(1e3)), rel=1e-12)
+    assert out.loc[13, "force_N"] == 700.0
+    assert out.loc[13, "depth_m"] == pytest.approx(float(uni.depth(700.0)), rel=1e-12)
+    # the bad row says why and the others are computed
+    assert "radius" in out.loc[12, "error"] and math.isnan(out.loc[12, "depth_m"])
+    assert (out.loc[[10, 11, 13], "error"] == "").all()
+    # the same cells through the CSV batch give the same numbers (6 printed digits)
+    path = tmp_path / "cases.csv"
+    cases.to_csv(path, index=False)
+    assert main(["calc", str(path), "--si", "--estar", "115.38GPa", "--load", "700N",
+                 "-o", str(tmp_path / "out.csv")]) == 2      # row c fails
+    capsys.readouterr()
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "out.csv").read_text())))
+    for r, (_, f) in zip(rows, out.iterrows()):
+        for col in ("force_N", "depth_m", "stiffness_N_per_m", "peak_pressure_Pa"):
+            if r[col]:
+                assert float(r[col]) == pytest.approx(f[col], rel=5e-6), col
+            else:
+                assert math.isnan(f[col])
+        assert r["error"] == f["error"]
+    assert out.attrs["linecontact"]["units"]["depth"] == "m"
+
+
+def test_user_column_named_like_a_result_is_kept():
+    cases = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "load": ["1kN"],
+                          "model": ["my roller"]})
+    out = calc_frame(cases, estar="115.38GPa", model="johnson:c=0.72")
+    assert out["model"].tolist() == ["my roller"]
+    assert out["result_model"].tolist() == ["Johnson (c = 0.72)"]
+    assert "result_error" in out and "error" not in out
+
+
+def test_frames_refused_as_a_whole():
+    with pytest.raises(ValueError, match="no case columns"):
+        calc_frame(pd.DataFrame({"x": [1.0]}))
+    with pytest.raises(ValueError, match="no rows"):
+        calc_frame(pd.DataFrame({"radius": []}))
+    with pytest.raises(ValueError, match="option"):
+        calc_frame(pd.DataFrame({"radius": ["5mm"]}), radios="5mm")
+    with pytest.raises(TypeError, match="DataFrame"):
+        calc_frame([{"radius": "5mm"}])
+    with pytest.raises(ValueError, match="estar"):             # a bad option value
+        calc_frame(pd.DataFrame({"radius": ["5mm"], "length": ["1cm"],
+                                 "load": ["1kN"]}), estar="-5GPa")
+
+
+def test_sweeps_of_numbers_are_si():
+    """Bare numbers are SI: 0.005 m and 5 mm are the same case."""
+    cases = pd.DataFrame({"radius": [0.005, "5mm"], "length": [0.01, "10mm"],
+                          "load": [1e3, "1kN"], "estar": [115.38e9, "115.38GPa"]})
+    out = calc_frame(cases)
+    assert np.asarray(out["depth_m"])[0] == np.asarray(out["depth_m"])[1]

@@ -168,8 +168,10 @@ class UniversalCurve:
                            hint="the universal table ends there")
         small = p < self.psi_min
         lp = np.log(np.where(small, self.psi_min, p))
-        z0 = np.interp(lp, self._lnpsi, self._z)
-        z = self._newton(lp, self._spline, self._slope, z0, self._z[0], self._z[-1])
+        # a tabulated inverse of the spline, polished by one Newton step on the spline
+        if not hasattr(self, "_inverse"):
+            self._inverse = self._spline.inverse_table()
+        z = self._spline.solve_fast(lp, self._inverse)
         d = np.minimum(np.exp(z), self.d_max)   # exp(ln d_max) may round above d_max
         if np.any(small):
             ps = np.where(small, p, self.psi_min)

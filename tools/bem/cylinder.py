@@ -39,6 +39,7 @@ import numpy as np
 from scipy.fft import next_fast_len
 
 from .halfspace import SymmetricOperator, best_backend
+from .influence import kernel_offsets
 from .solver import ConvergenceError, solve_contact, solve_punch
 
 
@@ -99,6 +100,16 @@ class SweepResult:
     wall_time: float
     pressure: list | None = None   #: full pressure fields per step, on request
     settings: dict = field(default_factory=dict)
+    contact_iterations: np.ndarray | None = None  #: operator applications of the contact solve
+
+
+def _widen(a, my):
+    """A quarter field of a strip of rows, padded with zeros to `my` rows."""
+    if a.shape[1] == my:
+        return a
+    out = np.zeros((a.shape[0], my), dtype=a.dtype)
+    out[:, :a.shape[1]] = a
+    return out
 
 
 def _check_even(name, n):
@@ -109,7 +120,7 @@ def _check_even(name, n):
 
 def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
           tol=1e-6, stiffness="punch", backend=None, workers=None, fields=False,
-          progress=True, raise_on_failure=True):
+          progress=True, raise_on_failure=True, precondition=True, windows=8):
     """The paper's sweep: F(d), k(d), area for d = d_max/steps ... d_max.
 
     Parameters
@@ -137,6 +148,13 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     raise_on_failure : bool
         Raise ConvergenceError if a step does not converge (default); otherwise its
         force is NaN and ``converged`` says so.
+    precondition : bool
+        Preconditioned conjugate gradients (default; tools.bem.solver.bounded_cg) or the
+        plain Polonsky-Keer iteration.
+    windows : int
+        Strip widths for the steps (each step is solved on the rows the cylinder
+        overlaps, rounded up to a multiple of 1/windows of the grid; same discrete
+        problem); 0: every step on the whole grid.
 
     Returns
     -------
@@ -155,13 +173,30 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     d_max = d_max_over_r * R
     Y = np.sqrt(2 * R * d_max)
     grid = Grid(nx // 2, ny // 2, L / nx, 2 * Y / ny)
-    op = SymmetricOperator(grid.mx, grid.my, grid.dx, grid.dy, estar, backend, workers)
     h = np.broadcast_to(grid.y ** 2 / (2 * R), (grid.mx, grid.my))
+    # Each step is solved on the rows |y| < sqrt(2 R d) that the rigid cylinder
+    # overlaps (rounded up to one of `windows` strip widths, each with its operator):
+    # outside them h - d >= 0 and K p > 0, so no cell there can touch, and the
+    # problem on the strip is the same discrete problem as on the whole grid (same
+    # cells, same kernel, zero pressure outside), at a fraction of the transform cost.
+    kernel = kernel_offsets(2 * grid.mx, 2 * grid.my, grid.dx, grid.dy, estar)
+    chunk = max(grid.my // windows, 1) if windows else grid.my
+    ops = {}
+
+    def strip(d):
+        rows = int(np.count_nonzero(grid.y ** 2 / (2 * R) < d)) + 1
+        m = min(grid.my, chunk * -(-rows // chunk))
+        if m not in ops:
+            ops[m] = SymmetricOperator(grid.mx, m, grid.dx, grid.dy, estar, backend,
+                                       workers, kernel=kernel[:, :2 * m + 1])
+        return m, ops[m]
+
     depths = d_max * np.arange(1, steps + 1) / steps
     F = np.full(steps, np.nan)
     K = np.full(steps, np.nan)
     A = np.full(steps, np.nan)
     its = np.zeros(steps, dtype=int)
+    cits = np.zeros(steps, dtype=int)
     conv = np.zeros(steps, dtype=bool)
     errs = np.full(steps, np.nan)
     pressures = [] if fields else None
@@ -169,14 +204,18 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     p_punch = None
     for i in _progress(range(steps), steps, f"L/R = {l_over_r:g}", progress):
         d = depths[i]
+        m, op = strip(d)
         if len(history) >= 2:
-            p0 = 2 * history[-1] - history[-2]
+            p0 = (2 * history[-1] - history[-2])[:, :m]
         elif history:
-            p0 = history[-1] * np.sqrt(d / depths[i - 1])
+            p0 = history[-1][:, :m] * np.sqrt(d / depths[i - 1])
         else:
             p0 = None
-        sol = solve_contact(op, h - d, d, tol=tol, p0=p0)
+        sol = solve_contact(op, h[:, :m] - d, d, tol=tol, p0=p0, precondition=precondition)
+        sol.pressure = _widen(sol.pressure, grid.my)
+        sol.contact = _widen(sol.contact, grid.my)
         its[i] = sol.iterations
+        cits[i] = sol.iterations
         conv[i] = sol.converged
         errs[i] = sol.error
         if not sol.converged:
@@ -191,8 +230,10 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
         F[i] = 4 * sol.pressure.sum() * grid.cell_area
         A[i] = 4 * sol.contact.sum() * grid.cell_area
         if stiffness == "punch":
-            pun = solve_punch(op, sol.contact, tol=tol,
-                              p0=p_punch if p_punch is not None else sol.pressure / d)
+            pun = solve_punch(op, sol.contact[:, :m], tol=tol,
+                              p0=(p_punch if p_punch is not None else sol.pressure / d)[:, :m],
+                              precondition=precondition)
+            pun.pressure = _widen(pun.pressure, grid.my)
             its[i] += pun.iterations
             errs[i] = max(errs[i], pun.error)
             if not pun.converged:
@@ -212,7 +253,8 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     return SweepResult(float(l_over_r), R, float(estar), grid, depths, F, K, A, its, conv,
                        errs, tol, time.perf_counter() - t0, pressures,
                        dict(n=(nx, ny), steps=steps, d_max_over_r=d_max_over_r,
-                            stiffness=stiffness, backend=backend))
+                            stiffness=stiffness, backend=backend,
+                            precondition=precondition, windows=windows), cits)
 
 
 @dataclass

@@ -125,6 +125,21 @@ class DCFFTOperator:
         self._khat = self._fft.rfft2(kw, workers=self.workers)
         self._pad = np.zeros((2 * nx, 2 * ny))
 
+    def precondition(self, g):
+        """M g with M ~ K^-1: the inverse of the periodic (circulant) embedding of K on
+        the padded 2nx x 2ny grid, applied to g padded with zeros and cropped (a
+        conjugate-gradient preconditioner; tools.bem.solver.bounded_cg). Divisors are kept
+        at least 1e-3 of the largest (the embedding of a free-space kernel can have
+        symbol values near zero)."""
+        if not hasattr(self, "_kinv"):
+            kh = self._khat.real
+            self._kinv = 1.0 / np.maximum(kh, 1e-3 * np.abs(kh).max())
+        nx, ny = self.shape
+        self._pad[:nx, :ny] = g
+        z = self._fft.irfft2(self._kinv * self._fft.rfft2(self._pad, workers=self.workers),
+                             s=self._pad.shape, workers=self.workers)
+        return z[:nx, :ny].copy()
+
     def transform(self, p):
         """The zero-padded field's real FFT (reusable by several operators on one grid)."""
         nx, ny = self.shape
@@ -189,6 +204,24 @@ class SymmetricOperator:
             self._fft = fft
             self._pad = np.zeros(shape)
             self._khat = np.ascontiguousarray(khat)
+
+    def precondition(self, g):
+        """M g with M ~ K^-1: the inverse of the symmetric-periodic embedding of K (the
+        same DCTs with the kernel's transform inverted), applied to g padded with zeros
+        and cropped: a conjugate-gradient preconditioner (tools.bem.solver.bounded_cg),
+        at the cost of one operator application. Divisors are kept at least 1e-3 of the
+        largest."""
+        if not hasattr(self, "_kinv"):
+            kh = self._khat
+            scale = 1.0 if self.backend != "pyfftw" else (4.0 * kh.size) ** 2
+            self._kinv = np.ascontiguousarray(
+                1.0 / np.maximum(kh, 1e-3 * np.abs(kh).max()) / scale)
+        saved = self._khat
+        self._khat = self._kinv
+        try:
+            return self(g)
+        finally:
+            self._khat = saved
 
     def __call__(self, p):
         mx, my = self.shape

@@ -68,7 +68,7 @@ from linecontact.tangential import mdr_stiffness_ratio
 
 from .halfspace import DCFFTOperator, SymmetricOperator, unfold
 from .influence import cerruti_kernel_offsets
-from .solver import _dot, solve_contact, solve_punch
+from .solver import bounded_cg, solve_contact, solve_punch
 
 DIRECTIONS = ("x", "y")
 
@@ -180,13 +180,15 @@ class SlipSolution:
 
 
 def solve_partial_slip(op, pressure, mu, shift, previous=None, tol=1e-8, scale=None,
-                       maxiter=None):
+                       maxiter=None, precondition=True):
     """One load step of Coulomb partial slip: |q| <= mu p, slip memory from ``previous``.
 
     Minimises 1/2 q.K q - q.(shift - s_prev) over -mu p <= q <= mu p (module
     docstring), by conjugate gradients on the cells strictly inside their bounds,
     with the bounds enforced by projection and cells released from a bound when the
-    gradient points inwards (Polonsky & Keer 1999, generalised to two bounds).
+    gradient points inwards (Polonsky & Keer 1999, generalised to two bounds): the
+    conjugate-gradient core shared with the normal solver, tools.bem.solver.bounded_cg,
+    preconditioned by the operator's circulant inverse when it has one.
 
     .. math:: u = \\delta - s_{prev} \\; (|q| < \\mu p), \\qquad
               \\mathrm{sign}(\\Delta s) = \\mathrm{sign}(q) \\; (|q| = \\mu p)
@@ -211,6 +213,8 @@ def solve_partial_slip(op, pressure, mu, shift, previous=None, tol=1e-8, scale=N
         change of shift from the previous step.
     maxiter : int, optional
         Operator applications allowed; default 200 + 20 sqrt(cells).
+    precondition : bool
+        Use the operator's preconditioner (default) or the plain iteration.
 
     Returns
     -------
@@ -262,71 +266,12 @@ def solve_partial_slip(op, pressure, mu, shift, previous=None, tol=1e-8, scale=N
         zero = np.zeros_like(p)
         return SlipSolution(zero, zero.copy(), zero.copy(), contact, float(shift), 0,
                             True, 0.0, tol)
-    # self-influence: a safe step for releasing single cells from a bound
-    e = np.zeros_like(p)
-    e[0, 0] = 1.0
-    kdiag = float(op(e)[0, 0])
-    u = op(q)
-    napply = 2
-    t = np.zeros_like(p)
-    G_old = 1.0
-    delta = 0.0
-    err = np.inf
-
-    def violations(q, g):
-        free = contact & (q > lo) & (q < hi)
-        at_hi = contact & ~free & (q >= hi)
-        at_lo = contact & ~free & (q <= lo)
-        release = (at_hi & (g > 0)) | (at_lo & (g < 0))
-        err = max(np.abs(g[free]).max(initial=0.0), g[at_hi].max(initial=0.0),
-                  (-g[at_lo]).max(initial=0.0))
-        return free, release, err
-
-    while napply < maxiter:
-        g = u - b
-        free, release, err = violations(q, g)
-        if not np.isfinite(err):
-            break
-        if err <= tol_abs:
-            break
-        if free.any():
-            G = _dot(g[free], g[free])
-            if delta > 0:
-                t = np.where(free, g + delta * (G / G_old) * t, 0.0)
-            else:
-                t = np.where(free, g, 0.0)
-            G_old = G
-            r = op(t)
-            napply += 1
-            rt = _dot(r[free], t[free])
-            tau = _dot(g[free], t[free]) / rt if rt > 0 else 0.0
-            q_new = q - tau * t
-        else:
-            q_new = q.copy()
-            r = None
-            tau = 0.0
-        clipped = (q_new > hi) | (q_new < lo)
-        q_new = np.clip(q_new, lo, hi)
-        if release.any():
-            step = tau if tau > 0 else 1.0 / kdiag
-            q_new[release] = np.clip(q[release] - step * g[release], lo[release],
-                                     hi[release])
-            delta = 0.0
-        else:
-            delta = 1.0
-        if clipped.any() or release.any() or r is None:
-            q = q_new
-            u = op(q)
-            napply += 1
-        else:
-            q = q_new
-            u = u - tau * r
-    u = op(q)
-    g = u - b
-    free, release, err = violations(q, g)
+    res = bounded_cg(op, b, lo, hi, q, tol=tol_abs, maxiter=maxiter,
+                     precondition=precondition)
+    q, u = res.x, res.kx
     slip = np.where(contact, shift - u, 0.0)
-    return SlipSolution(q, u, slip, free, float(shift), napply + 1,
-                        bool(err <= tol_abs), float(err / scale), tol)
+    return SlipSolution(q, u, slip, res.free, float(shift), res.iterations,
+                        res.converged, float(res.error / scale), tol)
 
 
 def load_path(op, pressure, mu, shifts, tol=1e-8, scale=None, previous=None):

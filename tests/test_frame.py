@@ -43,20 +43,24 @@ def test_results_are_the_librarys_and_the_batchs(tmp_path, capsys):
     for c in cases.columns:
         assert out[c].tolist() == cases[c].tolist(), c
         assert out[c].dtype == cases[c].dtype, c
-    # the library at full precision: row a is R 5 mm, L 10 mm, F 1 kN; row d's load
-    # is the option (its cell was empty)
+    # the library at full precision: row d is R 5 mm, L 10 mm, and its load is the
+    # option's (its cell was empty; an option fills empty cells only)
     uni = get_model("universal", 5e-3, 10e-3, 115.38e9)
-    assert out.loc[10, "depth_m"] == pytest.approx(float(uni.depth(1e3)), rel=1e-12)
     assert out.loc[13, "force_N"] == 700.0
     assert out.loc[13, "depth_m"] == pytest.approx(float(uni.depth(700.0)), rel=1e-12)
+    # a filled cell that differs from the option is an error in its row, as in a CSV
+    # batch (docs/inputs.md), never silently overridden either way
+    for i in (10, 11):
+        assert "conflicts with --load" in out.loc[i, "error"], out.loc[i, "error"]
+        assert math.isnan(out.loc[i, "depth_m"])
     # the bad row says why and the others are computed
     assert "radius" in out.loc[12, "error"] and math.isnan(out.loc[12, "depth_m"])
-    assert (out.loc[[10, 11, 13], "error"] == "").all()
+    assert out.loc[13, "error"] == ""
     # the same cells through the CSV batch give the same numbers (6 printed digits)
     path = tmp_path / "cases.csv"
     cases.to_csv(path, index=False)
     assert main(["calc", str(path), "--si", "--estar", "115.38GPa", "--load", "700N",
-                 "-o", str(tmp_path / "out.csv")]) == 2      # row c fails
+                 "-o", str(tmp_path / "out.csv")]) == 2      # rows a-c fail
     capsys.readouterr()
     rows = list(csv.DictReader(io.StringIO((tmp_path / "out.csv").read_text())))
     for r, (_, f) in zip(rows, out.iterrows()):

@@ -427,8 +427,11 @@ class _Entry:
         self.key = contact.model
         self.label = label
         try:
-            prov = contact.law().provenance
+            #: the contact's force-depth law (a ContactModel), None where it has none
+            self.law = contact.law()
+            prov = self.law.provenance
         except Exception:  # noqa: BLE001 - a whole roller or a free tilt: no single law
+            self.law = None
             prov = {"model": contact.model, "composed": "linecontact.contact.Contact"}
         self.provenance = prov
 

@@ -29,6 +29,7 @@ def draw_results(results, path):
     sets = [s for s in results.sets if s.get("model") is not None]
     rollers = [b for b in results.blocks
                if b.name == "profiled_roller" and any("q" in r for r in b.json_rows)]
+    sets = [s for s in sets if getattr(s["model"], "law", s["model"]) is not None]
     n = (1 if sets else 0) + len(rollers[:1])
     if n == 0:
         raise ValueError("--plot: nothing to draw for this case")
@@ -38,9 +39,11 @@ def draw_results(results, path):
     if sets:
         models, seen = [], set()
         for s in sets:
-            if s["id"] not in seen:
+            # a composed contact's entry carries its law (None: no single F(d) to draw)
+            law = getattr(s["model"], "law", s["model"])
+            if s["id"] not in seen and law is not None:
                 seen.add(s["id"])
-                models.append(s["model"])
+                models.append(law)
         points = []
         if not results.whole:
             for s in sets:

@@ -253,11 +253,3 @@ def universal_curve(name=TABLE):
         _CACHE[key] = UniversalCurve(read_table(name))
     return _CACHE[key]
 
-
-def __getattr__(name):
-    # UniversalModel lives in linecontact.models with every other model; the old import
-    # path linecontact.universal.UniversalModel keeps working
-    if name == "UniversalModel":
-        from .models import UniversalModel
-        return UniversalModel
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

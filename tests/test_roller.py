@@ -119,7 +119,7 @@ def test_straight_roller_tends_to_the_universal_curve():
     at 50, 100, 200 slices (measured), falling as about n^-0.75 (the end singularity).
     Asserted: monotone approach from below and within 0.3 % at 100 slices."""
     pytest.importorskip("linecontact.universal")
-    from linecontact.universal import UniversalModel
+    from linecontact.models import UniversalModel
     Fu = UniversalModel(5e-3, 10e-3, E).force(1e-6)
     errs = [ProfiledRoller(5e-3, 10e-3, E, None, n_slices=n).at_depth(1e-6).force / Fu - 1
             for n in (50, 100, 200)]

@@ -132,12 +132,12 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     .. [2] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
        chapter 4.
     """
-    E1, nu1, E2, nu2 = _two_bodies(modulus1, poisson1, modulus2, poisson2)
+    E1, nu1, E2, nu2 = two_bodies(modulus1, poisson1, modulus2, poisson2)
     compliance = (1 - nu1**2) / E1 + (1 - nu2**2) / E2
     return out(1.0 / compliance)
 
 
-def _two_bodies(modulus1, poisson1, modulus2=np.inf, poisson2=None):
+def two_bodies(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     """The checked elastic constants (E1, nu1, E2, nu2) of a pair of bodies.
 
     The one home of the input rules of every two-body modulus (E* here, G* in
@@ -834,7 +834,7 @@ STEEL_ESTAR_TOLERANCE = 0.10
 #: E* accepted by the steel-only formulas (Palmgren, ISO 16281).
 STEEL_ESTAR_RANGE = Interval("estar", STEEL_ESTAR * (1 - STEEL_ESTAR_TOLERANCE),
                              STEEL_ESTAR * (1 + STEEL_ESTAR_TOLERANCE), unit="Pa")
-_STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu = 0.3, "
+STEEL_HINT = ("this is an empirical formula for steel on steel (E = 210 GPa, nu = 0.3, "
                f"E* = {STEEL_ESTAR / 1e9:.2f} GPa, accepted within "
                f"{STEEL_ESTAR_TOLERANCE:.0%}); it is not rescaled to other materials, "
                "use a physical model (li-popov, puttock-thwaite) instead")
@@ -848,7 +848,7 @@ ISO16281_C = 3.97e-5
 def _steel_depth(force, length, estar, coef):
     F = check_positive("force", force, "N")
     L = check_positive("length", length, "m")
-    STEEL_ESTAR_RANGE.check(estar, hint=_STEEL_HINT)
+    STEEL_ESTAR_RANGE.check(estar, hint=STEEL_HINT)
     # the source formula is in mm and N: d_mm = coef F^0.9 / L_mm^0.8
     return out(1e-3 * coef * F**0.9 / (1e3 * L) ** 0.8)
 
@@ -856,7 +856,7 @@ def _steel_depth(force, length, estar, coef):
 def _steel_force(depth, length, estar, coef):
     d = check_positive("depth", depth, "m")
     L = check_positive("length", length, "m")
-    STEEL_ESTAR_RANGE.check(estar, hint=_STEEL_HINT)
+    STEEL_ESTAR_RANGE.check(estar, hint=STEEL_HINT)
     return out((1e3 * d * (1e3 * L) ** 0.8 / coef) ** (1 / 0.9))
 
 

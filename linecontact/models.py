@@ -774,7 +774,7 @@ class _SteelModel(ContactModel):
              "validity": f"steel on steel only: {_c.STEEL_ESTAR_RANGE.describe()}"})
 
     def check_applicable(self):
-        _c.STEEL_ESTAR_RANGE.check(self.estar, hint=_c._STEEL_HINT)
+        _c.STEEL_ESTAR_RANGE.check(self.estar, hint=_c.STEEL_HINT)
 
     def force(self, depth):
         return type(self)._force_fn(depth, self.length, self.estar)

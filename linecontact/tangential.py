@@ -63,7 +63,7 @@ import re
 
 import numpy as np
 
-from .classical import MODULUS_OR_RIGID, effective_modulus, _two_bodies
+from .classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
 from .tables import TableError, read_table
 from .validity import (POISSON_RATIO, Interval, OutOfRangeError, UnknownNameError,
                        check_interval, check_positive, document, out)
@@ -189,7 +189,7 @@ def effective_shear_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics and
     Friction, Springer (2015); R. D. Mindlin, J. Appl. Mech. 16 (1949) 259-268.
     """
-    E1, nu1, E2, nu2 = _two_bodies(modulus1, poisson1, modulus2, poisson2)
+    E1, nu1, E2, nu2 = two_bodies(modulus1, poisson1, modulus2, poisson2)
     compliance = (2 - nu1) * (1 + nu1) / (2 * E1) + (2 - nu2) * (1 + nu2) / (2 * E2)
     return out(1.0 / compliance)
 

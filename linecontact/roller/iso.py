@@ -104,11 +104,11 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     ----------
     ISO 16281:2025 (slicing method); Palmgren (1959).
     """
-    from ..classical import STEEL_ESTAR_RANGE, _STEEL_HINT
+    from ..classical import STEEL_ESTAR_RANGE, STEEL_HINT
     R = float(check_positive("radius", radius, "m"))
     L = float(check_positive("length", length, "m"))
     E = float(check_positive("estar", estar, "Pa"))
-    STEEL_ESTAR_RANGE.check(E, hint=_STEEL_HINT)
+    STEEL_ESTAR_RANGE.check(E, hint=STEEL_HINT)
     n = check_interval("n_slices", n_slices, ISO_MIN_SLICES, N_SLICES.high,
                        hint="ISO 16281 asks for at least 30 slices").item()
     n = int(n)

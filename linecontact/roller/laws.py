@@ -190,8 +190,8 @@ class ISOSlicingModel(_SolvedRoller):
                 "slices", "profile": self.axial_profile.provenance, "tilt_rad": self.tilt}
 
     def check_applicable(self):
-        from ..classical import STEEL_ESTAR_RANGE, _STEEL_HINT
-        STEEL_ESTAR_RANGE.check(self.estar, hint=_STEEL_HINT)
+        from ..classical import STEEL_ESTAR_RANGE, STEEL_HINT
+        STEEL_ESTAR_RANGE.check(self.estar, hint=STEEL_HINT)
 
     def _solve(self, **kw):
         return iso_slicing(self.radius, self.length, self.estar, self.axial_profile,

@@ -11,10 +11,15 @@ import numpy as np
 from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_interval, check_positive
 from .coverage import coverage_note
-from .slices import N_SLICES, TILT_RANGE, ConvergenceError, SliceEquations
+from .slices import (N_SLICES, SLICE_GRADING, TILT_RANGE, ConvergenceError,
+                     SliceEquations)
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["ProfiledRoller", "roller_contact"]
+
+#: Default grading of the slice widths towards the ends of the overlap interval
+#: (slices.slice_positions; docs/profiled_rollers.md, "Slice convergence").
+DEFAULT_GRADING = 0.8
 
 
 class ProfiledRoller:
@@ -44,6 +49,15 @@ class ProfiledRoller:
         write ``"iso16281:D=..."``.
     n_slices : int, optional
         Number of slices n, 10 <= n <= 4000 [-] (default 100).
+    grading : float, optional
+        Grading of the slice widths towards both ends of the overlap interval,
+        0 <= grading < 1 [-]: the end slices are (1 - grading) times the uniform width
+        and the middle ones (1 + grading) times (default 0.8; 0: uniform slices). The
+        pressure varies fastest near the contact's ends (a crown's edge, a profile's
+        end zone, an end relief); graded slices resolve its peak there: with the
+        default the peak pressure is within 0.5 % of the converged 3D BEM over
+        tables/roller_accuracy.csv, where 100 uniform slices were 3 % off
+        (docs/profiled_rollers.md, "Slice convergence").
 
     Notes
     -----
@@ -66,7 +80,8 @@ class ProfiledRoller:
     See the module docstring.
     """
 
-    def __init__(self, radius, length, estar, profile=None, n_slices=100):
+    def __init__(self, radius, length, estar, profile=None, n_slices=100,
+                 grading=DEFAULT_GRADING):
         self.radius = float(check_positive("radius", radius, "m"))
         self.length = float(check_positive("length", length, "m"))
         self.estar = float(check_positive("estar", estar, "Pa"))
@@ -74,6 +89,7 @@ class ProfiledRoller:
         if n != int(n):
             raise OutOfRangeError("n_slices", n_slices, "an integer in [10, 4000]")
         self.n_slices = int(n)
+        self.grading = float(SLICE_GRADING.check(grading).item())
         self.profile = as_profile(profile, self.radius, self.length, self.estar)
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
@@ -152,7 +168,8 @@ class ProfiledRoller:
             elif j < len(fx) - 1:
                 hi = fx[j]
         s = SliceEquations(self.radius, self.estar, float(lo), float(hi), self.n_slices,
-                    lambda x: roller_drop(self.profile, self.length, x))
+                           lambda x: roller_drop(self.profile, self.length, x),
+                           self.grading)
         s.dlo, s.dhi = dlo, dhi
         return s
 
@@ -224,9 +241,9 @@ class ProfiledRoller:
         S, q, c = s.solve(d, th, warm=warm, tol=tol)
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(), e)
         self.iterations += s.iterations
-        scale = math.pi * self.estar * s.w
-        F = scale * q.sum()
-        M = scale * (q * s.x).sum()
+        scale = math.pi * self.estar
+        F = scale * (s.w @ q)
+        M = scale * ((s.w * s.x) @ q)
         K = s.sensitivities(S, q, c, th, self._slope(s.x))
         return d, th, F, M, K, (s, S, q, c)
 
@@ -239,11 +256,13 @@ class ProfiledRoller:
         p[S] = 2.0 * self.estar * np.sqrt(q[S] * c[S])       # 2 q/(pi b)
         start, stop, lo_edge, hi_edge = contact_extent(s.x, q, s.w, self.length,
                                                         s.lo, s.hi)
-        # within a slice width (or L/1000) of an end counts as reaching it: a log
-        # profile's contact approaches the end without touching it exactly
-        near = max(s.w, 1e-3 * self.length)
-        lo_edge = lo_edge or start <= -self.length / 2 + near
-        hi_edge = hi_edge or stop >= self.length / 2 - near
+        # within the end slice's width (or L/1000) of an end counts as reaching it: a
+        # log profile's contact approaches the end without touching it exactly, and
+        # the contact's end is located to within the slice width there
+        near_lo = max(s.w[0], 1e-3 * self.length)
+        near_hi = max(s.w[-1], 1e-3 * self.length)
+        lo_edge = lo_edge or start <= -self.length / 2 + near_lo
+        hi_edge = hi_edge or stop >= self.length / 2 - near_hi
         # an end where the drop is infinite (Lundberg, ISO 16281: ln 1/(1 - (2x/L)^2))
         # is never reached: the rigid overlap ends before it, the contact with it, and the
         # pressure stays finite (3D BEM, Lundberg at its design load, R 5 mm, L 10 mm,

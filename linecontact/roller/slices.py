@@ -12,10 +12,28 @@ from ..profiles import TILT_RANGE
 from ..validity import Interval
 from .kernel import strip_values
 
-__all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE"]
+__all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE", "SLICE_GRADING"]
 
 #: Slice counts accepted by the coupled-slice model.
 N_SLICES = Interval("n_slices", 10, 4000)
+
+
+#: Grading of the slice widths accepted: 0 (uniform) <= grading < 1.
+SLICE_GRADING = Interval("grading", 0.0, 1.0, high_open=True)
+
+
+def slice_positions(n, grading):
+    """Centres and widths of n slices on [0, 1], graded towards both ends.
+
+    The boundaries are g(k/n), k = 0..n, with g(s) = s - beta sin(2 pi s)/(2 pi): the
+    end slices are (1 - beta) times the uniform width 1/n and the middle ones
+    (1 + beta) times (beta = 0: uniform). Returns the centres (midway between the
+    boundaries) and the widths, both as fractions of the interval.
+    """
+    s = np.arange(n + 1) / n
+    g = s - grading * np.sin(2 * np.pi * s) / (2 * np.pi)
+    g[0], g[-1] = 0.0, 1.0
+    return 0.5 * (g[1:] + g[:-1]), np.diff(g)
 
 
 class ConvergenceError(RuntimeError):
@@ -28,39 +46,60 @@ class SliceEquations:
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0):
         self.R = radius
         self.E = estar
         self.n = n
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
-        self.w = (x_hi - x_lo) / n
-        self.x = x_lo + self.w * (np.arange(n) + 0.5)
+        # slice boundaries lo + (hi - lo) g(k/n), centres midway (slice_positions)
+        self.m, self.dg = slice_positions(n, grading)
+        span = x_hi - x_lo
+        self.w = span * self.dg                  # slice widths
+        self.x = x_lo + span * self.m
         self.P = drop(self.x)
-        j = np.arange(n)
-        self.logj = np.log(2 * j + 1.0)
         self.iterations = 0
+        # kernel geometry: for target k and source i the distances from x_k to the source
+        # slice's near and far edges (their ratio fixes the log part of the
+        # displacement, scale-free, so computed once per grid)
+        t = self.x[:, None] - self.x[None, :]
+        h = 0.5 * self.w[None, :]
+        self._tnear = np.abs(t) - h              # > 0 off the diagonal
+        self._tfar = np.abs(t) + h
+        np.fill_diagonal(self._tnear, 0.5 * self.w)
+        self._logratio = np.log(self._tfar / self._tnear)
+        np.fill_diagonal(self._logratio, 0.0)
 
     def kernels(self, S, b, targets=None):
-        """A, D and their b-derivative parts for targets T (default S) and sources S."""
+        """A, D and their b-derivative parts for targets T (default S) and sources S.
+
+        For source i (half-width b_i, width w_i) and target k, with tau = t/b_i at the
+        near and far edges of slice i seen from x_k: A = ln(far/near) + r(far) -
+        r(near), D = p(far) - p(near), EA and ED the same differences of tau a' and
+        tau p'; on the diagonal (the target inside its own slice, tau = +-w_i/2b_i)
+        A = 2 ln(w_i/b_i) + 2 r, D = 2 p - 4, EA = 2 tau a', ED = 2 tau p'
+        (:func:`linecontact.roller.kernel.strip_influence` for r, p and their
+        derivatives).
+        """
         T = S if targets is None else targets
-        span = int(max(T.max(), S.max()) - min(T.min(), S.min()))
-        j = np.arange(span + 1)[:, None]
-        shape = (span + 1, len(S))
-        r, ta, p, tp = (v.reshape(shape) for v in
-                        strip_values(((j + 0.5) * self.w / b[None, :]).ravel()))
-        # a(tau_j) = ln(2j + 1) + ln(w/b) + r(tau_j); columns of differences G[j] - G[j-1]
-        # (j >= 1) and the self term 2 G[0]
-        G = np.empty((4, span + 1, len(S)))
-        rho = np.log(self.w / b)[None, :] + r
-        for g, v in ((G[0], rho), (G[1], p), (G[2], ta), (G[3], tp)):
-            g[1:] = v[1:] - v[:-1]
-            g[0] = 2 * v[0]
-        G[0, 1:] += (self.logj[1:span + 1] - self.logj[:span])[:, None]
-        G[1, 0] -= 4.0
-        m = np.abs(T[:, None] - S[None, :])
-        cols = np.arange(len(S))[None, :]
-        A, D, EA, ED = G[:, m, cols]
+        tn = self._tnear[np.ix_(T, S)]
+        tf = self._tfar[np.ix_(T, S)]
+        nt, ns = tn.shape
+        ib = 1.0 / b
+        vals = strip_values(np.concatenate([(tf * ib).ravel(), (tn * ib).ravel()]))
+        r, p, ta, tp = (v.reshape(2, nt, ns) for v in
+                        (vals[0], vals[2], vals[1], vals[3]))
+        A = self._logratio[np.ix_(T, S)] + (r[0] - r[1])
+        D = p[0] - p[1]
+        EA = ta[0] - ta[1]
+        ED = tp[0] - tp[1]
+        diag = T[:, None] == S[None, :]
+        if np.any(diag):
+            kk, ii = np.nonzero(diag)
+            A[kk, ii] = 2 * (np.log(self.w[S[ii]] * ib[ii]) + r[1, kk, ii])
+            D[kk, ii] = 2 * p[1, kk, ii] - 4.0
+            EA[kk, ii] = 2 * ta[1, kk, ii]
+            ED[kk, ii] = 2 * tp[1, kk, ii]
         return A, D, EA, ED
 
     def jacobian(self, S, q, c):
@@ -178,15 +217,15 @@ class SliceEquations:
         """
         _, _, J = self.jacobian(S, q, c)
         A, D, EA, ED = self._last_kernels
-        ns, n, w = len(S), self.n, self.w
-        qs, cs, xs = q[S], c[S], self.x[S]
-        k = S + 0.5
+        ns = len(S)
+        qs, cs, xs, ws = q[S], c[S], self.x[S], self.w[S]
+        m = self.m[S]
         # columns: d, theta, lo, hi ; rows: -dR/dp
         rhs = np.zeros((2 * ns, 4))
         rhs[:ns, 0] = 1.0
         rhs[:ns, 1] = xs
-        dlnw = np.array([-1.0, 1.0]) / (n * w)                 # d ln w / d(lo, hi)
-        dx = np.stack([1.0 - k / n, k / n], axis=1)            # d x_k / d(lo, hi)
+        dlnw = np.array([-1.0, 1.0]) / (self.hi - self.lo)    # d ln w_k / d(lo, hi)
+        dx = np.stack([1.0 - m, m], axis=1)                    # d x_k / d(lo, hi)
         ea_q, ed_c = EA @ qs, ED @ cs
         for g in range(2):
             rhs[:ns, 2 + g] = -(ea_q * dlnw[g] - (th - slope[S]) * dx[:, g])
@@ -196,10 +235,11 @@ class SliceEquations:
         rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, self.R)])
         z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], rhs * rowsc[:, None])
         dq = z[:ns] * qsc                                     # d qt / d(d, th, lo, hi)
-        dw = np.array([0.0, 0.0, -1.0 / n, 1.0 / n])
+        dg = self.dg[S]
+        dw = np.array([0.0, 0.0, -1.0, 1.0])                  # times dg_k: d w_k
         dxk = np.zeros((ns, 4))
         dxk[:, 2:] = dx
-        dF = w * dq.sum(0) + dw * qs.sum()
-        dM = w * (xs[:, None] * dq).sum(0) + dw * (qs * xs).sum() + w * (qs[:, None] * dxk).sum(0)
+        dF = ws @ dq + dw * (dg @ qs)
+        dM = (ws * xs) @ dq + dw * ((dg * qs) @ xs) + (ws * qs) @ dxk
         G = np.array([[1.0, 0.0], [0.0, 1.0], self.dlo, self.dhi])   # d(d, th, lo, hi)/d(d, th)
         return math.pi * self.E * np.array([dF @ G, dM @ G])

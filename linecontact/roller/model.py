@@ -96,6 +96,7 @@ class ProfiledRoller:
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
         self._warm = None
         self._memo = None
+        self._free_memo = 0.0
         self.iterations = 0
 
     def first_contact_depth(self, tilt=0.0):
@@ -171,6 +172,7 @@ class ProfiledRoller:
                            lambda x: roller_drop(self.profile, self.length, x),
                            self.grading)
         s.dlo, s.dhi = dlo, dhi
+        s.slope = self._slope
         return s
 
     def _slope(self, x):
@@ -225,21 +227,50 @@ class ProfiledRoller:
                                           "no contact").item()
         return self._solution(*self._forces(d, th))
 
+    def _warm_start(self, s, d, th):
+        """The last solution, mapped onto the grid s by the relative position in the
+        overlap interval and scaled with the largest overlap (q ~ overlap); None if
+        there is none or the overlap changed by more than a factor 2."""
+        if self._warm is None:
+            return None
+        e = float(np.max(d + th * s.x - s.P))          # largest overlap on the slices
+        xi_o, qo, co, eo = self._warm
+        ratio = e / eo if eo > 0 else 0.0
+        if not 0.5 < ratio < 2.0:
+            return None
+        xi = (s.x - s.lo) / (s.hi - s.lo)
+        return (np.interp(xi, xi_o, qo, left=0.0, right=0.0) * ratio,
+                np.interp(xi, xi_o, co))
+
+    def _controlled(self, d, th, force=None, zero_moment=False, tol=1e-11):
+        """Solve with the force and/or zero moment imposed, Newton on the slice loads
+        together with d and/or theta (SliceEquations.bordered) from depth d, tilt th."""
+        s = self._grid(d, th)
+        S, q, c = s.start(d, th, self._warm_start(s, d, th))
+        s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
+                                                zero_moment, tol)
+        self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
+                      float(np.max(d + th * s.x - s.P)))
+        self.iterations += s.iterations
+        return d, th, F, M, K, (s, S, q, c)
+
+    def _start_depth(self, F0, th):
+        """A first depth for force F0 at tilt th: from the last solution of this roller
+        (F ~ (d - d0)^slope), else the straight roller's 2D estimate."""
+        d0 = self.first_contact_depth(th)
+        L, R, E = self.length, self.radius, self.estar
+        if self._memo is not None and self._memo[0] == th:
+            _, e_last, F_last, slope = self._memo
+            return d0 + e_last * (F0 / F_last) ** (1.0 / slope)
+        return d0 + F0 / (math.pi * E * L) * max(
+            1.0 + math.log(max(math.pi * E * L**3 / (R * F0), math.e)), 2.0)
+
     def _forces(self, d, th, tol=1e-11):
         s = self._grid(d, th)
-        e = float(np.max(d + th * s.x - s.P))          # largest overlap on the slices
-        warm = None
-        if self._warm is not None:
-            # the last solution, mapped onto this grid by the relative position in the
-            # overlap interval and scaled with the largest overlap (q ~ overlap)
-            xi_o, qo, co, eo = self._warm
-            ratio = e / eo if eo > 0 else 0.0
-            if 0.5 < ratio < 2.0:
-                xi = (s.x - s.lo) / (s.hi - s.lo)
-                warm = (np.interp(xi, xi_o, qo, left=0.0, right=0.0) * ratio,
-                        np.interp(xi, xi_o, co))
+        warm = self._warm_start(s, d, th)
         S, q, c = s.solve(d, th, warm=warm, tol=tol)
-        self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(), e)
+        self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
+                      float(np.max(d + th * s.x - s.P)))
         self.iterations += s.iterations
         scale = math.pi * self.estar
         F = scale * (s.w @ q)
@@ -394,8 +425,26 @@ class ProfiledRoller:
         if np.size(force) != 1:
             return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
-        if not is_free_tilt(tilt):
-            th = TILT_RANGE.check(tilt).item()
+        free = is_free_tilt(tilt)
+        th = self._free_memo if free else TILT_RANGE.check(tilt).item()
+        try:
+            # Newton on the slice loads together with d (and theta): one dense solve
+            # per step
+            st = self._controlled(self._start_depth(F0, th), th, force=F0,
+                                  zero_moment=free)
+        except ConvergenceError:
+            st = None
+        if st is not None and abs(st[2] / F0 - 1) <= tol and (
+                not free or abs(st[3]) <= tol * F0 * self.length):
+            d, th, F, K = st[0], st[1], st[2], st[4]
+            e = d - self.first_contact_depth(th)
+            if e > 0:
+                self._memo = (th, e, F, min(max(K[0, 0] * e / F, 0.5), 3.0))
+            if free:
+                self._free_memo = th
+            return self._solution(*st, free_tilt=free)
+        # the nested iteration: slower, safeguarded
+        if not free:
             return self._solution(*self._depth_at_force(F0, th, tol))
         L = self.length
         st = self._depth_at_force(F0, 0.0, tol)

@@ -36,6 +36,9 @@ def slice_positions(n, grading):
     return 0.5 * (g[1:] + g[:-1]), np.diff(g)
 
 
+_TRACE = False
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -243,3 +246,182 @@ class SliceEquations:
         dM = (ws * xs) @ dq + dw * ((dg * qs) @ xs) + (ws * qs) @ dxk
         G = np.array([[1.0, 0.0], [0.0, 1.0], self.dlo, self.dhi])   # d(d, th, lo, hi)/d(d, th)
         return math.pi * self.E * np.array([dF @ G, dM @ G])
+
+    def slope_at_slices(self):
+        """dP/dx at the slice centres (the owner sets ``slope``, a function of x)."""
+        return self.slope(self.x)
+
+    def start(self, d, theta, warm=None):
+        """A first (S, q, c) at depth d and tilt theta: the warm start mapped onto this
+        grid, else the linear problem with frozen strip widths, twice (the second time
+        with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)."""
+        n, R = self.n, self.R
+        over = d + theta * self.x - self.P
+        S = np.flatnonzero(over > 0)
+        if S.size == 0:
+            raise ConvergenceError(
+                f"no slice is in contact at d = {d:.6g} m: the contact is narrower than "
+                "one slice (too small a load for the slicing)")
+        q = np.zeros(n)
+        c = np.full(n, 1.0 / (4 * R))
+        if warm is not None and np.any(warm[0][S] > 0):
+            q[S] = warm[0][S]
+            c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
+            return S[q[S] > 0], q, c
+        b0 = np.sqrt(R * over[S])
+        for sweep in range(2):
+            for _ in range(n):
+                qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
+                if np.all(qs > 0):
+                    break
+                S, b0 = S[qs > 0], b0[qs > 0]
+                if S.size == 0:
+                    raise ConvergenceError(f"no slice is in contact at d = {d:.6g} m")
+            b0 = np.sqrt(4 * R * qs)
+        q[S] = qs
+        return S, q, c
+
+    def linearised(self, S, q, c, theta, slope, targets):
+        """Residual, Jacobian and grid terms of the slice equations at (q, c) on S.
+
+        Returns the residual res (2 ns), the Jacobian J (2 ns x 2 ns), the columns
+        -dR/d(d, theta) at fixed (q, c) with the motion of the grid (2 ns x 2), the
+        gaps over the `targets` (overlap minus displacement, for the active set) and
+        d(w.q, (w x).q)/d(d, theta) at fixed q (2 x 2): what one Newton step on the
+        slice loads together with d and theta needs, and at convergence the implicit
+        derivative (:meth:`sensitivities`).
+        """
+        R = self.R
+        qs, cs = q[S], c[S]
+        b = np.sqrt(qs / cs)
+        A, D, EA, ED = self.kernels(S, b, targets=targets)
+        pos = np.searchsorted(targets, S)          # rows of S among the targets
+        gap = self._over[targets] - A @ qs
+        A, D, EA, ED = A[pos], D[pos], EA[pos], ED[pos]
+        ns = len(S)
+        res = np.concatenate([-gap[pos], D @ cs + 1.0 / R])
+        J = np.empty((2 * ns, 2 * ns))
+        J[:ns, :ns] = A - 0.5 * EA
+        J[:ns, ns:] = EA * (0.5 * b * b)[None, :]
+        J[ns:, :ns] = -ED * (0.5 / (b * b))[None, :]
+        J[ns:, ns:] = D + 0.5 * ED
+        xs, ws, m, dg = self.x[S], self.w[S], self.m[S], self.dg[S]
+        dlnw = np.array([-1.0, 1.0]) / (self.hi - self.lo)    # d ln w_k / d(lo, hi)
+        dx = np.stack([1.0 - m, m], axis=1)                    # d x_k / d(lo, hi)
+        G = np.array([self.dlo, self.dhi])                     # d(lo, hi)/d(d, theta)
+        ea_q, ed_c = EA @ qs, ED @ cs
+        rg = np.empty((2 * ns, 2))                             # -dR/d(lo, hi)
+        rg[:ns] = -(ea_q[:, None] * dlnw[None, :] - (theta - slope[S])[:, None] * dx)
+        rg[ns:] = -ed_c[:, None] * dlnw[None, :]
+        rhs = rg @ G
+        rhs[:ns, 0] += 1.0
+        rhs[:ns, 1] += xs
+        # d(w.q, (w x).q)/d(lo, hi) at fixed q, then by the chain rule
+        dwq = np.array([-1.0, 1.0]) * (dg @ qs)
+        dwxq = np.array([-1.0, 1.0]) * ((dg * qs) @ xs) + (ws * qs) @ dx
+        grid = np.array([dwq, dwxq]) @ G
+        return res, J, rhs, gap, grid
+
+    def bordered(self, regrid, S, q, c, d, theta, force=None, zero_moment=False,
+                 tol=1e-11, max_steps=60):
+        """Newton's method on (q, c) together with d (given force: w.q = F/(pi E*))
+        and/or theta (zero moment: (w x).q = 0), the grid rebuilt at every step.
+
+        One dense solve (three right-hand sides) per step replaces the nested
+        iteration (an outer Newton on d or theta around a converged inner solve).
+        `regrid(d, theta)` returns the SliceEquations of that depth and tilt (the slice
+        index k keeps its place in the overlap interval). Damped to keep q, c > 0;
+        slices driven to q <= 0 leave; unloaded slices that would interpenetrate
+        join. Returns (equations, S, q, c, d, theta, K) with the stiffness matrix K of
+        the converged state, or raises ConvergenceError.
+        """
+        n, R, piE = self.n, self.R, math.pi * self.E
+        s = self
+        blocked = np.zeros(n, int)
+        everyone = np.arange(n)
+        for _ in range(max_steps):
+            s.iterations += 1
+            over = d + theta * s.x - s.P
+            s._over = over
+            slope = s.slope_at_slices()
+            res, J, rhs, gap, grid = s.linearised(S, q, c, theta, slope, everyone)
+            ns = len(S)
+            qs, cs = q[S], c[S]
+            qsc = np.max(qs)
+            colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / R)])
+            rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, R)])
+            B = np.column_stack([-res, rhs]) * rowsc[:, None]
+            z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], B) * colsc[:, None]
+            ws, xs = s.w[S], s.x[S]
+            wq, wxq = ws @ qs, (ws * xs) @ qs
+            # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
+            K = np.array([ws @ z[:ns, 1:], (ws * xs) @ z[:ns, 1:]]) + grid
+            lin = np.array([ws @ z[:ns, 0], (ws * xs) @ z[:ns, 0]])
+            step = np.zeros(2)
+            want = np.array([(force / piE - wq - lin[0]) if force is not None else 0.0,
+                             (-wxq - lin[1]) if zero_moment else 0.0])
+            if force is not None and zero_moment:
+                step = np.linalg.solve(K, want)
+            elif force is not None:
+                step[0] = want[0] / K[0, 0]
+            elif zero_moment:
+                step[1] = want[1] / K[1, 1]
+            dz = z[:, 0] + z[:, 1:] @ step
+            dq, dc = dz[:ns], dz[ns:]
+            alpha = 1.0
+            hit_q = qs + dq <= 0.05 * qs
+            if np.any(hit_q):
+                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
+            hit_c = cs + dc <= 0.2 * cs
+            if np.any(hit_c):
+                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            # keep the rigid overlap positive: no step lowers it by more than half its
+            # largest value (d stays above first contact)
+            dmax = float(np.max(over))
+            drop = float(np.max(-(step[0] + step[1] * s.x[S])))
+            if drop > 0.5 * dmax:
+                alpha = min(alpha, 0.5 * dmax / drop)
+            if _TRACE:
+                print("bordered", len(S), alpha, np.max(np.abs(dq)) / qsc, step, dmax)
+            q[S] = qs + alpha * dq
+            c[S] = cs + alpha * dc
+            d = d + alpha * step[0]
+            theta = theta + alpha * step[1]
+            if not abs(theta) < TILT_RANGE.high:
+                raise ConvergenceError("the tilt left the admissible range")
+            small = (alpha == 1.0 and np.max(np.abs(dq)) <= tol * qsc
+                     and np.max(np.abs(dc)) * R <= tol
+                     and abs(step[0]) <= tol * dmax
+                     and abs(step[1]) * (s.hi - s.lo) <= tol * dmax)
+            if alpha == 1.0:
+                blocked[S] = 0
+                # the active set is checked once the step is small (not only at
+                # convergence: a slice that joins late costs damped steps)
+                if np.max(np.abs(dq)) <= 1e-3 * qsc:
+                    rest = np.setdiff1d(everyone, S)
+                    add = rest[gap[rest] > tol * dmax] if len(rest) else rest
+                    if len(add) == 0 and small:
+                        F = piE * (s.w @ q)
+                        M = piE * ((s.w * s.x) @ q)
+                        return s, S, q, c, d, theta, F, M, piE * K
+                    if len(add):
+                        q[add] = gap[add] / 10.0
+                        c[add] = 1.0 / (4 * R)
+                        S = np.union1d(S, add)
+            else:
+                blocked[S[hit_q]] += 1
+                blocked[S[~hit_q]] = 0
+                leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
+                if np.any(leave):
+                    q[S[leave]] = 0.0
+                    blocked[S[leave]] = 0
+                    S = S[~leave]
+                    if len(S) == 0:
+                        raise ConvergenceError("every slice left the contact")
+            if force is not None or zero_moment:
+                it = s.iterations
+                s = regrid(d, theta)
+                s.iterations = it
+                # slices outside the new overlap interval's grid keep their index
+        raise ConvergenceError("Newton iteration on the slice loads (bordered) did not "
+                               f"converge in {max_steps} steps")

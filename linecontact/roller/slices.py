@@ -36,9 +36,6 @@ def slice_positions(n, grading):
     return 0.5 * (g[1:] + g[:-1]), np.diff(g)
 
 
-_TRACE = False
-
-
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -85,14 +82,17 @@ class SliceEquations:
         derivatives).
         """
         T = S if targets is None else targets
-        tn = self._tnear[np.ix_(T, S)]
-        tf = self._tfar[np.ix_(T, S)]
+        if len(T) == self.n:                   # every slice a target (T = 0..n-1)
+            tn, tf, lr = self._tnear[:, S], self._tfar[:, S], self._logratio[:, S]
+        else:
+            ix = np.ix_(T, S)
+            tn, tf, lr = self._tnear[ix], self._tfar[ix], self._logratio[ix]
         nt, ns = tn.shape
         ib = 1.0 / b
         vals = strip_values(np.concatenate([(tf * ib).ravel(), (tn * ib).ravel()]))
         r, p, ta, tp = (v.reshape(2, nt, ns) for v in
                         (vals[0], vals[2], vals[1], vals[3]))
-        A = self._logratio[np.ix_(T, S)] + (r[0] - r[1])
+        A = lr + (r[0] - r[1])
         D = p[0] - p[1]
         EA = ta[0] - ta[1]
         ED = tp[0] - tp[1]
@@ -368,6 +368,19 @@ class SliceEquations:
                 step[1] = want[1] / K[1, 1]
             dz = z[:, 0] + z[:, 1:] @ step
             dq, dc = dz[:ns], dz[ns:]
+            # a slice at an end of the loaded set that the full step drives to q < 0 is
+            # outside the contact: it leaves at once (it would only block the step)
+            out = qs + dq < 0
+            if np.any(out) and ns > 2:
+                edge = np.zeros(ns, bool)
+                edge[[0, -1]] = True
+                gaps = np.flatnonzero(np.diff(S) > 1)
+                edge[gaps] = edge[gaps + 1] = True
+                out &= edge
+                if np.any(out) and not np.all(out):
+                    q[S[out]] = 0.0
+                    S = S[~out]
+                    continue
             alpha = 1.0
             hit_q = qs + dq <= 0.05 * qs
             if np.any(hit_q):
@@ -381,8 +394,6 @@ class SliceEquations:
             drop = float(np.max(-(step[0] + step[1] * s.x[S])))
             if drop > 0.5 * dmax:
                 alpha = min(alpha, 0.5 * dmax / drop)
-            if _TRACE:
-                print("bordered", len(S), alpha, np.max(np.abs(dq)) / qsc, step, dmax)
             q[S] = qs + alpha * dq
             c[S] = cs + alpha * dc
             d = d + alpha * step[0]
@@ -397,7 +408,7 @@ class SliceEquations:
                 blocked[S] = 0
                 # the active set is checked once the step is small (not only at
                 # convergence: a slice that joins late costs damped steps)
-                if np.max(np.abs(dq)) <= 1e-3 * qsc:
+                if np.max(np.abs(dq)) <= 0.05 * qsc:
                     rest = np.setdiff1d(everyone, S)
                     add = rest[gap[rest] > tol * dmax] if len(rest) else rest
                     if len(add) == 0 and small:

@@ -918,8 +918,15 @@ class Contact:
     def _slices_normal(self, force, depth):
         given = force if force is not None else depth
         vals = np.asarray(given, dtype=float)
-        sols = tuple(self._solve_one(float(v), None) if force is not None
-                     else self._solve_one(None, float(v)) for v in vals.ravel())
+        flat = vals.ravel()
+        # in increasing order, so that each slice solve starts from its neighbour's
+        # (the coupled-slice roller keeps its last solution)
+        sols = [None] * flat.size
+        for k in np.argsort(flat, kind="stable"):
+            v = float(flat[k])
+            sols[k] = (self._solve_one(v, None) if force is not None
+                       else self._solve_one(None, v))
+        sols = tuple(sols)
 
         def arr(fn):
             return out(np.array([fn(s) for s in sols]).reshape(vals.shape))

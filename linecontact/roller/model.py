@@ -348,7 +348,7 @@ class ProfiledRoller:
         return RollerSolution(
             depth=float(d), tilt=float(th), force=float(F), moment=float(M),
             stiffness=float(K[0, 0]), tilt_stiffness=float(K[1, 1]), stiffness_matrix=K,
-            x=s.x.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,
+            x=s.x.copy(), width=s.w.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,
             contact_start=start, contact_end=stop, contact_length=stop - start,
             edge_loaded=edge is not None, edge=edge, message=msg, method="coupled slices",
             n_slices=self.n_slices, iterations=its, notes=tuple(notes),
@@ -580,6 +580,11 @@ def _each(solve, values, name, unit):
         raise OutOfRangeError(name, float(v.ravel()[i]), f"finite values [{unit}]",
                               unit=unit, where=f"element {i}")
     out = np.empty(v.shape, dtype=object)
-    for idx in np.ndindex(v.shape):
-        out[idx] = solve(float(v[idx]))
+    flat = v.ravel()
+    # in increasing order: each solve starts from its neighbour's solution (the same
+    # roller keeps the last solution and depth, ProfiledRoller._warm_start and
+    # _start_depth), so a sweep costs a fraction of as many cold solves
+    res = out.reshape(-1)
+    for k in np.argsort(flat, kind="stable"):
+        res[k] = solve(float(flat[k]))
     return out

@@ -38,6 +38,9 @@ class RollerSolution:
         [[dF/dd, dF/dtheta], [dM/dd, dM/dtheta]] [N/m, N/rad; N, N m/rad].
     x : ndarray
         Slice centres [m].
+    width : ndarray
+        Slice widths [m] (graded towards the contact's ends for the coupled slices):
+        F = sum q w [m].
     q : ndarray
         Line load q(x_k), 0 outside the contact [N/m].
     half_width : ndarray
@@ -114,6 +117,7 @@ class RollerSolution:
     iterations: int = 0
     notes: tuple = field(default_factory=tuple)
     p_max_resolved: bool = True
+    width: np.ndarray = None
 
     def to_dict(self, arrays=True):
         """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
@@ -141,7 +145,8 @@ class RollerSolution:
                 d[k] = v
         d["units"] = {"depth": "m", "tilt": "rad", "force": "N", "moment": "N m",
                       "stiffness": "N/m", "tilt_stiffness": "N m/rad", "x": "m",
-                      "q": "N/m", "half_width": "m", "pressure": "Pa", "p_max": "Pa",
+                      "width": "m", "q": "N/m", "half_width": "m", "pressure": "Pa",
+                      "p_max": "Pa",
                       "x_at_p_max": "m", "contact_start": "m", "contact_end": "m",
                       "contact_length": "m"}
         return d

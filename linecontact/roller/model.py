@@ -230,13 +230,13 @@ class ProfiledRoller:
     def _warm_start(self, s, d, th):
         """The last solution, mapped onto the grid s by the relative position in the
         overlap interval and scaled with the largest overlap (q ~ overlap); None if
-        there is none or the overlap changed by more than a factor 2."""
+        there is none or the overlap changed by more than a factor 10."""
         if self._warm is None:
             return None
         e = float(np.max(d + th * s.x - s.P))          # largest overlap on the slices
         xi_o, qo, co, eo = self._warm
         ratio = e / eo if eo > 0 else 0.0
-        if not 0.5 < ratio < 2.0:
+        if not 0.1 < ratio < 10.0:
             return None
         xi = (s.x - s.lo) / (s.hi - s.lo)
         return (np.interp(xi, xi_o, qo, left=0.0, right=0.0) * ratio,

@@ -36,6 +36,28 @@ def slice_positions(n, grading):
     return 0.5 * (g[1:] + g[:-1]), np.diff(g)
 
 
+_GEOMETRY = {}
+
+
+def _unit_geometry(n, grading):
+    """(near, far, ln(far/near)) distances between slice centres and source slice
+    edges on the unit interval (n x n; the diagonal: near = far = w/2, log 0), cached
+    per (n, grading)."""
+    key = (n, grading)
+    if key not in _GEOMETRY:
+        if len(_GEOMETRY) > 16:
+            _GEOMETRY.clear()
+        m, dg = slice_positions(n, grading)
+        t = np.abs(m[:, None] - m[None, :])
+        h = 0.5 * dg[None, :]
+        near, far = t - h, t + h
+        np.fill_diagonal(near, 0.5 * dg)
+        lr = np.log(far / near)
+        np.fill_diagonal(lr, 0.0)
+        _GEOMETRY[key] = (near, far, lr)
+    return _GEOMETRY[key]
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -60,15 +82,11 @@ class SliceEquations:
         self.P = drop(self.x)
         self.iterations = 0
         # kernel geometry: for target k and source i the distances from x_k to the source
-        # slice's near and far edges (their ratio fixes the log part of the
-        # displacement, scale-free, so computed once per grid)
-        t = self.x[:, None] - self.x[None, :]
-        h = 0.5 * self.w[None, :]
-        self._tnear = np.abs(t) - h              # > 0 off the diagonal
-        self._tfar = np.abs(t) + h
-        np.fill_diagonal(self._tnear, 0.5 * self.w)
-        self._logratio = np.log(self._tfar / self._tnear)
-        np.fill_diagonal(self._logratio, 0.0)
+        # slice's near and far edges, as fractions of the interval (their ratio fixes
+        # the log part of the displacement: scale-free, so the same for every grid of
+        # this n and grading; cached)
+        self._tnear, self._tfar, self._logratio = _unit_geometry(n, grading)
+        self.span = span
 
     def kernels(self, S, b, targets=None):
         """A, D and their b-derivative parts for targets T (default S) and sources S.
@@ -88,7 +106,7 @@ class SliceEquations:
             ix = np.ix_(T, S)
             tn, tf, lr = self._tnear[ix], self._tfar[ix], self._logratio[ix]
         nt, ns = tn.shape
-        ib = 1.0 / b
+        ib = self.span / b
         vals = strip_values(np.concatenate([(tf * ib).ravel(), (tn * ib).ravel()]))
         r, p, ta, tp = (v.reshape(2, nt, ns) for v in
                         (vals[0], vals[2], vals[1], vals[3]))
@@ -99,7 +117,7 @@ class SliceEquations:
         diag = T[:, None] == S[None, :]
         if np.any(diag):
             kk, ii = np.nonzero(diag)
-            A[kk, ii] = 2 * (np.log(self.w[S[ii]] * ib[ii]) + r[1, kk, ii])
+            A[kk, ii] = 2 * (np.log(self.w[S[ii]] / b[ii]) + r[1, kk, ii])
             D[kk, ii] = 2 * p[1, kk, ii] - 4.0
             EA[kk, ii] = 2 * ta[1, kk, ii]
             ED[kk, ii] = 2 * tp[1, kk, ii]

@@ -55,7 +55,8 @@ parameters = (
 NAMES = tuple(p.name for p in parameters)
 
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
-        "coupling along the axis; linecontact.roller), 100 slices; M: moment about the "
+        "coupling along the axis; linecontact.roller), 100 slices graded towards the "
+        "contact's ends; M: moment about the "
         "roller centre; p max: peak pressure (not printed where the contact reaches a "
         "roller end: singular there on a half-space, 'edge'); ISO 16281 slicing: "
         "uncoupled slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")

@@ -440,7 +440,7 @@ class ContactResult(_Result):
     >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9, n_slices=40)
     >>> r = c.normal(force=1e3)
     >>> f"{r.depth * 1e6:.3f} um, p0 {r.peak_pressure / 1e6:.0f} MPa", r.model
-    ('7.431 um, p0 1522 MPa', 'profiled-roller')
+    ('7.430 um, p0 1522 MPa', 'profiled-roller')
     """
 
     force: object

@@ -507,7 +507,7 @@ class TangentialResult(_Result):
     ...             material2=Elastic(210e9, 0.3), n_slices=40)
     >>> t = c.tangential(0.15, force=1e3, tangential_force=-50.0)
     >>> t.state, f"{t.shift * 1e9:.1f} nm"
-    ('partial slip', '-320.6 nm')
+    ('partial slip', '-320.5 nm')
     """
 
     normal: object

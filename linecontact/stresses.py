@@ -661,7 +661,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
     >>> sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     >>> s = roller_stresses(sol)
     >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa at x = {s.worst['tresca']['x'] * 1e3:.2f} mm"
-    '737 MPa at x = -0.04 mm'
+    '737 MPa at x = -0.08 mm'
 
     References
     ----------

@@ -41,6 +41,20 @@ for the rating life are interpolated between the tabulated load distributions (i
 :math:`\ln Q`), and the table's interpolation error is reported
 (:attr:`BearingSolution.law_error`).
 
+Tilting moment and misalignment
+-------------------------------
+A tilt theta of the inner ring in the load plane adds :math:`\theta x\cos\psi_j` to
+roller j's approach along its axis x: the rings are misaligned by
+:math:`\phi_j = \theta\cos\psi_j` at roller j, which is free to tilt between its two
+slice contacts (force and moment balance, :mod:`linecontact.raceway`) and carries
+:math:`Q_j, M_j`; the ring carries :math:`F_r = \sum Q_j\cos\psi_j`,
+:math:`M = \sum M_j\cos\psi_j`. Given M, (delta_r, theta) are solved (2 DOF); given
+theta, delta_r (1 DOF). One Newton iteration on all unknowns (each distinct roller's
+inner depth and tilt, and the ring's) with the slice model's exact 2x2 contact
+matrices; the bearing's stiffness matrix is
+:math:`K = \sum_j \cos^2\psi_j\,(K_{in}^{-1} + K_{out}^{-1})^{-1}`
+= d(F_r, M)/d(delta_r, theta), exact for the discrete equations (docs/bearings.md).
+
 Stribeck's result
 -----------------
 For :math:`Q = K\delta^n` and the load-zone parameter
@@ -664,6 +678,9 @@ class RadialRollerBearing:
         geometry, :func:`dynamic_load_rating`).
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
+    poisson : float, optional
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
 
     Notes
     -----

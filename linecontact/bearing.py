@@ -966,8 +966,10 @@ class RadialRollerBearing:
         if self.sliced:
             return self
         if self._model_named:
+            given = ({"moment": moment} if moment is not None else
+                     {"misalignment": misalignment})
             raise CombinationError(
-                {"model": self.model, "moment": moment, "misalignment": misalignment},
+                {"model": self.model, **given},
                 "a straight-cylinder law has no tilt; a tilting moment or misalignment "
                 "needs a slice model, model='profiled-roller' or 'iso16281-slicing'")
         return RadialRollerBearing(

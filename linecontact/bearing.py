@@ -989,8 +989,24 @@ class RadialRollerBearing:
                                                       poisson=self.poisson)
                           for name, R in (("inner", R_in), ("outer", R_out))})
 
+    def _tilted_load_zone(self, dr, th, first, points=721):
+        """Half the azimuth range where a roller would be loaded,
+        e(psi) = delta_r cos psi - P_d/2 - 2 d_0(theta cos psi / 2) > 0, on a grid of
+        `points` over [0, pi] with the crossings interpolated linearly (for theta = 0
+        the aligned psi_l = arccos(P_d/(2 delta_r)); a large tilt can load both
+        sides: their extents add) [rad]."""
+        psi = np.linspace(0.0, math.pi, points)
+        cp = np.cos(psi)
+        e = dr * cp - self.clearance / 2 - 2 * np.array([first(0.5 * th * x) for x in cp])
+        a, b = e[:-1], e[1:]
+        h = psi[1] - psi[0]
+        both = (a > 0) & (b > 0)
+        cross = (a > 0) != (b > 0)
+        part = np.where(cross, np.maximum(a, b) / np.where(cross, np.abs(a - b), 1.0), 0.0)
+        return float(h * (np.sum(both) + np.sum(part)))
+
     def _tilted_solution(self, F, M, theta):
-        dr, th, c, inverse, sols, K, kser = self._solve_tilted(F, M, theta)
+        dr, th, c, inverse, sols, K, kser, first = self._solve_tilted(F, M, theta)
         Z = self.rollers
         L = self.length
         n_lam = self.n_slices
@@ -1024,9 +1040,7 @@ class RadialRollerBearing:
         notes.extend(stress["notes"])
         approach = dr * c - self.clearance / 2
         loaded = Q > 0
-        # with a tilt a roller may touch at one end only: the load zone is the half
-        # angle of the loaded rollers' span
-        zone = float(np.max(np.abs(self.azimuth[loaded]))) if np.any(loaded) else 0.0
+        zone = self._tilted_load_zone(dr, th, first)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
         life = reference_rating_life(self.rating, self.pitch_diameter,
                                      self.roller_diameter, qi, qo, self.rotating)
@@ -1306,7 +1320,7 @@ class RadialRollerBearing:
                 "Newton steps (the rollers' tilt against a ring must stay below 0.1 "
                 "rad; a moment near the rollers' capacity, about F_r L/2, edge loads "
                 "them)")
-        return dr, th, c, inverse, sols, K, ks
+        return dr, th, c, inverse, sols, K, ks, first
 
     @staticmethod
     def _table_error(law, solvers, Fi, Qmax):

@@ -93,6 +93,19 @@ def test_zero_moment_reduces_to_the_radial_solve(iso_bearing):
     assert np.allclose(s1.roller_loads, s0.roller_loads, rtol=0,
                        atol=tol * s0.max_roller_load)
     assert np.allclose(K1, K0, rtol=tol, atol=1e-9 * K0[0, 0])
+    assert s1.load_zone == pytest.approx(s0.load_zone, abs=1e-4)  # 721-point grid
+
+
+def test_load_zone_with_clearance_and_tilt():
+    """With clearance and no tilt the tilted solve's load zone is Harris'
+    arccos(P_d/(2 delta_r)) (the crossing on a 721-point azimuth grid, linearly
+    interpolated: 1e-6 rad); a misalignment changes it only through delta_r and the
+    crowned roller's tilted first contact."""
+    b = RadialRollerBearing(12, 60e-3, 8e-3, 10e-3, 20e-6, profile="circular:Rc=0.3",
+                            n_slices=20)
+    s = b.solve(5e3, moment=0.0)
+    assert s.load_zone == pytest.approx(math.acos(20e-6 / (2 * s.displacement)),
+                                        abs=1e-6)
 
 
 def test_misalignment_shortens_the_life(iso_bearing):

@@ -1039,7 +1039,6 @@ class RadialRollerBearing:
         stress = _contact_stresses(si, so, self.poisson)
         notes.extend(stress["notes"])
         approach = dr * c - self.clearance / 2
-        loaded = Q > 0
         zone = self._tilted_load_zone(dr, th, first)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
         life = reference_rating_life(self.rating, self.pitch_diameter,
@@ -1232,7 +1231,7 @@ class RadialRollerBearing:
         tol_F = 1e-11 * F
         tol_M = 1e-11 * F * L
         K = None
-        for it in range(80):
+        for _ in range(80):
             delta = dr * cg - self.clearance / 2
             phi = th * cg
             if first is None:

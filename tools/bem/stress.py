@@ -25,8 +25,10 @@ functions of X, Y (the offsets from a corner) and rho = sqrt(X^2 + Y^2 + z^2):
     d2(H1)/dy2    :  atan(X Y (rho - z) / (Y^2 rho + X^2 z))
     d2(H1)/dxdy   :  ln(rho + z)
 
-(derived here by differentiating the corner primitives; psi1 is harmonic, which the
-three second derivatives satisfy identically). tests/test_stress_bem.py checks the
+(derived by differentiating the corner primitives; psi1 is harmonic, which the
+three second derivatives satisfy identically). The one home of these formulas is
+:func:`linecontact.stresses.rectangle_stresses` (the runtime's 3D correction uses
+them too); this module imports it. tests/test_stress_bem.py checks the
 result against a direct quadrature of Boussinesq's point-load stresses (Johnson 1985,
 Eq. 3.21), the surface value sigma_z = -p inside the rectangle, and the Hertz contact
 on its axis (Johnson Eq. 3.45).
@@ -54,77 +56,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from linecontact.stresses import rectangle_stresses
+
 from .halfspace import DCFFTOperator, wraparound_offsets
 
 COMPONENTS = ("sigma_x", "sigma_y", "sigma_z", "tau_xy", "tau_xz", "tau_yz")
 MEASURES = ("tresca", "von_mises", "orthogonal_shear")
-
-
-def _corner(X, Y, z):
-    """The nine corner functions at offsets (X, Y) from one corner, depth z > 0."""
-    X2, Y2, z2 = X * X, Y * Y, z * z
-    rho = np.sqrt(X2 + Y2 + z2)
-    XY = X * Y
-    xz = X2 + z2
-    yz = Y2 + z2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        hxx_den = X2 * rho + Y2 * z
-        hyy_den = Y2 * rho + X2 * z
-        hxx = np.where(hxx_den > 0, np.arctan(XY * (rho - z) / np.where(hxx_den > 0, hxx_den, 1)), 0.0)
-        hyy = np.where(hyy_den > 0, np.arctan(XY * (rho - z) / np.where(hyy_den > 0, hyy_den, 1)), 0.0)
-    return dict(
-        pz=-np.arctan(XY / (z * rho)),
-        pzz=XY * (rho * rho + z2) / (rho * xz * yz),
-        pxx=-XY / (rho * xz),
-        pyy=-XY / (rho * yz),
-        pxy=1.0 / rho,
-        pxz=-Y * z / (rho * xz),
-        pyz=-X * z / (rho * yz),
-        hxx=hxx, hyy=hyy,
-        hxy=np.log(rho + z))
-
-
-def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
-    """Stresses at (x, y, z) under unit pressure on a dx-by-dy rectangle centred at 0.
-
-    Parameters
-    ----------
-    x, y : array_like
-        Field point relative to the rectangle's centre [m].
-    z : float or array_like
-        Depth, z > 0 [m].
-    dx, dy : float
-        Rectangle sides [m].
-    poisson : float
-        Poisson's ratio of the half-space [-].
-
-    Returns
-    -------
-    dict
-        Component name (:data:`COMPONENTS`) -> stress per unit pressure [-]
-        (compression negative).
-    """
-    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
-    a, b, nu = 0.5 * dx, 0.5 * dy, float(poisson)
-    tot = None
-    for sx, X in ((1.0, x + a), (-1.0, x - a)):
-        for sy, Y in ((1.0, y + b), (-1.0, y - b)):
-            c = _corner(X, Y, z)
-            s = sx * sy
-            if tot is None:
-                tot = {k: s * v for k, v in c.items()}
-            else:
-                for k, v in c.items():
-                    tot[k] += s * v
-    t = tot
-    k = 1.0 / (2.0 * np.pi)
-    return dict(
-        sigma_x=k * (2 * nu * t["pz"] - z * t["pxx"] - (1 - 2 * nu) * t["hxx"]),
-        sigma_y=k * (2 * nu * t["pz"] - z * t["pyy"] - (1 - 2 * nu) * t["hyy"]),
-        sigma_z=k * (t["pz"] - z * t["pzz"]),
-        tau_xy=-k * ((1 - 2 * nu) * t["hxy"] + z * t["pxy"]),
-        tau_xz=-k * z * t["pxz"],
-        tau_yz=-k * z * t["pyz"])
 
 
 def point_load_stresses(x, y, z, poisson=0.3):

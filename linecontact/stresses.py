@@ -44,11 +44,17 @@ Along a roller: a straight or profiled roller solved by coupled slices
 the half-width b_k, so :math:`p_{0,k} = 2q_k/(\pi b_k)` and its field is the strip
 field scaled by p_{0,k} and b_k. The field is self-similar: the maxima are computed once
 per (mu, nu) on the unit strip (a grid search refined by a bounded optimiser) and
-scaled per slice, so the stresses of a whole roller cost microseconds. Near a crowned
-or tilted end the field is three-dimensional; the slice method's error there against a
-3D field (Love's rectangle stresses convolved with a 3D boundary-element pressure,
-tools/bem/stress.py) is measured in tables/stress_accuracy.csv
-(tools/studies/stress_study.py) and stated in each result's notes.
+scaled per slice, so the stresses of a whole roller cost microseconds. Where the load
+varies along the roller (a crown, a relief, a tilt) the field is three-dimensional and
+the strips are up to 5 % low; the worst of each measure therefore gets a 3D
+correction: below the worst slices, McEwen's strip of the slice plus the 3D field of
+the difference between the slices' Hertz pressures and that strip extended to
+infinity, from Love's uniformly loaded rectangles (:func:`rectangle_stresses`;
+Love 1929) on a grid of 24 cells across and one cell per slice along (one per slice
+and across beyond 8 b). Its error against a 3D field (Love's and Cerruti's rectangles
+below a 3D boundary-element pressure, tools/bem/stress.py) is measured in
+tables/stress_accuracy.csv (tools/studies/stress_study.py) and stated in each
+result's ``error`` and notes.
 
 Case-hardening check: the stress envelope against depth (the largest over y at each
 depth, since rolling sweeps every y past a material point) over the local allowable of
@@ -70,6 +76,8 @@ References
    (2008) 888-893.
 .. [5] ISO 2639:2002, Steels - Determination and verification of the depth of
    carburized and hardened cases (effective case depth at 550 HV).
+.. [6] A. E. H. Love, "The stress produced in a semi-infinite solid by pressure on
+   part of the boundary", Phil. Trans. R. Soc. A 228 (1929) 377-420.
 """
 from __future__ import annotations
 
@@ -691,7 +699,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     >>> sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     >>> s = roller_stresses(sol)
     >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa (strips: {s.strip_worst['tresca']['value'] / 1e6:.0f} MPa)"
-    '758 MPa (strips: 737 MPa)'
+    '759 MPa (strips: 737 MPa)'
 
     References
     ----------

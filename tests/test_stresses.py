@@ -272,3 +272,15 @@ def test_3d_correction_of_a_long_even_strip_is_its_end_effect():
     assert 0 < excess[1] < 2e-4
     assert excess[0] / excess[1] == pytest.approx(10.0, rel=0.05)
 
+
+
+def test_roller_result_carries_its_measured_error():
+    """Every roller result states the measured error of its kind of case (the table's
+    error field) or None with a note naming what lies outside the measured range."""
+    r = ProfiledRoller(5e-3, 14e-3, ESTAR, "iso16281")
+    s = roller_stresses(r.at_force(11200.0), roller=r)
+    assert s.error is not None and set(s.error) == set(MEASURES)
+    out = roller_stresses(r.at_force(11200.0, tilt=0.05), roller=r)
+    assert out.error is None and any("tilt" in n for n in out.notes)
+    with pytest.raises(OutOfRangeError, match=r"^friction = -0.2 "):
+        roller_stresses(r.at_force(11200.0), friction=-0.2)

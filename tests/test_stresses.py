@@ -284,3 +284,14 @@ def test_roller_result_carries_its_measured_error():
     assert out.error is None and any("tilt" in n for n in out.notes)
     with pytest.raises(OutOfRangeError, match=r"^friction = -0.2 "):
         roller_stresses(r.at_force(11200.0), friction=-0.2)
+
+
+def test_measured_hardness_above_the_maximum_is_refused():
+    """A measured hardness profile that stops above the stress maximum (its depths
+    are the check's grid) is refused in one line naming depths and the valid range,
+    never extrapolated."""
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    h = HardnessProfile(depths=[0, 0.02e-3, 0.04e-3], hardness=[700, 650, 600])
+    with pytest.raises(OutOfRangeError, match=r"^depths = 4e-05 m .*valid range") as e:
+        case_check(s, h)
+    assert "\n" not in str(e.value)

@@ -436,8 +436,11 @@ def _laminae(sol, length, n):
     interpolated at the lamina boundaries, so that the total load is kept."""
     x = np.asarray(sol.x, dtype=float)
     q = np.asarray(sol.q, dtype=float)
-    w = float(x[1] - x[0]) if len(x) > 1 else length
-    edges = np.concatenate([x - w / 2, [x[-1] + w / 2]])
+    if getattr(sol, "width", None) is not None:      # the slices' own (graded) widths
+        w = np.asarray(sol.width, dtype=float)
+    else:
+        w = np.full(x.shape, float(x[1] - x[0]) if len(x) > 1 else length)
+    edges = np.concatenate([x - w / 2, [x[-1] + w[-1] / 2]])
     cum = np.concatenate([[0.0], np.cumsum(q * w)])
     return np.diff(np.interp(np.linspace(-length / 2, length / 2, n + 1), edges, cum))
 

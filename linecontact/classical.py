@@ -1020,3 +1020,8 @@ def iso16281_force(depth, length, estar):
        reference rating life for universally loaded rolling bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -265,3 +265,60 @@ def test_an_implausible_bare_number_is_named_as_the_likely_cause(name, bare):
     argv = [a for k, v in {**base, name: bare + si}.items() for a in (f"--{k}", v)]
     status, out, err = _calc(argv + ["--model", "li-popov"])
     assert "likely cause" not in out + err
+
+
+# ---- the JSON header's model keys; the raceway contacts' geometry flags --------------
+
+@pytest.mark.parametrize("extra", [
+    [],                                              # plain contacts, L/R out of range
+    ["--profile", "circular:Rc=0.5"],                # composed contacts, refused laws
+    ["--inner-raceway", "20mm", "--outer-raceway", "30mm"],
+])
+def test_every_json_model_key_is_a_registry_key(extra):
+    """models[].key of the JSON header is the model's registry key (what get_model
+    takes), also for a model refused for the whole contact; the text as typed or the
+    label is in models[].label."""
+    import json
+
+    from linecontact.models import available_models
+
+    status, out, err = _calc(["--radius", "5mm", "--length", "200mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", "johnson:c=0.7,li-popov",
+                              "--json", *extra])
+    if not out:
+        pytest.skip(f"the combination is refused as a whole: {err}")
+    doc = json.loads(out)
+    keys = [m["key"] for m in doc["models"]]
+    assert keys and all(k in available_models() for k in keys), keys
+    assert all(m["label"] for m in doc["models"])
+
+
+@settings(max_examples=10, deadline=None)
+@given(load=st.floats(1e2, 1e6), length_mm=st.sampled_from([1.0, 3.0, 10.0]))
+def test_raceway_contacts_carry_the_geometry_flags(tmp_path_factory, load, length_mm):
+    """Each contact of a roller between raceways is flagged as a plain contact's row is:
+    d > 0.15 R (R its effective radius) and b > L/2 (b the Hertz half-width of its strip,
+    Li & Popov 2017 Eq. 1), named inner or outer; and only then."""
+    import json
+    import math
+
+    from linecontact.classical import hertz_half_width
+    from linecontact.raceway import Raceways
+
+    estar = 1e9
+    status, out, err = _calc(["--radius", "5mm", "--length", f"{length_mm}mm",
+                              "--estar", "1GPa", "--load", f"{load!r}",
+                              "--inner-raceway", "20mm", "--outer-raceway", "30mm",
+                              "--model", "johnson", "--json", "--si"])
+    doc = json.loads(out)
+    row = doc["models"][0]["rows"][0]
+    if row.get("depth_inner") is None:
+        return  # refused by the law: nothing to flag
+    L = length_mm * 1e-3
+    radii = dict(zip(("inner", "outer"), Raceways(20e-3, 30e-3).effective_radii(5e-3)))
+    for side, R in radii.items():
+        d = row[f"depth_{side}"]
+        b = float(hertz_half_width(load, R, L, estar))
+        assert (f"d > 0.15 R ({side})" in row["flags"]) == (d / R > 0.15), row["flags"]
+        assert (f"b > 0.5 L ({side})" in row["flags"]) == (b / L > 0.5), row["flags"]
+    assert math.isfinite(row["roller_deflection"])

@@ -69,9 +69,9 @@ P0_NOTE = ("p0: Hertz peak pressure of the plane-strain strip, p0 = sqrt(F E*/(p
 class Refused:
     """Stands in for a model that refused the cylinder when it was built."""
 
-    def __init__(self, text, exc):
-        self.key = text
-        self.label = text
+    def __init__(self, text, exc, key=None):
+        self.key = key or text  # the registry key (the JSON entry's "key"); the text
+        self.label = text       # as typed is its label
         self.provenance = None
         self.exc = exc
 
@@ -214,7 +214,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
         try:
             chosen.append(models.get_model(key, R, L, E, **options))
         except OutOfRangeError as exc:  # refused for this cylinder: a row with a note
-            chosen.append(Refused(text, exc))
+            chosen.append(Refused(text, exc, key))
         except (TypeError, UnknownNameError) as exc:  # an option the model does not take
             raise InputError(
                 "--model", text, "options the model takes (see its docstring)", str(exc)
@@ -706,7 +706,7 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
         try:
             c = _build_contact(parts, key, options)
         except (CombinationError, OutOfRangeError) as exc:
-            sets.append((Refused(text, exc), None))
+            sets.append((Refused(text, exc, key), None))
             continue
         sets.append((c, text))
     refs = None
@@ -756,7 +756,7 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         try:
             obj.check_applicable()  # refused for the whole cylinder: one message
         except OutOfRangeError as exc:
-            obj = Refused(obj.label, exc)
+            obj = Refused(obj.label, exc, obj.key)
     refused = isinstance(obj, Refused)
     if refused:
         model, label = None, obj.label
@@ -846,7 +846,9 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
         first = item[0]  # the model as built (its provenance even where it refused)
         if not isinstance(first, Refused) and item[1] is not None:
             first = _Entry(first, label)  # a composed contact: its model's entry
-        if not isinstance(first, Refused):
+        if isinstance(first, Refused):
+            s.setdefault("key", first.key)  # a refused model: its registry key
+        else:
             mid = model_id(first)
             if mid not in results.models:
                 results.models[mid] = first

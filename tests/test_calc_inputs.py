@@ -322,3 +322,29 @@ def test_raceway_contacts_carry_the_geometry_flags(tmp_path_factory, load, lengt
         assert (f"d > 0.15 R ({side})" in row["flags"]) == (d / R > 0.15), row["flags"]
         assert (f"b > 0.5 L ({side})" in row["flags"]) == (b / L > 0.5), row["flags"]
     assert math.isfinite(row["roller_deflection"])
+
+
+@pytest.mark.parametrize("flags", [[], ["--si"], ["--model", "johnson:c=0.72,universal"]])
+def test_a_rerun_round_trip_gives_the_same_results_and_says_so(tmp_path, flags):
+    """calc in.csv -o out.csv; calc out.csv -o out2.csv: out2 holds out's columns exactly
+    as they were, then this run's results under the prefix result_, cell for cell equal
+    to out's results (the earlier results are not read as inputs: nothing changes),
+    and stderr says in one line which columns are results of the earlier run."""
+    src, out1, out2 = tmp_path / "in.csv", tmp_path / "out.csv", tmp_path / "out2.csv"
+    src.write_text("radius,length,modulus,poisson,load,profile,part\n"
+                   "5mm,10mm,210GPa,0.3,1kN,,a\n"
+                   "5mm,10mm,210GPa,0.3,2kN,circular:Rc=0.5,b\n"
+                   "5mm,10mm,210GPa,0.3,-1kN,,c\n")
+    s1, _, err1 = _calc([str(src), "-o", str(out1), *flags])
+    s2, _, err2 = _calc([str(out1), "-o", str(out2), *flags])
+    assert s1 == s2 and "note" not in err1
+    notes = [ln for ln in err2.splitlines() if "results of an earlier run" in ln]
+    assert len(notes) == 1 and "result_" in notes[0], err2
+    first = list(csv.reader(io.StringIO(out1.read_text())))
+    second = list(csv.reader(io.StringIO(out2.read_text())))
+    n_in = 7
+    width = len(first[0])
+    assert [r[:width] for r in second] == first, "out.csv's columns written back as read"
+    assert second[0][width:] == ["result_" + h for h in first[0][n_in:]]
+    assert [r[width:] for r in second[1:]] == [r[n_in:] for r in first[1:]], \
+        "the same results a second time"

@@ -977,7 +977,16 @@ class UniversalModel(ContactModel):
             return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
                     "in for the circle only for d << R (extrapolate=True accepts depths up "
                     f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
-        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+        # the table's end in d/R is set by the geometry: d/R = d~_max (L/R)^2
+        lr = self.length / self.radius
+        full = (DEPTH_OVER_RADIUS.high / self.curve.d_max) ** 0.5
+        text = f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+        if lr >= full:
+            return text
+        return (f"{text}; the cause is the geometry: L/R = {lr:.4g} puts the table's end "
+                f"at d/R = {self.curve.d_max:g} (L/R)^2 = {self.curve.d_max * lr * lr:.3g} "
+                f"(the table covers d/R up to {DEPTH_OVER_RADIUS.high:g} for "
+                f"L/R >= {full:.3g})")
 
     def _dt(self, depth):
         d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",

@@ -305,3 +305,30 @@ def test_keyword_catch_alls_name_the_keyword_too(call):
 
     with pytest.raises(UnknownKeywordError, match="did you mean 'c'"):
         call()
+
+
+# ---- a geometry outside a table's or formula's range is named as the cause ----------
+
+@settings(max_examples=40, deadline=None)
+@given(st.sampled_from(["universal", "puttock-thwaite", "li-popov"]),
+       st.floats(-4.0, 4.0), st.floats(-6.0, -0.83))
+def test_a_refusal_caused_by_the_geometry_names_l_over_r(key, log_lr, log_d):
+    """A depth within the models' parabolic-gap range (d/R < 0.15) that a model refuses
+    is refused because of the geometry (the universal table's end d R/L^2 = 30, Eq. 2's
+    largest depth L^2/R, Li-Popov's table of L/R): the message names L/R, its value and
+    the range that would be covered, not only the depth."""
+    import re
+
+    from linecontact.validity import OutOfRangeError
+
+    R = 5e-3
+    L = R * 10 ** log_lr
+    m = get_model(key, R, L, 115e9)
+    try:
+        m.force(R * 10 ** log_d)
+    except OutOfRangeError as exc:
+        msg = str(exc)
+        found = re.search(r"L/R = ([0-9.e+-]+)", msg)
+        assert found, msg
+        assert float(found.group(1)) == pytest.approx(L / R, rel=1e-3), msg
+        assert re.search(r"L/R >= [0-9.]|\[[0-9.]+, [0-9.]+\]", msg), msg

@@ -348,3 +348,12 @@ def test_a_rerun_round_trip_gives_the_same_results_and_says_so(tmp_path, flags):
     assert second[0][width:] == ["result_" + h for h in first[0][n_in:]]
     assert [r[width:] for r in second[1:]] == [r[n_in:] for r in first[1:]], \
         "the same results a second time"
+
+
+def test_a_geometry_outside_the_table_is_named_in_the_row():
+    """The command line's note for a roller too short for the universal table (L/R =
+    0.002: the table ends at d/R = 30 (L/R)^2) names L/R and the covered range, beside
+    the option as typed."""
+    status, out, err = _calc(["--radius", "5mm", "--length", "0.01mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", "universal"])
+    assert "--load = '1kN'" in out and "L/R = 0.002" in out and "L/R >= 0.0707" in out, out

@@ -357,3 +357,39 @@ def test_a_geometry_outside_the_table_is_named_in_the_row():
     status, out, err = _calc(["--radius", "5mm", "--length", "0.01mm", "--estar", "115GPa",
                               "--load", "1kN", "--model", "universal"])
     assert "--load = '1kN'" in out and "L/R = 0.002" in out and "L/R >= 0.0707" in out, out
+
+
+def _value_options():
+    """(subcommand, option string) of every option that takes a value."""
+    import argparse
+
+    from linecontact.calc.cli import build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    out = []
+    for name, p in sub.choices.items():
+        for a in p._actions:
+            if a.option_strings and a.nargs is None and not isinstance(
+                    a, (argparse._StoreTrueAction, argparse._StoreFalseAction,
+                        argparse._HelpAction)):
+                out.append((name, a.option_strings[-1]))
+    return out
+
+
+VALUE_OPTIONS = _value_options()
+
+
+@pytest.mark.parametrize("command,option", VALUE_OPTIONS,
+                         ids=[f"{c}{o}" for c, o in VALUE_OPTIONS])
+def test_an_option_given_twice_is_refused_naming_both_values(command, option, capsys):
+    """argparse keeps the last of two occurrences silently (`--load 1kN ... --load 2kN`
+    computed 2 kN): every option that takes a value, of every subcommand, refuses a
+    second occurrence on one line naming the option and both values (status 2)."""
+    try:
+        status = main([command, option, "aa1", option, "bb2"])
+    except SystemExit as exc:
+        status = exc.code
+    err = capsys.readouterr().err
+    assert status == 2
+    assert f"{option} is given twice ('aa1' and 'bb2')" in err and err.count("\n") == 1, err

@@ -393,3 +393,101 @@ def test_an_option_given_twice_is_refused_naming_both_values(command, option, ca
     err = capsys.readouterr().err
     assert status == 2
     assert f"{option} is given twice ('aa1' and 'bb2')" in err and err.count("\n") == 1, err
+
+
+# ---- an audit over the options and CSV columns (the issue's 138 inputs, as a class) ----
+
+#: Values per kind of input: valid ones, units of another quantity or case, signs,
+#: zero, inf, NaN, overflow, subnormal, words, sweeps.
+_FUZZ_VALUES = {
+    "length": ["5mm", "20mm", "0.2in", "1e-3", "-5mm", "0", "inf", "nan", "5MM", "5 kg",
+               "abc", "", "1e400", "1e-320", "5mm:1mm:3"],
+    "pressure": ["210GPa", "3GPa", "1e9", "-1GPa", "0", "inf", "nan", "210", "1kN"],
+    "dimensionless": ["0.3", "0.5", "0.6", "-0.1", "0", "nan", "1", "0.2:0.4:3"],
+    "force": ["1kN", "100N", "0", "-1kN", "nan", "inf", "1e9", "1mN", "5mm", "1kN:2kN:3"],
+    "angle": ["0", "1mrad", "0.5", "free", "-1mrad", "nan", "5deg"],
+    "text": ["circular:Rc=0.5", "iso16281", "cone", "circular", "circular:Rc=-1", "yes",
+             "von_mises", "all", ""],
+    "time": ["10s", "0", "-1s", "1h", "nan", "1:10:3"],
+    "path": ["/nonexistent/x.csv", ""],
+    "surface_energy": ["0.05", "-1", "0", "nan"],
+}
+
+
+def _audit(status, out, err, csv_out, inputs=()):
+    """The audit's rules: a status of 0 or 2; stderr holds only the calculator's own
+    one-line messages; no result cell says nan or inf (the input cells are written back
+    as they were); a computed row without a force or depth has a note, a flag or an
+    error saying why."""
+    assert status in (0, 2), (status, err)
+    for line in err.splitlines():
+        assert line.startswith("linecontact calc:"), err
+    if not csv_out or not out:
+        assert "nan" not in out.lower().split(), out
+        return
+    for row in _rows(out):
+        cells = {k: (v or "").strip() for k, v in row.items() if k and k not in inputs}
+        assert not any(v.lower() in ("nan", "inf", "-inf") for v in cells.values()), row
+        if cells.get("error"):
+            continue
+        has_value = any(v for k, v in cells.items()
+                        if k.startswith(("depth_", "force_")) and not k.startswith(
+                            ("depth_inner", "depth_outer", "depth_long")))
+        said = any(v for k, v in cells.items() if k.startswith(("note", "flags")))
+        assert has_value or said, row
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.data())
+def test_audit_of_random_options(data):
+    """Random options (1-3 of every calculator input, with the values above) on a valid
+    steel case, with --json, --si, --model: never a traceback, a status other than 0 or
+    2, a stray stderr line or a nan printed."""
+    from linecontact.calc.cases import PARAMETERS
+
+    argv = ["--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson",
+            "0.3"]
+    argv += data.draw(st.sampled_from([["--load", "1kN"], ["--depth", "2um"]]))
+    given_ = {"radius", "length", "modulus", "poisson", "load", "depth"}
+    extra = data.draw(st.lists(st.sampled_from([p for p in PARAMETERS
+                                                if p.name not in given_]),
+                               min_size=1, max_size=3, unique_by=lambda p: p.name))
+    for p in extra:
+        argv += [option_name_of(p.name), data.draw(st.sampled_from(_FUZZ_VALUES[p.kind]))]
+    argv += data.draw(st.sampled_from([[], ["--si"], ["--model", "all"],
+                                       ["--model", "johnson,universal"]]))
+    status, out, err = _calc(argv)
+    _audit(status, out, err, csv_out=False)
+
+
+def option_name_of(name):
+    return "--" + name.replace("_", "-")
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.data())
+def test_audit_of_random_csv_columns(tmp_path_factory, data):
+    """Random CSV batches (a steel case's columns plus 1-3 other input columns, 1-4 rows
+    of random values): the same rules, and every row of the output either computed,
+    said (note, flags) or refused in its error cell."""
+    from linecontact.calc.cases import PARAMETERS
+
+    byname = {p.name: p for p in PARAMETERS}
+    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
+            "load": "1kN", "depth": "2um"}
+    cols = ["radius", "length", "modulus", "poisson",
+            data.draw(st.sampled_from(["load", "depth"]))]
+    cols += [p.name for p in data.draw(st.lists(
+        st.sampled_from([p for p in PARAMETERS if p.name not in base]),
+        min_size=1, max_size=3, unique_by=lambda p: p.name))]
+    rows = [[data.draw(st.sampled_from([base[c]] * 3 + _FUZZ_VALUES[byname[c].kind][:4]))
+             if c in base else data.draw(st.sampled_from(_FUZZ_VALUES[byname[c].kind]))
+             for c in cols] for _ in range(data.draw(st.integers(1, 4)))]
+    path = tmp_path_factory.mktemp("audit") / "cases.csv"
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(cols)
+        w.writerows(rows)
+    status, out, err = _calc([str(path), *data.draw(st.sampled_from(
+        [[], ["--si"], ["--model", "johnson,universal"]]))])
+    _audit(status, out, err, csv_out=True, inputs=set(cols))

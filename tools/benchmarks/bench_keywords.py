@@ -4,7 +4,8 @@ Every public callable of the library is wrapped so that an unknown keyword names
 valid ones; the wrapper forwards the call inside a ``try``. This script times the same
 calls with the guards in place and with every guard removed (each wrapper replaced by
 the function it wraps, in every loaded linecontact module and class), interleaved in
-one process, and prints the paired ratios (median of ``--repeat`` pairs):
+one process, and prints the paired ratios of CPU time (``time.process_time``, so that a
+shared machine's load does not count; median of ``--repeat`` pairs):
 
 - one scalar call of ``classical.johnson_depth`` (one guard);
 - one scalar ``force`` and ``depth`` of the default (universal) model (the method's
@@ -66,7 +67,7 @@ def _set(swaps, guarded):
 
 
 def per_call(stmt, number):
-    return min(timeit.repeat(stmt, number=number, repeat=3)) / number
+    return timeit.timeit(stmt, number=number, timer=time.process_time) / number
 
 
 def main(argv=None):
@@ -88,16 +89,16 @@ def main(argv=None):
     ns = {"__all__": ["noop"], "noop": noop}
     refuse_unknown_keywords(ns)
     guarded_noop = ns["noop"]
-    t_plain = statistics.median(per_call(lambda: noop(1.0), 200000) for _ in range(5))
+    t_plain = statistics.median(per_call(lambda: noop(1.0), 200000) for _ in range(7))
     t_guard = statistics.median(per_call(lambda: guarded_noop(1.0), 200000)
-                                for _ in range(5))
+                                for _ in range(7))
     print(f"# the wrapper alone (a no-op function): {t_plain * 1e9:.0f} ns plain, "
           f"{t_guard * 1e9:.0f} ns guarded: {(t_guard - t_plain) * 1e9:+.0f} ns a call")
     swaps = _swaps()
     cases = {
-        "johnson_depth scalar": (lambda: classical.johnson_depth(1e3, R, L, ESTAR), 20000),
-        "universal force scalar": (lambda: model.force(d0), 5000),
-        "universal depth scalar": (lambda: model.depth(1e3), 5000),
+        "johnson_depth scalar": (lambda: classical.johnson_depth(1e3, R, L, ESTAR), 300),
+        "universal force scalar": (lambda: model.force(d0), 300),
+        "universal depth scalar": (lambda: model.depth(1e3), 100),
         f"johnson_depth n={args.n:g}": (lambda: classical.johnson_depth(forces, R, L,
                                                                         ESTAR), 1),
         f"universal force n={args.n:g}": (lambda: model.force(depths), 1),

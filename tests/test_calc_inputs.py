@@ -491,3 +491,18 @@ def test_audit_of_random_csv_columns(tmp_path_factory, data):
     status, out, err = _calc([str(path), *data.draw(st.sampled_from(
         [[], ["--si"], ["--model", "johnson,universal"]]))])
     _audit(status, out, err, csv_out=True, inputs=set(cols))
+
+
+@pytest.mark.parametrize("spec,says", [
+    ("johnson:c=0.7:c=0.8", "option 'c' is given twice"),
+    ("li-popov:extrapolate=yes:extrapolate=no", "option 'extrapolate' is given twice"),
+    ("johnsen", "did you mean 'johnson'?"),
+    ("johnson:cc=0.7", "did you mean 'c'?"),
+    ("johnson:C=0.7", "did you mean 'c'?"),
+])
+def test_a_model_option_twice_or_misspelt_is_refused(spec, says):
+    """--model KEY:OPT=V:OPT=W kept the last value silently (as argparse does for an
+    option given twice): refused; a misspelt model or option names the close match."""
+    status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", spec])
+    assert status == 2 and says in err and err.count("\n") == 1, err

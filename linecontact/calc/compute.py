@@ -111,9 +111,13 @@ def parse_model_option(spec):
         if key not in models.MODELS:
             from .._units import QUANTITY
 
+            import difflib
+
+            close = difflib.get_close_matches(key, models.available_models(), n=1)
             raise InputError("--model", spec if QUANTITY.match(text) else text, valid,
                              "a decimal comma in an option? (write c=1.5, not c=1,5)"
-                             if QUANTITY.match(text) else "unknown model")
+                             if QUANTITY.match(text) else "unknown model" + (
+                                 f"; did you mean {close[0]!r}?" if close else ""))
         defaults = _option_defaults(models.MODELS[key])
         options = {}
         for opt in opts:
@@ -122,10 +126,18 @@ def parse_model_option(spec):
             if not eq or not name:
                 raise InputError("--model", text, valid, f"option {opt!r} is not OPTION=VALUE")
             if name not in defaults:
+                import difflib
+
+                close = [n for n in defaults if n.lower() == name.lower()] or \
+                    difflib.get_close_matches(name, list(defaults), n=1)
                 raise InputError(
                     "--model", text,
                     f"options of {key}: {', '.join(defaults) or 'none'}",
-                    f"unknown option {name!r}")
+                    f"unknown option {name!r}"
+                    + (f"; did you mean {close[0]!r}?" if close else ""))
+            if name in options:  # the last would silently win
+                raise InputError("--model", text, f"each option of {key} once",
+                                 f"option {name!r} is given twice")
             options[name] = _option_value(f"--model {key}:{name}", value.strip(),
                                           defaults[name],
                                           _option_kind(models.MODELS[key], name))

@@ -781,7 +781,7 @@ def _left_range(model, times, equivalent, exc):
             hint = "; ".join(h for h in (one.hint, "the creep depth d(t) leaves the "
                                          f"model's range at t = {tk:.6g} s") if h)
             return OutOfRangeError(one.parameter, one.value, one.valid, unit=one.unit,
-                                   where=f"the elastic-equivalent force at t = {tk:.6g} s",
+                                   where=f"at t = {tk:.6g} s",
                                    hint=hint)
     return exc
 

@@ -1333,3 +1333,8 @@ class RadialRollerBearing:
         Fm = math.sqrt(Fi[i] * Fi[i + 1])
         si, so = solvers[0](Fm), solvers[1](Fm)
         return abs(float(law.delta_of(Fm)) / (si.depth + so.depth) - 1.0)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

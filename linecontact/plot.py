@@ -489,3 +489,8 @@ def creep(result, *, ax=None):
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=7, loc="lower right")
     return fig
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -967,10 +967,19 @@ class UniversalModel(ContactModel):
             return DEPTH_OVER_RADIUS.high * self.radius
         return self.curve.d_max * self._dscale
 
+    def _psi_end(self):
+        """Psi at :attr:`depth_limit`, remembered for the current geometry (every d(F)
+        call needs it twice; a spline evaluation with its range check each time)."""
+        key = (self.radius, self.length, self.extrapolate, self.curve)
+        if getattr(self, "_psi_end_key", None) != key:
+            self._psi_end_value = float(self.curve.psi(self.depth_limit / self._dscale))
+            self._psi_end_key = key
+        return self._psi_end_value
+
     @property
     def force_limit(self):
         """Force at :attr:`depth_limit` [N]."""
-        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
+        return self._psi_end() * self._fscale
 
     def _limit_hint(self):
         if self._radius_limited:
@@ -988,7 +997,7 @@ class UniversalModel(ContactModel):
         F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
                            hint=self._limit_hint())
         # F <= force_limit was checked; F/scale may still round above psi_max at the end
-        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
+        return np.minimum(F / self._fscale, self._psi_end())
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""

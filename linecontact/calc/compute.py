@@ -630,12 +630,26 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     results.deviation = n_sets > 1 or reference
     whole = cases.whole()
     produced = {}
+    # the default model alone on plain contacts (no feature): all rows as arrays over
+    # their geometry at once (ContactModel.evaluate_many), the groups only registered
+    fast = None
+    if default_key is not None and not active and not parts_of and not reference:
+        fast = _evaluate_many(results, cases, rows, default_key)
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
         done = 0
         for g in groups:
             i0 = g[0]
+            if fast is not None and fast[g].all():
+                if not results.sets[0].get("named"):  # the first group's model, as below
+                    _register(results, _build(specs, cases.radius_eff[i0],
+                                              cases.length[i0], cases.estar[i0],
+                                              first_only, default_key)[0])
+                done += len(g)
+                if progress is not None and (done == len(rows) or len(g) > 1000):
+                    progress(done)
+                continue
             try:
                 if i0 in parts_of:
                     sets, refs = _composed_sets(cases, i0, parts_of[i0], specs,
@@ -675,6 +689,72 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     for f, st in active:
         results.blocks += f.blocks(st, results)
     return results
+
+
+def _register(results, model):
+    """Name the single column set after its first model (as _evaluate_group does)."""
+    s = results.sets[0]
+    s["id"] = model_id(model)
+    s["named"] = True
+    results.models.setdefault(s["id"], model)
+    if s.get("model") is None:
+        s["model"] = model
+
+
+def _evaluate_many(results, cases, rows, key):
+    """The single default model on the plain rows `rows`, as arrays over their geometry
+    (one call, no model object per cylinder): writes the rows it covers into the
+    first column set exactly as _evaluate_group would (the same values: the model's own
+    operations element by element) and returns a bool array over all rows marking them,
+    or None when the model has no such evaluation. Rows outside the model's range are
+    left to the per-contact path (their notes name the contact)."""
+    from ..models import MODELS
+
+    label = getattr(MODELS[key], "label", None)
+    if not isinstance(label, str):   # a label that depends on the options
+        return None
+    n = len(results.errors)
+    done = np.zeros(n, bool)
+    if not rows.size:
+        return done
+    R, L, E = cases.radius_eff[rows], cases.length[rows], cases.estar[rows]
+    given, values = cases.given[rows], cases.value[rows]
+    r = {k: np.full(rows.size, np.nan) for k in _NORMAL}
+    covered = np.zeros(rows.size, bool)
+    for which in ("load", "depth"):
+        sel = np.flatnonzero(given == which)
+        if not sel.size:
+            continue
+        got = MODELS[key].evaluate_many(R[sel], L[sel], E[sel],
+                                        **{("force" if which == "load" else "depth"):
+                                           values[sel]})
+        if got is None:
+            return None
+        res, ok = got
+        for k, v in res.items():
+            r[k][sel] = v
+        covered[sel] = ok
+    if not covered.any():
+        return done
+    keep = np.flatnonzero(covered)
+    rows = rows[keep]
+    r = {k: v[keep] for k, v in r.items()}
+    _hertz(r, R[keep], L[keep], E[keep])
+    s = results.sets[0]
+    s["label"][rows] = label
+    f = s["fields"]
+    for name, arr in r.items():
+        if name not in f:
+            f[name] = np.full(n, np.nan)
+        f[name][rows] = arr
+    Rk, Lk = R[keep], L[keep]
+    with np.errstate(invalid="ignore"):
+        odd = ((r["depth"] / Rk > DEPTH_OVER_RADIUS_MAX)
+               | (r["half_width"] / Lk > HALF_WIDTH_OVER_LENGTH_MAX))
+    for j in np.flatnonzero(odd):
+        s["flags"][rows[j]] = flag_text(r["depth"][j], r["half_width"][j], Rk[j], Lk[j])
+    done[rows] = True
+    return done
 
 
 def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, composed,

@@ -184,7 +184,8 @@ class _FlatRows:
         if not lines:
             return None
         commas = lines[0].count(",")
-        if not all(ln.count(",") == commas for ln in lines):
+        counts = list(map(str.count, lines, [","] * len(lines)))   # C-level
+        if counts.count(commas) != len(counts):
             return None
         return cls(",".join(lines).split(","), commas + 1)
 
@@ -441,7 +442,7 @@ def _result_cells(getters):
             kinds.append(kind)
         else:
             first = data[0] if n else ""
-            if n and all(t == first for t in data):
+            if n and list(data).count(first) == n:
                 parts.append(_quote(str(first)).replace("%", "%%"))
                 continue
             cache = {}

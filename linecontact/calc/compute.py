@@ -588,14 +588,6 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
                     col(np.where(P["modulus2"], v["modulus2"], np.nan)),
                     col(np.where(P["poisson2"], v["poisson2"], np.nan))], axis=1)
     rows = np.flatnonzero(ok)
-    if rows.size:
-        k = key[rows]
-        order = np.lexsort(k.T[::-1])  # rows of one contact become neighbours
-        ks = k[order]
-        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
-        groups = np.split(rows[order], bounds)
-    else:
-        groups = []
     from ..models import DEFAULT_MODEL
 
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
@@ -635,21 +627,27 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     fast = None
     if default_key is not None and not active and not parts_of and not reference:
         fast = _evaluate_many(results, cases, rows, default_key)
+    if fast is not None and fast.any():
+        i0 = np.flatnonzero(fast)[0]
+        _register(results, _build(specs, cases.radius_eff[i0], cases.length[i0],
+                                  cases.estar[i0], first_only, default_key)[0])
+        rows = rows[~fast[rows]]          # the rest: per contact, below
+        if progress is not None:
+            progress(int(fast.sum()))
+    if rows.size:
+        k = key[rows]
+        order = np.lexsort(k.T[::-1])  # rows of one contact become neighbours
+        ks = k[order]
+        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
+        groups = np.split(rows[order], bounds)
+    else:
+        groups = []
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
-        done = 0
+        done = 0 if fast is None else int(fast.sum())
         for g in groups:
             i0 = g[0]
-            if fast is not None and fast[g].all():
-                if not results.sets[0].get("named"):  # the first group's model, as below
-                    _register(results, _build(specs, cases.radius_eff[i0],
-                                              cases.length[i0], cases.estar[i0],
-                                              first_only, default_key)[0])
-                done += len(g)
-                if progress is not None and (done == len(rows) or len(g) > 1000):
-                    progress(done)
-                continue
             try:
                 if i0 in parts_of:
                     sets, refs = _composed_sets(cases, i0, parts_of[i0], specs,

@@ -626,7 +626,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     # their geometry at once (ContactModel.evaluate_many), the groups only registered
     fast = None
     if default_key is not None and not active and not parts_of and not reference:
-        fast = _evaluate_many(results, cases, rows, default_key)
+        try:
+            fast = _evaluate_many(results, cases, rows, default_key)
+        except Exception:  # noqa: BLE001 - the per-contact path isolates it to its rows
+            fast = None
     if fast is not None and fast.any():
         i0 = np.flatnonzero(fast)[0]
         _register(results, _build(specs, cases.radius_eff[i0], cases.length[i0],

@@ -2,6 +2,12 @@
 per-row quantities derived from them (Hertz half-width and peak pressure, geometry
 flags, deviation from the best estimate), and the columns of the active features.
 
+A default batch (the default model alone, no feature, plain contacts) is evaluated
+in one call over all rows, as arrays over their geometry
+(:meth:`linecontact.models.ContactModel.evaluate_many`: the same values as one model
+per contact); the rows it does not cover (outside the model's range) and every other
+case follow the per-contact path below.
+
 Cases (:func:`linecontact.calc.cases.parse_cases`) are grouped by distinct contact
 (effective radius, length, E*): one model object per group and model, each evaluated
 once per group on the array of its loads or depths with

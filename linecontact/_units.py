@@ -55,6 +55,7 @@ DIMENSIONS = {
     "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
     "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
+    "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12Nm, 1.5kNm, 12"),
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
@@ -145,7 +146,11 @@ BUILTIN_UNITS = {
     "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
     "surface_energy": {"J/m^2": 1.0, "mJ/m^2": 1e-3, "uJ/m^2": 1e-6, "N/m": 1.0,
                        "mN/m": 1e-3},
+    "moment": {"Nm": 1.0, "kNm": 1e3, "Nmm": 1e-3, "MNm": 1e6},
 }
+#: Built-in names that pint spells otherwise (pint reads 'Nm' as number-metre): the
+#: expression pint gives the same factor for (held by a test).
+PINT_SPELLING = {"Nm": "N*m", "kNm": "kN*m", "Nmm": "N*mm", "MNm": "MN*m"}
 
 
 def _a(kind):
@@ -192,7 +197,8 @@ def _unit_factor(unit, kind):
 
 #: Typical size of each kind in SI, to order the suggestions of :func:`_did_you_mean`
 #: (the unit nearest to it first: 'MM' -> 'mm' before 'Mm').
-_TYPICAL = {"length": 1e-3, "force": 1e3, "pressure": 1e9, "angle": 1e-3, "time": 1.0}
+_TYPICAL = {"length": 1e-3, "force": 1e3, "pressure": 1e9, "angle": 1e-3, "time": 1.0,
+            "moment": 1.0}
 
 
 def _did_you_mean(unit, kind):

@@ -41,6 +41,20 @@ for the rating life are interpolated between the tabulated load distributions (i
 :math:`\ln Q`), and the table's interpolation error is reported
 (:attr:`BearingSolution.law_error`).
 
+Tilting moment and misalignment
+-------------------------------
+A tilt theta of the inner ring in the load plane adds :math:`\theta x\cos\psi_j` to
+roller j's approach along its axis x: the rings are misaligned by
+:math:`\phi_j = \theta\cos\psi_j` at roller j, which is free to tilt between its two
+slice contacts (force and moment balance, :mod:`linecontact.raceway`) and carries
+:math:`Q_j, M_j`; the ring carries :math:`F_r = \sum Q_j\cos\psi_j`,
+:math:`M = \sum M_j\cos\psi_j`. Given M, (delta_r, theta) are solved (2 DOF); given
+theta, delta_r (1 DOF). One Newton iteration on all unknowns (each distinct roller's
+inner depth and tilt, and the ring's) with the slice model's exact 2x2 contact
+matrices; the bearing's stiffness matrix is
+:math:`K = \sum_j \cos^2\psi_j\,(K_{in}^{-1} + K_{out}^{-1})^{-1}`
+= d(F_r, M)/d(delta_r, theta), exact for the discrete equations (docs/bearings.md).
+
 Stribeck's result
 -----------------
 For :math:`Q = K\delta^n` and the load-zone parameter
@@ -73,6 +87,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .profiles import TILT_RANGE
 from .raceway import Raceways, effective_radii, roller_between_raceways
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
                        check_interval, check_positive)
@@ -415,6 +430,45 @@ def _fits(Dpw, Dwe):
                                    "(the inner raceway diameter d_m - D is positive)")
 
 
+def _laminae(sol, length, n):
+    """Lamina loads [N] of a slice solution on n equal laminae over the roller length:
+    the slices' cumulative load (each slice's q_k w spread evenly over its width)
+    interpolated at the lamina boundaries, so that the total load is kept."""
+    x = np.asarray(sol.x, dtype=float)
+    q = np.asarray(sol.q, dtype=float)
+    w = float(x[1] - x[0]) if len(x) > 1 else length
+    edges = np.concatenate([x - w / 2, [x[-1] + w / 2]])
+    cum = np.concatenate([[0.0], np.cumsum(q * w)])
+    return np.diff(np.interp(np.linspace(-length / 2, length / 2, n + 1), edges, cum))
+
+
+def _worst_of(fields):
+    """The largest value of each stress measure over named contacts' stress results
+    (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
+    "notes": [...]}."""
+    from .stresses import MEASURES
+
+    worst = {}
+    for m in MEASURES:
+        name, st = max(fields.items(), key=lambda kv: kv[1].worst[m]["value"])
+        w = st.worst[m]
+        worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
+                    "x": float(w["x"]), "contact": name}
+    notes = []
+    for name, st in fields.items():
+        notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
+    return {"worst": worst, "notes": notes}
+
+
+def _contact_stresses(si, so, poisson):
+    """Subsurface stress maxima of one roller's two slice contacts
+    (:func:`linecontact.stresses.roller_stresses`, no traction)."""
+    from .stresses import roller_stresses
+
+    return _worst_of({"inner": roller_stresses(si, poisson=poisson),
+                      "outer": roller_stresses(so, poisson=poisson)})
+
+
 @dataclass(frozen=True)
 class BearingSolution:
     """The loaded bearing: roller loads, ring displacement, load zone, stiffness, life.
@@ -436,7 +490,9 @@ class BearingSolution:
     roller_stiffness : ndarray
         dQ/d delta of each roller (0 when unloaded) [N/m].
     stiffness : ndarray
-        Bearing stiffness matrix [[K_rr]] = dF_r/d delta_r [N/m].
+        Bearing stiffness matrix: [[K_rr]] = dF_r/d delta_r [N/m] under a law; under a
+        slice model the 2x2 d(F_r, M)/d(delta_r, theta), [[K_rr, K_rt], [K_tr, K_tt]]
+        [N/m, N/rad; N, N m/rad].
     max_roller_load : float
         Largest Q_j [N].
     load_zone : float
@@ -464,6 +520,22 @@ class BearingSolution:
         The contact law or slice model.
     notes : tuple of str
         What the user should know about this solution.
+    moment : float
+        Tilting moment M = sum M_j cos psi_j on the inner ring (the applied one, or the
+        one a given misalignment needs) [N m].
+    tilt : float
+        Tilt theta of the inner ring against the outer ring in the load plane [rad].
+    roller_moments : ndarray
+        Moment M_j of each roller's inner-contact load about the roller's centre [N m].
+    roller_tilts : ndarray
+        Each roller's tilt against the inner ring (free: its moments balance) [rad].
+    roller_misalignment : ndarray
+        The rings' relative tilt at each roller, theta cos psi_j [rad].
+    stress : dict
+        Subsurface stress maxima at the most loaded roller, worst of its two contacts,
+        per measure (``"tresca"``, ``"von_mises"``, ``"orthogonal_shear"``): value [Pa],
+        depth [m], x along the roller [m], contact (:mod:`linecontact.stresses`, no
+        traction).
 
     Notes
     -----
@@ -496,6 +568,12 @@ class BearingSolution:
     law_error: float
     model: str
     notes: tuple = field(default_factory=tuple)
+    moment: float = 0.0
+    tilt: float = 0.0
+    roller_moments: np.ndarray = None
+    roller_tilts: np.ndarray = None
+    roller_misalignment: np.ndarray = None
+    stress: dict = None
 
     def to_dict(self):
         """The solution as plain Python (lists for arrays), SI units."""
@@ -600,6 +678,9 @@ class RadialRollerBearing:
         geometry, :func:`dynamic_load_rating`).
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
+    poisson : float, optional
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
 
     Notes
     -----
@@ -626,7 +707,7 @@ class RadialRollerBearing:
 
     def __init__(self, rollers, pitch_diameter, roller_diameter, length, clearance=0.0,
                  *, estar=115.38e9, model=None, profile=None, n_slices=N_SLICES,
-                 azimuth0=0.0, rating=None, rotating="inner"):
+                 azimuth0=0.0, rating=None, rotating="inner", poisson=0.3):
         from .models import available_models
         from .profiles import StraightProfile, as_profile
         from .raceway import SLICE_MODELS
@@ -648,6 +729,9 @@ class RadialRollerBearing:
         if rotating not in ("inner", "outer"):
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
+        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5,
+                                            high_open=True))
+        self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)
         straight = isinstance(self.profile, StraightProfile)
@@ -769,21 +853,46 @@ class RadialRollerBearing:
                 break
         return dr
 
-    def solve(self, radial_load):
-        """Solve the bearing under a radial load F_r (:class:`BearingSolution`).
+    def solve(self, radial_load, moment=None, misalignment=None):
+        r"""Solve the bearing under a radial load F_r, and a tilting moment M or a given
+        misalignment theta (:class:`BearingSolution`).
+
+        .. math::
+
+            F_r = \sum_j Q_j\cos\psi_j, \qquad M = \sum_j M_j\cos\psi_j, \qquad
+            \delta_j(x) = (\delta_r + \theta x)\cos\psi_j - P_d/2
 
         Parameters
         ----------
         radial_load : float
             Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller).
+        moment : float, optional
+            Tilting moment M on the inner ring about the axis normal to the load plane,
+            |M| < inf [N m]: the ring tilt theta is solved with delta_r (2 DOF).
+        misalignment : float, optional
+            Given tilt theta of the inner ring against the outer ring in the load
+            plane, |theta| < 0.1 [rad] (positive: the rings close at +x on the loaded
+            side): delta_r is solved at this tilt (1 DOF) and the moment it needs is
+            reported. At most one of `moment` and `misalignment`.
 
         Returns
         -------
         BearingSolution
 
+        Raises
+        ------
+        CombinationError
+            Both `moment` and `misalignment`; either with a straight-cylinder law named
+            as the model (a law has no tilt: use ``model="profiled-roller"``).
+        OutOfRangeError
+            A load that lifts every roller, or one beyond the contact law's range.
+
         Notes
         -----
-        Valid for 0 < F_r < inf within the contact law's range.
+        Valid for 0 < F_r < inf within the contact law's range. With a moment or a
+        misalignment each roller is solved by slices (the bearing's slice model; for a
+        straight roller with no model named, ``"profiled-roller"``) and is free to
+        tilt between its rings, docs/bearings.md.
 
         Examples
         --------
@@ -794,6 +903,17 @@ class RadialRollerBearing:
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
+        if moment is not None and misalignment is not None:
+            raise CombinationError({"moment": moment, "misalignment": misalignment},
+                                   "give a tilting moment or a misalignment, not both "
+                                   "(the moment a misalignment needs is an output)")
+        if moment is not None or misalignment is not None:
+            M = None if moment is None else float(check_interval(
+                "moment", moment, -np.inf, np.inf, low_open=True, high_open=True,
+                unit="N m"))
+            th = None if misalignment is None else TILT_RANGE.check(
+                misalignment, name="misalignment").item()
+            return self._tilt_model(moment, misalignment)._tilted_solution(F, M, th)
         notes = []
         if not self.sliced:
             Qg, dg, kg, _ = self._law_grid(F)
@@ -809,10 +929,16 @@ class RadialRollerBearing:
             qi = np.outer(Q, np.full(n_s, 1.0 / n_s))
             qo = qi.copy()
             label = sol.model if sol is not None else self.model
+            c = np.cos(self.azimuth)
+            K = np.array([[float(np.sum(k * c * c))]])
+            stress = self._law_stresses(float(np.max(Q)))
         else:
-            dr, Q, k, approach, x, qi, qo, pp, law_error, label = self._solve_sliced(F)
-        c = np.cos(self.azimuth)
-        K = np.array([[float(np.sum(k * c * c))]])
+            (dr, Q, k, approach, x, qi, qo, pp, law_error, label, K,
+             worst) = self._solve_sliced(F)
+            stress = _contact_stresses(*worst, self.poisson)
+            if not math.isfinite(pp):
+                notes.append("peak pressure not reported: the most loaded roller is "
+                             "edge loaded (a singular pressure on a half-space)")
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
         zone = math.acos(max(-1.0, min(1.0, self.clearance / (2 * dr)))) if dr > 0 \
             else math.pi
@@ -820,8 +946,8 @@ class RadialRollerBearing:
             zone = math.pi
         life16281 = reference_rating_life(self.rating, self.pitch_diameter,
                                           self.roller_diameter, qi, qo, self.rotating)
-        notes.append("no subsurface stress: linecontact.stresses is not available in "
-                     "this version")
+        notes.extend(stress["notes"])
+        Z = self.rollers
         return BearingSolution(
             radial_load=F, displacement=float(dr), azimuth=self.azimuth.copy(),
             approach=approach, roller_loads=Q, roller_stiffness=k, stiffness=K,
@@ -830,7 +956,105 @@ class RadialRollerBearing:
             slice_loads_outer=qo, rating=self.rating,
             life_iso281=basic_rating_life(self.rating, F),
             life_iso16281=life16281, law_error=float(law_error), model=label,
-            notes=tuple(notes))
+            notes=tuple(notes), moment=0.0, tilt=0.0, roller_moments=np.zeros(Z),
+            roller_tilts=np.zeros(Z), roller_misalignment=np.zeros(Z),
+            stress=stress["worst"])
+
+    def _tilt_model(self, moment, misalignment):
+        """This bearing if its model solves tilted rollers by slices; else, with no
+        model named, its twin under ``"profiled-roller"``; a law named is refused."""
+        if self.sliced:
+            return self
+        if self._model_named:
+            given = ({"moment": moment} if moment is not None else
+                     {"misalignment": misalignment})
+            raise CombinationError(
+                {"model": self.model, **given},
+                "a straight-cylinder law has no tilt; a tilting moment or misalignment "
+                "needs a slice model, model='profiled-roller' or 'iso16281-slicing'")
+        return RadialRollerBearing(
+            self.rollers, self.pitch_diameter, self.roller_diameter, self.length,
+            self.clearance, estar=self.estar, model="profiled-roller",
+            profile=self.profile, n_slices=self.n_slices, azimuth0=self.azimuth0,
+            rating=self.rating, rotating=self.rotating, poisson=self.poisson)
+
+    def _law_stresses(self, Q):
+        """Subsurface stresses of the most loaded roller under a law: the plane-strain
+        Hertz strip of each contact at the mean line load Q/L."""
+        from .stresses import line_contact_stresses
+
+        R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
+                                      self.raceways.outer)
+        return _worst_of({name: line_contact_stresses(Q, R, self.length, self.estar,
+                                                      poisson=self.poisson)
+                          for name, R in (("inner", R_in), ("outer", R_out))})
+
+    def _tilted_load_zone(self, dr, th, first, points=721):
+        """Half the azimuth range where a roller would be loaded,
+        e(psi) = delta_r cos psi - P_d/2 - 2 d_0(theta cos psi / 2) > 0, on a grid of
+        `points` over [0, pi] with the crossings interpolated linearly (for theta = 0
+        the aligned psi_l = arccos(P_d/(2 delta_r)); a large tilt can load both
+        sides: their extents add) [rad]."""
+        psi = np.linspace(0.0, math.pi, points)
+        cp = np.cos(psi)
+        e = dr * cp - self.clearance / 2 - 2 * np.array([first(0.5 * th * x) for x in cp])
+        a, b = e[:-1], e[1:]
+        h = psi[1] - psi[0]
+        both = (a > 0) & (b > 0)
+        cross = (a > 0) != (b > 0)
+        part = np.where(cross, np.maximum(a, b) / np.where(cross, np.abs(a - b), 1.0), 0.0)
+        return float(h * (np.sum(both) + np.sum(part)))
+
+    def _tilted_solution(self, F, M, theta):
+        dr, th, c, inverse, sols, K, kser, first = self._solve_tilted(F, M, theta)
+        Z = self.rollers
+        L = self.length
+        n_lam = self.n_slices
+        Q, Mj, tj, kj = (np.zeros(Z) for _ in range(4))
+        qi = np.zeros((Z, n_lam))
+        qo = np.zeros_like(qi)
+        pp, edge = -math.inf, []
+        for j in range(Z):
+            g = inverse[j]
+            if sols[g] is None:
+                continue
+            si, so = sols[g]
+            Q[j], Mj[j], tj[j], kj[j] = si.force, si.moment, si.tilt, kser[g][0, 0]
+            qi[j] = _laminae(si, L, n_lam)
+            qo[j] = _laminae(so, L, n_lam)
+            for s in (si, so):
+                if s.p_max is None:
+                    edge.append(j)
+                else:
+                    pp = max(pp, float(s.p_max))
+        notes = []
+        if edge:
+            pp = math.nan
+            notes.append("peak pressure not reported: rollers "
+                         f"{sorted(set(edge))} are edge loaded (a singular pressure on "
+                         "a half-space); their end laminae, and so L10r, depend on the "
+                         "slice width (not converged)")
+        jm = int(np.argmax(Q))
+        si, so = sols[inverse[jm]]
+        stress = _contact_stresses(si, so, self.poisson)
+        notes.extend(stress["notes"])
+        approach = dr * c - self.clearance / 2
+        zone = self._tilted_load_zone(dr, th, first)
+        eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
+        life = reference_rating_life(self.rating, self.pitch_diameter,
+                                     self.roller_diameter, qi, qo, self.rotating)
+        x = (np.arange(n_lam) + 0.5) / n_lam * L - L / 2
+        label = f"{self.model} ({si.method}, {si.n_slices} slices), rollers free to tilt"
+        return BearingSolution(
+            radial_load=F, displacement=float(dr), azimuth=self.azimuth.copy(),
+            approach=approach, roller_loads=Q, roller_stiffness=kj, stiffness=K,
+            max_roller_load=float(np.max(Q)), load_zone=zone, epsilon=float(eps),
+            peak_pressure=float(pp), slice_x=x, slice_loads_inner=qi,
+            slice_loads_outer=qo, rating=self.rating,
+            life_iso281=basic_rating_life(self.rating, F), life_iso16281=life,
+            law_error=0.0, model=label, notes=tuple(notes),
+            moment=float(Mj @ c), tilt=float(th), roller_moments=Mj, roller_tilts=tj,
+            roller_misalignment=th * c, stress=stress["worst"])
 
     def _polish(self, law, dr, F):
         """Newton on (Q_j loaded, delta_r) with the exact law (the grid's interpolation
@@ -904,30 +1128,198 @@ class RadialRollerBearing:
         Q, kj = law.force(approach)
         inner = _Law(Fi, np.array([r.depth for r in ti]),
                      np.array([r.stiffness for r in ti]))
-        x = ti[0].x
-        w = self.length / len(x)
-        qi = np.zeros((self.rollers, len(x)))
+        L = self.length
+        n_lam = self.n_slices
+        x = (np.arange(n_lam) + 0.5) / n_lam * L - L / 2
+        qi = np.zeros((self.rollers, n_lam))
         qo = np.zeros_like(qi)
         pp = -math.inf
+        K = np.zeros((2, 2))
+        c = np.cos(self.azimuth)
         # each loaded roller's two contacts solved at their tabulated depths (the load
-        # then differs from Q_j by the table's interpolation error, law_error: the line
-        # loads are scaled to Q_j); rollers of equal load (+psi and -psi) solved once
+        # then differs from Q_j by the table's interpolation error, law_error: the
+        # lamina loads are scaled to Q_j); rollers of equal load (+psi and -psi) solved
+        # once. The 2x2 stiffness: each roller's two contacts in series as 2x2
+        # matrices, (K_in^-1 + K_out^-1)^-1 (the roller free to tilt), summed with
+        # cos^2 psi_j (docs/bearings.md).
         done = {}
         for j in np.flatnonzero(Q > 0):
             key = float(f"{Q[j]:.12e}")
             if key not in done:
                 ri = dep_i(float(inner.delta_of(Q[j])))
                 ro = dep_o(float(outer.delta_of(Q[j])))
-                done[key] = (ri.q * w * Q[j] / ri.force, ro.q * w * Q[j] / ro.force,
+                Ki, Ko = (np.asarray(r.stiffness_matrix) for r in (ri, ro))
+                done[key] = (_laminae(ri, L, n_lam) * Q[j] / ri.force,
+                             _laminae(ro, L, n_lam) * Q[j] / ro.force,
                              max(ri.p_max if ri.p_max is not None else math.nan,
-                                 ro.p_max if ro.p_max is not None else math.nan))
-            qi[j], qo[j], p = done[key]
+                                 ro.p_max if ro.p_max is not None else math.nan),
+                             Ki @ np.linalg.solve(Ki + Ko, Ko), (ri, ro))
+            qi[j], qo[j], p, kser, pair = done[key]
+            K += c[j] ** 2 * kser
             if Q[j] == np.max(Q):
-                pp = p
+                pp, worst = p, pair
         jm = int(np.argmax(Q))
         law_error = self._table_error(law, (force_i, force_o), Fi, Q[jm])
         label = f"{self.model} ({ti[0].method}, {ti[0].n_slices} slices)"
-        return dr, Q, kj, approach, x, qi, qo, pp, law_error, label
+        return dr, Q, kj, approach, x, qi, qo, pp, law_error, label, K, worst
+
+    # -- tilting moment and misalignment -----------------------------------------
+    def _contact_pair(self):
+        """(at_depth(d, t) -> RollerSolution, first_contact_depth(t)) factories of the
+        inner and the outer contact of one roller (fresh solvers: each keeps its own
+        warm start)."""
+        from .roller import ProfiledRoller, iso_slicing
+
+        R1 = self.roller_diameter / 2
+        radii = effective_radii(R1, self.raceways.inner, self.raceways.outer)
+        pair = []
+        for R in radii:
+            c = ProfiledRoller(R, self.length, self.estar, self.profile,
+                               n_slices=self.n_slices)
+            if self.model == "profiled-roller":
+                pair.append(c.at_depth)
+            else:
+                args = (R, self.length, self.estar, self.profile)
+                pair.append(lambda d, t, a=args: iso_slicing(
+                    *a, depth=d, tilt=t, n_slices=self.n_slices))
+        if self.model == "profiled-roller":
+            return pair, c.first_contact_depth
+        # ISO slicing: first contact on its own slice centres (x_k tan theta)
+        from .profiles import roller_drop
+
+        L, n = self.length, self.n_slices
+        x = -L / 2 + L / n * (np.arange(n) + 0.5)
+        P = roller_drop(self.profile, L, x)
+        return pair, lambda t: float(np.min(P - x * math.tan(t)))
+
+    def _solve_tilted(self, F, M, theta):
+        r"""Ring displacement and tilt (M given) or displacement at a given tilt, every
+        roller free to tilt between its two slice contacts; one Newton iteration on
+        all unknowns at once (each roller's inner depth and tilt, delta_r and theta),
+        its linear system reduced roller by roller to the ring's 2x2 (or 1x1) system.
+
+        Roller j at azimuth psi_j sees the ring approach delta_r c_j - P_d/2 at its
+        centre and the ring misalignment phi_j = theta c_j (c_j = cos psi_j); with its
+        tilt t against the inner ring, the inner contact is at (d_i, t) and the outer at
+        (delta_j - d_i, phi_j - t); the roller balances force and moment,
+        F_in = F_out, M_in = M_out, and passes Q_j = F_in, M_j = M_in to the rings:
+        F_r = sum Q_j c_j, M = sum M_j c_j.
+        """
+        given_tilt = M is None
+        c = np.cos(self.azimuth)
+        # rollers of equal cos psi (+psi and -psi) have the same state: solve once
+        key = np.round(c, 12)
+        groups, inverse = np.unique(key, return_inverse=True)
+        weight = np.bincount(inverse).astype(float)
+        cg = groups.astype(float)
+        n = len(cg)
+        pairs = [None] * n
+        first = None
+        # start: delta_r of the aligned universal-curve bearing
+        est = RadialRollerBearing(self.rollers, self.pitch_diameter,
+                                  self.roller_diameter, self.length, self.clearance,
+                                  estar=self.estar, azimuth0=self.azimuth0,
+                                  rating=self.rating)
+        Qg0, dg0, kg0, _ = est._law_grid(F)
+        law0 = _Law(Qg0, dg0, kg0)
+        dr = est._equilibrium(law0, F)
+        th = 0.0 if not given_tilt else theta
+        L = self.length
+        u = np.full((n, 2), np.nan)      # (d_inner, roller tilt) of each group
+        sols = [None] * n
+        ks = [None] * n
+        tol_F = 1e-11 * F
+        tol_M = 1e-11 * F * L
+        K = None
+        for _ in range(80):
+            delta = dr * cg - self.clearance / 2
+            phi = th * cg
+            if first is None:
+                pairs[0], first = self._contact_pair()
+            R_F, R_M = F, (M if not given_tilt else 0.0)
+            Kg = np.zeros((2, 2))
+            rhs = np.zeros(2)
+            local = []
+            worst = 0.0
+            for g in range(n):
+                e = delta[g] - 2 * first(0.5 * phi[g])
+                if e <= 0:
+                    u[g] = np.nan
+                    sols[g] = None
+                    local.append(None)
+                    continue
+                if pairs[g] is None:
+                    pairs[g] = self._contact_pair()[0]
+                if not np.isfinite(u[g, 0]):
+                    u[g] = (first(0.5 * phi[g]) + 0.5 * e, 0.5 * phi[g])
+                di, t = u[g]
+                do = delta[g] - di
+                # keep both contacts touching: back to the even split if not
+                if not (di > first(t) and do > first(phi[g] - t)):
+                    u[g] = (first(0.5 * phi[g]) + 0.5 * e, 0.5 * phi[g])
+                    di, t = u[g]
+                    do = delta[g] - di
+                si = pairs[g][0](di, t)
+                so = pairs[g][1](do, phi[g] - t)
+                sols[g] = (si, so)
+                Ki = np.asarray(si.stiffness_matrix)
+                Ko = np.asarray(so.stiffness_matrix)
+                r = np.array([si.force - so.force, si.moment - so.moment])
+                worst = max(worst, abs(r[0]) / max(si.force, 1e-300),
+                            abs(r[1]) / (max(si.force, 1e-300) * L))
+                A = Ki + Ko
+                # pinv: a straight roller under ISO slicing may touch with one slice
+                # per contact, both at one end (K of rank 1)
+                Ainv = np.linalg.pinv(A)
+                kser = Ki @ Ainv @ Ko          # (Ki^-1 + Ko^-1)^-1
+                y0 = Ki @ Ainv @ r             # dy = -y0 + kser dv
+                R_F -= weight[g] * cg[g] * si.force
+                R_M -= weight[g] * cg[g] * si.moment
+                Kg += weight[g] * cg[g] ** 2 * kser
+                ks[g] = kser
+                rhs += weight[g] * cg[g] * y0
+                local.append((Ainv, Ko, r))
+            K = Kg
+            if not np.any(np.isfinite(u[:, 0])):
+                raise OutOfRangeError("radial_load", F, "a load that keeps a roller "
+                                      "loaded", unit="N", hint="every roller is lifted")
+            done = (abs(R_F) <= tol_F and worst <= 1e-10
+                    and (given_tilt or abs(R_M) <= tol_M + 1e-11 * abs(M)))
+            if done:
+                break
+            if given_tilt:
+                dV = np.array([(R_F + rhs[0]) / Kg[0, 0], 0.0])
+            else:
+                dV = np.linalg.lstsq(Kg, np.array([R_F, R_M]) + rhs, rcond=None)[0]
+            # safeguards: delta_r at least halves towards the clearance, the ring tilt
+            # moves by at most a tenth of the tilt range per step
+            top = max(self.clearance / 2, 0.0)
+            if dr + dV[0] <= top:
+                dV[0] = 0.5 * (top - dr) if dr > top else 0.5 * abs(dr) + 1e-12
+            dV[1] = float(np.clip(dV[1], -0.01, 0.01))
+            for g in range(n):
+                if local[g] is None:
+                    continue
+                Ainv, Ko, r = local[g]
+                du = -Ainv @ (r - Ko @ (cg[g] * dV))
+                du[1] = float(np.clip(du[1], -0.01, 0.01))
+                u[g] = u[g] + du
+            dr += dV[0]
+            th += dV[1]
+            if not abs(th) < 0.05:
+                break
+        else:
+            th = math.nan
+        if not abs(th) < 0.05:
+            name, value, unit = (("misalignment", theta, "rad") if given_tilt else
+                                 ("moment", M, "N m"))
+            raise OutOfRangeError(
+                name, value, "a load the rollers carry at ring tilts below 0.05 rad",
+                unit=unit, hint=f"with F_r = {F:g} N no ring equilibrium was found in 80 "
+                "Newton steps (the rollers' tilt against a ring must stay below 0.1 "
+                "rad; a moment near the rollers' capacity, about F_r L/2, edge loads "
+                "them)")
+        return dr, th, c, inverse, sols, K, ks, first
 
     @staticmethod
     def _table_error(law, solvers, Fi, Qmax):

@@ -170,8 +170,9 @@ def test_reference_life_independent_of_laminae():
 def test_profiled_bearing_matches_exact_slice_solves():
     """Crowned rollers (coupled slices, 20 slices for speed): the tabulated roller law's
     error is below 1e-4, the loads balance F_r to 1e-9, and the most loaded roller's
-    slice loads equal a direct slice solve of its two contacts at its load (to 1e-3 of
-    the peak: the table's interpolation error)."""
+    lamina loads (20 equal laminae over the roller, adding up to the roller load) equal
+    a direct slice solve of its two contacts at its load (to 1e-3 of the peak: the
+    table's interpolation error)."""
     from linecontact.raceway import Raceways, roller_between_raceways
 
     b = RadialRollerBearing(12, 60e-3, 8e-3, 8e-3, profile="circular:Rc=0.5",
@@ -184,8 +185,15 @@ def test_profiled_bearing_matches_exact_slice_solves():
                                 Raceways(b.raceways.inner, b.raceways.outer),
                                 force=s.roller_loads[j], profile="circular:Rc=0.5",
                                 tilt=0.0, n_slices=20)
-    w = 8e-3 / 20
-    assert np.allclose(s.slice_loads_inner[j], r.inner.q * w,
+    # the direct solve's slices (over its contact only) summed onto the 20 equal
+    # laminae of the roller length
+    x, q = r.inner.x, r.inner.q
+    w = x[1] - x[0]
+    cum = np.concatenate([[0.0], np.cumsum(q * w)])
+    lam = np.diff(np.interp(np.linspace(-4e-3, 4e-3, 21),
+                            np.concatenate([x - w / 2, [x[-1] + w / 2]]), cum))
+    assert s.slice_loads_inner[j].sum() == pytest.approx(s.roller_loads[j], rel=1e-12)
+    assert np.allclose(s.slice_loads_inner[j], lam,
                        atol=1e-3 * s.slice_loads_inner[j].max())
     assert s.approach[j] == pytest.approx(r.deflection, rel=1e-4)
 

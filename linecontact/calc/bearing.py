@@ -37,6 +37,13 @@ PARAMETERS = (
     Parameter("clearance", "length", "radial internal clearance P_d = d_o - d_i - 2D "
               "(negative: preload; default 0)", _GEOM, positive=False),
     Parameter("radial_load", "force", "radial load F_r", _LOAD),
+    Parameter("tilting_moment", "moment", "tilting moment M on the inner ring about the "
+              "axis normal to the load plane (e.g. 20Nm): the ring tilt is solved; the "
+              "rollers by slices, free to tilt", _LOAD, positive=False),
+    Parameter("misalignment", "angle", "given tilt of the inner ring against the outer "
+              "ring in the load plane (e.g. 1mrad, 0.05deg, 3arcmin; positive: the rings "
+              "close at +x on the loaded side), instead of --tilting-moment", _LOAD,
+              positive=False),
     _CALC["modulus"], _CALC["poisson"], _CALC["modulus2"], _CALC["poisson2"],
     _CALC["estar"],
     Parameter("profile", "text", "roller profile spec (e.g. circular:Rc=500mm, "
@@ -56,6 +63,11 @@ BY_NAME = {p.name: p for p in PARAMETERS}
 FIELDS = {
     "displacement": Field("delta_r", "m", "um", 1e6),
     "radial_stiffness": Field("K_rr", "N/m", "N/um", 1e-6),
+    "tilt": Field("ring tilt theta", "rad", "mrad", 1e3),
+    "moment": Field("moment M", "N m", "N m", 1.0),
+    "stiffness_rt": Field("K_rt = dF_r/dtheta", "N/rad", "N/mrad", 1e-3),
+    "stiffness_tr": Field("K_tr = dM/d delta_r", "N", "N m/um", 1e-6),
+    "stiffness_tt": Field("K_tt = dM/dtheta", "N m/rad", "N m/mrad", 1e-3),
     "max_roller_load": Field("Q_max", "N", "N", 1.0),
     "load_zone": Field("load zone psi_l", "rad", "deg", 180 / math.pi),
     "loaded_rollers": Field("loaded", "-", "-", 1.0),
@@ -63,6 +75,12 @@ FIELDS = {
     "rating": Field("C_r", "N", "kN", 1e-3),
     "life_iso281": Field("L10 ISO 281", "1e6 rev", "1e6 rev", 1.0),
     "life_iso16281": Field("L10r ISO 16281", "1e6 rev", "1e6 rev", 1.0),
+    "tresca": Field("max Tresca shear", "Pa", "MPa", 1e-6),
+    "tresca_depth": Field("  at depth", "m", "um", 1e6),
+    "von_mises": Field("max von Mises", "Pa", "MPa", 1e-6),
+    "von_mises_depth": Field("  at depth", "m", "um", 1e6),
+    "orthogonal_shear": Field("max orthogonal shear", "Pa", "MPa", 1e-6),
+    "orthogonal_shear_depth": Field("  at depth", "m", "um", 1e6),
 }
 
 _NOTES = {
@@ -70,9 +88,15 @@ _NOTES = {
                  "clearance d_o - d_i - 2D; roller j's approach is delta_r cos psi_j - "
                  "P_d/2.",
     "life": "L10 = (C_r/F_r)^(10/3) (ISO 281:2007); L10r: ISO 16281:2025 (ISO/TS "
-            "16281:2008) lamina method, exponent 4 of line contact (docs/bearings.md).",
-    "stress": "no subsurface stress: computed per contact by 'linecontact calc "
-              "--stresses' at the most loaded roller's load.",
+            "16281:2008) lamina method on the lamina loads, exponent 4 of line contact "
+            "(docs/iso16281.md).",
+    "tilt": "with --tilting-moment or --misalignment each roller is solved by slices "
+            "(profiled-roller for a straight roller with no --model), free to tilt "
+            "between its rings; the ring sees theta cos psi_j at roller j. K_rt, K_tr, "
+            "K_tt: the 2x2 stiffness d(F_r, M)/d(delta_r, theta), slice models only.",
+    "stress": "subsurface stress: the most loaded roller, the worst of its two contacts, "
+              "plane-strain Hertz strips per slice (linecontact.stresses), no traction; "
+              "von Mises with the rings' Poisson's ratio (0.3 if not given).",
 }
 
 
@@ -152,18 +176,37 @@ def solve_one(cells, label=option_name):
     kw = {}
     if v["n_slices"] is not None:
         kw["n_slices"] = v["n_slices"]
+    if v["poisson"] is not None:
+        kw["poisson"] = v["poisson"]
     b = RadialRollerBearing(v["rollers"], v["pitch_diameter"], v["roller_diameter"],
                             v["length"], v["clearance"] or 0.0, estar=_estar(v, label),
                             model=v["model"], profile=v["profile"], rating=v["rating"],
                             **kw)
-    return b, b.solve(v["radial_load"])
+    if v["tilting_moment"] is not None and v["misalignment"] is not None:
+        from ..validity import CombinationError
+
+        raise CombinationError({label("tilting_moment"): v["tilting_moment"],
+                                label("misalignment"): v["misalignment"]},
+                               "give one of them (the moment a misalignment needs is "
+                               "an output)")
+    return b, b.solve(v["radial_load"], moment=v["tilting_moment"],
+                      misalignment=v["misalignment"])
 
 
 def summary(s):
-    """The one-bearing outputs (FIELDS order), SI."""
-    return {
+    """The one-bearing outputs (FIELDS order), SI; the tilt stiffnesses None under a
+    law (no tilt), the stresses None where not computed."""
+    K = s.stiffness
+    two = K.shape == (2, 2)
+    st = s.stress or {}
+    out = {
         "displacement": s.displacement,
-        "radial_stiffness": float(s.stiffness[0, 0]),
+        "radial_stiffness": float(K[0, 0]),
+        "tilt": s.tilt,
+        "moment": s.moment,
+        "stiffness_rt": float(K[0, 1]) if two else None,
+        "stiffness_tr": float(K[1, 0]) if two else None,
+        "stiffness_tt": float(K[1, 1]) if two else None,
         "max_roller_load": s.max_roller_load,
         "load_zone": s.load_zone,
         "loaded_rollers": int((s.roller_loads > 0).sum()),
@@ -172,6 +215,11 @@ def summary(s):
         "life_iso281": s.life_iso281,
         "life_iso16281": s.life_iso16281,
     }
+    for m in ("tresca", "von_mises", "orthogonal_shear"):
+        w = st.get(m)
+        out[m] = w["value"] if w else None
+        out[f"{m}_depth"] = w["depth"] if w else None
+    return out
 
 
 def _num(x, si, field):
@@ -186,20 +234,29 @@ def table(bearing, s, si=False):
     lines = [f"radial roller bearing: Z = {bearing.rollers}, d_m = "
              f"{bearing.pitch_diameter * 1e3:.6g} mm, D = {bearing.roller_diameter * 1e3:.6g}"
              f" mm, L = {bearing.length * 1e3:.6g} mm, P_d = {bearing.clearance * 1e6:.6g} um,"
-             f" E* = {bearing.estar / 1e9:.5g} GPa, F_r = {s.radial_load:.6g} N",
+             f" E* = {bearing.estar / 1e9:.5g} GPa, F_r = {s.radial_load:.6g} N, "
+             f"M = {s.moment:.6g} N m, theta = {s.tilt * (1 if si else 1e3):.6g} "
+             + ("rad" if si else "mrad"),
              f"model: {s.model}", ""]
     vals = summary(s)
     w = max(len(f.heading) for f in FIELDS.values())
     for k, f in FIELDS.items():
         u = f.si if si else f.eng
         lines.append(f"  {f.heading:<{w}}  {_num(vals[k], si, f):>12} {u}")
+    tilted = s.stiffness.shape == (2, 2)
     lines += ["", "  roller  psi [deg]  approach [" + ("m" if si else "um")
-              + f"]  Q [N]"]
+              + "]       Q [N]" + ("    M_j [N m]  tilt [" + ("rad" if si else "mrad")
+                                   + "]" if tilted else "")]
     for j in range(len(s.azimuth)):
         a = s.approach[j] * (1 if si else 1e6)
-        lines.append(f"  {j:>6}  {math.degrees(s.azimuth[j]):>9.2f}  {a:>13.5g}  "
-                     f"{s.roller_loads[j]:>10.5g}")
+        row = (f"  {j:>6}  {math.degrees(s.azimuth[j]):>9.2f}  {a:>13.5g}  "
+               f"{s.roller_loads[j]:>10.5g}")
+        if tilted:
+            t = s.roller_tilts[j] * (1 if si else 1e3)
+            row += f"  {s.roller_moments[j]:>11.5g}  {t:>11.5g}"
+        lines.append(row)
     lines += [""] + [f"note: {t}" for t in _NOTES.values()]
+    lines += [f"note: {t}" for t in s.notes]
     return "\n".join(lines) + "\n"
 
 
@@ -252,14 +309,28 @@ def figure(path, bearing, s):
     import numpy as np
 
     order = np.argsort(s.azimuth)
-    fig, ax = plt.subplots(figsize=(6, 3.5))
-    ax.bar(np.degrees(s.azimuth[order]), s.roller_loads[order],
-           width=0.8 * 360 / bearing.rollers)
-    ax.set_xlabel("roller azimuth psi from the load line [deg]")
+    tilted = s.stiffness.shape == (2, 2)
+    fig, axes = plt.subplots(2 if tilted else 1, 1, figsize=(6, 5.5 if tilted else 3.5),
+                             sharex=True, squeeze=False)
+    ax = axes[0, 0]
+    psi = np.degrees(s.azimuth[order])
+    width = 0.8 * 360 / bearing.rollers
+    ax.bar(psi, s.roller_loads[order], width=width)
     ax.set_ylabel("roller load Q [N]")
     ax.set_title(f"Z = {bearing.rollers}, F_r = {s.radial_load:.4g} N, "
+                 f"M = {s.moment:.4g} N m, theta = {s.tilt * 1e3:.4g} mrad, "
                  f"P_d = {bearing.clearance * 1e6:.3g} um ({s.model.split(' (')[0]})",
-                 fontsize=9)
+                 fontsize=8)
+    if tilted:
+        ax2 = axes[1, 0]
+        ax2.bar(psi, s.roller_moments[order], width=width, color="tab:orange")
+        ax2.set_ylabel("roller moment M_j [N m]")
+        ax2.axhline(0.0, color="k", lw=0.5)
+        K = s.stiffness
+        ax2.text(0.01, 0.97, f"K = [[{K[0, 0] * 1e-6:.4g} N/um, {K[0, 1] * 1e-3:.4g} "
+                 f"N/mrad], [{K[1, 0] * 1e-6:.4g} N m/um, {K[1, 1] * 1e-3:.4g} N m/mrad]]",
+                 transform=ax2.transAxes, va="top", fontsize=7)
+    axes[-1, 0].set_xlabel("roller azimuth psi from the load line [deg]")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)

@@ -36,9 +36,12 @@ adhesion``), in the self-similar variables of the parabolic cylinder
 (docs/theory.md, section 'Self-similarity'; docs/adhesion.md): with
 :math:`\tilde w = wR^2/(E^*L^3)` the ratio of the pull-off force to the 2D JKR value
 :math:`F_c/(L\,F_{c,2D}/L)` is one function of :math:`s = b_c/L = (2\tilde w/\pi)^{1/3}`
-for every L/R; it tends to 1 as s -> 0 (the long roller), the exact limit the runtime
-interpolates towards below the table. The plain MDR value is given beside it, by name,
-with its error measured against the same BEM.
+for every L/R. The 2D law holds per unit length in the middle of a long roller, but the
+whole roller's ratio does not tend to 1 as s -> 0: below s of about 0.08 the contact
+unzips from its ends before its middle reaches b_c, and the ratio falls with s (the BEM
+measured it down to the table's smallest s; no value is given below). The plain MDR
+value is given beside it, by name (``method='mdr'``), with its error measured against
+the same BEM.
 
 JKR needs a large Tabor parameter :math:`\mu_T = (R w^2/(E^{*2} z_0^3))^{1/3}`
 (:func:`tabor_parameter`, z0 about 0.3 nm, the range of the surface forces); below
@@ -100,6 +103,7 @@ _WORK = Interval("work", 0.0, np.inf, high_open=True, unit="J/m^2")
 _RADIUS = Interval("radius", 0.0, np.inf, low_open=True, high_open=True, unit="m")
 _Z0 = Interval("z0", 0.0, np.inf, low_open=True, high_open=True, unit="m")
 _CONTROLS = ("force", "depth")
+_METHODS = ("bem", "mdr")
 _BRANCHES = ("stable", "unstable")
 #: Points of the log-spaced scan of a that brackets the extrema before refinement.
 _SCAN = 241
@@ -771,7 +775,7 @@ class CylinderAdhesion:
 
     with :math:`\rho(s)` the BEM's ratio (``tables/adhesion_cylinder.csv``), one
     function for every L/R by self-similarity, interpolated by a monotone cubic
-    (PCHIP) through its rows and the exact long-roller limit :math:`\rho(0) = 1`.
+    (PCHIP) through its rows.
 
     Parameters
     ----------
@@ -787,37 +791,34 @@ class CylinderAdhesion:
 
     Notes
     -----
-    Valid for 0 < s <= the table's largest s (0.5: the pull-off contact as wide as the
-    roller is long); a larger s is refused (a disc-like contact: the plain rule of Hess
-    is still available as :attr:`mdr`). Between s = 0 and the table's smallest s the
-    ratio is interpolated towards the 2D JKR limit; the table's header records the
-    straight-line fit of its smallest s that supports it (``long_roller_limit``).
-    Below the table the MDR's error is not measured (it grows as s -> 0: the MDR
-    half-length of a long roller is of the order of L, not of b). JKR itself needs a
-    large Tabor parameter (:attr:`tabor`). Accuracy of the table: its header's
-    ``accuracy``, ``grid_check`` and ``straight_edge`` lines; the BEM's local criterion
-    reproduces the JKR sphere and Kendall's punch within 2 %, but not a straight edge
-    aligned with its cells, and its ratios do not extrapolate to the exact 2D limit
-    (docs/adhesion.md, section 5): treat the corrected values as uncertain by several
-    per cent.
+    The corrected values (``method='bem'``) are valid for s inside the table's range
+    (0.025 <= s <= 0.5: :attr:`s_range`); a larger s is refused here (a disc-like
+    contact: the plain rule of Hess is :meth:`AdhesiveContact.from_model`), a smaller one
+    by :meth:`pull_off` (the ratio falls as s decreases, ends peeling first, and is not
+    extrapolated; the 2D law per unit length of the middle section is
+    :func:`jkr_cylinder_pull_off`). ``method='mdr'`` gives the rule of Hess at any s,
+    with its error measured against the BEM inside the table and NaN (not measured)
+    below it. Accuracy of the table: its header's ``accuracy``, ``grid_check`` and
+    ``straight_edge`` lines (docs/adhesion.md). JKR itself needs a large Tabor
+    parameter (:attr:`tabor`).
 
     Examples
     --------
-    A PDMS micro-roller (E* = 2.7 MPa), R = 0.5 mm, L = 2 mm, w = 40 mJ/m^2:
+    A hydrogel roller (E* = 67 kPa), R = 1 mm, L = 2 mm, w = 50 mJ/m^2:
 
     >>> from linecontact.models import get_model
-    >>> c = CylinderAdhesion(get_model("universal", 0.5e-3, 2e-3, 2.7e6), 0.04)
-    >>> f"s = {c.s:.3g}; 2D JKR {c.pull_off_2d * 1e3:.3f} mN"
-    's = 0.00665; 2D JKR -4.508 mN'
+    >>> c = CylinderAdhesion(get_model("universal", 1e-3, 2e-3, 6.7e4), 0.05)
+    >>> f"s = {c.s:.3f}; 2D JKR {c.pull_off_2d * 1e3:.3f} mN"
+    's = 0.039; 2D JKR -1.922 mN'
     >>> r = c.pull_off("force")
-    >>> bool(abs(r["ratio"] - 1) < 0.05), bool(r["mdr_force"] < 1.3 * r["force"])
-    (True, True)
+    >>> bool(0.9 < r["ratio"] < 1.0), r["method"]
+    (True, 'bem')
 
     References
     ----------
     .. [1] M. Barquins, J. Adhesion 26 (1988) 1-12.
     .. [2] R. Pohrt, V. L. Popov, Facta Universitatis, Series Mechanical Engineering
-       13(1) (2015) 3-10 (the BEM's criterion).
+       13(1) (2015) 3-10 (the BEM's criterion on curved edges).
     .. [3] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
        and Friction, Springer (2015), chapter 5 (the MDR's rule).
     """
@@ -849,17 +850,21 @@ class CylinderAdhesion:
                                                                                 self.work)
 
     # ---- table lookups ----------------------------------------------------------------
-    def _ratio(self, column):
+    def _column(self, column):
         from scipy.interpolate import PchipInterpolator
 
         cols = self.table.columns
-        s = np.concatenate([[0.0], cols["s"]])
-        v = np.concatenate([[1.0], cols[column]])
-        return float(PchipInterpolator(s, v)(self.s))
+        return float(PchipInterpolator(cols["s"], cols[column])(self.s))
+
+    @property
+    def s_range(self):
+        """The table's range of s = b_c/L [-]: (smallest, largest)."""
+        s = self.table.columns["s"]
+        return float(s[0]), float(s[-1])
 
     @property
     def in_table(self):
-        """True when s lies inside the table's rows (else between 0 and its first)."""
+        """True when s lies inside the table's rows."""
         return bool(self.s >= self.table.columns["s"][0] * (1 - 1e-12))
 
     @property
@@ -882,44 +887,63 @@ class CylinderAdhesion:
         """Tabor parameter of the case, z0 = 0.3 nm [-] (:func:`tabor_parameter`)."""
         return tabor_parameter(self.model.radius, self.work, self.model.estar)
 
-    def pull_off(self, control="force"):
-        """The BEM-corrected pull-off force, with the plain MDR's beside it.
+    def pull_off(self, control="force", method="bem"):
+        """The pull-off force: BEM-corrected (default) or the plain rule of Hess.
 
         Parameters
         ----------
         control : {'force', 'depth'}
             Force or depth control.
+        method : {'bem', 'mdr'}
+            'bem': the BEM table's value (refused below the table's smallest s);
+            'mdr': the rule of Hess on the model's MDR profile, with its measured error.
 
         Returns
         -------
         dict
-            ``force`` [N] (corrected), ``ratio`` (over the 2D JKR value) [-],
-            ``mdr_force`` [N] (the rule of Hess; NaN where the model refuses, e.g. a
-            pull-off beyond its range of depth, with the reason in ``mdr_note``),
-            ``mdr_error`` (its error against the BEM, mdr/BEM - 1, or NaN below the
-            table's s) [-], ``depth`` [m] (the
-            BEM's depth at the depth-controlled jump-off, NaN under force control or
-            below the table), ``in_table`` (bool).
+            ``force`` [N], ``ratio`` (over the 2D JKR value of the length) [-],
+            ``method``, ``error`` (the value's error against the BEM: 0 for 'bem', the
+            measured mdr/BEM - 1 for 'mdr', NaN where not measured) [-], ``depth`` [m]
+            (the BEM's depth at the depth-controlled jump-off; NaN under force control
+            or with 'mdr'), ``in_table`` (bool); with 'bem' also ``mdr_force`` [N]
+            (NaN where the model refuses, the reason in ``mdr_note``) and
+            ``mdr_error`` [-] beside it.
+
+        Raises
+        ------
+        OutOfRangeError
+            method='bem' with s below the table (``work`` named, with the range).
         """
         if control not in _CONTROLS:
             raise OutOfRangeError("control", control, "one of 'force', 'depth'")
-        ratio = self._ratio(f"ratio_{control}")
-        F = ratio * self.pull_off_2d
+        if method not in _METHODS:
+            raise OutOfRangeError("method", method, "one of 'bem', 'mdr'")
+        err = self._column(f"mdr_err_{control}") if self.in_table else np.nan
+        if method == "mdr":
+            F = self.mdr.pull_off(control)["force"]
+            return {"force": F, "ratio": F / self.pull_off_2d, "method": "mdr",
+                    "error": err, "depth": np.nan, "in_table": self.in_table}
+        if not self.in_table:
+            s_min = self.s_range[0]
+            R, L, E = self.model.radius, self.model.length, self.model.estar
+            raise OutOfRangeError(
+                "work", self.work, f"{s_min ** 3 * np.pi / 2 * E * L ** 3 / R ** 2:.6g} <= "
+                f"w J/m^2 (s = b_c/L >= {s_min:g})", unit="J/m^2",
+                hint=f"s = b_c/L = {self.s:.3g} is below the BEM table, where the ratio "
+                     "to the 2D JKR value falls as s decreases (the ends peel first) and "
+                     "is not extrapolated; method='mdr' gives the rule of Hess (error not "
+                     "measured there), jkr_cylinder_pull_off the 2D law per unit length")
+        ratio = self._column(f"ratio_{control}")
         try:
             mdr, mdr_note = self.mdr.pull_off(control)["force"], ""
         except OutOfRangeError as exc:     # e.g. beyond the model's range of depth
             mdr, mdr_note = np.nan, str(exc).splitlines()[0]
-        err, depth = np.nan, np.nan
-        if self.in_table:
-            from scipy.interpolate import PchipInterpolator
-
-            cols = self.table.columns
-            err = float(PchipInterpolator(cols["s"], cols[f"mdr_err_{control}"])(self.s))
-            if control == "depth":
-                dt = float(PchipInterpolator(cols["s"], cols["d_tilde_off"])(self.s))
-                depth = dt * self.model.length ** 2 / self.model.radius
-        return {"force": F, "ratio": ratio, "mdr_force": mdr, "mdr_error": err,
-                "mdr_note": mdr_note, "depth": depth, "in_table": self.in_table}
+        depth = np.nan
+        if control == "depth":
+            depth = self._column("d_tilde_off") * self.model.length ** 2 / self.model.radius
+        return {"force": ratio * self.pull_off_2d, "ratio": ratio, "method": "bem",
+                "error": 0.0, "mdr_force": mdr, "mdr_error": err, "mdr_note": mdr_note,
+                "depth": depth, "in_table": True}
 
     def zero_load(self):
         """State at zero load: the 2D JKR half-width and the MDR's half-length and depth.

@@ -44,11 +44,17 @@ Along a roller: a straight or profiled roller solved by coupled slices
 the half-width b_k, so :math:`p_{0,k} = 2q_k/(\pi b_k)` and its field is the strip
 field scaled by p_{0,k} and b_k. The field is self-similar: the maxima are computed once
 per (mu, nu) on the unit strip (a grid search refined by a bounded optimiser) and
-scaled per slice, so the stresses of a whole roller cost microseconds. Near a crowned
-or tilted end the field is three-dimensional; the slice method's error there against a
-3D field (Love's rectangle stresses convolved with a 3D boundary-element pressure,
-tools/bem/stress.py) is measured in tables/stress_accuracy.csv
-(tools/studies/stress_study.py) and stated in each result's notes.
+scaled per slice, so the stresses of a whole roller cost microseconds. Where the load
+varies along the roller (a crown, a relief, a tilt) the field is three-dimensional and
+the strips are up to 5 % low; the worst of each measure therefore gets a 3D
+correction: below the worst slices, McEwen's strip of the slice plus the 3D field of
+the difference between the slices' Hertz pressures and that strip extended to
+infinity, from Love's uniformly loaded rectangles (:func:`rectangle_stresses`;
+Love 1929) on a grid of 24 cells across and one cell per slice along (one per slice
+and across beyond 8 b). Its error against a 3D field (Love's and Cerruti's rectangles
+below a 3D boundary-element pressure, tools/bem/stress.py) is measured in
+tables/stress_accuracy.csv (tools/studies/stress_study.py) and stated in each
+result's ``error`` and notes.
 
 Case-hardening check: the stress envelope against depth (the largest over y at each
 depth, since rolling sweeps every y past a material point) over the local allowable of
@@ -70,9 +76,12 @@ References
    (2008) 888-893.
 .. [5] ISO 2639:2002, Steels - Determination and verification of the depth of
    carburized and hardened cases (effective case depth at 550 HV).
+.. [6] A. E. H. Love, "The stress produced in a semi-infinite solid by pressure on
+   part of the boundary", Phil. Trans. R. Soc. A 228 (1929) 377-420.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass, field
@@ -87,6 +96,8 @@ __all__ = [
     "strip_stresses",
     "StripMaxima",
     "strip_maxima",
+    "rectangle_stresses",
+    "reaches_end",
     "SubsurfaceStresses",
     "line_contact_stresses",
     "roller_stresses",
@@ -411,6 +422,15 @@ class SubsurfaceStresses:
     edge_loaded : bool
         The contact reaches a roller end (the end slice's stresses are those of a
         singular pressure peak, resolved only to the slice width).
+    strip_worst : dict or None
+        With the 3D correction: the plane-strain strips' worst (as `worst`), for
+        comparison; None without it.
+    error : dict or None
+        Measure -> the largest |value/value_3D - 1| measured for this kind of case in
+        tables/stress_accuracy.csv [-]; None where the case lies outside the measured
+        range (the notes say why).
+    method : str
+        "plane-strain strip" or "strip + 3D correction".
 
     Notes
     -----
@@ -435,6 +455,9 @@ class SubsurfaceStresses:
     worst: dict
     notes: tuple = field(default_factory=tuple)
     edge_loaded: bool = False
+    strip_worst: dict = None
+    error: dict = None
+    method: str = "plane-strain strip"
 
     def _slice(self, x):
         x = float(x)
@@ -540,12 +563,16 @@ class SubsurfaceStresses:
         Returns
         -------
         dict
-            Keys worst, notes, edge_loaded, friction, poisson (and x, half_width,
+            Keys worst, notes, edge_loaded, friction, poisson, method, error
+            (strip_worst with the 3D correction; and x, half_width,
             peak_pressure, value, depth, y), units.
         """
         d = {"worst": {k: dict(v) for k, v in self.worst.items()},
              "friction": self.friction, "poisson": self.poisson,
-             "edge_loaded": self.edge_loaded, "notes": list(self.notes)}
+             "edge_loaded": self.edge_loaded, "notes": list(self.notes),
+             "method": self.method, "error": self.error}
+        if self.strip_worst is not None:
+            d["strip_worst"] = {k: dict(v) for k, v in self.strip_worst.items()}
         if arrays:
             d.update(x=self.x.tolist(), half_width=self.half_width.tolist(),
                      peak_pressure=self.peak_pressure.tolist(),
@@ -625,12 +652,18 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
                             "modelled",))
 
 
-def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
+def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=True):
     r"""Stress maxima along a roller solved by slices, per slice and the worst of all.
 
     .. math:: p_{0,k} = \frac{2 q_k}{\pi b_k},\qquad
               \tau_{\max,k} = \hat\tau(\mu, \nu)\, p_{0,k}
               \text{ at } z_k = \hat z(\mu, \nu)\, b_k
+
+    per slice (plane strain); the worst of each measure then gets a 3D correction:
+    below the slice of the strips' worst and two either side, the field is McEwen's
+    strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
+    of the difference between the slices' Hertz pressures and that strip extended
+    to infinity, maximised over (y, z) by a zoomed grid search (docs/stresses.md).
 
     Parameters
     ----------
@@ -644,28 +677,35 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
     roller : ProfiledRoller, optional
         The model that produced `solution`: with it the note also checks L/D, the
         mean line load and the profile against the measured range.
+    three_d : bool, optional
+        Apply the 3D correction to the worst (default; without it the worst is the
+        plane-strain strips', up to 5 % low under a crown, a relief or a tilt).
 
     Returns
     -------
     SubsurfaceStresses
-        Per slice and worst; notes state the slice method's measured error.
+        Per slice (plane strain) and worst (3D-corrected); ``error`` and the notes
+        give the measured error against a 3D field.
 
     Notes
     -----
-    Valid as the roller model (b << R, |theta| < 0.1 rad); the plane-strain strip per
-    slice is measured against a 3D field in tables/stress_accuracy.csv (the notes).
+    Valid as the roller model (b << R, |theta| < 0.1 rad); the 3D correction covers the
+    normal pressure (the traction's field stays the strip's); measured against a 3D
+    field in tables/stress_accuracy.csv (``error``, notes). A measure whose strip
+    maximum lies at the surface (mu >= 0.3) keeps the strip's value.
 
     Examples
     --------
     >>> from linecontact.roller import roller_contact
     >>> sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     >>> s = roller_stresses(sol)
-    >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa at x = {s.worst['tresca']['x'] * 1e3:.2f} mm"
-    '737 MPa at x = -0.04 mm'
+    >>> f"{s.worst['tresca']['value'] / 1e6:.0f} MPa (strips: {s.strip_worst['tresca']['value'] / 1e6:.0f} MPa)"
+    '759 MPa (strips: 737 MPa)'
 
     References
     ----------
-    K. L. Johnson, Contact Mechanics (1985), sections 4.2 and 7.2; E. McEwen (1949).
+    K. L. Johnson, Contact Mechanics (1985), sections 3.2, 4.2 and 7.2; E. McEwen
+    (1949); A. E. H. Love (1929).
     """
     mu, nu = _check_material(friction, poisson)
     x = np.asarray(solution.x, dtype=float)
@@ -674,50 +714,400 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None):
     loaded = (b > 0) & (q > 0)
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
-    notes = [stress_accuracy_note(solution, mu, roller)]
     edge = bool(getattr(solution, "edge_loaded", False))
+    note, error = stress_accuracy(solution, mu, roller, three_d and x.size > 1)
+    notes = [note]
     if edge:
         notes.insert(0, "edge loaded: the end slice's pressure is a singular peak on a "
                         "half-space, so the stresses below it are resolved only to the "
                         "slice width (a grid-dependent number, like the peak pressure)")
-    return _assemble(x, b, p0, mu, nu, notes, edge)
+    s = _assemble(x, b, p0, mu, nu, notes, edge)
+    if not three_d or x.size < 2 or not loaded.any():
+        return dataclasses.replace(s, error=error)
+    w3 = _worst_3d(x, b, p0, mu, nu, s.value, _maxima(mu, nu))
+    worst = {k: (s.worst[k] if w3[k] is None else w3[k]) for k in MEASURES}
+    return dataclasses.replace(s, worst=worst, strip_worst=s.worst, error=error,
+                               method="strip + 3D correction")
+
+
+
+# ---------------------------------------------------------------- 3D correction
+def _love_corner(X, Y, z):
+    """The nine corner functions of Love's uniformly loaded rectangle at offsets (X, Y)
+    from one corner, depth z > 0 (see :func:`rectangle_stresses`), stacked (9, ...)."""
+    X2, Y2, z2 = X * X, Y * Y, z * z
+    rho = np.sqrt(X2 + Y2 + z2)
+    XY = X * Y
+    xz = X2 + z2
+    yz = Y2 + z2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        hxx_den = X2 * rho + Y2 * z
+        hyy_den = Y2 * rho + X2 * z
+        hxx = np.where(hxx_den > 0, np.arctan(XY * (rho - z)
+                                              / np.where(hxx_den > 0, hxx_den, 1)), 0.0)
+        hyy = np.where(hyy_den > 0, np.arctan(XY * (rho - z)
+                                              / np.where(hyy_den > 0, hyy_den, 1)), 0.0)
+    return np.stack([-np.arctan(XY / (z * rho)),               # d psi1/dz
+                     XY * (rho * rho + z2) / (rho * xz * yz),  # d2 psi1/dz2
+                     -XY / (rho * xz),                         # d2 psi1/dx2
+                     -XY / (rho * yz),                         # d2 psi1/dy2
+                     1.0 / rho,                                # d2 psi1/dxdy
+                     -Y * z / (rho * xz),                      # d2 psi1/dxdz
+                     -X * z / (rho * yz),                      # d2 psi1/dydz
+                     hxx, hyy,                                 # d2 H1/dx2, d2 H1/dy2
+                     np.log(rho + z)])                         # d2 H1/dxdy
+
+
+def _love_components(t, z, nu):
+    """The six stress components from the corner sums t (9, ...) at depth z."""
+    k = 1.0 / (2.0 * np.pi)
+    pz, pzz, pxx, pyy, pxy, pxz, pyz, hxx, hyy, hxy = t
+    return (k * (2 * nu * pz - z * pxx - (1 - 2 * nu) * hxx),
+            k * (2 * nu * pz - z * pyy - (1 - 2 * nu) * hyy),
+            k * (pz - z * pzz),
+            -k * ((1 - 2 * nu) * hxy + z * pxy),
+            -k * z * pxz,
+            -k * z * pyz)
+
+
+def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
+    r"""Stresses below a uniform unit pressure on a dx-by-dy rectangle (Love 1929).
+
+    With Boussinesq's potentials :math:`H_1 = \int p\ln(\rho + z)\,dA` and
+    :math:`\psi_1 = \int p/\rho\,dA` (Johnson 1985, Eqs. 3.18-3.19)
+
+    .. math::
+
+        \sigma_x = \frac{1}{2\pi}\left[2\nu\frac{\partial\psi_1}{\partial z}
+        - z\frac{\partial^2\psi_1}{\partial x^2}
+        - (1 - 2\nu)\frac{\partial^2 H_1}{\partial x^2}\right],\quad
+        \sigma_z = \frac{1}{2\pi}\left[\frac{\partial\psi_1}{\partial z}
+        - z\frac{\partial^2\psi_1}{\partial z^2}\right], \dots
+
+    and for the rectangle every derivative is a signed sum over its four corners of an
+    elementary function of the offsets X, Y from the corner and
+    :math:`\rho = \sqrt{X^2 + Y^2 + z^2}` (docs/stresses.md lists the nine).
+
+    Parameters
+    ----------
+    x, y : array_like
+        Field point relative to the rectangle's centre [m].
+    z : float or array_like
+        Depth, z > 0 [m].
+    dx, dy : float
+        Rectangle sides [m].
+    poisson : float, optional
+        Poisson's ratio, 0 <= nu < 0.5 [-].
+
+    Returns
+    -------
+    dict
+        sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz per unit pressure [-]
+        (compression negative).
+
+    Notes
+    -----
+    Valid for z > 0 (on the surface the field is singular at the rectangle's edges),
+    any dx, dy > 0; linear elasticity of a homogeneous half-space.
+
+    Examples
+    --------
+    Just below a loaded rectangle sigma_z = -p:
+
+    >>> s = rectangle_stresses(0.0, 0.0, 1e-9, 1.0, 1.0)
+    >>> f"{float(s['sigma_z']):.6f}"
+    '-1.000000'
+
+    References
+    ----------
+    A. E. H. Love, Phil. Trans. R. Soc. A 228 (1929) 377-420; K. L. Johnson, Contact
+    Mechanics (1985), section 3.2.
+    """
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    check_positive("dx", dx, "m")
+    check_positive("dy", dy, "m")
+    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
+    if np.any(z <= 0):
+        raise OutOfRangeError("z", float(np.min(z)), "(0, inf) m", unit="m",
+                              hint="the field is singular on the surface")
+    a, b = 0.5 * float(dx), 0.5 * float(dy)
+    t = 0.0
+    for sx, X in ((1.0, x + a), (-1.0, x - a)):
+        for sy, Y in ((1.0, y + b), (-1.0, y - b)):
+            t = t + sx * sy * _love_corner(X, Y, z)
+    return dict(zip(("sigma_x", "sigma_y", "sigma_z", "tau_xy", "tau_xz", "tau_yz"),
+                    _love_components(t, z, nu)))
+
+
+def _hertz_cell_means(edges, b):
+    """Mean of sqrt(1 - y^2/b^2) over each cell [edges[i], edges[i+1]] (0 beyond b)."""
+    u = np.clip(edges / b, -1.0, 1.0)
+    prim = 0.5 * (u * np.sqrt(1.0 - u * u) + np.arcsin(u))     # int sqrt(1-u^2) du
+    return np.diff(prim) * b / np.diff(edges)
+
+
+#: 3D correction: cells across the contact, near-field half-window over b
+_N_Y = 24
+_NEAR = 8.0
+#: 3D search: zooms after the first 5 x 5 grid (3 x 3 each), window shrink per zoom
+_ZOOMS = 3
+_SHRINK = 2.5
+
+
+def _corners_3d(xc, b, p0, k0):
+    """Corner positions and weights of the pressure difference p - p_k0 (a row of
+    Hertz strips, one per slice, minus the strip of slice k0 extended to infinity)."""
+    n = xc.size
+    h = np.diff(xc)
+    xe = np.concatenate([[xc[0] - 0.5 * h[0]], 0.5 * (xc[1:] + xc[:-1]),
+                         [xc[-1] + 0.5 * h[-1]]])
+    b0, x0 = b[k0], xc[k0]
+    near = np.abs(xc - x0) <= _NEAR * b0
+    near[max(k0 - 2, 0):k0 + 3] = True
+    i0, i1 = np.flatnonzero(near)[[0, -1]]
+    near[i0:i1 + 1] = True
+    # near field: a common grid across |y| <= B, each slice's Hertz profile averaged
+    # onto its cells; minus slice k0's profile; the extension of k0's strip beyond the
+    # roller's ends (to +-1e6 L) closes the infinite strip whose field is McEwen's
+    B = max(float(b[i0:i1 + 1].max()), b0)
+    ye = np.linspace(-B, B, _N_Y + 1)
+    L = xe[-1] - xe[0]
+    ref = p0[k0] * _hertz_cell_means(ye, b0)
+    rows = [p0[i] * _hertz_cell_means(ye, b[i]) if b[i] > 0 else np.zeros(_N_Y)
+            for i in range(i0, i1 + 1)]
+    P = np.array(rows) - ref
+    xs = xe[i0:i1 + 2]
+    if i0 == 0:
+        P = np.vstack([-ref, P])
+        xs = np.concatenate([[xe[0] - 1e6 * L], xs])
+    if i1 == n - 1:
+        P = np.vstack([P, -ref])
+        xs = np.concatenate([xs, [xe[-1] + 1e6 * L]])
+    Pp = np.pad(P, 1)
+    W = Pp[1:, 1:] - Pp[1:, :-1] - Pp[:-1, 1:] + Pp[:-1, :-1]
+    CX, CY = np.meshgrid(xs, ye, indexing="ij")
+    cx, cy, w = [CX.ravel()], [CY.ravel()], [W.ravel()]
+    # far field (beyond _NEAR b0, where the distribution across matters to (b/r)^2
+    # of a small difference): one cell per slice across |y| <= max(b, b0) with the
+    # difference of the mean pressures (q - q_k0)/(2 max(b, b0)); beyond the roller's
+    # ends (if the near grid does not reach them) k0's strip, one cell
+    far = np.flatnonzero(~near)
+    q, q0 = 0.5 * np.pi * p0 * b, 0.5 * np.pi * p0[k0] * b0
+    lo_x, hi_x = list(xe[far]), list(xe[far + 1])
+    bf = list(np.maximum(b[far], b0))
+    dq = list(q[far] - q0)
+    if i0 > 0:
+        lo_x.append(xe[0] - 1e6 * L), hi_x.append(xe[0]), bf.append(b0), dq.append(-q0)
+    if i1 < n - 1:
+        lo_x.append(xe[-1]), hi_x.append(xe[-1] + 1e6 * L), bf.append(b0), dq.append(-q0)
+    if lo_x:
+        lo_x, hi_x, bf = np.array(lo_x), np.array(hi_x), np.array(bf)
+        pm = np.array(dq) / (2 * bf)
+        cx.append(np.concatenate([lo_x, lo_x, hi_x, hi_x]))
+        cy.append(np.concatenate([-bf, bf, -bf, bf]))
+        w.append(np.concatenate([pm, -pm, -pm, pm]))
+    cx, cy, w = (np.concatenate(v) for v in (cx, cy, w))
+    keep = w != 0
+    return cx[keep], cy[keep], w[keep]
+
+
+def _love_sums(X, Y, z, w):
+    """The corner sums sum_c w_c g(X_pc, Y_pc, z_p) of the nine corner functions
+    (:func:`_love_corner`), computed one function at a time: (9, n_points)."""
+    X2, Y2, z2 = X * X, Y * Y, z * z
+    rho = np.sqrt(X2 + Y2 + z2)
+    XY = X * Y
+    xz = X2 + z2
+    yz = Y2 + z2
+    ir = 1.0 / rho
+    out = [(-np.arctan(XY * ir / z)) @ w,
+           (XY * (rho * rho + z2) * ir / (xz * yz)) @ w,
+           (-XY * ir / xz) @ w,
+           (-XY * ir / yz) @ w,
+           ir @ w,
+           (-Y * z * ir / xz) @ w,
+           (-X * z * ir / yz) @ w]
+    rz = rho - z
+    for den in (X2 * rho + Y2 * z, Y2 * rho + X2 * z):
+        ok = den > 0
+        out.append(np.where(ok, np.arctan(XY * rz / np.where(ok, den, 1.0)), 0.0) @ w)
+    out.append(np.log(rho + z) @ w)
+    return np.array(out)
+
+
+def _field_3d(xc, b, p0, mu, nu, k0, py, pz, corners=None):
+    """Stresses (sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz) at the points
+    (x_k0, py, pz): McEwen's strip of slice k0 (pressure and traction) plus the 3D
+    field of the pressure's difference from it (Love's rectangles)."""
+    cx, cy, w = _corners_3d(xc, b, p0, k0) if corners is None else corners
+    py = np.asarray(py, float)
+    pz = np.asarray(pz, float)
+    t = _love_sums((xc[k0] - cx)[None, :], py[:, None] - cy[None, :], pz[:, None], w)
+    d = _love_components(t, pz, nu)
+    sx, sy, sz, tyz = _unit_strip(py / b[k0], pz / b[k0], mu, nu)
+    s0 = p0[k0]
+    return (s0 * sx + d[0], s0 * sy + d[1], s0 * sz + d[2], d[3], d[4], s0 * tyz + d[5])
+
+
+def _measures_3d(c):
+    """Tresca, von Mises and |tau_yz| of six component arrays."""
+    sx, sy, sz, txy, txz, tyz = c
+    T = np.stack([np.stack([sx, txy, txz], -1), np.stack([txy, sy, tyz], -1),
+                  np.stack([txz, tyz, sz], -1)], -2)
+    ev = np.linalg.eigvalsh(T)
+    vm = np.sqrt(np.maximum(0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2)
+                            + 3 * (txy ** 2 + txz ** 2 + tyz ** 2), 0.0))
+    return dict(tresca=0.5 * (ev[..., -1] - ev[..., 0]), von_mises=vm,
+                orthogonal_shear=np.abs(tyz))
+
+
+def _worst_3d(x, b, p0, mu, nu, value2d, m):
+    """The worst of each measure with the 3D correction (:func:`_field_3d`): the
+    strip's optimum point below the slice of the strip's worst and two slices either
+    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
+    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
+    optimum lies within 0.1 b of the surface keep the strip's value (None here)."""
+    grids = []
+    for n in (5, 3):
+        u = np.linspace(-1.0, 1.0, n)
+        grids.append(tuple(a.ravel() for a in np.meshgrid(u, u, indexing="ij")))
+    cache = {}
+
+    def field(k, py, pz):
+        if k not in cache:
+            cache[k] = _corners_3d(x, b, p0, k)
+        return _measures_3d(_field_3d(x, b, p0, mu, nu, k, py, pz, cache[k]))
+
+    out = {}
+    for name in MEASURES:
+        if m.z[name] < 0.1:
+            out[name] = None
+            continue
+        k = int(np.argmax(value2d[name]))
+        ks = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
+        vals = [float(field(kk, [m.y[name] * b[kk]], [m.z[name] * b[kk]])[name][0])
+                for kk in ks]
+        kk = ks[int(np.argmax(vals))]
+        bb = b[kk]
+        val, by, bz = max(vals), m.y[name] * bb, m.z[name] * bb
+        hy, hz = 0.4 * bb, 0.3 * bb
+        for it in range(_ZOOMS + 1):
+            U, V = grids[min(it, 1)]
+            py = by + hy * U
+            pz = np.maximum(bz + hz * V, 0.05 * bb)
+            v = field(kk, py, pz)[name]
+            j = int(np.argmax(v))
+            if v[j] > val:
+                val, by, bz = float(v[j]), py[j], pz[j]
+            hy, hz = hy / _SHRINK, hz / _SHRINK
+        out[name] = dict(value=val, x=float(x[kk]), y=float(by), z=float(bz), slice=kk)
+    return out
 
 
 # ---------------------------------------------------------------- accuracy note
 _ACCURACY = []
+#: the table's error fields: (3D-corrected?, friction?, edge loaded?) -> header key
+_ERROR_KEYS = {(True, False, False): "error_3d_off_ends",
+               (True, False, True): "error_3d_edge_loaded",
+               (True, True, False): "error_3d_friction_off_ends",
+               (True, True, True): "error_3d_friction_edge_loaded",
+               (False, False, False): "slice_error_off_ends",
+               (False, False, True): "slice_error_edge_loaded",
+               (False, True, False): "slice_error_friction_off_ends",
+               (False, True, True): "slice_error_friction_edge_loaded"}
 
 
 def _accuracy():
-    """The covered_* and slice_error_* fields of tables/stress_accuracy.csv (or None)."""
+    """The covered_* and error fields of tables/stress_accuracy.csv (or None)."""
     if not _ACCURACY:
         from .tables import read_table
         try:
             meta = read_table("stress_accuracy").meta
             errs = {}
-            for key in ("slice_error_off_ends", "slice_error_edge_loaded"):
-                errs[key] = {k: float(v) for k, v in
-                             (item.split() for item in meta[key].split(","))}
+            for key in _ERROR_KEYS.values():
+                if key in meta:
+                    errs[key] = {k: float(v) for k, v in
+                                 (item.split() for item in meta[key].split(","))}
             cov = dict(l_over_d=tuple(float(v) for v in
                                       meta["covered_l_over_d"].split(",")),
                        line_load=tuple(float(v) for v in
                                        meta["covered_line_load_over_estar_d"].split(",")),
                        tilt=tuple(float(v) for v in meta["covered_tilt_rad"].split(",")),
+                       friction=tuple(float(v) for v in
+                                      meta.get("covered_friction", "0, 0").split(",")),
                        profiles=tuple(k.strip() for k in
                                       meta["covered_profiles"].split(",")),
-                       **errs)
+                       errors=errs)
         except (FileNotFoundError, KeyError, ValueError):
             cov = None
         _ACCURACY.append(cov)
     return _ACCURACY[0]
 
 
-def stress_accuracy_note(solution, friction=0.0, roller=None):
-    """The note on the slice stresses' measured error for this roller solution (the
-    range of tables/stress_accuracy.csv: L/D, q/(E* D), tilt, profile, no friction)."""
+def reaches_end(solution):
+    r"""Whether a slice solution's contact reaches a roller end or comes within half a
+    slice width h of it.
+
+    .. math:: \min(x_\text{start} - x_\text{lo},\; x_\text{hi} - x_\text{end}) < h/2
+
+    There the 3D contact may be edge loaded where the slices are not (in the study of
+    tables/stress_accuracy.csv every such case was), so the stresses' error is the
+    edge-loaded one (the study's ``rt_edge``).
+
+    Parameters
+    ----------
+    solution : RollerSolution
+        A slice solution (its ``x`` [m], ``q`` [N/m], ``edge_loaded``, and
+        ``contact_start``/``contact_end`` [m] where it has them).
+
+    Returns
+    -------
+    bool
+        True at or near an end.
+
+    Notes
+    -----
+    Valid for slices of equal width spanning the roller (linecontact.roller).
+
+    Examples
+    --------
+    >>> from linecontact.roller import roller_contact
+    >>> reaches_end(roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0))
+    False
+
+    References
+    ----------
+    docs/stresses.md (the accuracy section).
+    """
+    if bool(getattr(solution, "edge_loaded", False)):
+        return True
+    x = np.asarray(solution.x, dtype=float)
+    if x.size < 2:
+        return False
+    h = float(x[1] - x[0])
+    lo, hi = x[0] - 0.5 * h, x[-1] + 0.5 * h
+    start = getattr(solution, "contact_start", None)
+    end = getattr(solution, "contact_end", None)
+    if start is None or end is None:
+        loaded = np.flatnonzero(np.asarray(solution.q) > 0)
+        if loaded.size == 0:
+            return False
+        start, end = x[loaded[0]] - 0.5 * h, x[loaded[-1]] + 0.5 * h
+    return bool(min(start - lo, hi - end) < 0.5 * h)
+
+
+def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
+    """The measured error of the roller stresses for this solution and its note.
+
+    Returns (note, error): error maps each measure to the largest |rt/3D - 1| of
+    tables/stress_accuracy.csv for this kind of case (3D-corrected or strips, with or
+    without friction, off the ends or edge loaded), None outside the measured range
+    (L/D, q/(E* D), tilt, profile, friction), which the note names."""
     cov = _accuracy()
     where = "a 3D field below the 3D BEM pressure (tables/stress_accuracy.csv)"
+    what = "3D-corrected stresses" if three_d else "slice (plane-strain) stresses"
     if cov is None:
-        return f"the slice stresses' error against {where} is not known here"
+        return f"the {what}' error against {where} is not known here", None
     outside = []
     if roller is not None:
         D = 2 * roller.radius
@@ -729,21 +1119,29 @@ def stress_accuracy_note(solution, friction=0.0, roller=None):
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:
             outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
-    if friction > 0:
-        outside.append(f"friction = {friction:.3g} (measured without traction)")
+    lo, hi = cov["friction"]
+    if not lo <= friction <= hi * (1 + 1e-9):
+        outside.append(f"friction = {friction:.3g} (measured {lo:.3g}-{hi:.3g})")
     th = abs(float(getattr(solution, "tilt", 0.0)))
     lo, hi = cov["tilt"]
     if not lo <= th <= hi * (1 + 1e-5):
         outside.append(f"|tilt| = {th:.3g} rad (measured {lo:.3g}-{hi:.3g} rad)")
-    edge = bool(getattr(solution, "edge_loaded", False))
-    e = cov["slice_error_edge_loaded" if edge else "slice_error_off_ends"]
+    edge = reaches_end(solution)
+    key = _ERROR_KEYS[(bool(three_d), friction > 0, edge)]
+    e = cov["errors"].get(key)
+    state = ("contact at (or within half a slice of) a roller end" if edge
+             else "contact off the ends") + (", with traction" if friction > 0 else "")
+    if e is None:
+        outside.append(f"{state} (not measured for the {what})")
+        return (f"{'; '.join(outside)}: the {what}' error against {where} is not "
+                "known here"), None
     errs = ", ".join(f"{k.replace('_', ' ')} {100 * v:.2g} %" for k, v in e.items())
-    state = "edge loaded" if edge else "contact off the ends"
     if outside:
-        return (f"{'; '.join(outside)}: outside the range where the slice stresses were "
-                f"measured against {where}; inside it, {state}: largest errors {errs}")
-    return (f"slice stresses against {where}, {state}: largest errors {errs} "
-            f"(maximum of each measure over the roller)")
+        return (f"{'; '.join(outside)}: outside the range where the {what} were "
+                f"measured against {where}; inside it, {state}: largest errors "
+                f"{errs}"), None
+    return (f"{what} against {where}, {state}: largest errors {errs} (maximum of each "
+            "measure over the roller)"), dict(e)
 
 
 # ---------------------------------------------------------------- case hardening

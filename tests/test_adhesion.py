@@ -124,19 +124,44 @@ def test_2d_jkr_pull_off_is_the_minimum_of_its_law():
     assert res.fun == pytest.approx(F, rel=1e-12)
 
 
-def test_long_roller_limit_within_one_percent_of_2d_jkr():
-    """A long roller (s = b_c/L = 1e-3): the corrected pull-off per unit length is the 2D
-    JKR value within 1 %; the plain MDR rule is not (its edge term scales with the MDR
-    half-length ~ L, not with b; its pull-off lies beyond d = 0.15 R here, so the model
-    is asked with extrapolate=True)."""
+def test_long_roller_below_the_table_is_refused_and_the_mdr_named():
+    """A long roller (s = b_c/L = 1e-3, below the BEM table): the corrected pull-off is
+    refused with the parameter and the range named (the whole roller's ratio to the 2D
+    value falls as s decreases: it is not extrapolated); method='mdr' gives the rule of
+    Hess by name, its error not measured there (NaN); per unit length the 2D law is
+    jkr_cylinder_pull_off (the BEM's long strip follows it within 1 %:
+    tests/test_adhesion_bem.py). The plain rule misses the 2D value by more than 10 %
+    (its edge term scales with the MDR half-length ~ L, not with b; its pull-off lies
+    beyond d = 0.15 R here, so the model is asked with extrapolate=True)."""
     Rr, L, Ee = 1e-3, 0.2, 2.7e6
     w = math.pi / 2 * 1e-3 ** 3 * Ee * L ** 3 / Rr ** 2
     c = CylinderAdhesion(get_model("universal", Rr, L, Ee, extrapolate=True), w)
     assert c.s == pytest.approx(1e-3, rel=1e-9)
+    with pytest.raises(OutOfRangeError, match="work.*below the BEM table"):
+        c.pull_off("force")
+    res = c.pull_off("force", method="mdr")
+    assert res["method"] == "mdr" and math.isnan(res["error"])
     F2, _ = jkr_cylinder_pull_off(Rr, Ee, w)
-    res = c.pull_off("force")
-    assert abs(res["force"] / L / F2 - 1) < 0.01
-    assert abs(res["mdr_force"] / L / F2 - 1) > 0.1
+    assert res["force"] == pytest.approx(c.mdr.pull_off("force")["force"], rel=1e-12)
+    assert abs(res["force"] / L / F2 - 1) > 0.1
+
+
+def test_corrected_values_are_the_table_at_its_nodes():
+    """At every row of the table the corrected pull-off (both controls) is the row's
+    ratio times the 2D JKR value of the length, and method='mdr' carries the row's
+    measured MDR error (PCHIP passes through its nodes: to 1e-12)."""
+    from linecontact.tables import read_table
+
+    cols = read_table("adhesion_cylinder").columns
+    m = get_model("universal", 1.0, 1.0, 1.0, extrapolate=True)
+    for i, si in enumerate(cols["s"]):
+        c = CylinderAdhesion(m, math.pi / 2 * si ** 3)
+        for ctl in ("force", "depth"):
+            r = c.pull_off(ctl)
+            assert r["ratio"] == pytest.approx(cols[f"ratio_{ctl}"][i], rel=1e-12)
+            assert r["force"] == pytest.approx(r["ratio"] * c.pull_off_2d, rel=1e-12)
+            e = c.pull_off(ctl, method="mdr")["error"]
+            assert e == pytest.approx(cols[f"mdr_err_{ctl}"][i], rel=1e-9, abs=1e-12)
 
 
 def test_cylinder_table_refuses_beyond_its_end_and_other_shapes():

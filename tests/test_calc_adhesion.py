@@ -24,17 +24,37 @@ def _row(capsys, argv):
     return json.loads(capsys.readouterr().out)["models"][0]["rows"][0]
 
 
-def test_columns_are_the_library_values(capsys):
-    """Pull-off (BEM-corrected, both controls; MDR), zero load, the depth at the load
-    with adhesion and the Tabor parameter equal the library's."""
-    row = _row(capsys, CASE + ["--load", "10mN", "--work-of-adhesion", "40mJ/m^2"])
-    E = effective_modulus(2e6, 0.5)
-    m = get_model("universal", 0.5e-3, 2e-3, E)
-    c = CylinderAdhesion(m, 0.04)
-    mdr = AdhesiveContact.from_model(m, 0.04)
+#: A hydrogel roller inside the BEM table (s = b_c/L = 0.039).
+GEL = ["calc", "--radius", "1mm", "--length", "2mm", "--modulus", "50kPa", "--poisson",
+       "0.5", "--model", "universal"]
+
+
+def test_bem_columns_are_the_library_values(capsys):
+    """Inside the BEM table: the corrected pull-off under both controls and the MDR's
+    measured error equal the library's (method 'bem')."""
+    row = _row(capsys, GEL + ["--load", "0.1mN", "--work-of-adhesion", "50mJ/m^2"])
+    m = get_model("universal", 1e-3, 2e-3, effective_modulus(5e4, 0.5))
+    c = CylinderAdhesion(m, 0.05)
+    assert c.in_table
     assert row["pull_off_force"] == pytest.approx(c.pull_off("force")["force"], rel=1e-12)
     assert row["pull_off_depth_ctrl"] == pytest.approx(c.pull_off("depth")["force"],
                                                        rel=1e-12)
+    assert row["pull_off_mdr_error"] == pytest.approx(
+        c.pull_off("force", method="mdr")["error"], rel=1e-12)
+
+
+def test_columns_are_the_library_values(capsys):
+    """Below the BEM table (s = 0.0067) the corrected pull-off is not given (NaN, the
+    row's note says why) and the MDR's error is not measured; the MDR pull-off, zero
+    load, the depth at the load with adhesion and the Tabor parameter equal the
+    library's."""
+    row = _row(capsys, CASE + ["--load", "10mN", "--work-of-adhesion", "40mJ/m^2"])
+    E = effective_modulus(2e6, 0.5)
+    m = get_model("universal", 0.5e-3, 2e-3, E)
+    mdr = AdhesiveContact.from_model(m, 0.04)
+    assert row["pull_off_force"] is None or np.isnan(row["pull_off_force"])
+    assert row["pull_off_mdr_error"] is None or np.isnan(row["pull_off_mdr_error"])
+    assert "below the BEM table" in json.dumps(row)
     assert row["pull_off_mdr"] == pytest.approx(mdr.pull_off("force")["force"], rel=1e-12)
     assert row["zero_load_depth"] == pytest.approx(mdr.zero_load()["depth"], rel=1e-12)
     assert row["depth_adhesive"] == pytest.approx(mdr.depth_at_force(0.01), rel=1e-12)

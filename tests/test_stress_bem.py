@@ -101,3 +101,61 @@ def test_long_strip_is_plane_strain():
                    ("tau_yz", "tau_yz")):
         assert np.max(np.abs(s3[c3][i] - getattr(s2, c2))) < 5e-3, c3
     assert np.max(np.abs(s3["tau_xy"][i])) < 1e-3 and np.max(np.abs(s3["tau_xz"][i])) < 1e-3
+
+
+def test_cerruti_point_force_is_an_elastic_field():
+    """Cerruti's point-force stresses satisfy equilibrium (div sigma = 0, central
+    differences to 1e-8), leave the surface free (sigma_z, tau_xz, tau_yz -> 0 off the
+    load) and carry the force: tau_xz integrated over a depth plane is -1."""
+    from tools.bem.stress import cerruti_point_stresses as cer
+    p, h = np.array([0.3, -0.7, 0.5]), 1e-5
+    names = [["sigma_x", "tau_xy", "tau_xz"], ["tau_xy", "sigma_y", "tau_yz"],
+             ["tau_xz", "tau_yz", "sigma_z"]]
+    for i in range(3):
+        div = 0.0
+        for j in range(3):
+            e = np.zeros(3)
+            e[j] = h
+            div += (cer(*(p + e), NU)[names[i][j]] - cer(*(p - e), NU)[names[i][j]]) / (2 * h)
+        assert abs(div) < 1e-8, i
+    s = cer(0.4, 0.3, 1e-9, NU)
+    assert max(abs(float(s[k])) for k in ("sigma_z", "tau_xz", "tau_yz")) < 1e-7
+    r, w = np.polynomial.legendre.leggauss(200)
+    r = np.tan(0.25 * np.pi * (r + 1)) * 0.5
+    wr = w * 0.25 * np.pi * (1 + (2 * r) ** 2) * 0.5
+    t = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+    R, T = np.meshgrid(r, t, indexing="ij")
+    f = cer(R * np.cos(T), R * np.sin(T), 0.5, NU)["tau_xz"]
+    assert float(np.sum(f * R * wr[:, None]) * 2 * np.pi / 64) == pytest.approx(-1.0, abs=1e-6)
+
+
+def test_rectangle_quadrature_reproduces_loves_closed_form():
+    """The quadrature used for the traction rectangle, applied to Boussinesq's point
+    load, reproduces Love's closed-form rectangle to 1e-6 (study-like cells, depths
+    0.1 and 0.5)."""
+    from tools.bem.stress import rectangle_quadrature
+    X, Y = np.meshgrid(np.arange(-6, 7) * 0.37, np.arange(-6, 7) * 0.04, indexing="ij")
+    for z in (0.1, 0.5):
+        q = rectangle_quadrature(point_load_stresses, X, Y, z, 0.37, 0.04, NU)
+        r = rectangle_stresses(X, Y, z, 0.37, 0.04, NU)
+        assert max(np.abs(q[k] - r[k]).max() for k in COMPONENTS) < 1e-6, z
+
+
+def test_long_strip_traction_reproduces_the_plane_strain_traction_field():
+    """A strip 400 b long under the traction mu p0 sqrt(1 - y^2/b^2) in +y: in its middle
+    the 3D field (Cerruti rectangles, DC-FFT) equals McEwen's plane-strain traction
+    field (linecontact.stresses) to 1e-3 q0 (the cells across are b/26)."""
+    from linecontact.stresses import strip_stresses
+    nx, ny, Lx, Ly = 64, 64, 200.0, 1.25
+    dx, dy = 2 * Lx / nx, 2 * Ly / ny
+    y = -Ly + dy * (np.arange(ny) + 0.5)
+    p = np.tile(np.sqrt(np.clip(1 - y ** 2, 0, None)), (nx, 1))
+    f = StressField(nx, ny, dx, dy, NU)
+    for z in (0.3, 0.6):
+        _, T = f.plane(p, z, traction=p)
+        s1 = strip_stresses(y, z, 1.0, 1.0, friction=1.0, poisson=NU)
+        s0 = strip_stresses(y, z, 1.0, 1.0, friction=0.0, poisson=NU)
+        for c in ("sigma_x", "sigma_y", "sigma_z", "tau_yz"):
+            err = np.abs(T[c][nx // 2] - (getattr(s1, c) - getattr(s0, c))).max()
+            assert err < 1e-3, (z, c, err)
+        assert np.abs(T["tau_xz"][nx // 2]).max() < 1e-6

@@ -142,7 +142,7 @@ def test_roller_section_field_reproduces_the_worst_value():
     r = ProfiledRoller(5e-3, 14e-3, ESTAR, "circular:Rc=0.5")
     sol = r.at_force(4200.0)
     s = roller_stresses(sol, roller=r)
-    w = s.worst["tresca"]
+    w = s.strip_worst["tresca"]       # the section is the slice's plane-strain field
     b = s.half_width[w["slice"]]
     sec = s.section(w["x"], np.linspace(-1.5, 1.5, 301) * b, np.linspace(0, 1.5, 151) * b)
     assert sec.tresca.max() <= w["value"] * (1 + 1e-9)
@@ -204,3 +204,94 @@ def test_measured_hardness_table():
     s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
     c = case_check(s, h)
     assert c.min_case_depth is None and 0 < c.max_ratio < 1
+
+
+def _elliptic_slices(a_over_b, n=200, b=1e-4, p0=1e9):
+    """The slices of a Hertz elliptical contact (semi-axes a along x, b across):
+    b(x) = b sqrt(1 - x^2/a^2), p0(x) = p0 sqrt(1 - x^2/a^2) on a roller of 1.2 a."""
+    from types import SimpleNamespace
+    a = a_over_b * b
+    x = (np.arange(n) + 0.5) / n * 2.4 * a - 1.2 * a
+    s = np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    bx, px = b * s, p0 * s
+    return SimpleNamespace(x=x, half_width=bx, q=0.5 * np.pi * px * bx, tilt=0.0,
+                           force=float(np.sum(0.5 * np.pi * px * bx) * (x[1] - x[0])),
+                           edge_loaded=False)
+
+
+def _ellipse_axis_tresca(a_over_b, z_over_b, n=160):
+    """Tresca on the axis of a Hertz ellipse (b = 1, p0 = 1) by Gauss quadrature of
+    Boussinesq's point load over the elliptical pressure (an independent oracle)."""
+    from tools.bem.stress import measures, point_load_stresses
+    u, wu = np.polynomial.legendre.leggauss(n)
+    u, wu = 0.25 * np.pi * (u + 1), 0.25 * np.pi * wu          # r = sin(u)
+    t, wt = np.polynomial.legendre.leggauss(2 * n)
+    t, wt = np.pi * (t + 1), np.pi * wt
+    R, T = np.meshgrid(np.sin(u), t, indexing="ij")
+    W = np.outer(wu * np.cos(u), wt) * a_over_b * R * np.sqrt(1 - R ** 2)
+    f = point_load_stresses(-a_over_b * R * np.cos(T), -R * np.sin(T), z_over_b, 0.3)
+    return float(measures({k: np.sum(v * W) for k, v in f.items()})["tresca"])
+
+
+def test_3d_correction_meets_the_elliptical_hertz_contact():
+    """A Hertz ellipse a = 19 b cut into slices: the strips give 0.3003 p0 (2.8 % below
+    the 3D value); the 3D-corrected worst Tresca matches the quadrature of Boussinesq's
+    point load over the elliptical pressure to 0.2 % (the slices' piecewise-constant
+    load along x and the 24 cells across), at the same depth to 2 % of b."""
+    sol = _elliptic_slices(19.0)
+    s = roller_stresses(sol, 0.0, 0.3)
+    w = s.worst["tresca"]
+    z = w["z"] / 1e-4
+    oracle = max(_ellipse_axis_tresca(19.0, zz) for zz in np.linspace(z - 0.03, z + 0.03, 7))
+    assert w["value"] / 1e9 == pytest.approx(oracle, rel=2e-3)
+    assert s.strip_worst["tresca"]["value"] / 1e9 == pytest.approx(0.3003, abs=1e-4)
+    assert oracle > 0.305      # the 3D effect the correction has to find
+    assert abs(w["x"]) < 2 * (sol.x[1] - sol.x[0])
+    assert s.method == "strip + 3D correction"
+
+
+def test_3d_correction_of_a_long_even_strip_is_its_end_effect():
+    """A strip 2 r long with an (almost) even load, its worst in the middle: the
+    3D-corrected maxima tend to McEwen's strip maxima as the ends recede, the excess
+    falling as b/r (the field of the missing semi-infinite strips beyond the ends):
+    r = 200 b and 2000 b give excesses in the ratio 10 (to 5 %), the latter below
+    2e-4; the depth stays the strip's to 1 % of b."""
+    from types import SimpleNamespace
+    b, p0 = 1e-4, 1e9
+    m = strip_maxima(0.1, 0.3)
+    excess = []
+    for half, n in ((200, 401), (2000, 801)):
+        x = np.linspace(-half * b, half * b, n)
+        p = p0 * (1 + 1e-7 * (1 - (x / x[-1]) ** 2))
+        sol = SimpleNamespace(x=x, half_width=np.full(n, b), q=0.5 * np.pi * p * b,
+                              tilt=0.0, force=1.0, edge_loaded=False)
+        w = roller_stresses(sol, 0.1, 0.3).worst["tresca"]
+        assert abs(w["slice"] - n // 2) <= 2
+        assert w["z"] / b == pytest.approx(m.z["tresca"], abs=1e-2)
+        excess.append(w["value"] / p0 / m.value["tresca"] - 1)
+    assert 0 < excess[1] < 2e-4
+    assert excess[0] / excess[1] == pytest.approx(10.0, rel=0.05)
+
+
+
+def test_roller_result_carries_its_measured_error():
+    """Every roller result states the measured error of its kind of case (the table's
+    error field) or None with a note naming what lies outside the measured range."""
+    r = ProfiledRoller(5e-3, 14e-3, ESTAR, "iso16281")
+    s = roller_stresses(r.at_force(11200.0), roller=r)
+    assert s.error is not None and set(s.error) == set(MEASURES)
+    out = roller_stresses(r.at_force(11200.0, tilt=0.05), roller=r)
+    assert out.error is None and any("tilt" in n for n in out.notes)
+    with pytest.raises(OutOfRangeError, match=r"^friction = -0.2 "):
+        roller_stresses(r.at_force(11200.0), friction=-0.2)
+
+
+def test_measured_hardness_above_the_maximum_is_refused():
+    """A measured hardness profile that stops above the stress maximum (its depths
+    are the check's grid) is refused in one line naming depths and the valid range,
+    never extrapolated."""
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    h = HardnessProfile(depths=[0, 0.02e-3, 0.04e-3], hardness=[700, 650, 600])
+    with pytest.raises(OutOfRangeError, match=r"^depths = 4e-05 m .*valid range") as e:
+        case_check(s, h)
+    assert "\n" not in str(e.value)

@@ -25,8 +25,10 @@ functions of X, Y (the offsets from a corner) and rho = sqrt(X^2 + Y^2 + z^2):
     d2(H1)/dy2    :  atan(X Y (rho - z) / (Y^2 rho + X^2 z))
     d2(H1)/dxdy   :  ln(rho + z)
 
-(derived here by differentiating the corner primitives; psi1 is harmonic, which the
-three second derivatives satisfy identically). tests/test_stress_bem.py checks the
+(derived by differentiating the corner primitives; psi1 is harmonic, which the
+three second derivatives satisfy identically). The one home of these formulas is
+:func:`linecontact.stresses.rectangle_stresses` (the runtime's 3D correction uses
+them too); this module imports it. tests/test_stress_bem.py checks the
 result against a direct quadrature of Boussinesq's point-load stresses (Johnson 1985,
 Eq. 3.21), the surface value sigma_z = -p inside the rectangle, and the Hertz contact
 on its axis (Johnson Eq. 3.45).
@@ -38,8 +40,12 @@ operator of tools.bem.halfspace (the shear kernels are odd, so the kernel is giv
 every offset, :func:`tools.bem.halfspace.wraparound_offsets`). The pressure's transform
 is made once and shared by the six components.
 
-Traction: the tangential (Cerruti) rectangle is not implemented here; the study of
-tools/studies/stress_study.py compares frictionless fields (docs/stresses.md).
+Traction: a uniform tangential traction on a cell has no closed form here; its
+coefficients are Cerruti's point-force stresses (Johnson 1985, section 3.3)
+integrated over the cell by Gauss quadrature (:func:`rectangle_quadrature`, sub-cells
+no longer than z/2 near the field point, checked on Boussinesq's load against Love's
+closed form), convolved like the pressure's (:meth:`StressField.plane` with
+``traction``).
 
 References
 ----------
@@ -54,77 +60,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from linecontact.stresses import rectangle_stresses
+
 from .halfspace import DCFFTOperator, wraparound_offsets
 
 COMPONENTS = ("sigma_x", "sigma_y", "sigma_z", "tau_xy", "tau_xz", "tau_yz")
 MEASURES = ("tresca", "von_mises", "orthogonal_shear")
-
-
-def _corner(X, Y, z):
-    """The nine corner functions at offsets (X, Y) from one corner, depth z > 0."""
-    X2, Y2, z2 = X * X, Y * Y, z * z
-    rho = np.sqrt(X2 + Y2 + z2)
-    XY = X * Y
-    xz = X2 + z2
-    yz = Y2 + z2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        hxx_den = X2 * rho + Y2 * z
-        hyy_den = Y2 * rho + X2 * z
-        hxx = np.where(hxx_den > 0, np.arctan(XY * (rho - z) / np.where(hxx_den > 0, hxx_den, 1)), 0.0)
-        hyy = np.where(hyy_den > 0, np.arctan(XY * (rho - z) / np.where(hyy_den > 0, hyy_den, 1)), 0.0)
-    return dict(
-        pz=-np.arctan(XY / (z * rho)),
-        pzz=XY * (rho * rho + z2) / (rho * xz * yz),
-        pxx=-XY / (rho * xz),
-        pyy=-XY / (rho * yz),
-        pxy=1.0 / rho,
-        pxz=-Y * z / (rho * xz),
-        pyz=-X * z / (rho * yz),
-        hxx=hxx, hyy=hyy,
-        hxy=np.log(rho + z))
-
-
-def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
-    """Stresses at (x, y, z) under unit pressure on a dx-by-dy rectangle centred at 0.
-
-    Parameters
-    ----------
-    x, y : array_like
-        Field point relative to the rectangle's centre [m].
-    z : float or array_like
-        Depth, z > 0 [m].
-    dx, dy : float
-        Rectangle sides [m].
-    poisson : float
-        Poisson's ratio of the half-space [-].
-
-    Returns
-    -------
-    dict
-        Component name (:data:`COMPONENTS`) -> stress per unit pressure [-]
-        (compression negative).
-    """
-    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
-    a, b, nu = 0.5 * dx, 0.5 * dy, float(poisson)
-    tot = None
-    for sx, X in ((1.0, x + a), (-1.0, x - a)):
-        for sy, Y in ((1.0, y + b), (-1.0, y - b)):
-            c = _corner(X, Y, z)
-            s = sx * sy
-            if tot is None:
-                tot = {k: s * v for k, v in c.items()}
-            else:
-                for k, v in c.items():
-                    tot[k] += s * v
-    t = tot
-    k = 1.0 / (2.0 * np.pi)
-    return dict(
-        sigma_x=k * (2 * nu * t["pz"] - z * t["pxx"] - (1 - 2 * nu) * t["hxx"]),
-        sigma_y=k * (2 * nu * t["pz"] - z * t["pyy"] - (1 - 2 * nu) * t["hyy"]),
-        sigma_z=k * (t["pz"] - z * t["pzz"]),
-        tau_xy=-k * ((1 - 2 * nu) * t["hxy"] + z * t["pxy"]),
-        tau_xz=-k * z * t["pxz"],
-        tau_yz=-k * z * t["pyz"])
 
 
 def point_load_stresses(x, y, z, poisson=0.3):
@@ -164,6 +105,128 @@ def point_load_stresses(x, y, z, poisson=0.3):
     t_rz = -3 * k * r * z * z / rho ** 5
     return dict(sigma_x=s_r * c * c + s_t * s * s, sigma_y=s_r * s * s + s_t * c * c,
                 sigma_z=s_z, tau_xy=(s_r - s_t) * s * c, tau_xz=t_rz * c, tau_yz=t_rz * s)
+
+
+def cerruti_point_stresses(x, y, z, poisson=0.3):
+    """Cerruti's stresses under a unit tangential point force in +x at the origin.
+
+    Johnson (1985), section 3.3 (the point force Q_x on the surface of a half-space,
+    z into the body, tension positive):
+
+        sigma_x = [-3x^3/rho^5 + (1-2nu)(x/rho^3 - 3x/(rho(rho+z)^2) + x^3/(rho^3(rho+z)^2)
+                   + 2x^3/(rho^2(rho+z)^3))] / (2 pi)
+        sigma_y = [-3xy^2/rho^5 + (1-2nu)(x/rho^3 - x/(rho(rho+z)^2) + xy^2/(rho^3(rho+z)^2)
+                   + 2xy^2/(rho^2(rho+z)^3))] / (2 pi)
+        tau_xy  = [-3x^2y/rho^5 + (1-2nu)(-y/(rho(rho+z)^2) + x^2y/(rho^3(rho+z)^2)
+                   + 2x^2y/(rho^2(rho+z)^3))] / (2 pi)
+        sigma_z = -3xz^2/(2 pi rho^5), tau_xz = -3x^2z/(2 pi rho^5), tau_yz = -3xyz/(2 pi rho^5)
+
+    tests/test_stress_bem.py checks equilibrium (div sigma = 0), the free surface,
+    the force balance on a depth plane (integral of tau_xz = -1) and, integrated over
+    a long strip, the plane-strain traction field of linecontact.stresses.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Field point [m].
+    z : array_like
+        Depth > 0 [m].
+    poisson : float
+        Poisson's ratio [-].
+
+    Returns
+    -------
+    dict
+        Component name -> stress per unit force [1/m^2].
+    """
+    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
+    r = np.sqrt(x * x + y * y + z * z)
+    k = 1.0 / (2.0 * np.pi)
+    c = 1.0 - 2.0 * poisson
+    rz = r + z
+    r5 = r ** 5
+    a = 1.0 / (r * rz * rz)
+    bq = 1.0 / (r ** 3 * rz * rz) + 2.0 / (r * r * rz ** 3)
+    return dict(
+        sigma_x=k * (-3 * x ** 3 / r5 + c * (x / r ** 3 - 3 * x * a + x ** 3 * bq)),
+        sigma_y=k * (-3 * x * y * y / r5 + c * (x / r ** 3 - x * a + x * y * y * bq)),
+        sigma_z=-3 * k * x * z * z / r5,
+        tau_xy=k * (-3 * x * x * y / r5 + c * (-y * a + x * x * y * bq)),
+        tau_xz=-3 * k * x * x * z / r5,
+        tau_yz=-3 * k * x * y * z / r5)
+
+
+def rectangle_quadrature(point, x, y, z, dx, dy, poisson=0.3, per_depth=2.0, order=4):
+    """The stresses below a uniform unit traction on a dx-by-dy rectangle centred at 0,
+    by Gauss-Legendre quadrature of a point-force solution `point`
+    (:func:`cerruti_point_stresses` or :func:`point_load_stresses`).
+
+    The rectangle is cut into sub-cells no longer than z/per_depth per side, each
+    integrated with an order x order Gauss rule: the point-force field varies over
+    the depth z, so the rule resolves it (tests/test_stress_bem.py: on Boussinesq's
+    point load it reproduces Love's closed form to 1e-6 of the surface traction).
+
+    Parameters
+    ----------
+    point : callable
+        point(x, y, z, poisson) -> dict of components per unit force.
+    x, y : array_like
+        Field points relative to the rectangle's centre [m].
+    z : float
+        Depth > 0 [m].
+    dx, dy : float
+        Rectangle sides [m].
+    poisson : float
+        Poisson's ratio [-].
+    per_depth : float
+        Sub-cells per depth z along each side (at least).
+    order : int
+        Gauss points per sub-cell side.
+
+    Returns
+    -------
+    dict
+        Component name -> stress per unit traction [-].
+    """
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    g, w = np.polynomial.legendre.leggauss(order)
+    out = None
+    nx = max(1, int(np.ceil(per_depth * dx / z)))
+    ny = max(1, int(np.ceil(per_depth * dy / z)))
+    ux = ((np.arange(nx)[:, None] + 0.5 * (g[None, :] + 1)) / nx - 0.5).ravel() * dx
+    wx = np.tile(w * 0.5 / nx, nx) * dx
+    uy = ((np.arange(ny)[:, None] + 0.5 * (g[None, :] + 1)) / ny - 0.5).ravel() * dy
+    wy = np.tile(w * 0.5 / ny, ny) * dy
+    for xi, wxi in zip(ux, wx):
+        f = point(x[..., None] - xi, y[..., None] - uy, z, poisson)
+        f = {k: (v * wy).sum(-1) * wxi for k, v in f.items()}
+        if out is None:
+            out = f
+        else:
+            for k in out:
+                out[k] += f[k]
+    return out
+
+
+def traction_rectangle_stresses(x, y, z, dx, dy, poisson=0.3, direction="y"):
+    """Stresses below a uniform unit tangential traction on a dx-by-dy rectangle.
+
+    Cerruti's point force (:func:`cerruti_point_stresses`) integrated over the
+    rectangle (:func:`rectangle_quadrature`); `direction` 'x' or 'y' is the
+    traction's (in +y, the rolling direction across a roller, the x-traction field
+    with x and y exchanged).
+
+    Returns
+    -------
+    dict
+        Component name -> stress per unit traction [-] (tension positive).
+    """
+    if direction == "x":
+        return rectangle_quadrature(cerruti_point_stresses, x, y, z, dx, dy, poisson)
+    f = rectangle_quadrature(cerruti_point_stresses, y, x, z, dy, dx, poisson)
+    return dict(sigma_x=f["sigma_y"], sigma_y=f["sigma_x"], sigma_z=f["sigma_z"],
+                tau_xy=f["tau_xy"], tau_xz=f["tau_yz"], tau_yz=f["tau_xz"])
 
 
 def measures(f):
@@ -216,15 +279,56 @@ class StressField:
                                                kernel_wrapped=k[c]) for c in COMPONENTS}
         return self._ops[key]
 
-    def plane(self, pressure, z, keep=False):
-        """Six stress components at depth z > 0 below the cell pressures [Pa]."""
+    def traction_kernels(self, z):
+        """The six kernels of a unit traction in +y on one cell at depth z, at the
+        wrapped offsets: a 2 x 2 Gauss rule per cell where the offset exceeds three
+        times max(z, cell sides) along either axis, the subdivided rule of
+        :func:`rectangle_quadrature` (sub-cells <= z/2, 4 x 4 Gauss) nearer."""
+        z = float(z)
+        k = {c: np.zeros(self._X.shape) for c in COMPONENTS}
+        g, w = np.polynomial.legendre.leggauss(2)
+        for gi, wi in zip(g, w):
+            for gj, wj in zip(g, w):
+                f = cerruti_point_stresses(self._Y - 0.5 * gj * self.dy,
+                                           self._X - 0.5 * gi * self.dx, z, self.poisson)
+                f = dict(sigma_x=f["sigma_y"], sigma_y=f["sigma_x"], sigma_z=f["sigma_z"],
+                         tau_xy=f["tau_xy"], tau_xz=f["tau_yz"], tau_yz=f["tau_xz"])
+                for c in COMPONENTS:
+                    k[c] += 0.25 * wi * wj * f[c] * self.dx * self.dy
+        reach = 3 * max(z, self.dx, self.dy)
+        near = (np.abs(self._X) <= reach) & (np.abs(self._Y) <= reach)
+        fn = traction_rectangle_stresses(self._X[near], self._Y[near], z, self.dx,
+                                         self.dy, self.poisson, direction="y")
+        for c in COMPONENTS:
+            k[c][near] = fn[c]
+        return k
+
+    def traction_operators(self, z):
+        """The six convolution operators of a traction in +y at depth z."""
+        key = ("t", float(z))
+        if key not in self._ops:
+            k = self.traction_kernels(z)
+            self._ops[key] = {c: DCFFTOperator(*self.shape, self.dx, self.dy,
+                                               backend=self.backend, workers=self.workers,
+                                               kernel_wrapped=k[c]) for c in COMPONENTS}
+        return self._ops[key]
+
+    def plane(self, pressure, z, keep=False, traction=None):
+        """Six stress components at depth z > 0 below the cell pressures [Pa], and
+        with `traction` (cell tractions in +y [Pa]) the traction's field as well:
+        then a pair (pressure's, traction's)."""
         ops = self.operators(z)
         first = ops[COMPONENTS[0]]
         phat = first.transform(np.asarray(pressure, dtype=float))
         out = {c: ops[c].from_transform(phat) for c in COMPONENTS}
+        if traction is not None:
+            tops = self.traction_operators(z)
+            that = tops[COMPONENTS[0]].transform(np.asarray(traction, dtype=float))
+            tout = {c: tops[c].from_transform(that) for c in COMPONENTS}
         if not keep:
             self._ops.pop(float(z), None)
-        return out
+            self._ops.pop(("t", float(z)), None)
+        return out if traction is None else (out, tout)
 
     def maxima(self, pressure, depths):
         """Largest of each measure over the grid and the given depths, with where.

@@ -1,17 +1,22 @@
 """Issue 17 targets: the runtime slice stresses against the 3D field, and their cost.
 
-    python -m tools.benchmarks.bench_stresses            # about a minute on 2 cores
+    python -m tools.benchmarks.bench_stresses            # a few minutes on 2 cores
+    python -m tools.benchmarks.bench_stresses --grid-case A-circular_crown-q800-t2 \
+        --grid-case A-lundberg-q100-t2                   # adds the 3D grid check
 
 What it measures:
 
 1. accuracy, from tables/stress_accuracy.csv (tools/studies/stress_study.py: the 3D
-   field of tools/bem/stress.py below the 3D BEM pressure, finer of two nested grids,
-   against linecontact.stresses.roller_stresses): the largest |rt/3D - 1| of each
-   measure where the contact stays off the roller ends (target 1 %) and where it is
-   edge loaded (stated), with the 3D field's own grid change;
+   field of tools/bem/stress.py below the 3D BEM pressure and traction, finer of two
+   nested grids, against linecontact.stresses.roller_stresses): the largest
+   |rt/3D - 1| of each measure where the contact stays off the roller ends (target
+   1 %), without and with friction, and where it is edge loaded (stated), for the
+   3D-corrected runtime (the default) and the strips alone, with the 3D field's own
+   grid change;
 2. time: per study roller (each profile, three loads, two tilts), the CPU time
    (time.process_time) of the runtime contact solve (ProfiledRoller.at_force, 100
-   slices, model built beforehand) and of its stresses (roller_stresses), median of
+   slices, model built beforehand) and of its stresses (roller_stresses with the 3D
+   correction, the default), median of
    ``--repeat``; the stresses' first call (the cached strip maxima for a new (mu, nu),
    a grid search and ten zooms) is timed apart. Target: the stresses within
    twice the contact solve's time.
@@ -33,43 +38,44 @@ REPO = Path(__file__).resolve().parents[2]
 MEASURES = ("tresca", "von_mises", "orthogonal_shear")
 
 
+def _fmt(e, sel):
+    return f"{np.abs(e)[sel].max():.2%}" if sel.any() else "-"
+
+
 def accuracy(lines):
     from linecontact.tables import read_table
     t = read_table("stress_accuracy")
-    c = t.columns
-    edge = np.asarray(c["bem_edge"]) > 0
+    c = {k: np.asarray(v) for k, v in t.columns.items()}
+    edge = (c["bem_edge"] > 0) | (c["rt_edge"] > 0)     # as the study's header
+    off = ~edge
     lines.append(f"accuracy (tables/stress_accuracy.csv, {len(edge)} cases, "
-                 f"{int((~edge).sum())} off the ends, {int(edge.sum())} edge loaded; "
-                 f"generated {t.meta['date']}, {t.meta['version']}):")
-    lines.append(f"{'measure':18s} {'off ends max |err|':>19s} {'median':>8s} "
-                 f"{'edge max |err|':>15s} {'3D grid change (off/edge)':>26s} target 1 %")
-    profiles = np.asarray(c["profile"])
+                 f"{int(off.sum())} off the ends, {int(edge.sum())} edge loaded; "
+                 f"grid {t.meta['grid']}; generated {t.meta['date']}, {t.meta['version']}):")
+    mu_tags = sorted({k.split("_")[1] for k in c if k.startswith("err_mu")})
+    head = (f"{'measure':18s} {'3D-corr. off':>12s} {'median':>7s} "
+            + "".join(f"{'mu 0.' + tg[2:] + ' off':>11s}" for tg in mu_tags)
+            + f" {'strips off':>11s} {'3D-corr. edge':>14s} {'strips edge':>12s} "
+              f"{'3D grid change off/edge':>24s}  target 1 % off the ends")
+    lines.append(head)
     for m in MEASURES:
-        e = np.abs(np.asarray(c[f"err_{m}"]))
-        ch = np.abs(np.asarray(c[f"bem_change_{m}"]))
-        off = e[~edge].max() if (~edge).any() else np.nan
-        lines.append(f"{m:18s} {off:19.2%} {np.median(e[~edge]):8.2%} "
-                     f"{e[edge].max() if edge.any() else np.nan:15.2%} "
-                     f"{ch[~edge].max():12.2%} / {ch[edge].max() if edge.any() else np.nan:.2%}"
-                     f"   {'met' if off <= 0.01 else 'NOT met'}")
-    tilt = np.asarray(c["tilt"])
-    even = (~edge) & (tilt == 0) & (profiles != 1) & (profiles != 5)
-    lines.append(f"even load along the roller (untilted log profiles, off the ends, "
-                 f"{int(even.sum())} cases): " + ", ".join(
-                     f"{m} {np.abs(np.asarray(c[f'err_{m}']))[even].max():.2%}"
-                     for m in MEASURES) + " (target 1 %: " + (
-                     "met" if all(np.abs(np.asarray(c[f'err_{m}']))[even].max() <= 0.01
-                                  for m in MEASURES) else "NOT met") + ")")
-    lines.append("largest |err| off the ends by profile (codes as the table header):")
+        e, es = c[f"err_{m}"], c[f"err_strip_{m}"]
+        ch = np.abs(c[f"bem_change_{m}"])
+        worst = max([np.abs(e)[off].max()] + [np.abs(c[f"err_{tg}_{m}"])[off].max()
+                                              for tg in mu_tags])
+        lines.append(f"{m:18s} {_fmt(e, off):>12s} {np.median(np.abs(e)[off]):7.2%} "
+                     + "".join(f"{_fmt(c[f'err_{tg}_{m}'], off):>11s}" for tg in mu_tags)
+                     + f" {_fmt(es, off):>11s} {_fmt(e, edge):>14s} {_fmt(es, edge):>12s} "
+                       f"{ch[off].max():11.2%} / {ch[edge].max() if edge.any() else np.nan:.2%}"
+                       f"  {'met' if worst <= 0.01 else 'NOT met'}")
+    lines.append("largest |err| off the ends by profile, 3D-corrected (strips alone):")
+    profiles = c["profile"]
     for code in sorted(set(profiles.tolist())):
-        sel = (~edge) & (profiles == code) & (np.asarray(c["roller_length"]) < 0.02)
-        if sel.any():
-            lines.append(f"  profile {int(code)} (L = 14 mm): " + ", ".join(
-                f"{m} {np.abs(np.asarray(c[f'err_{m}']))[sel].max():.2%}" for m in MEASURES))
-    sel = (~edge) & (np.asarray(c["roller_length"]) > 0.02)
-    if sel.any():
-        lines.append("  iso16281 (L = 30 mm, flat middle): " + ", ".join(
-            f"{m} {np.abs(np.asarray(c[f'err_{m}']))[sel].max():.2%}" for m in MEASURES))
+        for L, name in ((0.014, "L = 14 mm"), (0.03, "L = 30 mm")):
+            sel = off & (profiles == code) & np.isclose(c["roller_length"], L)
+            if sel.any():
+                lines.append(f"  profile {int(code)} ({name}, {int(sel.sum())} cases): " + ", ".join(
+                    f"{m} {_fmt(c[f'err_{m}'], sel)} ({_fmt(c[f'err_strip_{m}'], sel)})"
+                    for m in MEASURES))
 
 
 def timing(lines, repeat):
@@ -84,7 +90,7 @@ def timing(lines, repeat):
     strip_maxima(0.05, 0.31)
     first = time.process_time() - c0
     strip_maxima(0.0, 0.3)   # the study's (mu, nu), cached before the timed loop
-    ratios, solves, stresses = [], [], []
+    ratios, solves, stresses, keys = [], [], [], []
     for task in ss.study_tasks():
         prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
         model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof)
@@ -93,7 +99,7 @@ def timing(lines, repeat):
             c0 = time.process_time()
             sol = model.at_force(task["force"], tilt=task["tilt"])
             c1 = time.process_time()
-            roller_stresses(sol, 0.0, 0.3, roller=model)
+            roller_stresses(sol, 0.0, 0.3, roller=model)     # 3D-corrected (default)
             c2 = time.process_time()
             ts.append(c1 - c0)
             tt.append(c2 - c1)
@@ -101,6 +107,10 @@ def timing(lines, repeat):
             solves.append(statistics.median(ts))
             stresses.append(statistics.median(tt))
             ratios.append(stresses[-1] / solves[-1])
+            keys.append(task["key"])
+    k = int(np.argmax(ratios))
+    lines.append(f"largest ratio: {keys[k]} (solve {solves[k] * 1e3:.1f} ms, stresses "
+                 f"{stresses[k] * 1e3:.1f} ms)")
     lines.append(f"time (CPU, median of {repeat} per case, {len(ratios)} cases): contact "
                  f"solve median {statistics.median(solves) * 1e3:.1f} ms; stresses median "
                  f"{statistics.median(stresses) * 1e3:.3f} ms; ratio stresses/solve median "
@@ -111,19 +121,52 @@ def timing(lines, repeat):
     lines.append(f"(timing section: {time.process_time() - t0:.0f} s CPU)")
 
 
+def grid_convergence(lines, keys, n_xs):
+    """The 3D reference of the study's cases `keys` on the nested grids n_x x n_x/2 and
+    2 n_x x n_x (tools.studies.stress_study.bem_case) for each n_x: the maxima of the
+    three measures [MPa] and their depths [um] on each grid."""
+    from tools.studies import stress_study as ss
+    lines.append("grid convergence of the 3D reference (cells along x x across; each "
+                 "run solves a coarse and a fine grid on its own adapted window):")
+    for key in keys:
+        for n in n_xs:
+            task = [t for t in ss.study_tasks(n_x=n, n_y=n // 2) if t["key"] == key]
+            if not task:
+                raise SystemExit(f"--grid-case {key!r} is not a study case")
+            t0 = time.perf_counter()
+            r = ss.bem_case(task[0])
+            for g, m in (("coarse", 1), ("fine", 2)):
+                lines.append(f"  {key} {m * n} x {m * n // 2}: " + ", ".join(
+                    f"{k} {r[g][k]['value'] / 1e6:.3f} MPa at {r[g][k]['z'] * 1e6:.2f} um"
+                    for k in MEASURES))
+            lines.append(f"    ({time.perf_counter() - t0:.0f} s wall)")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--out", type=Path, default=REPO / "tools" / "benchmarks" / "results"
                     / "stresses.txt")
+    ap.add_argument("--grid-case", action="append", default=[],
+                    help="a study case key (e.g. A-circular_crown-q800-t2) whose 3D "
+                         "reference is solved on nested grids (--grid-n-x); repeatable")
+    ap.add_argument("--grid-n-x", default="64,128",
+                    help="coarse cells along x of each nested pair (default 64,128: "
+                         "64 x 32, 128 x 64 and 256 x 128 cells)")
+    ap.add_argument("--skip-timing", action="store_true")
     args = ap.parse_args(argv)
     import linecontact
     lines = [f"bench_stresses: linecontact {linecontact.__version__}, Python "
              f"{platform.python_version()}, numpy {np.__version__}, "
              f"{time.strftime('%Y-%m-%d')}", ""]
     accuracy(lines)
-    lines.append("")
-    timing(lines, args.repeat)
+    if args.grid_case:
+        lines.append("")
+        grid_convergence(lines, args.grid_case,
+                         [int(v) for v in args.grid_n_x.split(",")])
+    if not args.skip_timing:
+        lines.append("")
+        timing(lines, args.repeat)
     text = "\n".join(lines) + "\n"
     print(text)
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -2,7 +2,8 @@
 
 Writes tables/stress_accuracy.csv (``python -m tools.build_tables stress``).
 
-Per case (a roller, a profile, a force F, a tilt theta; no friction, nu = 0.3):
+Per case (a roller, a profile, a force F, a tilt theta; nu = 0.3; friction 0 and, on
+the fine grid, the traction mu p in +y with mu = 0.1 and 0.2):
 
 1. The reference: the 3D boundary-element pressure of tools.bem.roller at F and theta
    (``solve_roller_force``) on an adapted window with ``n_x`` x ``n_y`` cells and on
@@ -52,6 +53,8 @@ PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
 PROFILE_KEYS = ("circular", "iso16281", "lundberg", "johns-gohar", "end-relief")
 CODES = {v: k for k, v in PROFILES.items()}
 DEPTHS_OVER_B = np.round(np.arange(0.10, 1.2001, 0.10), 4)
+#: sliding friction of the traction cases (fine grid only; the traction mu p in +y)
+FRICTIONS = (0.1, 0.2)
 
 
 def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
@@ -74,36 +77,48 @@ def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
     return tasks
 
 
-def field_maxima(res, depths_over_b=DEPTHS_OVER_B, poisson=POISSON):
-    """Maxima of the three measures of the 3D field below a BEM result's pressure:
-    measure -> dict(value [Pa], x [m], y [m], z [m]); planes z = depths_over_b * b."""
+def field_maxima(res, depths_over_b=DEPTHS_OVER_B, poisson=POISSON, frictions=(0.0,)):
+    """Maxima of the three measures of the 3D field below a BEM result's pressure and,
+    for mu > 0, the traction mu p in +y: friction -> measure -> dict(value [Pa],
+    x [m], y [m], z [m]); planes z = depths_over_b * b."""
+    from ..bem.stress import measures
     g = res.grid
     b = res.half_width
     f = StressField(g.nx, g.ny, g.dx, g.dy, poisson, workers=1)
     zs = depths_over_b * b
-    per = {m: [] for m in MEASURES}
+    trac = any(mu > 0 for mu in frictions)
+    per = {mu: {m: [] for m in MEASURES} for mu in frictions}
     for z in zs:
-        best = f.maxima(res.pressure, [z])
-        for m in MEASURES:
-            per[m].append(best[m])
-    out = {}
+        out = f.plane(res.pressure, z, traction=res.pressure if trac else None)
+        N, T = out if trac else (out, None)
+        for mu in frictions:
+            fld = N if mu == 0 else {c: N[c] + mu * T[c] for c in N}
+            ms = measures(fld)
+            for m in MEASURES:
+                k = int(np.argmax(ms[m]))
+                i, j = np.unravel_index(k, ms[m].shape)
+                per[mu][m].append(dict(value=float(ms[m].flat[k]), i=int(i), j=int(j)))
+    res_out = {}
     x, y = g.x, g.y
-    for m in MEASURES:
-        v = np.array([p["value"] for p in per[m]])
-        k = int(np.argmax(v))
-        zk, vk = zs[k], v[k]
-        if 0 < k < len(zs) - 1:
-            # parabola through planes k-1, k, k+1 (equal spacing h)
-            h = zs[1] - zs[0]
-            a, c = v[k - 1], v[k + 1]
-            den = a - 2 * vk + c
-            if den < 0:
-                s = 0.5 * (a - c) / den
-                zk = zs[k] + s * h
-                vk = vk - 0.25 * (a - c) * s
-        out[m] = dict(value=float(vk), z=float(zk), x=float(x[per[m][k]["i"]]),
-                      y=float(y[per[m][k]["j"]]), plane=k, n_planes=len(zs))
-    return out
+    for mu in frictions:
+        out = {}
+        for m in MEASURES:
+            v = np.array([p["value"] for p in per[mu][m]])
+            k = int(np.argmax(v))
+            zk, vk = zs[k], v[k]
+            if 0 < k < len(zs) - 1:
+                # parabola through planes k-1, k, k+1 (equal spacing h)
+                h = zs[1] - zs[0]
+                a, c = v[k - 1], v[k + 1]
+                den = a - 2 * vk + c
+                if den < 0:
+                    s = 0.5 * (a - c) / den
+                    zk = zs[k] + s * h
+                    vk = vk - 0.25 * (a - c) * s
+            out[m] = dict(value=float(vk), z=float(zk), x=float(x[per[mu][m][k]["i"]]),
+                          y=float(y[per[mu][m][k]["j"]]), plane=k, n_planes=len(zs))
+        res_out[mu] = out
+    return res_out
 
 
 def bem_case(task):
@@ -116,16 +131,19 @@ def bem_case(task):
                          fields=True)
     c, f = g["coarse"], g["fine"]
     t1 = time.perf_counter()
-    mc, mf = field_maxima(c), field_maxima(f)
-    return dict(fine=mf, coarse=mc, edge=bool(c.edge_loaded or f.edge_loaded),
+    mc = field_maxima(c)[0.0]
+    mf = field_maxima(f, frictions=(0.0,) + FRICTIONS)
+    return dict(fine=mf[0.0], coarse=mc, fine_friction=mf, edge=bool(c.edge_loaded or f.edge_loaded),
                 half_width=f.half_width, p_max=f.p_max, nx=f.grid.nx, ny=f.grid.ny,
                 contact_seconds=t1 - t0, field_seconds=time.perf_counter() - t1)
 
 
 def runtime_case(task, n_slices=100):
-    """The runtime model and its slice stresses, with their wall and CPU times."""
+    """The runtime model and its stresses (strips alone and 3D-corrected, without and
+    with friction), with the wall and CPU times of the solve and the 3D-corrected
+    frictionless stresses."""
     from linecontact.roller import ProfiledRoller
-    from linecontact.stresses import roller_stresses
+    from linecontact.stresses import reaches_end, roller_stresses
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
                            n_slices=n_slices)
@@ -134,8 +152,10 @@ def runtime_case(task, n_slices=100):
     t1, c1 = time.perf_counter(), time.process_time()
     s = roller_stresses(sol, 0.0, POISSON)
     t2, c2 = time.perf_counter(), time.process_time()
-    return dict(worst=s.worst, edge=bool(sol.edge_loaded), solve_seconds=t1 - t0,
-                solve_cpu=c1 - c0, stress_seconds=t2 - t1, stress_cpu=c2 - c1)
+    fr = {mu: roller_stresses(sol, mu, POISSON).worst for mu in FRICTIONS}
+    return dict(worst=s.worst, strip=s.strip_worst, friction=fr, edge=reaches_end(sol),
+                solve_seconds=t1 - t0, solve_cpu=c1 - c0, stress_seconds=t2 - t1,
+                stress_cpu=c2 - c1)
 
 
 def run_case(task):
@@ -150,13 +170,19 @@ def run_case(task):
                rt_solve_seconds=rt["solve_seconds"], rt_solve_cpu=rt["solve_cpu"],
                rt_stress_seconds=rt["stress_seconds"], rt_stress_cpu=rt["stress_cpu"])
     for m in MEASURES:
-        f, c, r = ref["fine"][m], ref["coarse"][m], rt["worst"][m]
+        f, c, r, st = ref["fine"][m], ref["coarse"][m], rt["worst"][m], rt["strip"][m]
         out.update({f"bem_{m}": f["value"], f"bem_z_{m}": f["z"], f"bem_x_{m}": f["x"],
                     f"bem_change_{m}": f["value"] / c["value"] - 1,
                     f"bem_at_plane_edge_{m}": float(f["plane"] in (0, f["n_planes"] - 1)),
                     f"rt_{m}": r["value"], f"rt_z_{m}": r["z"], f"rt_x_{m}": r["x"],
                     f"err_{m}": r["value"] / f["value"] - 1,
-                    f"dz_{m}": (r["z"] - f["z"]) / b})
+                    f"dz_{m}": (r["z"] - f["z"]) / b,
+                    f"strip_{m}": st["value"], f"err_strip_{m}": st["value"] / f["value"] - 1})
+        for mu in FRICTIONS:
+            fm, rm = ref["fine_friction"][mu][m], rt["friction"][mu][m]
+            tag = f"mu{int(round(mu * 10))}"
+            out.update({f"bem_{tag}_{m}": fm["value"], f"rt_{tag}_{m}": rm["value"],
+                        f"err_{tag}_{m}": rm["value"] / fm["value"] - 1})
     return out
 
 
@@ -181,7 +207,11 @@ def _units():
     for m in MEASURES:
         u.update({f"bem_{m}": "Pa", f"bem_z_{m}": "m", f"bem_x_{m}": "m",
                   f"bem_change_{m}": "-", f"bem_at_plane_edge_{m}": "-", f"rt_{m}": "Pa",
-                  f"rt_z_{m}": "m", f"rt_x_{m}": "m", f"err_{m}": "-", f"dz_{m}": "-"})
+                  f"rt_z_{m}": "m", f"rt_x_{m}": "m", f"err_{m}": "-", f"dz_{m}": "-",
+                  f"strip_{m}": "Pa", f"err_strip_{m}": "-"})
+        for mu in FRICTIONS:
+            tag = f"mu{int(round(mu * 10))}"
+            u.update({f"bem_{tag}_{m}": "Pa", f"rt_{tag}_{m}": "Pa", f"err_{tag}_{m}": "-"})
     u.update({"bem_contact_seconds": "s", "bem_field_seconds": "s",
               "rt_solve_seconds": "s", "rt_solve_cpu": "s", "rt_stress_seconds": "s",
               "rt_stress_cpu": "s"})
@@ -201,7 +231,9 @@ def tabulate(tasks, results):
 
 
 def summarise(col):
-    edge = col["bem_edge"] > 0
+    # edge loaded: on either BEM grid, or by the runtime's own flag (its contact within
+    # half a slice of an end: what the runtime can know and states per result)
+    edge = (col["bem_edge"] > 0) | (col["rt_edge"] > 0)
     s = {"n_off": int((~edge).sum()), "n_edge": int(edge.sum())}
     for m in MEASURES:
         e = np.abs(col[f"err_{m}"])
@@ -212,6 +244,13 @@ def summarise(col):
         s[f"ch_off_{m}"] = float(ch[~edge].max()) if (~edge).any() else float("nan")
         s[f"ch_edge_{m}"] = float(ch[edge].max()) if edge.any() else float("nan")
         s[f"dz_off_{m}"] = float(dz[~edge].max()) if (~edge).any() else float("nan")
+        es = np.abs(col[f"err_strip_{m}"])
+        s[f"strip_off_{m}"] = float(es[~edge].max()) if (~edge).any() else float("nan")
+        s[f"strip_edge_{m}"] = float(es[edge].max()) if edge.any() else float("nan")
+        ef = np.max([np.abs(col[f"err_mu{int(round(mu * 10))}_{m}"]) for mu in FRICTIONS],
+                    axis=0)
+        s[f"fr_off_{m}"] = float(ef[~edge].max()) if (~edge).any() else float("nan")
+        s[f"fr_edge_{m}"] = float(ef[edge].max()) if edge.any() else float("nan")
     ratio = col["rt_stress_cpu"] / col["rt_solve_cpu"]
     s["time_ratio_median"] = float(np.median(ratio))
     s["time_ratio_max"] = float(ratio.max())
@@ -239,12 +278,15 @@ def run(args):
 
     meta = table_meta(
         args.command_line,
-        title="Accuracy of the runtime slice stresses (linecontact.stresses.roller_stresses) "
-              "against the 3D stress field below a 3D boundary-element pressure",
+        title="Accuracy of the runtime roller stresses (linecontact.stresses.roller_stresses: "
+              "slice strips with the 3D correction of the worst, and the strips alone) "
+              "against the 3D stress field below a 3D boundary-element pressure and "
+              "traction",
         source="computed: tools/bem/roller.py (3D BEM pressure at the given force and "
-               "tilt) and tools/bem/stress.py (Love's rectangle stresses, one DC-FFT per "
-               "component and depth plane) against linecontact.roller.ProfiledRoller + "
-               "linecontact.stresses.roller_stresses",
+               "tilt) and tools/bem/stress.py (Love's rectangle for the pressure, "
+               "Cerruti's point force integrated over each cell for the traction mu p, "
+               "one DC-FFT per component and depth plane) against "
+               "linecontact.roller.ProfiledRoller + linecontact.stresses.roller_stresses",
         units=units,
         columns="profile codes: " + ", ".join(f"{k} = {v}" for k, v in PROFILES.items())
                 + "; measures: tresca = (sigma_1 - sigma_3)/2, von_mises, orthogonal_shear "
@@ -253,11 +295,13 @@ def run(args):
                   "planes), bem_x_* its position along the roller; bem_change_* = fine/"
                   "coarse - 1; bem_at_plane_edge_* = 1 where the maximum sits on the first "
                   "or last depth plane (not bracketed); rt_* = the runtime's worst along "
-                  "the roller; err_* = rt/bem - 1; dz_* = (z_rt - z_bem)/b; *_edge = 1 "
-                  "where the contact reaches a roller end; rt_*_cpu, rt_*_seconds: CPU and "
+                  "the roller (3D-corrected); strip_* the strips' worst alone; err_* = rt/bem - 1; bem/rt/err_mu1_*, _mu2_*: with the traction mu p, mu = 0.1, 0.2 (fine grid); dz_* = (z_rt - z_bem)/b; bem_edge = 1 "
+                  "where the BEM contact reaches a roller end on either grid, rt_edge = 1 where "
+                  "the runtime's comes within half a slice of one (linecontact.stresses."
+                  "reaches_end); either counts as edge loaded in the header's errors; rt_*_cpu, rt_*_seconds: CPU and "
                   "wall time of the runtime contact solve and of its stresses",
-        cases=f"D = {D * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa, nu = {POISSON:g}, no "
-              "friction; L = 14 mm: circular crown (Rc 500 mm), iso16281, lundberg and "
+        cases=f"D = {D * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa, nu = {POISSON:g}, "
+              "friction 0 (and 0.1, 0.2 on the fine grid); L = 14 mm: circular crown (Rc 500 mm), iso16281, lundberg and "
               "johns-gohar (design 800 N/mm), straight with end relief (0.15 L, corner "
               "radius 50 mm); L = 30 mm: iso16281; line loads "
               f"{', '.join(f'{q / 1e3:g}' for q in LINE_LOADS)} N/mm; tilts "
@@ -266,25 +310,37 @@ def run(args):
         grid=f"BEM: adapted window (contact box x 1.25, |y| <= 1.25 b), {args.n_x} x "
              f"{args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells (the finer the "
              f"reference); stress planes z/b = {DEPTHS_OVER_B[0]:g}-{DEPTHS_OVER_B[-1]:g} "
-             "step 0.1 at the cell centres; runtime: 100 slices",
+             "step 0.1 at the cell centres; runtime: 100 slices; grid convergence of the "
+             "reference beyond these two grids: tools/benchmarks/bench_stresses.py "
+             "--grid-case",
         tolerance=f"{args.tol:g} (BEM gap error / largest interference); force 1e-6 F",
         accuracy=f"3D field change coarse to fine, off the ends: {errs('ch_off')}; edge "
                  f"loaded: {errs('ch_edge')} (a singular end pressure: not converged)",
-        runtime_error=f"largest |rt/bem - 1| off the ends ({s['n_off']} cases): "
-                      f"{errs('off')}; largest depth difference over b off the ends: "
-                      f"{errs('dz_off')}; edge loaded ({s['n_edge']} cases): "
-                      f"{errs('edge')}",
-        timing=f"runtime stresses over the runtime contact solve, CPU: median "
-               f"{s['time_ratio_median']:.3g}, largest {s['time_ratio_max']:.3g}",
+        runtime_error=f"largest |rt/bem - 1| of the 3D-corrected runtime off the ends "
+                      f"({s['n_off']} cases): {errs('off')}; with friction "
+                      f"{', '.join(f'{mu:g}' for mu in FRICTIONS)}: {errs('fr_off')}; "
+                      f"largest depth difference over b off the ends: {errs('dz_off')}; "
+                      f"edge loaded ({s['n_edge']} cases): {errs('edge')}; the strips "
+                      f"alone: off the ends {errs('strip_off')}, edge loaded "
+                      f"{errs('strip_edge')}",
+        timing=f"runtime stresses (3D-corrected) over the runtime contact solve, CPU: "
+               f"median {s['time_ratio_median']:.3g}, largest {s['time_ratio_max']:.3g}",
         covered=f"L/D {ld[0]:g}-{ld[-1]:g}; mean line load q/(E* D) {lo:.2g}-{hi:.2g}; "
                 f"tilts 0-{max(TILTS) * 1e3:g} mrad; profiles {', '.join(PROFILE_KEYS)}; "
-                "no friction",
+                f"friction 0-{max(FRICTIONS):g}",
         covered_l_over_d=f"{ld[0]:g}, {ld[-1]:g}",
         covered_line_load_over_estar_d=f"{lo:.6g}, {hi:.6g}",
         covered_tilt_rad=f"0, {max(TILTS):g}",
+        covered_friction=f"0, {max(FRICTIONS):g}",
         covered_profiles=", ".join(PROFILE_KEYS),
-        slice_error_off_ends=", ".join(f"{m} {s[f'off_{m}']:.3g}" for m in MEASURES),
-        slice_error_edge_loaded=", ".join(f"{m} {s[f'edge_{m}']:.3g}" for m in MEASURES),
+        error_3d_off_ends=", ".join(f"{m} {s[f'off_{m}']:.3g}" for m in MEASURES),
+        error_3d_edge_loaded=", ".join(f"{m} {s[f'edge_{m}']:.3g}" for m in MEASURES),
+        error_3d_friction_off_ends=", ".join(f"{m} {s[f'fr_off_{m}']:.3g}" for m in MEASURES),
+        error_3d_friction_edge_loaded=", ".join(f"{m} {s[f'fr_edge_{m}']:.3g}"
+                                                for m in MEASURES),
+        slice_error_off_ends=", ".join(f"{m} {s[f'strip_off_{m}']:.3g}" for m in MEASURES),
+        slice_error_edge_loaded=", ".join(f"{m} {s[f'strip_edge_{m}']:.3g}"
+                                          for m in MEASURES),
         wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers),
     )
     args.out.mkdir(parents=True, exist_ok=True)

@@ -2,10 +2,10 @@
 
 ``--work-of-adhesion W`` (J/m^2, mJ/m^2, N/m; a sweep too)
     JKR-type adhesion (linecontact.adhesion): the pull-off force under force and under
-    depth control, for a straight cylinder from the adhesive BEM table
-    (:class:`linecontact.adhesion.CylinderAdhesion`, tables/adhesion_cylinder.csv) and
-    by the MDR's rule of Hess on the row's model (its plain value, with the error the
-    BEM measured); the state at zero load (the 2D JKR half-width and the MDR's depth);
+    depth control, for a straight cylinder from the adhesive BEM table (method 'bem',
+    :class:`linecontact.adhesion.CylinderAdhesion`, tables/adhesion_cylinder.csv; inside
+    its range of s = b_c/L only) and by the MDR's rule of Hess on the row's model
+    (method 'mdr': its plain value, with the error the BEM measured); the state at zero load (the 2D JKR half-width and the MDR's depth);
     the depth at the given load, or the force at the given depth, with adhesion (rule
     of Hess, stable branch); and the Tabor parameter (z0 = 0.3 nm), flagged where JKR
     does not apply. One contact only (not with the raceways); not with a viscoelastic
@@ -30,8 +30,8 @@ parameters = (
 )
 
 fields = {
-    "pull_off_force": Field("Fc force ctrl", "N", "mN", 1e3),
-    "pull_off_depth_ctrl": Field("Fc depth ctrl", "N", "mN", 1e3),
+    "pull_off_force": Field("Fc BEM F-ctrl", "N", "mN", 1e3),
+    "pull_off_depth_ctrl": Field("Fc BEM d-ctrl", "N", "mN", 1e3),
     "pull_off_mdr": Field("Fc MDR", "N", "mN", 1e3),
     "pull_off_mdr_error": Field("MDR err", "-", "%", 100.0),
     "zero_load_half_width": Field("b0 (2D JKR)", "m", "um", 1e6),
@@ -42,12 +42,15 @@ fields = {
 }
 
 notes = {
-    "adhesion": "JKR adhesion with work of adhesion w. Fc: pull-off force (negative: "
-                "tensile) under force and depth control of the finite cylinder, from the "
-                "adhesive BEM (tables/adhesion_cylinder.csv; Pohrt & Popov 2015 criterion) "
-                "relative to the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L (Barquins 1988); "
-                "Fc MDR: the rule of Hess on the model's MDR profile (Popov & Hess 2015), "
-                "force control, MDR err: its error against the BEM; b0: 2D JKR contact "
+    "adhesion": "JKR adhesion with work of adhesion w. Fc BEM: pull-off force (negative: "
+                "tensile) under force and depth control of the finite cylinder, method "
+                "'bem': the adhesive BEM's table (tables/adhesion_cylinder.csv; detachment "
+                "where the energy release rate at the contact edge exceeds w) relative to "
+                "the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L (Barquins 1988), given for "
+                "0.025 <= s = b_c/L <= 0.5 only; "
+                "Fc MDR: method 'mdr', the rule of Hess on the model's MDR profile (Popov & "
+                "Hess 2015), force control, MDR err: its error measured against the BEM "
+                "(inside the table only); b0: 2D JKR contact "
                 "half-width at zero load (32 R^2 w/(pi E*))^(1/3); d0 MDR: depth at zero "
                 "load by the rule of Hess; F adh / d adh: force at the given depth / depth "
                 "at the given load with adhesion (rule of Hess, stable branch); mu_T: Tabor "
@@ -133,16 +136,19 @@ def columns(model, rows, normal, state):
 
         def bem(_, w=w):
             c = ad.CylinderAdhesion(model, w)
+            if not c.in_table:
+                return [np.nan, np.nan, np.nan, c.s, c.s_range[0]]
             f, d = c.pull_off("force"), c.pull_off("depth")
-            return [f["force"], d["force"], f["mdr_error"], c.s, float(f["in_table"])]
+            return [f["force"], d["force"], f["mdr_error"], c.s, c.s_range[0]]
 
         v = each(bem, np.arange(1), sub, width=5, missing=_MISSING)[0]
         note(j, "Fc (BEM): " + short(sub[0]) if sub[0] else "")
         out["pull_off_force"][j], out["pull_off_depth_ctrl"][j] = v[0], v[1]
         out["pull_off_mdr_error"][j] = v[2]
-        if v[4] == 0:
-            note(j, f"Fc: s = b_c/L = {v[3]:.3g} below the BEM table, interpolated towards "
-                    "the 2D JKR limit (MDR error not measured there)")
+        if v[3] < v[4]:
+            note(j, f"Fc BEM: s = b_c/L = {v[3]:.3g} below the BEM table (s >= {v[4]:g}), "
+                    "not given: the roller's ratio to the 2D JKR value falls there (its "
+                    "ends peel first); Fc MDR's error not measured there")
     return out
 
 

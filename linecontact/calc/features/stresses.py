@@ -6,9 +6,9 @@
     law the plane-strain Hertz strip with the row's mean line load F/L
     (:func:`linecontact.stresses.line_contact_stresses`); for a profiled or tilted
     roller (``--profile``, ``--crown-radius``, ``--tilt``: the rows of the slice models)
-    the worst along the roller, one strip per slice
-    (:func:`linecontact.stresses.roller_stresses`), with the slice method's measured
-    error in the note. ``--json`` adds, for those rows, the along-axis profile (every
+    the worst along the roller, one strip per slice with the 3D correction of the
+    worst (:func:`linecontact.stresses.roller_stresses`), with its measured error in
+    the note. ``--json`` adds, for those rows, the along-axis profile (every
     slice's maxima).
 ``--sliding-friction MU``
     The sliding traction mu p across the contact (Johnson 1985, section 7.2), 0 <= mu

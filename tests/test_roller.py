@@ -417,3 +417,18 @@ def test_uncovered_profile_and_coarse_slices_are_noted():
     assert "profile 'straight'" in coverage_note(*args, "straight", 4200.0, 0.0, 1e-5)
     assert "n_slices = 50" in coverage_note(*args, "circular", 4200.0, 0.0, 1e-5,
                                              n_slices=50)
+
+
+def test_convergence_failure_names_the_geometry():
+    """A slice solve that fails on a roller far shorter than its contact is wide (L/D =
+    5e-5, b = 665 L at 1 N) says so in numbers: the slices are strips across the roller
+    and ask for b well below L, so the message names L/D, the table's covered L/D and
+    b/L (input rule: name the cause, not only the symptom)."""
+    from linecontact.roller import ConvergenceError, ProfiledRoller
+
+    r = ProfiledRoller(5e-3, 0.5e-6, 115e9, "circular:Rc=0.5")
+    with pytest.raises(ConvergenceError) as info:
+        r.at_force(1.0)
+    msg = str(info.value)
+    assert "L/D = 5e-05" in msg and "covers" in msg and " L" in msg
+    assert msg.count("geometry may be the cause") == 1

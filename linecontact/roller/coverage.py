@@ -46,6 +46,23 @@ def _coverage():
     return _COVERAGE[0]
 
 
+def geometry_cause(radius, length, estar, force=None):
+    """Why a coupled-slice solve may fail, in numbers: L/D against the table's covered
+    L/D and, given a force, the plane-strain Hertz half-width b = sqrt(4 R F/(pi L E*))
+    (Johnson 1985, Eq. 4.45) against the length (each slice is a strip across the
+    roller, which asks for b well below L)."""
+    cov = _coverage()
+    ld = length / (2 * radius)
+    text = f"L/D = {ld:.3g}"
+    if cov is not None:
+        lo, hi = cov["l_over_d"]
+        text += f" (the accuracy table covers {lo:.3g}-{hi:.3g})"
+    if force is not None:
+        b = math.sqrt(4 * radius * force / (math.pi * length * estar))
+        text += f"; at {force:.6g} N the Hertz half-width b = {b:.3g} m is {b / length:.3g} L"
+    return text
+
+
 def _pct(v):
     return f"{100 * v:.2g} %"
 

@@ -10,7 +10,7 @@ import numpy as np
 
 from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_interval, check_positive
-from .coverage import coverage_note
+from .coverage import coverage_note, geometry_cause
 from .slices import (N_SLICES, SLICE_GRADING, TILT_RANGE, ConvergenceError,
                      SliceEquations)
 from .solution import RollerSolution, contact_extent, peak_pressure
@@ -217,6 +217,14 @@ class ProfiledRoller:
         """
         if np.size(depth) != 1:
             return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
+        try:
+            return self._at_depth(depth, tilt)
+        except ConvergenceError as exc:
+            raise ConvergenceError(f"{exc}; the geometry may be the cause: "
+                                   + geometry_cause(self.radius, self.length,
+                                                    self.estar)) from exc
+
+    def _at_depth(self, depth, tilt):
         if is_free_tilt(tilt):
             return self._free_tilt_at_depth(depth)
         th = TILT_RANGE.check(tilt).item()
@@ -425,6 +433,14 @@ class ProfiledRoller:
         if np.size(force) != 1:
             return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
+        try:
+            return self._at_force(F0, tilt, tol)
+        except ConvergenceError as exc:
+            raise ConvergenceError(f"{exc}; the geometry may be the cause: "
+                                   + geometry_cause(self.radius, self.length,
+                                                    self.estar, F0)) from exc
+
+    def _at_force(self, F0, tilt, tol):
         free = is_free_tilt(tilt)
         th = self._free_memo if free else TILT_RANGE.check(tilt).item()
         try:
@@ -497,7 +513,7 @@ class ProfiledRoller:
         L = self.length
         th, lo, hi = 0.0, -TILT_RANGE.high, TILT_RANGE.high
         for _ in range(60):
-            s = self.at_depth(depth, th)
+            s = self._at_depth(depth, th)
             if abs(s.moment) <= 1e-10 * s.force * L:
                 return s
             if s.moment > 0:

@@ -444,7 +444,8 @@ class ContactModel(abc.ABC):
         .. [1] Li & Popov (2017) [li-popov-2017].
         """
         if (force is None) == (depth is None):
-            raise TypeError("evaluate() takes exactly one of force= or depth=")
+            raise OutOfRangeError("depth", "both" if depth is not None else "neither",
+                                  "exactly one of force, depth", where="evaluate()")
         own = type(self).stiffness_at_force is not ContactModel.stiffness_at_force
         if force is not None:
             F = check_positive("force", force, "N")
@@ -1068,7 +1069,8 @@ class UniversalModel(ContactModel):
         variables of each element, the same operations as one model per cylinder
         (so equal values), and the same range (d <= min(d~_max L^2/R, 0.15 R))."""
         if (force is None) == (depth is None):
-            raise TypeError("evaluate_many() takes exactly one of force= or depth=")
+            raise OutOfRangeError("depth", "both" if depth is not None else "neither",
+                                  "exactly one of force, depth", where="evaluate_many()")
         curve = universal_curve(_UNIVERSAL_TABLE)
         R, L, E = (np.asarray(a, dtype=float) for a in (radius, length, estar))
         given = np.asarray(force if force is not None else depth, dtype=float)

@@ -700,7 +700,8 @@ class TangentialContact:
     def __init__(self, model, friction, gstar, *, depth=None, force=None, method="mdr",
                  direction="across", slip_correction=True, table=None):
         if (depth is None) == (force is None):
-            raise TypeError("give exactly one of depth and force")
+            raise OutOfRangeError("depth", "both" if depth is not None else "neither",
+                                  "exactly one of depth, force")
         self.model = model
         self.friction = float(_scalar_check(_friction(friction), "friction"))
         self.gstar = float(_scalar_check(check_positive("gstar", gstar, "Pa"), "gstar"))

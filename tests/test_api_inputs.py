@@ -332,3 +332,20 @@ def test_a_refusal_caused_by_the_geometry_names_l_over_r(key, log_lr, log_d):
         assert found, msg
         assert float(found.group(1)) == pytest.approx(L / R, rel=1e-3), msg
         assert re.search(r"L/R >= [0-9.]|\[[0-9.]+, [0-9.]+\]", msg), msg
+
+
+def test_exactly_one_of_depth_and_force_is_a_one_line_range_error():
+    """Giving both or neither of depth and force (TangentialContact, a model's evaluate)
+    is a bad value of an input, so it is the project's OutOfRangeError naming the
+    choice, like roller_contact, not Python's TypeError."""
+    from linecontact.models import get_model
+    from linecontact.tangential import TangentialContact
+    from linecontact.validity import OutOfRangeError
+
+    m = get_model("universal", 5e-3, 10e-3, 115e9)
+    with pytest.raises(OutOfRangeError, match="exactly one of"):
+        TangentialContact(m, 0.1, 80e9)
+    with pytest.raises(OutOfRangeError, match="both"):
+        TangentialContact(m, 0.1, 80e9, depth=1e-6, force=1e3)
+    with pytest.raises(OutOfRangeError, match="neither"):
+        m.evaluate()

@@ -196,3 +196,22 @@ def test_iso_slicing_model_tilted(load):
         assert s.roller_moments @ c == pytest.approx(3.0, rel=1e-9)
     K = s.stiffness
     assert abs(K[0, 1] - K[1, 0]) < 1e-6 * math.sqrt(K[0, 0] * K[1, 1])
+
+
+def test_docs_misalignment_table_matches_the_solve():
+    """docs/bearings.md's ISO-profile misalignment table is what the library gives: the
+    2 mrad row's Q_max, p_max, von Mises (3D-corrected, the bearing's stress) and L10r
+    to the table's printed digits (half a unit in the last place)."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "bearings.md").read_text()
+    row = next(line for line in text.splitlines() if line.startswith("| 2 | "))
+    cells = [float(v) for v in row.strip("|").split("|")]
+    _, _, Qmax, _, _, _, p_max, vm, life = cells
+    b = RadialRollerBearing(20, 0.1, 0.01, 0.01, estar=115.38e9, profile="iso16281")
+    s = b.solve(10e3, misalignment=2e-3)
+    assert s.max_roller_load == pytest.approx(Qmax, abs=0.05)
+    assert s.peak_pressure / 1e6 == pytest.approx(p_max, abs=0.5)
+    assert s.stress["von_mises"]["value"] / 1e6 == pytest.approx(vm, abs=0.5), \
+        "docs/bearings.md's von Mises is not the bearing's (3D-corrected) stress"
+    assert s.life_iso16281 == pytest.approx(life, abs=0.05)

@@ -68,7 +68,8 @@ fields["min_case_depth"] = Field("CHD min", "m", "mm", 1e3)
 
 NOTE = ("stresses: plane-strain Hertz strip (McEwen 1949; Johnson 1985, sections 4.2 and "
         "7.2) with the mean line load F/L per model row; along the roller one strip per "
-        "slice of the coupled-slice model; tau max = (sigma1 - sigma3)/2, tau orth = "
+        "slice of the coupled-slice model, the worst with a 3D correction (Love 1929; "
+        "measured error in the row's note); tau max = (sigma1 - sigma3)/2, tau orth = "
         "|tau_yz|; case check: von Mises over the yield strength 2.876 HV - 90.7 MPa "
         "(Pavlina & Van Tyne 2008), CHD min: the smallest effective case depth with a "
         "ratio <= 1. docs/stresses.md.")

@@ -286,6 +286,19 @@ def test_roller_result_carries_its_measured_error():
         roller_stresses(r.at_force(11200.0), friction=-0.2)
 
 
+def test_iso_slicing_loads_carry_no_measured_error():
+    """The stress table measured the coupled-slice model's loads only: the stresses of
+    ISO 16281's uncoupled slices (a bearing's or calc's iso16281-slicing) quote no
+    measured error (None) and the note names the slice model, rather than borrowing
+    the coupled slices' figures."""
+    from linecontact.roller import iso_slicing
+
+    sol = iso_slicing(5e-3, 14e-3, ESTAR, "iso16281", force=11200.0)
+    s = roller_stresses(sol)
+    assert s.error is None, "an unmeasured slice model got a measured error"
+    assert any("ISO 16281 slicing" in n for n in s.notes)
+
+
 def test_measured_hardness_above_the_maximum_is_refused():
     """A measured hardness profile that stops above the stress maximum (its depths
     are the check's grid) is refused in one line naming depths and the valid range,

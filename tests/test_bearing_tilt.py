@@ -215,3 +215,15 @@ def test_docs_misalignment_table_matches_the_solve():
     assert s.stress["von_mises"]["value"] / 1e6 == pytest.approx(vm, abs=0.5), \
         "docs/bearings.md's von Mises is not the bearing's (3D-corrected) stress"
     assert s.life_iso16281 == pytest.approx(life, abs=0.05)
+
+
+def test_stress_note_checks_the_measured_range():
+    """D = L rollers: each contact's equivalent roller (effective radius) has L/D of
+    1.1 (inner) and 0.91 (outer), below the stress table's 1.4-3, so the bearing's
+    stress notes say so instead of quoting the measured errors as if inside."""
+    b = RadialRollerBearing(20, 0.1, 0.01, 0.01, estar=115.38e9, profile="iso16281")
+    notes = b.solve(10e3).notes
+    assert any(n.startswith("stress (inner contact): L/D = 1.1 (measured 1.4-3): "
+                            "outside") for n in notes), notes
+    assert any(n.startswith("stress (outer contact): L/D = 0.91 (measured 1.4-3): "
+                            "outside") for n in notes), notes

@@ -161,7 +161,8 @@ def columns(model, rows, normal, state):
         sol = normal["solution"][j] if "solution" in normal else None
         try:
             if _is_slices(sol):   # a profiled roller: the worst along its slices
-                s = roller_stresses(sol, state.mu[i], state.nu[i])
+                s = roller_stresses(sol, state.mu[i], state.nu[i],
+                                    roller=_measured_as(model))
                 flags[j] = "; ".join(s.notes)
             else:
                 s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
@@ -187,6 +188,20 @@ def columns(model, rows, normal, state):
                 flags[j] = "; ".join(t for t in (flags[j], str(exc)) if t)
     out["flags"] = flags
     return out
+
+
+def _measured_as(model):
+    """The row's roller as :func:`linecontact.stresses.stress_accuracy` checks it
+    against the measured range (radius, length, estar, profile), or None where the
+    contact has no single radius (raceways: the note then checks only tilt and
+    friction)."""
+    from types import SimpleNamespace
+
+    c = getattr(model, "contact", None)
+    if c is None or getattr(c, "radius", None) is None:
+        return None
+    return SimpleNamespace(radius=c.radius, length=c.roller.length, estar=c.estar,
+                           profile=c.profile)
 
 
 def _is_slices(sol):

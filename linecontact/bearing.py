@@ -1318,11 +1318,13 @@ class RadialRollerBearing:
                 u[g] = u[g] + du
             dr += dV[0]
             th += dV[1]
-            if not abs(th) < 0.05:
+            # a solved ring tilt beyond 0.05 rad: the moment is beyond the rollers'
+            # capacity (a given misalignment stays as given, up to its range)
+            if not given_tilt and not abs(th) < 0.05:
                 break
         else:
             th = math.nan
-        if not abs(th) < 0.05:
+        if not (given_tilt and math.isfinite(th)) and not abs(th) < 0.05:
             name, value, unit = (("misalignment", theta, "rad") if given_tilt else
                                  ("moment", M, "N m"))
             raise OutOfRangeError(

@@ -227,3 +227,14 @@ def test_stress_note_checks_the_measured_range():
                             "outside") for n in notes), notes
     assert any(n.startswith("stress (outer contact): L/D = 0.91 (measured 1.4-3): "
                             "outside") for n in notes), notes
+
+
+def test_misalignment_inside_its_range_is_solved():
+    """A given misalignment is valid for |theta| < 0.1 rad (the docstring's and the
+    check's range); 0.06 rad was refused as 'no ring equilibrium' because the guard
+    meant for a solved ring tilt (0.05 rad) also stopped a given one. Now solved, with
+    the loads in equilibrium (sum Q_j cos psi_j = F_r to 1e-9)."""
+    b = RadialRollerBearing(8, 60e-3, 8e-3, 10e-3, profile="circular:Rc=0.3")
+    s = b.solve(5e3, misalignment=0.06)
+    assert s.tilt == 0.06
+    assert s.roller_loads @ np.cos(s.azimuth) == pytest.approx(5e3, rel=1e-9)

@@ -97,6 +97,7 @@ __all__ = [
     "StripMaxima",
     "strip_maxima",
     "rectangle_stresses",
+    "stress_measures",
     "reaches_end",
     "SubsurfaceStresses",
     "line_contact_stresses",
@@ -949,9 +950,52 @@ def _field_3d(xc, b, p0, mu, nu, k0, py, pz, corners=None):
     return (s0 * sx + d[0], s0 * sy + d[1], s0 * sz + d[2], d[3], d[4], s0 * tyz + d[5])
 
 
-def _measures_3d(c):
-    """Tresca, von Mises and |tau_yz| of six component arrays."""
-    sx, sy, sz, txy, txz, tyz = c
+def stress_measures(sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz):
+    r"""Tresca (maximum) shear, von Mises stress and orthogonal shear of 3D stress states.
+
+    .. math::
+
+        \tau_{\max} = \frac{\sigma_1 - \sigma_3}{2},\qquad
+        \sigma_{vM} = \sqrt{\tfrac12[(\sigma_x - \sigma_y)^2 + (\sigma_y - \sigma_z)^2
+        + (\sigma_z - \sigma_x)^2] + 3(\tau_{xy}^2 + \tau_{xz}^2 + \tau_{yz}^2)},
+        \qquad \tau_{orth} = |\tau_{yz}|
+
+    with :math:`\sigma_1 \ge \sigma_2 \ge \sigma_3` the principal stresses (x along
+    the roller axis, y across the contact, z into the body); the one home of these
+    measures for the runtime's 3D correction and the 3D reference field (tools/bem).
+
+    Parameters
+    ----------
+    sigma_x, sigma_y, sigma_z : array_like
+        Normal stresses [Pa].
+    tau_xy, tau_xz, tau_yz : array_like
+        Shear stresses [Pa].
+
+    Returns
+    -------
+    dict
+        ``tresca``, ``von_mises``, ``orthogonal_shear`` arrays of the broadcast
+        shape [Pa].
+
+    Notes
+    -----
+    Valid for any finite stresses, -inf < sigma, tau < inf.
+
+    Examples
+    --------
+    Uniaxial tension of 100 MPa: maximum shear 50 MPa, von Mises 100 MPa.
+
+    >>> m = stress_measures(100e6, 0.0, 0.0, 0.0, 0.0, 0.0)
+    >>> f"{float(m['tresca']) / 1e6:.1f} {float(m['von_mises']) / 1e6:.1f}"
+    '50.0 100.0'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), sections 4.2 and 7.2.
+    """
+    sx, sy, sz, txy, txz, tyz = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (sigma_x, sigma_y, sigma_z, tau_xy,
+                                                tau_xz, tau_yz)))
     T = np.stack([np.stack([sx, txy, txz], -1), np.stack([txy, sy, tyz], -1),
                   np.stack([txz, tyz, sz], -1)], -2)
     ev = np.linalg.eigvalsh(T)
@@ -976,7 +1020,7 @@ def _worst_3d(x, b, p0, mu, nu, value2d, m):
     def field(k, py, pz):
         if k not in cache:
             cache[k] = _corners_3d(x, b, p0, k)
-        return _measures_3d(_field_3d(x, b, p0, mu, nu, k, py, pz, cache[k]))
+        return stress_measures(*_field_3d(x, b, p0, mu, nu, k, py, pz, cache[k]))
 
     out = {}
     for name in MEASURES:

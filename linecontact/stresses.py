@@ -914,26 +914,8 @@ def _corners_3d(xc, b, p0, k0):
 
 def _love_sums(X, Y, z, w):
     """The corner sums sum_c w_c g(X_pc, Y_pc, z_p) of the nine corner functions
-    (:func:`_love_corner`), computed one function at a time: (9, n_points)."""
-    X2, Y2, z2 = X * X, Y * Y, z * z
-    rho = np.sqrt(X2 + Y2 + z2)
-    XY = X * Y
-    xz = X2 + z2
-    yz = Y2 + z2
-    ir = 1.0 / rho
-    out = [(-np.arctan(XY * ir / z)) @ w,
-           (XY * (rho * rho + z2) * ir / (xz * yz)) @ w,
-           (-XY * ir / xz) @ w,
-           (-XY * ir / yz) @ w,
-           ir @ w,
-           (-Y * z * ir / xz) @ w,
-           (-X * z * ir / yz) @ w]
-    rz = rho - z
-    for den in (X2 * rho + Y2 * z, Y2 * rho + X2 * z):
-        ok = den > 0
-        out.append(np.where(ok, np.arctan(XY * rz / np.where(ok, den, 1.0)), 0.0) @ w)
-    out.append(np.log(rho + z) @ w)
-    return np.array(out)
+    (:func:`_love_corner`): (9, n_points)."""
+    return _love_corner(X, Y, z) @ w
 
 
 def _field_3d(xc, b, p0, mu, nu, k0, py, pz, corners=None):

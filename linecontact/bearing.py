@@ -910,6 +910,11 @@ class RadialRollerBearing:
                                    "give a tilting moment or a misalignment, not both "
                                    "(the moment a misalignment needs is an output)")
         if moment is not None or misalignment is not None:
+            for name, v, unit in (("moment", moment, "N m"),
+                                  ("misalignment", misalignment, "rad")):
+                if v is not None and not isinstance(v, str) and np.ndim(v) != 0:
+                    raise OutOfRangeError(name, v, f"one number [{unit}]",
+                                          hint="one bearing load case per solve")
             M = None if moment is None else float(check_interval(
                 "moment", moment, -np.inf, np.inf, low_open=True, high_open=True,
                 unit="N m"))

@@ -238,3 +238,15 @@ def test_misalignment_inside_its_range_is_solved():
     s = b.solve(5e3, misalignment=0.06)
     assert s.tilt == 0.06
     assert s.roller_loads @ np.cos(s.azimuth) == pytest.approx(5e3, rel=1e-9)
+
+
+@pytest.mark.parametrize("kw", [dict(misalignment=[1e-3, 2e-3]), dict(moment=[1.0, 2.0])])
+def test_array_tilt_gets_the_one_line_error(kw):
+    """A sequence for the moment or the misalignment (one load case per solve) is
+    refused with the parameter named, not numpy's 'can only convert an array of size
+    1' (misalignment) or a TypeError (moment)."""
+    b = RadialRollerBearing(8, 60e-3, 8e-3, 10e-3, profile="circular:Rc=0.3",
+                            n_slices=20)
+    (name,) = kw
+    with pytest.raises(OutOfRangeError, match=rf"^{name} = .*one number"):
+        b.solve(5e3, **kw)

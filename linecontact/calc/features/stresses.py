@@ -71,8 +71,9 @@ NOTE = ("stresses: plane-strain Hertz strip (McEwen 1949; Johnson 1985, sections
         "slice of the coupled-slice model, the worst with a 3D correction (Love 1929; "
         "measured error in the row's note); tau max = (sigma1 - sigma3)/2, tau orth = "
         "|tau_yz|; case check: von Mises over the yield strength 2.876 HV - 90.7 MPa "
-        "(Pavlina & Van Tyne 2008), CHD min: the smallest effective case depth with a "
-        "ratio <= 1. docs/stresses.md.")
+        "(Pavlina & Van Tyne 2008) on the worst slice's plane-strain envelope (low by "
+        "the 3D correction where it raises the worst, up to 5.6 %), CHD min: the "
+        "smallest effective case depth with a ratio <= 1. docs/stresses.md.")
 notes = {"stresses": NOTE}
 
 _ROW_FIELDS = {}

@@ -966,3 +966,8 @@ class CylinderAdhesion:
         z = self.mdr.zero_load()
         return {"half_width_2d": float(np.cbrt(32 * R ** 2 * self.work / (np.pi * E))),
                 "mdr_half_length": z["contact_radius"], "mdr_depth": z["depth"]}
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

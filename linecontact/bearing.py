@@ -436,8 +436,11 @@ def _laminae(sol, length, n):
     interpolated at the lamina boundaries, so that the total load is kept."""
     x = np.asarray(sol.x, dtype=float)
     q = np.asarray(sol.q, dtype=float)
-    w = float(x[1] - x[0]) if len(x) > 1 else length
-    edges = np.concatenate([x - w / 2, [x[-1] + w / 2]])
+    if getattr(sol, "width", None) is not None:      # the slices' own (graded) widths
+        w = np.asarray(sol.width, dtype=float)
+    else:
+        w = np.full(x.shape, float(x[1] - x[0]) if len(x) > 1 else length)
+    edges = np.concatenate([x - w / 2, [x[-1] + w[-1] / 2]])
     cum = np.concatenate([[0.0], np.cumsum(q * w)])
     return np.diff(np.interp(np.linspace(-length / 2, length / 2, n + 1), edges, cum))
 
@@ -1349,3 +1352,8 @@ class RadialRollerBearing:
         Fm = math.sqrt(Fi[i] * Fi[i + 1])
         si, so = solvers[0](Fm), solvers[1](Fm)
         return abs(float(law.delta_of(Fm)) / (si.depth + so.depth) - 1.0)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -265,6 +265,17 @@ _PT_HINT = ("Eq. 2 reaches its largest depth L^2/R at F = pi E* L^3/R; beyond th
             "has no physical meaning")
 
 
+def _pt_hint(R, L):
+    """_PT_HINT, naming the geometry when it is the cause: a roller so short against its
+    radius that L^2/R lies below the models' parabolic-gap range d <= 0.15 R."""
+    lr = L / R
+    if lr * lr >= 0.15:
+        return _PT_HINT
+    return (f"{_PT_HINT}; the cause is the geometry: L/R = {lr:.4g} puts that depth at "
+            f"d/R = (L/R)^2 = {lr * lr:.3g} (L/R >= {math.sqrt(0.15):.3g} reaches "
+            "d/R = 0.15)")
+
+
 def puttock_thwaite_depth(force, radius, length, estar):
     r"""Depth of a cylinder on a flat, Puttock & Thwaite (Li & Popov 2017, Eq. 2).
 
@@ -312,7 +323,7 @@ def puttock_thwaite_depth(force, radius, length, estar):
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
-                   high_open=True, unit="N", hint=_PT_HINT)
+                   high_open=True, unit="N", hint=_pt_hint(R, L))
     return lipopov_depth(force, R, L, E, **_PT)
 
 
@@ -364,7 +375,7 @@ def puttock_thwaite_force(depth, radius, length, estar):
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
-                   unit="m", hint=_PT_HINT)
+                   unit="m", hint=_pt_hint(R, L))
     return lipopov_force(depth, R, L, E, **_PT)
 
 
@@ -415,7 +426,7 @@ def puttock_thwaite_stiffness(force, radius, length, estar):
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("force", force, 0.0, math.pi * E * L**3 / R, low_open=True,
-                   high_open=True, unit="N", hint=_PT_HINT)
+                   high_open=True, unit="N", hint=_pt_hint(R, L))
     return lipopov_stiffness_at_force(force, R, L, E, **_PT)
 
 
@@ -461,7 +472,7 @@ def puttock_thwaite_stiffness_at_depth(depth, radius, length, estar):
     """
     R, L, E = _inputs(radius, length, estar)
     check_interval("depth", depth, 0.0, L**2 / R, low_open=True, high_open=True,
-                   unit="m", hint=_PT_HINT)
+                   unit="m", hint=_pt_hint(R, L))
     return lipopov_stiffness(depth, R, L, E, **_PT)
 
 
@@ -1020,3 +1031,8 @@ def iso16281_force(depth, length, estar):
        reference rating life for universally loaded rolling bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -440,7 +440,7 @@ class ContactResult(_Result):
     >>> c = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9, n_slices=40)
     >>> r = c.normal(force=1e3)
     >>> f"{r.depth * 1e6:.3f} um, p0 {r.peak_pressure / 1e6:.0f} MPa", r.model
-    ('7.431 um, p0 1522 MPa', 'profiled-roller')
+    ('7.430 um, p0 1522 MPa', 'profiled-roller')
     """
 
     force: object
@@ -507,7 +507,7 @@ class TangentialResult(_Result):
     ...             material2=Elastic(210e9, 0.3), n_slices=40)
     >>> t = c.tangential(0.15, force=1e3, tangential_force=-50.0)
     >>> t.state, f"{t.shift * 1e9:.1f} nm"
-    ('partial slip', '-320.6 nm')
+    ('partial slip', '-320.5 nm')
     """
 
     normal: object
@@ -918,8 +918,15 @@ class Contact:
     def _slices_normal(self, force, depth):
         given = force if force is not None else depth
         vals = np.asarray(given, dtype=float)
-        sols = tuple(self._solve_one(float(v), None) if force is not None
-                     else self._solve_one(None, float(v)) for v in vals.ravel())
+        flat = vals.ravel()
+        # in increasing order, so that each slice solve starts from its neighbour's
+        # (the coupled-slice roller keeps its last solution)
+        sols = [None] * flat.size
+        for k in np.argsort(flat, kind="stable"):
+            v = float(flat[k])
+            sols[k] = (self._solve_one(v, None) if force is not None
+                       else self._solve_one(None, v))
+        sols = tuple(sols)
 
         def arr(fn):
             return out(np.array([fn(s) for s in sols]).reshape(vals.shape))
@@ -1280,7 +1287,10 @@ class Contact:
         Valid while the depth grows (refused otherwise, see
         :func:`linecontact.viscoelastic.creep_depth`), a fixed tilt (a free one only
         where it is zero). Between raceways the two contacts creep in series under the
-        same force: their depths add (the ring approach).
+        same force: their depths add (the ring approach). A depth d(t) beyond the law's
+        range is refused naming the first time at which it leaves the range; where only
+        the long-term depth is beyond it, the history is returned with
+        ``long_term_depth`` None and its reason in ``reasons["long_term_depth"]``.
 
         Examples
         --------
@@ -1302,14 +1312,25 @@ class Contact:
         t = np.asarray(time, dtype=float)
         F = np.broadcast_to(np.asarray(force, dtype=float), t.shape).astype(float)
         jinf = self.relaxation.creep_terms[0]
-        depth, long_term = np.zeros(t.shape), 0.0
+        depth, long_term, reasons = np.zeros(t.shape), 0.0, {}
         for law in laws:                                # contacts in series: depths add
             d0 = getattr(law, "d0", 0.0)
             depth += creep_depth(law, self.relaxation, t, F) + d0
-            long_term += (float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0
-                          else 0.0) + d0
+            if long_term is None:
+                continue
+            try:
+                long_term += (float(law.depth(F[-1] * jinf * self.estar)) if F[-1] > 0
+                              else 0.0) + d0
+            except OutOfRangeError as exc:  # d(t) is within the range, d(inf) is not
+                long_term = None
+                shown = (f"{exc.value:.6g}" if isinstance(exc.value, float)
+                         else str(exc.value))
+                reasons["long_term_depth"] = (
+                    {"force": float(F[-1])},
+                    "beyond the model's range: its elastic-equivalent force F E*_0/E*_inf "
+                    f"= {shown} {exc.unit} is outside {exc.valid}".replace("  ", " "))
         return CreepResult(time=t, force=F, depth=out(depth), long_term_depth=long_term,
-                           model=self.model)
+                           model=self.model, reasons=reasons)
 
     def relaxation_history(self, time, *, depth):
         r"""Force under a held depth or a depth history (Lee & Radok's relaxation).
@@ -1355,3 +1376,8 @@ class Contact:
         why = ({"depth": "given"}, "the depth is prescribed: no long-term creep depth")
         return CreepResult(time=t, force=out(F), depth=d, long_term_depth=None,
                            model=self.model, reasons={"long_term_depth": why})
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -330,3 +330,8 @@ def hertz_contact_at_approach(approach, radius_x, radius_y, estar):
     unit = _contact(np.asarray(1.0), rx, ry, E)
     F = (d / unit.approach) ** 1.5
     return _contact(F, rx, ry, E)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

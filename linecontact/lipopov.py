@@ -1109,3 +1109,8 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
 
 __all__ += ["dimensionless_contact_radius", "dimensionless_force", "dimensionless_depth",
             "dimensionless_stiffness", "effective_beta", "fit_dimensionless_profile"]
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

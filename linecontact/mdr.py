@@ -392,3 +392,8 @@ def mdr_profile_from_force(depth, force, estar):
     x = k / (2 * E)
     _check_monotone_x(x, d, "force")
     return x, d.copy()
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

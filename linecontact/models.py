@@ -53,8 +53,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_stiffness_at_force)
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import (OutOfRangeError, UnknownNameError, check_flag, check_interval,
-                       check_positive, document, out)
+from .validity import (OutOfRangeError, UnknownKeywordError, UnknownNameError,
+                       check_flag, check_interval, check_positive, document, out)
 
 __all__ = [
     "ContactModel",
@@ -239,7 +239,7 @@ class ContactModel(abc.ABC):
         def checked(self, *args, **options):
             for name in options:
                 if name not in params:
-                    raise UnknownNameError(f"{cls.__name__} keyword", name, names)
+                    raise UnknownKeywordError(cls.__name__, name, names)
             return init(self, *args, **options)
 
         checked._keywords_checked = True
@@ -247,8 +247,8 @@ class ContactModel(abc.ABC):
 
     def __init__(self, radius, length, estar, **options):
         if options:
-            raise UnknownNameError(f"{type(self).__name__} keyword", sorted(options)[0],
-                                   ["radius", "length", "estar"])
+            raise UnknownKeywordError(type(self).__name__, sorted(options)[0],
+                                      ["radius", "length", "estar"])
         self.radius = _scalar("radius", radius, "m")
         self.length = _scalar("length", length, "m")
         self.estar = _scalar("estar", estar, "Pa")
@@ -977,7 +977,16 @@ class UniversalModel(ContactModel):
             return (f"d/R <= {DEPTH_OVER_RADIUS.high:g}: the parabolic gap y^2/(2R) stands "
                     "in for the circle only for d << R (extrapolate=True accepts depths up "
                     f"to the table's end, d R/L^2 = {self.curve.d_max:g})")
-        return f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+        # the table's end in d/R is set by the geometry: d/R = d~_max (L/R)^2
+        lr = self.length / self.radius
+        full = (DEPTH_OVER_RADIUS.high / self.curve.d_max) ** 0.5
+        text = f"the universal table ends at d R/L^2 = {self.curve.d_max:g}"
+        if lr >= full:
+            return text
+        return (f"{text}; the cause is the geometry: L/R = {lr:.4g} puts the table's end "
+                f"at d/R = {self.curve.d_max:g} (L/R)^2 = {self.curve.d_max * lr * lr:.3g} "
+                f"(the table covers d/R up to {DEPTH_OVER_RADIUS.high:g} for "
+                f"L/R >= {full:.3g})")
 
     def _dt(self, depth):
         d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
@@ -1184,3 +1193,8 @@ def standard_models(radius, length, estar):
     rows.append(PalmgrenModel(R, L, E))
     rows.append(ISO16281Model(R, L, E))
     return rows
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -270,7 +270,8 @@ def line_load(result, *, ax=None):
     >>> from linecontact.contact import Contact, Roller
     >>> r = Contact(Roller(5e-3, 10e-3, crown_radius=0.5), estar=115.38e9).normal(force=1e3)
     >>> line = line_load(r).axes[0].lines[0]
-    >>> f"{np.sum(line.get_ydata()) * (line.get_xdata()[1] - line.get_xdata()[0]):.0f} N"
+    >>> w = r.solutions[0].width * 1e3                   # slice widths [mm]
+    >>> f"{np.sum(line.get_ydata() * w):.0f} N"
     '1000 N'
     """
     sol = _solution(result)
@@ -488,3 +489,8 @@ def creep(result, *, ax=None):
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=7, loc="lower right")
     return fig
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -1033,3 +1033,8 @@ def is_free_tilt(tilt):
                                hint="0 for an aligned roller, 'free' for moment "
                                     "equilibrium")
     return False
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

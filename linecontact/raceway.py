@@ -656,3 +656,8 @@ def _series_stiffness(si, so, free):
                   [Ki[1, 0], -Ko[1, 0], Ki[1, 1] + Ko[1, 1]]])
     dd_in, dd_out, _ = np.linalg.solve(A, [1.0, 1.0, 0.0])
     return 1.0 / (dd_in + dd_out)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

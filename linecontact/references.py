@@ -51,3 +51,8 @@ def cite(key):
 
         raise UnknownNameError("key", key, sorted(CITATIONS))
     return CITATIONS[key]
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

@@ -1447,3 +1447,8 @@ def case_check(stresses, hardness, depths=None, measure="von_mises"):
     name = "von Mises" if measure == "von_mises" else "Tresca"
     return CaseCheck(measure, z, sig, allow, ratio, float(ratio[k]), float(z[k]), min_chd,
                      _CONVERSION.format(f=f, m=name))
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

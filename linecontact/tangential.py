@@ -1264,3 +1264,8 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
         if column in table._grid:
             res[f"slip_error_{side}"] = table.value(column, nu, d_tilde)
     return res
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

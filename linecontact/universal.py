@@ -253,3 +253,8 @@ def universal_curve(name=TABLE):
         _CACHE[key] = UniversalCurve(read_table(name))
     return _CACHE[key]
 
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

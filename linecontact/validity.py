@@ -21,12 +21,14 @@ import numpy as np
 __all__ = [
     "OutOfRangeError",
     "UnknownNameError",
+    "UnknownKeywordError",
     "CombinationError",
     "Interval",
     "check_positive",
     "check_interval",
     "check_flag",
     "document",
+    "refuse_unknown_keywords",
     "POSITIVE_LENGTH",
     "POSITIVE_FORCE",
     "POSITIVE_DEPTH",
@@ -144,6 +146,197 @@ class UnknownNameError(ValueError):
 
 def _rebuild_name(parameter, value, valid, hint):
     return UnknownNameError(parameter, value, valid, hint=hint)
+
+
+class UnknownKeywordError(UnknownNameError, TypeError):
+    """A keyword argument that a function, method or class does not take: the message
+    names it, the close match ("did you mean") and every keyword it does take.
+
+    A :class:`UnknownNameError` (so a :class:`ValueError`, as every input error of the
+    library) and a :class:`TypeError` (what Python raises for an unexpected keyword, so
+    ``except TypeError`` still catches it).
+
+    Parameters
+    ----------
+    function : str
+        The callable's name as the user wrote it (``"johnson_depth"``,
+        ``"ProfiledRoller.at_force"``).
+    keyword : str
+        The keyword it does not take.
+    valid : iterable of str
+        The keywords it takes.
+
+    Notes
+    -----
+    One line, ``johnson_depth keyword = 'cc' is not a known name; valid: ...; did you
+    mean 'c'?``; the close match is :func:`difflib.get_close_matches` (cutoff 0.6, and
+    a case-insensitive equal name first). The attributes ``function``, ``keyword`` and
+    ``valid`` keep what was given; the error survives pickling.
+
+    Examples
+    --------
+    >>> err = UnknownKeywordError("johnson_depth", "cc",
+    ...                           ["force", "radius", "length", "estar", "c"])
+    >>> str(err)
+    "johnson_depth keyword = 'cc' is not a known name; valid: 'force', 'radius', 'length', 'estar', 'c'; did you mean 'c'?"
+    >>> isinstance(err, ValueError), isinstance(err, TypeError)
+    (True, True)
+    """
+
+    def __init__(self, function, keyword, valid):
+        import difflib
+
+        self.function = function
+        self.keyword = keyword
+        valid = tuple(valid)
+        same = [v for v in valid if str(v).lower() == str(keyword).lower()]
+        close = same or difflib.get_close_matches(str(keyword), [str(v) for v in valid],
+                                                  n=2, cutoff=0.6)
+        hint = ("did you mean " + " or ".join(repr(c) for c in close) + "?") if close \
+            else ""
+        super().__init__(f"{function} keyword", keyword, valid, hint=hint)
+
+    def __reduce__(self):
+        return (UnknownKeywordError, (self.function, self.keyword, self.valid))
+
+
+def _unknown_keyword(func, name, kwargs):
+    """The UnknownKeywordError for the first keyword in `kwargs` that `func` does not
+    take (None if it takes them all: the TypeError had another cause)."""
+    import inspect
+
+    try:
+        params = inspect.signature(func).parameters
+    except (TypeError, ValueError):
+        return None
+    if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+        return None
+    valid = [n for n, p in params.items()
+             if n not in ("self", "cls") and p.kind not in (p.POSITIONAL_ONLY,
+                                                             p.VAR_POSITIONAL)]
+    for key in kwargs:
+        if key not in valid:
+            return UnknownKeywordError(name, key, valid)
+    return None
+
+
+#: inspect.CO_VARKEYWORDS: the code object takes **kwargs.
+_CO_VARKEYWORDS = 0x08
+
+
+def _guarded(func, name):
+    """`func` wrapped so that an unknown keyword raises UnknownKeywordError.
+
+    The call runs inside a ``try`` (free in CPython >= 3.11 until something raises); a
+    TypeError whose traceback ends in this wrapper (raised while Python bound the
+    arguments, before `func`'s own frame began) and names a keyword `func` does not
+    take is replaced. Every other error passes unchanged.
+    """
+    import functools
+
+    if getattr(func, "_keywords_checked", False) or \
+            func.__code__.co_flags & _CO_VARKEYWORDS:
+        return func  # wrapped already, or it takes **kwargs and checks them itself
+
+    @functools.wraps(func)
+    def guarded(*args, **kwargs):
+        try:
+            return func(*args, **kwargs)
+        except TypeError as exc:
+            if kwargs and exc.__traceback__.tb_next is None:
+                err = _unknown_keyword(func, name, kwargs)
+                if err is not None:
+                    raise err from None
+            raise
+
+    guarded._keywords_checked = True
+    return guarded
+
+
+def refuse_unknown_keywords(namespace):
+    """Make every public callable of a module refuse an unknown keyword by name.
+
+    Each function named in ``namespace["__all__"]``, and the constructor and public
+    methods (plain, static and class methods defined in the class body) of each class
+    named there (exceptions aside), is replaced by a wrapper that raises
+    :class:`UnknownKeywordError` (one line: the keyword, the close match and the valid
+    keywords) where Python would raise its bare ``TypeError: ... got an unexpected
+    keyword argument``. Called once at the end of each public module of linecontact.
+
+    Parameters
+    ----------
+    namespace : dict
+        A module's ``globals()``, holding ``__all__``.
+
+    Returns
+    -------
+    None
+
+    Notes
+    -----
+    The wrapper keeps the signature, docstring, name and module of what it wraps
+    (:func:`functools.wraps`, so :func:`inspect.signature` and doctests see the
+    original) and costs one extra Python call per call (about 0.2 us; a vectorised
+    call's time is unchanged; tools/benchmarks/bench_keywords.py). Callables taking
+    ``**kwargs`` check their own keywords and are left alone; a callable wrapped once
+    is not wrapped again (a re-export). Valid input: any module namespace with an
+    ``__all__`` list of names it defines.
+
+    Examples
+    --------
+    >>> def law(force, c=1.0):
+    ...     "F [N] scaled."
+    ...     return c * force
+    >>> ns = {"__all__": ["law"], "law": law}
+    >>> refuse_unknown_keywords(ns)
+    >>> ns["law"](2.0, cc=0.5)
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.UnknownKeywordError: law keyword = 'cc' is not a known name; valid: 'force', 'c'; did you mean 'c'?
+
+    References
+    ----------
+    Python Language Reference, section 'Calls' (keyword arguments bound to parameter
+    names, TypeError otherwise); PEP 362 (function signature objects).
+    """
+    import inspect
+
+    for public in namespace.get("__all__", ()):
+        obj = namespace.get(public)
+        if inspect.isfunction(obj):
+            namespace[public] = _guarded(obj, obj.__name__)
+        elif inspect.isclass(obj) and not issubclass(obj, BaseException):
+            _guard_class(obj)
+
+
+def _guard_class(cls):
+    """Wrap the constructor and the public methods of `cls` and of its bases from the
+    same package (a public class may inherit them from a private base)."""
+    home = cls.__module__.split(".")[0]
+    for klass in cls.__mro__:
+        if klass.__module__.split(".")[0] == home:
+            _guard_body(klass)
+
+
+def _guard_body(cls):
+    """Wrap the constructor and the public methods defined in `cls`'s own body."""
+    import inspect
+
+    for attr, member in list(vars(cls).items()):
+        if attr.startswith("_") and attr != "__init__":
+            continue
+        if isinstance(member, (staticmethod, classmethod)):
+            inner = member.__func__
+            if getattr(inner, "_keywords_checked", False):
+                continue
+            name = f"{cls.__name__}.{attr}"
+            setattr(cls, attr, type(member)(_guarded(inner, name)))
+        elif inspect.isfunction(member):
+            name = cls.__name__ if attr == "__init__" else f"{cls.__name__}.{attr}"
+            try:
+                setattr(cls, attr, _guarded(member, name))
+            except (AttributeError, TypeError):  # a class that refuses new attributes
+                return
 
 
 class CombinationError(ValueError):
@@ -608,3 +801,7 @@ def check_flag(name, value):
         return bool(value)
     raise OutOfRangeError(name, value, "True or False",
                           hint="a yes/no option takes a boolean, not a word or number")
+
+
+# This module's own public callables refuse an unknown keyword by name too.
+refuse_unknown_keywords(globals())

@@ -763,9 +763,27 @@ def creep_depth(model, material, time, force, *, unloading="raise"):
     d = np.zeros(t.shape)
     pos = y > 0
     if np.any(pos):
-        d[pos] = model.depth(y[pos] * model.estar)
+        try:
+            d[pos] = model.depth(y[pos] * model.estar)
+        except OutOfRangeError as exc:
+            raise _left_range(model, t[pos], y[pos] * model.estar, exc) from None
     _shrinking(t, d, unloading, "the force decreases faster than the material creeps")
     return d
+
+
+def _left_range(model, times, equivalent, exc):
+    """The model's refusal of a creep depth, said at the first time whose
+    elastic-equivalent force F1 E*_0 it refuses (earlier samples are within range)."""
+    for tk, fk in zip(times.ravel(), equivalent.ravel()):
+        try:
+            model.depth(float(fk))
+        except OutOfRangeError as one:
+            hint = "; ".join(h for h in (one.hint, "the creep depth d(t) leaves the "
+                                         f"model's range at t = {tk:.6g} s") if h)
+            return OutOfRangeError(one.parameter, one.value, one.valid, unit=one.unit,
+                                   where=f"at t = {tk:.6g} s",
+                                   hint=hint)
+    return exc
 
 
 def step_creep_depth(model, material, force, time):
@@ -880,3 +898,8 @@ def effective_relaxation(body, poisson, modulus2=np.inf, poisson2=None):
                                   "with a finite modulus2)")
         b = (1.0 - POISSON_RATIO.check(poisson2, name="poisson2").item() ** 2) / E2
     return body.scaled(1.0 / (1.0 - nu1 ** 2)).in_series(b)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

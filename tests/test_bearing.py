@@ -187,11 +187,10 @@ def test_profiled_bearing_matches_exact_slice_solves():
                                 tilt=0.0, n_slices=20)
     # the direct solve's slices (over its contact only) summed onto the 20 equal
     # laminae of the roller length
-    x, q = r.inner.x, r.inner.q
-    w = x[1] - x[0]
+    x, q, w = r.inner.x, r.inner.q, r.inner.width
     cum = np.concatenate([[0.0], np.cumsum(q * w)])
     lam = np.diff(np.interp(np.linspace(-4e-3, 4e-3, 21),
-                            np.concatenate([x - w / 2, [x[-1] + w / 2]]), cum))
+                            np.concatenate([x - w / 2, [x[-1] + w[-1] / 2]]), cum))
     assert s.slice_loads_inner[j].sum() == pytest.approx(s.roller_loads[j], rel=1e-12)
     assert np.allclose(s.slice_loads_inner[j], lam,
                        atol=1e-3 * s.slice_loads_inner[j].max())

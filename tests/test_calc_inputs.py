@@ -265,3 +265,244 @@ def test_an_implausible_bare_number_is_named_as_the_likely_cause(name, bare):
     argv = [a for k, v in {**base, name: bare + si}.items() for a in (f"--{k}", v)]
     status, out, err = _calc(argv + ["--model", "li-popov"])
     assert "likely cause" not in out + err
+
+
+# ---- the JSON header's model keys; the raceway contacts' geometry flags --------------
+
+@pytest.mark.parametrize("extra", [
+    [],                                              # plain contacts, L/R out of range
+    ["--profile", "circular:Rc=0.5"],                # composed contacts, refused laws
+    ["--inner-raceway", "20mm", "--outer-raceway", "30mm"],
+])
+def test_every_json_model_key_is_a_registry_key(extra):
+    """models[].key of the JSON header is the model's registry key (what get_model
+    takes), also for a model refused for the whole contact; the text as typed or the
+    label is in models[].label."""
+    import json
+
+    from linecontact.models import available_models
+
+    status, out, err = _calc(["--radius", "5mm", "--length", "200mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", "johnson:c=0.7,li-popov",
+                              "--json", *extra])
+    if not out:
+        pytest.skip(f"the combination is refused as a whole: {err}")
+    doc = json.loads(out)
+    keys = [m["key"] for m in doc["models"]]
+    assert keys and all(k in available_models() for k in keys), keys
+    assert all(m["label"] for m in doc["models"])
+
+
+@settings(max_examples=10, deadline=None)
+@given(load=st.floats(1e2, 1e6), length_mm=st.sampled_from([1.0, 3.0, 10.0]))
+def test_raceway_contacts_carry_the_geometry_flags(tmp_path_factory, load, length_mm):
+    """Each contact of a roller between raceways is flagged as a plain contact's row is:
+    d > 0.15 R (R its effective radius) and b > L/2 (b the Hertz half-width of its strip,
+    Li & Popov 2017 Eq. 1), named inner or outer; and only then."""
+    import json
+    import math
+
+    from linecontact.classical import hertz_half_width
+    from linecontact.raceway import Raceways
+
+    estar = 1e9
+    status, out, err = _calc(["--radius", "5mm", "--length", f"{length_mm}mm",
+                              "--estar", "1GPa", "--load", f"{load!r}",
+                              "--inner-raceway", "20mm", "--outer-raceway", "30mm",
+                              "--model", "johnson", "--json", "--si"])
+    doc = json.loads(out)
+    row = doc["models"][0]["rows"][0]
+    if row.get("depth_inner") is None:
+        return  # refused by the law: nothing to flag
+    L = length_mm * 1e-3
+    radii = dict(zip(("inner", "outer"), Raceways(20e-3, 30e-3).effective_radii(5e-3)))
+    for side, R in radii.items():
+        d = row[f"depth_{side}"]
+        b = float(hertz_half_width(load, R, L, estar))
+        assert (f"d > 0.15 R ({side})" in row["flags"]) == (d / R > 0.15), row["flags"]
+        assert (f"b > 0.5 L ({side})" in row["flags"]) == (b / L > 0.5), row["flags"]
+    assert math.isfinite(row["roller_deflection"])
+
+
+@pytest.mark.parametrize("flags", [[], ["--si"], ["--model", "johnson:c=0.72,universal"]])
+def test_a_rerun_round_trip_gives_the_same_results_and_says_so(tmp_path, flags):
+    """calc in.csv -o out.csv; calc out.csv -o out2.csv: out2 holds out's columns exactly
+    as they were, then this run's results under the prefix result_, cell for cell equal
+    to out's results (the earlier results are not read as inputs: nothing changes),
+    and stderr says in one line which columns are results of the earlier run."""
+    src, out1, out2 = tmp_path / "in.csv", tmp_path / "out.csv", tmp_path / "out2.csv"
+    src.write_text("radius,length,modulus,poisson,load,profile,part\n"
+                   "5mm,10mm,210GPa,0.3,1kN,,a\n"
+                   "5mm,10mm,210GPa,0.3,2kN,circular:Rc=0.5,b\n"
+                   "5mm,10mm,210GPa,0.3,-1kN,,c\n")
+    s1, _, err1 = _calc([str(src), "-o", str(out1), *flags])
+    s2, _, err2 = _calc([str(out1), "-o", str(out2), *flags])
+    assert s1 == s2 and "note" not in err1
+    notes = [ln for ln in err2.splitlines() if "results of an earlier run" in ln]
+    assert len(notes) == 1 and "result_" in notes[0], err2
+    first = list(csv.reader(io.StringIO(out1.read_text())))
+    second = list(csv.reader(io.StringIO(out2.read_text())))
+    n_in = 7
+    width = len(first[0])
+    assert [r[:width] for r in second] == first, "out.csv's columns written back as read"
+    assert second[0][width:] == ["result_" + h for h in first[0][n_in:]]
+    assert [r[width:] for r in second[1:]] == [r[n_in:] for r in first[1:]], \
+        "the same results a second time"
+
+
+def test_a_geometry_outside_the_table_is_named_in_the_row():
+    """The command line's note for a roller too short for the universal table (L/R =
+    0.002: the table ends at d/R = 30 (L/R)^2) names L/R and the covered range, beside
+    the option as typed."""
+    status, out, err = _calc(["--radius", "5mm", "--length", "0.01mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", "universal"])
+    assert "--load = '1kN'" in out and "L/R = 0.002" in out and "L/R >= 0.0707" in out, out
+
+
+def _value_options():
+    """(subcommand, option string) of every option that takes a value."""
+    import argparse
+
+    from linecontact.calc.cli import build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    out = []
+    for name, p in sub.choices.items():
+        for a in p._actions:
+            if a.option_strings and a.nargs is None and not isinstance(
+                    a, (argparse._StoreTrueAction, argparse._StoreFalseAction,
+                        argparse._HelpAction)):
+                out.append((name, a.option_strings[-1]))
+    return out
+
+
+VALUE_OPTIONS = _value_options()
+
+
+@pytest.mark.parametrize("command,option", VALUE_OPTIONS,
+                         ids=[f"{c}{o}" for c, o in VALUE_OPTIONS])
+def test_an_option_given_twice_is_refused_naming_both_values(command, option, capsys):
+    """argparse keeps the last of two occurrences silently (`--load 1kN ... --load 2kN`
+    computed 2 kN): every option that takes a value, of every subcommand, refuses a
+    second occurrence on one line naming the option and both values (status 2)."""
+    try:
+        status = main([command, option, "aa1", option, "bb2"])
+    except SystemExit as exc:
+        status = exc.code
+    err = capsys.readouterr().err
+    assert status == 2
+    assert f"{option} is given twice ('aa1' and 'bb2')" in err and err.count("\n") == 1, err
+
+
+# ---- an audit over the options and CSV columns (the issue's 138 inputs, as a class) ----
+
+#: Values per kind of input: valid ones, units of another quantity or case, signs,
+#: zero, inf, NaN, overflow, subnormal, words, sweeps.
+_FUZZ_VALUES = {
+    "length": ["5mm", "20mm", "0.2in", "1e-3", "-5mm", "0", "inf", "nan", "5MM", "5 kg",
+               "abc", "", "1e400", "1e-320", "5mm:1mm:3"],
+    "pressure": ["210GPa", "3GPa", "1e9", "-1GPa", "0", "inf", "nan", "210", "1kN"],
+    "dimensionless": ["0.3", "0.5", "0.6", "-0.1", "0", "nan", "1", "0.2:0.4:3"],
+    "force": ["1kN", "100N", "0", "-1kN", "nan", "inf", "1e9", "1mN", "5mm", "1kN:2kN:3"],
+    "angle": ["0", "1mrad", "0.5", "free", "-1mrad", "nan", "5deg"],
+    "text": ["circular:Rc=0.5", "iso16281", "cone", "circular", "circular:Rc=-1", "yes",
+             "von_mises", "all", ""],
+    "time": ["10s", "0", "-1s", "1h", "nan", "1:10:3"],
+    "path": ["/nonexistent/x.csv", ""],
+    "surface_energy": ["0.05", "-1", "0", "nan"],
+}
+
+
+def _audit(status, out, err, csv_out, inputs=()):
+    """The audit's rules: a status of 0 or 2; stderr holds only the calculator's own
+    one-line messages; no result cell says nan or inf (the input cells are written back
+    as they were); a computed row without a force or depth has a note, a flag or an
+    error saying why."""
+    assert status in (0, 2), (status, err)
+    for line in err.splitlines():
+        assert line.startswith("linecontact calc:"), err
+    if not csv_out or not out:
+        assert "nan" not in out.lower().split(), out
+        return
+    for row in _rows(out):
+        cells = {k: (v or "").strip() for k, v in row.items() if k and k not in inputs}
+        assert not any(v.lower() in ("nan", "inf", "-inf") for v in cells.values()), row
+        if cells.get("error"):
+            continue
+        has_value = any(v for k, v in cells.items()
+                        if k.startswith(("depth_", "force_")) and not k.startswith(
+                            ("depth_inner", "depth_outer", "depth_long")))
+        said = any(v for k, v in cells.items() if k.startswith(("note", "flags")))
+        assert has_value or said, row
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.data())
+def test_audit_of_random_options(data):
+    """Random options (1-3 of every calculator input, with the values above) on a valid
+    steel case, with --json, --si, --model: never a traceback, a status other than 0 or
+    2, a stray stderr line or a nan printed."""
+    from linecontact.calc.cases import PARAMETERS
+
+    argv = ["--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson",
+            "0.3"]
+    argv += data.draw(st.sampled_from([["--load", "1kN"], ["--depth", "2um"]]))
+    given_ = {"radius", "length", "modulus", "poisson", "load", "depth"}
+    extra = data.draw(st.lists(st.sampled_from([p for p in PARAMETERS
+                                                if p.name not in given_]),
+                               min_size=1, max_size=3, unique_by=lambda p: p.name))
+    for p in extra:
+        argv += [option_name_of(p.name), data.draw(st.sampled_from(_FUZZ_VALUES[p.kind]))]
+    argv += data.draw(st.sampled_from([[], ["--si"], ["--model", "all"],
+                                       ["--model", "johnson,universal"]]))
+    status, out, err = _calc(argv)
+    _audit(status, out, err, csv_out=False)
+
+
+def option_name_of(name):
+    return "--" + name.replace("_", "-")
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.data())
+def test_audit_of_random_csv_columns(tmp_path_factory, data):
+    """Random CSV batches (a steel case's columns plus 1-3 other input columns, 1-4 rows
+    of random values): the same rules, and every row of the output either computed,
+    said (note, flags) or refused in its error cell."""
+    from linecontact.calc.cases import PARAMETERS
+
+    byname = {p.name: p for p in PARAMETERS}
+    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
+            "load": "1kN", "depth": "2um"}
+    cols = ["radius", "length", "modulus", "poisson",
+            data.draw(st.sampled_from(["load", "depth"]))]
+    cols += [p.name for p in data.draw(st.lists(
+        st.sampled_from([p for p in PARAMETERS if p.name not in base]),
+        min_size=1, max_size=3, unique_by=lambda p: p.name))]
+    rows = [[data.draw(st.sampled_from([base[c]] * 3 + _FUZZ_VALUES[byname[c].kind][:4]))
+             if c in base else data.draw(st.sampled_from(_FUZZ_VALUES[byname[c].kind]))
+             for c in cols] for _ in range(data.draw(st.integers(1, 4)))]
+    path = tmp_path_factory.mktemp("audit") / "cases.csv"
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(cols)
+        w.writerows(rows)
+    status, out, err = _calc([str(path), *data.draw(st.sampled_from(
+        [[], ["--si"], ["--model", "johnson,universal"]]))])
+    _audit(status, out, err, csv_out=True, inputs=set(cols))
+
+
+@pytest.mark.parametrize("spec,says", [
+    ("johnson:c=0.7:c=0.8", "option 'c' is given twice"),
+    ("li-popov:extrapolate=yes:extrapolate=no", "option 'extrapolate' is given twice"),
+    ("johnsen", "did you mean 'johnson'?"),
+    ("johnson:cc=0.7", "did you mean 'c'?"),
+    ("johnson:C=0.7", "did you mean 'c'?"),
+])
+def test_a_model_option_twice_or_misspelt_is_refused(spec, says):
+    """--model KEY:OPT=V:OPT=W kept the last value silently (as argparse does for an
+    option given twice): refused; a misspelt model or option names the close match."""
+    status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+                              "--load", "1kN", "--model", spec])
+    assert status == 2 and says in err and err.count("\n") == 1, err

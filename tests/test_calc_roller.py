@@ -58,9 +58,9 @@ def test_straight_law_with_a_profile_is_refused_as_the_api_refuses_it(capsys):
 
 
 def test_json_carries_q_of_x(capsys):
-    """--json gives each profiled-roller row its line load q(x) on the slices: it
-    integrates to the force (sum q w = F, exact for the slice model up to the force
-    tolerance 1e-10), with the tilt in radians and the stiffness matrix."""
+    """--json gives each profiled-roller row its line load q(x) on the slices and the
+    slice widths: it integrates to the force (sum q w = F, exact for the slice model up
+    to the force tolerance 1e-10), with the tilt in radians and the stiffness matrix."""
     doc = _json(capsys, *ROLLER, "--load", "1kN", "--profile", "iso16281", "--tilt",
                 "0.5mrad")
     blocks = doc["profiled_roller"]
@@ -69,8 +69,8 @@ def test_json_carries_q_of_x(capsys):
     row = blocks[0]["rows"][0]
     x, q = row["x"], row["q"]
     assert len(x) == len(q) == 100
-    w = x[1] - x[0]
-    assert sum(q) * w == pytest.approx(1000.0, rel=1e-9)
+    w = row["width"]
+    assert sum(qk * wk for qk, wk in zip(q, w)) == pytest.approx(1000.0, rel=1e-9)
     assert row["tilt"] == pytest.approx(5e-4, rel=1e-12)
     assert row["force"] == pytest.approx(1000.0, rel=1e-9)
     assert len(row["stiffness_matrix"]) == 2 and row["moment"] > 0

@@ -361,3 +361,25 @@ def test_no_tilt_is_aligned_in_every_roller_entry_point():
         assert abs(s.moment) <= 1e-9 * s.force * 10e-3 and s.tilt < 0
     with pytest.raises(UnknownNameError, match="aligned"):
         r.at_force(800.0, None)
+
+
+def test_creep_returns_the_history_where_only_the_long_term_depth_is_out_of_range():
+    """A soft long-term modulus (E_inf = 1e-3 E_0): d(t) over 100 s stays within the
+    universal curve's range while d(inf) does not. The history is returned (equal to
+    viscoelastic.creep_depth, the same integral), long_term_depth is None and its
+    reason names the force and the range; a later time whose d(t) leaves the range is
+    refused naming that time."""
+    from linecontact.validity import OutOfRangeError
+    from linecontact.viscoelastic import StandardLinearSolid, creep_depth
+
+    c = Contact(Roller(5e-3, 10e-3), material1=Elastic(math.inf),
+                material2=Viscoelastic(StandardLinearSolid(3e9, 3e6, 10.0), 0.0))
+    t = np.array([0.0, 1.0, 10.0, 30.0])
+    r = c.creep(t, force=1e3)
+    want = creep_depth(c.law(), c.relaxation, t, np.full(t.shape, 1e3))
+    assert np.allclose(r.depth, want, rtol=1e-12, atol=0)
+    assert r.long_term_depth is None
+    params, reason = r.reasons["long_term_depth"]
+    assert params == {"force": 1e3} and "outside" in reason and "\n" not in reason
+    with pytest.raises(OutOfRangeError, match=r"at t = \d"):
+        c.creep(np.array([0.0, 30.0, 1e3, 1e4]), force=1e3)

@@ -87,8 +87,8 @@ def test_frames_refused_as_a_whole():
         calc_frame(pd.DataFrame({"x": [1.0]}))
     with pytest.raises(ValueError, match="no rows"):
         calc_frame(pd.DataFrame({"radius": []}))
-    with pytest.raises(ValueError, match="option"):
-        calc_frame(pd.DataFrame({"radius": ["5mm"]}), radios="5mm")
+    with pytest.raises(ValueError, match="'radios'.*did you mean 'radius'"):
+        calc_frame(pd.DataFrame({"radius": ["5mm"]}), radios="5mm")  # an unknown keyword
     with pytest.raises(TypeError, match="DataFrame"):
         calc_frame([{"radius": "5mm"}])
     with pytest.raises(ValueError, match="estar"):             # a bad option value

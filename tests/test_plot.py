@@ -84,8 +84,8 @@ def test_line_load_is_q_and_balances_the_force():
     line = plot.line_load(r).axes[0].lines[0]
     np.testing.assert_array_equal(line.get_xdata(), sol.x * 1e3)
     np.testing.assert_array_equal(line.get_ydata(), sol.q * 1e-3)
-    w = sol.x[1] - sol.x[0]                              # equal slices
-    assert np.sum(sol.q) * w == pytest.approx(2e3, rel=1e-9), "sum q w = F"
+    w = sol.width                                        # graded slices
+    assert np.sum(sol.q * w) == pytest.approx(2e3, rel=1e-9), "sum q w = F"
 
 
 def test_pressure_map_slices_integrate_to_q():

@@ -27,7 +27,11 @@ Writing: no user data is ever lost
     If a result column's name is already a column of the file (a rerun on its own
     output, or a user column called ``model`` or ``note``), the user's column is kept
     untouched and ALL result columns get the prefix ``result_`` (``result2_``, ... if
-    that collides too), so the result columns stay one consistent set.
+    that collides too), so the result columns stay one consistent set. A rerun on an
+    output (a file with the ``error`` column) recognises its earlier result columns
+    (named as the calculator names them, with or without a ``result_`` prefix): they
+    are never read as inputs, are written back as they were, and one line on stderr
+    says so and names the prefix of this run's results.
     A row that cannot be computed keeps its place and says why in ``error`` (its input
     problem in one line, or an unexpected exception of a model); a row outside a
     model's range says so in ``note``; all other rows are computed and written.
@@ -78,12 +82,14 @@ def _unread_lookalikes(path, header, names, known):
     # result columns, named like inputs with units (force_kN): those are not inputs
     rerun = any(re.sub(r"^result[0-9]*_", "", h) == "error" for h in names)
     results = {_col_name(f, si).lower() for f in all_fields()
-               for si in (False, True)} if rerun else set()
+               for si in (False, True)} | set(_TEXT_RESULTS) if rerun else set()
+    earlier = []
     for j, h in enumerate(names):
         if h in BY_NAME or not h:
             continue
         plain = re.sub(r"^result[0-9]*_", "", h)
         if any(plain == r or plain.startswith(r + "_") for r in results):
+            earlier.append(header[j])
             continue  # a result column of an earlier run (a rerun on its own output)
         base = re.split(r"\s*[\[(]|_(?=[a-z]+$)|\s+in\s+|\s+", h.strip())[0]
         if base in BY_NAME and base not in known:
@@ -96,6 +102,11 @@ def _unread_lookalikes(path, header, names, known):
                 f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
                 f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
                 "under 'radius'; rename the column if it is your own)")
+    return earlier
+
+
+#: The text columns of a result set (beside the fields' columns): a rerun's own.
+_TEXT_RESULTS = ("model", "flags", "note", "error")
 
 
 def _refuse_conflicts(cases, cells, conflicts, errors):
@@ -273,7 +284,7 @@ def run_batch(args, argv, specs, options):
             if h in known:
                 raise BatchError(f"{str(args.csv)!r}: column {header[j]!r} appears twice")
             known[h] = j
-    _unread_lookalikes(args.csv, header, names, known)
+    earlier = _unread_lookalikes(args.csv, header, names, known)
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
@@ -353,6 +364,13 @@ def run_batch(args, argv, specs, options):
     multi = len(results.sets) > 1
     out_cols, getters = _result_layout(results, cases, si, multi)
     out_names = result_columns(out_cols, header)
+    if earlier:  # a rerun on an output: say once what its result columns are
+        prefix = out_names[-1][:-len(out_cols[-1])]
+        shown = ", ".join(earlier[:3]) + (", ..." if len(earlier) > 3 else "")
+        print(f"{render.PROG} calc: note: {len(earlier)} columns of {str(args.csv)!r} "
+              f"are results of an earlier run ({shown}): not read as inputs, written "
+              f"back as they were; this run's results follow"
+              + (f" as the {prefix}* columns" if prefix else ""), file=sys.stderr)
     if args.json:
         text = _json(argv, results, header, body, out_names, getters, width)
     else:

@@ -85,8 +85,26 @@ __all__ = ["main"]
 PROG = "linecontact"
 
 
+class _Once(argparse.Action):
+    """An option that takes a value, given once: a second occurrence is refused (argparse
+    would silently keep the last one, so `--load 1kN ... --load 2kN` computed 2 kN)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        old = getattr(namespace, self.dest, None)
+        if option_string is not None and old is not None and old is not self.default:
+            parser.error(f"{option_string} is given twice ({old!r} and {values!r}); give "
+                         "it once (several values: a sweep START:STOP:N or a CSV batch)")
+        setattr(namespace, self.dest, values)
+
+
 class _Parser(argparse.ArgumentParser):
-    """ArgumentParser whose usage errors are one line on stderr and exit status 2."""
+    """ArgumentParser whose usage errors are one line on stderr and exit status 2, and
+    whose options that take a value may be given once (:class:`_Once`)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.register("action", None, _Once)     # add_argument without an action
+        self.register("action", "store", _Once)
 
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")

@@ -69,9 +69,9 @@ P0_NOTE = ("p0: Hertz peak pressure of the plane-strain strip, p0 = sqrt(F E*/(p
 class Refused:
     """Stands in for a model that refused the cylinder when it was built."""
 
-    def __init__(self, text, exc):
-        self.key = text
-        self.label = text
+    def __init__(self, text, exc, key=None):
+        self.key = key or text  # the registry key (the JSON entry's "key"); the text
+        self.label = text       # as typed is its label
         self.provenance = None
         self.exc = exc
 
@@ -111,9 +111,13 @@ def parse_model_option(spec):
         if key not in models.MODELS:
             from .._units import QUANTITY
 
+            import difflib
+
+            close = difflib.get_close_matches(key, models.available_models(), n=1)
             raise InputError("--model", spec if QUANTITY.match(text) else text, valid,
                              "a decimal comma in an option? (write c=1.5, not c=1,5)"
-                             if QUANTITY.match(text) else "unknown model")
+                             if QUANTITY.match(text) else "unknown model" + (
+                                 f"; did you mean {close[0]!r}?" if close else ""))
         defaults = _option_defaults(models.MODELS[key])
         options = {}
         for opt in opts:
@@ -122,10 +126,18 @@ def parse_model_option(spec):
             if not eq or not name:
                 raise InputError("--model", text, valid, f"option {opt!r} is not OPTION=VALUE")
             if name not in defaults:
+                import difflib
+
+                close = [n for n in defaults if n.lower() == name.lower()] or \
+                    difflib.get_close_matches(name, list(defaults), n=1)
                 raise InputError(
                     "--model", text,
                     f"options of {key}: {', '.join(defaults) or 'none'}",
-                    f"unknown option {name!r}")
+                    f"unknown option {name!r}"
+                    + (f"; did you mean {close[0]!r}?" if close else ""))
+            if name in options:  # the last would silently win
+                raise InputError("--model", text, f"each option of {key} once",
+                                 f"option {name!r} is given twice")
             options[name] = _option_value(f"--model {key}:{name}", value.strip(),
                                           defaults[name],
                                           _option_kind(models.MODELS[key], name))
@@ -214,7 +226,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
         try:
             chosen.append(models.get_model(key, R, L, E, **options))
         except OutOfRangeError as exc:  # refused for this cylinder: a row with a note
-            chosen.append(Refused(text, exc))
+            chosen.append(Refused(text, exc, key))
         except (TypeError, UnknownNameError) as exc:  # an option the model does not take
             raise InputError(
                 "--model", text, "options the model takes (see its docstring)", str(exc)
@@ -706,7 +718,7 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
         try:
             c = _build_contact(parts, key, options)
         except (CombinationError, OutOfRangeError) as exc:
-            sets.append((Refused(text, exc), None))
+            sets.append((Refused(text, exc, key), None))
             continue
         sets.append((c, text))
     refs = None
@@ -756,7 +768,7 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         try:
             obj.check_applicable()  # refused for the whole cylinder: one message
         except OutOfRangeError as exc:
-            obj = Refused(obj.label, exc)
+            obj = Refused(obj.label, exc, obj.key)
     refused = isinstance(obj, Refused)
     if refused:
         model, label = None, obj.label
@@ -846,7 +858,9 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
         first = item[0]  # the model as built (its provenance even where it refused)
         if not isinstance(first, Refused) and item[1] is not None:
             first = _Entry(first, label)  # a composed contact: its model's entry
-        if not isinstance(first, Refused):
+        if isinstance(first, Refused):
+            s.setdefault("key", first.key)  # a refused model: its registry key
+        else:
             mid = model_id(first)
             if mid not in results.models:
                 results.models[mid] = first

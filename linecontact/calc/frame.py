@@ -102,8 +102,9 @@ def calc_frame(cases, *, model=None, **options):
     known = {p.name for p in PARAMETERS}
     unknown = sorted(set(options) - known)
     if unknown:
-        from ..validity import UnknownNameError
-        raise UnknownNameError("option", unknown[0], sorted(known))
+        from ..validity import UnknownKeywordError
+        raise UnknownKeywordError("calc_frame", unknown[0],
+                                  ["cases", "model", *sorted(known)])
     if len(cases) == 0:
         raise ValueError("cases: the DataFrame has no rows; expected one case per row")
     header = [str(c) for c in cases.columns]

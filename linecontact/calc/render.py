@@ -338,7 +338,8 @@ def _entries(model_docs, results):
         m = by_id.get(model_id(model) if model is not None else s["id"])
         if m is None:
             label = s["label"][0] or s["id"]
-            m = {"key": label, "label": label, "id": s["id"], "provenance": None}
+            m = {"key": s.get("key") or label, "label": label, "id": s["id"],
+                 "provenance": None}
         out.append(m)
     return out
 

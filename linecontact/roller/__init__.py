@@ -11,7 +11,9 @@ the race radius negative for an outer ring) and the profile drops of both bodies
 
 Method (coupled slices)
 -----------------------
-The roller is cut into n slices of width w = L/n centred at x_k. Slice k carries a line
+The roller is cut into n slices of widths w_k centred at x_k (spanning the rigid
+overlap interval, graded towards its ends where the pressure varies fastest:
+:class:`ProfiledRoller`'s ``grading``). Slice k carries a line
 load q_k spread across y as a Hertz (semi-elliptical) strip of half-width b_k,
 
 .. math:: p(x, y) = \frac{2 q_k}{\pi b_k}\sqrt{1 - y^2/b_k^2},
@@ -38,7 +40,7 @@ point-load approximation:
     \frac{\partial^2 u}{\partial y^2}(x_k, 0) = \sum_i \frac{q_i}{\pi E^* b_i^2}
     \left[\hat p(\tau^+_{ki}) - \hat p(\tau^-_{ki}) - 4\delta_{ki}\right],
 
-with :math:`\tau^\pm_{ki} = (x_k - x_i \pm w/2)/b_i` and :math:`\hat p` the y-average
+with :math:`\tau^\pm_{ki} = (x_k - x_i \pm w_i/2)/b_i` and :math:`\hat p` the y-average
 over the strip of the curvature of :math:`\int dx'/r` (module function
 :func:`strip_influence`). The term :math:`-4\delta_{ki}` is the 2D Hertz curvature of the
 strip's own (infinite) line contact, :math:`-4q/(\pi E^* b^2) = -1/R` in plane strain
@@ -53,9 +55,9 @@ in the approach for the crowns of the tests (measured with this code; 2D instead
 curvature of the cross-sections).
 
 The complementarity conditions (q_k >= 0, no interpenetration where q_k = 0) are solved
-by Newton's method on (q_k, q_k/b_k^2) with an active set; force and moment control
-wrap it in a Newton iteration on d and theta using the exact stiffness matrix
-(implicit differentiation of the converged equations).
+by Newton's method on (q_k, q_k/b_k^2) with an active set; with the force (and zero
+moment) imposed, d (and theta) join the same Newton iteration (a bordered system), and
+the exact stiffness matrix is the implicit derivative of the converged equations.
 
 Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md): circular crown
 against exact Hertz within 0.01 % in approach, p0, b and stiffness and 0.25 % in the
@@ -125,3 +127,8 @@ __all__ = [
     "ISO_MIN_SLICES",
     "TILT_RANGE",
 ]
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from ..validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

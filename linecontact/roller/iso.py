@@ -183,6 +183,7 @@ def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, 
     return RollerSolution(
         depth=float(d), tilt=float(th), force=F, moment=M, stiffness=float(K[0, 0]),
         tilt_stiffness=float(K[1, 1]), stiffness_matrix=K, x=x, q=q, half_width=b,
+        width=np.full(n, w),
         pressure=p, p_max=pm, x_at_p_max=xm, contact_start=start, contact_end=stop,
         contact_length=stop - start, edge_loaded=edge is not None, edge=edge,
         message=msg, method="ISO 16281 slicing", n_slices=n)

@@ -12,10 +12,50 @@ from ..profiles import TILT_RANGE
 from ..validity import Interval
 from .kernel import strip_values
 
-__all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE"]
+__all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE", "SLICE_GRADING"]
 
 #: Slice counts accepted by the coupled-slice model.
 N_SLICES = Interval("n_slices", 10, 4000)
+
+
+#: Grading of the slice widths accepted: 0 (uniform) <= grading < 1.
+SLICE_GRADING = Interval("grading", 0.0, 1.0, high_open=True)
+
+
+def slice_positions(n, grading):
+    """Centres and widths of n slices on [0, 1], graded towards both ends.
+
+    The boundaries are g(k/n), k = 0..n, with g(s) = s - beta sin(2 pi s)/(2 pi): the
+    end slices are (1 - beta) times the uniform width 1/n and the middle ones
+    (1 + beta) times (beta = 0: uniform). Returns the centres (midway between the
+    boundaries) and the widths, both as fractions of the interval.
+    """
+    s = np.arange(n + 1) / n
+    g = s - grading * np.sin(2 * np.pi * s) / (2 * np.pi)
+    g[0], g[-1] = 0.0, 1.0
+    return 0.5 * (g[1:] + g[:-1]), np.diff(g)
+
+
+_GEOMETRY = {}
+
+
+def _unit_geometry(n, grading):
+    """(near, far, ln(far/near)) distances between slice centres and source slice
+    edges on the unit interval (n x n; the diagonal: near = far = w/2, log 0), cached
+    per (n, grading)."""
+    key = (n, grading)
+    if key not in _GEOMETRY:
+        if len(_GEOMETRY) > 16:
+            _GEOMETRY.clear()
+        m, dg = slice_positions(n, grading)
+        t = np.abs(m[:, None] - m[None, :])
+        h = 0.5 * dg[None, :]
+        near, far = t - h, t + h
+        np.fill_diagonal(near, 0.5 * dg)
+        lr = np.log(far / near)
+        np.fill_diagonal(lr, 0.0)
+        _GEOMETRY[key] = (near, far, lr)
+    return _GEOMETRY[key]
 
 
 class ConvergenceError(RuntimeError):
@@ -28,39 +68,59 @@ class SliceEquations:
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0):
         self.R = radius
         self.E = estar
         self.n = n
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
-        self.w = (x_hi - x_lo) / n
-        self.x = x_lo + self.w * (np.arange(n) + 0.5)
+        # slice boundaries lo + (hi - lo) g(k/n), centres midway (slice_positions)
+        self.m, self.dg = slice_positions(n, grading)
+        span = x_hi - x_lo
+        self.w = span * self.dg                  # slice widths
+        self.x = x_lo + span * self.m
         self.P = drop(self.x)
-        j = np.arange(n)
-        self.logj = np.log(2 * j + 1.0)
         self.iterations = 0
+        # kernel geometry: for target k and source i the distances from x_k to the source
+        # slice's near and far edges, as fractions of the interval (their ratio fixes
+        # the log part of the displacement: scale-free, so the same for every grid of
+        # this n and grading; cached)
+        self._tnear, self._tfar, self._logratio = _unit_geometry(n, grading)
+        self.span = span
 
     def kernels(self, S, b, targets=None):
-        """A, D and their b-derivative parts for targets T (default S) and sources S."""
+        """A, D and their b-derivative parts for targets T (default S) and sources S.
+
+        For source i (half-width b_i, width w_i) and target k, with tau = t/b_i at the
+        near and far edges of slice i seen from x_k: A = ln(far/near) + r(far) -
+        r(near), D = p(far) - p(near), EA and ED the same differences of tau a' and
+        tau p'; on the diagonal (the target inside its own slice, tau = +-w_i/2b_i)
+        A = 2 ln(w_i/b_i) + 2 r, D = 2 p - 4, EA = 2 tau a', ED = 2 tau p'
+        (:func:`linecontact.roller.kernel.strip_influence` for r, p and their
+        derivatives).
+        """
         T = S if targets is None else targets
-        span = int(max(T.max(), S.max()) - min(T.min(), S.min()))
-        j = np.arange(span + 1)[:, None]
-        shape = (span + 1, len(S))
-        r, ta, p, tp = (v.reshape(shape) for v in
-                        strip_values(((j + 0.5) * self.w / b[None, :]).ravel()))
-        # a(tau_j) = ln(2j + 1) + ln(w/b) + r(tau_j); columns of differences G[j] - G[j-1]
-        # (j >= 1) and the self term 2 G[0]
-        G = np.empty((4, span + 1, len(S)))
-        rho = np.log(self.w / b)[None, :] + r
-        for g, v in ((G[0], rho), (G[1], p), (G[2], ta), (G[3], tp)):
-            g[1:] = v[1:] - v[:-1]
-            g[0] = 2 * v[0]
-        G[0, 1:] += (self.logj[1:span + 1] - self.logj[:span])[:, None]
-        G[1, 0] -= 4.0
-        m = np.abs(T[:, None] - S[None, :])
-        cols = np.arange(len(S))[None, :]
-        A, D, EA, ED = G[:, m, cols]
+        if len(T) == self.n:                   # every slice a target (T = 0..n-1)
+            tn, tf, lr = self._tnear[:, S], self._tfar[:, S], self._logratio[:, S]
+        else:
+            ix = np.ix_(T, S)
+            tn, tf, lr = self._tnear[ix], self._tfar[ix], self._logratio[ix]
+        nt, ns = tn.shape
+        ib = self.span / b
+        vals = strip_values(np.concatenate([(tf * ib).ravel(), (tn * ib).ravel()]))
+        r, p, ta, tp = (v.reshape(2, nt, ns) for v in
+                        (vals[0], vals[2], vals[1], vals[3]))
+        A = lr + (r[0] - r[1])
+        D = p[0] - p[1]
+        EA = ta[0] - ta[1]
+        ED = tp[0] - tp[1]
+        diag = T[:, None] == S[None, :]
+        if np.any(diag):
+            kk, ii = np.nonzero(diag)
+            A[kk, ii] = 2 * (np.log(self.w[S[ii]] / b[ii]) + r[1, kk, ii])
+            D[kk, ii] = 2 * p[1, kk, ii] - 4.0
+            EA[kk, ii] = 2 * ta[1, kk, ii]
+            ED[kk, ii] = 2 * tp[1, kk, ii]
         return A, D, EA, ED
 
     def jacobian(self, S, q, c):
@@ -178,15 +238,15 @@ class SliceEquations:
         """
         _, _, J = self.jacobian(S, q, c)
         A, D, EA, ED = self._last_kernels
-        ns, n, w = len(S), self.n, self.w
-        qs, cs, xs = q[S], c[S], self.x[S]
-        k = S + 0.5
+        ns = len(S)
+        qs, cs, xs, ws = q[S], c[S], self.x[S], self.w[S]
+        m = self.m[S]
         # columns: d, theta, lo, hi ; rows: -dR/dp
         rhs = np.zeros((2 * ns, 4))
         rhs[:ns, 0] = 1.0
         rhs[:ns, 1] = xs
-        dlnw = np.array([-1.0, 1.0]) / (n * w)                 # d ln w / d(lo, hi)
-        dx = np.stack([1.0 - k / n, k / n], axis=1)            # d x_k / d(lo, hi)
+        dlnw = np.array([-1.0, 1.0]) / (self.hi - self.lo)    # d ln w_k / d(lo, hi)
+        dx = np.stack([1.0 - m, m], axis=1)                    # d x_k / d(lo, hi)
         ea_q, ed_c = EA @ qs, ED @ cs
         for g in range(2):
             rhs[:ns, 2 + g] = -(ea_q * dlnw[g] - (th - slope[S]) * dx[:, g])
@@ -196,10 +256,201 @@ class SliceEquations:
         rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, self.R)])
         z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], rhs * rowsc[:, None])
         dq = z[:ns] * qsc                                     # d qt / d(d, th, lo, hi)
-        dw = np.array([0.0, 0.0, -1.0 / n, 1.0 / n])
+        dg = self.dg[S]
+        dw = np.array([0.0, 0.0, -1.0, 1.0])                  # times dg_k: d w_k
         dxk = np.zeros((ns, 4))
         dxk[:, 2:] = dx
-        dF = w * dq.sum(0) + dw * qs.sum()
-        dM = w * (xs[:, None] * dq).sum(0) + dw * (qs * xs).sum() + w * (qs[:, None] * dxk).sum(0)
+        dF = ws @ dq + dw * (dg @ qs)
+        dM = (ws * xs) @ dq + dw * ((dg * qs) @ xs) + (ws * qs) @ dxk
         G = np.array([[1.0, 0.0], [0.0, 1.0], self.dlo, self.dhi])   # d(d, th, lo, hi)/d(d, th)
         return math.pi * self.E * np.array([dF @ G, dM @ G])
+
+    def slope_at_slices(self):
+        """dP/dx at the slice centres (the owner sets ``slope``, a function of x)."""
+        return self.slope(self.x)
+
+    def start(self, d, theta, warm=None):
+        """A first (S, q, c) at depth d and tilt theta: the warm start mapped onto this
+        grid, else the linear problem with frozen strip widths, twice (the second time
+        with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)."""
+        n, R = self.n, self.R
+        over = d + theta * self.x - self.P
+        S = np.flatnonzero(over > 0)
+        if S.size == 0:
+            raise ConvergenceError(
+                f"no slice is in contact at d = {d:.6g} m: the contact is narrower than "
+                "one slice (too small a load for the slicing)")
+        q = np.zeros(n)
+        c = np.full(n, 1.0 / (4 * R))
+        if warm is not None and np.any(warm[0][S] > 0):
+            q[S] = warm[0][S]
+            c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
+            return S[q[S] > 0], q, c
+        b0 = np.sqrt(R * over[S])
+        for sweep in range(2):
+            for _ in range(n):
+                qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
+                if np.all(qs > 0):
+                    break
+                S, b0 = S[qs > 0], b0[qs > 0]
+                if S.size == 0:
+                    raise ConvergenceError(f"no slice is in contact at d = {d:.6g} m")
+            b0 = np.sqrt(4 * R * qs)
+        q[S] = qs
+        return S, q, c
+
+    def linearised(self, S, q, c, theta, slope, targets):
+        """Residual, Jacobian and grid terms of the slice equations at (q, c) on S.
+
+        Returns the residual res (2 ns), the Jacobian J (2 ns x 2 ns), the columns
+        -dR/d(d, theta) at fixed (q, c) with the motion of the grid (2 ns x 2), the
+        gaps over the `targets` (overlap minus displacement, for the active set) and
+        d(w.q, (w x).q)/d(d, theta) at fixed q (2 x 2): what one Newton step on the
+        slice loads together with d and theta needs, and at convergence the implicit
+        derivative (:meth:`sensitivities`).
+        """
+        R = self.R
+        qs, cs = q[S], c[S]
+        b = np.sqrt(qs / cs)
+        A, D, EA, ED = self.kernels(S, b, targets=targets)
+        pos = np.searchsorted(targets, S)          # rows of S among the targets
+        gap = self._over[targets] - A @ qs
+        A, D, EA, ED = A[pos], D[pos], EA[pos], ED[pos]
+        ns = len(S)
+        res = np.concatenate([-gap[pos], D @ cs + 1.0 / R])
+        J = np.empty((2 * ns, 2 * ns))
+        J[:ns, :ns] = A - 0.5 * EA
+        J[:ns, ns:] = EA * (0.5 * b * b)[None, :]
+        J[ns:, :ns] = -ED * (0.5 / (b * b))[None, :]
+        J[ns:, ns:] = D + 0.5 * ED
+        xs, ws, m, dg = self.x[S], self.w[S], self.m[S], self.dg[S]
+        dlnw = np.array([-1.0, 1.0]) / (self.hi - self.lo)    # d ln w_k / d(lo, hi)
+        dx = np.stack([1.0 - m, m], axis=1)                    # d x_k / d(lo, hi)
+        G = np.array([self.dlo, self.dhi])                     # d(lo, hi)/d(d, theta)
+        ea_q, ed_c = EA @ qs, ED @ cs
+        rg = np.empty((2 * ns, 2))                             # -dR/d(lo, hi)
+        rg[:ns] = -(ea_q[:, None] * dlnw[None, :] - (theta - slope[S])[:, None] * dx)
+        rg[ns:] = -ed_c[:, None] * dlnw[None, :]
+        rhs = rg @ G
+        rhs[:ns, 0] += 1.0
+        rhs[:ns, 1] += xs
+        # d(w.q, (w x).q)/d(lo, hi) at fixed q, then by the chain rule
+        dwq = np.array([-1.0, 1.0]) * (dg @ qs)
+        dwxq = np.array([-1.0, 1.0]) * ((dg * qs) @ xs) + (ws * qs) @ dx
+        grid = np.array([dwq, dwxq]) @ G
+        return res, J, rhs, gap, grid
+
+    def bordered(self, regrid, S, q, c, d, theta, force=None, zero_moment=False,
+                 tol=1e-11, max_steps=60):
+        """Newton's method on (q, c) together with d (given force: w.q = F/(pi E*))
+        and/or theta (zero moment: (w x).q = 0), the grid rebuilt at every step.
+
+        One dense solve (three right-hand sides) per step replaces the nested
+        iteration (an outer Newton on d or theta around a converged inner solve).
+        `regrid(d, theta)` returns the SliceEquations of that depth and tilt (the slice
+        index k keeps its place in the overlap interval). Damped to keep q, c > 0;
+        slices driven to q <= 0 leave; unloaded slices that would interpenetrate
+        join. Returns (equations, S, q, c, d, theta, K) with the stiffness matrix K of
+        the converged state, or raises ConvergenceError.
+        """
+        n, R, piE = self.n, self.R, math.pi * self.E
+        s = self
+        blocked = np.zeros(n, int)
+        everyone = np.arange(n)
+        for _ in range(max_steps):
+            s.iterations += 1
+            over = d + theta * s.x - s.P
+            s._over = over
+            slope = s.slope_at_slices()
+            res, J, rhs, gap, grid = s.linearised(S, q, c, theta, slope, everyone)
+            ns = len(S)
+            qs, cs = q[S], c[S]
+            qsc = np.max(qs)
+            colsc = np.concatenate([np.full(ns, qsc), np.full(ns, 1.0 / R)])
+            rowsc = np.concatenate([np.full(ns, 1.0 / qsc), np.full(ns, R)])
+            B = np.column_stack([-res, rhs]) * rowsc[:, None]
+            z = np.linalg.solve(J * rowsc[:, None] * colsc[None, :], B) * colsc[:, None]
+            ws, xs = s.w[S], s.x[S]
+            wq, wxq = ws @ qs, (ws * xs) @ qs
+            # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
+            K = np.array([ws @ z[:ns, 1:], (ws * xs) @ z[:ns, 1:]]) + grid
+            lin = np.array([ws @ z[:ns, 0], (ws * xs) @ z[:ns, 0]])
+            step = np.zeros(2)
+            want = np.array([(force / piE - wq - lin[0]) if force is not None else 0.0,
+                             (-wxq - lin[1]) if zero_moment else 0.0])
+            if force is not None and zero_moment:
+                step = np.linalg.solve(K, want)
+            elif force is not None:
+                step[0] = want[0] / K[0, 0]
+            elif zero_moment:
+                step[1] = want[1] / K[1, 1]
+            dz = z[:, 0] + z[:, 1:] @ step
+            dq, dc = dz[:ns], dz[ns:]
+            # a slice at an end of the loaded set that the full step drives to q < 0 is
+            # outside the contact: it leaves at once (it would only block the step)
+            out = qs + dq < 0
+            if np.any(out) and ns > 2:
+                edge = np.zeros(ns, bool)
+                edge[[0, -1]] = True
+                gaps = np.flatnonzero(np.diff(S) > 1)
+                edge[gaps] = edge[gaps + 1] = True
+                out &= edge
+                if np.any(out) and not np.all(out):
+                    q[S[out]] = 0.0
+                    S = S[~out]
+                    continue
+            alpha = 1.0
+            hit_q = qs + dq <= 0.05 * qs
+            if np.any(hit_q):
+                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
+            hit_c = cs + dc <= 0.2 * cs
+            if np.any(hit_c):
+                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            # keep the rigid overlap positive: no step lowers it by more than half its
+            # largest value (d stays above first contact)
+            dmax = float(np.max(over))
+            drop = float(np.max(-(step[0] + step[1] * s.x[S])))
+            if drop > 0.5 * dmax:
+                alpha = min(alpha, 0.5 * dmax / drop)
+            q[S] = qs + alpha * dq
+            c[S] = cs + alpha * dc
+            d = d + alpha * step[0]
+            theta = theta + alpha * step[1]
+            if not abs(theta) < TILT_RANGE.high:
+                raise ConvergenceError("the tilt left the admissible range")
+            small = (alpha == 1.0 and np.max(np.abs(dq)) <= tol * qsc
+                     and np.max(np.abs(dc)) * R <= tol
+                     and abs(step[0]) <= tol * dmax
+                     and abs(step[1]) * (s.hi - s.lo) <= tol * dmax)
+            if alpha == 1.0:
+                blocked[S] = 0
+                # the active set is checked once the step is small (not only at
+                # convergence: a slice that joins late costs damped steps)
+                if np.max(np.abs(dq)) <= 0.05 * qsc:
+                    rest = np.setdiff1d(everyone, S)
+                    add = rest[gap[rest] > tol * dmax] if len(rest) else rest
+                    if len(add) == 0 and small:
+                        F = piE * (s.w @ q)
+                        M = piE * ((s.w * s.x) @ q)
+                        return s, S, q, c, d, theta, F, M, piE * K
+                    if len(add):
+                        q[add] = gap[add] / 10.0
+                        c[add] = 1.0 / (4 * R)
+                        S = np.union1d(S, add)
+            else:
+                blocked[S[hit_q]] += 1
+                blocked[S[~hit_q]] = 0
+                leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
+                if np.any(leave):
+                    q[S[leave]] = 0.0
+                    blocked[S[leave]] = 0
+                    S = S[~leave]
+                    if len(S) == 0:
+                        raise ConvergenceError("every slice left the contact")
+            if force is not None or zero_moment:
+                it = s.iterations
+                s = regrid(d, theta)
+                s.iterations = it
+                # slices outside the new overlap interval's grid keep their index
+        raise ConvergenceError("Newton iteration on the slice loads (bordered) did not "
+                               f"converge in {max_steps} steps")

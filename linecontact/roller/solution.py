@@ -38,6 +38,9 @@ class RollerSolution:
         [[dF/dd, dF/dtheta], [dM/dd, dM/dtheta]] [N/m, N/rad; N, N m/rad].
     x : ndarray
         Slice centres [m].
+    width : ndarray
+        Slice widths [m] (graded towards the contact's ends for the coupled slices):
+        F = sum q w [m].
     q : ndarray
         Line load q(x_k), 0 outside the contact [N/m].
     half_width : ndarray
@@ -114,6 +117,7 @@ class RollerSolution:
     iterations: int = 0
     notes: tuple = field(default_factory=tuple)
     p_max_resolved: bool = True
+    width: np.ndarray = None
 
     def to_dict(self, arrays=True):
         """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
@@ -141,14 +145,17 @@ class RollerSolution:
                 d[k] = v
         d["units"] = {"depth": "m", "tilt": "rad", "force": "N", "moment": "N m",
                       "stiffness": "N/m", "tilt_stiffness": "N m/rad", "x": "m",
-                      "q": "N/m", "half_width": "m", "pressure": "Pa", "p_max": "Pa",
+                      "width": "m", "q": "N/m", "half_width": "m", "pressure": "Pa",
+                      "p_max": "Pa",
                       "x_at_p_max": "m", "contact_start": "m", "contact_end": "m",
                       "contact_length": "m"}
         return d
 
 
 def contact_extent(x, q, w, L, lo=None, hi=None):
-    """Ends of the contact from the loaded slices, q extrapolated to zero."""
+    """Ends of the contact from the loaded slices, q extrapolated to zero (w: the slice
+    widths, an array or one width for all)."""
+    w = np.broadcast_to(np.asarray(w, dtype=float), np.shape(x))
     on = np.flatnonzero(q > 0)
     i0, i1 = on[0], on[-1]
     n = len(x)
@@ -159,14 +166,14 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
         if not all(0 <= j < n and q[j] > 0 for j in idx):
             idx = idx[:2] if all(0 <= j < n and q[j] > 0 for j in idx[:2]) else idx[:1]
         if len(idx) == 1:
-            return x[i] + step * w / 2
+            return x[i] + step * w[i] / 2
         coef = np.polyfit(x[idx], q[idx], len(idx) - 1)
         roots = np.roots(coef)
         roots = roots[np.isreal(roots)].real
-        lo, hi = sorted((x[i], x[i] + step * w))
+        lo, hi = sorted((x[i], x[i] + step * w[i]))
         roots = roots[(roots >= lo) & (roots <= hi)]
         if len(roots) == 0:
-            return x[i] + step * w / 2
+            return x[i] + step * w[i] / 2
         return float(roots[np.argmin(np.abs(roots - x[i]))])
 
     lo = -L / 2 if lo is None else lo
@@ -178,13 +185,16 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
 
 
 def peak_pressure(x, p):
-    """Peak of p over the slices, refined by a parabola through p^2 (exact for Hertz)."""
+    """Peak of p over the slices, refined by a parabola through p^2 (exact for Hertz;
+    the slice centres x may be unevenly spaced)."""
     k = int(np.argmax(p))
     if 0 < k < len(x) - 1 and p[k - 1] > 0 and p[k + 1] > 0:
         y0, y1, y2 = p[k - 1] ** 2, p[k] ** 2, p[k + 1] ** 2
-        den = y0 - 2 * y1 + y2
-        if den < 0:
-            h = x[1] - x[0]
-            s = 0.5 * (y0 - y2) / den
-            return math.sqrt(y1 - 0.25 * (y0 - y2) * s), float(x[k] + s * h)
+        h0, h1 = x[k] - x[k - 1], x[k + 1] - x[k]
+        s0, s1 = (y1 - y0) / h0, (y2 - y1) / h1           # divided differences
+        curv = (s1 - s0) / (h0 + h1)                       # y = y1 + g u + curv u^2
+        if curv < 0:
+            g = s0 + curv * h0                             # slope at x[k]
+            u = -g / (2 * curv)
+            return math.sqrt(y1 - g * g / (4 * curv)), float(x[k] + u)
     return float(p[k]), float(x[k])

@@ -138,8 +138,33 @@ def columns(model, rows, normal, state):
             else sol.clearance
         if sol.notes:
             flags[j] = "; ".join([t for t in (flags[j],) if t] + list(sol.notes))
+        geometry = _geometry_flags(model.contact, sol, float(normal["force"][j]))
+        if geometry:
+            flags[j] = "; ".join(t for t in (flags[j], geometry) if t)
     out["flags"] = flags
     return out
+
+
+def _geometry_flags(contact, sol, force):
+    """The geometry flags of each of the two contacts, as a plain contact's row has
+    them (:func:`linecontact.calc.feature.flag_text`): d > 0.15 R of the contact's
+    effective radius, and b > L/2 with b the Hertz half-width of its strip (Li & Popov
+    2017, Eq. 1) at the roller's load."""
+    from ...classical import hertz_half_width
+    from ..feature import flag_text
+
+    L = contact.roller.length
+    estar = getattr(contact, "estar", None)
+    parts = []
+    for side in ("inner", "outer"):
+        R = float(getattr(sol, f"radius_{side}"))
+        try:
+            b = float(hertz_half_width(force, R, L, estar))
+        except (TypeError, ValueError):  # no E* (a viscoelastic body) or no force
+            b = np.nan
+        parts.append(flag_text(float(getattr(sol, f"depth_{side}")), b, R, L,
+                               where=f" ({side})"))
+    return "; ".join(t for t in parts if t)
 
 
 def blocks(state, results):

@@ -55,7 +55,8 @@ parameters = (
 NAMES = tuple(p.name for p in parameters)
 
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
-        "coupling along the axis; linecontact.roller), 100 slices; M: moment about the "
+        "coupling along the axis; linecontact.roller), 100 slices graded towards the "
+        "contact's ends; M: moment about the "
         "roller centre; p max: peak pressure (not printed where the contact reaches a "
         "roller end: singular there on a half-space, 'edge'); ISO 16281 slicing: "
         "uncoupled slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
@@ -222,6 +223,7 @@ def blocks(state, results):
         int(np.flatnonzero(state.rows)[0])]), fields={}, rows=[None] * len(json_rows),
         json_rows=json_rows, note=NOTE,
         units={c: ROW_FIELDS[c].si for c in ROW_FIELDS} | {"x": "m", "q": "N/m",
+                                                           "width": "m",
                                                            "tilt": "rad"})]
 
 
@@ -244,5 +246,7 @@ def _json_row(sol, note):
                p_max_resolved=bool(sol.p_max_resolved), message=sol.message,
                method=sol.method, n_slices=sol.n_slices,
                x=[float(x) for x in sol.x], q=[float(q) for q in sol.q],
+               width=(None if getattr(sol, "width", None) is None
+                      else [float(w) for w in sol.width]),
                notes=list(sol.notes), note=note)
     return row

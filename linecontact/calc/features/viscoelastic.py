@@ -181,23 +181,22 @@ def columns(model, rows, normal, state):
             except (CombinationError, OutOfRangeError) as exc:
                 notes.append(_creep_note("d(t)", "E*_0 J*(t)", str(exc)))
         try:
-            out["depth_long_term"][j] = contact.creep([0.0], force=float(F[j])).long_term_depth
+            held = contact.creep([0.0], force=float(F[j]))
         except (CombinationError, OutOfRangeError) as exc:
             notes.append(_creep_note("d(inf)", "E*_0/E*_inf", str(exc)))
+        else:
+            if held.long_term_depth is None:  # the library says why
+                notes.append(f"d(inf): {held.reasons['long_term_depth'][1]}")
+            else:
+                out["depth_long_term"][j] = held.long_term_depth
         flags[j] = "; ".join(notes)
     return out
 
 
 def _creep_only(contact, t, force):
-    """d(t) under a force held from 0: linecontact.viscoelastic.creep_depth with the
-    contact's law and effective relaxation, as Contact.creep computes it, without the
-    long-term depth that Contact.creep computes with it (and refuses where it alone is
-    beyond the model's range)."""
-    from ...viscoelastic import creep_depth
-
-    law = contact.law()
-    e = creep_depth(law, contact.relaxation, np.array([0.0, t]), np.array([force, force]))
-    return float(e[-1]) + getattr(law, "d0", 0.0)
+    """d(t) under a force held from 0 (Contact.creep, which returns the history even
+    where only the long-term depth is beyond the model's range)."""
+    return float(contact.creep([0.0, t], force=force).depth[-1])
 
 
 def _creep_note(column, factor, text):

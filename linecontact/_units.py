@@ -381,24 +381,30 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
 
     valid = _valid_text(kind, positive, bounds)
     n = len(cells)
-    numbers = [""] * n
-    units = [None] * n
     errors = [""] * n
-    match = QUANTITY.match
-    for i, cell in enumerate(cells):
-        m = match(cell)
-        if m is None:
-            errors[i] = str(InputError(parameter, cell, valid, _format_reason(str(cell))))
-            numbers[i] = "nan"
-        else:
-            numbers[i], units[i] = m.group("number"), m.group("unit")
+    matches = list(map(QUANTITY.match, cells))      # one C-level pass
+    if None in matches:
+        numbers = [""] * n
+        units = [None] * n
+        for i, (cell, m) in enumerate(zip(cells, matches)):
+            if m is None:
+                errors[i] = str(InputError(parameter, cell, valid,
+                                           _format_reason(str(cell))))
+                numbers[i] = "nan"
+            else:
+                numbers[i], units[i] = m.group("number"), m.group("unit")
+    else:
+        numbers = [m.group("number") for m in matches]
+        units = [m.group("unit") for m in matches]
     raw = np.array(numbers, dtype=float) if n else np.zeros(0)
     factors = np.ones(n)
-    for unit in set(units) - {None}:
+    distinct = set(units) - {None}
+    for unit in distinct:
         f = _unit_factor(unit, kind)
-        idx = [i for i, u in enumerate(units) if u == unit]
+        idx = ([i for i, u in enumerate(units) if u == unit] if len(distinct) > 1
+               or None in units else slice(None))
         if isinstance(f, str):
-            for i in idx:
+            for i in (range(n) if isinstance(idx, slice) else idx):
                 if not errors[i]:
                     errors[i] = str(InputError(parameter, cells[i], valid, f))
             factors[idx] = np.nan

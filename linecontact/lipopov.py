@@ -67,7 +67,7 @@ import os
 from dataclasses import dataclass, field
 
 import numpy as np
-from ._numerics import NotAKnotSpline, log1p_excess_root
+from ._numerics import NotAKnotSpline, blockwise, log1p_excess_root
 from .tables import available_tables, read_table, table_path
 from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
                        check_positive, document, out)
@@ -340,8 +340,8 @@ def _u_from_depth_ratio(D):
 # x~ = a/L), unchecked: their one home. The SI functions and the dimensionless_*
 # functions below check their inputs once and scale these.
 def _force_tilde(d, a, b):
-    """F~ = 2 alpha beta e^-u with (u + 1) e^-u = d~/beta."""
-    return 2 * a * b * np.exp(-_u_from_depth_ratio(d / b))
+    """F~ = 2 alpha beta e^-u with (u + 1) e^-u = d~/beta (the chain in blocks)."""
+    return 2 * a * b * blockwise(lambda D: np.exp(-_u_from_depth_ratio(D)), d / b)
 
 
 def _radius_tilde(d, a, b):

@@ -352,6 +352,47 @@ class ContactModel(abc.ABC):
         raise NotImplementedError(f"{self.label} has no MDR profile "
                                   f"({self.no_profile_reason})")
 
+    @classmethod
+    def evaluate_many(cls, radius, length, estar, *, force=None, depth=None):
+        """The contact state of many cylinders at once: one radius, length, E* and
+        force (or depth) per element, without a model object per cylinder.
+
+        A model whose law is a function of self-similar variables (docs/theory.md,
+        section 'Self-similarity') overrides this; the default returns None (not
+        available: build one model per cylinder).
+
+        Parameters
+        ----------
+        radius, length : ndarray
+            R, L per element, > 0 [m].
+        estar : ndarray
+            E* per element, > 0 [Pa].
+        force, depth : ndarray, optional
+            Exactly one: F [N] or d [m] per element.
+
+        Returns
+        -------
+        tuple or None
+            (dict as :meth:`evaluate` returns, ok): ok (bool array) marks the
+            elements inside the model's range, whose values equal those of
+            ``cls(R_i, L_i, E_i).evaluate(...)`` element by element; the others hold
+            NaN (build their model to get its message).
+
+        Notes
+        -----
+        Valid for the default model options only.
+
+        Examples
+        --------
+        >>> JohnsonModel.evaluate_many([5e-3], [1e-2], [1e11], force=[1e3]) is None
+        True
+
+        References
+        ----------
+        .. [1] Li & Popov (2017) [li-popov-2017], Eq. 8 (the self-similar variables).
+        """
+        return None
+
     def evaluate(self, *, force=None, depth=None):
         """The contact state at given forces OR depths, in one vectorised call.
 
@@ -967,10 +1008,19 @@ class UniversalModel(ContactModel):
             return DEPTH_OVER_RADIUS.high * self.radius
         return self.curve.d_max * self._dscale
 
+    def _psi_end(self):
+        """Psi at :attr:`depth_limit`, remembered for the current geometry (every d(F)
+        call needs it twice; a spline evaluation with its range check each time)."""
+        key = (self.radius, self.length, self.extrapolate, self.curve)
+        if getattr(self, "_psi_end_key", None) != key:
+            self._psi_end_value = float(self.curve.psi(self.depth_limit / self._dscale))
+            self._psi_end_key = key
+        return self._psi_end_value
+
     @property
     def force_limit(self):
         """Force at :attr:`depth_limit` [N]."""
-        return float(self.curve.psi(self.depth_limit / self._dscale)) * self._fscale
+        return self._psi_end() * self._fscale
 
     def _limit_hint(self):
         if self._radius_limited:
@@ -997,7 +1047,7 @@ class UniversalModel(ContactModel):
         F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
                            hint=self._limit_hint())
         # F <= force_limit was checked; F/scale may still round above psi_max at the end
-        return np.minimum(F / self._fscale, self.curve.psi(self.depth_limit / self._dscale))
+        return np.minimum(F / self._fscale, self._psi_end())
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""
@@ -1011,6 +1061,61 @@ class UniversalModel(ContactModel):
     def stiffness(self, depth):
         """k(d) = dF/dd [N/m]; depth [m]."""
         return out(self.curve.dpsi(self._dt(depth)) * self.estar * self.length)
+
+    @classmethod
+    def evaluate_many(cls, radius, length, estar, *, force=None, depth=None):
+        """:meth:`ContactModel.evaluate_many`: the universal curve in the self-similar
+        variables of each element, the same operations as one model per cylinder
+        (so equal values), and the same range (d <= min(d~_max L^2/R, 0.15 R))."""
+        if (force is None) == (depth is None):
+            raise TypeError("evaluate_many() takes exactly one of force= or depth=")
+        curve = universal_curve(_UNIVERSAL_TABLE)
+        R, L, E = (np.asarray(a, dtype=float) for a in (radius, length, estar))
+        given = np.asarray(force if force is not None else depth, dtype=float)
+        nan = np.full(given.shape, np.nan)
+        try:
+            return cls._evaluate_many(curve, R, L, E, given, nan, force is not None)
+        except OutOfRangeError:   # an end value rounded outside the table: per cylinder
+            return None
+
+    @staticmethod
+    def _evaluate_many(curve, R, L, E, given, nan, by_force):
+        with np.errstate(all="ignore"):
+            ok = (np.isfinite(given) & (given > 0) & (R > 0) & (L > 0) & (E > 0)
+                  & np.isfinite(R) & np.isfinite(L) & np.isfinite(E)
+                  & scales_are_normal(R, L, E))
+            if not ok.any():
+                return {k: nan for k in ("force", "depth", "stiffness",
+                                         "contact_radius")}, ok
+            R, L, E, x = R[ok], L[ok], E[ok], given[ok]
+            # the powers as one model computes them (Python's float power: numpy's
+            # array power may differ in the last bit), so that the values are equal
+            lengths = L.tolist()
+            dscale = np.array([v ** 2 for v in lengths]) / R
+            fscale = E * np.array([v ** 3 for v in lengths]) / R
+            limited = DEPTH_OVER_RADIUS.high * R < curve.d_max * dscale
+            dlim = np.where(limited, DEPTH_OVER_RADIUS.high * R, curve.d_max * dscale)
+            psi_end = curve.psi(dlim / dscale)
+            if by_force:
+                inside = x <= psi_end * fscale
+                F = x
+                d = curve.depth_of_psi(np.where(inside, np.minimum(F / fscale, psi_end),
+                                                psi_end)) * dscale
+                d = np.minimum(d, dlim)
+            else:
+                inside = x <= dlim
+                d = x
+                F = curve.psi(np.where(inside, d, dlim) / dscale) * fscale
+            k = curve.dpsi(np.where(inside, d, dlim) / dscale) * E * L
+            a = k / (2 * E)
+        ok[ok] = inside
+        res = {}
+        for name, v in (("force", F), ("depth", d), ("stiffness", k),
+                        ("contact_radius", a)):
+            full = nan.copy()
+            full[ok] = v[inside]
+            res[name] = full
+        return res, ok
 
     def profile(self, x):
         """MDR profile g(x) [m] for 0 <= x <= the MDR radius at the table's end [m]."""

@@ -63,6 +63,7 @@ import re
 
 import numpy as np
 
+from ._numerics import blockwise
 from .classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
 from .tables import TableError, read_table
 from .validity import (POISSON_RATIO, Interval, OutOfRangeError, UnknownNameError,
@@ -329,10 +330,17 @@ def _law(model, depth):
     if check is not None:
         check()
     z = np.asarray(depth, dtype=float)
-    res = np.zeros(z.shape)
+    if z.ndim == 0:
+        return np.asarray(model.force(z) if z > 0 else 0.0, dtype=float)
     pos = z > 0
-    if np.any(pos):
-        res[pos] = model.force(z[pos])
+    if pos.all():
+        return np.asarray(model.force(z), dtype=float)
+    if not pos.any():
+        return np.zeros(z.shape)
+    # one evaluation over the whole array (a positive depth stands in where z <= 0,
+    # then zeroed), cheaper than gathering and scattering the positive elements
+    res = np.asarray(model.force(np.where(pos, z, z.max())), dtype=float)
+    res[~pos] = 0.0
     return res
 
 
@@ -573,9 +581,30 @@ def _ft(model, d, shift, mu, r, beyond):
     """F_t(u) = mu [F(d) - F(d - r|u|/mu)] sign(u) with the gross-slip policy."""
     _check_beyond(beyond)
     u = np.asarray(shift, dtype=float)
+    if (u.ndim and u.size and np.ndim(d) == 0 and np.ndim(mu) == 0 and np.ndim(r) == 0
+            and np.isfinite(u.min()) and np.isfinite(u.max())):
+        # one depth, friction and ratio (a TangentialContact): the same steps as below,
+        # in blocks (cache-resident temporaries), F(d) evaluated once
+        ustar = mu * d / r
+        if not (beyond == "raise" and max(-u.min(), u.max()) > ustar * (1 + 1e-12)):
+            law_d = _law(model, d)
+
+            def chain(ub):
+                z = np.minimum(np.abs(ub), ustar)
+                z *= r
+                z /= mu
+                np.subtract(d, z, out=z)
+                np.maximum(z, 0.0, out=z)
+                ft = law_d - _law(model, z)
+                ft *= mu
+                ft *= np.sign(ub)
+                return ft
+
+            return blockwise(chain, u)
     if not np.all(np.isfinite(u)):
         raise OutOfRangeError("shift", float(u[~np.isfinite(u)].flat[0]) if u.ndim
                               else float(u), "finite values", unit="m")
+    law_d = _law(model, d)          # F(d) before broadcasting: once per depth
     d, u, mu, r = np.broadcast_arrays(d, u, mu, r)
     ustar = mu * d / r
     a = np.abs(u)
@@ -588,7 +617,7 @@ def _ft(model, d, shift, mu, r, beyond):
             hint="beyond gross slip u* = mu E* d/G* the contact slides at mu F(d); "
                  "beyond='saturate' returns that force")
     z = np.maximum(d - r * np.minimum(a, ustar) / mu, 0.0)
-    ft = mu * (_law(model, d) - _law(model, z))
+    ft = mu * (law_d - _law(model, z))
     return np.sign(u) * ft
 
 
@@ -737,10 +766,17 @@ class TangentialContact:
         """Law shift at load fraction q in [0, 1]: d - r u/mu = d(F(1 - q))."""
         q = np.asarray(q, dtype=float)
         rest = self.normal_force * (1.0 - q)
-        z = np.zeros(q.shape)
         pos = rest > 0
-        if np.any(pos):
-            z[pos] = self.model.depth(rest[pos])
+        if q.ndim == 0:
+            z = self.model.depth(rest) if pos else 0.0
+        elif pos.all():
+            z = self.model.depth(rest)
+        else:
+            # one evaluation over the whole array (the full normal force stands in
+            # where nothing is left, then zeroed): no gather and scatter
+            z = np.asarray(self.model.depth(np.where(pos, rest, self.normal_force)),
+                           dtype=float)
+            z[~pos] = 0.0
         return self.friction * (self.depth - z) / self.ratio
 
     def force(self, shift, *, beyond="raise"):
@@ -825,8 +861,11 @@ class TangentialContact:
         check_interval("tangential_force", Ft, -fmax * (1 + 1e-12), fmax * (1 + 1e-12),
                        unit="N", hint="more than mu F: the contact slides (no static "
                                       "equilibrium)")
-        q = np.minimum(np.abs(Ft) / fmax, 1.0)
-        return out(np.sign(Ft) * self._law_shift(q) * self._q_factor(q))
+        def chain(fb):
+            q = np.minimum(np.abs(fb) / fmax, 1.0)
+            return np.sign(fb) * self._law_shift(q) * self._q_factor(q)
+
+        return out(blockwise(chain, Ft))
 
     def stick_radius(self, shift):
         r"""MDR stick radius c = a(z) [m] with F(z) = F - |F_t(u)|/mu (0 at gross slip).

@@ -46,7 +46,7 @@ import os
 import numpy as np
 
 from . import tables as _tables
-from ._numerics import NotAKnotSpline
+from ._numerics import NotAKnotSpline, blockwise
 from .lipopov import (dimensionless_depth, dimensionless_force, dimensionless_profile,
                       dimensionless_stiffness)
 from .tables import read_table, table_path
@@ -123,6 +123,8 @@ class UniversalCurve:
     def _evaluate(self, d_tilde, on_table, below_table):
         """on_table(d) where d~ >= d_min, below_table(d) under it; any input shape."""
         d = self._check_depth(d_tilde)
+        if d.ndim and d.size and d.min() >= self.d_min:     # all on the table
+            return blockwise(on_table, d)
         flat = np.atleast_1d(d).ravel()
         res = np.empty_like(flat)
         small = flat < self.d_min
@@ -166,13 +168,19 @@ class UniversalCurve:
         r""":math:`\tilde d` at which :math:`\Psi` takes the given value [-]."""
         p = check_interval("Psi", psi, 0.0, self.psi_max, low_open=True,
                            hint="the universal table ends there")
-        small = p < self.psi_min
-        lp = np.log(np.where(small, self.psi_min, p))
         # a tabulated inverse of the spline, polished by one Newton step on the spline
         if not hasattr(self, "_inverse"):
             self._inverse = self._spline.inverse_table()
-        z = self._spline.solve_fast(lp, self._inverse)
-        d = np.minimum(np.exp(z), self.d_max)   # exp(ln d_max) may round above d_max
+
+        def on_table(pb):
+            # exp(ln d_max) may round above d_max
+            return np.minimum(np.exp(self._spline.solve_fast(np.log(pb), self._inverse)),
+                              self.d_max)
+
+        if p.ndim and p.size and p.min() >= self.psi_min:     # all on the table
+            return blockwise(on_table, p)
+        small = p < self.psi_min
+        d = on_table(np.where(small, self.psi_min, p))
         if np.any(small):
             ps = np.where(small, p, self.psi_min)
             d = np.where(small, dimensionless_depth(ps, self.alpha_small, self.beta_small),

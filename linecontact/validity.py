@@ -585,6 +585,12 @@ def _refuse_subnormal(name, v, unit):
             raise OutOfRangeError(name, x, f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
                                   hint="a subnormal number has lost precision")
         return v
+    if v.size:
+        # two reductions, no temporaries: no subnormal when every element lies on one
+        # side of zero beyond tiny (NaN makes both tests false: the full check below)
+        vmin, vmax = v.min(), v.max()
+        if vmin >= _TINY or vmax <= -_TINY:
+            return v
     small = np.abs(v) < _TINY  # NaN compares False
     if small.any():
         sub = small & (v != 0)
@@ -657,6 +663,13 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     v = _as_float_array(name, value, unit)
     lo = np.asarray(low, dtype=float)
     hi = np.asarray(high, dtype=float)
+    if v.ndim and v.size and lo.ndim == 0 and hi.ndim == 0:
+        # fixed ends: the smallest and largest element decide (NaN fails both tests
+        # and takes the elementwise path below, which names it)
+        vmin, vmax = v.min(), v.max()
+        if ((vmin > lo if low_open else vmin >= lo)
+                and (vmax < hi if high_open else vmax <= hi)):
+            return v
     above = v > lo if low_open else v >= lo
     below = v < hi if high_open else v <= hi
     ok = above & below

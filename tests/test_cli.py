@@ -735,6 +735,16 @@ def test_unexpected_exception_in_one_row_is_reported_in_that_row(capsys, tmp_pat
         return original(self, force=force, depth=depth)
 
     monkeypatch.setattr(models.ContactModel, "evaluate", flaky)
+    many = models.UniversalModel.evaluate_many.__func__
+
+    def flaky_many(cls, radius, length, estar, *, force=None, depth=None):
+        if force is not None and np.any(np.asarray(force) == 777.0):
+            raise RuntimeError("boom")
+        return many(cls, radius, length, estar, force=force, depth=depth)
+
+    # the batch's call over all rows at once raises too: the per-contact path then
+    # isolates the exception to its row
+    monkeypatch.setattr(models.UniversalModel, "evaluate_many", classmethod(flaky_many))
     loads = ["100N", "200N", "777N", "300N", "400N"]
     path = _write_csv(tmp_path / "b.csv", ["load"], [[x] for x in loads])
     status, out, err = _main(capsys, "calc", path, "--radius", "5mm", *STEEL_CASE[1:])
@@ -746,9 +756,11 @@ def test_unexpected_exception_in_one_row_is_reported_in_that_row(capsys, tmp_pat
 
 
 def test_batch_builds_one_model_per_distinct_cylinder(capsys, tmp_path, monkeypatch):
-    """Speed by construction: 300 rows on 3 distinct cylinders build each model 3 times
-    (plus a probe at R = 1 m that names the columns), not 300 times: the default model
-    alone in a default batch, the whole set with --model all."""
+    """Speed by construction: 300 rows on 3 distinct cylinders build each model of
+    --model all 3 times (plus a probe at R = 1 m that names the columns), not 300
+    times; a default batch (the default model alone) builds one model object, for the
+    column set's name and provenance: its rows are evaluated as arrays over their
+    geometry (ContactModel.evaluate_many)."""
     from linecontact import models
 
     calls = []
@@ -761,12 +773,15 @@ def test_batch_builds_one_model_per_distinct_cylinder(capsys, tmp_path, monkeypa
     monkeypatch.setattr(models.ContactModel, "__init__", counting)
     rows = [[r, f"{100 + i}N"] for i in range(100) for r in ("4mm", "5mm", "6mm")]
     path = _write_csv(tmp_path / "c.csv", ["radius", "load"], rows)
-    for extra, per_set in (((), 1), (("--model", "all"), len(_library()))):
+    for extra, per_set in (((), None), (("--model", "all"), len(_library()))):
         calls.clear()
         status, out, err = _main(capsys, "calc", path, *STEEL_CASE[1:], *extra)
         assert status == 0, err
         assert len(_csv(out)) == 300
         built = [r for r in calls if r != 1.0]  # R = 1 m: the probe naming the columns
+        if per_set is None:
+            assert len(built) == 1, built
+            continue
         assert sorted(set(built)) == [0.004, 0.005, 0.006]
         assert len(built) == 3 * per_set, len(built)
 

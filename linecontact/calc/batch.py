@@ -37,8 +37,13 @@ Writing: no user data is ever lost
     model's range says so in ``note``; all other rows are computed and written.
 
 Speed
-    Rows are grouped by distinct cylinder; one model object per cylinder and model
-    evaluates all its rows at once (:func:`linecontact.compute.compute`). A progress bar
+    With the default model alone (a default batch) and no feature, all rows are
+    evaluated at once as arrays over their geometry
+    (:meth:`linecontact.models.ContactModel.evaluate_many`), so 100 000 distinct
+    rollers cost as much as 100 000 rows of one roller; otherwise rows are grouped by
+    distinct cylinder and one model object per cylinder and model evaluates all its
+    rows at once (:func:`linecontact.calc.compute.compute`). Rows outside the model's
+    range always take the per-cylinder path, whose notes name the cylinder. A progress bar
     (tqdm when installed, else a plain line) is shown on stderr for batches of at
     least :data:`PROGRESS_ROWS` rows when stderr is a terminal, or always with
     ``--progress``; ``--no-progress`` hides it.
@@ -195,7 +200,8 @@ class _FlatRows:
         if not lines:
             return None
         commas = lines[0].count(",")
-        if not all(ln.count(",") == commas for ln in lines):
+        counts = list(map(str.count, lines, [","] * len(lines)))   # C-level
+        if counts.count(commas) != len(counts):
             return None
         return cls(",".join(lines).split(","), commas + 1)
 
@@ -459,7 +465,7 @@ def _result_cells(getters):
             kinds.append(kind)
         else:
             first = data[0] if n else ""
-            if n and all(t == first for t in data):
+            if n and list(data).count(first) == n:
                 parts.append(_quote(str(first)).replace("%", "%%"))
                 continue
             cache = {}

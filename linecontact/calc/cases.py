@@ -166,10 +166,9 @@ def parse_cases(cells, n, label=option_name):
         if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
             uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)
         else:
-            where = {}
-            inv = np.fromiter((where.setdefault(c, len(where)) for c in col),
-                              dtype=np.intp, count=n)
-            uniq = list(where)
+            uniq = list(dict.fromkeys(col))    # in order of first appearance
+            where = {c: i for i, c in enumerate(uniq)}
+            inv = np.fromiter(map(where.__getitem__, col), dtype=np.intp, count=n)
         u_given = np.array([c.strip() != "" for c in uniq], dtype=bool)
         u_values = np.full(len(uniq), np.nan)
         u_errors = [""] * len(uniq)

@@ -2,6 +2,12 @@
 per-row quantities derived from them (Hertz half-width and peak pressure, geometry
 flags, deviation from the best estimate), and the columns of the active features.
 
+A default batch (the default model alone, no feature, plain contacts) is evaluated
+in one call over all rows, as arrays over their geometry
+(:meth:`linecontact.models.ContactModel.evaluate_many`: the same values as one model
+per contact); the rows it does not cover (outside the model's range) and every other
+case follow the per-contact path below.
+
 Cases (:func:`linecontact.calc.cases.parse_cases`) are grouped by distinct contact
 (effective radius, length, E*): one model object per group and model, each evaluated
 once per group on the array of its loads or depths with
@@ -600,14 +606,6 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
                     col(np.where(P["modulus2"], v["modulus2"], np.nan)),
                     col(np.where(P["poisson2"], v["poisson2"], np.nan))], axis=1)
     rows = np.flatnonzero(ok)
-    if rows.size:
-        k = key[rows]
-        order = np.lexsort(k.T[::-1])  # rows of one contact become neighbours
-        ks = k[order]
-        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
-        groups = np.split(rows[order], bounds)
-    else:
-        groups = []
     from ..models import DEFAULT_MODEL
 
     probe = _build(specs, 1.0, 1.0, 1.0, first_only)  # the column sets, in order
@@ -642,10 +640,33 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     results.deviation = n_sets > 1 or reference
     whole = cases.whole()
     produced = {}
+    # the default model alone on plain contacts (no feature): all rows as arrays over
+    # their geometry at once (ContactModel.evaluate_many), the groups only registered
+    fast = None
+    if default_key is not None and not active and not parts_of and not reference:
+        try:
+            fast = _evaluate_many(results, cases, rows, default_key)
+        except Exception:  # noqa: BLE001 - the per-contact path isolates it to its rows
+            fast = None
+    if fast is not None and fast.any():
+        i0 = np.flatnonzero(fast)[0]
+        _register(results, _build(specs, cases.radius_eff[i0], cases.length[i0],
+                                  cases.estar[i0], first_only, default_key)[0])
+        rows = rows[~fast[rows]]          # the rest: per contact, below
+        if progress is not None:
+            progress(int(fast.sum()))
+    if rows.size:
+        k = key[rows]
+        order = np.lexsort(k.T[::-1])  # rows of one contact become neighbours
+        ks = k[order]
+        bounds = np.flatnonzero(np.any(ks[1:] != ks[:-1], axis=1)) + 1
+        groups = np.split(rows[order], bounds)
+    else:
+        groups = []
     # an intermediate that overflows (a force of 1e300 N) is caught by _no_overflow
     # below, in the row's flags; numpy's warnings would only add lines to stderr
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
-        done = 0
+        done = 0 if fast is None else int(fast.sum())
         for g in groups:
             i0 = g[0]
             try:
@@ -687,6 +708,72 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     for f, st in active:
         results.blocks += f.blocks(st, results)
     return results
+
+
+def _register(results, model):
+    """Name the single column set after its first model (as _evaluate_group does)."""
+    s = results.sets[0]
+    s["id"] = model_id(model)
+    s["named"] = True
+    results.models.setdefault(s["id"], model)
+    if s.get("model") is None:
+        s["model"] = model
+
+
+def _evaluate_many(results, cases, rows, key):
+    """The single default model on the plain rows `rows`, as arrays over their geometry
+    (one call, no model object per cylinder): writes the rows it covers into the
+    first column set exactly as _evaluate_group would (the same values: the model's own
+    operations element by element) and returns a bool array over all rows marking them,
+    or None when the model has no such evaluation. Rows outside the model's range are
+    left to the per-contact path (their notes name the contact)."""
+    from ..models import MODELS
+
+    label = getattr(MODELS[key], "label", None)
+    if not isinstance(label, str):   # a label that depends on the options
+        return None
+    n = len(results.errors)
+    done = np.zeros(n, bool)
+    if not rows.size:
+        return done
+    R, L, E = cases.radius_eff[rows], cases.length[rows], cases.estar[rows]
+    given, values = cases.given[rows], cases.value[rows]
+    r = {k: np.full(rows.size, np.nan) for k in _NORMAL}
+    covered = np.zeros(rows.size, bool)
+    for which in ("load", "depth"):
+        sel = np.flatnonzero(given == which)
+        if not sel.size:
+            continue
+        got = MODELS[key].evaluate_many(R[sel], L[sel], E[sel],
+                                        **{("force" if which == "load" else "depth"):
+                                           values[sel]})
+        if got is None:
+            return None
+        res, ok = got
+        for k, v in res.items():
+            r[k][sel] = v
+        covered[sel] = ok
+    if not covered.any():
+        return done
+    keep = np.flatnonzero(covered)
+    rows = rows[keep]
+    r = {k: v[keep] for k, v in r.items()}
+    _hertz(r, R[keep], L[keep], E[keep])
+    s = results.sets[0]
+    s["label"][rows] = label
+    f = s["fields"]
+    for name, arr in r.items():
+        if name not in f:
+            f[name] = np.full(n, np.nan)
+        f[name][rows] = arr
+    Rk, Lk = R[keep], L[keep]
+    with np.errstate(invalid="ignore"):
+        odd = ((r["depth"] / Rk > DEPTH_OVER_RADIUS_MAX)
+               | (r["half_width"] / Lk > HALF_WIDTH_OVER_LENGTH_MAX))
+    for j in np.flatnonzero(odd):
+        s["flags"][rows[j]] = flag_text(r["depth"][j], r["half_width"][j], Rk[j], Lk[j])
+    done[rows] = True
+    return done
 
 
 def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, composed,

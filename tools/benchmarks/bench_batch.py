@@ -6,6 +6,9 @@ this repository's root, ``python -m linecontact``):
 
     one      calc --radius 5mm --length 10mm --modulus 210GPa --poisson 0.3 --load 1kN
     batch    calc BENCH.csv -o OUT.csv                      (--rows rows, default model)
+    distinct calc DISTINCT.csv -o OUT.csv                   (--rows rows, every row its
+                                                             own roller: random R, L/R,
+                                                             load; issue 20, item 1)
     sweep    calc ... --load 100N:10kN:10000 -o OUT.txt     (all standard models)
     all      calc BENCH.csv --model all -o OUT.csv          (only with --all-models)
 
@@ -18,8 +21,9 @@ The batch file (``--rows``, default 100 000) is what a spreadsheet of roller che
 looks like: ``--cylinders`` (default 100) distinct rollers (R from 1 to 20 mm, L/R from
 0.5 to 5, steel on steel), each row a load between 100 N and 10 kN written with a unit
 (``"123.4N"`` or ``"1.234kN"``), a name column and a free-text column kept as is.
-``--distinct`` makes every row its own cylinder: the worst case, one model object per
-row.
+The ``distinct`` file (always timed) makes every row its own cylinder, a parameter
+study (random R, L/R and load, unit cells); ``--distinct`` makes the ``batch`` file
+distinct too (with ``--write-only``: write that file).
 
 Usage::
 
@@ -102,10 +106,13 @@ def main(argv=None):
           f"cylinders) to {bench}")
     if args.write_only:
         return
+    distinct = tmp / "distinct.csv"
+    write_batch(distinct, args.rows, distinct=True, seed=2)
     py = [sys.executable, "-m", "linecontact", "calc"]
     commands = {
         "one": py + CASE + ["--load", "1kN"],
         "batch": py + [str(bench), "-o", str(tmp / "batch_out.csv")],
+        "distinct": py + [str(distinct), "-o", str(tmp / "distinct_out.csv")],
         "sweep": py + CASE + ["--load", "100N:10kN:10000", "-o", str(tmp / "sweep.txt")],
     }
     if args.all_models:

@@ -903,7 +903,9 @@ class CylinderAdhesion:
         dict
             ``force`` [N], ``ratio`` (over the 2D JKR value of the length) [-],
             ``method``, ``error`` (the value's error against the BEM: 0 for 'bem', the
-            measured mdr/BEM - 1 for 'mdr', NaN where not measured) [-], ``depth`` [m]
+            model's MDR force over the BEM table's, minus 1, for 'mdr', NaN below the
+            table; the table's ``mdr_err_*`` columns are the universal curve's) [-],
+            ``depth`` [m]
             (the BEM's depth at the depth-controlled jump-off; NaN under force control
             or with 'mdr'), ``in_table`` (bool); with 'bem' also ``mdr_force`` [N]
             (NaN where the model refuses, the reason in ``mdr_note``) and
@@ -918,11 +920,15 @@ class CylinderAdhesion:
             raise OutOfRangeError("control", control, "one of 'force', 'depth'")
         if method not in _METHODS:
             raise OutOfRangeError("method", method, "one of 'bem', 'mdr'")
-        err = self._column(f"mdr_err_{control}") if self.in_table else np.nan
+        # the MDR's error: this model's rule of Hess against the BEM's value (the
+        # table's mdr_err_* columns hold the universal curve's only; another model's
+        # MDR profile, Li-Popov's or Puttock-Thwaite's, pulls off elsewhere)
+        bem = (self._column(f"ratio_{control}") * self.pull_off_2d if self.in_table
+               else np.nan)
         if method == "mdr":
             F = self.mdr.pull_off(control)["force"]
             return {"force": F, "ratio": F / self.pull_off_2d, "method": "mdr",
-                    "error": err, "depth": np.nan, "in_table": self.in_table}
+                    "error": F / bem - 1, "depth": np.nan, "in_table": self.in_table}
         if not self.in_table:
             s_min = self.s_range[0]
             R, L, E = self.model.radius, self.model.length, self.model.estar
@@ -942,7 +948,8 @@ class CylinderAdhesion:
         if control == "depth":
             depth = self._column("d_tilde_off") * self.model.length ** 2 / self.model.radius
         return {"force": ratio * self.pull_off_2d, "ratio": ratio, "method": "bem",
-                "error": 0.0, "mdr_force": mdr, "mdr_error": err, "mdr_note": mdr_note,
+                "error": 0.0, "mdr_force": mdr, "mdr_error": mdr / bem - 1,
+                "mdr_note": mdr_note,
                 "depth": depth, "in_table": True}
 
     def zero_load(self):

@@ -463,13 +463,15 @@ def _worst_of(fields):
     return {"worst": worst, "notes": notes}
 
 
-def _contact_stresses(si, so, poisson):
+def _contact_stresses(si, so, poisson, rollers=(None, None)):
     """Subsurface stress maxima of one roller's two slice contacts
-    (:func:`linecontact.stresses.roller_stresses`, no traction)."""
+    (:func:`linecontact.stresses.roller_stresses`, no traction); `rollers`: each
+    contact's (radius, length, estar, profile), so that the measured error is quoted
+    only inside the measured range."""
     from .stresses import roller_stresses
 
-    return _worst_of({"inner": roller_stresses(si, poisson=poisson),
-                      "outer": roller_stresses(so, poisson=poisson)})
+    return _worst_of({"inner": roller_stresses(si, poisson=poisson, roller=rollers[0]),
+                      "outer": roller_stresses(so, poisson=poisson, roller=rollers[1])})
 
 
 @dataclass(frozen=True)
@@ -911,6 +913,11 @@ class RadialRollerBearing:
                                    "give a tilting moment or a misalignment, not both "
                                    "(the moment a misalignment needs is an output)")
         if moment is not None or misalignment is not None:
+            for name, v, unit in (("moment", moment, "N m"),
+                                  ("misalignment", misalignment, "rad")):
+                if v is not None and not isinstance(v, str) and np.ndim(v) != 0:
+                    raise OutOfRangeError(name, v, f"one number [{unit}]",
+                                          hint="one bearing load case per solve")
             M = None if moment is None else float(check_interval(
                 "moment", moment, -np.inf, np.inf, low_open=True, high_open=True,
                 unit="N m"))
@@ -938,7 +945,7 @@ class RadialRollerBearing:
         else:
             (dr, Q, k, approach, x, qi, qo, pp, law_error, label, K,
              worst) = self._solve_sliced(F)
-            stress = _contact_stresses(*worst, self.poisson)
+            stress = _contact_stresses(*worst, self.poisson, self._stress_rollers())
             if not math.isfinite(pp):
                 notes.append("peak pressure not reported: the most loaded roller is "
                              "edge loaded (a singular pressure on a half-space)")
@@ -980,6 +987,16 @@ class RadialRollerBearing:
             self.clearance, estar=self.estar, model="profiled-roller",
             profile=self.profile, n_slices=self.n_slices, azimuth0=self.azimuth0,
             rating=self.rating, rotating=self.rotating, poisson=self.poisson)
+
+    def _stress_rollers(self):
+        """The inner and the outer contact as equivalent rollers on a flat (effective
+        radius, length, E*, profile) for the stress table's range check."""
+        from types import SimpleNamespace
+
+        radii = effective_radii(self.roller_diameter / 2, self.raceways.inner,
+                                self.raceways.outer)
+        return tuple(SimpleNamespace(radius=R, length=self.length, estar=self.estar,
+                                     profile=self.profile) for R in radii)
 
     def _law_stresses(self, Q):
         """Subsurface stresses of the most loaded roller under a law: the plane-strain
@@ -1039,7 +1056,7 @@ class RadialRollerBearing:
                          "slice width (not converged)")
         jm = int(np.argmax(Q))
         si, so = sols[inverse[jm]]
-        stress = _contact_stresses(si, so, self.poisson)
+        stress = _contact_stresses(si, so, self.poisson, self._stress_rollers())
         notes.extend(stress["notes"])
         approach = dr * c - self.clearance / 2
         zone = self._tilted_load_zone(dr, th, first)
@@ -1309,11 +1326,13 @@ class RadialRollerBearing:
                 u[g] = u[g] + du
             dr += dV[0]
             th += dV[1]
-            if not abs(th) < 0.05:
+            # a solved ring tilt beyond 0.05 rad: the moment is beyond the rollers'
+            # capacity (a given misalignment stays as given, up to its range)
+            if not given_tilt and not abs(th) < 0.05:
                 break
         else:
             th = math.nan
-        if not abs(th) < 0.05:
+        if not (given_tilt and math.isfinite(th)) and not abs(th) < 0.05:
             name, value, unit = (("misalignment", theta, "rad") if given_tilt else
                                  ("moment", M, "N m"))
             raise OutOfRangeError(

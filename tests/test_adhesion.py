@@ -164,6 +164,23 @@ def test_corrected_values_are_the_table_at_its_nodes():
             assert e == pytest.approx(cols[f"mdr_err_{ctl}"][i], rel=1e-9, abs=1e-12)
 
 
+def test_mdr_error_is_the_row_models_own():
+    """The MDR's error is this model's rule of Hess against the BEM value (mdr/BEM - 1
+    to 1e-12), not the universal curve's table column reused for every model: at one
+    s, Puttock-Thwaite's MDR pulls off about 20 % away from the universal curve's, and
+    so must its error."""
+    E = 6.7e4
+    errs = {}
+    for key in ("universal", "puttock-thwaite"):
+        c = CylinderAdhesion(get_model(key, 1e-3, 2e-3, E), 0.05)
+        r = c.pull_off("force")
+        m = c.pull_off("force", method="mdr")
+        assert m["error"] == pytest.approx(m["force"] / r["force"] - 1, rel=1e-12)
+        assert r["mdr_error"] == pytest.approx(m["error"], rel=1e-12)
+        errs[key] = m["error"]
+    assert abs(errs["universal"] - errs["puttock-thwaite"]) > 0.1, errs
+
+
 def test_cylinder_table_refuses_beyond_its_end_and_other_shapes():
     """s beyond the table's largest value and a model without the cylinder's geometry
     are refused with the parameter named."""

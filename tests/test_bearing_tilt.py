@@ -71,9 +71,9 @@ def test_stiffness_matrix_equals_finite_differences(iso_bearing):
                                            ("iso16281", 40, 1e-3)])
 def test_stiffness_matrix_symmetric(profile, n, tol):
     """The bearing is elastic, so K is symmetric; the coupled-slice equations are
-    collocation, not a potential, so K_rt - K_tr is a discretisation error that falls
-    with the slices (ISO profile, 1 mrad: 1.3e-3, 4.3e-4, 6.9e-5 of sqrt(K_rr K_tt) at
-    20, 40, 80 slices; a circular crown below 1e-5, docs/bearings.md)."""
+    collocation, not a potential, so K_rt - K_tr is a discretisation error, small
+    (ISO profile, 1 mrad: 4.1e-4, 2.2e-5, 1.5e-5 of sqrt(K_rr K_tt) at 20, 40, 80
+    graded slices; a circular crown below 1e-5, docs/bearings.md)."""
     b = RadialRollerBearing(12, 60e-3, 8e-3, 10e-3, profile=profile, n_slices=n)
     K = b.solve(5e3, misalignment=1e-3).stiffness
     assert abs(K[0, 1] - K[1, 0]) < tol * math.sqrt(K[0, 0] * K[1, 1])
@@ -200,3 +200,57 @@ def test_iso_slicing_model_tilted(load):
         assert s.roller_moments @ c == pytest.approx(3.0, rel=1e-9)
     K = s.stiffness
     assert abs(K[0, 1] - K[1, 0]) < 1e-6 * math.sqrt(K[0, 0] * K[1, 1])
+
+
+def test_docs_misalignment_table_matches_the_solve():
+    """docs/bearings.md's ISO-profile misalignment table is what the library gives: the
+    2 mrad row's Q_max, p_max, von Mises (3D-corrected, the bearing's stress) and L10r
+    to the table's printed digits (half a unit in the last place)."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "bearings.md").read_text()
+    row = next(line for line in text.splitlines() if line.startswith("| 2 | "))
+    cells = [float(v) for v in row.strip("|").split("|")]
+    _, _, Qmax, _, _, _, p_max, vm, life = cells
+    b = RadialRollerBearing(20, 0.1, 0.01, 0.01, estar=115.38e9, profile="iso16281")
+    s = b.solve(10e3, misalignment=2e-3)
+    assert s.max_roller_load == pytest.approx(Qmax, abs=0.05)
+    assert s.peak_pressure / 1e6 == pytest.approx(p_max, abs=0.5)
+    assert s.stress["von_mises"]["value"] / 1e6 == pytest.approx(vm, abs=0.5), \
+        "docs/bearings.md's von Mises is not the bearing's (3D-corrected) stress"
+    assert s.life_iso16281 == pytest.approx(life, abs=0.05)
+
+
+def test_stress_note_checks_the_measured_range():
+    """D = L rollers: each contact's equivalent roller (effective radius) has L/D of
+    1.1 (inner) and 0.91 (outer), below the stress table's 1.4-3, so the bearing's
+    stress notes say so instead of quoting the measured errors as if inside."""
+    b = RadialRollerBearing(20, 0.1, 0.01, 0.01, estar=115.38e9, profile="iso16281")
+    notes = b.solve(10e3).notes
+    assert any(n.startswith("stress (inner contact): L/D = 1.1 (measured 1.4-3): "
+                            "outside") for n in notes), notes
+    assert any(n.startswith("stress (outer contact): L/D = 0.91 (measured 1.4-3): "
+                            "outside") for n in notes), notes
+
+
+def test_misalignment_inside_its_range_is_solved():
+    """A given misalignment is valid for |theta| < 0.1 rad (the docstring's and the
+    check's range); 0.06 rad was refused as 'no ring equilibrium' because the guard
+    meant for a solved ring tilt (0.05 rad) also stopped a given one. Now solved, with
+    the loads in equilibrium (sum Q_j cos psi_j = F_r to 1e-9)."""
+    b = RadialRollerBearing(8, 60e-3, 8e-3, 10e-3, profile="circular:Rc=0.3")
+    s = b.solve(5e3, misalignment=0.06)
+    assert s.tilt == 0.06
+    assert s.roller_loads @ np.cos(s.azimuth) == pytest.approx(5e3, rel=1e-9)
+
+
+@pytest.mark.parametrize("kw", [dict(misalignment=[1e-3, 2e-3]), dict(moment=[1.0, 2.0])])
+def test_array_tilt_gets_the_one_line_error(kw):
+    """A sequence for the moment or the misalignment (one load case per solve) is
+    refused with the parameter named, not numpy's 'can only convert an array of size
+    1' (misalignment) or a TypeError (moment)."""
+    b = RadialRollerBearing(8, 60e-3, 8e-3, 10e-3, profile="circular:Rc=0.3",
+                            n_slices=20)
+    (name,) = kw
+    with pytest.raises(OutOfRangeError, match=rf"^{name} = .*one number"):
+        b.solve(5e3, **kw)

@@ -54,6 +54,18 @@ def test_profiled_roller_section_field(capsys):
     assert max(max(r) for r in sec["tresca"]) <= row["worst"]["tresca"]["value"] * (1 + 1e-9)
 
 
+def test_stress_note_checks_the_measured_range(capsys):
+    """A profiled roller of L/D = 1, below the stress table's measured 1.4-3: the row's
+    note says its stresses lie outside the measured range, not the measured errors as
+    if inside (the calc passes the row's roller to the range check)."""
+    status, out, err = _main(capsys, *BASE, "--crown-radius", "500mm", "--stresses",
+                             "yes", "--json")
+    assert status == 0, err
+    note = json.loads(out)["models"][0]["rows"][0]["flags"]
+    assert "L/D = 1 (measured 1.4-3): outside the range where the 3D-corrected " \
+           "stresses were measured" in note, note
+
+
 @pytest.mark.parametrize("extra,word", [
     (["--stresses", "yes", "--sliding-friction", "-0.1"], "sliding-friction"),
     (["--stresses", "yes", "--surface-hardness", "500", "--case-depth", "0.3mm",

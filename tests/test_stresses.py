@@ -286,6 +286,36 @@ def test_roller_result_carries_its_measured_error():
         roller_stresses(r.at_force(11200.0), friction=-0.2)
 
 
+def test_iso_slicing_loads_carry_no_measured_error():
+    """The stress table measured the coupled-slice model's loads only: the stresses of
+    ISO 16281's uncoupled slices (a bearing's or calc's iso16281-slicing) quote no
+    measured error (None) and the note names the slice model, rather than borrowing
+    the coupled slices' figures."""
+    from linecontact.roller import iso_slicing
+
+    sol = iso_slicing(5e-3, 14e-3, ESTAR, "iso16281", force=11200.0)
+    s = roller_stresses(sol)
+    assert s.error is None, "an unmeasured slice model got a measured error"
+    assert any("ISO 16281 slicing" in n for n in s.notes)
+
+
+def test_near_end_classification_does_not_depend_on_slice_grading():
+    """A Lundberg roller at its design load: the contact ends 28 um from the roller's
+    ends, a fifth of a mean slice (140 um). reaches_end takes half the mean slice width
+    as its margin, so graded slices (28 um at the ends) and the uniform slices of the
+    study that measured the errors classify it alike: near an end, with the edge-loaded
+    error quoted, not the off-the-ends 0.55 %."""
+    from linecontact.stresses import reaches_end
+
+    for grading in (0.8, 0.0):
+        r = ProfiledRoller(5e-3, 14e-3, ESTAR, "lundberg:design_force=11200",
+                           grading=grading)
+        sol = r.at_force(11200.0)
+        assert reaches_end(sol), f"grading {grading}: classified off the ends"
+        err = roller_stresses(sol, roller=r).error
+        assert err is not None and err["tresca"] > 0.05, err
+
+
 def test_measured_hardness_above_the_maximum_is_refused():
     """A measured hardness profile that stops above the stress maximum (its depths
     are the check's grid) is refused in one line naming depths and the valid range,

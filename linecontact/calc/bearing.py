@@ -94,9 +94,11 @@ _NOTES = {
             "(profiled-roller for a straight roller with no --model), free to tilt "
             "between its rings; the ring sees theta cos psi_j at roller j. K_rt, K_tr, "
             "K_tt: the 2x2 stiffness d(F_r, M)/d(delta_r, theta), slice models only.",
-    "stress": "subsurface stress: the most loaded roller, the worst of its two contacts, "
-              "plane-strain Hertz strips per slice (linecontact.stresses), no traction; "
-              "von Mises with the rings' Poisson's ratio (0.3 if not given).",
+    "stress": "subsurface stress: the most loaded roller, the worst of its two contacts "
+              "(linecontact.stresses), no traction: under a slice model one Hertz strip "
+              "per slice, the worst 3D-corrected (measured error in the notes below); "
+              "under a law the plane-strain Hertz strip at the mean line load Q/L; von "
+              "Mises with the rings' Poisson's ratio (0.3 if not given).",
 }
 
 

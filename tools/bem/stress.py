@@ -60,12 +60,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from linecontact.stresses import rectangle_stresses
+from linecontact.stresses import MEASURES, rectangle_stresses, stress_measures
 
 from .halfspace import DCFFTOperator, wraparound_offsets
 
 COMPONENTS = ("sigma_x", "sigma_y", "sigma_z", "tau_xy", "tau_xz", "tau_yz")
-MEASURES = ("tresca", "von_mises", "orthogonal_shear")
 
 
 def point_load_stresses(x, y, z, poisson=0.3):
@@ -230,16 +229,10 @@ def traction_rectangle_stresses(x, y, z, dx, dy, poisson=0.3, direction="y"):
 
 
 def measures(f):
-    """Tresca (max shear), von Mises and orthogonal shear |tau_yz| of a field dict."""
-    sx, sy, sz = f["sigma_x"], f["sigma_y"], f["sigma_z"]
-    txy, txz, tyz = f["tau_xy"], f["tau_xz"], f["tau_yz"]
-    T = np.stack([np.stack([sx, txy, txz], -1), np.stack([txy, sy, tyz], -1),
-                  np.stack([txz, tyz, sz], -1)], -2)
-    ev = np.linalg.eigvalsh(T)
-    vm = np.sqrt(np.maximum(0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2)
-                            + 3 * (txy ** 2 + txz ** 2 + tyz ** 2), 0.0))
-    return dict(tresca=0.5 * (ev[..., -1] - ev[..., 0]), von_mises=vm,
-                orthogonal_shear=np.abs(tyz))
+    """Tresca (max shear), von Mises and orthogonal shear |tau_yz| of a field dict
+    (:func:`linecontact.stresses.stress_measures`, the measures' one home)."""
+    return stress_measures(f["sigma_x"], f["sigma_y"], f["sigma_z"], f["tau_xy"],
+                           f["tau_xz"], f["tau_yz"])
 
 
 class StressField:

@@ -68,10 +68,12 @@ fields["min_case_depth"] = Field("CHD min", "m", "mm", 1e3)
 
 NOTE = ("stresses: plane-strain Hertz strip (McEwen 1949; Johnson 1985, sections 4.2 and "
         "7.2) with the mean line load F/L per model row; along the roller one strip per "
-        "slice of the coupled-slice model; tau max = (sigma1 - sigma3)/2, tau orth = "
+        "slice of the coupled-slice model, the worst with a 3D correction (Love 1929; "
+        "measured error in the row's note); tau max = (sigma1 - sigma3)/2, tau orth = "
         "|tau_yz|; case check: von Mises over the yield strength 2.876 HV - 90.7 MPa "
-        "(Pavlina & Van Tyne 2008), CHD min: the smallest effective case depth with a "
-        "ratio <= 1. docs/stresses.md.")
+        "(Pavlina & Van Tyne 2008) on the worst slice's plane-strain envelope (low by "
+        "the 3D correction where it raises the worst, up to 5.6 %), CHD min: the "
+        "smallest effective case depth with a ratio <= 1. docs/stresses.md.")
 notes = {"stresses": NOTE}
 
 _ROW_FIELDS = {}
@@ -160,7 +162,8 @@ def columns(model, rows, normal, state):
         sol = normal["solution"][j] if "solution" in normal else None
         try:
             if _is_slices(sol):   # a profiled roller: the worst along its slices
-                s = roller_stresses(sol, state.mu[i], state.nu[i])
+                s = roller_stresses(sol, state.mu[i], state.nu[i],
+                                    roller=_measured_as(model))
                 flags[j] = "; ".join(s.notes)
             else:
                 s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
@@ -186,6 +189,20 @@ def columns(model, rows, normal, state):
                 flags[j] = "; ".join(t for t in (flags[j], str(exc)) if t)
     out["flags"] = flags
     return out
+
+
+def _measured_as(model):
+    """The row's roller as :func:`linecontact.stresses.stress_accuracy` checks it
+    against the measured range (radius, length, estar, profile), or None where the
+    contact has no single radius (raceways: the note then checks only tilt and
+    friction)."""
+    from types import SimpleNamespace
+
+    c = getattr(model, "contact", None)
+    if c is None or getattr(c, "radius", None) is None:
+        return None
+    return SimpleNamespace(radius=c.radius, length=c.roller.length, estar=c.estar,
+                           profile=c.profile)
 
 
 def _is_slices(sol):

@@ -75,7 +75,8 @@ import functools
 import numpy as np
 
 from .tables import TableError, read_table
-from .validity import Interval, OutOfRangeError, check_positive, document, out
+from .validity import (Interval, OutOfRangeError, UnknownNameError, check_positive,
+                       document, out)
 
 __all__ = [
     "AdhesiveContact",
@@ -430,7 +431,7 @@ class AdhesiveContact:
             MDR half-length a [m] at the instability.
         """
         if control not in _CONTROLS:
-            raise OutOfRangeError("control", control, "one of 'force', 'depth'")
+            raise UnknownNameError("control", control, _CONTROLS)
         if self.work == 0:
             raise OutOfRangeError("work", 0.0, "0 < w < inf J/m^2",
                                   hint="without adhesion there is no pull-off force")
@@ -917,9 +918,9 @@ class CylinderAdhesion:
             method='bem' with s below the table (``work`` named, with the range).
         """
         if control not in _CONTROLS:
-            raise OutOfRangeError("control", control, "one of 'force', 'depth'")
+            raise UnknownNameError("control", control, _CONTROLS)
         if method not in _METHODS:
-            raise OutOfRangeError("method", method, "one of 'bem', 'mdr'")
+            raise UnknownNameError("method", method, _METHODS)
         # the MDR's error: this model's rule of Hess against the BEM's value (the
         # table's mdr_err_* columns hold the universal curve's only; another model's
         # MDR profile, Li-Popov's or Puttock-Thwaite's, pulls off elsewhere)

@@ -226,3 +226,19 @@ def test_depth_at_force_inverts_force_at_depth():
     assert np.allclose(c.depth_at_force(F), d, rtol=1e-9, atol=1e-15)
     with pytest.raises(OutOfRangeError, match="force"):
         c.depth_at_force(1.01 * c.pull_off("force")["force"])
+
+
+def test_unknown_control_or_method_is_an_unknown_name():
+    """A control or method that is not one of the names is an UnknownNameError listing
+    the names (a name has no range), the project's rule for every named option."""
+    from linecontact.adhesion import CylinderAdhesion
+    from linecontact.models import get_model
+    from linecontact.validity import UnknownNameError
+
+    c = CylinderAdhesion(get_model("universal", 1e-3, 2e-3, 6.7e4), 0.05)
+    with pytest.raises(UnknownNameError, match="'bem', 'mdr'"):
+        c.pull_off("force", method="x")
+    with pytest.raises(UnknownNameError, match="'force', 'depth'"):
+        c.pull_off("forse")
+    with pytest.raises(UnknownNameError, match="'force', 'depth'"):
+        c.mdr.pull_off("forse")

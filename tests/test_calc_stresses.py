@@ -80,3 +80,13 @@ def test_bad_input_one_line(capsys, extra, word):
     assert status == 2
     lines = [ln for ln in err.strip().splitlines() if ln]
     assert len(lines) == 1 and word in lines[0], err
+
+
+def test_stresses_no_prints_no_stress_note(capsys):
+    """`--stresses no` turns the feature off on every row, so the table carries neither
+    its columns nor its note (a note under a table describes what the table shows);
+    `--stresses yes` prints the note once."""
+    status, out, _ = _main(capsys, *BASE, "--stresses", "no")
+    assert status == 0 and "Note: stresses" not in out
+    status, out, _ = _main(capsys, *BASE, "--stresses", "yes")
+    assert status == 0 and out.count("Note: stresses") == 1

@@ -698,7 +698,8 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     ok = np.array([not e for e in errors], dtype=bool)
     results.whole = bool(np.any(whole & ok))
     results.contact = bool(np.any(~whole & ok))
-    results.features = [f for f, _ in active]
+    # a feature none of whose rows is on (`--stresses no`) prints no note
+    results.features = [f for f, st in active if np.any(st.rows)]
     for f, st in active:
         names = [c for c in f.fields if c in produced]
         if getattr(st, "whole", None) is not None:

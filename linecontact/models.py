@@ -915,6 +915,11 @@ class ISO16281Model(_SteelModel):
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
+#: The smallest normal double: a dimensionless depth or force below it is refused by
+#: the universal curve (a subnormal has lost precision, validity.check_interval).
+_TINY = float(np.finfo(float).tiny)
+
+
 @register
 @document(DR=DEPTH_OVER_RADIUS)
 class UniversalModel(ContactModel):
@@ -1106,13 +1111,16 @@ class UniversalModel(ContactModel):
             dmax = curve.d_max
             psi_end = curve.psi(np.minimum(dlim / dscale, dmax))
             if by_force:
-                inside = x <= psi_end * fscale
+                # Psi = F/scale below the smallest normal double (F = 1e-301 N on a
+                # steel roller) is refused by the curve, as by one model: such an
+                # element is left to its model's message, not the whole call to None
+                inside = (x <= psi_end * fscale) & (x / fscale >= _TINY)
                 F = x
                 d = curve.depth_of_psi(np.where(inside, np.minimum(F / fscale, psi_end),
                                                 psi_end)) * dscale
                 d = np.minimum(d, dlim)
             else:
-                inside = x <= dlim
+                inside = (x <= dlim) & (x / dscale >= _TINY)   # as Psi above, d~
                 d = x
                 F = curve.psi(np.minimum(np.where(inside, d, dlim) / dscale, dmax)) * fscale
             k = curve.dpsi(np.minimum(np.where(inside, d, dlim) / dscale, dmax)) * E * L

@@ -474,3 +474,23 @@ def test_universal_table_end_that_rounds_above_d_max_is_accepted():
     assert got is not None and got[1].all()
     for k in ("force", "depth", "stiffness", "contact_radius"):
         assert np.array_equal(got[0][k], one[k]), k  # the same operations: equal values
+
+
+def test_evaluate_many_leaves_a_subnormal_psi_to_its_model():
+    """F = 1e-301 N on a steel roller (a normal double) gives Psi = F R/(E* L^3) below
+    the smallest normal double, which one model refuses. evaluate_many must mark that
+    element outside (its model words the refusal) and still cover the others; it
+    returned None, sending a whole batch with one such row off its array path."""
+    import numpy as np
+
+    from linecontact.models import UniversalModel
+    from linecontact.validity import OutOfRangeError
+
+    R, L, E = 5e-3, 1e-2, 2e11
+    F = np.array([1e-301, 1e3])
+    with pytest.raises(OutOfRangeError):
+        UniversalModel(R, L, E).evaluate(force=F[:1])
+    got = UniversalModel.evaluate_many([R, R], [L, L], [E, E], force=F)
+    assert got is not None and got[1].tolist() == [False, True]
+    one = UniversalModel(R, L, E).evaluate(force=F[1:])
+    assert got[0]["depth"][1] == one["depth"][0] and np.isnan(got[0]["depth"][0])

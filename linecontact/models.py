@@ -915,6 +915,11 @@ class ISO16281Model(_SteelModel):
                "(whole roller Q = 35948 L^(8/9) delta^(10/9), two contacts)")
 
 
+#: The smallest normal double: a dimensionless depth or force below it is refused by
+#: the universal curve (a subnormal has lost precision, validity.check_interval).
+_TINY = float(np.finfo(float).tiny)
+
+
 @register
 @document(DR=DEPTH_OVER_RADIUS)
 class UniversalModel(ContactModel):
@@ -1014,7 +1019,10 @@ class UniversalModel(ContactModel):
         call needs it twice; a spline evaluation with its range check each time)."""
         key = (self.radius, self.length, self.extrapolate, self.curve)
         if getattr(self, "_psi_end_key", None) != key:
-            self._psi_end_value = float(self.curve.psi(self.depth_limit / self._dscale))
+            # min: d_max L^2/R / (L^2/R) may round one ulp above d_max (R = 0.5 mm,
+            # L = 1 um), which the curve would refuse
+            self._psi_end_value = float(self.curve.psi(
+                min(self.depth_limit / self._dscale, self.curve.d_max)))
             self._psi_end_key = key
         return self._psi_end_value
 
@@ -1042,7 +1050,8 @@ class UniversalModel(ContactModel):
     def _dt(self, depth):
         d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
                            hint=self._limit_hint())
-        return d / self._dscale
+        # d <= depth_limit was checked; d/scale may still round above d_max at the end
+        return np.minimum(d / self._dscale, self.curve.d_max)
 
     def _psi_of_force(self, force):
         F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
@@ -1097,18 +1106,24 @@ class UniversalModel(ContactModel):
             fscale = E * np.array([v ** 3 for v in lengths]) / R
             limited = DEPTH_OVER_RADIUS.high * R < curve.d_max * dscale
             dlim = np.where(limited, DEPTH_OVER_RADIUS.high * R, curve.d_max * dscale)
-            psi_end = curve.psi(dlim / dscale)
+            # clipped to d_max as one model does (UniversalModel._dt: d_max L^2/R
+            # divided by L^2/R may round one ulp above it)
+            dmax = curve.d_max
+            psi_end = curve.psi(np.minimum(dlim / dscale, dmax))
             if by_force:
-                inside = x <= psi_end * fscale
+                # Psi = F/scale below the smallest normal double (F = 1e-301 N on a
+                # steel roller) is refused by the curve, as by one model: such an
+                # element is left to its model's message, not the whole call to None
+                inside = (x <= psi_end * fscale) & (x / fscale >= _TINY)
                 F = x
                 d = curve.depth_of_psi(np.where(inside, np.minimum(F / fscale, psi_end),
                                                 psi_end)) * dscale
                 d = np.minimum(d, dlim)
             else:
-                inside = x <= dlim
+                inside = (x <= dlim) & (x / dscale >= _TINY)   # as Psi above, d~
                 d = x
-                F = curve.psi(np.where(inside, d, dlim) / dscale) * fscale
-            k = curve.dpsi(np.where(inside, d, dlim) / dscale) * E * L
+                F = curve.psi(np.minimum(np.where(inside, d, dlim) / dscale, dmax)) * fscale
+            k = curve.dpsi(np.minimum(np.where(inside, d, dlim) / dscale, dmax)) * E * L
             a = k / (2 * E)
         ok[ok] = inside
         res = {}

@@ -452,3 +452,45 @@ def test_cylinders_whose_scales_overflow_are_refused_by_every_model(key, length)
     (before: an OverflowError from one, depth 0 or NaN from others)."""
     with pytest.raises(OutOfRangeError, match="length = 1e[+-]"):
         get_model(key, R5, length, E)
+
+
+def test_universal_table_end_that_rounds_above_d_max_is_accepted():
+    """R = 0.5 mm, L = 1 um: the table's end d~_max L^2/R divided back by L^2/R rounds
+    one ulp above d~_max = 30. The model must still give its force limit and accept a
+    load at that limit (it refused every load with 'd_tilde = 30 is outside (0, 30]'),
+    and evaluate_many must cover the cylinder with the model's own values (it returned
+    None, dropping a whole batch off its array path)."""
+    import numpy as np
+
+    from linecontact.models import UniversalModel
+
+    R, L, E = 0.5e-3, 1e-6, 230e9
+    m = UniversalModel(R, L, E)
+    assert m.depth_limit / m._dscale > m.curve.d_max  # the rounding this test is about
+    F = np.array([m.force_limit, 0.5 * m.force_limit])
+    one = m.evaluate(force=F)
+    assert abs(one["depth"][0] / m.depth_limit - 1) < 1e-12, "F_max maps to d_max"
+    got = UniversalModel.evaluate_many([R, R], [L, L], [E, E], force=F)
+    assert got is not None and got[1].all()
+    for k in ("force", "depth", "stiffness", "contact_radius"):
+        assert np.array_equal(got[0][k], one[k]), k  # the same operations: equal values
+
+
+def test_evaluate_many_leaves_a_subnormal_psi_to_its_model():
+    """F = 1e-301 N on a steel roller (a normal double) gives Psi = F R/(E* L^3) below
+    the smallest normal double, which one model refuses. evaluate_many must mark that
+    element outside (its model words the refusal) and still cover the others; it
+    returned None, sending a whole batch with one such row off its array path."""
+    import numpy as np
+
+    from linecontact.models import UniversalModel
+    from linecontact.validity import OutOfRangeError
+
+    R, L, E = 5e-3, 1e-2, 2e11
+    F = np.array([1e-301, 1e3])
+    with pytest.raises(OutOfRangeError):
+        UniversalModel(R, L, E).evaluate(force=F[:1])
+    got = UniversalModel.evaluate_many([R, R], [L, L], [E, E], force=F)
+    assert got is not None and got[1].tolist() == [False, True]
+    one = UniversalModel(R, L, E).evaluate(force=F[1:])
+    assert got[0]["depth"][1] == one["depth"][0] and np.isnan(got[0]["depth"][0])

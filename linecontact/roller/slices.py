@@ -62,6 +62,36 @@ class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
 
+def _fraction_to_boundary(qs, cs, dq, dc):
+    """The Newton step's fraction alpha <= 1 that keeps the slice loads q and c = q/b^2
+    positive (q falls to no less than 5 %, c to no less than 20 % of its value in one
+    step), and the slices whose load limited it (`hit_q`)."""
+    alpha = 1.0
+    hit_q = qs + dq <= 0.05 * qs
+    if np.any(hit_q):
+        alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
+    hit_c = cs + dc <= 0.2 * cs
+    if np.any(hit_c):
+        alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+    return alpha, hit_q
+
+
+def _drop_blocked(S, q, blocked, hit_q, qsc):
+    """The loaded set S after a damped step: a slice whose load limited the step three
+    times running, or fell to 1e-12 of the largest `qsc`, leaves the contact (q = 0;
+    `q` and the counters `blocked` are updated in place)."""
+    blocked[S[hit_q]] += 1
+    blocked[S[~hit_q]] = 0
+    leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
+    if np.any(leave):
+        q[S[leave]] = 0.0
+        blocked[S[leave]] = 0
+        S = S[~leave]
+        if len(S) == 0:
+            raise ConvergenceError("every slice left the contact")
+    return S
+
+
 class SliceEquations:
     """Slice geometry and the Newton / active-set solver in scaled variables.
 
@@ -153,14 +183,7 @@ class SliceEquations:
             step = -np.linalg.solve(J * rowsc[:, None] * colsc[None, :],
                                     res * rowsc) * colsc
             dq, dc = step[:ns], step[ns:]
-            # fraction to the boundary: q and c = q/b^2 stay positive
-            alpha = 1.0
-            hit_q = qs + dq <= 0.05 * qs
-            if np.any(hit_q):
-                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
-            hit_c = cs + dc <= 0.2 * cs
-            if np.any(hit_c):
-                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
             q[S] = qs + alpha * dq
             c[S] = cs + alpha * dc
             if alpha == 1.0:
@@ -168,15 +191,7 @@ class SliceEquations:
                 if np.max(np.abs(dq)) <= tol * qsc and np.max(np.abs(dc)) * R <= tol:
                     return S
                 continue
-            blocked[S[hit_q]] += 1
-            blocked[S[~hit_q]] = 0
-            leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
-            if np.any(leave):
-                q[S[leave]] = 0.0
-                blocked[S[leave]] = 0
-                S = S[~leave]
-                if len(S) == 0:
-                    raise ConvergenceError("every slice left the contact")
+            S = _drop_blocked(S, q, blocked, hit_q, qsc)
         raise ConvergenceError("Newton iteration on the slice loads did not converge "
                                "in 400 steps")
 
@@ -399,13 +414,7 @@ class SliceEquations:
                     q[S[out]] = 0.0
                     S = S[~out]
                     continue
-            alpha = 1.0
-            hit_q = qs + dq <= 0.05 * qs
-            if np.any(hit_q):
-                alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
-            hit_c = cs + dc <= 0.2 * cs
-            if np.any(hit_c):
-                alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
+            alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
             # keep the rigid overlap positive: no step lowers it by more than half its
             # largest value (d stays above first contact)
             dmax = float(np.max(over))
@@ -438,15 +447,7 @@ class SliceEquations:
                         c[add] = 1.0 / (4 * R)
                         S = np.union1d(S, add)
             else:
-                blocked[S[hit_q]] += 1
-                blocked[S[~hit_q]] = 0
-                leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
-                if np.any(leave):
-                    q[S[leave]] = 0.0
-                    blocked[S[leave]] = 0
-                    S = S[~leave]
-                    if len(S) == 0:
-                        raise ConvergenceError("every slice left the contact")
+                S = _drop_blocked(S, q, blocked, hit_q, qsc)
             if force is not None or zero_moment:
                 it = s.iterations
                 s = regrid(d, theta)

@@ -199,32 +199,7 @@ class SliceEquations:
         """Active-set solution at depth d and tilt theta; returns (S, q, c)."""
         n, R = self.n, self.R
         over = d + theta * self.x - self.P
-        S = np.flatnonzero(over > 0)
-        none_in_contact = ConvergenceError(
-            f"no slice is in contact at d = {d:.6g} m: the contact is narrower than one "
-            "slice (too small a load for the slicing)")
-        if S.size == 0:  # e.g. d - d0 below the rounding of d (a force of 1e-300 N)
-            raise none_in_contact
-        q = np.zeros(n)
-        c = np.full(n, 1.0 / (4 * R))
-        if warm is not None and np.any(warm[0][S] > 0):
-            q[S] = warm[0][S]
-            c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
-            S = S[q[S] > 0]
-        else:
-            # cold start: the linear problem with frozen strip widths, twice (the second
-            # time with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)
-            b0 = np.sqrt(R * over[S])
-            for sweep in range(2):
-                for _ in range(n):
-                    qs = np.linalg.solve(self.kernels(S, b0)[0], over[S])
-                    if np.all(qs > 0):
-                        break
-                    S, b0 = S[qs > 0], b0[qs > 0]
-                    if S.size == 0:
-                        raise none_in_contact
-                b0 = np.sqrt(4 * R * qs)
-            q[S] = qs
+        S, q, c = self.start(d, theta, warm)
         for _ in range(n + 1):
             S = self.newton(S, q, c, over, tol)
             rest = np.setdiff1d(np.arange(n), S)
@@ -291,10 +266,11 @@ class SliceEquations:
         n, R = self.n, self.R
         over = d + theta * self.x - self.P
         S = np.flatnonzero(over > 0)
-        if S.size == 0:
-            raise ConvergenceError(
-                f"no slice is in contact at d = {d:.6g} m: the contact is narrower than "
-                "one slice (too small a load for the slicing)")
+        none_in_contact = ConvergenceError(
+            f"no slice is in contact at d = {d:.6g} m: the contact is narrower than one "
+            "slice (too small a load for the slicing)")
+        if S.size == 0:  # e.g. d - d0 below the rounding of d (a force of 1e-300 N)
+            raise none_in_contact
         q = np.zeros(n)
         c = np.full(n, 1.0 / (4 * R))
         if warm is not None and np.any(warm[0][S] > 0):
@@ -309,7 +285,7 @@ class SliceEquations:
                     break
                 S, b0 = S[qs > 0], b0[qs > 0]
                 if S.size == 0:
-                    raise ConvergenceError(f"no slice is in contact at d = {d:.6g} m")
+                    raise none_in_contact
             b0 = np.sqrt(4 * R * qs)
         q[S] = qs
         return S, q, c

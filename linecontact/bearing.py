@@ -1108,21 +1108,28 @@ class RadialRollerBearing:
         k[on] = kk
         return dr, Q, k, self._approach(dr), sol
 
-    def _solve_sliced(self, F):
-        """Profiled rollers: each contact's coupled-slice solution tabulated over the
-        depths the bearing needs (the load range first estimated with the universal
-        curve), the two in series at equal load, inverted like a law."""
+    def _universal_start(self, F):
+        """The same bearing with the universal-curve law (a straight roller) at the
+        radial load F: the bearing, its roller law, its delta_r and the law grid's
+        fourth output (the straight roller's contacts), the start of the profiled and
+        tilted solves."""
         est = RadialRollerBearing(self.rollers, self.pitch_diameter,
                                   self.roller_diameter, self.length, self.clearance,
                                   estar=self.estar, azimuth0=self.azimuth0,
                                   rating=self.rating)
         Qg0, dg0, kg0, s0 = est._law_grid(F)
         law0 = _Law(Qg0, dg0, kg0)
-        dr0 = est._equilibrium(law0, F)
+        return est, law0, est._equilibrium(law0, F), s0
+
+    def _solve_sliced(self, F):
+        """Profiled rollers: each contact's coupled-slice solution tabulated over the
+        depths the bearing needs (the load range first estimated with the universal
+        curve), the two in series at equal load, inverted like a law."""
+        est, law0, dr0, s0 = self._universal_start(F)
         Qmax0 = float(np.max(law0.force(est._approach(dr0))[0]))
         lo, hi = 1e-3 * Qmax0, 1.6 * Qmax0
         (dep_i, force_i), (dep_o, force_o) = self._contacts()
-        lnQ0 = np.log(Qg0)
+        lnQ0 = law0.lnQ
         tables = []
         for dep, straight in ((dep_i, s0.depth_inner), (dep_o, s0.depth_outer)):
             ds = np.exp(np.interp(np.log([lo, hi]), lnQ0, np.log(straight)))
@@ -1236,13 +1243,7 @@ class RadialRollerBearing:
         pairs = [None] * n
         first = None
         # start: delta_r of the aligned universal-curve bearing
-        est = RadialRollerBearing(self.rollers, self.pitch_diameter,
-                                  self.roller_diameter, self.length, self.clearance,
-                                  estar=self.estar, azimuth0=self.azimuth0,
-                                  rating=self.rating)
-        Qg0, dg0, kg0, _ = est._law_grid(F)
-        law0 = _Law(Qg0, dg0, kg0)
-        dr = est._equilibrium(law0, F)
+        _, _, dr, _ = self._universal_start(F)
         th = 0.0 if not given_tilt else theta
         L = self.length
         u = np.full((n, 2), np.nan)      # (d_inner, roller tilt) of each group

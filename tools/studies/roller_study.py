@@ -251,7 +251,9 @@ def run_case(task):
 
 # --- the study ---------------------------------------------------------------------
 
-def add_arguments(parser):
+def add_grid_arguments(parser):
+    """--n-x, --n-y, --tol: the 3D BEM grid of a roller case (this study's and the
+    stress study's, which solves the same contact)."""
     parser.add_argument("--n-x", type=int, default=128,
                         help="cells along the axis over the contact window, coarser of "
                              "the two grids (default 128)")
@@ -260,6 +262,10 @@ def add_arguments(parser):
     parser.add_argument("--tol", type=float, default=1e-7,
                         help="contact-solver tolerance: gap error / largest "
                              "interference (default 1e-7)")
+
+
+def add_arguments(parser):
+    add_grid_arguments(parser)
     parser.add_argument("--check-every", type=int, default=7,
                         help="every k-th case also on a third grid (4x) to measure the "
                              "convergence order (default 7, so that all tilts are sampled; 0: never)")

@@ -39,7 +39,7 @@ import numpy as np
 
 from ..bem.roller import grid_convergence, solve_roller_force
 from ..bem.stress import MEASURES, StressField
-from .roller_study import DIAMETER, ESTAR, ROLLERS, make_profile
+from .roller_study import DIAMETER, ESTAR, ROLLERS, add_grid_arguments, make_profile
 from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parents[2]
@@ -187,13 +187,7 @@ def run_case(task):
 
 
 def add_arguments(parser):
-    parser.add_argument("--n-x", type=int, default=128,
-                        help="cells along the axis over the contact window, coarser of "
-                             "the two grids (default 128)")
-    parser.add_argument("--n-y", type=int, default=32,
-                        help="cells across the strip |y| <= 1.25 b (default 32)")
-    parser.add_argument("--tol", type=float, default=1e-7,
-                        help="contact-solver tolerance (default 1e-7)")
+    add_grid_arguments(parser)
     parser.add_argument("--quick", action="store_true", help="6 cases: a smoke run")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for stress_accuracy.csv (default tables/)")

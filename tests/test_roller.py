@@ -434,6 +434,21 @@ def test_uncovered_profile_and_coarse_slices_are_noted():
                                              n_slices=50)
 
 
+def test_contact_closer_to_an_infinite_end_than_measured_is_noted():
+    """The table measures the end zone of logarithmic profiles down to the smallest
+    contact distance from the roller end its BEM found (header
+    covered_infinite_end_gap_over_length); a contact closer than that is named outside
+    the measured range, one farther is not."""
+    from linecontact.roller.coverage import coverage_note
+    cov, _ = _covered()
+    if "infinite_end_gap_over_length" not in cov:
+        pytest.skip("the table predates covered_infinite_end_gap_over_length")
+    lo = cov["infinite_end_gap_over_length"][0]
+    args = (5e-3, 14e-3, 115.385e9, "lundberg", 4200.0, 0.0, 1e-5)
+    assert "drop is infinite" in coverage_note(*args, end_gap=0.5 * lo)
+    assert "drop is infinite" not in coverage_note(*args, end_gap=2 * lo + 1e-6)
+
+
 def test_convergence_failure_names_the_geometry():
     """A slice solve that fails on a roller far shorter than its contact is wide (L/D =
     5e-5, b = 665 L at 1 N) says so in numbers: the slices are strips across the roller

@@ -443,9 +443,12 @@ class ProfiledRoller:
                          "parabolic gap y^2/(2R) is inaccurate")
         with np.errstate(invalid="ignore"):
             approach = float(np.max(d + th * self._fx - self._fP))
+        gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
+            [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,
                                     self.profile.key, F, th, approach, free_tilt,
-                                    edge is not None, self.n_slices))
+                                    edge is not None, self.n_slices,
+                                    min(gaps) if gaps else None))
         its, self.iterations = self.iterations, 0
         return RollerSolution(
             depth=float(d), tilt=float(th), force=float(F), moment=float(M),

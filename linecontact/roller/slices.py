@@ -10,7 +10,7 @@ import numpy as np
 
 from ..profiles import TILT_RANGE
 from ..validity import Interval
-from .kernel import strip_values
+from .kernel import far_field_coefficients, strip_values
 
 __all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE", "SLICE_GRADING"]
 
@@ -56,6 +56,39 @@ def _unit_geometry(n, grading):
         np.fill_diagonal(lr, 0.0)
         _GEOMETRY[key] = (near, far, lr)
     return _GEOMETRY[key]
+
+
+#: The far field of the strip kernel: pairs whose near-edge tau = t/b is at least
+#: _TAU_FAR take the first _K_FAR terms of its series in b^2/t^2 (truncation below
+#: 4e-15 absolute in each function at tau = 3; kernel.far_field_coefficients), the rest
+#: (the near band and the diagonal) the spline table; above _N_FAR slices the
+#: n x n x _K_FAR geometry is not stored and every pair reads the table.
+_TAU_FAR = 3.0
+_K_FAR = 14
+_N_FAR = 400
+_FAR = {}
+_FAR_COEF = far_field_coefficients(_K_FAR)            # (_K_FAR, 4)
+_FAR_POW = np.arange(1, _K_FAR + 1)
+
+
+def _far_geometry(n, grading):
+    """G[i, k, j] = tf^-2(j+1) - tn^-2(j+1) for source i, target k on the unit interval
+    (zero on the diagonal), cached per (n, grading) (the last two)."""
+    key = (n, grading)
+    if key not in _FAR:
+        if len(_FAR) >= 2:
+            _FAR.clear()
+        near, far, _ = _unit_geometry(n, grading)
+        un, uf = near.T ** -2, far.T ** -2          # (source, target)
+        pn, pf = un.copy(), uf.copy()
+        G = np.empty((n, n, _K_FAR))
+        for j in range(_K_FAR):
+            G[:, :, j] = pf - pn
+            pn *= un
+            pf *= uf
+        G[np.arange(n), np.arange(n)] = 0.0
+        _FAR[key] = G
+    return _FAR[key]
 
 
 class ConvergenceError(RuntimeError):
@@ -105,6 +138,7 @@ class SliceEquations:
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
         # slice boundaries lo + (hi - lo) g(k/n), centres midway (slice_positions)
+        self.grading = grading
         self.m, self.dg = slice_positions(n, grading)
         span = x_hi - x_lo
         self.w = span * self.dg                  # slice widths
@@ -128,8 +162,65 @@ class SliceEquations:
         A = 2 ln(w_i/b_i) + 2 r, D = 2 p - 4, EA = 2 tau a', ED = 2 tau p'
         (:func:`linecontact.roller.kernel.strip_influence` for r, p and their
         derivatives).
+
+        Where tau >= 3 at the near edge the four differences are the series in
+        (b_i/t)^2 (:func:`linecontact.roller.kernel.far_field_coefficients`), a sum
+        over powers of precomputed unit-geometry differences (one small matrix
+        product per source); the near band and the diagonal read the spline table.
         """
         T = S if targets is None else targets
+        if self.n > _N_FAR:
+            return self._kernels_table(S, b, T)
+        n = self.n
+        ib = self.span / b
+        G = _far_geometry(n, self.grading)
+        contiguous = len(S) == S[-1] - S[0] + 1
+        cols = slice(S[0], S[-1] + 1) if contiguous else S
+        beta = (b * (1.0 / self.span)) ** 2
+        C = np.power(beta[:, None], _FAR_POW)[:, :, None] * _FAR_COEF   # (ns, K, 4)
+        out = np.matmul(G[cols], C)                                         # (ns, n, 4)
+        allt = len(T) == n
+        if allt:
+            out = out.transpose(2, 1, 0)                                    # (4, n, ns)
+            tn, tf, lr = self._tnear[:, cols], self._tfar[:, cols], self._logratio[:, cols]
+        else:
+            out = out[:, T].transpose(2, 1, 0)
+            ix = np.ix_(T, S)
+            tn, tf, lr = self._tnear[ix], self._tfar[ix], self._logratio[ix]
+        A = lr + out[0]
+        EA = out[1].copy()
+        D = out[2].copy()
+        ED = out[3].copy()
+        # the near band (and the diagonal): the spline table at both edges
+        near = tn < _TAU_FAR * (1.0 / ib)
+        if allt:
+            near[S, np.arange(len(S))] = True
+        else:
+            near |= T[:, None] == S[None, :]
+        kk, ii = np.nonzero(near)
+        if len(kk):
+            ibi = ib[ii]
+            vals = strip_values(np.concatenate([tf[kk, ii] * ibi, tn[kk, ii] * ibi]))
+            m = len(kk)
+            r, ta, p, tp = vals[0], vals[1], vals[2], vals[3]
+            A[kk, ii] = lr[kk, ii] + (r[:m] - r[m:])
+            EA[kk, ii] = ta[:m] - ta[m:]
+            D[kk, ii] = p[:m] - p[m:]
+            ED[kk, ii] = tp[:m] - tp[m:]
+            Tk = T[kk] if not allt else kk
+            dg = Tk == S[ii]
+            if np.any(dg):
+                kd, idg = kk[dg], ii[dg]
+                rn, tan, pn, tpn = r[m:][dg], ta[m:][dg], p[m:][dg], tp[m:][dg]
+                A[kd, idg] = 2 * (np.log(self.w[S[idg]] / b[idg]) + rn)
+                D[kd, idg] = 2 * pn - 4.0
+                EA[kd, idg] = 2 * tan
+                ED[kd, idg] = 2 * tpn
+        return A, D, EA, ED
+
+    def _kernels_table(self, S, b, T):
+        """kernels() with every pair read from the spline table (the reference the
+        far-field series is checked against, and the method above _N_FAR slices)."""
         if len(T) == self.n:                   # every slice a target (T = 0..n-1)
             tn, tf, lr = self._tnear[:, S], self._tfar[:, S], self._logratio[:, S]
         else:

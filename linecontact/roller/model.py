@@ -228,8 +228,8 @@ class ProfiledRoller:
         # the ends
         xp = np.minimum(x + h, hi * (1 - 1e-9))
         xm = np.maximum(x - h, lo * (1 - 1e-9))
-        return (roller_drop(self.profile, self.length, xp)
-                - roller_drop(self.profile, self.length, xm)) / (xp - xm)
+        P = roller_drop(self.profile, self.length, np.concatenate([xp, xm]))
+        return (P[:len(x)] - P[len(x):]) / (xp - xm)
 
     # -- depth control ---------------------------------------------------------------
     def at_depth(self, depth, tilt=0.0):
@@ -348,7 +348,14 @@ class ProfiledRoller:
         """Solve with the force and/or zero moment imposed, Newton on the slice loads
         together with d and/or theta (SliceEquations.bordered) from depth d, tilt th."""
         s = self._grid(d, th)
-        S, q, c = s.start(d, th, self._warm_start(s, d, th))
+        warm = self._warm_start(s, d, th)
+        first = None
+        if warm is None and force is not None:
+            first = s.start_at_force(self._grid, d, th, force, zero_moment)
+        if first is None:
+            S, q, c = s.start(d, th, warm)
+        else:
+            s, S, q, c, d, th = first
         s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
                                                 zero_moment, tol)
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),

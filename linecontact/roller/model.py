@@ -256,8 +256,15 @@ class ProfiledRoller:
         s = self._grid(d, th)
         warm = self._warm_start(s, d, th)
         first = None
-        if warm is None and force is not None:
-            first = s.start_at_force(self._grid, d, th, force, zero_moment)
+        if force is not None:
+            width = None
+            if warm is not None:
+                # the last solution's strip widths, scaled as b ~ overlap^(1/2)
+                xi_o, qo, co, eo = self._warm
+                on = qo > 0
+                ratio = float(np.max(d + th * s.x - s.P)) / eo
+                width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
+            first = s.start_at_force(self._grid, d, th, force, zero_moment, width)
         if first is None:
             S, q, c = s.start(d, th, warm)
         else:

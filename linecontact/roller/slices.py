@@ -197,33 +197,49 @@ class SliceEquations:
             EA = out[1].copy()
             D = out[2].copy()
             ED = out[3].copy()
-        # the near band (and the diagonal): the spline table at both edges
+        # the near band: the spline table at both edges; the diagonal: at w_i/2 b_i
         near = tn < _TAU_FAR * (1.0 / ib)
-        if allt:
-            near[S, np.arange(len(S))] = True
-        else:
-            near |= T[:, None] == S[None, :]
         kk, ii = np.nonzero(near)
-        if len(kk):
-            ibi = ib[ii]
-            vals = strip_values(np.concatenate([tf[kk, ii] * ibi, tn[kk, ii] * ibi]))
-            m = len(kk)
-            r, ta, p, tp = vals[0], vals[1], vals[2], vals[3]
-            A[kk, ii] = lr[kk, ii] + (r[:m] - r[m:])
+        ibi = ib[ii]
+        m = len(kk)
+        ns = len(S)
+        vals = strip_values(np.concatenate([tf[kk, ii] * ibi, tn[kk, ii] * ibi,
+                                            (0.5 * self.span) * self.dg[S] / b]))
+        r, ta, p, tp = vals[0], vals[1], vals[2], vals[3]
+        A[kk, ii] = lr[kk, ii] + (r[:m] - r[m:2 * m])
+        if not a_only:
+            EA[kk, ii] = ta[:m] - ta[m:2 * m]
+            D[kk, ii] = p[:m] - p[m:2 * m]
+            ED[kk, ii] = tp[:m] - tp[m:2 * m]
+        if allt and contiguous:
+            # the diagonal of the loaded rows, a strided view of each matrix
+            dA = A[cols].reshape(-1)[::ns + 1]
+            views = None if a_only else (D[cols].reshape(-1)[::ns + 1],
+                                         EA[cols].reshape(-1)[::ns + 1],
+                                         ED[cols].reshape(-1)[::ns + 1])
+            kd = idg = None
+        else:
+            Tk = T if not allt else np.arange(n)
+            kd, idg = np.nonzero(Tk[:, None] == S[None, :])
+        rd, tad, pd, tpd = r[2 * m:], ta[2 * m:], p[2 * m:], tp[2 * m:]
+        if kd is not None:
+            rd, tad, pd, tpd = rd[idg], tad[idg], pd[idg], tpd[idg]
+            bd, wd = b[idg], self.w[S[idg]]
+        else:
+            bd, wd = b, self.w[S]
+        diagA = 2 * (np.log(wd / bd) + rd)
+        if kd is None:
+            dA[:] = diagA
             if not a_only:
-                EA[kk, ii] = ta[:m] - ta[m:]
-                D[kk, ii] = p[:m] - p[m:]
-                ED[kk, ii] = tp[:m] - tp[m:]
-            Tk = T[kk] if not allt else kk
-            dg = Tk == S[ii]
-            if np.any(dg):
-                kd, idg = kk[dg], ii[dg]
-                rn, tan, pn, tpn = r[m:][dg], ta[m:][dg], p[m:][dg], tp[m:][dg]
-                A[kd, idg] = 2 * (np.log(self.w[S[idg]] / b[idg]) + rn)
-                if not a_only:
-                    D[kd, idg] = 2 * pn - 4.0
-                    EA[kd, idg] = 2 * tan
-                    ED[kd, idg] = 2 * tpn
+                views[0][:] = 2 * pd - 4.0
+                views[1][:] = 2 * tad
+                views[2][:] = 2 * tpd
+        else:
+            A[kd, idg] = diagA
+            if not a_only:
+                D[kd, idg] = 2 * pd - 4.0
+                EA[kd, idg] = 2 * tad
+                ED[kd, idg] = 2 * tpd
         return A, D, EA, ED
 
     def _kernels_table(self, S, b, T):
@@ -393,19 +409,21 @@ class SliceEquations:
         q[S] = qs
         return S, q, c
 
-    def start_at_force(self, regrid, d, theta, force, zero_moment=False):
+    def start_at_force(self, regrid, d, theta, force, zero_moment=False, width=None):
         """A cold first (equations, S, q, c, d, theta) for the force `force` [N] (and
         zero moment): the linear problem with frozen strip widths and the force (and
         moment) rows bordering it, so that d (and theta) come out of the same solve,
         twice: the second time on the grid of the first answer's d and theta, with its
         plane-strain widths b^2 = 4 R q/(pi E*) mapped onto that grid. Returns None
         where the first answer leaves no contact (the caller then starts at its own
-        depth, :meth:`start`)."""
+        depth, :meth:`start`). Given `width` (relative positions in the overlap
+        interval and strip half-widths there, from a solution nearby), one solve with
+        those widths instead."""
         s, R = self, self.R
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
-        width = None                                 # (relative position, b) of sweep 1
-        for sweep in range(2):
+        sweeps = 2 if width is None else 1
+        for sweep in range(sweeps):
             over = d + theta * s.x - s.P
             S = np.flatnonzero(over > 0)
             if S.size == 0:
@@ -447,7 +465,7 @@ class SliceEquations:
                 return None
             width = ((s.x[S] - s.lo) / (s.hi - s.lo), np.sqrt(4 * R * qs))
             qrel = qs
-            if sweep == 0:
+            if sweep == 0 and sweeps == 2:
                 d, theta = d_new, th_new
                 s2 = regrid(d, theta)
                 s2.iterations = s.iterations

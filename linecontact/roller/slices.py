@@ -22,32 +22,75 @@ N_SLICES = Interval("n_slices", 10, 4000)
 SLICE_GRADING = Interval("grading", 0.0, 1.0, high_open=True)
 
 
-def slice_positions(n, grading):
-    """Centres and widths of n slices on [0, 1], graded towards both ends.
+def slice_positions(n, grading, refine=0):
+    """Centres and widths of the slices on [0, 1], graded towards both ends.
 
     The boundaries are g(k/n), k = 0..n, with g(s) = s - beta sin(2 pi s)/(2 pi): the
     end slices are (1 - beta) times the uniform width 1/n and the middle ones
-    (1 + beta) times (beta = 0: uniform). Returns the centres (midway between the
-    boundaries) and the widths, both as fractions of the interval.
+    (1 + beta) times (beta = 0: uniform). With `refine` = l >= 1 the last
+    :data:`REFINED_SLICES` slices at each end (a region of width W) are replaced by
+    slices growing geometrically by at most :data:`REFINE_RATIO` from W 2^-(l + 4) at
+    the end (:func:`end_refined`): where the contact of a logarithmic profile ends
+    microns before the roller end, its end zone is narrower than the end slices.
+    Returns the centres (midway between the boundaries) and the widths, both as
+    fractions of the interval (n slices, or n - 2 REFINED_SLICES + 2 k with refine).
     """
     s = np.arange(n + 1) / n
     g = s - grading * np.sin(2 * np.pi * s) / (2 * np.pi)
     g[0], g[-1] = 0.0, 1.0
+    if refine:
+        g = end_refined(g, refine)
     return 0.5 * (g[1:] + g[:-1]), np.diff(g)
+
+
+#: base slices replaced at each end by a refinement (slice_positions)
+REFINED_SLICES = 3
+#: the largest ratio of neighbouring widths in a refined end region
+REFINE_RATIO = 1.1
+
+
+def end_refined(g, level):
+    """Slice boundaries g (increasing, from 0 to 1) with the last REFINED_SLICES
+    slices at each end replaced by k slices whose widths grow geometrically, by a
+    ratio r <= REFINE_RATIO, from w_end = W 2^-(level + 4) at the end (W: the width
+    of the replaced region; k = ceil(ln(1 + W (R - 1)/w_end)/ln R) with R =
+    REFINE_RATIO, then r solves w_end (r^k - 1)/(r - 1) = W)."""
+    m = REFINED_SLICES
+    out = [g[m:len(g) - m]]
+    for side in (0, 1):
+        W = g[m] - g[0] if side == 0 else g[-1] - g[-1 - m]
+        w0 = W * 2.0 ** -(level + 4)
+        R = REFINE_RATIO
+        k = int(math.ceil(math.log(1 + W * (R - 1) / w0) / math.log(R)))
+        # the ratio r <= R at which k widths from w0 fill W: bisection on r
+        lo_r, hi_r = 1.0, R
+        for _ in range(60):
+            r = 0.5 * (lo_r + hi_r)
+            if w0 * (r ** k - 1) / (r - 1) < W:
+                lo_r = r
+            else:
+                hi_r = r
+        edges = np.concatenate([[0.0], np.cumsum(w0 * r ** np.arange(k))])
+        edges *= W / edges[-1]
+        if side == 0:
+            out.insert(0, g[0] + edges[:-1])
+        else:
+            out.append(g[-1] - edges[::-1][1:])
+    return np.concatenate(out)
 
 
 _GEOMETRY = {}
 
 
-def _unit_geometry(n, grading):
+def _unit_geometry(n, grading, refine=0):
     """(near, far, ln(far/near)) distances between slice centres and source slice
     edges on the unit interval (n x n; the diagonal: near = far = w/2, log 0), and the
-    slice centres and widths (slice_positions), cached per (n, grading)."""
-    key = (n, grading)
+    slice centres and widths (slice_positions), cached per (n, grading, refine)."""
+    key = (n, grading, refine)
     if key not in _GEOMETRY:
         if len(_GEOMETRY) > 16:
             _GEOMETRY.clear()
-        m, dg = slice_positions(n, grading)
+        m, dg = slice_positions(n, grading, refine)
         t = np.abs(m[:, None] - m[None, :])
         h = 0.5 * dg[None, :]
         near, far = t - h, t + h
@@ -71,14 +114,15 @@ _FAR_COEF = far_field_coefficients(_K_FAR)            # (_K_FAR, 4)
 _FAR_POW = np.arange(1, _K_FAR + 1)
 
 
-def _far_geometry(n, grading):
+def _far_geometry(n, grading, refine=0):
     """G[i, k, j] = tf^-2(j+1) - tn^-2(j+1) for source i, target k on the unit interval
-    (zero on the diagonal), cached per (n, grading) (the last two)."""
-    key = (n, grading)
+    (zero on the diagonal), cached per (n, grading, refine) (the last two)."""
+    key = (n, grading, refine)
     if key not in _FAR:
         if len(_FAR) >= 2:
             _FAR.clear()
-        near, far = _unit_geometry(n, grading)[:2]
+        near, far = _unit_geometry(n, grading, refine)[:2]
+        n = near.shape[0]                           # the slices, after any refinement
         un, uf = near.T ** -2, far.T ** -2          # (source, target)
         pn, pf = un.copy(), uf.copy()
         G = np.empty((n, n, _K_FAR))
@@ -131,20 +175,21 @@ class SliceEquations:
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0):
         self.R = radius
         self.E = estar
-        self.n = n
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
-        # slice boundaries lo + (hi - lo) g(k/n), centres midway (slice_positions)
-        self.grading = grading
+        # slice boundaries lo + (hi - lo) g(k/n), centres midway (slice_positions;
+        # refine: the end slices split, n grows)
+        self._geometry = (n, grading, refine)        # the key of the cached geometry
         # kernel geometry: for target k and source i the distances from x_k to the source
         # slice's near and far edges, as fractions of the interval (their ratio fixes
         # the log part of the displacement: scale-free, so the same for every grid of
-        # this n and grading; cached)
+        # this n, grading and refinement; cached)
         self._tnear, self._tfar, self._logratio, self.m, self.dg = _unit_geometry(
-            n, grading)
+            n, grading, refine)
+        self.n = len(self.m)
         span = x_hi - x_lo
         self.w = span * self.dg                  # slice widths
         self.x = x_lo + span * self.m
@@ -175,7 +220,7 @@ class SliceEquations:
             return (out[0], None, None, None) if a_only else out
         n = self.n
         ib = self.span / b
-        G = _far_geometry(n, self.grading)
+        G = _far_geometry(*self._geometry)
         contiguous = len(S) == S[-1] - S[0] + 1
         cols = slice(S[0], S[-1] + 1) if contiguous else S
         beta = (b * (1.0 / self.span)) ** 2

@@ -116,10 +116,11 @@ _FAR_POW = np.arange(1, _K_FAR + 1)
 
 def _far_geometry(n, grading, refine=0):
     """G[i, k, j] = tf^-2(j+1) - tn^-2(j+1) for source i, target k on the unit interval
-    (zero on the diagonal), cached per (n, grading, refine) (the last two)."""
+    (zero on the diagonal), cached per (n, grading, refine) (up to 8 of them and
+    64 MB: an end refinement solves on three more grids)."""
     key = (n, grading, refine)
     if key not in _FAR:
-        if len(_FAR) >= 2:
+        if len(_FAR) >= 8 or sum(v.nbytes for v in _FAR.values()) > 2**26:
             _FAR.clear()
         near, far = _unit_geometry(n, grading, refine)[:2]
         n = near.shape[0]                           # the slices, after any refinement
@@ -145,10 +146,10 @@ def _fraction_to_boundary(qs, cs, dq, dc):
     step), and the slices whose load limited it (`hit_q`)."""
     alpha = 1.0
     hit_q = qs + dq <= 0.05 * qs
-    if np.any(hit_q):
+    if hit_q.any():
         alpha = min(alpha, float(np.min(0.95 * qs[hit_q] / -dq[hit_q])))
     hit_c = cs + dc <= 0.2 * cs
-    if np.any(hit_c):
+    if hit_c.any():
         alpha = min(alpha, float(np.min(0.8 * cs[hit_c] / -dc[hit_c])))
     return alpha, hit_q
 
@@ -160,7 +161,7 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
     blocked[S[hit_q]] += 1
     blocked[S[~hit_q]] = 0
     leave = (blocked[S] >= 3) | (q[S] <= 1e-12 * qsc)
-    if np.any(leave):
+    if leave.any():
         q[S[leave]] = 0.0
         blocked[S[leave]] = 0
         S = S[~leave]
@@ -305,7 +306,7 @@ class SliceEquations:
         EA = ta[0] - ta[1]
         ED = tp[0] - tp[1]
         diag = T[:, None] == S[None, :]
-        if np.any(diag):
+        if diag.any():
             kk, ii = np.nonzero(diag)
             A[kk, ii] = 2 * (np.log(self.w[S[ii]] / b[ii]) + r[1, kk, ii])
             D[kk, ii] = 2 * p[1, kk, ii] - 4.0
@@ -368,7 +369,7 @@ class SliceEquations:
             A = self.kernels(S, np.sqrt(q[S] / c[S]), targets=rest)[0]
             pen = over[rest] - A @ q[S]
             add = pen > tol * np.max(over)
-            if not np.any(add):
+            if not add.any():
                 break
             new = rest[add]
             q[new] = pen[add] / 10.0
@@ -433,7 +434,7 @@ class SliceEquations:
             raise none_in_contact
         q = np.zeros(n)
         c = np.full(n, 1.0 / (4 * R))
-        if warm is not None and np.any(warm[0][S] > 0):
+        if warm is not None and (warm[0][S] > 0).any():
             q[S] = warm[0][S]
             c[S] = np.where(warm[0][S] > 0, warm[1][S], c[S])
             return S[q[S] > 0], q, c
@@ -444,7 +445,7 @@ class SliceEquations:
             keep = np.arange(len(S))
             for _ in range(n):
                 qs = np.linalg.solve(A[np.ix_(keep, keep)], over[S[keep]])
-                if np.all(qs > 0):
+                if (qs > 0).all():
                     break
                 keep = keep[qs > 0]
                 if keep.size == 0:
@@ -498,7 +499,7 @@ class SliceEquations:
                     rhs[:ns] = theta * s.x[S] - s.P[S]
                 z = np.linalg.solve(M, rhs)
                 qs = z[:ns]
-                if np.all(qs > 0):
+                if (qs > 0).all():
                     break
                 on = qs > 0
                 S, b0, A = S[on], b0[on], A[np.ix_(on, on)]
@@ -640,13 +641,13 @@ class SliceEquations:
             # a slice at an end of the loaded set that the full step drives to q < 0 is
             # outside the contact: it leaves at once (it would only block the step)
             out = qs + dq < 0
-            if np.any(out) and ns > 2:
+            if out.any() and ns > 2:
                 edge = np.zeros(ns, bool)
                 edge[[0, -1]] = True
                 gaps = np.flatnonzero(np.diff(S) > 1)
                 edge[gaps] = edge[gaps + 1] = True
                 out &= edge
-                if np.any(out) and not np.all(out):
+                if out.any() and not out.all():
                     q[S[out]] = 0.0
                     S = S[~out]
                     continue

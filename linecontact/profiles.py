@@ -986,8 +986,14 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
         raise OutOfRangeError("profile", profile.label,
                               f"a profile covering [{-length / 2:.6g}, {length / 2:.6g}] m",
                               hint=f"it covers [{profile.x_min:.6g}, {profile.x_max:.6g}] m")
-    P = np.asarray(profile.drop(np.minimum(np.maximum(x, profile.x_min), profile.x_max)),
-                   dtype=float)
+    xc = np.minimum(np.maximum(x, profile.x_min), profile.x_max)
+    if type(profile).drop is Profile.drop:
+        # x is inside the profile's range (clamped above): its formula directly, without
+        # the public method's range check (the slice solver asks at every step)
+        with np.errstate(divide="ignore"):
+            P = np.asarray(profile._drop(xc), dtype=float)
+    else:
+        P = np.asarray(profile.drop(xc), dtype=float)
     ok = np.isfinite(P) & (P >= 0)
     if ends_may_be_inf:
         ok |= np.isposinf(P) & (np.abs(x) >= length / 2 * (1 - 1e-12))

@@ -26,6 +26,8 @@ DEFAULT_GRADING = 0.8
 #: (ProfiledRoller._end_refined; docs/profiled_rollers.md, "Slice convergence")
 REFINE_LEVELS = 3
 REFINE_TOL = 2e-3
+#: the relative distances from an infinite-drop end at which _end_root looks first
+_END_STEPS = np.geomspace(1.0, 1e-6, 40)
 
 
 class ProfiledRoller:
@@ -204,7 +206,7 @@ class ProfiledRoller:
         Returns the end and its derivatives with respect to (d, theta)."""
         L = self.length
         end = side * L / 2
-        u = abs(end - x_in) * np.geomspace(1.0, 1e-6, 40)     # distances from the end
+        u = abs(end - x_in) * _END_STEPS                     # distances from the end
         for level in range(2):
             x = end - side * u
             over = d + th * x - roller_drop(self.profile, L, x)
@@ -350,8 +352,20 @@ class ProfiledRoller:
         s = self._grid(d, th)
         warm = self._warm_start(s, d, th)
         first = None
-        if warm is None and force is not None:
-            first = s.start_at_force(self._grid, d, th, force, zero_moment)
+        # the last solution as it is where its force is within 10 % (an end refinement
+        # solves the same force again; a close sweep step), else its strip widths in
+        # the bordered linear start
+        close = (warm is not None and self._memo is not None and force is not None
+                 and abs(force / self._memo[2] - 1) < 0.1)
+        if force is not None and not close:
+            width = None
+            if warm is not None:
+                # the last solution's strip widths, scaled as b ~ overlap^(1/2)
+                xi_o, qo, co, eo = self._warm
+                on = qo > 0
+                ratio = float(np.max(d + th * s.x - s.P)) / eo
+                width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
+            first = s.start_at_force(self._grid, d, th, force, zero_moment, width)
         if first is None:
             S, q, c = s.start(d, th, warm)
         else:

@@ -101,22 +101,25 @@ class NotAKnotSpline:
 
     def _interval(self, xq):
         if self._uniform:
-            i = np.asarray(np.floor((xq - self.x[0]) * (1.0 / self._h)))
-            np.clip(i, 0, self.x.size - 2, out=i)
-            return i.astype(np.intp)
+            # truncation towards zero, then clamped at 0: the floor, clamped, for any
+            # value (in place by minimum and maximum: np.clip's Python layers cost
+            # more than the pass itself on a block)
+            i = np.asarray((xq - self.x[0]) * (1.0 / self._h)).astype(np.intp)
+            np.minimum(i, self.x.size - 2, out=i)
+            return np.maximum(i, 0, out=i)
         return np.searchsorted(self._inner, xq, side="right")
 
     def _horner(self, i, t):
         """((c0 t + c1) t + c2) t + c3 on the intervals i, in place (the same
         operations in the same order as the plain expression)."""
         c = self.c
-        r = np.asarray(c[0][i])
+        r = np.asarray(c[0].take(i))
         r *= t
-        r += c[1][i]
+        r += c[1].take(i)
         r *= t
-        r += c[2][i]
+        r += c[2].take(i)
         r *= t
-        r += c[3][i]
+        r += c[3].take(i)
         return r
 
     def __call__(self, xq, nu=0):
@@ -186,18 +189,39 @@ class NotAKnotSpline:
         """x with s(x) = yq: the inverse table's cubic (an arithmetic lookup on its equal
         spacing), then one Newton step on this spline (also an arithmetic lookup when
         its knots are equally spaced). The table's own error (about 1e-10 in x for
-        the universal curve's 4097 nodes) is squared by the Newton step, to rounding."""
-        x = np.asarray(table(yq))
-        np.clip(x, self.x[0], self.x[-1], out=x)
+        the universal curve's 4097 nodes) is squared by the Newton step, to rounding.
+
+        The step's derivative dx/ds is the inverse table's own slope at yq (its
+        coefficients are gathered for the value anyway): its relative error, about
+        1e-7, multiplies the step of about 1e-10 (tests/test_universal.py holds the
+        result to the whole-spline Newton iteration)."""
+        shape = np.shape(yq)
+        yq = np.asarray(yq, dtype=float).ravel()
+        j = table._interval(yq)
+        tc = table.c
+        u = yq - table.x.take(j)
+        c0, c1, c2 = tc[0].take(j), tc[1].take(j), tc[2].take(j)
+        x = c0 * u
+        x += c1
+        c1 *= 2.0
+        slope = c0
+        slope *= 3.0
+        slope *= u
+        slope += c1                         # 3 c0 u + 2 c1
+        x *= u
+        x += c2
+        x *= u
+        x += tc[3].take(j)
+        slope *= u
+        slope += c2                         # dx/dy = (3 c0 u + 2 c1) u + c2
+        # (an estimate a rounding outside [x_0, x_{n-1}] takes the end interval's cubic)
         i = self._interval(x)
-        t = x - self.x[i]
-        f = self._horner(i, t)
+        f = self._horner(i, x - self.x.take(i))
         f -= yq
-        c0, c1, c2 = (self.c[k][i] for k in range(3))
-        df = (3 * c0 * t + 2 * c1) * t + c2
-        f /= df
+        f *= slope
         np.subtract(x, f, out=x)
-        return np.clip(x, self.x[0], self.x[-1], out=x)
+        np.maximum(x, self.x[0], out=x)
+        return np.minimum(x, self.x[-1], out=x).reshape(shape)
 
 
 class UniformHermite:

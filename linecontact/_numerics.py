@@ -363,7 +363,7 @@ def _excess(u):
     return np.where(small, series, direct)
 
 
-def log1p_excess_root(t):
+def log1p_excess_root(t, *, checked=True):
     r"""The root u >= 0 of :math:`u - \ln(1 + u) = t`, for t >= 0.
 
     .. math:: u = -1 - W_{-1}\left(-e^{-1-t}\right)
@@ -379,6 +379,9 @@ def log1p_excess_root(t):
     ----------
     t : float or array_like
         0 <= t < inf [-]; t = 0 gives u = 0.
+    checked : bool, optional
+        False skips the range check of t, for callers whose t lies in the range by
+        construction (default True).
 
     Returns
     -------
@@ -402,7 +405,7 @@ def log1p_excess_root(t):
     N. M. Temme, Special Functions, Wiley (1996), section 11.2.3.
     """
     t = np.asarray(t, dtype=float)
-    if np.any(~(t >= 0)) or np.any(np.isinf(t)):
+    if checked and (np.any(~(t >= 0)) or np.any(np.isinf(t))):
         raise ValueError("log1p_excess_root: t must be finite and >= 0")
     if t.size == 0:
         return t.copy()
@@ -499,20 +502,45 @@ def _halley(u, t, series):
     return u
 
 
+def _halley_large(u, t):
+    """:func:`_halley` for t >= 2 (u >= 3), with fewer passes: ln(1 + u) by log of the
+    rounded 1 + u (its relative rounding, <= 1.1e-16, moves h by as much absolutely,
+    the root by 1.4e-16 absolutely, under u's own rounding of 4.4e-16), and one
+    reciprocal 1/u in place of two divisions by u."""
+    h = np.empty_like(u)
+    w = np.empty_like(u)
+    r = np.empty_like(u)
+    for _ in range(2):
+        np.add(u, 1.0, out=w)
+        np.log(w, out=h)
+        np.subtract(u, h, out=h)
+        h -= t
+        np.divide(1.0, u, out=r)
+        h *= r                          # h/u
+        w *= h                          # Newton step h (1 + u)/u
+        h *= r
+        h *= -0.5
+        h += 1.0                        # 1 - h/(2 u^2)
+        w /= h
+        u -= w
+    return u
+
+
 def _root_block(t):
     """:func:`log1p_excess_root` of one block (t >= 0, finite), Halley from a start
     within 2.4e-2 relative: the series in s = sqrt(2t) (Temme 1996) for t < 2, the
-    fixed point u = t + ln(1 + u) iterated three times from u = t above."""
+    fixed point u = t + ln(1 + u) iterated three times from u = t above (by log of the
+    rounded 1 + u, exact to 1.1e-16 absolutely there)."""
     u = np.empty_like(t)
     lo = float(t.min()) if t.size else 0.0
     if lo >= 2.0:                                  # the common case: one branch
-        np.log1p(t, out=u)
-        u += t
-        np.log1p(u, out=u)
-        u += t
-        np.log1p(u, out=u)
-        u += t
-        return _halley(u, t, False)
+        np.add(t, 1.0, out=u)
+        for k in range(3):
+            np.log(u, out=u)
+            u += t
+            if k < 2:
+                u += 1.0
+        return _halley_large(u, t)
     for kind, sel in ((0, (t > 0) & (t < 0.04)), (1, (t >= 0.04) & (t < 2.0)),
                       (2, t >= 2.0)):
         if not sel.any():
@@ -521,9 +549,10 @@ def _root_block(t):
         if kind < 2:
             s = np.sqrt(2 * ts)
             us = s * (1 + s * (1 / 3 + s * (1 / 36 + s * (-1 / 270 + s / 4320))))
+            u[sel] = _halley(us, ts, kind == 0)
         else:
-            us = ts + np.log1p(ts + np.log1p(ts + np.log1p(ts)))
-        u[sel] = _halley(us, ts, kind == 0)
+            us = ts + np.log(1.0 + ts + np.log(1.0 + ts + np.log(1.0 + ts)))
+            u[sel] = _halley_large(us, ts)
     u[t == 0] = 0.0
     return u
 

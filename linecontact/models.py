@@ -1062,7 +1062,20 @@ class UniversalModel(ContactModel):
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""
-        return out(self.curve.psi(self._dt(depth)) * self._fscale)
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
+                           hint=self._limit_hint())
+        curve, fscale, dscale = self.curve, self._fscale, self._dscale
+        if d.ndim and d.size and min(d.min() / dscale, curve.d_max) >= curve.d_min:
+            # all on the table: the steps of _dt and the curve's psi, fused in blocks
+            def chain(db):
+                dt = db / dscale
+                psi = curve.on_table_psi(np.minimum(dt, curve.d_max, out=dt))
+                psi *= fscale
+                return psi
+
+            return out(blockwise(chain, d))
+        # d <= depth_limit was checked; d/scale may still round above d_max at the end
+        return out(curve.psi(np.minimum(d / dscale, curve.d_max)) * fscale)
 
     def depth(self, force):
         """d(F) [m]; force [N]."""

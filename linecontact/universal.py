@@ -137,8 +137,15 @@ class UniversalCurve:
     def psi(self, d_tilde):
         r""":math:`\Psi = F R/(E^* L^3)` at :math:`\tilde d = d R/L^2` [-]."""
         return self._evaluate(
-            d_tilde, lambda d: np.exp(self._spline(np.log(d))),
+            d_tilde, self.on_table_psi,
             lambda d: dimensionless_force(d, self.alpha_small, self.beta_small))
+
+    def on_table_psi(self, d_tilde):
+        r""":math:`\Psi` at values of :math:`\tilde d` that lie in [d_min, d_max] (not
+        checked: for callers that have checked them and fuse this elementwise function
+        with their own scaling in blocks, as the universal model's F(d) does)."""
+        x = self._spline(np.log(d_tilde))
+        return np.exp(x, out=x)
 
     def dpsi(self, d_tilde):
         r""":math:`\Psi' = k/(E^* L)` at :math:`\tilde d` [-]."""

@@ -260,3 +260,13 @@ def test_fast_inverse_equals_the_whole_spline_newton_iteration():
     d = m.depth(F)                      # fused blockwise path (all on the table)
     assert np.all(np.abs(np.log(d / m._dscale) - ref[::4]) <= 4e-15 * np.maximum(1.0, np.abs(ref[::4])))
     assert float(m.depth(F[1234])) == d[1234]      # a scalar takes the same steps
+
+
+def test_fused_force_takes_the_steps_of_one_value():
+    """F(d) of an array on the table (scaling and spline fused in blocks) equals F(d)
+    value by value (the unfused steps) exactly: the same operations in the same order."""
+    m = UniversalModel(5e-3, 10e-3, 115.38e9, extrapolate=True)
+    d = np.geomspace(m.curve.d_min * m._dscale * (1 + 1e-9), m.depth_limit, 50001)
+    F = m.force(d)
+    assert all(float(m.force(x)) == y for x, y in zip(d[::97], F[::97]))
+    assert float(m.force(d[-1])) == F[-1]

@@ -172,7 +172,8 @@ def main(argv=None):
     print(f"partial-slip force (bem), bisection / tabulated inverse: {old:.3f} / {new:.3f} s,"
           f" ratio {ratio:.1f}; largest difference {dq:.2g} mu F")
     if args.vs_path:
-        print(f"\npaired with the package of {args.vs_path!r} (old), {args.rounds} rounds of "
+        name = os.path.basename(os.path.normpath(args.vs_path))
+        print(f"\npaired with the package of the checkout {name!r} (old), {args.rounds} rounds of "
               "child processes A B A B, each entry the median of its repeats:")
         print("| entry | new [s] | old [s] | old/new (median of rounds) |")
         print("|---|---|---|---|")

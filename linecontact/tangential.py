@@ -857,7 +857,9 @@ class TangentialContact:
         r"""Tangential force F_t(u) [N] under a monotonic shift u [m] from zero.
 
         ``beyond="saturate"`` returns mu F beyond gross slip (|u| > u*) instead of
-        raising :class:`OutOfRangeError`.
+        raising :class:`OutOfRangeError`. With a slip correction, arrays of 32768 values
+        or more are evaluated by a table built once per contact, equal to the root to
+        1e-12 mu F (docs/tangential.md).
         """
         if self._correction is None:
             return out(self._law_force(shift, beyond))
@@ -889,7 +891,7 @@ class TangentialContact:
         if beyond == "raise" and np.any(a > ustar * (1 + 1e-12)):
             raise OutOfRangeError("shift", float(a.max()), f"[-{ustar:.6g}, {ustar:.6g}] m",
                                   unit="m", hint="beyond gross slip; beyond='saturate'")
-        q = np.where(a >= ustar, 1.0, self._q_of_shift(np.minimum(a, ustar)))
+        q = np.where(a >= ustar, 1.0, self._q_of_shift_reference(np.minimum(a, ustar)))
         return out(np.sign(u) * q * self.gross_slip_force)
 
     def _corrected_shift(self, q):
@@ -906,10 +908,8 @@ class TangentialContact:
             return dlaw
         qs, cs = self._correction
         j = np.clip(np.searchsorted(qs, q, side="right") - 1, 0, qs.size - 2)
-        w = (q - qs[j]) / (qs[j + 1] - qs[j])
-        c = cs[j] * (1 - w) + cs[j + 1] * w
         law = self.friction * (self.depth - z) / self.ratio
-        return dlaw * c + law * (cs[j + 1] - cs[j]) / (qs[j + 1] - qs[j])
+        return dlaw * self._q_factor(q) + law * (cs[j + 1] - cs[j]) / (qs[j + 1] - qs[j])
 
     def _kinks(self):
         """Load fractions of the slip correction's kinks (none without one)."""
@@ -920,37 +920,33 @@ class TangentialContact:
         where it does not reproduce the direct evaluation to _TABLE_TOL."""
         tables = self.__dict__.setdefault("_tables", {})
         if which not in tables:
-            ustar = self.gross_slip_shift
-            if which == "shift":
-                def nodes_fun(q):
-                    return self._corrected_shift(q) / ustar, self._shift_slope(q) / ustar
-
-                table = _EndTable(nodes_fun, lambda q: self._corrected_shift(q) / ustar,
-                                  self._kinks())
-            else:
-                def nodes_fun(x):
-                    q = self._q_of_shift_reference(x * ustar)
-                    return q, ustar / self._shift_slope(q)
-
-                def exact(x):                 # q = 1 at gross slip, as force() has it
-                    return np.where(x >= 1.0, 1.0, self._q_of_shift_reference(x * ustar))
-
-                kinks = [float(self._corrected_shift(qk)) / ustar for qk in self._kinks()]
-                table = _EndTable(nodes_fun, exact, kinks)
-            tables[which] = table if table.usable else None
+            try:
+                tables[which] = self._build_table(which)
+            except (ValueError, ArithmeticError):
+                # a model that cannot be evaluated at the table's nodes (e.g. at the
+                # tiny rests near gross slip): the direct evaluation stays
+                tables[which] = None
         return tables[which]
 
-    def _q_of_shift(self, a):
-        """q with u_law(q) c(q) = a for a in [0, u*]: for arrays of _TABLE_MIN elements
-        or more the tabulated inverse (:class:`_EndTable`, built once per contact,
-        equal to the root below to _TABLE_TOL at its cells' midpoints, the cells with
-        a kink of the correction solved by the root), else the root."""
-        a = np.asarray(a, dtype=float)
-        if a.size >= _TABLE_MIN:
-            table = self._table("force")
-            if table is not None:
-                return table(a / self.gross_slip_shift)
-        return self._q_of_shift_reference(a)
+    def _build_table(self, which):
+        ustar = self.gross_slip_shift
+        if which == "shift":
+            def nodes_fun(q):
+                return self._corrected_shift(q) / ustar, self._shift_slope(q) / ustar
+
+            table = _EndTable(nodes_fun, lambda q: self._corrected_shift(q) / ustar,
+                              self._kinks())
+        else:
+            def nodes_fun(x):
+                q = self._q_of_shift_reference(x * ustar)
+                return q, ustar / self._shift_slope(q)
+
+            def exact(x):                     # q = 1 at gross slip, as force() has it
+                return np.where(x >= 1.0, 1.0, self._q_of_shift_reference(x * ustar))
+
+            kinks = [float(self._corrected_shift(qk)) / ustar for qk in self._kinks()]
+            table = _EndTable(nodes_fun, exact, kinks)
+        return table if table.usable else None
 
     def _q_of_shift_reference(self, a):
         """q with u_law(q) c(q) = a (an increasing function of q on [0, 1]).

@@ -9,8 +9,9 @@ the algorithm before and after in the same process, interleaved:
   (``NotAKnotSpline.solve_fast``) against the whole-spline Newton iteration (``UniversalCurve._newton``, still used for the MDR
   profile);
 - partial-slip force with the BEM slip correction (``TangentialContact.force``,
-  method "bem"): the bracketing table and Illinois steps against the 60-step
-  bisection it replaced (re-implemented here, the same lines).
+  method "bem"; for arrays this large the cubic Hermite table built once per contact)
+  against the 60-step bisection of two rounds ago (re-implemented here, the same
+  lines), with the largest difference between the two.
 
 With ``--vs-path DIR`` the table's entries are also measured with the ``linecontact``
 package of another checkout DIR (e.g. the main branch before a change), this script

@@ -123,6 +123,10 @@ def report(rows, bem, table_path):
         return abs(r[model][k]), (f"{t['profile']}, L = {t['length'] * 1e3:g} mm, "
                                   f"F = {t['force']:g} N, tilt = {tilt}")
 
+    try:                    # the repository's table by its relative path
+        table_path = Path(table_path).resolve().relative_to(REPO)
+    except ValueError:
+        pass
     say(f"reference: {table_path} ({len(rows)} cases: {len(off)} off the ends, "
         f"{len(edge)} edge loaded)")
     say("")

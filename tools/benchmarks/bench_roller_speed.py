@@ -83,7 +83,7 @@ def main(argv=None):
                               **extra).at_force(force, tilt=tilt)
 
     cold(FORCE, TILT)                      # the strip-function table, built once
-    print(f"linecontact from {linecontact.__file__}")
+    print(f"linecontact from {os.path.relpath(linecontact.__file__)}")
     print(f"case: ISO 16281 profile, D {D * 1e3:g} mm, L {L * 1e3:g} mm, F {FORCE:g} N, "
           f"{a.n_slices} slices (default spacing of this version)"
           + (", refine_ends=False" if a.no_refine else ""))

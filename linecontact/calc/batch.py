@@ -352,7 +352,7 @@ def run_batch(args, argv, specs, options):
                     "comma, or a missing header name?)"))
     for name in ("load", "depth"):  # a sweep in a cell: say so, not just "not a number"
         col = cells.get(name)
-        if col is None:
+        if col is None or ":" not in "".join(col):
             continue
         for i, c in enumerate(col):
             if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):

@@ -422,8 +422,8 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
             errors[i] = str(InputError(parameter, cells[i], valid, reason))
         else:
             values[i] = value  # an exact zero where zero is allowed
-    bad = np.array([bool(e) for e in errors], dtype=bool) if n else np.zeros(0, bool)
-    values[bad] = np.nan
+    if any(errors):
+        values[np.array(list(map(bool, errors)), dtype=bool)] = np.nan
     return values, errors
 
 
@@ -458,12 +458,15 @@ def _split_column(cells):
         numbers = list(map(str.rstrip, cells, itertools.repeat(_UNIT_CHARS)))
     except TypeError:
         return None  # a cell that is not text
-    if "".join(numbers).strip(_NUMBER_CHARS):
+    joined = "".join(numbers)
+    if joined.strip(_NUMBER_CHARS):
         return None  # a character no number has
     try:
         raw = np.array(numbers, dtype=float)
     except ValueError:
         return None  # e.g. '1e', '--5', '' (a unit alone), '5 5'
+    if len(joined) == sum(map(len, cells)):  # nothing stripped: bare numbers (SI)
+        return raw, [None], None
     rest = list(map(str.removeprefix, cells, numbers))
     if rest.count(rest[0]) == len(rest):
         distinct, codes = [rest[0]], None

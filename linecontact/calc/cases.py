@@ -169,9 +169,10 @@ def parse_cases(cells, n, label=option_name):
         # distinct cells only where a column repeats its values (a batch of a few
         # cylinders, empty cells); a column of mostly distinct cells (a parameter
         # study) is parsed as it is, which gives the same values without the lookups
-        if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
-            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)
-        elif n > _SAMPLE and len(set(col[:_SAMPLE])) > _SAMPLE // 2:
+        sample = len(set(col[:_SAMPLE]))
+        if n and sample == 1 and col.count(col[0]) == n:  # one value for all rows
+            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)  # (e.g. the modulus)
+        elif n > _SAMPLE and sample > _SAMPLE // 2:
             uniq, inv = col, None
         else:
             uniq = list(dict.fromkeys(col))    # in order of first appearance

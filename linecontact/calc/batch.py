@@ -533,7 +533,7 @@ _G6 = _g6_layouts()
 
 
 def _g6_bytes(values):
-    """(n, 12) uint8: ``'%.6g' % x`` of each value as ASCII, padded with zero bytes
+    """(n, 13) uint8: ``'%.6g' % x`` of each value as ASCII, padded with zero bytes
     (all zero for NaN and infinities: an empty cell).
 
     Byte for byte ``format(x, '.6g')``: the six significant digits are the scaled value
@@ -583,9 +583,9 @@ def _g6_bytes(values):
     last = 5 - np.argmax(source[:, 5::-1] != 48, axis=1)
     layout = np.where((e >= -4) & (e < 6), e + 4, 10) * 6 + last
     index = _G6[layout] + (np.arange(n) * 13)[:, None]
-    out = np.empty((n, 12), np.uint8)
+    out = np.zeros((n, 13), np.uint8)  # the 13th: '-1.23457e+100' (by Python, below)
     out[:, 0] = np.where(np.signbit(x), 45, 0)
-    out[:, 1:] = source.ravel().take(index)
+    out[:, 1:12] = source.ravel().take(index)
     zero = a == 0
     if zero.any():  # '0', or '-0' for a negative zero
         out[zero, 1:] = 0

@@ -317,6 +317,8 @@ def test_batch_rows_sharing_a_roller_are_one_sweep_equal_to_one_by_one(capsys, t
                      "p_max_Pa", "contact_length_m"):
             a, b = together[k][name], alone[name]
             assert (a is None) == (b is None), (k, name)
-            if a is not None:  # a moment to 1e-9 of F L (zero at a free tilt)
-                scale = 1e-9 * together[k]["force_N"] * 0.014 if name == "moment_N_m" else 0
+            if a is not None:  # a moment to 1e-9 of F L, a tilt to 1e-12 rad (both
+                # zero up to rounding at the free tilt of a symmetric profile)
+                scale = {"moment_N_m": 1e-9 * together[k]["force_N"] * 0.014,
+                         "tilt_rad": 1e-12}.get(name, 0.0)
                 assert a == pytest.approx(b, rel=1e-8, abs=scale), (k, name)

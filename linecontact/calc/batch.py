@@ -382,7 +382,7 @@ def run_batch(args, argv, specs, options):
     else:
         text = _csv(header, body, lines, out_names, getters, width)
     render.write(text, args.output)
-    n_failed = sum(1 for e in errors if e)
+    n_failed = len(errors) - errors.count("")
     if n_failed:
         print(f"{render.PROG} calc: error: {n_failed} of {n} rows failed; see the "
               "'error' column", file=sys.stderr)

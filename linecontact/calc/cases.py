@@ -23,6 +23,8 @@ Geometry
 
 from __future__ import annotations
 
+import operator
+
 import numpy as np
 
 from .._units import parse_column
@@ -285,7 +287,7 @@ def _resolve(cases, errors, fail):
          "the roller does not fit inside the concave body")
     radius_eff = np.where(np.isnan(radius_eff_f), radius_eff, radius_eff_f)
 
-    ok = np.array([not e for e in errors], dtype=bool)
+    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
     estar = np.full(n, np.nan)
     direct = ok & P["estar"]
     estar[direct] = v["estar"][direct]

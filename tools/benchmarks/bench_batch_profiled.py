@@ -13,7 +13,9 @@ Both run in this process (``linecontact.calc.cli.main`` with ``--json``, full
 precision), interleaved ``--repeat`` times; printed: the CPU time of each (medians),
 the ratio grouped / one by one (median of the pairs), and the largest relative
 difference between the two answers, row by row, in depth, moment, tilt, stiffness,
-peak pressure and contact length (the solver's tolerance is 1e-10 of F).
+peak pressure and contact length (the solver's tolerance is 1e-10 of F). Also timed:
+the same one-row files without profile and tilt (a straight roller, the default law),
+the calculator's own cost per call that one by one includes.
 
 BLAS threads: one (``OPENBLAS_NUM_THREADS=1`` and its kin, unless set), as the other
 roller benchmarks; on a shared machine, threads of a 100 x 100 dense solve wait for
@@ -98,11 +100,13 @@ def grouped(path, folder):
     return time.process_time() - t, rows
 
 
-def one_by_one(rows, folder):
+def one_by_one(rows, folder, plain=False):
+    """Each row a file of its own; `plain`: without its profile and tilt (a straight
+    roller, the default law: the calculator's own cost per call, no slice solve)."""
     files = []
     for i, r in enumerate(rows):
-        f = folder / f"row{i}.csv"
-        _write(f, [r])
+        f = folder / f"{'plain' if plain else 'row'}{i}.csv"
+        _write(f, [r[:7] + ["", ""] + r[9:]] if plain else [r])
         files.append(f)
     t = time.process_time()
     out = [_calc(f, folder / "one.json")[0] for f in files]
@@ -138,16 +142,20 @@ def main(argv=None):
     for _ in range(args.repeat):
         tg, g_rows = grouped(path, folder)
         to, o_rows = one_by_one(rows, folder)
-        times.append((tg, to))
+        tp, _ = one_by_one(rows, folder, plain=True)
+        times.append((tg, to, tp))
     tg = statistics.median(t[0] for t in times)
     to = statistics.median(t[1] for t in times)
-    ratio = statistics.median(a / b for a, b in times)
+    tp = statistics.median(t[2] for t in times)
+    ratio = statistics.median(t[0] / t[1] for t in times)
     print(f"{args.rows} profiled rows, {args.rollers} rollers "
           f"({', '.join(PROFILES[k % len(PROFILES)] for k in range(args.rollers))}), "
           f"{args.repeat} interleaved pairs, CPU s (medians):")
     print(f"  grouped (one sweep per roller)  {tg:8.3f}  ({tg / args.rows * 1e3:.2f} ms a row)")
     print(f"  one by one (a file per row)     {to:8.3f}  ({to / args.rows * 1e3:.2f} ms a row)")
     print(f"  ratio grouped / one by one      {ratio:8.3f}")
+    print(f"  (a file per row without the profile and tilt, the calculator's own cost: "
+          f"{tp:.3f}, {tp / args.rows * 1e3:.2f} ms a row)")
     worst = largest_difference(g_rows, o_rows)
     print("largest relative difference grouped vs one by one: "
           + ", ".join(f"{k} {v:.1e}" for k, v in worst.items()))

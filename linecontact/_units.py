@@ -454,6 +454,9 @@ def _split_column(cells):
 
     import numpy as np
 
+    one = _one_unit(cells)
+    if one is not None:
+        return one
     try:
         numbers = list(map(str.rstrip, cells, itertools.repeat(_UNIT_CHARS)))
     except TypeError:
@@ -481,6 +484,36 @@ def _split_column(cells):
             return None  # e.g. '5 m m': refused by the regular expression, with its reason
         units.append(m.group("unit"))
     return raw, units, codes
+
+
+def _one_unit(cells):
+    """:func:`_split_column` of the usual column, every cell a number followed by the
+    SAME unit name as the first cell (or every cell a bare number), in whole-column
+    string operations: the cells joined by line ends, the first cell's unit removed
+    before each line end (all n of them, or this is not such a column), split again.
+    None when the column is not of that kind (the general split decides)."""
+    import numpy as np
+
+    n = len(cells)
+    try:
+        text = "\n".join(cells) + "\n"
+    except TypeError:
+        return None  # a cell that is not text
+    if text.count("\n") != n:
+        return None  # a line end inside a cell
+    first = cells[0]
+    unit = first[len(first.rstrip(_UNIT_CHARS)):]
+    if unit:
+        if unit[0] in _NUMBER_CHARS or text.count(unit + "\n") != n:
+            return None  # spaces before the first unit, or another unit somewhere
+        text = text.replace(unit + "\n", "\n")
+    if text.strip(_NUMBER_CHARS):
+        return None  # a character no number has (a unit after all, ...)
+    try:
+        raw = np.array(text.split("\n")[:-1] if unit else cells, dtype=float)
+    except ValueError:
+        return None  # e.g. '1e', '--5', '' (a unit alone), '5 5'
+    return raw, [unit.strip() or None], None
 
 
 def _match_column(parameter, cells, valid, errors):

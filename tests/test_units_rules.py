@@ -185,6 +185,28 @@ def test_a_column_of_plain_cells_parses_exactly_like_its_cells(cells, kind):
             assert e == "" and v == expected, (cell, v, expected)
 
 
+@given(st.lists(st.sampled_from(["5", "1.", ".5", "+5", "-2", "1e3", "1E-3", "0", "7 ",
+                                  " 7", "1e5", "12.5"]), min_size=1, max_size=10),
+       st.sampled_from(["mm", "m", "kN", "GPa", "e", "em", "mm ", " mm", ""]),
+       st.one_of(st.none(), st.sampled_from(EDGE_CELLS)), st.integers(0, 10), kinds)
+def test_a_column_of_one_unit_parses_exactly_like_its_cells(numbers, unit, odd, at, kind):
+    """A column whose cells all carry one unit (the usual file, split by removing that
+    unit before each line end of the joined column), with or without one odd cell
+    anywhere (another unit, spaces, a refused cell), gives parse_quantity's float and
+    message cell by cell."""
+    cells = [x + unit for x in numbers]
+    if odd is not None:
+        cells.insert(min(at, len(cells)), odd)
+    values, errors = parse_column("--x", cells, kind)
+    for cell, v, e in zip(cells, values, errors):
+        try:
+            expected = parse_quantity("--x", cell, kind)
+        except InputError as exc:
+            assert e == str(exc) and math.isnan(v), (cell, e)
+        else:
+            assert e == "" and v == expected, (cell, v, expected)
+
+
 @given(st.text(max_size=10))
 def test_booleans_are_exactly_true_false_yes_no_1_0(text):
     """A yes/no option accepts six words (any case, surrounding spaces) and nothing

@@ -466,8 +466,9 @@ def _result_cells(getters):
             if np.all(v == v[0]):  # constant and finite (NaN != NaN)
                 pieces.append("," + format(float(v[0]), ".6g"))
             else:
+                m = _g6_bytes(v)
                 pieces.append(",")
-                pieces.append(_g6_bytes(v))
+                pieces.append(m[:, m.any(axis=0)])  # padding only: nothing to copy
             continue
         first = data[0]
         if list(data).count(first) == n:

@@ -18,12 +18,14 @@ References
 """
 from __future__ import annotations
 
+import functools
 import math
+import threading
 
 import numpy as np
 
 __all__ = ["NotAKnotSpline", "UniformHermite", "blockwise", "lambertw_m1",
-           "log1p_excess_root"]
+           "log1p_excess_root", "serial_blas"]
 
 
 class NotAKnotSpline:
@@ -633,3 +635,65 @@ def lambertw_m1(x):
         raise ValueError("lambertw_m1: x must lie in [-1/e, 0)")
     t = np.maximum(-1.0 - np.log(-x), 0.0)
     return -1.0 - log1p_excess_root(t)
+
+
+class _SerialBlas:
+    """One BLAS thread while a solver of small dense systems runs (process-wide,
+    re-entrant; restored when the outermost call returns).
+
+    A multithreaded BLAS (OpenBLAS, MKL) splits even a 200 x 200 LU solve across its
+    threads; on a machine whose cores are busy with other work each solve then waits for
+    a thread to be scheduled, and a profiled-roller solve (tens of such solves) cost
+    17 times the CPU time it takes with one thread on the 2-core development machine at
+    a load of 6 (tools/benchmarks/results/serial_blas.txt). The limit comes from threadpoolctl (a dependency); where it is not
+    installed this is a no-op. The controller is built on first use (about 20 ms, once
+    per process); entering costs about 30 us, and nothing where BLAS has one thread.
+    """
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._depth = 0
+        self._limiter = None
+        self._controller = None        # False: threadpoolctl missing or BLAS serial
+
+    def _blas(self):
+        if self._controller is None:
+            try:
+                from threadpoolctl import ThreadpoolController
+            except ImportError:
+                self._controller = False
+            else:
+                ctl = ThreadpoolController().select(user_api="blas")
+                many = any(lib.num_threads > 1 for lib in ctl.lib_controllers)
+                self._controller = ctl if many else False
+        return self._controller
+
+    def __enter__(self):
+        with self._lock:
+            if self._depth == 0:
+                ctl = self._blas()
+                self._limiter = ctl.limit(limits=1) if ctl else None
+            self._depth += 1
+        return self
+
+    def __exit__(self, *exc):
+        with self._lock:
+            self._depth -= 1
+            if self._depth == 0 and self._limiter is not None:
+                self._limiter.restore_original_limits()
+                self._limiter = None
+        return False
+
+
+_SERIAL_BLAS = _SerialBlas()
+
+
+def serial_blas(fn):
+    """Decorator: run `fn` with one BLAS thread (:class:`_SerialBlas`), for the solvers
+    whose work is many small dense solves (the coupled slices of a roller, a bearing's
+    rollers)."""
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        with _SERIAL_BLAS:
+            return fn(*args, **kwargs)
+    return wrapper

@@ -87,6 +87,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numerics import serial_blas
 from .profiles import TILT_RANGE
 from .raceway import Raceways, effective_radii, roller_between_raceways
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
@@ -858,6 +859,7 @@ class RadialRollerBearing:
                 break
         return dr
 
+    @serial_blas
     def solve(self, radial_load, moment=None, misalignment=None):
         r"""Solve the bearing under a radial load F_r, and a tilting moment M or a given
         misalignment theta (:class:`BearingSolution`).

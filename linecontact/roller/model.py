@@ -11,6 +11,7 @@ import numpy as np
 
 from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_interval, check_positive
+from .._numerics import serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (N_SLICES, SLICE_GRADING, TILT_RANGE, ConvergenceError,
                      SliceEquations)
@@ -234,6 +235,7 @@ class ProfiledRoller:
         return (P[:len(x)] - P[len(x):]) / (xp - xm)
 
     # -- depth control ---------------------------------------------------------------
+    @serial_blas
     def at_depth(self, depth, tilt=0.0):
         """Solve at depth d and tilt theta.
 
@@ -518,6 +520,7 @@ class ProfiledRoller:
             e = en
         raise ConvergenceError(f"no depth found for force {F0:g} N")
 
+    @serial_blas
     def at_force(self, force, tilt=0.0, tol=1e-10):
         """Solve at force F, with a given tilt (default 0, aligned) or (tilt="free") at
         zero moment.

@@ -1,0 +1,60 @@
+"""The slice and bearing solvers run their many small dense solves on one BLAS thread
+(linecontact._numerics.serial_blas): a multithreaded BLAS on busy cores made a
+profiled-roller solve 17 times dearer (tools/benchmarks/results/serial_blas.txt)."""
+import numpy as np
+import pytest
+
+threadpoolctl = pytest.importorskip("threadpoolctl")
+
+from linecontact._numerics import serial_blas  # noqa: E402
+
+
+def _blas_threads():
+    return [lib["num_threads"] for lib in threadpoolctl.threadpool_info()
+            if lib["user_api"] == "blas"]
+
+
+def test_limit_inside_restored_after_and_reentrant():
+    """Inside a decorated call every BLAS has one thread, also in a nested decorated
+    call; after the outermost call returns (or raises) the original counts are back."""
+    before = _blas_threads()
+    seen = []
+
+    @serial_blas
+    def inner():
+        seen.append(_blas_threads())
+
+    @serial_blas
+    def outer(fail):
+        seen.append(_blas_threads())
+        inner()
+        seen.append(_blas_threads())
+        if fail:
+            raise RuntimeError("boom")
+
+    outer(False)
+    with pytest.raises(RuntimeError):
+        outer(True)
+    assert all(t == [1] * len(before) for t in seen), seen
+    assert _blas_threads() == before
+
+
+def test_roller_and_bearing_solves_use_one_thread(monkeypatch):
+    """Every dense solve of a profiled-roller solve and of a bearing solve runs with one
+    BLAS thread (recorded by wrapping numpy.linalg.solve during the calls)."""
+    from linecontact.bearing import RadialRollerBearing
+    from linecontact.roller import ProfiledRoller
+
+    counts = []
+    solve = np.linalg.solve
+
+    def recording(*a, **k):
+        counts.append(max(_blas_threads()))
+        return solve(*a, **k)
+
+    monkeypatch.setattr(np.linalg, "solve", recording)
+    ProfiledRoller(5e-3, 14e-3, 115e9, "circular:Rc=0.5").at_force(4200.0, tilt=1e-3)
+    n_roller = len(counts)
+    RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, profile="iso16281").solve(10e3, moment=5.0)
+    assert n_roller > 0 and len(counts) > n_roller
+    assert set(counts) == {1}, counts

@@ -83,3 +83,18 @@ def test_out_of_range_values_raise_as_the_direct_path():
     with pytest.raises(OutOfRangeError, match=r"force = -1 N \(element \[5\].*\(0, inf\)"):
         m.depth(f)
     assert "_tables" not in m.__dict__ or "depth" not in m._tables
+
+
+def test_a_changed_tilt_rebuilds_the_table():
+    """The table is the law at the model's tilt: after ``tilt`` is reassigned, a large
+    array gives the new tilt's law (the solves at the new tilt to 1e-6 F), not the old
+    table's."""
+    m = _model(tilt=0.0)
+    d0 = m.first_contact_depth
+    d = d0 + np.linspace(1e-8, 2e-6, N)
+    m.force(d)
+    m.tilt = 5e-4
+    d = m.first_contact_depth + np.linspace(1e-8, 2e-6, N)
+    F = m.force(d)
+    ref = np.array([m.at_depth(float(x)).force for x in d[::1999]])
+    assert np.max(np.abs(F[::1999] - ref) / ref) <= 1e-6

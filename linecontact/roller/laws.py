@@ -156,6 +156,13 @@ class _SolvedRoller(ContactModel):
         super().__init__(radius, length, estar)
         self.tilt = TILT_RANGE.check(tilt).item()
 
+    def __setattr__(self, name, value):
+        # the tables are built from the geometry and tilt: a change drops them
+        if name in ("tilt", "radius", "length", "estar", "axial_profile", "n_slices",
+                    "roller"):
+            self.__dict__.pop("_tables", None)
+        object.__setattr__(self, name, value)
+
     @property
     def first_contact_depth(self):
         """Depth of the roller's centre at first contact at this tilt [m]."""

@@ -249,6 +249,10 @@ class UniformHermite:
         y at the n >= 2 nodes [any unit].
     slopes : array_like
         dy/ds at the nodes [unit of y].
+    end_slopes : array_like, optional
+        dy/ds approaching each node from below, used at the upper end of each cell
+        (default `slopes`): for a variable s with a corner at a node (a table joined
+        from pieces, each graded towards its own start) [unit of y].
 
     Notes
     -----
@@ -270,15 +274,16 @@ class UniformHermite:
     interpolation and its error).
     """
 
-    def __init__(self, values, slopes):
+    def __init__(self, values, slopes, end_slopes=None):
         y = np.asarray(values, dtype=float)
         m = np.asarray(slopes, dtype=float)
-        if y.ndim != 1 or y.shape != m.shape or y.size < 2:
+        me = m if end_slopes is None else np.asarray(end_slopes, dtype=float)
+        if y.ndim != 1 or y.shape != m.shape or y.shape != me.shape or y.size < 2:
             raise ValueError("UniformHermite: values and slopes 1-D, same length >= 2")
         self.n = y.size
         h = 1.0 / (self.n - 1)
         dy = np.diff(y)
-        m0, m1 = h * m[:-1], h * m[1:]
+        m0, m1 = h * m[:-1], h * me[1:]
         # the (t^3, t^2, t, 1) coefficients of each cell, one contiguous array each (four
         # gathers by np.take are faster than one gather of rows and strided columns)
         self._c = tuple(np.ascontiguousarray(c) for c in

@@ -803,6 +803,18 @@ class TangentialContact:
                 self._correction = table.shift_correction(
                     direction, float(ratios["nu"]), float(ratios["d_tilde"]))
 
+    #: Attributes the cached laws (the tables of :meth:`_table`, the nodes of
+    #: :meth:`_q_of_shift_reference`) are built from: assigning one drops the caches, so
+    #: they are rebuilt from the new settings on next use (never evaluated stale).
+    _CACHE_INPUTS = frozenset({"model", "friction", "gstar", "depth", "normal_force",
+                               "ratio", "_correction"})
+
+    def __setattr__(self, name, value):
+        if name in self._CACHE_INPUTS:
+            for cache in ("_tables", "_q_nodes", "_u_nodes"):
+                self.__dict__.pop(cache, None)
+        object.__setattr__(self, name, value)
+
     # -- single numbers ------------------------------------------------------------
     @property
     def normal_stiffness(self):

@@ -119,3 +119,26 @@ def test_uniform_hermite_converges_at_fourth_order():
         errs.append(np.max(np.abs(UniformHermite(np.exp(x), np.exp(x))(s) - np.exp(s))))
     for a, b in zip(errs, errs[1:]):
         assert 14 < a / b < 18
+
+
+@pytest.mark.parametrize("method", ["mdr", "bem"])
+def test_changing_a_setting_after_a_table_is_built_rebuilds_it(method):
+    """The tables are built from the contact's friction (and depth, ratio, ...): after
+    ``friction`` is reassigned, a large array gives the law of the new friction (equal
+    to the direct evaluation of the new contact to the tables' 1e-12 of u*), not the
+    stale table's. (The MDR shift table is in u/u* against q, which friction does not
+    change; the BEM force table's correction depends on it, so that case fails without
+    the guard.)"""
+    tc = _contact("universal", 1e3, method)
+    ft = np.linspace(-1.0, 1.0, N) * tc.gross_slip_force
+    tc.shift(ft)
+    assert tc._table("shift") is not None
+    tc.friction = 0.15
+    fresh = TangentialContact(tc.model, 0.15, 0.8 * E, force=1e3, method=method)
+    ft = np.linspace(-1.0, 1.0, N) * fresh.gross_slip_force
+    assert np.max(np.abs(tc.shift(ft) - _direct_shift(fresh, ft))) \
+        <= 1e-12 * fresh.gross_slip_shift
+    if method == "bem":
+        u = np.linspace(-1.0, 1.0, N) * fresh.gross_slip_shift
+        assert np.max(np.abs(tc.force(u) - fresh.force(u))) \
+            <= 1e-12 * fresh.gross_slip_force

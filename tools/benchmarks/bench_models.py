@@ -121,6 +121,37 @@ def paired_with(path, n, rep, rounds):
     return out
 
 
+def slicing(n, rep):
+    """The ISO 16281 slicing law of a crowned (Rc = 0.5 m), tilted (0.5 mrad) roller,
+    30 slices touching at 30 depths: F(d) and d(F) of n values from the tables, the
+    first call on a new model (it builds the table) apart, and the direct solves of
+    2000 values scaled to n; the table against the solves at 500 of the points."""
+    from linecontact.roller.laws import ISOSlicingModel
+
+    def model():
+        return ISOSlicingModel(R, L, ESTAR, profile="circular:Rc=0.5", tilt=5e-4)
+
+    m = model()
+    s = np.linspace(0.2, 2.0, n)
+    d = m.first_contact_depth + s * (float(m.depth(F0)) - m.first_contact_depth)
+    F = s * F0
+    for name, fun, x, ref in (("F(d)", m.force, d, lambda v: m.at_depth(v).force),
+                              ("d(F)", m.depth, F, lambda v: m.at_force(v).depth)):
+        t0 = time.process_time()
+        y = fun(x)
+        first = time.process_time() - t0
+        again = cpu(lambda: fun(x), rep)
+        few = x[:: max(1, n // 2000)][:2000]
+        direct = cpu(lambda: fun(few), 1) * n / few.size
+        k = np.linspace(0, n - 1, 500).astype(int)
+        exact = np.array([ref(float(v)) for v in x[k]])
+        base = exact if name == "F(d)" else exact - m.first_contact_depth
+        err = float(np.max(np.abs(y[k] - exact) / base))
+        print(f"iso16281-slicing (crowned, tilted) {name}: {again:.3f} s from the table, "
+              f"first call {first:.2f} s (builds it), direct solves {direct:.0f} s "
+              f"(2000 scaled); largest difference {err:.1e} (of F, of d - d0)")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("-n", type=int, default=10 ** 6)
@@ -172,6 +203,7 @@ def main(argv=None):
     old, new, ratio = paired(lambda: bisection_force(tc, a), lambda: tc.force(a), rep)
     print(f"partial-slip force (bem), bisection / tabulated inverse: {old:.3f} / {new:.3f} s,"
           f" ratio {ratio:.1f}; largest difference {dq:.2g} mu F")
+    slicing(n, rep)
     if args.vs_path:
         name = os.path.basename(os.path.normpath(args.vs_path))
         print(f"\npaired with the package of the checkout {name!r} (old), {args.rounds} rounds of "

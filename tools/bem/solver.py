@@ -40,10 +40,34 @@ def _violation(g, free, at_lo, at_hi):
     """Largest violation of the optimality conditions of min 1/2 x.Kx - b.x on
     lo <= x <= hi, with g = K x - b: |g| on the free cells, the gradient pushing a cell
     at its lower bound down (g < 0 there: a penetration) or one at its upper bound up;
-    NaN if any gradient is NaN (so that a NaN state never passes: NaN <= tol is False)."""
-    return float(np.max([np.abs(g[free]).max(initial=0.0), -g[at_lo].min(initial=0.0),
-                         g[at_hi].max(initial=0.0),
-                         0.0 if np.all(np.isfinite(g)) else np.nan]))
+    NaN if any gradient is NaN (so that a NaN state never passes: NaN <= tol is False).
+    ``at_lo`` or ``at_hi`` None: no cell is at that bound. Masked reductions, no copies
+    (this runs once per iteration on the whole grid)."""
+    err = max(float(np.max(g, where=free, initial=0.0)),
+              -float(np.min(g, where=free, initial=0.0)))
+    if at_lo is not None:
+        err = max(err, -float(np.min(g, where=at_lo, initial=0.0)))
+    if at_hi is not None:
+        err = max(err, float(np.max(g, where=at_hi, initial=0.0)))
+    if not np.isfinite(np.add.reduce(g, axis=None)):
+        return float("nan")
+    return err
+
+
+def _state(x, movable, lo, hi, has_lo, has_hi):
+    """(free, at_lo, at_hi): the movable cells strictly inside their bounds, at or below
+    the lower one, at or above the upper one (None where no movable cell has that
+    bound)."""
+    at_lo = movable & (x <= lo) if has_lo else None
+    at_hi = movable & (x >= hi) if has_hi else None
+    if at_lo is None and at_hi is None:
+        return movable, None, None
+    free = movable.copy()
+    if at_lo is not None:
+        free &= ~at_lo
+    if at_hi is not None:
+        free &= ~at_hi
+    return free, at_lo, at_hi
 
 
 @dataclass
@@ -140,6 +164,8 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
     lo = np.broadcast_to(np.asarray(lower, dtype=float), b.shape)
     hi = np.broadcast_to(np.asarray(upper, dtype=float), b.shape)
     movable = lo < hi
+    has_lo = bool(np.any(movable & (lo > -np.inf)))
+    has_hi = bool(np.any(movable & (hi < np.inf)))
     if maxiter is None:
         maxiter = 50 + int(10 * np.sqrt(b.size))
     M = getattr(op, "precondition", None) if precondition else None
@@ -170,9 +196,7 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
     kdiag = None
     while True:
         g = u - b
-        free = movable & (x > lo) & (x < hi)
-        at_lo = movable & ~free & (x <= lo)
-        at_hi = movable & ~free & (x >= hi)
+        free, at_lo, at_hi = _state(x, movable, lo, hi, has_lo, has_hi)
         err = _violation(g, free, at_lo, at_hi)
         if not err > tol:       # converged (NaN stops below)
             if fresh or not verify:
@@ -184,17 +208,25 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
             continue
         if not np.isfinite(err) or napply >= maxiter:
             break
-        release = (at_lo & (g < 0)) | (at_hi & (g > 0))
+        release = None
+        if at_lo is not None:
+            release = at_lo & (g < 0)
+        if at_hi is not None:
+            release = (at_hi & (g > 0)) if release is None else release | (at_hi & (g > 0))
+        if release is not None and not release.any():
+            release = None
         jacobi = None
-        if release.any():
+        if release is not None:
             restart = True
-        active = free | release
-        ga = np.where(active, g, 0.0)
+            active = free | release
+        else:
+            active = free
+        ga = g * active
         if M is not None:
             z = M(ga)
             nprec += 1
-            z[~active] = 0.0
-            if release.any():
+            z *= active
+            if release is not None:
                 # a released cell joins the free set only where the preconditioned
                 # direction moves it off its bound (-z has the sign of -g there);
                 # the others wait for a later iteration. If none would move, they
@@ -210,7 +242,9 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
         if restart or rho_old <= 0:
             t = z
         else:
-            t = np.where(active, z + (rho / rho_old) * t, 0.0)
+            t *= rho / rho_old
+            t += z
+            t *= active
         rho_old = rho
         restart = False
         r = op(t)
@@ -227,8 +261,11 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
             if kdiag is None:
                 kdiag = _diagonal(op, b.shape)
             x_new[jacobi] = x[jacobi] - g[jacobi] / kdiag
-        changed = (x_new < lo) | (x_new > hi)
-        np.clip(x_new, lo, hi, out=x_new)
+        if has_lo or has_hi:
+            changed = (x_new < lo) | (x_new > hi)
+            np.clip(x_new, lo, hi, out=x_new)
+        else:
+            changed = np.zeros(x.shape, dtype=bool)
         if jacobi is not None:
             changed |= jacobi
         # u = K x_new: K of the CG step, plus K of the cells the projection or the
@@ -243,8 +280,8 @@ def bounded_cg(op, b, lower, upper, x0=None, tol=1e-8, maxiter=None,
         u = op(x)
         napply += 1
     g = u - b
-    free = movable & (x > lo) & (x < hi)
-    err = _violation(g, free, movable & ~free & (x <= lo), movable & ~free & (x >= hi))
+    free, at_lo, at_hi = _state(x, movable, lo, hi, has_lo, has_hi)
+    err = _violation(g, free, at_lo, at_hi)
     return BoundedCGResult(x, u, free, napply, nprec, bool(err <= tol), float(err), ncols)
 
 

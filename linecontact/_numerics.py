@@ -22,7 +22,8 @@ import math
 
 import numpy as np
 
-__all__ = ["NotAKnotSpline", "blockwise", "lambertw_m1", "log1p_excess_root"]
+__all__ = ["NotAKnotSpline", "UniformHermite", "blockwise", "lambertw_m1",
+           "log1p_excess_root"]
 
 
 class NotAKnotSpline:
@@ -100,22 +101,25 @@ class NotAKnotSpline:
 
     def _interval(self, xq):
         if self._uniform:
-            i = np.asarray(np.floor((xq - self.x[0]) * (1.0 / self._h)))
-            np.clip(i, 0, self.x.size - 2, out=i)
-            return i.astype(np.intp)
+            # truncation towards zero, then clamped at 0: the floor, clamped, for any
+            # value (in place by minimum and maximum: np.clip's Python layers cost
+            # more than the pass itself on a block)
+            i = np.asarray((xq - self.x[0]) * (1.0 / self._h)).astype(np.intp)
+            np.minimum(i, self.x.size - 2, out=i)
+            return np.maximum(i, 0, out=i)
         return np.searchsorted(self._inner, xq, side="right")
 
     def _horner(self, i, t):
         """((c0 t + c1) t + c2) t + c3 on the intervals i, in place (the same
         operations in the same order as the plain expression)."""
         c = self.c
-        r = np.asarray(c[0][i])
+        r = np.asarray(c[0].take(i))
         r *= t
-        r += c[1][i]
+        r += c[1].take(i)
         r *= t
-        r += c[2][i]
+        r += c[2].take(i)
         r *= t
-        r += c[3][i]
+        r += c[3].take(i)
         return r
 
     def __call__(self, xq, nu=0):
@@ -185,18 +189,123 @@ class NotAKnotSpline:
         """x with s(x) = yq: the inverse table's cubic (an arithmetic lookup on its equal
         spacing), then one Newton step on this spline (also an arithmetic lookup when
         its knots are equally spaced). The table's own error (about 1e-10 in x for
-        the universal curve's 4097 nodes) is squared by the Newton step, to rounding."""
-        x = np.asarray(table(yq))
-        np.clip(x, self.x[0], self.x[-1], out=x)
+        the universal curve's 4097 nodes) is squared by the Newton step, to rounding.
+
+        The step's derivative dx/ds is the inverse table's own slope at yq (its
+        coefficients are gathered for the value anyway): its relative error, about
+        1e-7, multiplies the step of about 1e-10 (tests/test_universal.py holds the
+        result to the whole-spline Newton iteration)."""
+        shape = np.shape(yq)
+        yq = np.asarray(yq, dtype=float).ravel()
+        j = table._interval(yq)
+        tc = table.c
+        u = yq - table.x.take(j)
+        c0, c1, c2 = tc[0].take(j), tc[1].take(j), tc[2].take(j)
+        x = c0 * u
+        x += c1
+        c1 *= 2.0
+        slope = c0
+        slope *= 3.0
+        slope *= u
+        slope += c1                         # 3 c0 u + 2 c1
+        x *= u
+        x += c2
+        x *= u
+        x += tc[3].take(j)
+        slope *= u
+        slope += c2                         # dx/dy = (3 c0 u + 2 c1) u + c2
+        # (an estimate a rounding outside [x_0, x_{n-1}] takes the end interval's cubic)
         i = self._interval(x)
-        t = x - self.x[i]
-        f = self._horner(i, t)
+        f = self._horner(i, x - self.x.take(i))
         f -= yq
-        c0, c1, c2 = (self.c[k][i] for k in range(3))
-        df = (3 * c0 * t + 2 * c1) * t + c2
-        f /= df
+        f *= slope
         np.subtract(x, f, out=x)
-        return np.clip(x, self.x[0], self.x[-1], out=x)
+        np.maximum(x, self.x[0], out=x)
+        return np.minimum(x, self.x[-1], out=x).reshape(shape)
+
+
+class UniformHermite:
+    r"""Piecewise cubic Hermite interpolant on n equally spaced nodes of [0, 1].
+
+    On the cell :math:`[s_i, s_{i+1}]`, :math:`s_i = i h`, :math:`h = 1/(n-1)`, with
+    :math:`t = s/h - i` in [0, 1], the cubic through the values :math:`y_i, y_{i+1}`
+    with the slopes :math:`m_i, m_{i+1}` (dy/ds):
+
+    .. math::
+
+        p(t) = y_i + h m_i t + (3\Delta_i - 2 h m_i - h m_{i+1}) t^2
+               + (h m_i + h m_{i+1} - 2\Delta_i) t^3, \qquad \Delta_i = y_{i+1} - y_i.
+
+    Its error is :math:`h^4 \max|y^{(4)}|/384` for a smooth y with exact slopes (de Boor
+    1978, ch. II); a cell over which y is not smooth (a kink) is not covered by that
+    bound, and callers mark such cells (:meth:`cells`). The cell is found by arithmetic
+    on the equal spacing (no search), the four coefficients by one gather of a row.
+
+    Parameters
+    ----------
+    values : array_like
+        y at the n >= 2 nodes [any unit].
+    slopes : array_like
+        dy/ds at the nodes [unit of y].
+
+    Notes
+    -----
+    Valid for 0 <= s <= 1; outside, the end cells' cubics are continued (callers
+    check their range first).
+
+    Examples
+    --------
+    A cubic is reproduced exactly:
+
+    >>> s = np.linspace(0.0, 1.0, 5)
+    >>> p = UniformHermite(s ** 3, 3 * s ** 2)
+    >>> round(float(p(np.array([0.3]))[0]), 15)
+    0.027
+
+    References
+    ----------
+    C. de Boor, A Practical Guide to Splines, Springer (1978), ch. II (cubic Hermite
+    interpolation and its error).
+    """
+
+    def __init__(self, values, slopes):
+        y = np.asarray(values, dtype=float)
+        m = np.asarray(slopes, dtype=float)
+        if y.ndim != 1 or y.shape != m.shape or y.size < 2:
+            raise ValueError("UniformHermite: values and slopes 1-D, same length >= 2")
+        self.n = y.size
+        h = 1.0 / (self.n - 1)
+        dy = np.diff(y)
+        m0, m1 = h * m[:-1], h * m[1:]
+        # the (t^3, t^2, t, 1) coefficients of each cell, one contiguous array each (four
+        # gathers by np.take are faster than one gather of rows and strided columns)
+        self._c = tuple(np.ascontiguousarray(c) for c in
+                        (m0 + m1 - 2 * dy, 3 * dy - 2 * m0 - m1, m0, y[:-1]))
+
+    def cells(self, s):
+        """Cell index of each s in [0, 1] (the last node belongs to the last cell)."""
+        x = np.asarray(s, dtype=float) * (self.n - 1)
+        return np.minimum(x.astype(np.intp), self.n - 2)
+
+    def __call__(self, s):
+        """p(s) for s in [0, 1] (an array)."""
+        return self.evaluate(s)[0]
+
+    def evaluate(self, s):
+        """(p(s), cell index of each s) for s in [0, 1] (an array), Horner in place."""
+        x = np.asarray(s, dtype=float) * (self.n - 1)
+        i = x.astype(np.intp)
+        np.minimum(i, self.n - 2, out=i)
+        x -= i                               # t in [0, 1]
+        c3, c2, c1, c0 = self._c
+        r = c3.take(i)
+        r *= x
+        r += c2.take(i)
+        r *= x
+        r += c1.take(i)
+        r *= x
+        r += c0.take(i)
+        return r, i
 
 
 def _slopes_not_a_knot(x, h, m):
@@ -254,7 +363,7 @@ def _excess(u):
     return np.where(small, series, direct)
 
 
-def log1p_excess_root(t):
+def log1p_excess_root(t, *, checked=True):
     r"""The root u >= 0 of :math:`u - \ln(1 + u) = t`, for t >= 0.
 
     .. math:: u = -1 - W_{-1}\left(-e^{-1-t}\right)
@@ -270,6 +379,9 @@ def log1p_excess_root(t):
     ----------
     t : float or array_like
         0 <= t < inf [-]; t = 0 gives u = 0.
+    checked : bool, optional
+        False skips the range check of t, for callers whose t lies in the range by
+        construction (default True).
 
     Returns
     -------
@@ -293,7 +405,7 @@ def log1p_excess_root(t):
     N. M. Temme, Special Functions, Wiley (1996), section 11.2.3.
     """
     t = np.asarray(t, dtype=float)
-    if np.any(~(t >= 0)) or np.any(np.isinf(t)):
+    if checked and (np.any(~(t >= 0)) or np.any(np.isinf(t))):
         raise ValueError("log1p_excess_root: t must be finite and >= 0")
     if t.size == 0:
         return t.copy()
@@ -390,20 +502,45 @@ def _halley(u, t, series):
     return u
 
 
+def _halley_large(u, t):
+    """:func:`_halley` for t >= 2 (u >= 3), with fewer passes: ln(1 + u) by log of the
+    rounded 1 + u (its relative rounding, <= 1.1e-16, moves h by as much absolutely,
+    the root by 1.4e-16 absolutely, under u's own rounding of 4.4e-16), and one
+    reciprocal 1/u in place of two divisions by u."""
+    h = np.empty_like(u)
+    w = np.empty_like(u)
+    r = np.empty_like(u)
+    for _ in range(2):
+        np.add(u, 1.0, out=w)
+        np.log(w, out=h)
+        np.subtract(u, h, out=h)
+        h -= t
+        np.divide(1.0, u, out=r)
+        h *= r                          # h/u
+        w *= h                          # Newton step h (1 + u)/u
+        h *= r
+        h *= -0.5
+        h += 1.0                        # 1 - h/(2 u^2)
+        w /= h
+        u -= w
+    return u
+
+
 def _root_block(t):
     """:func:`log1p_excess_root` of one block (t >= 0, finite), Halley from a start
     within 2.4e-2 relative: the series in s = sqrt(2t) (Temme 1996) for t < 2, the
-    fixed point u = t + ln(1 + u) iterated three times from u = t above."""
+    fixed point u = t + ln(1 + u) iterated three times from u = t above (by log of the
+    rounded 1 + u, exact to 1.1e-16 absolutely there)."""
     u = np.empty_like(t)
     lo = float(t.min()) if t.size else 0.0
     if lo >= 2.0:                                  # the common case: one branch
-        np.log1p(t, out=u)
-        u += t
-        np.log1p(u, out=u)
-        u += t
-        np.log1p(u, out=u)
-        u += t
-        return _halley(u, t, False)
+        np.add(t, 1.0, out=u)
+        for k in range(3):
+            np.log(u, out=u)
+            u += t
+            if k < 2:
+                u += 1.0
+        return _halley_large(u, t)
     for kind, sel in ((0, (t > 0) & (t < 0.04)), (1, (t >= 0.04) & (t < 2.0)),
                       (2, t >= 2.0)):
         if not sel.any():
@@ -412,9 +549,10 @@ def _root_block(t):
         if kind < 2:
             s = np.sqrt(2 * ts)
             us = s * (1 + s * (1 / 3 + s * (1 / 36 + s * (-1 / 270 + s / 4320))))
+            u[sel] = _halley(us, ts, kind == 0)
         else:
-            us = ts + np.log1p(ts + np.log1p(ts + np.log1p(ts)))
-        u[sel] = _halley(us, ts, kind == 0)
+            us = ts + np.log(1.0 + ts + np.log(1.0 + ts + np.log(1.0 + ts)))
+            u[sel] = _halley_large(us, ts)
     u[t == 0] = 0.0
     return u
 

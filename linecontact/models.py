@@ -48,6 +48,7 @@ from importlib import import_module
 import numpy as np
 
 from . import classical as _c
+from ._numerics import blockwise
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
@@ -1061,12 +1062,39 @@ class UniversalModel(ContactModel):
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""
-        return out(self.curve.psi(self._dt(depth)) * self._fscale)
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
+                           hint=self._limit_hint())
+        curve, fscale, dscale = self.curve, self._fscale, self._dscale
+        if d.ndim and d.size and min(d.min() / dscale, curve.d_max) >= curve.d_min:
+            # all on the table: the steps of _dt and the curve's psi, fused in blocks
+            def chain(db):
+                dt = db / dscale
+                psi = curve.on_table_psi(np.minimum(dt, curve.d_max, out=dt))
+                psi *= fscale
+                return psi
+
+            return out(blockwise(chain, d))
+        # d <= depth_limit was checked; d/scale may still round above d_max at the end
+        return out(curve.psi(np.minimum(d / dscale, curve.d_max)) * fscale)
 
     def depth(self, force):
         """d(F) [m]; force [N]."""
-        d = self.curve.depth_of_psi(self._psi_of_force(force)) * self._dscale
-        return out(np.minimum(d, self.depth_limit))   # rounding at the closed end only
+        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
+                           hint=self._limit_hint())
+        curve, fscale, dscale = self.curve, self._fscale, self._dscale
+        psi_end, limit = self._psi_end(), self.depth_limit
+        if F.ndim and F.size and F.min() / fscale >= curve.psi_min:
+            # all on the table: the steps below, fused in blocks (cache-resident)
+            def chain(fb):
+                p = fb / fscale
+                d = curve.on_table_depth(np.minimum(p, psi_end, out=p))
+                d *= dscale
+                return np.minimum(d, limit, out=d)
+
+            return out(blockwise(chain, F))
+        # F <= force_limit was checked; F/scale may still round above psi_max at the end
+        d = curve.depth_of_psi(np.minimum(F / fscale, psi_end)) * dscale
+        return out(np.minimum(d, limit))   # rounding at the closed end only
 
     def stiffness(self, depth):
         """k(d) = dF/dd [N/m]; depth [m]."""

@@ -63,7 +63,7 @@ import re
 
 import numpy as np
 
-from ._numerics import blockwise
+from ._numerics import BLOCK, UniformHermite, blockwise
 from .classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
 from .tables import TableError, read_table
 from .validity import (POISSON_RATIO, Interval, OutOfRangeError, UnknownNameError,
@@ -622,6 +622,79 @@ def _ft(model, d, shift, mu, r, beyond):
 
 
 # --------------------------------------------------------------------------------------
+#: Arrays from this many elements on use the tabulated laws of TangentialContact (built
+#: once per contact, about as costly as the direct evaluation of this many elements).
+_TABLE_MIN = 1 << 15
+#: Nodes of those tables, and the largest difference from the direct evaluation at the
+#: cells' midpoints (over mu F, or over u*) with which a table is used.
+_TABLE_NODES = 4097
+_TABLE_TOL = 1e-12
+
+
+class _EndTable:
+    r"""A function y(x) on [0, 1] as a cubic Hermite table in :math:`s = (1-x)^{1/4}`.
+
+    The partial-slip laws are smooth in the load fraction except at x = 1 (gross slip),
+    where the depth of the rest d(F (1 - q)) goes to zero and the normal stiffness with
+    it (logarithmically for a line contact, as a power for a power law): in
+    :math:`1 - x = s^4` that end becomes smooth to high order, and equal steps in s
+    crowd the nodes towards it. Cells holding a kink of the slip correction (its
+    linear interpolation in q) are marked and evaluated directly, as is every element
+    if the table misses the direct values at the cells' midpoints by more than `tol`.
+    """
+
+    def __init__(self, nodes_fun, exact, kinks, nodes=_TABLE_NODES, tol=_TABLE_TOL):
+        s = np.linspace(0.0, 1.0, nodes)
+        x = 1.0 - s ** 4
+        x[0], x[-1] = 1.0, 0.0
+        y, dydx = nodes_fun(x[1:])                       # x < 1: finite slopes
+        y = np.concatenate([[float(exact(np.ones(1))[0])], y])
+        slopes = np.concatenate([[0.0], -4.0 * s[1:] ** 3 * dydx])   # dy/ds, 0 at s = 0
+        self.poly = UniformHermite(y, slopes)
+        self.exact = exact
+        bad = np.zeros(nodes - 1, dtype=bool)
+        for xk in kinks:
+            if 0.0 < xk < 1.0:
+                t = (1.0 - xk) ** 0.25 * (nodes - 1)
+                bad[min(int(np.floor(t)), nodes - 2)] = True
+                bad[min(max(int(np.ceil(t)) - 1, 0), nodes - 2)] = True
+        self.bad = bad
+        sm = (np.arange(nodes - 1) + 0.5) / (nodes - 1)
+        good = ~bad
+        ym = self.poly(sm[good])
+        #: Largest difference from the direct evaluation at the cells' midpoints.
+        self.error = float(np.max(np.abs(ym - exact(1.0 - sm[good] ** 4)))) if good.any() \
+            else 0.0
+        self.usable = bool(self.error <= tol)
+
+    def __call__(self, v, pre, post):
+        """post(y(pre(v)), v) for an array v, in blocks of BLOCK elements: pre maps v to x
+        in [0, 1], post maps y to the result; elementwise both. The marked cells'
+        elements are evaluated directly, all together after the blocks."""
+        poly, bad = self.poly, self.bad
+        v = np.asarray(v, dtype=float)
+        flat = v.ravel()
+        res = np.empty(flat.size)
+        redo = []
+        for k in range(0, flat.size, BLOCK):
+            vb = flat[k:k + BLOCK]
+            s = pre(vb)
+            np.subtract(1.0, s, out=s)
+            np.maximum(s, 0.0, out=s)
+            np.sqrt(s, out=s)
+            np.sqrt(s, out=s)
+            y, i = poly.evaluate(s)
+            res[k:k + BLOCK] = post(y, vb)
+            marked = np.flatnonzero(bad.take(i))
+            if marked.size:
+                redo.append(marked + k)
+        if redo:
+            j = np.concatenate(redo)
+            res[j] = post(self.exact(pre(flat[j])), flat[j])
+        return res.reshape(v.shape)
+
+
+# --------------------------------------------------------------------------------------
 class TangentialContact:
     r"""One normal contact state under tangential load: stick, partial slip, fretting.
 
@@ -784,24 +857,98 @@ class TangentialContact:
         r"""Tangential force F_t(u) [N] under a monotonic shift u [m] from zero.
 
         ``beyond="saturate"`` returns mu F beyond gross slip (|u| > u*) instead of
-        raising :class:`OutOfRangeError`.
+        raising :class:`OutOfRangeError`. With a slip correction, arrays of 32768 values
+        or more are evaluated by a table built once per contact, equal to the root to
+        1e-12 mu F (docs/tangential.md).
         """
         if self._correction is None:
             return out(self._law_force(shift, beyond))
         _check_beyond(beyond)
         u = np.asarray(shift, dtype=float)
-        a = np.abs(u)
         ustar = self.gross_slip_shift
+        if u.size >= _TABLE_MIN and np.isfinite(u.min()) and np.isfinite(u.max()):
+            table = self._table("force")
+            if table is not None:
+                top = max(-float(u.min()), float(u.max()))
+                if beyond == "raise" and top > ustar * (1 + 1e-12):
+                    raise OutOfRangeError("shift", top, f"[-{ustar:.6g}, {ustar:.6g}] m",
+                                          unit="m", hint="beyond gross slip; "
+                                                         "beyond='saturate'")
+                fmax = self.gross_slip_force
+
+                def shift_fraction(ub):       # |u|/u*, 1 from gross slip on
+                    x = np.abs(ub)
+                    x /= ustar
+                    return np.minimum(x, 1.0, out=x)
+
+                def signed_force(q, ub):
+                    q *= fmax
+                    q *= np.sign(ub)
+                    return q
+
+                return out(table(u, shift_fraction, signed_force))
+        a = np.abs(u)
         if beyond == "raise" and np.any(a > ustar * (1 + 1e-12)):
             raise OutOfRangeError("shift", float(a.max()), f"[-{ustar:.6g}, {ustar:.6g}] m",
                                   unit="m", hint="beyond gross slip; beyond='saturate'")
-        q = np.where(a >= ustar, 1.0, self._q_of_shift(np.minimum(a, ustar)))
+        q = np.where(a >= ustar, 1.0, self._q_of_shift_reference(np.minimum(a, ustar)))
         return out(np.sign(u) * q * self.gross_slip_force)
 
     def _corrected_shift(self, q):
         return self._law_shift(q) * self._q_factor(q)
 
-    def _q_of_shift(self, a):
+    def _shift_slope(self, q):
+        """da/dq of the shift a(q) = u_law(q) c(q) for q in [0, 1) (c' of the segment of
+        the slip correction to the right of q): du_law/dq = (mu/r) F / k_n(d(F(1-q)))."""
+        q = np.asarray(q, dtype=float)
+        z = np.asarray(self.model.depth(self.normal_force * (1.0 - q)), dtype=float)
+        k = np.asarray(self.model.stiffness(z), dtype=float)
+        dlaw = self.friction * self.normal_force / (self.ratio * k)
+        if self._correction is None:
+            return dlaw
+        qs, cs = self._correction
+        j = np.clip(np.searchsorted(qs, q, side="right") - 1, 0, qs.size - 2)
+        law = self.friction * (self.depth - z) / self.ratio
+        return dlaw * self._q_factor(q) + law * (cs[j + 1] - cs[j]) / (qs[j + 1] - qs[j])
+
+    def _kinks(self):
+        """Load fractions of the slip correction's kinks (none without one)."""
+        return () if self._correction is None else tuple(self._correction[0][1:-1])
+
+    def _table(self, which):
+        """The tabulated law ("shift": u(q)/u*, "force": q(u/u*)), built once, or None
+        where it does not reproduce the direct evaluation to _TABLE_TOL."""
+        tables = self.__dict__.setdefault("_tables", {})
+        if which not in tables:
+            try:
+                tables[which] = self._build_table(which)
+            except (ValueError, ArithmeticError):
+                # a model that cannot be evaluated at the table's nodes (e.g. at the
+                # tiny rests near gross slip): the direct evaluation stays
+                tables[which] = None
+        return tables[which]
+
+    def _build_table(self, which):
+        ustar = self.gross_slip_shift
+        if which == "shift":
+            def nodes_fun(q):
+                return self._corrected_shift(q) / ustar, self._shift_slope(q) / ustar
+
+            table = _EndTable(nodes_fun, lambda q: self._corrected_shift(q) / ustar,
+                              self._kinks())
+        else:
+            def nodes_fun(x):
+                q = self._q_of_shift_reference(x * ustar)
+                return q, ustar / self._shift_slope(q)
+
+            def exact(x):                     # q = 1 at gross slip, as force() has it
+                return np.where(x >= 1.0, 1.0, self._q_of_shift_reference(x * ustar))
+
+            kinks = [float(self._corrected_shift(qk)) / ustar for qk in self._kinks()]
+            table = _EndTable(nodes_fun, exact, kinks)
+        return table if table.usable else None
+
+    def _q_of_shift_reference(self, a):
         """q with u_law(q) c(q) = a (an increasing function of q on [0, 1]).
 
         A tabulated inverse brackets each root between two of 1025 nodes (one sorted
@@ -862,6 +1009,23 @@ class TangentialContact:
         check_interval("tangential_force", Ft, -fmax * (1 + 1e-12), fmax * (1 + 1e-12),
                        unit="N", hint="more than mu F: the contact slides (no static "
                                       "equilibrium)")
+        if Ft.size >= _TABLE_MIN:
+            table = self._table("shift")
+            if table is not None:
+                ustar = self.gross_slip_shift
+
+                def load_fraction(fb):
+                    q = np.abs(fb)
+                    q /= fmax
+                    return np.minimum(q, 1.0, out=q)
+
+                def signed_shift(y, fb):
+                    y *= ustar
+                    y *= np.sign(fb)
+                    return y
+
+                return out(table(Ft, load_fraction, signed_shift))
+
         def chain(fb):
             q = np.minimum(np.abs(fb) / fmax, 1.0)
             return np.sign(fb) * self._law_shift(q) * self._q_factor(q)

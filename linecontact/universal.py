@@ -137,8 +137,15 @@ class UniversalCurve:
     def psi(self, d_tilde):
         r""":math:`\Psi = F R/(E^* L^3)` at :math:`\tilde d = d R/L^2` [-]."""
         return self._evaluate(
-            d_tilde, lambda d: np.exp(self._spline(np.log(d))),
+            d_tilde, self.on_table_psi,
             lambda d: dimensionless_force(d, self.alpha_small, self.beta_small))
+
+    def on_table_psi(self, d_tilde):
+        r""":math:`\Psi` at values of :math:`\tilde d` that lie in [d_min, d_max] (not
+        checked: for callers that have checked them and fuse this elementwise function
+        with their own scaling in blocks, as the universal model's F(d) does)."""
+        x = self._spline(np.log(d_tilde))
+        return np.exp(x, out=x)
 
     def dpsi(self, d_tilde):
         r""":math:`\Psi' = k/(E^* L)` at :math:`\tilde d` [-]."""
@@ -168,14 +175,7 @@ class UniversalCurve:
         r""":math:`\tilde d` at which :math:`\Psi` takes the given value [-]."""
         p = check_interval("Psi", psi, 0.0, self.psi_max, low_open=True,
                            hint="the universal table ends there")
-        # a tabulated inverse of the spline, polished by one Newton step on the spline
-        if not hasattr(self, "_inverse"):
-            self._inverse = self._spline.inverse_table()
-
-        def on_table(pb):
-            # exp(ln d_max) may round above d_max
-            return np.minimum(np.exp(self._spline.solve_fast(np.log(pb), self._inverse)),
-                              self.d_max)
+        on_table = self.on_table_depth
 
         if p.ndim and p.size and p.min() >= self.psi_min:     # all on the table
             return blockwise(on_table, p)
@@ -186,6 +186,19 @@ class UniversalCurve:
             d = np.where(small, dimensionless_depth(ps, self.alpha_small, self.beta_small),
                          d)
         return d
+
+    def on_table_depth(self, psi):
+        r""":math:`\tilde d` at values of :math:`\Psi` that lie in [psi_min, psi_max]
+        (not checked: for callers that have checked them, and fuse this elementwise
+        function with their own scaling in blocks, as the universal model's d(F) does).
+
+        A tabulated inverse of the spline, polished by one Newton step on the spline
+        (:meth:`linecontact._numerics.NotAKnotSpline.solve_fast`)."""
+        if not hasattr(self, "_inverse"):
+            self._inverse = self._spline.inverse_table()
+        x = self._spline.solve_fast(np.log(psi), self._inverse)
+        np.exp(x, out=x)
+        return np.minimum(x, self.d_max, out=x)      # exp(ln d_max) may round above
 
     def depth_of_x(self, x_tilde):
         r"""MDR profile :math:`\Phi(\tilde x) = \tilde d` with :math:`\Psi'(\tilde d)/2 = \tilde x` [-]."""

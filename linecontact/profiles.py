@@ -153,7 +153,9 @@ class Profile:
         xv = check_interval("x", x, self.x_min - tol, self.x_max + tol, unit="m",
                             hint=f"the {self.label} profile is defined over "
                                  f"[{self.x_min:.6g}, {self.x_max:.6g}] m")
-        xv = np.clip(xv, self.x_min, self.x_max)   # rounding allowance only (tol above)
+        # rounding allowance only (tol above); minimum/maximum: np.clip costs several
+        # times more on the few points of a roller solve
+        xv = np.minimum(np.maximum(xv, self.x_min), self.x_max)
         with np.errstate(divide="ignore"):
             d = np.asarray(self._drop(xv), dtype=float)
         if d.ndim == 0:
@@ -984,7 +986,14 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
         raise OutOfRangeError("profile", profile.label,
                               f"a profile covering [{-length / 2:.6g}, {length / 2:.6g}] m",
                               hint=f"it covers [{profile.x_min:.6g}, {profile.x_max:.6g}] m")
-    P = np.asarray(profile.drop(np.clip(x, profile.x_min, profile.x_max)), dtype=float)
+    xc = np.minimum(np.maximum(x, profile.x_min), profile.x_max)
+    if type(profile).drop is Profile.drop:
+        # x is inside the profile's range (clamped above): its formula directly, without
+        # the public method's range check (the slice solver asks at every step)
+        with np.errstate(divide="ignore"):
+            P = np.asarray(profile._drop(xc), dtype=float)
+    else:
+        P = np.asarray(profile.drop(xc), dtype=float)
     ok = np.isfinite(P) & (P >= 0)
     if ends_may_be_inf:
         ok |= np.isposinf(P) & (np.abs(x) >= length / 2 * (1 - 1e-12))

@@ -277,9 +277,16 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
       the header line 'columns'), exactly;
     - the BEM reference is resolved: off the ends its coarse-to-fine grid change is
       below 0.3 % in deflection, moment and peak pressure (far below the 1 %/5 %
-      targets it judges);
+      targets it judges); where a logarithmic profile's contact ends within microns of
+      the roller end (the rows on 8192 cells along the axis) the change from 4096 x 16
+      to 8192 x 32 cells is stated instead: below 0.3 % in deflection, 1 % in moment
+      and 15 % in peak pressure (measured 0.07 %, 0.75 %, 10.7 %; on 16384 cells the
+      worst peaks move by 0.03-0.12 % more, tools/benchmarks/results/roller_end_bem.txt);
     - issue 9's targets hold in the table: off the ends the runtime is within 1 % in
       deflection and moment (given tilt) and in the zero-moment tilt;
+    - issue 20's targets hold at the default settings: off the ends (the end zones of
+      logarithmic profiles included) the runtime's peak pressure is within 2 % of the
+      BEM and its deflection and moment within 0.5 % (measured 0.76 %, 0.04 %, 0.25 %);
     (test_the_runtime_still_meets_the_shipped_table re-runs the runtime.)"""
     from linecontact.tables import read_table
     import tools.studies.roller_study as rs
@@ -302,11 +309,18 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
                                    rtol=1e-12, atol=1e-15)
         np.testing.assert_allclose(c[f"{m}_err_p_max"], c[f"{m}_p_max"] / c["bem_p_max"] - 1,
                                    rtol=1e-12, atol=1e-15)
+    end = c["bem_nx"] == rs.END_GRIDS[1][0]
     for name in ("change_depth", "change_moment", "change_p_max"):
-        assert np.max(np.abs(c[f"bem_{name}"][off])) < 3e-3, name
+        assert np.max(np.abs(c[f"bem_{name}"][off & ~end])) < 3e-3, name
+    for name, bound in (("change_depth", 3e-3), ("change_moment", 1e-2),
+                        ("change_p_max", 0.15)):
+        assert np.max(np.abs(c[f"bem_{name}"][end]), initial=0) < bound, name
     assert np.max(np.abs(c["rt_err_depth"][off])) < 0.01
     assert np.max(np.abs(c["rt_err_moment"][off & given])) < 0.01
     assert np.max(np.abs(c["rt_err_tilt"][off & free])) < 0.01
+    assert np.max(np.abs(c["rt_err_p_max"][off])) < 0.02
+    assert np.max(np.abs(c["rt_err_depth"][off])) < 5e-3
+    assert np.max(np.abs(c["rt_err_moment"][off & given])) < 5e-3
 
 
 @pytest.mark.slow

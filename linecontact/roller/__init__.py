@@ -70,7 +70,12 @@ Edge loading: on a half-space the pressure at a sharp roller end touched by the 
 is singular (a rigid flat-ended punch, Johnson 1985 section 5.6); the per-slice peak
 there grows without bound as the slices are refined. The solution then reports
 ``edge_loaded = True`` and ``p_max = None`` with a message, never a grid-dependent
-number.
+number. Where the profile's drop is infinite at the ends (ISO 16281, Lundberg) the
+contact stays microns inside them and the pressure stays finite: the overlap
+interval's end is located between the last grid point and the end, and where the peak
+is still unresolved the end slices are refined until it settles (within 0.72 % of a
+3D BEM on 16384 cells along the axis in the worst case measured; docs/
+profiled_rollers.md, "Slice convergence").
 
 Measured range: ``tables/roller_accuracy.csv`` (tools/studies/roller_study.py) maps this
 model's error against a 3D boundary-element solution over L/D, the mean line load

@@ -38,6 +38,9 @@ def _coverage():
                 free_tilt=pair("covered_free_tilt_rad"),
                 tilt_drop=pair("covered_tilt_drop_over_approach"),
                 profiles=tuple(k.strip() for k in meta["covered_profiles"].split(",")),
+                # optional (tables before issue 20 lack it): None, not measured
+                end_gap=(pair("covered_infinite_end_gap_over_length")
+                         if "covered_infinite_end_gap_over_length" in meta else None),
                 off=errors("runtime_error_off_ends"),
                 edge=errors("runtime_error_edge_loaded"))
         except (FileNotFoundError, KeyError, ValueError):
@@ -68,13 +71,14 @@ def _pct(v):
 
 
 def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
-                   free_tilt=False, edge_loaded=False, n_slices=100):
+                   free_tilt=False, edge_loaded=False, n_slices=100, end_gap=None):
     """The note on where a coupled-slice case lies relative to the range measured in
     tables/roller_accuracy.csv (L/D with D = 2R, F/(L E* D), |theta| given or free,
     the tilt drop |theta| L/2 over the largest rigid overlap `approach` [m], the profile
-    key, n_slices >= 100): names each quantity outside, and states the table's largest
-    errors (off the ends, or edge loaded). Bounds with a relative slack of 1e-5 (the
-    header prints 6 digits)."""
+    key, n_slices >= 100, and `end_gap`, the contact's distance from a roller end where
+    the profile's drop is infinite over L, None if there is no such end): names each
+    quantity outside, and states the table's largest errors (off the ends, or edge
+    loaded). Bounds with a relative slack of 1e-5 (the header prints 6 digits)."""
     cov = _coverage()
     where = "the 3D BEM (tables/roller_accuracy.csv)"
     if cov is None:
@@ -96,6 +100,10 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
     if profile_key not in cov["profiles"]:
         outside.append(f"profile '{profile_key}' (measured: "
                        f"{', '.join(cov['profiles'])})")
+    if end_gap is not None and cov["end_gap"] is not None and (
+            end_gap < cov["end_gap"][0] * (1 - _COVER_SLACK)):
+        outside.append(f"the contact ends {end_gap:.2g} L from a roller end where the "
+                       f"drop is infinite (measured down to {cov['end_gap'][0]:.2g} L)")
     if n_slices < 100:
         outside.append(f"n_slices = {n_slices} (measured with 100)")
     off, edge = cov["off"], cov["edge"]

@@ -49,6 +49,16 @@ def _series_coefficients():
 
 
 _ALPHA, _GAMMA = _series_coefficients()
+
+
+def far_field_coefficients(nterms):
+    """The series of the four strip functions in u = tau^-2 (tau >= 2.5), as a
+    (nterms, 4) array c: r - C0, tau a', p and tau p' equal sum_j c[j - 1] u^j
+    (j = 1..nterms) less the constant 1 of tau a' (all four differences of two edges,
+    as the kernel uses them, lose the constants)."""
+    k = np.arange(1, nterms + 1)
+    a, g = _ALPHA[:nterms], _GAMMA[:nterms]
+    return np.column_stack([a, -2 * k * a, g, -2 * k * g])
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(40)
 
 
@@ -106,19 +116,19 @@ def _near_table():
         z = np.linspace(z0, z1, n)
         h = (z1 - z0) / (n - 1)
         y = np.column_stack(_direct(np.exp(z)))             # (n, 4)
-        # (segment, power, function), lowest power first
-        c = np.stack([NotAKnotSpline(z, y[:, j]).c[::-1].T for j in range(4)], axis=-1)
-        # one contiguous (segment, function) table per power: four gathers of 32 bytes
-        # per point instead of one of 128 bytes read through strided views (about
-        # twice as fast)
+        # (function, power, segment), lowest power first
+        c = np.stack([NotAKnotSpline(z, y[:, j]).c[::-1] for j in range(4)])
+        # one contiguous (function, segment) table per power: the gathers and the
+        # Horner steps then run along the points (an inner loop over the four
+        # functions is several times slower)
         c0, c1, c2, c3 = (np.ascontiguousarray(c[:, k]) for k in range(4))
 
         def spline(zq):
             u = (zq - z0) * (1.0 / h)
-            i = np.clip(u.astype(np.intp), 0, n - 2)
-            t = ((u - i) * h)[:, None]
-            return ((np.take(c3, i, 0) * t + np.take(c2, i, 0)) * t
-                    + np.take(c1, i, 0)) * t + np.take(c0, i, 0)
+            i = np.minimum(u.astype(np.intp), n - 2)        # u >= 0: tau >= _TAB_MIN
+            t = (u - i) * h
+            return ((np.take(c3, i, 1) * t + np.take(c2, i, 1)) * t
+                    + np.take(c1, i, 1)) * t + np.take(c0, i, 1)
 
         _NEAR_TABLE.append(spline)
     return _NEAR_TABLE[0]
@@ -208,9 +218,9 @@ def strip_values(flat):
     r, ta, p, tp = np.empty((4, flat.size))
     tab = (flat >= _TAB_MIN) & (flat < _TAB_MAX)
     if np.all(tab):
-        return _near_table()(np.log(flat)).T
+        return _near_table()(np.log(flat))
     if np.any(tab):
-        r[tab], ta[tab], p[tab], tp[tab] = _near_table()(np.log(flat[tab])).T
+        r[tab], ta[tab], p[tab], tp[tab] = _near_table()(np.log(flat[tab]))
     rest = ~tab
     r[rest], ta[rest], p[rest], tp[rest] = _direct(flat[rest])
     return r, ta, p, tp

@@ -4,6 +4,7 @@ described in :mod:`linecontact.roller`).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -20,6 +21,13 @@ __all__ = ["ProfiledRoller", "roller_contact"]
 #: Default grading of the slice widths towards the ends of the overlap interval
 #: (slices.slice_positions; docs/profiled_rollers.md, "Slice convergence").
 DEFAULT_GRADING = 0.8
+#: refinements of the end slices where the peak is not resolved, and the change in
+#: p_max between the last two below which it counts as converged
+#: (ProfiledRoller._end_refined; docs/profiled_rollers.md, "Slice convergence")
+REFINE_LEVELS = 3
+REFINE_TOL = 2e-3
+#: the relative distances from an infinite-drop end at which _end_root looks first
+_END_STEPS = np.geomspace(1.0, 1e-6, 40)
 
 
 class ProfiledRoller:
@@ -58,6 +66,15 @@ class ProfiledRoller:
         default the peak pressure is within 0.5 % of the converged 3D BEM over
         tables/roller_accuracy.csv, where 100 uniform slices were 3 % off
         (docs/profiled_rollers.md, "Slice convergence").
+    refine_ends : bool, optional
+        Where the peak is not resolved (it sits within two slices of the contact's
+        end, or in the end zone of an end where the profile's drop is infinite, e.g.
+        a logarithmic profile at a high load, whose contact ends microns before the
+        roller end), solve again with the three end slices at each end split into
+        slices growing geometrically from 1/32, 1/64, 1/128 of their width, until two
+        successive refinements agree within 0.2 % in p_max (default True; False:
+        report the unrefined solution, flagged). Solutions whose peak is resolved
+        are not affected.
 
     Notes
     -----
@@ -81,7 +98,7 @@ class ProfiledRoller:
     """
 
     def __init__(self, radius, length, estar, profile=None, n_slices=100,
-                 grading=DEFAULT_GRADING):
+                 grading=DEFAULT_GRADING, refine_ends=True):
         self.radius = float(check_positive("radius", radius, "m"))
         self.length = float(check_positive("length", length, "m"))
         self.estar = float(check_positive("estar", estar, "Pa"))
@@ -94,6 +111,8 @@ class ProfiledRoller:
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
+        self.refine_ends = bool(refine_ends)
+        self._refine = 0
         self._warm = None
         self._memo = None
         self._free_memo = 0.0
@@ -160,28 +179,59 @@ class ProfiledRoller:
                 lo = x0 + h * (-o0 / delta)
                 dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
             elif i > 0:
-                lo = fx[i]
+                # the drop is infinite at the end x = -L/2 (a logarithmic profile)
+                lo, dlo = self._end_root(d, th, fx[i], -1)
             if j < len(fx) - 1 and np.isfinite(over[j + 1]):
                 o0, o1, x0, x1 = over[j], over[j + 1], fx[j], fx[j + 1]
                 delta = o0 - o1
                 hi = x0 + h * (o0 / delta)
                 dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
             elif j < len(fx) - 1:
-                hi = fx[j]
+                hi, dhi = self._end_root(d, th, fx[j], 1)
         s = SliceEquations(self.radius, self.estar, float(lo), float(hi), self.n_slices,
                            lambda x: roller_drop(self.profile, self.length, x),
-                           self.grading)
+                           self.grading, self._refine)
         s.dlo, s.dhi = dlo, dhi
         s.slope = self._slope
         return s
+
+    def _end_root(self, d, th, x_in, side):
+        """The end of the overlap interval between the last grid point x_in inside it
+        and the roller end side L/2 (side = -1, +1), where the drop is infinite (a
+        logarithmic profile): the rigid overlap d + theta x - P(x) falls to zero there
+        within the last grid interval, L/(16 n) wide, which is as wide as several end
+        slices. Located on 40 points graded geometrically towards the end (from the
+        interval's width down to 1e-6 of it), then on 33 even points in the bracket,
+        and interpolated linearly there, as on the grid (continuous in d and theta).
+        Returns the end and its derivatives with respect to (d, theta)."""
+        L = self.length
+        end = side * L / 2
+        u = abs(end - x_in) * _END_STEPS                     # distances from the end
+        for level in range(2):
+            x = end - side * u
+            over = d + th * x - roller_drop(self.profile, L, x)
+            out = np.flatnonzero(over <= 0)
+            if len(out) == 0:           # overlapping to within 1e-6 of the interval
+                return float(x[-1]), (0.0, 0.0)
+            k = int(out[0])             # over[0] > 0: x_in is inside the interval
+            if level == 0:
+                u = np.linspace(u[k - 1], u[k], 33)
+        o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
+        delta = o0 - o1
+        h = x1 - x0
+        root = x0 + h * (o0 / delta)
+        return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
 
     def _slope(self, x):
         """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""
         h = 1e-7 * self.length
         lo, hi = -self.length / 2, self.length / 2
-        xp, xm = np.minimum(x + h, hi), np.maximum(x - h, lo)
-        return (roller_drop(self.profile, self.length, xp)
-                - roller_drop(self.profile, self.length, xm)) / (xp - xm)
+        # inside the roller by 1e-9 L/2: a logarithmic profile's drop is infinite at
+        # the ends
+        xp = np.minimum(x + h, hi * (1 - 1e-9))
+        xm = np.maximum(x - h, lo * (1 - 1e-9))
+        P = roller_drop(self.profile, self.length, np.concatenate([xp, xm]))
+        return (P[:len(x)] - P[len(x):]) / (xp - xm)
 
     # -- depth control ---------------------------------------------------------------
     def at_depth(self, depth, tilt=0.0):
@@ -218,7 +268,7 @@ class ProfiledRoller:
         if np.size(depth) != 1:
             return _each(lambda d: self.at_depth(d, tilt), depth, "depth", "m")
         try:
-            return self._at_depth(depth, tilt)
+            return self._end_refined(lambda: self._at_depth(depth, tilt))
         except ConvergenceError as exc:
             raise ConvergenceError(f"{exc}; the geometry may be the cause: "
                                    + geometry_cause(self.radius, self.length,
@@ -234,6 +284,52 @@ class ProfiledRoller:
                                           f"at depth {d0:.6g} m; at or below it there is "
                                           "no contact").item()
         return self._solution(*self._forces(d, th))
+
+    def _end_refined(self, solve):
+        """`solve()`, and where its peak is not resolved (at the contact's end, or in
+        the end zone of an infinite-drop end) solved again with the end slices split
+        (slices.end_refined, levels 1, 2, 3: end slices 1/32, 1/64, 1/128 of the
+        three base slices they replace, growing by at most 10 % a slice), each from
+        the last solution, until two successive levels resolve the peak and agree
+        within REFINE_TOL. Otherwise the finest level solved is returned, flagged
+        unresolved, with the change it measured."""
+        sol = solve()
+        if sol.edge_loaded or sol.p_max_resolved or not self.refine_ends:
+            return sol
+        prev, change, done = sol, math.inf, 0
+        try:
+            for level in range(1, REFINE_LEVELS + 1):
+                self._refine = level
+                try:
+                    sol = solve()
+                except ConvergenceError as exc:
+                    sol = dataclasses.replace(prev, message=(
+                        f"{prev.message}; refining the end slices further failed "
+                        f"({exc})"))
+                    change = math.inf
+                    break
+                done = level
+                if sol.edge_loaded:
+                    return sol
+                change = abs(sol.p_max / prev.p_max - 1)
+                if level > 1 and sol.p_max_resolved and prev.p_max_resolved and (
+                        change <= REFINE_TOL):
+                    return dataclasses.replace(sol, message=(
+                        f"{sol.message}; the end slices refined {level} times "
+                        f"({sol.n_slices} slices, the finest "
+                        f"{min(sol.width[0], sol.width[-1]):.3g} m wide): p_max changed by "
+                        f"{100 * change:.2g} % at the last refinement"))
+                prev = sol
+        finally:
+            self._refine = 0
+        msg = sol.message
+        if sol.p_max_resolved:
+            msg += "; not converged, refine n_slices"
+        return dataclasses.replace(sol, p_max_resolved=False, message=(
+            f"{msg} (the end slices refined {done} times, {sol.n_slices} "
+            f"slices, the finest {min(sol.width[0], sol.width[-1]):.3g} m wide: p_max "
+            f"changed by {100 * change:.2g} % at the last refinement, more than "
+            f"{100 * REFINE_TOL:g} %)"))
 
     def _warm_start(self, s, d, th):
         """The last solution, mapped onto the grid s by the relative position in the
@@ -254,7 +350,26 @@ class ProfiledRoller:
         """Solve with the force and/or zero moment imposed, Newton on the slice loads
         together with d and/or theta (SliceEquations.bordered) from depth d, tilt th."""
         s = self._grid(d, th)
-        S, q, c = s.start(d, th, self._warm_start(s, d, th))
+        warm = self._warm_start(s, d, th)
+        first = None
+        # the last solution as it is where its force is within 10 % (an end refinement
+        # solves the same force again; a close sweep step), else its strip widths in
+        # the bordered linear start
+        close = (warm is not None and self._memo is not None and force is not None
+                 and abs(force / self._memo[2] - 1) < 0.1)
+        if force is not None and not close:
+            width = None
+            if warm is not None:
+                # the last solution's strip widths, scaled as b ~ overlap^(1/2)
+                xi_o, qo, co, eo = self._warm
+                on = qo > 0
+                ratio = float(np.max(d + th * s.x - s.P)) / eo
+                width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
+            first = s.start_at_force(self._grid, d, th, force, zero_moment, width)
+        if first is None:
+            S, q, c = s.start(d, th, warm)
+        else:
+            s, S, q, c, d, th = first
         s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
                                                 zero_moment, tol)
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
@@ -349,9 +464,12 @@ class ProfiledRoller:
                          "parabolic gap y^2/(2R) is inaccurate")
         with np.errstate(invalid="ignore"):
             approach = float(np.max(d + th * self._fx - self._fP))
+        gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
+            [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,
                                     self.profile.key, F, th, approach, free_tilt,
-                                    edge is not None, self.n_slices))
+                                    edge is not None, self.n_slices,
+                                    min(gaps) if gaps else None))
         its, self.iterations = self.iterations, 0
         return RollerSolution(
             depth=float(d), tilt=float(th), force=float(F), moment=float(M),
@@ -359,7 +477,7 @@ class ProfiledRoller:
             x=s.x.copy(), width=s.w.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,
             contact_start=start, contact_end=stop, contact_length=stop - start,
             edge_loaded=edge is not None, edge=edge, message=msg, method="coupled slices",
-            n_slices=self.n_slices, iterations=its, notes=tuple(notes),
+            n_slices=len(s.x), iterations=its, notes=tuple(notes),
             p_max_resolved=resolved)
 
     # -- force control -----------------------------------------------------------------
@@ -434,7 +552,7 @@ class ProfiledRoller:
             return _each(lambda f: self.at_force(f, tilt, tol), force, "force", "N")
         F0 = float(check_positive("force", force, "N"))
         try:
-            return self._at_force(F0, tilt, tol)
+            return self._end_refined(lambda: self._at_force(F0, tilt, tol))
         except ConvergenceError as exc:
             raise ConvergenceError(f"{exc}; the geometry may be the cause: "
                                    + geometry_cause(self.radius, self.length,

@@ -167,14 +167,30 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
             idx = idx[:2] if all(0 <= j < n and q[j] > 0 for j in idx[:2]) else idx[:1]
         if len(idx) == 1:
             return x[i] + step * w[i] / 2
-        coef = np.polyfit(x[idx], q[idx], len(idx) - 1)
-        roots = np.roots(coef)
-        roots = roots[np.isreal(roots)].real
-        lo, hi = sorted((x[i], x[i] + step * w[i]))
-        roots = roots[(roots >= lo) & (roots <= hi)]
-        if len(roots) == 0:
+        # the line or parabola through them, in u = x - x[i]: q0 + s1 u + a u (u - u1)
+        # (Newton's divided differences), its real roots in closed form
+        u1 = float(x[idx[1]] - x[i])
+        q0, q1 = float(q[i]), float(q[idx[1]])
+        s1 = (q1 - q0) / u1
+        a = 0.0
+        if len(idx) == 3:
+            u2 = float(x[idx[2]] - x[i])
+            a = ((float(q[idx[2]]) - q1) / (u2 - u1) - s1) / u2
+        bq = s1 - a * u1
+        if a == 0.0:
+            roots = [-q0 / bq] if bq != 0.0 else []
+        else:
+            disc = bq * bq - 4.0 * a * q0
+            if disc < 0.0:
+                roots = []
+            else:
+                h = -0.5 * (bq + math.copysign(math.sqrt(disc), bq))
+                roots = [h / a, q0 / h] if h != 0.0 else [0.0]
+        lo, hi = sorted((0.0, step * float(w[i])))
+        roots = [r for r in roots if lo <= r <= hi]
+        if not roots:
             return x[i] + step * w[i] / 2
-        return float(roots[np.argmin(np.abs(roots - x[i]))])
+        return float(x[i] + min(roots, key=abs))
 
     lo = -L / 2 if lo is None else lo
     hi = L / 2 if hi is None else hi

@@ -82,7 +82,10 @@ def bem_times(table, n_cases):
     """Seconds per BEM force-controlled solve at the study's two grids."""
     tasks = _tasks_from_table(table)
     pick = np.linspace(0, len(tasks) - 1, n_cases).round().astype(int)
-    n_x, n_y = int(np.min(table.columns["bem_nx"])) // 2, int(np.min(table.columns["bem_ny"])) // 2
+    # the study's standard pair (the row with the fewest cells along x: the end-zone
+    # rows of logarithmic profiles have 8192 x 32, the others 256 x 64)
+    i = int(np.argmin(table.columns["bem_nx"]))
+    n_x, n_y = int(table.columns["bem_nx"][i]) // 2, int(table.columns["bem_ny"][i]) // 2
     out = []
     for i in pick:
         t = tasks[i]
@@ -120,6 +123,10 @@ def report(rows, bem, table_path):
         return abs(r[model][k]), (f"{t['profile']}, L = {t['length'] * 1e3:g} mm, "
                                   f"F = {t['force']:g} N, tilt = {tilt}")
 
+    try:                    # the repository's table by its relative path
+        table_path = Path(table_path).resolve().relative_to(REPO)
+    except ValueError:
+        pass
     say(f"reference: {table_path} ({len(rows)} cases: {len(off)} off the ends, "
         f"{len(edge)} edge loaded)")
     say("")

@@ -16,6 +16,19 @@ tables/roller_accuracy.csv, tools/studies/roller_study.py ``make_profile``):
 
 For each: p_max [MPa], depth [um], moment [N m] and whether p_max is flagged
 unresolved, per (n, spacing); the BEM values where the table has the case.
+
+    OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_slices --ends \
+        [--n 50,100,200]
+
+The end zones of logarithmic profiles instead: every ISO 16281 and Lundberg case of
+tables/roller_accuracy.csv whose peak 100 graded slices leave unresolved without the
+end refinement (``refine_ends=False``; the contact ends microns before the roller
+end). Per case: the unrefined 100-slice peak, then at each n the default solve (the
+end slices refined until the peak settles: the slices used, p_max, depth, moment,
+resolved), and a reference of 400 slices graded 0.99 (end slices 0.35-0.75 um),
+refined likewise; last, the largest differences from the reference over the cases:
+p_max relative, depth over the largest overlap, moment relative (tilted) or over
+F L/2 (aligned), and the median CPU seconds of a solve.
 """
 from __future__ import annotations
 
@@ -39,8 +52,14 @@ def _bem_row(length, profile_code, force, tilt):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--n", default="50,100,200,400")
+    ap.add_argument("--n", default=None, help="slice counts (default 50,100,200,400; "
+                    "with --ends 50,100,200)")
+    ap.add_argument("--ends", action="store_true",
+                    help="the end zones of the table's logarithmic-profile cases")
     a = ap.parse_args(argv)
+    if a.ends:
+        return ends([int(v) for v in (a.n or "50,100,200").split(",")])
+    a.n = a.n or "50,100,200,400"
     from linecontact.roller import ProfiledRoller
     from linecontact.roller.model import DEFAULT_GRADING
     from tools.studies import roller_study as rs
@@ -67,6 +86,61 @@ def main(argv=None):
                 pm = "-" if s.p_max is None else f"{s.p_max / 1e6:9.1f}"
                 print(f"  {n:<5d} {label:<12s} {pm:>10s}  {s.depth * 1e6:9.5f}  "
                       f"{s.moment:11.5f}  {s.p_max_resolved}", flush=True)
+    return 0
+
+
+def ends(ns):
+    """The --ends report (module docstring)."""
+    import time
+
+    from linecontact.roller import ProfiledRoller
+    from linecontact.tables import read_table
+    from tools.studies import roller_study as rs
+
+    c = read_table("roller_accuracy").columns
+    worst = {n: [0.0, 0.0, 0.0] for n in ns}
+    cpu = {n: [] for n in ns}
+    count = 0
+    for i in range(len(c["force"])):
+        code = int(c["profile"][i])
+        if rs.PROFILES[code] not in ("iso16281", "lundberg") or c["free_tilt"][i]:
+            continue
+        L, F, th = float(c["roller_length"][i]), float(c["force"][i]), float(c["tilt"][i])
+        prof = rs.make_profile(rs.PROFILES[code], L)
+
+        def solve(**kw):
+            t0 = time.process_time()
+            s = ProfiledRoller(D / 2, L, ESTAR, prof, **kw).at_force(F, tilt=th)
+            return s, time.process_time() - t0
+
+        u, _ = solve(refine_ends=False)
+        if u.p_max_resolved or u.edge_loaded:
+            continue
+        count += 1
+        ref, _ = solve(n_slices=400, grading=0.99)
+        delta = ref.depth + abs(th) * L / 2          # the largest overlap (log profile)
+        print(f"row {i}: {rs.PROFILES[code]}, L {L * 1e3:g} mm, F {F:g} N, tilt "
+              f"{th * 1e3:g} mrad; unrefined 100 slices: p_max {u.p_max / 1e6:.1f} MPa "
+              f"(not resolved); reference 400 graded 0.99 ({ref.n_slices} slices): p_max "
+              f"{ref.p_max / 1e6:.1f} MPa, depth {ref.depth * 1e6:.5f} um, moment "
+              f"{ref.moment:.5f} N m, resolved {ref.p_max_resolved}", flush=True)
+        for n in ns:
+            s, dt = solve(n_slices=n)
+            cpu[n].append(dt)
+            ep = s.p_max / ref.p_max - 1
+            ed = (s.depth - ref.depth) / delta
+            em = s.moment / ref.moment - 1 if th else (s.moment - ref.moment) / (F * L / 2)
+            for k, v in enumerate((ep, ed, em)):
+                worst[n][k] = max(worst[n][k], abs(v))
+            print(f"  n {n:<4d} ({s.n_slices} slices): p_max {s.p_max / 1e6:9.1f} MPa "
+                  f"({ep:+.3%}), depth {s.depth * 1e6:.5f} um ({ed:+.1e}), moment "
+                  f"{s.moment:.5f} N m ({em:+.1e}), resolved {s.p_max_resolved}, CPU "
+                  f"{dt:.3f} s", flush=True)
+    print(f"{count} cases; largest |difference| from the reference:")
+    for n in ns:
+        p, d, m = worst[n]
+        print(f"  n {n}: p_max {p:.3%}, depth {d:.1e} of the overlap, moment {m:.1e}; "
+              f"median CPU {np.median(cpu[n]):.3f} s")
     return 0
 
 

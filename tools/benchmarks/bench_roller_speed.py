@@ -21,14 +21,24 @@ tilt. Measured:
 
 Runs against any checkout whose ``linecontact`` is first on the path (it uses only
 ``ProfiledRoller(R, L, E*, profile, n_slices=...)`` and ``at_force``), so that the
-same command times an older version for a paired comparison.
+same command times an older version for a paired comparison. ``--against DIR`` does
+that pairing itself: it runs this command (without ``--against``) in turn on this
+checkout and on the checkout DIR (each in a fresh process with its own directory first
+on ``PYTHONPATH``), ``--rounds`` times each, A B A B, and prints the ratios of the
+one-solve medians round by round and their median. ``--no-refine`` solves with
+``refine_ends=False`` (the solver alone, without the end refinement's re-solves;
+only for versions that have that option).
 """
 from __future__ import annotations
 
 import argparse
+import os
+import re
 import statistics
+import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -53,7 +63,13 @@ def main(argv=None):
     ap.add_argument("--bem-repeat", type=int, default=3)
     ap.add_argument("--no-bem", action="store_true")
     ap.add_argument("--n-slices", type=int, default=100)
+    ap.add_argument("--no-refine", action="store_true")
+    ap.add_argument("--against", default=None, metavar="DIR")
+    ap.add_argument("--rounds", type=int, default=2)
     a = ap.parse_args(argv)
+    if a.against:
+        return _paired(a, argv if argv is not None else sys.argv[1:])
+    extra = {"refine_ends": False} if a.no_refine else {}
 
     import linecontact
     from linecontact.roller import ProfiledRoller
@@ -63,13 +79,14 @@ def main(argv=None):
     prof = rs.make_profile("iso16281", L, R, ESTAR)
 
     def cold(force, tilt):
-        return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices).at_force(force,
-                                                                              tilt=tilt)
+        return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices,
+                              **extra).at_force(force, tilt=tilt)
 
     cold(FORCE, TILT)                      # the strip-function table, built once
-    print(f"linecontact from {linecontact.__file__}")
+    print(f"linecontact from {os.path.relpath(linecontact.__file__)}")
     print(f"case: ISO 16281 profile, D {D * 1e3:g} mm, L {L * 1e3:g} mm, F {FORCE:g} N, "
-          f"{a.n_slices} slices (default spacing of this version)")
+          f"{a.n_slices} slices (default spacing of this version)"
+          + (", refine_ends=False" if a.no_refine else ""))
     rows = {}
     for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
         t, s = _cpu(lambda: cold(FORCE, tilt), a.repeat)
@@ -82,8 +99,8 @@ def main(argv=None):
     forces = np.linspace(100e3, 2000e3, a.sweep) * L
     for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
         def sweep():
-            return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices).at_force(
-                forces, tilt=tilt)
+            return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices,
+                                  **extra).at_force(forces, tilt=tilt)
 
         def singles():
             return [cold(f, tilt) for f in forces]
@@ -104,6 +121,43 @@ def main(argv=None):
                                                     workers=1), a.bem_repeat)
             print(f"coarse 3D BEM 128 x 32, {label}: CPU median {tb * 1e3:.0f} ms over "
                   f"{a.bem_repeat}; ratio BEM / one solve {tb / rows[label]:.0f}")
+    return 0
+
+
+def _paired(a, argv):
+    """This command on this checkout (A) and on the checkout a.against (B), in turn,
+    a.rounds times each; the ratios A/B of the one-solve medians."""
+    here = Path(__file__).resolve().parents[2]
+    other = Path(a.against).resolve()
+    args, skip = [], False
+    for v in argv:                             # the same options, less --against/--rounds
+        if skip:
+            skip = False
+            continue
+        if v in ("--against", "--rounds"):
+            skip = True
+            continue
+        if v.startswith(("--against=", "--rounds=")):
+            continue
+        args.append(v)
+    pat = re.compile(r"one solve, cold, (.+?): CPU median ([\d.]+) ms")
+    ratios = {}
+    for r in range(a.rounds):
+        got = {}
+        for name, root in (("A", here), ("B", other)):
+            env = dict(os.environ, PYTHONPATH=str(root))
+            out = subprocess.run([sys.executable, "-m", "tools.benchmarks.bench_roller_speed",
+                                  *args], cwd=root, env=env, capture_output=True, text=True,
+                                 check=True).stdout
+            print(f"--- round {r + 1}, {name} = {root.name}:")
+            print(out.rstrip())
+            got[name] = {k: float(v) for k, v in pat.findall(out)}
+        for k in got["A"]:
+            ratios.setdefault(k, []).append(got["A"][k] / got["B"][k])
+    for k, v in ratios.items():
+        print(f"paired ratio A/B, one solve, {k}: rounds "
+              + ", ".join(f"{x:.3f}" for x in v) + f"; median {statistics.median(v):.3f}"
+              f" (B/A {1 / statistics.median(v):.1f} x)")
     return 0
 
 

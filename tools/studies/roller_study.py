@@ -12,7 +12,18 @@ tilt: the roller free to tilt, zero moment):
    each direction on the same window (tools.bem.roller.grid_convergence). The
    reference is the finer grid; the change between the two grids is its stated
    resolution (columns ``bem_change_*``); every ``check_every``-th case is also solved
-   on a third grid (4x) and the observed orders go to the header. A case is *edge
+   on a third grid (4x) and the observed orders go to the header. Where the profile's
+   drop is infinite at the roller ends (ISO 16281, Lundberg) and the finer grid's
+   contact comes within two cells of an end, the contact ends microns before the end,
+   inside those cells (55 um at L = 14 mm on 256 cells): the peak pressure, where it
+   sits, the contact's extent and edge loading come instead from ``END_GRIDS`` =
+   4096 x 16 and 8192 x 32 cells of the same window (1.7 um along the axis at L = 14
+   mm), each one depth-controlled solve at the finer grid's depth and tilt; the depth
+   and moment too, corrected to the force F to first order with the finer grid's
+   stiffnesses (the force there differs from F by under 0.2 %); the change between
+   those two grids is then the stated resolution, and there is no third grid (the
+   convergence of that end zone on 2048-16384 cells:
+   tools/benchmarks/bench_roller_end_bem.py). A case is *edge
    loaded* when the contact reaches a roller end cell on either grid: its peak
    pressure is then a singular end peak that depends on the grid (reported, never
    used as a target).
@@ -52,7 +63,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bem.roller import grid_convergence, solve_roller_force
+from ..bem.roller import grid_convergence, solve_roller, solve_roller_force
 from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parents[2]
@@ -67,6 +78,9 @@ CROWN_OFFSET = 0.002                  #: offset crown (free tilt: theta = -x0/Rc
 CROWN_RADII_ASYM = (0.5, 0.25)        #: asymmetric crown: Rc for x < 0 and x > 0 [m]
 DESIGN_LINE_LOAD = 8e5                #: Lundberg / Johns-Gohar design load F0/L [N/m]
 RELIEF = dict(relief_fraction=0.15, corner_radius=0.05)  #: relief length / L, arc [m]
+#: the two grids (n_x, n_y) on the finer grid's window where a logarithmic profile's
+#: contact comes within two cells of a roller end (module docstring, item 1)
+END_GRIDS = ((4096, 16), (8192, 32))
 
 #: profile codes of the table (numeric columns only)
 PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
@@ -144,7 +158,9 @@ def bem_case(task):
     c, f = g["coarse"], g["fine"]
     edge = bool(c.edge_loaded or f.edge_loaded)
     order_d = order_m = np.nan
-    if task.get("check"):
+    refined = _infinite_end(prof, task["length"]) and (
+        f.edge_loaded or _end_gap(f, task["length"]) < 2 * f.grid.dx)
+    if task.get("check") and not refined:
         # a third grid on the same window: the observed order of d and M
         h = solve_roller_force(task["radius"], task["length"], task["estar"], task["force"],
                                tilt=task["tilt"], profile=prof, n_x=2 * f.grid.nx,
@@ -152,11 +168,11 @@ def bem_case(task):
                                start=(f.depth, f.tilt), workers=1)
         order_d = _order(c.depth, f.depth, h.depth)
         order_m = _order(c.moment, f.moment, h.moment)
-    return dict(order_depth=order_d, order_moment=order_m,
+    out = dict(order_depth=order_d, order_moment=order_m,
         depth=f.depth, moment=f.moment, p_max=f.p_max, x_at_p_max=f.x_at_p_max,
         contact_length=f.contact_length, stiffness=f.stiffness,
         tilt_stiffness=f.tilt_stiffness, edge=edge,
-        end_gap=task["length"] / 2 - max(abs(f.contact_x[0]), abs(f.contact_x[1])),
+        end_gap=_end_gap(f, task["length"]),
         delta=_largest_approach(f.depth, f.tilt, prof, task["length"]), tilt=f.tilt,
         change_depth=f.depth - c.depth, change_moment=f.moment - c.moment,
         change_tilt=f.tilt - c.tilt, change_stiffness=f.stiffness / c.stiffness - 1,
@@ -164,7 +180,48 @@ def bem_case(task):
         change_p_max=f.p_max / c.p_max - 1,
         richardson_depth=g["richardson_depth"], richardson_moment=g["richardson_moment"],
         nx=f.grid.nx, ny=f.grid.ny, dx=f.grid.dx, dy=f.grid.dy,
-        iterations=c.iterations + f.iterations, seconds=time.perf_counter() - t0)
+        iterations=c.iterations + f.iterations)
+    if refined:
+        out.update(_end_zone(task, prof, f))
+    out["seconds"] = time.perf_counter() - t0
+    return out
+
+
+def _end_zone(task, prof, f):
+    """A logarithmic profile's contact that ends within two cells of a roller end, on
+    the END_GRIDS of the finer grid's window (module docstring, item 1): one
+    depth-controlled solve per grid at that grid's depth and tilt, the depth then
+    corrected to the force F to first order with its stiffness dF/dd (and the moment
+    with dM/dd = dF/dtheta); p_max, where it sits, the contact's extent and edge loading
+    from the solve itself (at a force within 0.2 % of F). The stiffnesses stay the
+    finer standard grid's. Returns the fields of bem_case that it replaces."""
+    L, F = task["length"], task["force"]
+    res = []
+    for nx, ny in END_GRIDS:
+        r = solve_roller(task["radius"], L, task["estar"], f.depth, tilt=f.tilt,
+                         profile=prof, n_x=nx, n_y=ny, tol=task["tol"], window=f.grid,
+                         stiffness=False, workers=1)
+        dd = (F - r.force) / f.stiffness
+        res.append((r, f.depth + dd, r.moment + f.coupling * dd))
+    (rc, dc, mc), (rf, df, mf) = res
+    return dict(depth=df, moment=mf, p_max=rf.p_max, x_at_p_max=rf.x_at_p_max,
+                contact_length=rf.contact_length, edge=bool(rc.edge_loaded or rf.edge_loaded),
+                end_gap=_end_gap(rf, L), delta=_largest_approach(df, f.tilt, prof, L),
+                change_depth=df - dc, change_moment=mf - mc,
+                change_p_max=rf.p_max / rc.p_max - 1, end_force_change=rf.force / F - 1,
+                nx=rf.grid.nx, ny=rf.grid.ny, dx=rf.grid.dx, dy=rf.grid.dy,
+                iterations=f.iterations + rc.iterations + rf.iterations)
+
+
+def _infinite_end(profile, length):
+    """Whether the profile's drop is infinite at a roller end (ISO 16281, Lundberg)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return bool(np.any(np.isinf(profile.drop(np.array([-length / 2, length / 2])))))
+
+
+def _end_gap(sol, length):
+    """The contact's distance from the nearer roller end on a BEM grid [m]."""
+    return length / 2 - max(abs(sol.contact_x[0]), abs(sol.contact_x[1]))
 
 
 def _order(a, b, c):
@@ -365,6 +422,8 @@ def summarise(col, tasks, results):
         f"{label}: d {_span(od[mask])}, M {_span(om[mask & tilted])}"
         for label, mask in (("off the ends", ~edge_t), ("edge loaded", edge_t)))
     s["n_off"], s["n_edge"] = int((~edge).sum()), int(edge.sum())
+    end = col["bem_nx"] == END_GRIDS[1][0]
+    s["n_end"] = int(end.sum())
     q = col["line_load"][~edge]
     s["range_q"] = (float(q.min(initial=np.inf)), float(q.max(initial=-np.inf)))
     s["rt_seconds"] = float(np.median(col["rt_seconds"]))
@@ -399,6 +458,10 @@ def summarise(col, tasks, results):
         # the study's profiles by runtime key (its user-table case is a smooth
         # asymmetric crown, not any table: "file" is not listed)
         "covered_profiles": "circular, iso16281, lundberg, johns-gohar, end-relief",
+        # the closest a contact came to an end where the drop is infinite (the BEM's
+        # contact on its finer grid, over L): closer, the end zone was not measured
+        "covered_infinite_end_gap_over_length": (
+            f"{np.min(col['bem_end_gap'][end] / L[end], initial=np.inf):.6g}, 0.5"),
         "runtime_error_off_ends": (
             f"depth {s['rt_off_d']:.3g}, moment {s['rt_off_m']:.3g}, moment_untilted "
             f"{s['rt_off_m0']:.3g}, p_max {s['rt_off_p']:.3g}, tilt {s['rt_off_t']:.3g}"),
@@ -530,7 +593,13 @@ def run(args):
         grid=f"per case an adapted window (contact box x 1.25, |y| <= 1.25 b) with "
              f"{args.n_x} x {args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells; the "
              f"finer grid is the reference; every {args.check_every}th case also on "
-             f"{4 * args.n_x} x {4 * args.n_y}",
+             f"{4 * args.n_x} x {4 * args.n_y}; where a logarithmic profile's contact "
+             f"comes within two cells of a roller end ({s['n_end']} cases) the same "
+             f"window: p_max, its place, the contact's extent and depth and moment "
+             f"(depth control at the finer grid's depth and tilt, corrected to the force "
+             f"to first order) from {END_GRIDS[0][0]} x {END_GRIDS[0][1]} and "
+             f"{END_GRIDS[1][0]} x {END_GRIDS[1][1]} cells instead (bem_nx, bem_ny), no "
+             "third grid",
         tolerance=f"{args.tol:g} (gap error / largest interference); force 1e-6 F; "
                   "moment 1e-6 F L/2",
         accuracy=f"BEM grid change (coarse to fine) off the ends: d {s['bem_off_d']:.1e}, "

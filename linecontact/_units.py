@@ -368,7 +368,10 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     Notes
     -----
     The numbers are converted by numpy in one call and pint is asked once per distinct
-    unit, so a column costs one regular-expression match per cell. The result equals
+    unit. When every cell is a plain number with at most one unit name (the usual
+    file), the column is split into number and unit by C-level string operations on
+    the whole column, without a regular-expression match per cell; otherwise each cell
+    is matched (and a refused one gets its reason). The result equals
     ``parse_quantity`` cell by cell (tested property).
 
     Examples
@@ -382,31 +385,21 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
     valid = _valid_text(kind, positive, bounds)
     n = len(cells)
     errors = [""] * n
-    matches = list(map(QUANTITY.match, cells))      # one C-level pass
-    if None in matches:
-        numbers = [""] * n
-        units = [None] * n
-        for i, (cell, m) in enumerate(zip(cells, matches)):
-            if m is None:
-                errors[i] = str(InputError(parameter, cell, valid,
-                                           _format_reason(str(cell))))
-                numbers[i] = "nan"
-            else:
-                numbers[i], units[i] = m.group("number"), m.group("unit")
-    else:
-        numbers = [m.group("number") for m in matches]
-        units = [m.group("unit") for m in matches]
-    raw = np.array(numbers, dtype=float) if n else np.zeros(0)
+    split = _split_column(cells) if n else None
+    if split is not None:  # every cell a plain number and at most one unit name
+        raw, units, codes = split
+        groups = [(u, slice(None) if len(units) == 1 else np.flatnonzero(codes == k))
+                  for k, u in enumerate(units) if u is not None]
+    else:  # some cell needs the regular expression (and perhaps its message)
+        raw, groups = _match_column(parameter, cells, valid, errors)
     factors = np.ones(n)
-    distinct = set(units) - {None}
-    for unit in distinct:
+    for unit, idx in groups:
         f = _unit_factor(unit, kind)
-        idx = ([i for i, u in enumerate(units) if u == unit] if len(distinct) > 1
-               or None in units else slice(None))
-        if isinstance(f, str):
-            for i in (range(n) if isinstance(idx, slice) else idx):
-                if not errors[i]:
-                    errors[i] = str(InputError(parameter, cells[i], valid, f))
+        if isinstance(f, str):  # refused: the cell's first reason, as parse_quantity
+            for i in (range(n) if isinstance(idx, slice) else idx):  # (a magnitude
+                if not errors[i]:                                   # before the unit)
+                    errors[i] = str(InputError(parameter, cells[i], valid,
+                                               _parse_one(str(cells[i]), kind)[1]))
             factors[idx] = np.nan
         else:
             factors[idx] = f
@@ -429,9 +422,129 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
             errors[i] = str(InputError(parameter, cells[i], valid, reason))
         else:
             values[i] = value  # an exact zero where zero is allowed
-    bad = np.array([bool(e) for e in errors], dtype=bool) if n else np.zeros(0, bool)
-    values[bad] = np.nan
+    if any(errors):
+        values[np.array(list(map(bool, errors)), dtype=bool)] = np.nan
     return values, errors
+
+
+#: What :func:`_split_column` strips from the right of a cell to leave its number: the
+#: unit name's letters (those of :data:`QUANTITY`) and the ASCII spaces around it.
+_UNIT_CHARS = ("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+               "\u00b5\u03bc\u039c \t\n\r\x0b\x0c")
+#: The characters a number of :data:`QUANTITY` is written with (and the spaces before it).
+_NUMBER_CHARS = "0123456789.eE+- \t\n\r\x0b\x0c"
+#: str.translate table deleting those characters: what is left is what no number has
+#: (one C pass over a joined column, faster than str.strip with a character set).
+_NOT_NUMBER = str.maketrans("", "", _NUMBER_CHARS)
+#: What is left of a cell after its number: at most one unit name, spaces around it.
+_UNIT_ONLY = re.compile(r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+)?\s*", re.ASCII)
+
+
+def _split_column(cells):
+    """(numbers, units, codes) of a column whose cells are ALL a plain number and at
+    most one unit name of letters, else None (then the regular expression decides,
+    cell by cell). `numbers` as typed (float array), `units` the distinct unit names
+    (None for a bare number), `codes` the index into `units` of each cell.
+
+    The same split as :data:`QUANTITY`, without a match per cell: the unit is what
+    ``str.rstrip`` of letters and spaces removes (a number ends in a digit or a point,
+    never a letter), and the rest must be made of the characters of a number only
+    (ASCII digits, point, exponent, sign: no underscore, inf, nan or other script's
+    digit, all of which Python's float accepts) and be read by numpy's float
+    conversion, which refuses any other arrangement of them.
+    """
+    import itertools
+
+    import numpy as np
+
+    one = _one_unit(cells)
+    if one is not None:
+        return one
+    try:
+        numbers = list(map(str.rstrip, cells, itertools.repeat(_UNIT_CHARS)))
+    except TypeError:
+        return None  # a cell that is not text
+    joined = "".join(numbers)
+    if joined.translate(_NOT_NUMBER):
+        return None  # a character no number has
+    try:
+        raw = np.array(numbers, dtype=float)
+    except ValueError:
+        return None  # e.g. '1e', '--5', '' (a unit alone), '5 5'
+    if len(joined) == sum(map(len, cells)):  # nothing stripped: bare numbers (SI)
+        return raw, [None], None
+    rest = list(map(str.removeprefix, cells, numbers))
+    if rest.count(rest[0]) == len(rest):
+        distinct, codes = [rest[0]], None
+    else:
+        distinct = list(dict.fromkeys(rest))
+        code = {u: k for k, u in enumerate(distinct)}
+        codes = np.fromiter(map(code.__getitem__, rest), dtype=np.intp, count=len(rest))
+    units = []
+    for text in distinct:
+        m = _UNIT_ONLY.fullmatch(text)
+        if m is None:
+            return None  # e.g. '5 m m': refused by the regular expression, with its reason
+        units.append(m.group("unit"))
+    return raw, units, codes
+
+
+def _one_unit(cells):
+    """:func:`_split_column` of the usual column, every cell a number followed by the
+    SAME unit name as the first cell (or every cell a bare number), in whole-column
+    string operations: the cells joined by line ends, the first cell's unit removed
+    before each line end (all n of them, or this is not such a column), split again.
+    None when the column is not of that kind (the general split decides)."""
+    import numpy as np
+
+    n = len(cells)
+    try:
+        text = "\n".join(cells) + "\n"
+    except TypeError:
+        return None  # a cell that is not text
+    if text.count("\n") != n:
+        return None  # a line end inside a cell
+    first = cells[0]
+    unit = first[len(first.rstrip(_UNIT_CHARS)):]
+    if unit:
+        if unit[0] in _NUMBER_CHARS or text.count(unit + "\n") != n:
+            return None  # spaces before the first unit, or another unit somewhere
+        text = text.replace(unit + "\n", "\n")
+    if text.translate(_NOT_NUMBER):
+        return None  # a character no number has (a unit after all, ...)
+    try:
+        raw = np.array(text.split("\n")[:-1] if unit else cells, dtype=float)
+    except ValueError:
+        return None  # e.g. '1e', '--5', '' (a unit alone), '5 5'
+    return raw, [unit.strip() or None], None
+
+
+def _match_column(parameter, cells, valid, errors):
+    """(numbers, [(unit, indices)]) of a column by :data:`QUANTITY`, one match per
+    cell; a cell that does not match gets its message in `errors` and NaN."""
+    import numpy as np
+
+    n = len(cells)
+    matches = list(map(QUANTITY.match, cells))      # one C-level pass
+    if None in matches:
+        numbers = [""] * n
+        units = [None] * n
+        for i, (cell, m) in enumerate(zip(cells, matches)):
+            if m is None:
+                errors[i] = str(InputError(parameter, cell, valid,
+                                           _format_reason(str(cell))))
+                numbers[i] = "nan"
+            else:
+                numbers[i], units[i] = m.group("number"), m.group("unit")
+    else:
+        numbers = [m.group("number") for m in matches]
+        units = [m.group("unit") for m in matches]
+    raw = np.array(numbers, dtype=float) if n else np.zeros(0)
+    distinct = set(units) - {None}
+    every = len(distinct) == 1 and None not in units
+    groups = [(unit, slice(None) if every else [i for i, u in enumerate(units) if u == unit])
+              for unit in distinct]
+    return raw, groups
 
 
 def range_error_parts(exc):

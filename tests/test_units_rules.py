@@ -139,6 +139,74 @@ def test_a_column_parses_exactly_like_its_cells(cells, kind):
             assert e == "" and v == expected
 
 
+#: Cells near the edges of the grammar, where a split of the column by string
+#: operations (the unit is what rstrip of letters and spaces leaves off) could part from
+#: the regular expression: exponents next to unit letters, a unit alone, inf and nan
+#: with units, float()'s extras (underscores, other scripts' digits and spaces, the
+#: ASCII separators \x1c-\x1f it strips), spaces inside, compound names.
+EDGE_CELLS = ["5em", "1e3mm", "1e3", "1E-3 m", "5e", "5 e", "1.e2mm", ".5mm", "5.mm",
+              "+5mm", "-5mm", "--5mm", "mm", " mm", "5 mm ", "\t5\tmm\t", "5 m m",
+              "5mm5", "1_000mm", "\u0663mm", "5\u00a0mm", "\x1c5mm", "5mm\x1c",
+              "5\x1fmm", "infmm", "1e5inf", "nan", "-inf", "5 inf", "0mm", "0.0",
+              "-0", "1e-320mm", "1e309", "1e308km", "5\u00b5m", "5 \u03bcm", "5MM",
+              "50mJ/m^2", "5N/m", "5 N m", "5kN", "5 lbf", "2.1e11", "0.3", "1,5mm",
+              "5mm ", " 5", "5\n", "5 \x0bmm"]
+
+
+@given(st.lists(st.sampled_from(EDGE_CELLS), min_size=1, max_size=12), kinds)
+def test_a_column_of_edge_cells_parses_exactly_like_its_cells(cells, kind):
+    """The column's string-operation split (all cells plain) and its per-cell matching
+    (some cell refused) both give parse_quantity's float and message, cell by cell,
+    also when a column mixes the two kinds of cell."""
+    for column in (cells, cells + ["5mm", "0.005"], ["1kN"] * 3 + cells):
+        values, errors = parse_column("--x", column, kind)
+        for cell, v, e in zip(column, values, errors):
+            try:
+                expected = parse_quantity("--x", cell, kind)
+            except InputError as exc:
+                assert e == str(exc) and math.isnan(v), (cell, e)
+            else:
+                assert e == "" and v == expected, (cell, v, expected)
+
+
+@given(st.lists(st.builds(lambda x, u: repr(x) + u, normal,
+                          st.sampled_from(["", "mm", " m", "in", "kN", "GPa", " psi"])),
+                min_size=1, max_size=30), kinds)
+def test_a_column_of_plain_cells_parses_exactly_like_its_cells(cells, kind):
+    """Plain cells (a number and a unit name, of any unit, fit for the kind or not)
+    take the column's fast split; it gives parse_quantity's float and message exactly."""
+    values, errors = parse_column("--x", cells, kind)
+    for cell, v, e in zip(cells, values, errors):
+        try:
+            expected = parse_quantity("--x", cell, kind)
+        except InputError as exc:
+            assert e == str(exc) and math.isnan(v), (cell, e)
+        else:
+            assert e == "" and v == expected, (cell, v, expected)
+
+
+@given(st.lists(st.sampled_from(["5", "1.", ".5", "+5", "-2", "1e3", "1E-3", "0", "7 ",
+                                  " 7", "1e5", "12.5"]), min_size=1, max_size=10),
+       st.sampled_from(["mm", "m", "kN", "GPa", "e", "em", "mm ", " mm", ""]),
+       st.one_of(st.none(), st.sampled_from(EDGE_CELLS)), st.integers(0, 10), kinds)
+def test_a_column_of_one_unit_parses_exactly_like_its_cells(numbers, unit, odd, at, kind):
+    """A column whose cells all carry one unit (the usual file, split by removing that
+    unit before each line end of the joined column), with or without one odd cell
+    anywhere (another unit, spaces, a refused cell), gives parse_quantity's float and
+    message cell by cell."""
+    cells = [x + unit for x in numbers]
+    if odd is not None:
+        cells.insert(min(at, len(cells)), odd)
+    values, errors = parse_column("--x", cells, kind)
+    for cell, v, e in zip(cells, values, errors):
+        try:
+            expected = parse_quantity("--x", cell, kind)
+        except InputError as exc:
+            assert e == str(exc) and math.isnan(v), (cell, e)
+        else:
+            assert e == "" and v == expected, (cell, v, expected)
+
+
 @given(st.text(max_size=10))
 def test_booleans_are_exactly_true_false_yes_no_1_0(text):
     """A yes/no option accepts six words (any case, surrounding spaces) and nothing

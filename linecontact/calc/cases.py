@@ -23,6 +23,8 @@ Geometry
 
 from __future__ import annotations
 
+import operator
+
 import numpy as np
 
 from .._units import parse_column
@@ -120,6 +122,10 @@ class Cases:
         return out
 
 
+#: Cells of a column looked at to decide whether it repeats its values (see parse_cases).
+_SAMPLE = 256
+
+
 def parse_cases(cells, n, label=option_name):
     """Convert a table of cells into checked SI arrays, one element per case.
 
@@ -162,32 +168,47 @@ def parse_cases(cells, n, label=option_name):
             present[p.name] = np.array([c.strip() != "" for c in col], dtype=bool)
             values[p.name] = col
             continue
-        # distinct cells only: a batch repeats its cylinders (and its empty cells)
-        if n and col.count(col[0]) == n:  # one value for all rows (e.g. the modulus)
-            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)
+        # distinct cells only where a column repeats its values (a batch of a few
+        # cylinders, empty cells); a column of mostly distinct cells (a parameter
+        # study) is parsed as it is, which gives the same values without the lookups
+        sample = len(set(col[:_SAMPLE]))
+        if n and sample == 1 and col.count(col[0]) == n:  # one value for all rows
+            uniq, inv = [col[0]], np.zeros(n, dtype=np.intp)  # (e.g. the modulus)
+        elif n > _SAMPLE and sample > _SAMPLE // 2:
+            uniq, inv = col, None
         else:
             uniq = list(dict.fromkeys(col))    # in order of first appearance
             where = {c: i for i, c in enumerate(uniq)}
             inv = np.fromiter(map(where.__getitem__, col), dtype=np.intp, count=n)
-        u_given = np.array([c.strip() != "" for c in uniq], dtype=bool)
-        u_values = np.full(len(uniq), np.nan)
-        u_errors = [""] * len(uniq)
-        words = np.array([c.strip().lower() in p.words for c in uniq], dtype=bool) \
-            if p.words else np.zeros(len(uniq), bool)
-        gi = np.flatnonzero(u_given & ~words)
+        m = len(uniq)
+        stripped = list(map(str.strip, uniq))
+        u_given = np.fromiter(map(bool, stripped), dtype=bool, count=m)
+        u_values = np.full(m, np.nan)
+        u_errors = [""] * m
+        words = (np.fromiter(map(p.words.__contains__, map(str.lower, stripped)),
+                             dtype=bool, count=m) if p.words else np.zeros(m, bool))
+        use = u_given & ~words
+        gi = np.flatnonzero(use)
         if gi.size:
-            parsed, errs = parse_column(label(p.name), [uniq[i] for i in gi], p.kind,
+            every = gi.size == m
+            parsed, errs = parse_column(label(p.name), uniq if every else
+                                        [uniq[i] for i in gi], p.kind,
                                         positive=p.positive, bounds=bounds_of(p))
             u_values[gi] = parsed
-            for i, e in zip(gi, errs):
-                u_errors[i] = e
-        present[p.name] = u_given[inv]
-        values[p.name] = u_values[inv]
-        bad = [i for i, e in enumerate(u_errors) if e]
-        if bad:
-            for j in np.flatnonzero(np.isin(inv, bad)):
+            if any(errs):
+                if every:
+                    u_errors = errs
+                else:
+                    for i, e in zip(gi, errs):
+                        u_errors[i] = e
+        present[p.name] = u_given if inv is None else u_given[inv]
+        values[p.name] = u_values if inv is None else u_values[inv]
+        if any(u_errors):
+            bad = [i for i, e in enumerate(u_errors) if e]
+            rows = bad if inv is None else np.flatnonzero(np.isin(inv, bad))
+            for j in rows:
                 if not errors[j]:
-                    errors[j] = u_errors[inv[j]]
+                    errors[j] = u_errors[j if inv is None else inv[j]]
     cases = Cases(n, values, present, raw)
     cases.label = label
     _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
@@ -266,7 +287,7 @@ def _resolve(cases, errors, fail):
          "the roller does not fit inside the concave body")
     radius_eff = np.where(np.isnan(radius_eff_f), radius_eff, radius_eff_f)
 
-    ok = np.array([not e for e in errors], dtype=bool)
+    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
     estar = np.full(n, np.nan)
     direct = ok & P["estar"]
     estar[direct] = v["estar"][direct]

@@ -25,6 +25,7 @@ engineering unit) and each feature's ``fields``; :func:`all_fields` has them all
 
 from __future__ import annotations
 
+import operator
 import re
 
 import numpy as np
@@ -581,7 +582,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     # per distinct set of parts, so that they group with their own kind
     codes = np.zeros(n)
     parts_of = {}
-    ok = np.array([not e for e in errors], dtype=bool)
+    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
     if composed:
         seen = {}
         for i in np.flatnonzero(ok):
@@ -695,7 +696,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
         for name in names - set(s["fields"]):
             s["fields"][name] = np.full(n, np.nan)
     _no_overflow(results)
-    ok = np.array([not e for e in errors], dtype=bool)
+    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
     results.whole = bool(np.any(whole & ok))
     results.contact = bool(np.any(~whole & ok))
     # a feature none of whose rows is on (`--stresses no`) prints no note

@@ -41,6 +41,16 @@ def test_an_unknown_model_keyword_lists_the_valid_ones(key, keyword):
     assert all(repr(n) in msg for n in valid), msg
 
 
+@pytest.mark.parametrize("key", available_models())
+def test_a_keyword_named_self_is_unknown(key):
+    """self is positional-only in every model's constructor, so self= is an unknown
+    keyword like any other (UnknownNameError naming it), not Python's TypeError
+    'got multiple values for argument self' (hypothesis drew it once; this case is
+    checked for every model on every run)."""
+    with pytest.raises(UnknownNameError, match="'self'"):
+        get_model(key, 5e-3, 10e-3, 115e9, self=1.0)
+
+
 def test_johnson_cc_names_c():
     """The case of the issue: Johnson's constant is c; cc= says so."""
     with pytest.raises(UnknownNameError, match="'c'"):

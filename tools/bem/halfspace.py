@@ -242,8 +242,8 @@ class SymmetricOperator:
     def sparse_limit(self):
         """Most cells for which :meth:`add_columns` costs less than one operator
         application: a column is about five passes over the quarter, a transform pair
-        grows like its log (measured 12-25 times a column on 256 x 64 to 256 x 256
-        quarters; tools/benchmarks/README.md); half that, for margin."""
+        grows like its log (19-23 times a column on 256 x 64 to 256 x 256 quarters,
+        tools/benchmarks/bench_add_columns.py); half that, for margin."""
         mx, my = self.shape
         return max(2, int(np.log2(mx * my)) // 2)
 

@@ -306,3 +306,14 @@ def test_the_sweep_on_narrower_strips_solves_the_same_problem():
                 precondition=False, windows=0)
     np.testing.assert_allclose(new.force, old.force, rtol=1e-7)
     np.testing.assert_allclose(new.stiffness, old.stiffness, rtol=1e-6)
+
+
+def test_a_step_before_first_contact_has_zero_force_and_stiffness():
+    """With more steps than ny^2 the first depths d = d_max/steps stay below the first
+    row's gap (dy/2)^2 / 2R = d_max/ny^2: no cell touches, so F = k = 0 exactly (the
+    punch on an empty footprint), and the sweep goes on to the later steps instead of
+    building an operator on a strip of zero rows (a zero-length transform)."""
+    res = sweep(3, n=(16, 4), steps=20, progress=False, backend="scipy", tol=1e-8)
+    assert res.converged.all()
+    assert res.force[0] == 0.0 and res.stiffness[0] == 0.0
+    assert np.all(res.force[-5:] > 0) and np.all(res.stiffness[-5:] > 0)

@@ -191,7 +191,8 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     ops = {}
 
     def strip(rows):
-        m = min(grid.my, chunk * -(-int(rows) // chunk))
+        # at least one row: a step with no contact (rows = 0) still needs an operator
+        m = min(grid.my, chunk * -(-max(int(rows), 1) // chunk))
         if m not in ops:
             ops[m] = SymmetricOperator(grid.mx, m, grid.dx, grid.dy, estar, backend,
                                        workers, kernel=kernel[:, :2 * m + 1])

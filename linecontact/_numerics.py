@@ -538,9 +538,9 @@ def _root_block(t):
     within 2.4e-2 relative: the series in s = sqrt(2t) (Temme 1996) for t < 2, the
     fixed point u = t + ln(1 + u) iterated three times from u = t above (by log of the
     rounded 1 + u, exact to 1.1e-16 absolutely there)."""
-    u = np.empty_like(t)
     lo = float(t.min()) if t.size else 0.0
     if lo >= 2.0:                                  # the common case: one branch
+        u = np.empty_like(t)
         np.add(t, 1.0, out=u)
         for k in range(3):
             np.log(u, out=u)
@@ -548,6 +548,8 @@ def _root_block(t):
             if k < 2:
                 u += 1.0
         return _halley_large(u, t)
+    # NaN where no branch applies (t < 0 or NaN, reachable only unchecked): no root
+    u = np.full_like(t, np.nan)
     for kind, sel in ((0, (t > 0) & (t < 0.04)), (1, (t >= 0.04) & (t < 2.0)),
                       (2, t >= 2.0)):
         if not sel.any():

@@ -237,16 +237,16 @@ class ContactModel(abc.ABC):
         names = [n for n in params if n != "self"]
 
         @functools.wraps(init)
-        def checked(self, *args, **options):
+        def checked(*args, **options):     # self in args: a keyword 'self' is unknown too
             for name in options:
-                if name not in params:
+                if name not in names:
                     raise UnknownKeywordError(cls.__name__, name, names)
-            return init(self, *args, **options)
+            return init(*args, **options)
 
         checked._keywords_checked = True
         cls.__init__ = checked
 
-    def __init__(self, radius, length, estar, **options):
+    def __init__(self, /, radius, length, estar, **options):   # a keyword 'self' is unknown
         if options:
             raise UnknownKeywordError(type(self).__name__, sorted(options)[0],
                                       ["radius", "length", "estar"])

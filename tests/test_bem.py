@@ -252,3 +252,57 @@ def test_no_overlap_means_no_contact_and_nan_never_passes():
     bad[0, 0] = np.nan
     with pytest.raises(ValueError, match="non-finite"):
         solve_contact(op, bad, 0.01)
+
+
+# --- the work-saving devices of the sweep (issue 20) -------------------------------
+
+@pytest.mark.parametrize("mx, my", [(5, 7), (12, 4)])
+def test_column_sums_equal_the_transform(mx, my):
+    """SymmetricOperator.add_columns adds K x for an x on a few cells by summing the
+    kernel's columns (each cell with its three mirror images) instead of the cosine
+    transforms: the same linear map, so equal to rounding (1e-13 of the result),
+    corner and edge cells included."""
+    rng = np.random.default_rng(1)
+    op = SymmetricOperator(mx, my, 0.3, 0.7, backend="scipy")
+    u0 = rng.random((mx, my))
+    cells = np.array([0, my - 1, (mx - 1) * my, mx * my - 1, my + 2])
+    values = rng.standard_normal(cells.size)
+    x = np.zeros(mx * my)
+    x[cells] = values
+    expected = u0 + op(x.reshape(mx, my))
+    got = op.add_columns(u0.copy(), cells, values)
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+
+
+def test_a_known_start_displacement_and_an_unverified_pass_give_the_same_solution():
+    """bounded_cg with kx0 = K x0 (the start's displacement known, its projection on
+    p >= 0 corrected) and with verify=False (the caller checks) solves the same
+    problem: the pressures agree with a plain solve to the tolerance's effect (a gap
+    error of tol d moves p by about tol times its size), and the unverified pass, once
+    checked on a fresh K p, meets the tolerance."""
+    op, r2, h, a = _sphere(20)
+    d, tol = 0.01, 1e-9
+    ref = solve_contact(op, r2 / 2 - d, d, tol=tol)
+    start = 1.3 * ref.pressure - 0.2 * ref.pressure.max()   # negative in places
+    kstart = op(start)
+    warm = solve_contact(op, r2 / 2 - d, d, tol=tol, p0=start, kp0=kstart)
+    assert warm.converged
+    np.testing.assert_allclose(warm.pressure, ref.pressure, atol=1e-6 * ref.pressure.max())
+    quick = solve_contact(op, r2 / 2 - d, d, tol=tol, p0=start, kp0=kstart, verify=False)
+    gap = op(quick.pressure) + r2 / 2 - d
+    assert np.abs(gap[quick.pressure > 0]).max() <= 10 * tol * d
+    assert gap[quick.pressure == 0].min() >= -10 * tol * d
+
+
+def test_the_sweep_on_narrower_strips_solves_the_same_problem():
+    """The sweep's savings (the contact iterated on the rows it reaches and checked on
+    the overlap strip, the punch on its footprint's rows, starts without an operator
+    application) leave the discrete problem unchanged: F and k agree with the plain
+    Polonsky-Keer iteration on the whole grid (precondition=False, windows=0) to what
+    the tolerance 1e-8 allows (a few 1e-7 relative in k: a punch's error of tol in
+    displacement)."""
+    new = sweep(3, n=32, steps=12, progress=False, backend="scipy", tol=1e-8)
+    old = sweep(3, n=32, steps=12, progress=False, backend="scipy", tol=1e-8,
+                precondition=False, windows=0)
+    np.testing.assert_allclose(new.force, old.force, rtol=1e-7)
+    np.testing.assert_allclose(new.stiffness, old.stiffness, rtol=1e-6)

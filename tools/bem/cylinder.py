@@ -179,17 +179,36 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     # outside them h - d >= 0 and K p > 0, so no cell there can touch, and the
     # problem on the strip is the same discrete problem as on the whole grid (same
     # cells, same kernel, zero pressure outside), at a fraction of the transform cost.
+    # The contact covers only 55-80 % of those rows, so the iterations run on a strip
+    # of the rows the contact is predicted to reach (a first pass, its result then
+    # verified, and if need be continued, on the overlap strip), and the punch on
+    # the rows of its footprint (cells outside the footprint carry no pressure and
+    # their displacement does not enter its problem). A strip of m rows computes
+    # K p exactly on its rows for any p zero beyond them, so the displacements of
+    # earlier solutions on wider strips serve narrower ones (their first m rows).
     kernel = kernel_offsets(2 * grid.mx, 2 * grid.my, grid.dx, grid.dy, estar)
     chunk = max(grid.my // windows, 1) if windows else grid.my
     ops = {}
 
-    def strip(d):
-        rows = int(np.count_nonzero(grid.y ** 2 / (2 * R) < d)) + 1
-        m = min(grid.my, chunk * -(-rows // chunk))
+    def strip(rows):
+        m = min(grid.my, chunk * -(-int(rows) // chunk))
         if m not in ops:
             ops[m] = SymmetricOperator(grid.mx, m, grid.dx, grid.dy, estar, backend,
                                        workers, kernel=kernel[:, :2 * m + 1])
         return m, ops[m]
+
+    def support(p):
+        """Rows 0..r-1 hold every nonzero of the quarter field p: r."""
+        nz = np.flatnonzero(p.any(axis=0))
+        return int(nz[-1]) + 1 if nz.size else 0
+
+    def combine(states, coefs, m):
+        """sum c p and, when every state's displacement covers m rows and its pressure
+        lies within them, sum c K p on m rows (else None)."""
+        p0 = sum(c * st[0] for c, st in zip(coefs, states))[:, :m]
+        if all(st[1].shape[1] >= m and st[2] <= m for st in states):
+            return p0, sum(c * st[1][:, :m] for c, st in zip(coefs, states))
+        return p0, None
 
     depths = d_max * np.arange(1, steps + 1) / steps
     F = np.full(steps, np.nan)
@@ -200,18 +219,41 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
     conv = np.zeros(steps, dtype=bool)
     errs = np.full(steps, np.nan)
     pressures = [] if fields else None
+    # the last two converged steps and the last punch: (pressure on all rows,
+    # K pressure on the rows of its strip, rows of the pressure's support)
     history = []
     p_punch = None
     for i in _progress(range(steps), steps, f"L/R = {l_over_r:g}", progress):
         d = depths[i]
-        m, op = strip(d)
+        m, op = strip(int(np.count_nonzero(grid.y ** 2 / (2 * R) < d)) + 1)
+        # the start: the previous two steps extrapolated linearly (K p0 by the same
+        # combination of their displacements: no operator application)
         if len(history) >= 2:
-            p0 = (2 * history[-1] - history[-2])[:, :m]
+            states, coefs = history[-2:], (-1.0, 2.0)   # 2 p_(i-1) - p_(i-2)
         elif history:
-            p0 = history[-1][:, :m] * np.sqrt(d / depths[i - 1])
+            states, coefs = history[-1:], (np.sqrt(d / depths[i - 1]),)
         else:
-            p0 = None
-        sol = solve_contact(op, h[:, :m] - d, d, tol=tol, p0=p0, precondition=precondition)
+            states, coefs = [], ()
+        napply = 0
+        p0 = kp0 = None
+        if states and precondition:
+            # first pass on the rows the contact is predicted to reach: the last
+            # contact's rows grown like sqrt(d), two more, and the start's support
+            reach = max(int(np.ceil(history[-1][2] * np.sqrt(d / depths[i - 1]))) + 2,
+                        max(st[2] for st in states))
+            mc, opc = strip(reach)
+            if mc < m:
+                p0, kp0 = combine(states, coefs, mc)
+                first = solve_contact(opc, h[:, :mc] - d, d, tol=tol, p0=p0, kp0=kp0,
+                                      verify=False)
+                napply = first.iterations
+                p0, kp0 = _widen(first.pressure, m), None   # verified on the strip below
+        if states and p0 is None:
+            p0, kp0 = combine(states, coefs, m)
+        sol = solve_contact(op, h[:, :m] - d, d, tol=tol, p0=p0, precondition=precondition,
+                            kp0=kp0)
+        sol.iterations += napply
+        u_sol = sol.displacement
         sol.pressure = _widen(sol.pressure, grid.my)
         sol.contact = _widen(sol.contact, grid.my)
         its[i] = sol.iterations
@@ -226,13 +268,26 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
                     f"{sol.error:.3g} d > tol = {tol:g} d")
             history = []
             continue
-        history = (history + [sol.pressure])[-2:]
+        rows = support(sol.pressure)
+        history = (history + [(sol.pressure, u_sol, rows)])[-3:]
         F[i] = 4 * sol.pressure.sum() * grid.cell_area
         A[i] = 4 * sol.contact.sum() * grid.cell_area
         if stiffness == "punch":
-            pun = solve_punch(op, sol.contact[:, :m], tol=tol,
-                              p0=(p_punch if p_punch is not None else sol.pressure / d)[:, :m],
+            # on the rows of the footprint; from dp/dd by the second-order backward
+            # difference of the last three steps (the punch's pressure is dp/dd on a
+            # fixed contact set: 7 % fewer iterations than the previous punch), else
+            # from the previous punch, else from this step's contact pressure / d
+            mp, opp = strip(rows) if precondition else (m, op)
+            dd = depths[1] - depths[0] if steps > 1 else d
+            if len(history) == 3:
+                p0, kp0 = combine(history, (0.5 / dd, -2.0 / dd, 1.5 / dd), mp)
+            elif p_punch is not None:
+                p0, kp0 = combine([p_punch], (1.0,), mp)
+            else:
+                p0, kp0 = sol.pressure[:, :mp] / d, u_sol[:, :mp] / d
+            pun = solve_punch(opp, sol.contact[:, :mp], tol=tol, p0=p0, kp0=kp0,
                               precondition=precondition)
+            u_pun = pun.displacement
             pun.pressure = _widen(pun.pressure, grid.my)
             its[i] += pun.iterations
             errs[i] = max(errs[i], pun.error)
@@ -243,7 +298,7 @@ def sweep(l_over_r, n=512, steps=100, d_max_over_r=0.15, radius=1.0, estar=1.0,
                         f"displacement error {pun.error:.3g} > tol = {tol:g}")
                 conv[i] = False     # k of this step stays NaN
             else:
-                p_punch = pun.pressure
+                p_punch = (pun.pressure, u_pun, support(pun.pressure))
                 K[i] = 4 * pun.pressure.sum() * grid.cell_area
         if fields:
             from .halfspace import unfold
@@ -348,7 +403,8 @@ def solve_depth(d_tilde, n_length=256, n_width=32, margin=1.2, tol=1e-6,
         # contact reached the edge of the strip: widen it and solve again
         b = b_new
         Y = min(Y * 1.3, y_max)
-    pun = solve_punch(op, sol.contact, tol=tol, p0=sol.pressure / d)
+    pun = solve_punch(op, sol.contact, tol=tol, p0=sol.pressure / d,
+                      kp0=sol.displacement / d)
     total_its += pun.iterations
     if not pun.converged:
         raise ConvergenceError(f"d~ = {d:.6g}: punch solver did not converge "

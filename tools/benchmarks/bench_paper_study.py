@@ -46,6 +46,21 @@ def _load():
         return "n/a"
 
 
+def _per_task(out):
+    """One line: the CPU seconds of each L/R's sweep, from the study table's header
+    (what the longest-first order of tools.studies.paper_sweep relies on)."""
+    import re
+    path = out / "bem_paper_curves.csv"
+    if not path.exists():
+        return []
+    with open(path, encoding="utf-8") as fh:
+        head = "".join(ln for ln in fh if ln.startswith("#"))
+    found = re.findall(r"L/R ([0-9.]+): [0-9.]+ s wall, ([0-9.]+) s CPU", head)
+    if not found:
+        return []
+    return ["CPU per L/R [s]: " + ", ".join(f"{q} {c}" for q, c in found)]
+
+
 def _compare(out, l_over_r):
     """Lines: largest relative change of F, k (per step) and alpha, beta against the
     shipped tables, on the L/R values run."""
@@ -121,6 +136,7 @@ def main(argv=None):
             f"after {_load()}",
         ]
         lines += [ln for ln in r.stdout.splitlines() if ln.startswith("BEM ")]
+        lines += _per_task(Path(tmp))
         if args.n == 512 and args.steps == 100:
             lines += _compare(Path(tmp), values)
         else:

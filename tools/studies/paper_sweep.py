@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import time
 
+import numpy as np
+
 from .runner import run_study
 
 
@@ -35,9 +37,20 @@ def sweep_tasks(l_over_r, n, steps, d_max, tol, backend=None):
             for q in sorted(set(float(v) for v in l_over_r))]
 
 
+def longest_first(tasks):
+    """The tasks in the order to run them: the longest first, so that no long one is
+    left for the end while the other workers idle (the longest-processing-time rule).
+    A sweep's work grows away from L/R = 1 both ways (the contact's ends, or its
+    length, take more cells and more iterations; recorded per L/R in the header of
+    tables/bem_paper_curves.csv), so the order is by |ln(L/R)|, largest first."""
+    return sorted(tasks, key=lambda t: -abs(np.log(t["l_over_r"])))
+
+
 def run_sweeps(l_over_r, n, steps, d_max, tol, backend=None, **runner):
     """The BEM sweeps for every L/R through :func:`tools.studies.runner.run_study` (keyword
-    options `runner`: scheduler, workers, checkpoint, resume, progress); results sorted
-    by L/R."""
+    options `runner`: scheduler, workers, checkpoint, resume, progress), submitted
+    longest first (:func:`longest_first`); results sorted by L/R."""
     tasks = sweep_tasks(l_over_r, n, steps, d_max, tol, backend)
-    return run_study(sweep_task, tasks, desc="paper study (L/R done)", **runner)
+    results = run_study(sweep_task, longest_first(tasks), desc="paper study (L/R done)",
+                        **runner)
+    return sorted(results, key=lambda r: r["l_over_r"])

@@ -14,6 +14,17 @@ def _blas_threads():
             if lib["user_api"] == "blas"]
 
 
+@pytest.fixture(autouse=True)
+def two_blas_threads():
+    """Every BLAS at two threads for the test (restored after), so that the limit to
+    one is seen also where the environment already runs BLAS on one thread (CI with
+    OPENBLAS_NUM_THREADS=1, a one-core machine)."""
+    with threadpoolctl.threadpool_limits(2, user_api="blas"):
+        if not _blas_threads() or min(_blas_threads()) < 2:
+            pytest.skip("no BLAS that threadpoolctl can set to two threads")
+        yield
+
+
 def test_limit_inside_restored_after_and_reentrant():
     """Inside a decorated call every BLAS has one thread, also in a nested decorated
     call; after the outermost call returns (or raises) the original counts are back."""

@@ -538,9 +538,9 @@ def _root_block(t):
     within 2.4e-2 relative: the series in s = sqrt(2t) (Temme 1996) for t < 2, the
     fixed point u = t + ln(1 + u) iterated three times from u = t above (by log of the
     rounded 1 + u, exact to 1.1e-16 absolutely there)."""
-    u = np.empty_like(t)
     lo = float(t.min()) if t.size else 0.0
     if lo >= 2.0:                                  # the common case: one branch
+        u = np.empty_like(t)
         np.add(t, 1.0, out=u)
         for k in range(3):
             np.log(u, out=u)
@@ -548,6 +548,8 @@ def _root_block(t):
             if k < 2:
                 u += 1.0
         return _halley_large(u, t)
+    # NaN where no branch applies (t < 0 or NaN, reachable only unchecked): no root
+    u = np.full_like(t, np.nan)
     for kind, sel in ((0, (t > 0) & (t < 0.04)), (1, (t >= 0.04) & (t < 2.0)),
                       (2, t >= 2.0)):
         if not sel.any():
@@ -652,14 +654,15 @@ class _SerialBlas:
     17 times the CPU time it takes with one thread on the 2-core development machine at
     a load of 6 (tools/benchmarks/results/serial_blas.txt). The limit comes from threadpoolctl (a dependency); where it is not
     installed this is a no-op. The controller is built on first use (about 20 ms, once
-    per process); entering costs about 30 us, and nothing where BLAS has one thread.
+    per process); entering costs about 30 us, and about 1 us where BLAS runs one thread
+    at the time (decided at each outermost entry).
     """
 
     def __init__(self):
         self._lock = threading.Lock()
         self._depth = 0
         self._limiter = None
-        self._controller = None        # False: threadpoolctl missing or BLAS serial
+        self._controller = None        # False: threadpoolctl missing
 
     def _blas(self):
         if self._controller is None:
@@ -668,16 +671,17 @@ class _SerialBlas:
             except ImportError:
                 self._controller = False
             else:
-                ctl = ThreadpoolController().select(user_api="blas")
-                many = any(lib.num_threads > 1 for lib in ctl.lib_controllers)
-                self._controller = ctl if many else False
+                self._controller = ThreadpoolController().select(user_api="blas")
         return self._controller
 
     def __enter__(self):
         with self._lock:
             if self._depth == 0:
+                # whether BLAS runs several threads now (about 1 us a library): a
+                # caller's limit in force at the first use must not decide for later
                 ctl = self._blas()
-                self._limiter = ctl.limit(limits=1) if ctl else None
+                many = ctl and any(lib.num_threads > 1 for lib in ctl.lib_controllers)
+                self._limiter = ctl.limit(limits=1) if many else None
             self._depth += 1
         return self
 

@@ -407,7 +407,9 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
         values = raw * factors
     # slow path only for the cells whose magnitude or range is suspect
     tiny = _TINY
-    ok = np.isfinite(values) & (np.abs(values) >= tiny)
+    # the typed number too: a subnormal one has lost precision (parse_quantity refuses
+    # it) even where its unit's factor (kN, GPa) brings the SI value back above tiny
+    ok = np.isfinite(values) & (np.abs(values) >= tiny) & (np.abs(raw) >= tiny)
     if bounds is not None:
         ok &= np.asarray(bounds[0](values), dtype=bool)
     elif positive:

@@ -336,12 +336,27 @@ def _u_from_depth_ratio(D):
     return log1p_excess_root(-np.log(D))
 
 
+def _scaled_exp_minus_u(D, scale=1.0):
+    """scale e^-u with (u + 1) e^-u = D, for D in (0, 1] (checked by the caller): the
+    force's elementwise chain, in place after the first step (one home for F~ and the
+    fused F(d) of one cylinder in :func:`lipopov_force`)."""
+    shape = np.shape(D)
+    t = np.log(np.atleast_1d(D))
+    np.negative(t, out=t)                 # t = -ln D >= 0
+    u = log1p_excess_root(t, checked=False)
+    np.negative(u, out=u)
+    np.exp(u, out=u)
+    if scale != 1.0:
+        u *= scale
+    return u.reshape(shape)
+
+
 # The closed forms in dimensionless variables (Eq. 8: d~ = d R/L^2, F~ = F R/(E* L^3),
 # x~ = a/L), unchecked: their one home. The SI functions and the dimensionless_*
 # functions below check their inputs once and scale these.
 def _force_tilde(d, a, b):
     """F~ = 2 alpha beta e^-u with (u + 1) e^-u = d~/beta (the chain in blocks)."""
-    return 2 * a * b * blockwise(lambda D: np.exp(-_u_from_depth_ratio(D)), d / b)
+    return 2 * a * b * blockwise(_scaled_exp_minus_u, d / b)
 
 
 def _radius_tilde(d, a, b):
@@ -591,22 +606,11 @@ def lipopov_force(depth, radius, length, estar, *, alpha, beta):
     a, b = _coeffs(alpha, beta)
     d, _ = _depth_checked(depth, R, L, b)
     if d.ndim and all(np.ndim(v) == 0 for v in (R, L, E, a, b)):
-        # one cylinder (a model): the steps of _force_tilde with the scales folded in,
+        # one cylinder (a model): the chain of _force_tilde with the scales folded in,
         # fused in blocks; D = d R/(beta L^2) lies in (0, 1) by the check above
         to_ratio = float(R / (b * L**2))
         scale = float(2 * a * b * E * L**3 / R)
-
-        def chain(db):
-            t = db * to_ratio
-            np.log(t, out=t)
-            np.negative(t, out=t)                 # -ln D >= 0
-            u = log1p_excess_root(t, checked=False)
-            np.negative(u, out=u)
-            np.exp(u, out=u)
-            u *= scale
-            return u
-
-        return out(blockwise(chain, d))
+        return out(blockwise(lambda db: _scaled_exp_minus_u(db * to_ratio, scale), d))
     return out(E * L**3 / R * _force_tilde(d * R / L**2, a, b))
 
 

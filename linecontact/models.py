@@ -1048,57 +1048,59 @@ class UniversalModel(ContactModel):
                 f"(the table covers d/R up to {DEPTH_OVER_RADIUS.high:g} for "
                 f"L/R >= {full:.3g})")
 
-    def _dt(self, depth):
-        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
-                           hint=self._limit_hint())
-        # d <= depth_limit was checked; d/scale may still round above d_max at the end
+    def _checked_depth(self, depth):
+        """depth [m] checked against (0, depth_limit]."""
+        return check_interval("depth", depth, 0.0, self.depth_limit, low_open=True,
+                              unit="m", hint=self._limit_hint())
+
+    def _checked_force(self, force):
+        """force [N] checked against (0, force_limit]."""
+        return check_interval("force", force, 0.0, self.force_limit, low_open=True,
+                              unit="N", hint=self._limit_hint())
+
+    def _dt(self, d):
+        """d~ of checked depths d [m]: d <= depth_limit, but d/scale may still round
+        above d_max at the end."""
         return np.minimum(d / self._dscale, self.curve.d_max)
 
-    def _psi_of_force(self, force):
-        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
-                           hint=self._limit_hint())
-        # F <= force_limit was checked; F/scale may still round above psi_max at the end
+    def _psi_of_force(self, F):
+        """Psi of checked forces F [N]: F <= force_limit, but F/scale may still round
+        above Psi at depth_limit at the end."""
         return np.minimum(F / self._fscale, self._psi_end())
 
     def force(self, depth):
         """F(d) [N]; depth [m]."""
-        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True, unit="m",
-                           hint=self._limit_hint())
-        curve, fscale, dscale = self.curve, self._fscale, self._dscale
-        if d.ndim and d.size and min(d.min() / dscale, curve.d_max) >= curve.d_min:
-            # all on the table: the steps of _dt and the curve's psi, fused in blocks
+        d = self._checked_depth(depth)
+        curve, fscale = self.curve, self._fscale
+        if d.ndim and d.size and self._dt(d.min()) >= curve.d_min:
+            # all on the table: _dt and the curve's psi, fused in blocks
             def chain(db):
-                dt = db / dscale
-                psi = curve.on_table_psi(np.minimum(dt, curve.d_max, out=dt))
+                psi = curve.on_table_psi(self._dt(db))
                 psi *= fscale
                 return psi
 
             return out(blockwise(chain, d))
-        # d <= depth_limit was checked; d/scale may still round above d_max at the end
-        return out(curve.psi(np.minimum(d / dscale, curve.d_max)) * fscale)
+        return out(curve.psi(self._dt(d)) * fscale)
 
     def depth(self, force):
         """d(F) [m]; force [N]."""
-        F = check_interval("force", force, 0.0, self.force_limit, low_open=True, unit="N",
-                           hint=self._limit_hint())
-        curve, fscale, dscale = self.curve, self._fscale, self._dscale
-        psi_end, limit = self._psi_end(), self.depth_limit
-        if F.ndim and F.size and F.min() / fscale >= curve.psi_min:
+        F = self._checked_force(force)
+        curve, dscale, limit = self.curve, self._dscale, self.depth_limit
+        if F.ndim and F.size and F.min() / self._fscale >= curve.psi_min:
             # all on the table: the steps below, fused in blocks (cache-resident)
             def chain(fb):
-                p = fb / fscale
-                d = curve.on_table_depth(np.minimum(p, psi_end, out=p))
+                d = curve.on_table_depth(self._psi_of_force(fb))
                 d *= dscale
                 return np.minimum(d, limit, out=d)
 
             return out(blockwise(chain, F))
-        # F <= force_limit was checked; F/scale may still round above psi_max at the end
-        d = curve.depth_of_psi(np.minimum(F / fscale, psi_end)) * dscale
+        d = curve.depth_of_psi(self._psi_of_force(F)) * dscale
         return out(np.minimum(d, limit))   # rounding at the closed end only
 
     def stiffness(self, depth):
         """k(d) = dF/dd [N/m]; depth [m]."""
-        return out(self.curve.dpsi(self._dt(depth)) * self.estar * self.length)
+        return out(self.curve.dpsi(self._dt(self._checked_depth(depth))) * self.estar
+                   * self.length)
 
     @classmethod
     def evaluate_many(cls, radius, length, estar, *, force=None, depth=None):

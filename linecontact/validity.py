@@ -231,19 +231,31 @@ def _guarded(func, name):
     TypeError whose traceback ends in this wrapper (raised while Python bound the
     arguments, before `func`'s own frame began) and names a keyword `func` does not
     take is replaced. Every other error passes unchanged.
+
+    Where `func` is itself a pass-through decorator's wrapper (``functools.wraps``,
+    taking ``*args, **kwargs``, e.g. :func:`linecontact._numerics.serial_blas`), the
+    function it wraps decides: a TypeError raised in the wrapper's own frame, binding
+    the wrapped function's arguments, is replaced likewise.
     """
     import functools
+    import inspect
 
+    inner = inspect.unwrap(func)
     if getattr(func, "_keywords_checked", False) or \
-            func.__code__.co_flags & _CO_VARKEYWORDS:
+            inner.__code__.co_flags & _CO_VARKEYWORDS:
         return func  # wrapped already, or it takes **kwargs and checks them itself
+    # the frame in which binding the innermost function's arguments fails: this wrapper's
+    # own, or the decorator's wrapper's
+    binder = None if inner is func else func.__code__
 
     @functools.wraps(func)
     def guarded(*args, **kwargs):
         try:
             return func(*args, **kwargs)
         except TypeError as exc:
-            if kwargs and exc.__traceback__.tb_next is None:
+            tb = exc.__traceback__.tb_next
+            if kwargs and (tb is None or (tb.tb_next is None and
+                                          tb.tb_frame.f_code is binder)):
                 err = _unknown_keyword(func, name, kwargs)
                 if err is not None:
                     raise err from None

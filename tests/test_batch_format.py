@@ -91,3 +91,13 @@ def test_result_cells_equal_the_row_by_row_text(n, data):
         else:
             cols.append(("text", [data.draw(_TEXT)] * n))
     assert _result_cells(cols) == _result_cells_by_row(cols)
+
+
+def test_a_column_of_zeros_of_both_signs_keeps_each_sign():
+    """0.0 and -0.0 compare equal but '%.6g' writes them '0' and '-0': a column holding
+    both is not constant, and each cell is the text of its own value (both paths)."""
+    for values in ([0.0, -0.0, 0.0], [-0.0, 0.0]):
+        cols = [("num", np.array(values))]
+        want = ["," + t for t in _python(values)]
+        assert _result_cells(cols) == want
+        assert _result_cells_by_row(cols) == want

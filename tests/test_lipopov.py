@@ -388,3 +388,14 @@ def test_force_of_one_cylinder_is_exact_to_its_conditioning():
         F = lipopov_force(d, radius, L, E, alpha=a, beta=b)
         err = np.abs(F.astype(ld) / exact - 1).astype(float)
         assert np.all(err <= 4 * eps * cond), float(np.max(err / (eps * cond)))
+
+
+def test_an_unchecked_root_outside_its_range_is_nan_not_leftover_memory():
+    """log1p_excess_root(checked=False) trusts its caller's range; a t outside it (< 0,
+    NaN: no root) must still come out NaN, never whatever the result's memory held,
+    while the values in range keep their roots (u(1) = 2.1461932206205825...)."""
+    for _ in range(20):           # fresh allocations, reusing freed blocks of values
+        np.full(8, 123.0).sum()
+        u = log1p_excess_root(np.array([-0.5, np.nan, -1e-300, 1.0, 0.0]), checked=False)
+        assert np.all(np.isnan(u[:3])), u
+        assert u[3] == pytest.approx(2.1461932206205825, rel=1e-15) and u[4] == 0.0

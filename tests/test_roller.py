@@ -462,3 +462,12 @@ def test_convergence_failure_names_the_geometry():
     msg = str(info.value)
     assert "L/D = 5e-05" in msg and "covers" in msg and " L" in msg
     assert msg.count("geometry may be the cause") == 1
+
+
+def test_refine_ends_takes_a_boolean_only():
+    """refine_ends is a yes/no option: a word such as "no" (truthy in Python) is refused
+    with the parameter named, never read as True (check_flag, as every flag here)."""
+    for bad in ("no", "false", 0.0, None):
+        with pytest.raises(OutOfRangeError, match="refine_ends"):
+            ProfiledRoller(5e-3, 10e-3, 115e9, "lundberg:F0=1kN", refine_ends=bad)
+    assert ProfiledRoller(5e-3, 10e-3, 115e9, refine_ends=np.False_).refine_ends is False

@@ -95,3 +95,25 @@ def test_cold_force_start_reaches_the_depth_solution(n):
     assert t.force == pytest.approx(F, rel=1e-9)
     assert np.max(np.abs(t.q - s.q)) < 1e-9 * np.max(s.q)
     assert np.array_equal(t.q > 0, s.q > 0)
+
+
+class _ClearedByAnotherThread(dict):
+    """A cache that another thread empties right after each store (its own new key
+    pushing the cache over its size limit)."""
+
+    def __setitem__(self, key, value):
+        super().__setitem__(key, value)
+        self.clear()
+
+
+def test_geometry_caches_survive_a_concurrent_clear(monkeypatch):
+    """The unit-geometry caches are module-wide and emptied when full: a call must
+    return what it built even if another thread cleared the cache between the store and
+    the read (no KeyError), and the same arrays as an undisturbed call (exactly)."""
+    ref_geometry = sl._unit_geometry(37, 0.8, 1)
+    ref_far = sl._far_geometry(37, 0.8, 1)
+    monkeypatch.setattr(sl, "_GEOMETRY", _ClearedByAnotherThread())
+    monkeypatch.setattr(sl, "_FAR", _ClearedByAnotherThread())
+    for a, b in zip(sl._unit_geometry(37, 0.8, 1), ref_geometry):
+        assert np.array_equal(a, b)
+    assert np.array_equal(sl._far_geometry(37, 0.8, 1), ref_far)

@@ -14,6 +14,17 @@ def _blas_threads():
             if lib["user_api"] == "blas"]
 
 
+@pytest.fixture(autouse=True)
+def two_blas_threads():
+    """Every BLAS at two threads for the test (restored after), so that the limit to
+    one is seen also where the environment already runs BLAS on one thread (CI with
+    OPENBLAS_NUM_THREADS=1, a one-core machine)."""
+    with threadpoolctl.threadpool_limits(2, user_api="blas"):
+        if not _blas_threads() or min(_blas_threads()) < 2:
+            pytest.skip("no BLAS that threadpoolctl can set to two threads")
+        yield
+
+
 def test_limit_inside_restored_after_and_reentrant():
     """Inside a decorated call every BLAS has one thread, also in a nested decorated
     call; after the outermost call returns (or raises) the original counts are back."""
@@ -58,3 +69,23 @@ def test_roller_and_bearing_solves_use_one_thread(monkeypatch):
     RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, profile="iso16281").solve(10e3, moment=5.0)
     assert n_roller > 0 and len(counts) > n_roller
     assert set(counts) == {1}, counts
+
+
+def test_a_first_use_under_a_one_thread_limit_does_not_disable_it_later():
+    """Whether BLAS runs several threads is decided at each outermost entry, not once
+    per process: a first solve inside a caller's one-thread limit (a worker process
+    that limits BLAS) must not leave the limit off for later solves outside it."""
+    from linecontact._numerics import _SerialBlas
+
+    if max(_blas_threads(), default=1) < 2:
+        pytest.skip("BLAS runs one thread here: nothing to limit")
+    fresh = _SerialBlas()
+    with threadpoolctl.threadpool_limits(limits=1, user_api="blas"):
+        with fresh:
+            pass
+    before = _blas_threads()
+    assert max(before) >= 2
+    with fresh:
+        inside = _blas_threads()
+    assert inside == [1] * len(before), inside
+    assert _blas_threads() == before

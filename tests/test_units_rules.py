@@ -360,3 +360,16 @@ def test_a_unit_in_the_wrong_case_is_refused_with_did_you_mean(pair, change, x):
 
         factor = units._unit_factor(typed, kind)
         assert isinstance(factor, float) and math.isclose(value, x * factor, rel_tol=1e-15)
+
+
+@pytest.mark.parametrize("column", [["2.5e-310kN"], ["2.5e-310 kN", "5kN"],
+                                    ["2.5e-310kN", "x"], ["1e-310GPa", "1e3"]])
+def test_a_subnormal_number_is_refused_in_a_column_even_when_its_unit_scales_it_up(column):
+    """parse_quantity refuses a typed number below 2.2e-308 (it has lost precision)
+    whatever its unit; parse_column must too, also where the unit's factor (kN, GPa)
+    brings the SI value back into the normal range."""
+    kind = "pressure" if "GPa" in column[0] else "force"
+    values, errors = parse_column("--x", column, kind)
+    with pytest.raises(InputError) as exc:
+        parse_quantity("--x", column[0], kind)
+    assert errors[0] == str(exc.value) and math.isnan(values[0]), (values[0], errors[0])

@@ -463,7 +463,7 @@ def _result_cells(getters):
     for kind, data in getters:
         if kind == "num":
             v = np.asarray(data, dtype=float)
-            if np.all(v == v[0]):  # constant and finite (NaN != NaN)
+            if _constant(v):
                 pieces.append("," + format(float(v[0]), ".6g"))
             else:
                 m = _g6_bytes(v)
@@ -502,6 +502,12 @@ def _result_cells(getters):
                                       (n, len(text.encode("utf-8")))))
     matrix = np.concatenate(blocks, axis=1)
     return matrix[matrix != 0].tobytes().decode("utf-8").split("\n")[:n]
+
+
+def _constant(v):
+    """Whether every value of v is the same finite number written the same way: equal
+    (NaN != NaN) and of one sign bit ('%.6g' writes -0.0 as '-0', 0.0 as '0')."""
+    return bool(np.all(v == v[0]) and np.all(np.signbit(v) == np.signbit(v[0])))
 
 
 #: 10**k for k = 0..22, each exact in double precision.
@@ -609,7 +615,7 @@ def _result_cells_by_row(getters):
         if kind == "num":
             v = np.asarray(data, dtype=float)
             finite &= np.isfinite(v)
-            if n and np.all(v == v[0]):  # constant and finite (NaN != NaN)
+            if n and _constant(v):
                 parts.append(format(float(v[0]), ".6g").replace("%", "%%"))
                 continue
             parts.append("%.6g")

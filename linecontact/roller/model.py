@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..profiles import as_profile, is_free_tilt, roller_drop
-from ..validity import OutOfRangeError, check_interval, check_positive
+from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
 from .._numerics import serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (N_SLICES, SLICE_GRADING, TILT_RANGE, ConvergenceError,
@@ -112,7 +112,7 @@ class ProfiledRoller:
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
-        self.refine_ends = bool(refine_ends)
+        self.refine_ends = check_flag("refine_ends", refine_ends)
         self._refine = 0
         self._warm = None
         self._memo = None

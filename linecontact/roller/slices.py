@@ -87,9 +87,10 @@ def _unit_geometry(n, grading, refine=0):
     edges on the unit interval (n x n; the diagonal: near = far = w/2, log 0), and the
     slice centres and widths (slice_positions), cached per (n, grading, refine)."""
     key = (n, grading, refine)
-    if key not in _GEOMETRY:
-        if len(_GEOMETRY) > 16:
-            _GEOMETRY.clear()
+    # what is built is returned, not read back: another thread may empty the cache
+    # in between (the caches are module-wide)
+    cached = _GEOMETRY.get(key)
+    if cached is None:
         m, dg = slice_positions(n, grading, refine)
         t = np.abs(m[:, None] - m[None, :])
         h = 0.5 * dg[None, :]
@@ -97,8 +98,11 @@ def _unit_geometry(n, grading, refine=0):
         np.fill_diagonal(near, 0.5 * dg)
         lr = np.log(far / near)
         np.fill_diagonal(lr, 0.0)
-        _GEOMETRY[key] = (near, far, lr, m, dg)
-    return _GEOMETRY[key]
+        cached = (near, far, lr, m, dg)
+        if len(_GEOMETRY) > 16:
+            _GEOMETRY.clear()
+        _GEOMETRY[key] = cached
+    return cached
 
 
 #: The far field of the strip kernel: pairs whose near-edge tau = t/b is at least
@@ -119,9 +123,8 @@ def _far_geometry(n, grading, refine=0):
     (zero on the diagonal), cached per (n, grading, refine) (up to 8 of them and
     64 MB: an end refinement solves on three more grids)."""
     key = (n, grading, refine)
-    if key not in _FAR:
-        if len(_FAR) >= 8 or sum(v.nbytes for v in _FAR.values()) > 2**26:
-            _FAR.clear()
+    G = _FAR.get(key)                # (returned as built: see _unit_geometry)
+    if G is None:
         near, far = _unit_geometry(n, grading, refine)[:2]
         n = near.shape[0]                           # the slices, after any refinement
         un, uf = near.T ** -2, far.T ** -2          # (source, target)
@@ -132,8 +135,10 @@ def _far_geometry(n, grading, refine=0):
             pn *= un
             pf *= uf
         G[np.arange(n), np.arange(n)] = 0.0
+        if len(_FAR) >= 8 or sum(v.nbytes for v in list(_FAR.values())) > 2**26:
+            _FAR.clear()
         _FAR[key] = G
-    return _FAR[key]
+    return G
 
 
 class ConvergenceError(RuntimeError):

@@ -121,17 +121,21 @@ def paired_with(path, n, rep, rounds):
     return out
 
 
-def slicing(n, rep):
+def slicing(n, rep, coupled=False):
     """The ISO 16281 slicing law of a crowned (Rc = 0.5 m), tilted (0.5 mrad) roller,
     30 slices touching at 30 depths: F(d) and d(F) of n values from the tables, the
     first call on a new model (it builds the table) apart, and the direct solves of
-    2000 values scaled to n; the table against the solves at 500 of the points."""
-    from linecontact.roller.laws import ISOSlicingModel
+    2000 values scaled to n; the table against the solves at 500 of the points.
+    ``coupled``: the same for the coupled-slice law (``profiled-roller``, 100 slices,
+    1 mrad; 200 direct solves scaled, 100 check points: each is a coupled solve)."""
+    from linecontact.roller.laws import ISOSlicingModel, ProfiledRollerModel
 
-    def model():
-        return ISOSlicingModel(R, L, ESTAR, profile="circular:Rc=0.5", tilt=5e-4)
-
-    m = model()
+    if coupled:
+        m = ProfiledRollerModel(R, L, ESTAR, profile="circular:Rc=0.5", tilt=1e-3)
+        key, n_few, n_check = "profiled-roller (crowned, 1 mrad)", 200, 100
+    else:
+        m = ISOSlicingModel(R, L, ESTAR, profile="circular:Rc=0.5", tilt=5e-4)
+        key, n_few, n_check = "iso16281-slicing (crowned, tilted)", 2000, 500
     s = np.linspace(0.2, 2.0, n)
     d = m.first_contact_depth + s * (float(m.depth(F0)) - m.first_contact_depth)
     F = s * F0
@@ -141,15 +145,16 @@ def slicing(n, rep):
         y = fun(x)
         first = time.process_time() - t0
         again = cpu(lambda: fun(x), rep)
-        few = x[:: max(1, n // 2000)][:2000]
+        few = x[:: max(1, n // n_few)][:n_few]
         direct = cpu(lambda: fun(few), 1) * n / few.size
-        k = np.linspace(0, n - 1, 500).astype(int)
+        k = np.linspace(0, n - 1, n_check).astype(int)
         exact = np.array([ref(float(v)) for v in x[k]])
         base = exact if name == "F(d)" else exact - m.first_contact_depth
         err = float(np.max(np.abs(y[k] - exact) / base))
-        print(f"iso16281-slicing (crowned, tilted) {name}: {again:.3f} s from the table, "
+        print(f"{key} {name}: {again:.3f} s from the table, "
               f"first call {first:.2f} s (builds it), direct solves {direct:.0f} s "
-              f"(2000 scaled); largest difference {err:.1e} (of F, of d - d0)")
+              f"({n_few} scaled); largest difference {err:.1e} (of F, of d - d0) "
+              f"at {n_check} points")
 
 
 def main(argv=None):
@@ -163,8 +168,18 @@ def main(argv=None):
                          "(another checkout), paired, and print the ratios old/new")
     ap.add_argument("--rounds", type=int, default=5,
                     help="rounds of the paired comparison (child processes A B A B)")
+    ap.add_argument("--profiled-roller", action="store_true",
+                    help="time only the coupled-slice law's table (profiled-roller; its "
+                         "build is a few hundred coupled solves: minutes)")
     args = ap.parse_args(argv)
     n, rep = args.n, args.repeat
+    if args.profiled_roller:
+        print(f"# bench_models --profiled-roller: N = {n}, CPU s, median of {rep}; "
+              f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}"
+              + (f"; load average {os.getloadavg()[0]:.1f}" if hasattr(os, "getloadavg")
+                 else ""))
+        slicing(n, rep, coupled=True)
+        return
     if args.json:
         print(json.dumps(entries(n, rep)))
         return

@@ -667,12 +667,24 @@ class _EndTable:
             else 0.0
         self.usable = bool(self.error <= tol)
 
-    def __call__(self, v, pre, post):
-        """post(y(pre(v)), v) for an array v, in blocks of BLOCK elements: pre maps v to x
-        in [0, 1], post maps y to the result; elementwise both. The marked cells'
-        elements are evaluated directly, all together after the blocks."""
+    def __call__(self, v, v_end, y_end):
+        """The odd law y_end y(min(|v|/v_end, 1)) sign(v) of an array v, in blocks of
+        BLOCK elements (v_end: where the law ends, gross slip; y_end: its value there).
+        The marked cells' elements are evaluated directly, all together after the
+        blocks."""
         poly, bad = self.poly, self.bad
         v = np.asarray(v, dtype=float)
+
+        def pre(vb):                  # x = |v|/v_end, 1 from gross slip on
+            x = np.abs(vb)
+            x /= v_end
+            return np.minimum(x, 1.0, out=x)
+
+        def post(y, vb):
+            y *= y_end
+            y *= np.sign(vb)
+            return y
+
         flat = v.ravel()
         res = np.empty(flat.size)
         redo = []
@@ -886,19 +898,7 @@ class TangentialContact:
                     raise OutOfRangeError("shift", top, f"[-{ustar:.6g}, {ustar:.6g}] m",
                                           unit="m", hint="beyond gross slip; "
                                                          "beyond='saturate'")
-                fmax = self.gross_slip_force
-
-                def shift_fraction(ub):       # |u|/u*, 1 from gross slip on
-                    x = np.abs(ub)
-                    x /= ustar
-                    return np.minimum(x, 1.0, out=x)
-
-                def signed_force(q, ub):
-                    q *= fmax
-                    q *= np.sign(ub)
-                    return q
-
-                return out(table(u, shift_fraction, signed_force))
+                return out(table(u, ustar, self.gross_slip_force))
         a = np.abs(u)
         if beyond == "raise" and np.any(a > ustar * (1 + 1e-12)):
             raise OutOfRangeError("shift", float(a.max()), f"[-{ustar:.6g}, {ustar:.6g}] m",
@@ -1024,19 +1024,7 @@ class TangentialContact:
         if Ft.size >= _TABLE_MIN:
             table = self._table("shift")
             if table is not None:
-                ustar = self.gross_slip_shift
-
-                def load_fraction(fb):
-                    q = np.abs(fb)
-                    q /= fmax
-                    return np.minimum(q, 1.0, out=q)
-
-                def signed_shift(y, fb):
-                    y *= ustar
-                    y *= np.sign(fb)
-                    return y
-
-                return out(table(Ft, load_fraction, signed_shift))
+                return out(table(Ft, fmax, self.gross_slip_shift))
 
         def chain(fb):
             q = np.minimum(np.abs(fb) / fmax, 1.0)

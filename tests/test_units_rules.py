@@ -124,19 +124,24 @@ def test_non_numbers_are_refused(text):
     _refused(text)
 
 
-@given(st.lists(st.one_of(quantity_text, st.text(max_size=8),
-                          st.builds(lambda x: repr(x), normal)), max_size=30), kinds)
-def test_a_column_parses_exactly_like_its_cells(cells, kind):
-    """parse_column (the batch's fast path, numpy and one pint call per unit) gives the
-    same float and the same message as parse_quantity, cell by cell."""
+def _assert_parses_like_its_cells(cells, kind):
+    """parse_column gives parse_quantity's float, or its message and NaN, cell by cell."""
     values, errors = parse_column("--x", cells, kind)
     for cell, v, e in zip(cells, values, errors):
         try:
             expected = parse_quantity("--x", cell, kind)
         except InputError as exc:
-            assert e == str(exc) and math.isnan(v)
+            assert e == str(exc) and math.isnan(v), (cell, e)
         else:
-            assert e == "" and v == expected
+            assert e == "" and v == expected, (cell, v, expected)
+
+
+@given(st.lists(st.one_of(quantity_text, st.text(max_size=8),
+                          st.builds(lambda x: repr(x), normal)), max_size=30), kinds)
+def test_a_column_parses_exactly_like_its_cells(cells, kind):
+    """parse_column (the batch's fast path, numpy and one pint call per unit) gives the
+    same float and the same message as parse_quantity, cell by cell."""
+    _assert_parses_like_its_cells(cells, kind)
 
 
 #: Cells near the edges of the grammar, where a split of the column by string
@@ -159,14 +164,7 @@ def test_a_column_of_edge_cells_parses_exactly_like_its_cells(cells, kind):
     (some cell refused) both give parse_quantity's float and message, cell by cell,
     also when a column mixes the two kinds of cell."""
     for column in (cells, cells + ["5mm", "0.005"], ["1kN"] * 3 + cells):
-        values, errors = parse_column("--x", column, kind)
-        for cell, v, e in zip(column, values, errors):
-            try:
-                expected = parse_quantity("--x", cell, kind)
-            except InputError as exc:
-                assert e == str(exc) and math.isnan(v), (cell, e)
-            else:
-                assert e == "" and v == expected, (cell, v, expected)
+        _assert_parses_like_its_cells(column, kind)
 
 
 @given(st.lists(st.builds(lambda x, u: repr(x) + u, normal,
@@ -175,14 +173,7 @@ def test_a_column_of_edge_cells_parses_exactly_like_its_cells(cells, kind):
 def test_a_column_of_plain_cells_parses_exactly_like_its_cells(cells, kind):
     """Plain cells (a number and a unit name, of any unit, fit for the kind or not)
     take the column's fast split; it gives parse_quantity's float and message exactly."""
-    values, errors = parse_column("--x", cells, kind)
-    for cell, v, e in zip(cells, values, errors):
-        try:
-            expected = parse_quantity("--x", cell, kind)
-        except InputError as exc:
-            assert e == str(exc) and math.isnan(v), (cell, e)
-        else:
-            assert e == "" and v == expected, (cell, v, expected)
+    _assert_parses_like_its_cells(cells, kind)
 
 
 @given(st.lists(st.sampled_from(["5", "1.", ".5", "+5", "-2", "1e3", "1E-3", "0", "7 ",
@@ -197,14 +188,7 @@ def test_a_column_of_one_unit_parses_exactly_like_its_cells(numbers, unit, odd, 
     cells = [x + unit for x in numbers]
     if odd is not None:
         cells.insert(min(at, len(cells)), odd)
-    values, errors = parse_column("--x", cells, kind)
-    for cell, v, e in zip(cells, values, errors):
-        try:
-            expected = parse_quantity("--x", cell, kind)
-        except InputError as exc:
-            assert e == str(exc) and math.isnan(v), (cell, e)
-        else:
-            assert e == "" and v == expected, (cell, v, expected)
+    _assert_parses_like_its_cells(cells, kind)
 
 
 @given(st.text(max_size=10))

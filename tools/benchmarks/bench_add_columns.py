@@ -22,6 +22,7 @@ import time
 import numpy as np
 
 from tools.bem.halfspace import SymmetricOperator, best_backend
+from tools.benchmarks import report
 
 
 def _per_call(f, loops, repeat):
@@ -61,11 +62,7 @@ def main(argv=None):
         t_col = _per_call(lambda: op.add_columns(u, cell, value), args.loops, args.repeat)
         lines.append(f"{args.mx} x {my} | {1e3 * t_pair:.3f} | {1e3 * t_col:.3f} | "
                      f"{t_pair / t_col:.1f} | {op.sparse_limit}")
-    text = "\n".join(lines)
-    print(text)
-    if args.save:
-        with open(args.save, "a", encoding="utf-8") as fh:
-            fh.write(text + "\n")
+    report("\n".join(lines), args.save)
 
 
 if __name__ == "__main__":

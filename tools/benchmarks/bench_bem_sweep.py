@@ -32,6 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
+from tools.benchmarks import report
+
 ROOT = Path(__file__).resolve().parents[2]
 
 CHILD = r"""
@@ -103,11 +105,7 @@ def main(argv=None):
                      f"{per_step(b0)} | {per_step(a0)} | {dF:.2g}, {dk:.2g} | "
                      f"{b0['converged']} / {a0['converged']}")
     lines.append(f"sum of medians: {tot_b:.2f} / {tot_a:.2f} s = {tot_b / tot_a:.2f}")
-    text = "\n".join(lines)
-    print(text)
-    if args.save:
-        with open(args.save, "a", encoding="utf-8") as fh:
-            fh.write(text + "\n")
+    report("\n".join(lines), args.save)
 
 
 if __name__ == "__main__":

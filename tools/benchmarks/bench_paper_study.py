@@ -35,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from tools.benchmarks import report
+
 ROOT = Path(__file__).resolve().parents[2]
 TARGET_S = 300.0
 
@@ -141,11 +143,7 @@ def main(argv=None):
             lines += _compare(Path(tmp), values)
         else:
             lines.append("(not compared with the shipped tables: other grid or steps)")
-    text = "\n".join(lines)
-    print(text)
-    if args.save:
-        with open(args.save, "a", encoding="utf-8") as fh:
-            fh.write(text + "\n")
+    report("\n".join(lines), args.save)
 
 
 if __name__ == "__main__":

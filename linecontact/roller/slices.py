@@ -175,6 +175,36 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
     return S
 
 
+def _end_runs(S, out):
+    """The slices of `out` (a mask over the loaded set S) that reach an end of a run
+    of consecutive loaded slices through slices of `out`: where the full step drives
+    the last few slices of the contact below zero, all of them are outside it (one by
+    one, each would cost a step)."""
+    ns = len(S)
+    cut = np.flatnonzero(np.diff(S) > 1) + 1
+    ends = np.zeros(ns, bool)
+    for a, b in zip(np.concatenate([[0], cut]), np.concatenate([cut, [ns]])):
+        seg = out[a:b]
+        if seg.all():
+            ends[a:b] = True
+            continue
+        ends[a:a + int(np.argmin(seg))] = True
+        ends[b - int(np.argmin(seg[::-1])):b] = True
+    return ends
+
+
+def _unloaded(J, B, out, u):
+    """The linear system J z = B of a Newton step in scaled unknowns (u = q/qsc
+    first, then c) with the slices `out` unloaded: their q set to zero (the step
+    -u in their q columns, moved to the right-hand side's first column) and their rows
+    and unknowns dropped."""
+    ns = len(out)
+    B = B.copy()
+    B[:, 0] += J[:, :ns][:, out] @ u[out]
+    keep = np.concatenate([~out, ~out])
+    return J[np.ix_(keep, keep)], B[keep]
+
+
 class SliceEquations:
     """Slice geometry and the Newton / active-set solver in scaled variables.
 
@@ -633,40 +663,46 @@ class SliceEquations:
             np.multiply(res[ns:], -R, out=B[ns:, 0])
             np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
             np.multiply(rhs[ns:], R, out=B[ns:, 1:])
-            z = np.linalg.solve(J, B)
-            z[:ns] *= qsc
-            z[ns:] *= 1.0 / R
-            ws, xs = s.w[S], s.x[S]
-            W = np.stack([ws, ws * xs])
-            wq, wxq = W @ qs
-            # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
-            Wz = W @ z[:ns]
-            K = Wz[:, 1:] + grid
-            lin = Wz[:, 0]
-            step = np.zeros(2)
-            want = np.array([(force / piE - wq - lin[0]) if force is not None else 0.0,
-                             (-wxq - lin[1]) if zero_moment else 0.0])
-            if force is not None and zero_moment:
-                step = np.linalg.solve(K, want)
-            elif force is not None:
-                step[0] = want[0] / K[0, 0]
-            elif zero_moment:
-                step[1] = want[1] / K[1, 1]
-            dz = z[:, 0] + z[:, 1:] @ step
-            dq, dc = dz[:ns], dz[ns:]
-            # a slice at an end of the loaded set that the full step drives to q < 0 is
-            # outside the contact: it leaves at once (it would only block the step)
-            out = qs + dq < 0
-            if out.any() and ns > 2:
-                edge = np.zeros(ns, bool)
-                edge[[0, -1]] = True
-                gaps = np.flatnonzero(np.diff(S) > 1)
-                edge[gaps] = edge[gaps + 1] = True
-                out &= edge
-                if out.any() and not out.all():
-                    q[S[out]] = 0.0
-                    S = S[~out]
-                    continue
+            left = None
+            while True:
+                z = np.linalg.solve(J, B)
+                z[:ns] *= qsc
+                z[ns:] *= 1.0 / R
+                ws, xs = s.w[S], s.x[S]
+                W = np.stack([ws, ws * xs])
+                wq, wxq = W @ qs
+                # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
+                Wz = W @ z[:ns]
+                K = Wz[:, 1:] + grid
+                lin = Wz[:, 0]
+                step = np.zeros(2)
+                want = np.array([(force / piE - wq - lin[0]) if force is not None
+                                 else 0.0, (-wxq - lin[1]) if zero_moment else 0.0])
+                if force is not None and zero_moment:
+                    step = np.linalg.solve(K, want)
+                elif force is not None:
+                    step[0] = want[0] / K[0, 0]
+                elif zero_moment:
+                    step[1] = want[1] / K[1, 1]
+                dz = z[:, 0] + z[:, 1:] @ step
+                dq, dc = dz[:ns], dz[ns:]
+                # slices at an end of the loaded set that the full step drives to q < 0
+                # are outside the contact: they leave at once (they would only block the
+                # step), and the step is solved again without them on the same
+                # linearisation (their loads set to zero through its columns: no new
+                # kernels)
+                out = qs + dq < 0
+                if not (out.any() and ns > 2):
+                    break
+                out = _end_runs(S, out)
+                if not out.any() or out.all():
+                    break
+                J, B = _unloaded(J, B, out, qs / qsc)
+                left = S[out] if left is None else np.union1d(left, S[out])
+                q[S[out]] = 0.0
+                S = S[~out]
+                ns = len(S)
+                qs, cs = q[S], c[S]
             alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
             # keep the rigid overlap positive: no step lowers it by more than half its
             # largest value (d stays above first contact)
@@ -694,6 +730,8 @@ class SliceEquations:
                 if dqmax <= qsc:
                     rest = np.ones(n, bool)
                     rest[S] = False
+                    if left is not None:      # their gaps are those before they left
+                        rest[left] = False
                     add = np.flatnonzero(rest & (gap > tol * dmax))
                     if len(add) == 0 and small:
                         F = piE * (s.w @ q)

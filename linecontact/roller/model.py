@@ -112,6 +112,7 @@ class ProfiledRoller:
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
+        self._end_cache = {}
         self.refine_ends = check_flag("refine_ends", refine_ends)
         self._refine = 0
         self._warm = None
@@ -205,23 +206,41 @@ class ProfiledRoller:
         interval's width down to 1e-6 of it), then on 33 even points in the bracket,
         and interpolated linearly there, as on the grid (continuous in d and theta).
         Returns the end and its derivatives with respect to (d, theta)."""
-        L = self.length
-        end = side * L / 2
-        u = abs(end - x_in) * _END_STEPS                     # distances from the end
+        end = side * self.length / 2
+        key = (side, x_in)
         for level in range(2):
-            x = end - side * u
-            over = d + th * x - roller_drop(self.profile, L, x)
+            u, x, P = self._end_points(key, end, side, x_in)
+            over = d + th * x - P
             out = np.flatnonzero(over <= 0)
             if len(out) == 0:           # overlapping to within 1e-6 of the interval
                 return float(x[-1]), (0.0, 0.0)
             k = int(out[0])             # over[0] > 0: x_in is inside the interval
-            if level == 0:
-                u = np.linspace(u[k - 1], u[k], 33)
+            key += (k,)
         o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
         return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+
+    def _end_points(self, key, end, side, x_in):
+        """The distances u from the end, the points x and the drop there of one level
+        of _end_root's search: key (side, x_in) the 40 graded points, key (side, x_in,
+        k) the 33 even points between the first level's points k - 1 and k. They depend
+        only on the key: cached, as the Newton steps of a solve, and the solves of a
+        sweep, meet the same few."""
+        hit = self._end_cache.get(key)
+        if hit is None:
+            if len(key) == 2:
+                u = abs(end - x_in) * _END_STEPS
+            else:
+                u0 = self._end_points(key[:2], end, side, x_in)[0]
+                u = np.linspace(u0[key[2] - 1], u0[key[2]], 33)
+            x = end - side * u
+            hit = (u, x, roller_drop(self.profile, self.length, x))
+            if len(self._end_cache) >= 64:
+                self._end_cache.clear()
+            self._end_cache[key] = hit
+        return hit
 
     def _slope(self, x):
         """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""

@@ -141,6 +141,15 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
+#: The sweeps of the cold start (SliceEquations.start_at_force), each a frozen-width
+#: linear solve on the grid of the last: over the 104 cases of
+#: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
+#: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4);
+#: the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt takes 4
+#: steps after 3 sweeps, 8 after 2.
+START_SWEEPS = 3
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -206,7 +215,7 @@ def _unloaded(J, B, out, u, v):
     B = B.copy()
     B[:, 0] += J[:, :ns][:, out] @ u[out] + J[:, ns:][:, out] @ v[out]
     keep = np.concatenate([~out, ~out])
-    return J[np.ix_(keep, keep)], B[keep]
+    return J[keep][:, keep], B[keep]       # (a quarter of np.ix_'s time)
 
 
 class SliceEquations:
@@ -498,8 +507,9 @@ class SliceEquations:
         """A cold first (equations, S, q, c, d, theta) for the force `force` [N] (and
         zero moment): the linear problem with frozen strip widths and the force (and
         moment) rows bordering it, so that d (and theta) come out of the same solve,
-        twice: the second time on the grid of the first answer's d and theta, with its
-        plane-strain widths b^2 = 4 R q/(pi E*) mapped onto that grid; c = q/b^2 from
+        :data:`START_SWEEPS` times: each time after the first on the grid of the last
+        answer's d and theta, with its plane-strain widths b^2 = 4 R q/(pi E*) mapped
+        onto that grid; c = q/b^2 from
         the curvature equations with the same frozen widths (linear in c: over the 104
         cases of tables/roller_accuracy.csv 4 % fewer Newton steps than the plane-strain
         c = 1/(4R), which is kept where that gives c <= 0). Returns None
@@ -510,7 +520,7 @@ class SliceEquations:
         s, R = self, self.R
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
-        sweeps = 2 if width is None else 1
+        sweeps = START_SWEEPS if width is None else 1
         for sweep in range(sweeps):
             over = d + theta * s.x - s.P
             S = np.flatnonzero(over > 0)
@@ -545,9 +555,9 @@ class SliceEquations:
                 if (qs > 0).all():
                     break
                 on = qs > 0
-                S, b0, A = S[on], b0[on], A[np.ix_(on, on)]
+                S, b0, A = S[on], b0[on], A[on][:, on]
                 if Dk is not None:
-                    Dk = Dk[np.ix_(on, on)]
+                    Dk = Dk[on][:, on]
                 if S.size == 0:
                     return None
             d_new = float(z[ns])
@@ -556,7 +566,7 @@ class SliceEquations:
                 return None
             width = ((s.x[S] - s.lo) / (s.hi - s.lo), np.sqrt(4 * R * qs))
             qrel = qs
-            if sweep == 0 and sweeps == 2:
+            if sweep < sweeps - 1:
                 d, theta = d_new, th_new
                 s2 = regrid(d, theta)
                 s2.iterations = s.iterations

@@ -162,9 +162,9 @@ def test_unloading_slices_equals_a_fresh_linearisation():
 def test_bordered_newton_converges_alone_at_refined_end_zones(monkeypatch, profile, tilt):
     """At 2000 N/mm the contact of a logarithmic profile ends in its refined end zone,
     where an end slice can sit between joining and leaving (table cases 28 and 45 of
-    tables/roller_accuracy.csv, which cycled with another joining load): the bordered
-    Newton settles the active set on its own, every refinement level included, the
-    nested fallback never called."""
+    tables/roller_accuracy.csv; an unloading of leaving slices through their q columns
+    alone cycled there): the bordered Newton settles the active set on its own, every
+    refinement level included, the nested fallback never called."""
     from tools.studies.roller_study import make_profile
 
     def no_fallback(*args, **kwargs):

@@ -511,3 +511,21 @@ def test_a_force_whose_dimensionless_value_is_subnormal_is_refused_by_name(key):
     assert np.isfinite(d) and 0 < d < 1e-290, "a force above the floor has a tiny depth"
     with pytest.raises(OutOfRangeError, match=r"^depth = 1e-310 m"):
         m.force(1e-310)
+
+
+def _every_model_key():
+    import linecontact.roller  # noqa: F401  (registers the roller models)
+    return sorted(MODELS)
+
+
+@pytest.mark.parametrize("key", _every_model_key())
+def test_every_registered_model_pickles_and_answers_alike(key):
+    """A model sent to another process (a process pool, a Dask worker) is pickled: every
+    registered model must round-trip and give the same depth at 1 kN. The universal
+    curve held its spline's derivatives as lambdas, which do not pickle."""
+    import pickle
+
+    kw = {"profile": "circular:Rc=0.5"} if key in ("profiled-roller",
+                                                   "iso16281-slicing") else {}
+    m = get_model(key, 5e-3, 10e-3, 115.38e9, **kw)
+    assert pickle.loads(pickle.dumps(m)).depth(1e3) == m.depth(1e3)

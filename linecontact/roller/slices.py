@@ -141,15 +141,6 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
-#: The sweeps of the cold start (SliceEquations.start_at_force), each a frozen-width
-#: linear solve on the grid of the last: over the 104 cases of
-#: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
-#: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4);
-#: the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt takes 4
-#: steps after 3 sweeps, 8 after 2.
-START_SWEEPS = 3
-
-
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -182,6 +173,16 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
         if len(S) == 0:
             raise ConvergenceError("every slice left the contact")
     return S
+
+
+#: The sweeps of the cold start (SliceEquations.start_at_force), each a frozen-width
+#: linear solve on the grid of the last: over the 104 cases of
+#: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
+#: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4; measured
+#: while the end refinement still restarted from the loads, tools/benchmarks/README.md,
+#: "Round 5"); the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt
+#: takes 4 steps after 3 sweeps, 8 after 2.
+START_SWEEPS = 3
 
 
 def _end_runs(S, out):

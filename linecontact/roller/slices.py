@@ -141,6 +141,55 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
+#: the engines that evaluate the slice equations: ProfiledRoller(engine=...) takes
+#: one of these; SliceEquations.engine is "numpy" or "numba" (resolve_engine)
+ENGINES = ("auto", "numpy", "numba")
+#: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
+#: takes before it switches to the compiled engine, where numba is installed: about
+#: 0.6 s of numpy work at 100 slices, what importing numba and loading its cached
+#: code cost once (docs/profiled_rollers.md, "Engines")
+AUTO_SWITCH_STEPS = 500
+_NUMPY_STEPS = [0]
+_HAVE_NUMBA = []
+
+
+def numba_installed():
+    """Whether numba can be imported (looked up once, without importing it)."""
+    if not _HAVE_NUMBA:
+        import importlib.util
+        _HAVE_NUMBA.append(importlib.util.find_spec("numba") is not None)
+    return _HAVE_NUMBA[0]
+
+
+def check_engine(engine):
+    """`engine` checked: one of ENGINES, and "numba" only where numba is installed."""
+    from ..validity import OutOfRangeError, UnknownNameError
+    if not isinstance(engine, str) or engine not in ENGINES:
+        raise UnknownNameError("engine", engine, ENGINES)
+    if engine == "numba" and not numba_installed():
+        raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
+                              "installed)", hint="install numba (pip install numba, or "
+                              "linecontact[fast]) or use engine='auto'")
+    return engine
+
+
+def resolve_engine(engine):
+    """"numpy" or "numba" for a new SliceEquations: "auto" is numpy until this process
+    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed (a
+    single solve never imports numba; a sweep, a batch or a bearing repays it)."""
+    if engine == "auto":
+        return ("numba" if _NUMPY_STEPS[0] >= AUTO_SWITCH_STEPS and numba_installed()
+                else "numpy")
+    return engine
+
+
+def compiled():
+    """The compiled kernels (:mod:`linecontact.roller._compiled`), imported on first
+    use: importing numba costs a few hundred ms, which only repeated solves repay."""
+    from . import _compiled
+    return _compiled
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -181,8 +230,12 @@ class SliceEquations:
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0,
+                 engine="numpy"):
         self.R = radius
+        # "numpy" or "numba" (resolved by the owner, ProfiledRoller): who evaluates
+        # kernels() and linearised(); the numpy code is the reference and the fallback
+        self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
@@ -221,6 +274,16 @@ class SliceEquations:
         With `a_only`, A alone (the others None).
         """
         T = S if targets is None else targets
+        if self.engine == "numba":
+            jit = compiled()
+            far = self.n <= _N_FAR
+            out = jit.kernels(S, T, b, self.span, self.dg, self._tnear, self._tfar,
+                              self._logratio,
+                              _far_geometry(*self._geometry) if far else None,
+                              _FAR_COEF, a_only)
+            if out is not None:
+                return out
+        _NUMPY_STEPS[0] += 1
         if self.n > _N_FAR:
             out = self._kernels_table(S, b, T)
             return (out[0], None, None, None) if a_only else out
@@ -547,6 +610,21 @@ class SliceEquations:
         slice loads together with d and theta needs, and at convergence the implicit
         derivative (:meth:`sensitivities`).
         """
+        if self.engine == "numba":
+            if len(targets) == self.n:
+                pos = np.full(self.n, -1)
+                pos[S] = np.arange(len(S))
+            else:
+                pos = np.full(len(targets), -1)
+                pos[np.searchsorted(targets, S)] = np.arange(len(S))
+            far = self.n <= _N_FAR
+            out = compiled().linearised(
+                S, targets, pos, q, c, self._over, self.R, self.span, self.x, self.m,
+                self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
+                self._logratio, _far_geometry(*self._geometry) if far else None,
+                _FAR_COEF)
+            if out is not None:
+                return out
         R = self.R
         qs, cs = q[S], c[S]
         bb = qs / cs

@@ -70,100 +70,154 @@ def _far_powers(b, span, fc):
 _far_powers = _jit(_far_powers)
 
 
-def _fill(S, T, full, b, span, dg, tn, tf, lr, G, fc, far, tmin, tmax, coef, z0, ih, h,
-          A, EA, D, ED):
-    """A[kt, s] for target T[kt] and source S[s], and EA, D, ED on the rows with
-    full[kt] (kernels(); one loop, no calls per pair: numba counts references at each
-    call that passes arrays, which costs more than the pair). False where a spline
-    argument leaves the table [tmin, tmax)."""
-    ns, nt = S.shape[0], T.shape[0]
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, Gt, far, taumax, tmin, tmax, coef, z0,
+            ih, h, W, bnd):
+    """The four kernels of source slice si (strip half-width bi, far-field series
+    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED. tn, tf, lr
+    and Gt are indexed [source, target] (transposed). Returns False where a spline
+    argument leaves the table [tmin, tmax).
+
+    The near band, {k : tn[si, k] < 3 b/span} (the numpy code's test), is an interval
+    [kl, kr] around si, since tn grows away from the source; outside it the far-field
+    series, term j over the targets whose near-edge t/b <= taumax[j] (those at which
+    it can exceed FAR_STOP): two intervals [bnd[0, j], kl) and (bnd[1, j], kr] that
+    shrink with j, so that the targets fall into bands of equal term counts."""
     nseg = coef.shape[2]
-    C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
-    K = G.shape[2]
-    for s in range(ns):
-        si = S[s]
-        bi = b[s]
-        ibi = span / bi
-        thr = 3.0 * (1.0 / ibi)
-        for kt in range(nt):
-            k = T[kt]
-            fk = full[kt]
-            if k == si:                               # the diagonal: tau = w/2b
-                ntau = 1
-                tau0 = (0.5 * span) * dg[si] / bi
-                tau1 = tau0
-            else:
-                tnk = tn[k, si]
-                if far and not (tnk < thr):
-                    # the far field: sum over j of G[si, k, j] C[s, j, f], until the
-                    # next power of (b/t)^2 is negligible
-                    x = 1.0 / (tnk * ibi)
-                    x = x * x
-                    xp = x
-                    a = ea = d = ed = 0.0
-                    for j in range(K):
-                        g = G[si, k, j]
-                        a += g * C[s, j, 0]
-                        if fk:
-                            ea += g * C[s, j, 1]
-                            d += g * C[s, j, 2]
-                            ed += g * C[s, j, 3]
-                        xp *= x
-                        if xp < FAR_STOP:
-                            break
-                    A[kt, s] = lr[k, si] + a
-                    if fk:
-                        EA[kt, s] = ea
-                        D[kt, s] = d
-                        ED[kt, s] = ed
-                    continue
-                # the near band (every pair without the far field): both edges
-                ntau = 2
-                tau0 = tf[k, si] * ibi
-                tau1 = tnk * ibi
-            r = ta = p = tp = 0.0
-            for e in range(ntau):
-                tau = tau0 if e == 0 else tau1
-                if not (tmin <= tau < tmax):
-                    return False
-                sg = 1.0 if e == 0 else -1.0
-                u = (np.log(tau) - z0) * ih
-                i = int(u)
-                if i > nseg - 1:
-                    i = nseg - 1
-                t = (u - i) * h
-                r += sg * (((coef[3, 0, i] * t + coef[2, 0, i]) * t + coef[1, 0, i]) * t
-                           + coef[0, 0, i])
-                if fk:
-                    ta += sg * (((coef[3, 1, i] * t + coef[2, 1, i]) * t + coef[1, 1, i])
-                                * t + coef[0, 1, i])
-                    p += sg * (((coef[3, 2, i] * t + coef[2, 2, i]) * t + coef[1, 2, i])
-                               * t + coef[0, 2, i])
-                    tp += sg * (((coef[3, 3, i] * t + coef[2, 3, i]) * t + coef[1, 3, i])
-                                * t + coef[0, 3, i])
-            if ntau == 1:
-                A[kt, s] = 2.0 * (np.log(span * dg[si] / bi) + r)
-                if fk:
-                    EA[kt, s] = 2.0 * ta
-                    D[kt, s] = 2.0 * p - 4.0
-                    ED[kt, s] = 2.0 * tp
-            else:
-                A[kt, s] = lr[k, si] + r
-                if fk:
-                    EA[kt, s] = ta
-                    D[kt, s] = p
-                    ED[kt, s] = tp
+    ibi = span / bi
+    thr = 3.0 * (1.0 / ibi)
+    tnr = tn[si]
+    kl, kr = 0, n - 1
+    if far:
+        kl = si
+        while kl > 0 and tnr[kl - 1] < thr:
+            kl -= 1
+        kr = si
+        while kr < n - 1 and tnr[kr + 1] < thr:
+            kr += 1
+        K = Gt.shape[1]
+        lo, hi = 0, n - 1
+        for j in range(K):
+            if j > 0:
+                while lo < kl and tnr[lo] * ibi > taumax[j]:
+                    lo += 1
+                while hi > kr and tnr[hi] * ibi > taumax[j]:
+                    hi -= 1
+            bnd[0, j] = lo
+            bnd[1, j] = hi
+        bnd[0, K] = kl
+        bnd[1, K] = kr
+        g = Gt[si]
+        lrr = lr[si]
+        for k in range(kl):
+            W[0, k] = 0.0
+            W[1, k] = 0.0
+            W[2, k] = 0.0
+            W[3, k] = 0.0
+        for k in range(kr + 1, n):
+            W[0, k] = 0.0
+            W[1, k] = 0.0
+            W[2, k] = 0.0
+            W[3, k] = 0.0
+        # term j over the targets that take it: contiguous, vectorised loops
+        for j in range(K):
+            c0, c1, c2, c3 = Cs[j, 0], Cs[j, 1], Cs[j, 2], Cs[j, 3]
+            gj = g[j]
+            for side in range(2):
+                if side == 0:
+                    k0, k1 = bnd[0, j], kl
+                else:
+                    k0, k1 = kr + 1, bnd[1, j] + 1
+                for k in range(k0, k1):
+                    W[0, k] += gj[k] * c0
+                    W[1, k] += gj[k] * c1
+                    W[2, k] += gj[k] * c2
+                    W[3, k] += gj[k] * c3
+        for k in range(kl):
+            W[0, k] = lrr[k] + W[0, k]
+        for k in range(kr + 1, n):
+            W[0, k] = lrr[k] + W[0, k]
+    # the near band (every pair without the far field) at both edges, the diagonal at
+    # tau = w/2b
+    tfr = tf[si]
+    for k in range(kl, kr + 1):
+        if k == si:
+            ntau = 1
+            tau0 = (0.5 * span) * dg[si] / bi
+            tau1 = tau0
+        else:
+            ntau = 2
+            tau0 = tfr[k] * ibi
+            tau1 = tnr[k] * ibi
+        r = ta = p = tp = 0.0
+        for e in range(ntau):
+            tau = tau0 if e == 0 else tau1
+            if not (tmin <= tau < tmax):
+                return False
+            sg = 1.0 if e == 0 else -1.0
+            u = (np.log(tau) - z0) * ih
+            i = int(u)
+            if i > nseg - 1:
+                i = nseg - 1
+            t = (u - i) * h
+            r += sg * (((coef[3, 0, i] * t + coef[2, 0, i]) * t + coef[1, 0, i]) * t
+                       + coef[0, 0, i])
+            ta += sg * (((coef[3, 1, i] * t + coef[2, 1, i]) * t + coef[1, 1, i]) * t
+                        + coef[0, 1, i])
+            p += sg * (((coef[3, 2, i] * t + coef[2, 2, i]) * t + coef[1, 2, i]) * t
+                       + coef[0, 2, i])
+            tp += sg * (((coef[3, 3, i] * t + coef[2, 3, i]) * t + coef[1, 3, i]) * t
+                        + coef[0, 3, i])
+        if ntau == 1:
+            W[0, k] = 2.0 * (np.log(span * dg[si] / bi) + r)
+            W[1, k] = 2.0 * ta
+            W[2, k] = 2.0 * p - 4.0
+            W[3, k] = 2.0 * tp
+        else:
+            W[0, k] = lr[si, k] + r
+            W[1, k] = ta
+            W[2, k] = p
+            W[3, k] = tp
     return True
 
 
-_fill = _jit(_fill)
+_column = _jit(_column)
 
 
-def _linearised(S, T, pos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
-                tn, tf, lr, G, fc, far, tmin, tmax, coef, z0, ih, h,
+def _kernels(S, T, b, span, dg, tn, tf, lr, Gt, fc, far, taumax, tmin, tmax, coef, z0,
+             ih, h, A, EA, D, ED):
+    """A (and EA, D, ED where they are other arrays than A), (len(T), len(S)), Fortran
+    order: kernels(). False where a spline argument leaves the table."""
+    n = tn.shape[0]
+    ns, nt = S.shape[0], T.shape[0]
+    C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
+    W = np.empty((4, n))
+    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
+    full = EA.shape[0] > 0
+    for s in range(ns):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, Gt, far, taumax, tmin,
+                       tmax, coef, z0, ih, h, W, bnd):
+            return False
+        for kt in range(nt):
+            A[kt, s] = W[0, T[kt]]
+        if full:
+            for kt in range(nt):
+                k = T[kt]
+                EA[kt, s] = W[1, k]
+                D[kt, s] = W[2, k]
+                ED[kt, s] = W[3, k]
+    return True
+
+
+_kernels = _jit(_kernels)
+
+
+def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
+                tn, tf, lr, Gt, fc, far, taumax, tmin, tmax, coef, z0, ih, h,
                 res, J, rhs, gap, grid):
-    """res, J, rhs, gap and grid of SliceEquations.linearised, filled in place; pos[kt]
-    is the position of target T[kt] among S, or -1 (only A on those rows)."""
+    """res, J (Fortran order), rhs, gap and grid of SliceEquations.linearised, filled
+    in place, one source column at a time; spos[p] is the position of S[p] among the
+    targets T."""
+    n = tn.shape[0]
     ns = S.shape[0]
     nt = T.shape[0]
     qs = np.empty(ns)
@@ -175,45 +229,48 @@ def _linearised(S, T, pos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
         cs[s] = c[S[s]]
         bb[s] = qs[s] / cs[s]
         b[s] = np.sqrt(bb[s])
-    full = pos >= 0
-    A = np.empty((nt, ns))
-    EA = np.empty((nt, ns))
-    D = np.empty((nt, ns))
-    ED = np.empty((nt, ns))
-    if not _fill(S, T, full, b, span, dg, tn, tf, lr, G, fc, far, tmin, tmax, coef,
-                 z0, ih, h, A, EA, D, ED):
-        return False
-    for kt in range(nt):
-        k = T[kt]
-        p = pos[kt]
-        aq = 0.0
-        for s in range(ns):
-            aq += A[kt, s] * qs[s]
-        gap[kt] = over[k] - aq
-        if p < 0:
-            continue
-        dc = 0.0
-        eaq = 0.0
-        edc = 0.0
-        for s in range(ns):
-            ea = EA[kt, s]
-            ed = ED[kt, s]
-            d = D[kt, s]
-            dc += d * cs[s]
-            eaq += ea * qs[s]
-            edc += ed * cs[s]
-            J[p, s] = A[kt, s] + (-0.5) * ea
-            J[p, ns + s] = ea * (0.5 * bb[s])
-            J[ns + p, s] = ed * (-0.5 / bb[s])
+    C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
+    W = np.empty((4, n))
+    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
+    aq = np.zeros(nt)
+    dc = np.zeros(ns)
+    eaq = np.zeros(ns)
+    edc = np.zeros(ns)
+    for s in range(ns):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, Gt, far, taumax, tmin,
+                       tmax, coef, z0, ih, h, W, bnd):
+            return False
+        qv = qs[s]
+        cv = cs[s]
+        hb = 0.5 * bb[s]
+        mhb = -0.5 / bb[s]
+        for kt in range(nt):
+            aq[kt] += W[0, T[kt]] * qv
+        for p in range(ns):
+            k = S[p]
+            a = W[0, k]
+            ea = W[1, k]
+            d = W[2, k]
+            ed = W[3, k]
+            J[p, s] = a + (-0.5) * ea
+            J[ns + p, s] = ed * mhb
+            J[p, ns + s] = ea * hb
             J[ns + p, ns + s] = ed * 0.5 + d
-        res[p] = -gap[kt]
-        res[ns + p] = dc + 1.0 / R
+            dc[p] += d * cv
+            eaq[p] += ea * qv
+            edc[p] += ed * cv
+    for kt in range(nt):
+        gap[kt] = over[T[kt]] - aq[kt]
+    for p in range(ns):
+        k = S[p]
+        res[p] = -gap[spos[p]]
+        res[ns + p] = dc[p] + 1.0 / R
         # -dR/d(d, theta) with the grid's motion (as the numpy code)
         ts = theta - slope[k]
         for g in range(2):
             rhs[p, g] = (m[k] * (dhi[g] - dlo[g]) + dlo[g]) * ts
-            rhs[p, g] -= eaq * ((dhi[g] - dlo[g]) / span)
-            rhs[ns + p, g] = edc * (-((dhi[g] - dlo[g]) / span))
+            rhs[p, g] -= eaq[p] * ((dhi[g] - dlo[g]) / span)
+            rhs[ns + p, g] = edc[p] * (-((dhi[g] - dlo[g]) / span))
         rhs[p, 0] += 1.0
         rhs[p, 1] += x[k]
     # d(w.q, (w x).q)/d(d, theta) at fixed q
@@ -253,35 +310,56 @@ def table():
 
 
 _NO_G = np.zeros((1, 1, 1))
+_T = {}
+
+
+def _transposed(tn, tf, lr, G, fc):
+    """The unit geometry as [source, target] (each source's column contiguous): tn, tf,
+    lr, and G as (source, power, target); taumax[j] = FAR_STOP^(-1/(2(j+1))): term j of
+    the series counts only where the near edge's t/b is at most taumax[j]. Kept for the
+    last few geometries (the numpy code's caches hold the originals)."""
+    got = _T.get(id(tn))
+    if got is None or got[0] is not tn or got[1] is not G:
+        if len(_T) >= 8:
+            _T.clear()
+        K = fc.shape[0]
+        taumax = FAR_STOP ** (-1.0 / (2.0 * np.arange(1, K + 1)))
+        Gt = _NO_G if G is None else np.ascontiguousarray(G.transpose(0, 2, 1))
+        got = (tn, G, np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T),
+               np.ascontiguousarray(lr.T), Gt, taumax)
+        _T[id(tn)] = got
+    return got[2:]
 
 
 def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
     """A, D, EA, ED (the others None with a_only) for targets T and sources S, or
     None where a spline argument leaves the table. G None: every pair from the table."""
     nt, ns = len(T), len(S)
-    A = np.empty((nt, ns))
-    EA, D, ED = (A, A, A) if a_only else (np.empty((nt, ns)) for _ in range(3))
-    far = G is not None
-    full = np.full(nt, not a_only)
-    if not _fill(S, T, full, b, span, dg, tn, tf, lr, G if far else _NO_G, fc, far,
-                 *table(), A, EA, D, ED):
+    A = np.empty((nt, ns), order="F")
+    if a_only:
+        EA = D = ED = np.empty((0, 0), order="F")
+    else:
+        EA, D, ED = (np.empty((nt, ns), order="F") for _ in range(3))
+    tn, tf, lr, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    if not _kernels(S, T, b, span, dg, tn, tf, lr, Gt, fc, G is not None, taumax,
+                    *table(), A, EA, D, ED):
         return None
     return (A, None, None, None) if a_only else (A, D, EA, ED)
 
 
-def linearised(S, T, pos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
+def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
                tn, tf, lr, G, fc):
-    """(res, J, rhs, gap, grid) of SliceEquations.linearised, or None where a spline
-    argument leaves the table."""
+    """(res, J, rhs, gap, grid) of SliceEquations.linearised (J in Fortran order), or
+    None where a spline argument leaves the table."""
     ns, nt = len(S), len(T)
     res = np.empty(2 * ns)
-    J = np.empty((2 * ns, 2 * ns))
+    J = np.empty((2 * ns, 2 * ns), order="F")
     rhs = np.empty((2 * ns, 2))
     gap = np.empty(nt)
     grid = np.empty((2, 2))
-    far = G is not None
-    if not _linearised(S, T, pos, q, c, over, R, span, x, m, dg, slope, float(theta),
+    tn, tf, lr, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    if not _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, float(theta),
                        np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr,
-                       G if far else _NO_G, fc, far, *table(), res, J, rhs, gap, grid):
+                       Gt, fc, G is not None, taumax, *table(), res, J, rhs, gap, grid):
         return None
     return res, J, rhs, gap, grid

@@ -611,15 +611,10 @@ class SliceEquations:
         derivative (:meth:`sensitivities`).
         """
         if self.engine == "numba":
-            if len(targets) == self.n:
-                pos = np.full(self.n, -1)
-                pos[S] = np.arange(len(S))
-            else:
-                pos = np.full(len(targets), -1)
-                pos[np.searchsorted(targets, S)] = np.arange(len(S))
+            spos = S if len(targets) == self.n else np.searchsorted(targets, S)
             far = self.n <= _N_FAR
             out = compiled().linearised(
-                S, targets, pos, q, c, self._over, self.R, self.span, self.x, self.m,
+                S, targets, spos, q, c, self._over, self.R, self.span, self.x, self.m,
                 self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
                 self._logratio, _far_geometry(*self._geometry) if far else None,
                 _FAR_COEF)

@@ -108,30 +108,26 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, Gt, far, taumax, tmin, tmax, co
         bnd[1, K] = kr
         g = Gt[si]
         lrr = lr[si]
-        for k in range(kl):
-            W[0, k] = 0.0
-            W[1, k] = 0.0
-            W[2, k] = 0.0
-            W[3, k] = 0.0
-        for k in range(kr + 1, n):
-            W[0, k] = 0.0
-            W[1, k] = 0.0
-            W[2, k] = 0.0
-            W[3, k] = 0.0
-        # term j over the targets that take it: contiguous, vectorised loops
+        W[:, :kl] = 0.0
+        W[:, kr + 1:] = 0.0
+        # term j over the targets that take it: contiguous loops over 1D views (which
+        # numba vectorises; indexing W[f, k] in the loop it does not)
         for j in range(K):
             c0, c1, c2, c3 = Cs[j, 0], Cs[j, 1], Cs[j, 2], Cs[j, 3]
-            gj = g[j]
             for side in range(2):
                 if side == 0:
                     k0, k1 = bnd[0, j], kl
                 else:
                     k0, k1 = kr + 1, bnd[1, j] + 1
-                for k in range(k0, k1):
-                    W[0, k] += gj[k] * c0
-                    W[1, k] += gj[k] * c1
-                    W[2, k] += gj[k] * c2
-                    W[3, k] += gj[k] * c3
+                if k1 <= k0:
+                    continue
+                gj = g[j, k0:k1]
+                w0, w1, w2, w3 = W[0, k0:k1], W[1, k0:k1], W[2, k0:k1], W[3, k0:k1]
+                for k in range(gj.shape[0]):
+                    w0[k] += gj[k] * c0
+                    w1[k] += gj[k] * c1
+                    w2[k] += gj[k] * c2
+                    w3[k] += gj[k] * c3
         for k in range(kl):
             W[0, k] = lrr[k] + W[0, k]
         for k in range(kr + 1, n):
@@ -236,6 +232,7 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
     dc = np.zeros(ns)
     eaq = np.zeros(ns)
     edc = np.zeros(ns)
+    contiguous = S[ns - 1] - S[0] + 1 == ns
     for s in range(ns):
         if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, Gt, far, taumax, tmin,
                        tmax, coef, z0, ih, h, W, bnd):
@@ -244,8 +241,31 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
         cv = cs[s]
         hb = 0.5 * bb[s]
         mhb = -0.5 / bb[s]
-        for kt in range(nt):
-            aq[kt] += W[0, T[kt]] * qv
+        if nt == n:                                  # every slice a target: T[k] = k
+            w0 = W[0]
+            for k in range(n):
+                aq[k] += w0[k] * qv
+        else:
+            for kt in range(nt):
+                aq[kt] += W[0, T[kt]] * qv
+        if contiguous:
+            # the rows of S are one run of targets: contiguous views (vectorised)
+            wa, wea = W[0, S[0]:S[0] + ns], W[1, S[0]:S[0] + ns]
+            wd, wed = W[2, S[0]:S[0] + ns], W[3, S[0]:S[0] + ns]
+            j00, j10 = J[:ns, s], J[ns:, s]
+            j01, j11 = J[:ns, ns + s], J[ns:, ns + s]
+            for p in range(ns):
+                ea = wea[p]
+                ed = wed[p]
+                d = wd[p]
+                j00[p] = wa[p] + (-0.5) * ea
+                j10[p] = ed * mhb
+                j01[p] = ea * hb
+                j11[p] = ed * 0.5 + d
+                dc[p] += d * cv
+                eaq[p] += ea * qv
+                edc[p] += ed * cv
+            continue
         for p in range(ns):
             k = S[p]
             a = W[0, k]

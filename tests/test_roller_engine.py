@@ -197,3 +197,53 @@ def test_a_single_solve_does_not_import_numba():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout
     assert out.strip() == "False"
+
+
+def _twice(x):
+    return 2.0 * x
+
+
+def test_jit_falls_back_to_no_cache(monkeypatch):
+    """Where numba finds no writable cache directory (every cache location refusing,
+    as in a read-only install and home) the kernels' decorator compiles without a
+    cache instead of failing, and warns (once per process)."""
+    pytest.importorskip("numba")
+    import numba.core.caching as caching
+
+    from linecontact.roller import _compiled
+
+    def refuse(self):
+        raise OSError("read-only")
+
+    monkeypatch.setattr(caching._CacheLocator, "ensure_cache_path", refuse)
+    monkeypatch.setattr(_compiled, "_UNCACHED", [])
+    with pytest.warns(RuntimeWarning, match="cannot be cached"):
+        f = _compiled._jit(_twice)
+    assert f(3.0) == 6.0
+    assert _compiled._UNCACHED == ["_twice"]
+
+
+@pytest.mark.slow
+def test_compiled_engine_without_a_writable_cache():
+    """Where numba finds no writable cache directory (a read-only install and home:
+    simulated by making every cache location refuse), the compiled engine still
+    works: it compiles in the process (about 5 s, hence slow), says so once with a
+    RuntimeWarning, and solves as the numpy engine does (1e-10)."""
+    pytest.importorskip("numba")
+    code = (
+        "import warnings\n"
+        "import numba.core.caching as c\n"
+        "def refuse(self):\n"
+        "    raise OSError('read-only')\n"
+        "c._CacheLocator.ensure_cache_path = refuse\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    from linecontact.roller import ProfiledRoller\n"
+        "    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
+        " engine=e).at_force(500.0, tilt=1e-3) for e in ('numpy', 'numba'))\n"
+        "print(sum('cannot be cached' in str(x.message) for x in w))\n"
+        "print(abs(a.depth / b.depth - 1) < 1e-10, abs(a.p_max / b.p_max - 1) < 1e-10)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "1", f"{out[0]} warnings that the compiled code is not cached"
+    assert out[1:] == ["True", "True"], out

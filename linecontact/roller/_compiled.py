@@ -39,16 +39,22 @@ __all__ = []
 FAR_STOP = 1e-18
 
 
+_UNCACHED = []
+
+
 def _jit(fn):
-    """njit with an on-disk cache; without one where numba finds no writable place
-    (a read-only install and cache directory): then every process compiles again
-    (seconds), said once by a warning."""
+    """njit with an on-disk cache (next to this file, else numba's user-wide cache
+    directory); without one where numba finds no writable place (a read-only install
+    and home): then every process compiles again (seconds), said once by a warning."""
     try:
         return numba.njit(cache=True, nogil=True)(fn)
     except RuntimeError as err:              # numba: "no locator available"
-        warnings.warn(f"linecontact: the compiled roller kernels cannot be cached ({err}); "
-                      "each process compiles them again (set NUMBA_CACHE_DIR to a "
-                      "writable directory)", RuntimeWarning, stacklevel=2)
+        if not _UNCACHED:
+            warnings.warn(f"linecontact: the compiled roller kernels cannot be cached "
+                          f"({err}); each process compiles them again, a few seconds "
+                          "(set NUMBA_CACHE_DIR to a writable directory)", RuntimeWarning,
+                          stacklevel=2)
+        _UNCACHED.append(fn.__name__)
         return numba.njit(cache=False, nogil=True)(fn)
 
 

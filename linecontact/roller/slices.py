@@ -146,9 +146,12 @@ def _far_geometry(n, grading, refine=0):
 ENGINES = ("auto", "numpy", "numba")
 #: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
 #: takes before it switches to the compiled engine, where numba is installed: about
-#: 0.6 s of numpy work at 100 slices, what importing numba and loading its cached
-#: code cost once (docs/profiled_rollers.md, "Engines")
-AUTO_SWITCH_STEPS = 500
+#: 150 solves at 100 slices, after which numpy has cost as much more than numba would
+#: have (about 2.5 ms a solve) as switching costs once (importing numba and loading
+#: its cached code, about 0.4 s): the break-even rule of renting against buying,
+#: never worse than twice the best choice in hindsight (docs/profiled_rollers.md,
+#: "Engines")
+AUTO_SWITCH_STEPS = 1500
 _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
 

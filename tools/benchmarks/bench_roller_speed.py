@@ -32,7 +32,8 @@ only for versions that have that option). ``--engine E`` passes ``engine=E`` to
 without engines; with ``--against`` only this checkout gets it: the other runs its
 own default). ``--kernels`` instead prints what the compiled engine costs
 (importing numba, loading its cached code, compiling it, each in a fresh process) and
-the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine.
+the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
+and whole solves with the two engines alternating in one process.
 """
 from __future__ import annotations
 
@@ -138,9 +139,10 @@ def main(argv=None):
 
 def _kernel_costs(a):
     """--kernels: what the compiled engine costs and saves, each in a fresh process
-    (importing numba, loading its cached code, compiling without a cache) and per call
+    (importing numba, loading its cached code, compiling without a cache), per call
     (SliceEquations.kernels and .linearised, numpy against numba, on the slice grid of
-    the converged 2 mrad solve: CPU medians of --repeat x 20 calls)."""
+    the converged 2 mrad solve: CPU medians of --repeat x 20 calls) and per solve
+    (--repeat pairs, the engines alternating)."""
     import json
     import tempfile
 
@@ -205,6 +207,22 @@ def _kernel_costs(a):
         tn, tb = times[(name, "numpy")], times[(name, "numba")]
         print(f"  {name}: numpy {tn * 1e6:.0f} us, numba {tb * 1e6:.0f} us, "
               f"ratio numba/numpy {tb / tn:.3f}")
+    # whole solves, the engines alternating in this one process (A B B A ...), so that
+    # the machine's drift between processes does not enter the ratio
+    for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
+        ts = {"numpy": [], "numba": []}
+        for i in range(a.repeat):
+            for engine in (("numpy", "numba") if i % 2 == 0 else ("numba", "numpy")):
+                c0 = time.process_time()
+                ProfiledRoller(D / 2, L, ESTAR, prof, n_slices=a.n_slices,
+                               engine=engine).at_force(FORCE, tilt=tilt)
+                ts[engine].append(time.process_time() - c0)
+        ratios = [b / n for b, n in zip(ts["numba"], ts["numpy"])]
+        print(f"one solve, {label}, engines alternating in one process ({a.repeat} "
+              f"pairs): CPU median numpy {statistics.median(ts['numpy']) * 1e3:.2f} ms, "
+              f"numba {statistics.median(ts['numba']) * 1e3:.2f} ms; ratio numba/numpy "
+              f"median of pairs {statistics.median(ratios):.3f} (quartiles "
+              f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f})")
     return 0
 
 

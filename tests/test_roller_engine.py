@@ -131,8 +131,8 @@ def test_whole_solves_agree_between_engines(case):
     rounding only, so both reach the same converged state)."""
     pytest.importorskip("numba")
     profile, force, tilt = case
-    sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(force, tilt=tilt)
-            for e in ("numpy", "numba")]
+    sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(
+        force, tilt=tilt) for e in ("numpy", "numba")]
     a, b = sols
     assert a.depth == pytest.approx(b.depth, rel=1e-10)
     assert a.p_max == pytest.approx(b.p_max, rel=1e-10)

@@ -1,19 +1,21 @@
 """Compiled loops of the coupled-slice equations (numba, optional; ``engine="numba"``).
 
 :meth:`SliceEquations.kernels <linecontact.roller.slices.SliceEquations.kernels>` and
-:meth:`~linecontact.roller.slices.SliceEquations.linearised` as one pass over the
-(target, source) pairs each, with the arithmetic of the numpy code in
+:meth:`~linecontact.roller.slices.SliceEquations.linearised` as loops over the source
+slices, each source's column of all four kernels at once, with the arithmetic of the
+numpy code in
 :mod:`linecontact.roller.slices`, which stays the reference and the fallback: the same
 cached unit geometry (near and far edge distances, their log ratio, the far-field
 power differences G), the same series coefficients
 (:func:`~linecontact.roller.kernel.far_field_coefficients`) and the same cubic spline
 (:func:`~linecontact.roller.kernel.spline_table`), the same split into far field,
-near band and diagonal. Two differences, both below 1e-15 of each matrix's scale:
-sums run in another order, and the far-field sum of a pair stops once the next
-power of (b/t)^2 at its near edge is below 1e-18 (the numpy code always takes all
-14 terms; at t/b = 3 it needs them, from t/b = 30 four do). Rows that are only
-targets (not loaded) get A alone, and the Jacobian, residual and grid terms are
-assembled in the same pass, without the four intermediate matrices.
+near band and diagonal. Three differences, all below 1e-15 of each matrix's scale:
+sums run in another order, the far-field sum of a pair stops once the next power of
+(b/t)^2 at its near edge is below 1e-18 (the numpy code always takes all 14 terms; at
+t/b = 3 they are needed, from t/b = 32 six and from 180 four suffice), and the
+spline's ln(t/b) is ln t + ln(span/b) with ln t cached (one log per source, not two
+per pair). The Jacobian, residual and grid terms are assembled from each source's
+column as it is computed, without the four intermediate matrices.
 
 A spline argument outside the table (tau < 1e-4 or >= 1e4, which the numpy code
 evaluates by series or quadrature) makes a function return False: the caller then
@@ -34,8 +36,8 @@ from .kernel import spline_table
 
 __all__ = []
 
-#: the far-field sum of a pair stops after the term j at which x^(j + 1) < FAR_STOP,
-#: x = (b/t)^2 at the near edge (every coefficient is below 1.3 in magnitude)
+#: the far-field sum of a pair takes term j (x^(j + 1) times a coefficient below 1.3 in
+#: magnitude, x = (b/t)^2 at the near edge) where x^(j + 1) >= FAR_STOP, term 0 always
 FAR_STOP = 1e-18
 
 
@@ -76,11 +78,12 @@ def _far_powers(b, span, fc):
 _far_powers = _jit(_far_powers)
 
 
-def _column(si, bi, Cs, n, span, dg, tn, tf, lr, Gt, far, taumax, tmin, tmax, coef, z0,
-            ih, h, W, bnd):
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, far, taumax, tmin, tmax,
+            coef, z0, ih, h, W, bnd):
     """The four kernels of source slice si (strip half-width bi, far-field series
-    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED. tn, tf, lr
-    and Gt are indexed [source, target] (transposed). Returns False where a spline
+    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED. tn, tf, lr,
+    their logs ltn, ltf and Gt are indexed [source, target] (transposed); the spline's
+    ln(t/b) is ln t + ln(span/b), one log per source. Returns False where a spline
     argument leaves the table [tmin, tmax).
 
     The near band, {k : tn[si, k] < 3 b/span} (the numpy code's test), is an interval
@@ -141,22 +144,29 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, Gt, far, taumax, tmin, tmax, co
     # the near band (every pair without the far field) at both edges, the diagonal at
     # tau = w/2b
     tfr = tf[si]
+    ltnr = ltn[si]
+    ltfr = ltf[si]
+    lib = np.log(ibi)
     for k in range(kl, kr + 1):
         if k == si:
             ntau = 1
             tau0 = (0.5 * span) * dg[si] / bi
             tau1 = tau0
+            z0k = np.log(tau0)
+            z1k = z0k
         else:
             ntau = 2
             tau0 = tfr[k] * ibi
             tau1 = tnr[k] * ibi
+            z0k = ltfr[k] + lib
+            z1k = ltnr[k] + lib
         r = ta = p = tp = 0.0
         for e in range(ntau):
             tau = tau0 if e == 0 else tau1
             if not (tmin <= tau < tmax):
                 return False
             sg = 1.0 if e == 0 else -1.0
-            u = (np.log(tau) - z0) * ih
+            u = ((z0k if e == 0 else z1k) - z0) * ih
             i = int(u)
             if i > nseg - 1:
                 i = nseg - 1
@@ -185,8 +195,8 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, Gt, far, taumax, tmin, tmax, co
 _column = _jit(_column)
 
 
-def _kernels(S, T, b, span, dg, tn, tf, lr, Gt, fc, far, taumax, tmin, tmax, coef, z0,
-             ih, h, A, EA, D, ED):
+def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax,
+             coef, z0, ih, h, A, EA, D, ED):
     """A (and EA, D, ED where they are other arrays than A), (len(T), len(S)), Fortran
     order: kernels(). False where a spline argument leaves the table."""
     n = tn.shape[0]
@@ -196,8 +206,8 @@ def _kernels(S, T, b, span, dg, tn, tf, lr, Gt, fc, far, taumax, tmin, tmax, coe
     bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
     full = EA.shape[0] > 0
     for s in range(ns):
-        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, Gt, far, taumax, tmin,
-                       tmax, coef, z0, ih, h, W, bnd):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, far,
+                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         for kt in range(nt):
             A[kt, s] = W[0, T[kt]]
@@ -214,7 +224,7 @@ _kernels = _jit(_kernels)
 
 
 def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
-                tn, tf, lr, Gt, fc, far, taumax, tmin, tmax, coef, z0, ih, h,
+                tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax, coef, z0, ih, h,
                 res, J, rhs, gap, grid):
     """res, J (Fortran order), rhs, gap and grid of SliceEquations.linearised, filled
     in place, one source column at a time; spos[p] is the position of S[p] among the
@@ -240,8 +250,8 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
     edc = np.zeros(ns)
     contiguous = S[ns - 1] - S[0] + 1 == ns
     for s in range(ns):
-        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, Gt, far, taumax, tmin,
-                       tmax, coef, z0, ih, h, W, bnd):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, far,
+                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         qv = qs[s]
         cv = cs[s]
@@ -340,10 +350,11 @@ _T = {}
 
 
 def _transposed(tn, tf, lr, G, fc):
-    """The unit geometry as [source, target] (each source's column contiguous): tn, tf,
-    lr, and G as (source, power, target); taumax[j] = FAR_STOP^(-1/(2(j+1))): term j of
-    the series counts only where the near edge's t/b is at most taumax[j]. Kept for the
-    last few geometries (the numpy code's caches hold the originals)."""
+    """The unit geometry as [source, target] (each source's column contiguous): tn,
+    tf, lr, ln tn, ln tf, and G as (source, power, target); taumax[j] =
+    FAR_STOP^(-1/(2(j+1))): term j of the series counts only where the near edge's t/b
+    is at most taumax[j]. Kept for the last few geometries (the numpy code's caches
+    hold the originals)."""
     got = _T.get(id(tn))
     if got is None or got[0] is not tn or got[1] is not G:
         if len(_T) >= 8:
@@ -351,8 +362,9 @@ def _transposed(tn, tf, lr, G, fc):
         K = fc.shape[0]
         taumax = FAR_STOP ** (-1.0 / (2.0 * np.arange(1, K + 1)))
         Gt = _NO_G if G is None else np.ascontiguousarray(G.transpose(0, 2, 1))
-        got = (tn, G, np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T),
-               np.ascontiguousarray(lr.T), Gt, taumax)
+        tnt, tft = np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T)
+        got = (tn, G, tnt, tft, np.ascontiguousarray(lr.T), np.log(tnt), np.log(tft), Gt,
+               taumax)
         _T[id(tn)] = got
     return got[2:]
 
@@ -366,9 +378,9 @@ def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
         EA = D = ED = np.empty((0, 0), order="F")
     else:
         EA, D, ED = (np.empty((nt, ns), order="F") for _ in range(3))
-    tn, tf, lr, Gt, taumax = _transposed(tn, tf, lr, G, fc)
-    if not _kernels(S, T, b, span, dg, tn, tf, lr, Gt, fc, G is not None, taumax,
-                    *table(), A, EA, D, ED):
+    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    if not _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, G is not None,
+                    taumax, *table(), A, EA, D, ED):
         return None
     return (A, None, None, None) if a_only else (A, D, EA, ED)
 
@@ -383,9 +395,10 @@ def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
     rhs = np.empty((2 * ns, 2))
     gap = np.empty(nt)
     grid = np.empty((2, 2))
-    tn, tf, lr, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
     if not _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, float(theta),
-                       np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr,
-                       Gt, fc, G is not None, taumax, *table(), res, J, rhs, gap, grid):
+                       np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr, ltn,
+                       ltf, Gt, fc, G is not None, taumax, *table(), res, J, rhs, gap,
+                       grid):
         return None
     return res, J, rhs, gap, grid

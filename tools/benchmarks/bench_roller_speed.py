@@ -162,7 +162,8 @@ def _kernel_costs(a):
         "c0 = time.process_time()\n"
         "ProfiledRoller(%r, %r, %r, prof, engine='numba').at_force(%r, tilt=%r)\n"
         "t['first numba solve'] = time.process_time() - c0\n"
-        "print(json.dumps(t))\n") % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 2)
+        "print(json.dumps(t))\n"
+    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 2)
     env = dict(os.environ)
     with tempfile.TemporaryDirectory() as cache:
         for label, extra in (("no cache (compiles)", {"NUMBA_CACHE_DIR": cache}),
@@ -175,8 +176,9 @@ def _kernel_costs(a):
                 if label.startswith("no cache"):
                     break
             med = {k: statistics.median(r[k] for r in rows) for k in rows[0]}
-            print(f"fresh process, {label}: " + ", ".join(
-                f"{k} {v * 1e3:.0f} ms" for k, v in med.items()) + f" (median of {len(rows)})")
+            print(f"fresh process, {label}: "
+                  + ", ".join(f"{k} {v * 1e3:.0f} ms" for k, v in med.items())
+                  + f" (median of {len(rows)})")
 
     from linecontact.roller import ProfiledRoller
     from tools.studies import roller_study as rs

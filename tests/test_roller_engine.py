@@ -186,6 +186,37 @@ def test_auto_switches_after_the_numpy_steps():
         sl._NUMPY_STEPS[0] = kept
 
 
+def test_auto_stays_numpy_where_numba_does_not_import():
+    """engine='auto' with a numba that is installed but does not import (say, built for
+    another numpy): past the switching point it warns once and keeps solving with
+    numpy; engine='numba' is refused at construction, naming the parameter."""
+    code = (
+        "import sys, warnings, importlib.util\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "from linecontact import OutOfRangeError\n"
+        "class Broken:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name == 'numba':\n"
+        "            raise ImportError('numba built for another numpy')\n"
+        "sys.modules.pop('numba', None)\n"
+        "sys.meta_path.insert(0, Broken())\n"
+        "slices._HAVE_NUMBA[:] = [True]\n"
+        "slices._NUMPY_STEPS[0] = slices.AUTO_SWITCH_STEPS\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    s = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20)"
+        ".at_force(500.0)\n"
+        "print(sum('do not import' in str(x.message) for x in w))\n"
+        "try:\n"
+        "    ProfiledRoller(5e-3, 14e-3, 1e11, engine='numba')\n"
+        "except OutOfRangeError as err:\n"
+        "    print('refused:', err)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout
+    assert out.splitlines()[0] == "1", out
+    assert "refused: engine" in out and "does not import" in out, out
+
+
 def test_a_single_solve_does_not_import_numba():
     """Cold start: one profiled-roller solve with the default engine ('auto') in a
     fresh interpreter never imports numba (its import and code loading cost about

@@ -154,6 +154,7 @@ ENGINES = ("auto", "numpy", "numba")
 AUTO_SWITCH_STEPS = 1500
 _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
+_IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
 
 
 def numba_installed():
@@ -165,24 +166,46 @@ def numba_installed():
 
 
 def check_engine(engine):
-    """`engine` checked: one of ENGINES, and "numba" only where numba is installed."""
+    """`engine` checked: one of ENGINES, and "numba" only where numba is installed and
+    the compiled kernels import (then imported here, at the roller's construction)."""
     from ..validity import OutOfRangeError, UnknownNameError
     if not isinstance(engine, str) or engine not in ENGINES:
         raise UnknownNameError("engine", engine, ENGINES)
-    if engine == "numba" and not numba_installed():
-        raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
-                              "installed)", hint="install numba (pip install numba, or "
-                              "linecontact[fast]) or use engine='auto'")
+    if engine == "numba":
+        if not numba_installed():
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
+                                  "installed)", hint="install numba (pip install numba, "
+                                  "or linecontact[fast]) or use engine='auto'")
+        try:
+            if _IMPORT_ERROR:
+                raise ImportError(_IMPORT_ERROR[0])
+            compiled()
+        except Exception as err:     # e.g. a numba built for another numpy
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba does "
+                                  f"not import here: {err})") from err
     return engine
 
 
 def resolve_engine(engine):
     """"numpy" or "numba" for a new SliceEquations: "auto" is numpy until this process
-    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed (a
-    single solve never imports numba; a sweep, a batch or a bearing repays it)."""
+    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed and
+    imports (a single solve never imports numba; a sweep, a batch or a bearing repays
+    it); where the import fails, numpy for the rest of the process, said once by a
+    RuntimeWarning."""
     if engine == "auto":
-        return ("numba" if _NUMPY_STEPS[0] >= AUTO_SWITCH_STEPS and numba_installed()
-                else "numpy")
+        if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
+                or _IMPORT_ERROR):
+            return "numpy"
+        try:
+            compiled()
+        except Exception as err:
+            import warnings
+            _IMPORT_ERROR.append(str(err))
+            warnings.warn(f"linecontact: the compiled roller kernels do not import "
+                          f"({err}); engine='auto' stays with numpy", RuntimeWarning,
+                          stacklevel=2)
+            return "numpy"
+        return "numba"
     return engine
 
 

@@ -141,6 +141,81 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
+#: the engines that evaluate the slice equations: ProfiledRoller(engine=...) takes
+#: one of these; SliceEquations.engine is "numpy" or "numba" (resolve_engine)
+ENGINES = ("auto", "numpy", "numba")
+#: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
+#: takes before it switches to the compiled engine, where numba is installed: about
+#: 150 solves at 100 slices, after which numpy has cost as much more than numba would
+#: have (about 2.5 ms a solve) as switching costs once (importing numba and loading
+#: its cached code, about 0.4 s): the break-even rule of renting against buying,
+#: never worse than twice the best choice in hindsight (docs/profiled_rollers.md,
+#: "Engines")
+AUTO_SWITCH_STEPS = 1500
+_NUMPY_STEPS = [0]
+_HAVE_NUMBA = []
+_IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
+
+
+def numba_installed():
+    """Whether numba can be imported (looked up once, without importing it)."""
+    if not _HAVE_NUMBA:
+        import importlib.util
+        _HAVE_NUMBA.append(importlib.util.find_spec("numba") is not None)
+    return _HAVE_NUMBA[0]
+
+
+def check_engine(engine):
+    """`engine` checked: one of ENGINES, and "numba" only where numba is installed and
+    the compiled kernels import (then imported here, at the roller's construction)."""
+    from ..validity import OutOfRangeError, UnknownNameError
+    if not isinstance(engine, str) or engine not in ENGINES:
+        raise UnknownNameError("engine", engine, ENGINES)
+    if engine == "numba":
+        if not numba_installed():
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
+                                  "installed)", hint="install numba (pip install numba, "
+                                  "or linecontact[fast]) or use engine='auto'")
+        try:
+            if _IMPORT_ERROR:
+                raise ImportError(_IMPORT_ERROR[0])
+            compiled()
+        except Exception as err:     # e.g. a numba built for another numpy
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba does "
+                                  f"not import here: {err})") from err
+    return engine
+
+
+def resolve_engine(engine):
+    """"numpy" or "numba" for a new SliceEquations: "auto" is numpy until this process
+    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed and
+    imports (a single solve never imports numba; a sweep, a batch or a bearing repays
+    it); where the import fails, numpy for the rest of the process, said once by a
+    RuntimeWarning."""
+    if engine == "auto":
+        if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
+                or _IMPORT_ERROR):
+            return "numpy"
+        try:
+            compiled()
+        except Exception as err:
+            import warnings
+            _IMPORT_ERROR.append(str(err))
+            warnings.warn(f"linecontact: the compiled roller kernels do not import "
+                          f"({err}); engine='auto' stays with numpy", RuntimeWarning,
+                          stacklevel=2)
+            return "numpy"
+        return "numba"
+    return engine
+
+
+def compiled():
+    """The compiled kernels (:mod:`linecontact.roller._compiled`), imported on first
+    use: importing numba costs a few hundred ms, which only repeated solves repay."""
+    from . import _compiled
+    return _compiled
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -225,8 +300,12 @@ class SliceEquations:
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0,
+                 engine="numpy"):
         self.R = radius
+        # "numpy" or "numba" (resolved by the owner, ProfiledRoller): who evaluates
+        # kernels() and linearised(); the numpy code is the reference and the fallback
+        self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
@@ -265,6 +344,16 @@ class SliceEquations:
         With `a_only`, A alone (the others None).
         """
         T = S if targets is None else targets
+        if self.engine == "numba":
+            jit = compiled()
+            far = self.n <= _N_FAR
+            out = jit.kernels(S, T, b, self.span, self.dg, self._tnear, self._tfar,
+                              self._logratio,
+                              _far_geometry(*self._geometry) if far else None,
+                              _FAR_COEF, a_only)
+            if out is not None:
+                return out
+        _NUMPY_STEPS[0] += 1
         if self.n > _N_FAR:
             out = self._kernels_table(S, b, T)
             return (out[0], None, None, None) if a_only else out
@@ -592,6 +681,16 @@ class SliceEquations:
         slice loads together with d and theta needs, and at convergence the implicit
         derivative (:meth:`sensitivities`).
         """
+        if self.engine == "numba":
+            spos = S if len(targets) == self.n else np.searchsorted(targets, S)
+            far = self.n <= _N_FAR
+            out = compiled().linearised(
+                S, targets, spos, q, c, self._over, self.R, self.span, self.x, self.m,
+                self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
+                self._logratio, _far_geometry(*self._geometry) if far else None,
+                _FAR_COEF)
+            if out is not None:
+                return out
         R = self.R
         qs, cs = q[S], c[S]
         bb = qs / cs

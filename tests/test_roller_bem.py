@@ -377,3 +377,36 @@ def test_study_command_writes_its_table_and_no_figure_with_an_empty_name(tmp_pat
         ["roller_accuracy.csv"]
     meta = read_table("roller_accuracy", directory=out).meta
     assert meta["wall_time"].split(" with ")[0].endswith("s for 28 cases")
+
+
+def test_bem_columns_reused_from_the_shipped_table_round_trip():
+    """`build_tables roller --bem-from tables/roller_accuracy.csv` re-runs only the
+    runtime and ISO slicing against the BEM columns of the shipped table: read back
+    (bem_from_table, the inverse of tabulate's bem_* columns) and written again, those
+    columns are the table's to rounding (1e-12), on one case of each kind (given tilt,
+    untilted, free tilt, an end-zone row on 8192 cells)."""
+    from linecontact.tables import read_table
+    import tools.studies.roller_study as rs
+    t = read_table("roller_accuracy")
+    c = t.columns
+    tasks = rs.study_tasks()
+    refs = rs.bem_from_table(tasks, t, 128, 32, 1e-7)
+    free = [i for i, k in enumerate(tasks) if k["tilt"] is None]
+    end = [i for i, r in enumerate(refs) if r["nx"] == rs.END_GRIDS[1][0]]
+    pick = [1, 4, free[0], end[0]]
+    results = [rs.compare_case(tasks[i], refs[i]) for i in pick]
+    col = rs.tabulate([tasks[i] for i in pick], results)
+    rows = [int(np.flatnonzero((c["roller_length"] == tasks[i]["length"])
+                               & (c["profile"] == rs.CODES[tasks[i]["profile"]])
+                               & (c["force"] == tasks[i]["force"])
+                               & (c["free_tilt"] == float(tasks[i]["tilt"] is None))
+                               & ((c["tilt"] == (tasks[i]["tilt"] or 0.0))
+                                  | (c["free_tilt"] > 0)))[0]) for i in pick]
+    for k in col:
+        if k.startswith("bem_"):
+            np.testing.assert_allclose(col[k], c[k][rows], rtol=1e-12, atol=1e-300,
+                                       err_msg=k)
+    with pytest.raises(ValueError, match="tolerance"):
+        rs.bem_from_table(tasks, t, 128, 32, 1e-6)
+    with pytest.raises(ValueError, match="grid"):
+        rs.bem_from_table(tasks, t, 64, 32, 1e-7)

@@ -26,6 +26,9 @@ median Newton steps of the last solve (``iterations``) and the median and larges
 slice count used (refined solves use more); and, on the table's speed case (ISO 16281,
 L 14 mm, 4200 N, 2 mrad: tools/benchmarks/bench_roller_speed.py), its CPU.
 
+``--exact`` adds, per variant (n and grading), a circular crown against exact Hertz
+and a straight roller against the universal curve (``exact_checks``).
+
 ``--sample N`` adds N random cases inside the range the table covers (its header's
 ``covered_*`` fields: L/D 1.4-3 uniform, mean line load 100-2000 N/mm log-uniform at
 D = 10 mm, the table's five profiles with a given tilt uniform in 0-2 mrad, and the
@@ -174,6 +177,38 @@ def sample_variant(v, tasks, refs):
     return worst, where, unresolved, failed, statistics.median(cpu)
 
 
+def exact_checks(v):
+    """The variant's slices against exact solutions: a circular crown against exact
+    Hertz (Johnson 1985 section 4.2; R 10 mm, L 20 mm, E* 115.385 GPa, Rc 500 mm at
+    1 kN and 200 mm at 2 kN: the largest relative error in approach, p0, b, the
+    contact half-length a and the stiffness), and a straight roller against the
+    universal curve (force at a given depth, the cases of docs/profiled_rollers.md's
+    table: relative error per case, in %)."""
+    from linecontact.hertz import hertz_contact
+    from linecontact.models import UniversalModel
+    from linecontact.roller import ProfiledRoller
+    E = 115.385e9
+    crown = []
+    for rc, F in ((0.5, 1000.0), (0.2, 2000.0)):
+        h = hertz_contact(F, rc, 10e-3, E)
+        s = ProfiledRoller(10e-3, 20e-3, E, f"circular:Rc={rc}", n_slices=v["n"],
+                           grading=v["grading"]).at_force(F, tilt=0.0)
+        crown.append([abs(s.depth / h.approach - 1), abs(s.p_max / h.p0 - 1),
+                      abs(s.half_width.max() / h.b - 1),
+                      abs(s.contact_length / 2 / h.a - 1),
+                      abs(s.stiffness / h.stiffness - 1)])
+    crown = np.max(crown, axis=0)
+    straight = []
+    for R, L, r in ((5e-3, 10e-3, 5e-6), (5e-3, 10e-3, 5e-5), (5e-3, 10e-3, 5e-4),
+                    (5e-3, 25e-3, 8e-7), (5e-3, 25e-3, 8e-5), (10e-3, 5e-3, 4e-5),
+                    (10e-3, 5e-3, 4e-3), (2e-3, 50e-3, 8e-7), (2e-3, 50e-3, 8e-6),
+                    (20e-3, 4e-3, 1.3e-3), (20e-3, 4e-3, 3.8e-2)):
+        d = r * L**2 / R
+        s = ProfiledRoller(R, L, E, None, n_slices=v["n"], grading=v["grading"])
+        straight.append(s.at_depth(d).force / UniversalModel(R, L, E).force(d) - 1)
+    return crown, straight
+
+
 def summary(out):
     def mx(key, pred):
         v = [abs(o[key]) for o in out if pred(o)]
@@ -210,6 +245,9 @@ def main(argv=None):
     ap.add_argument("--sample", type=int, default=0,
                     help="random cases inside the covered range against 400 slices")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--exact", action="store_true",
+                    help="also the crown against exact Hertz and the straight roller "
+                         "against the universal curve")
     ap.add_argument("--no-table", action="store_true",
                     help="skip the table's cases (with --sample)")
     a = ap.parse_args(argv)
@@ -256,6 +294,16 @@ def main(argv=None):
                       f"p {o['e_p']:+.3%} d {o['e_d']:+.3%} m {o['e_m']:+.3%} "
                       f"edge {o['edge']:d}/{o['rt_edge']:d} unresolved {o['unresolved']:d} "
                       f"slices {o['slices']} cpu {o['cpu'] * 1e3:.1f} ms")
+    if a.exact:
+        print("against exact solutions: crown vs exact Hertz, largest |error| of two "
+              "cases in approach, p0, b, a, stiffness; straight roller vs the universal "
+              "curve, force error per case of docs/profiled_rollers.md's table [%]")
+        for text in a.variants.split(","):
+            v = parse_variant(text)
+            crown, straight = exact_checks(v)
+            print(f"{v['n']}/{v['grading']:g} | crown " + " ".join(f"{e:.2%}" for e in crown)
+                  + " | straight " + " ".join(f"{100 * e:+.2f}" for e in straight),
+                  flush=True)
     if a.sample:
         tasks, refs, ref_failed = sample_references(a.sample, a.seed)
         counts = {}

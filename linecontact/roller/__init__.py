@@ -74,8 +74,8 @@ there grows without bound as the slices are refined. The solution then reports
 number. Where the profile's drop is infinite at the ends (ISO 16281, Lundberg) the
 contact stays microns inside them and the pressure stays finite: the overlap
 interval's end is located between the last grid point and the end, and where the peak
-is still unresolved the end slices are refined until it settles (within 0.72 % of a
-3D BEM on 16384 cells along the axis in the worst case measured; docs/
+is still unresolved the end slices are refined until it settles (within 0.83 % of a
+3D BEM on 8192 cells along the axis in the worst case measured; docs/
 profiled_rollers.md, "Slice convergence").
 
 Measured range: ``tables/roller_accuracy.csv`` (tools/studies/roller_study.py) maps this

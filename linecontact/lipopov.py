@@ -70,6 +70,7 @@ import numpy as np
 from ._numerics import NotAKnotSpline, blockwise, log1p_excess_root
 from .tables import available_tables, read_table, table_path
 from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
+                       check_scaled,
                        check_positive, document, out)
 
 __all__ = [
@@ -545,6 +546,7 @@ def _depth_checked(depth, R, L, b):
         "depth", depth, 0.0, dmax, low_open=True, high_open=True, unit="m",
         hint="the profile of Eq. 7 is bounded by beta L^2/R, so no larger depth has a "
              "solution in this form")
+    check_scaled("depth", d, L**2 / R, "depth d R/L^2", "m")
     return d, dmax
 
 
@@ -619,6 +621,7 @@ def _force_checked(force, R, L, E, a, b):
     F = check_interval(
         "force", force, 0.0, fmax, low_open=True, high_open=True, unit="N",
         hint="the Li-Popov form saturates at 2 alpha beta E* L^3/R (depth beta L^2/R)")
+    check_scaled("force", F, E * L**3 / R, "force F R/(E* L^3)", "N")
     return F, fmax
 
 

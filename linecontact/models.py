@@ -55,7 +55,8 @@ from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
 from .tables import available_tables, read_table, table_path
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
 from .validity import (OutOfRangeError, UnknownKeywordError, UnknownNameError,
-                       check_flag, check_interval, check_positive, document, out)
+                       check_flag, check_interval, check_positive, check_scaled, document,
+                       out)
 
 __all__ = [
     "ContactModel",
@@ -1050,13 +1051,15 @@ class UniversalModel(ContactModel):
 
     def _checked_depth(self, depth):
         """depth [m] checked against (0, depth_limit]."""
-        return check_interval("depth", depth, 0.0, self.depth_limit, low_open=True,
-                              unit="m", hint=self._limit_hint())
+        d = check_interval("depth", depth, 0.0, self.depth_limit, low_open=True,
+                           unit="m", hint=self._limit_hint())
+        return check_scaled("depth", d, self._dscale, "depth d R/L^2", "m")
 
     def _checked_force(self, force):
         """force [N] checked against (0, force_limit]."""
-        return check_interval("force", force, 0.0, self.force_limit, low_open=True,
-                              unit="N", hint=self._limit_hint())
+        F = check_interval("force", force, 0.0, self.force_limit, low_open=True,
+                           unit="N", hint=self._limit_hint())
+        return check_scaled("force", F, self._fscale, "force Psi = F R/(E* L^3)", "N")
 
     def _dt(self, d):
         """d~ of checked depths d [m]: d <= depth_limit, but d/scale may still round

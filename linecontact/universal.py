@@ -103,8 +103,6 @@ class UniversalCurve:
         self._lnpsi = np.log(cols["Psi"])
         spline = NotAKnotSpline(self._z, self._lnpsi)
         self._spline = spline
-        self._slope = lambda z: spline(z, 1)
-        self._curv = lambda z: spline(z, 2)
         self.d_min = float(cols["d_tilde"][0])
         self.d_max = float(cols["d_tilde"][-1])
         # the spline's own end values (equal to the table's to rounding), so that the
@@ -114,6 +112,14 @@ class UniversalCurve:
         self.beta_small = float(table.meta["beta_small"])
         self.x_min = float(self.dpsi(self.d_min)) / 2
         self.x_max = float(self.dpsi(self.d_max)) / 2
+
+    # methods, not lambdas stored on the instance: a curve (and a model holding one)
+    # pickles, e.g. to the workers of a process pool
+    def _slope(self, z):
+        return self._spline(z, 1)
+
+    def _curv(self, z):
+        return self._spline(z, 2)
 
     # -- forward -----------------------------------------------------------------
     def _check_depth(self, d_tilde):

@@ -26,6 +26,7 @@ __all__ = [
     "Interval",
     "check_positive",
     "check_interval",
+    "check_scaled",
     "check_flag",
     "document",
     "refuse_unknown_keywords",
@@ -611,6 +612,64 @@ def _refuse_subnormal(name, v, unit):
                                   f"0 or |{name}| >= {_TINY:.6g}", unit=unit,
                                   hint="a subnormal number has lost precision")
     return v
+
+
+def check_scaled(name, value, scale, scaled, unit=""):
+    """`value` (checked positive), or OutOfRangeError where value/scale, the
+    dimensionless variable `scaled` a model computes with, is below the smallest
+    normal double (2.2e-308): a subnormal number has lost precision and its reciprocal
+    overflows, so that a model would answer inf for a tiny input. The error names the
+    parameter and the smallest value accepted (2.2e-308 times the scale).
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name in the error [-].
+    value : float or array_like
+        The values, already checked positive [unit].
+    scale : float or array_like
+        The scale that makes them dimensionless (broadcast with `value`) [unit].
+    scaled : str
+        The dimensionless variable's description, for the error [-].
+    unit : str, optional
+        The unit of `value` and `scale` [-].
+
+    Returns
+    -------
+    float or ndarray
+        `value`, unchanged.
+
+    Notes
+    -----
+    Accepts value/scale >= 2.2250738585072014e-308 (numpy.finfo(float).tiny).
+
+    Examples
+    --------
+    >>> check_scaled("force", 1e-305, 4.6e3, "force F R/(E* L^3)", "N")
+    Traceback (most recent call last):
+    ...
+    linecontact.validity.OutOfRangeError: force = 1e-305 N is outside the valid range >= 1.02353e-304 N; below it the dimensionless force F R/(E* L^3) is a subnormal number (precision lost)
+    """
+    v = np.asarray(value)
+    if v.size == 0:
+        return value
+    sc = np.asarray(scale, dtype=float)
+    if sc.ndim == 0:
+        if float(v.min()) >= _TINY * float(sc):
+            return value
+        ratio = np.broadcast_to(v / sc, v.shape)
+    else:
+        ratio = v / sc
+        if float(ratio.min()) >= _TINY:
+            return value
+    bad = np.flatnonzero(np.ravel(ratio) < _TINY)
+    k = int(bad[0])
+    low = _TINY * float(np.ravel(np.broadcast_to(sc, ratio.shape))[k])
+    where = f"element {k}" if ratio.ndim else ""
+    raise OutOfRangeError(name, float(np.ravel(np.broadcast_to(v, ratio.shape))[k]),
+                          f">= {low:.6g} {unit}".rstrip(), unit=unit, where=where,
+                          hint=f"below it the dimensionless {scaled} is a subnormal "
+                               "number (precision lost)")
 
 
 def _has_bool(seq):

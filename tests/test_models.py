@@ -494,3 +494,38 @@ def test_evaluate_many_leaves_a_subnormal_psi_to_its_model():
     assert got is not None and got[1].tolist() == [False, True]
     one = UniversalModel(R, L, E).evaluate(force=F[1:])
     assert got[0]["depth"][1] == one["depth"][0] and np.isnan(got[0]["depth"][0])
+
+
+@pytest.mark.parametrize("key", ["universal", "li-popov", "puttock-thwaite", "johnson"])
+def test_a_force_whose_dimensionless_value_is_subnormal_is_refused_by_name(key):
+    """F = 1e-305 N on R 5 mm, L 10 mm, E* 231 GPa: F R/(E* L^3) = 2e-313 is a subnormal
+    number, whose reciprocal overflows (the Li-Popov family answered d = inf, which the
+    calculator then called 'd > 0.15 R', and the universal curve named its internal
+    Psi). The refusal names the force and the smallest force accepted, 2.2e-308 E* L^3/R;
+    twice that force is answered with a finite, tiny depth. Depths likewise."""
+    m = get_model(key, 5e-3, 10e-3, 2.30769e11)
+    low = np.finfo(float).tiny * 2.30769e11 * 1e-6 / 5e-3
+    with pytest.raises(OutOfRangeError, match=r"^force = 1e-305 N .*>= 1\.02\d*e-300 N"):
+        m.depth(1e-305)
+    d = m.depth(2 * low)
+    assert np.isfinite(d) and 0 < d < 1e-290, "a force above the floor has a tiny depth"
+    with pytest.raises(OutOfRangeError, match=r"^depth = 1e-310 m"):
+        m.force(1e-310)
+
+
+def _every_model_key():
+    import linecontact.roller  # noqa: F401  (registers the roller models)
+    return sorted(MODELS)
+
+
+@pytest.mark.parametrize("key", _every_model_key())
+def test_every_registered_model_pickles_and_answers_alike(key):
+    """A model sent to another process (a process pool, a Dask worker) is pickled: every
+    registered model must round-trip and give the same depth at 1 kN. The universal
+    curve held its spline's derivatives as lambdas, which do not pickle."""
+    import pickle
+
+    kw = {"profile": "circular:Rc=0.5"} if key in ("profiled-roller",
+                                                   "iso16281-slicing") else {}
+    m = get_model(key, 5e-3, 10e-3, 115.38e9, **kw)
+    assert pickle.loads(pickle.dumps(m)).depth(1e3) == m.depth(1e3)

@@ -98,3 +98,56 @@ def test_a_changed_tilt_rebuilds_the_table():
     F = m.force(d)
     ref = np.array([m.at_depth(float(x)).force for x in d[::1999]])
     assert np.max(np.abs(F[::1999] - ref) / ref) <= 1e-6
+
+
+class _FakeTable:
+    """Stands in for a built table: answers every value with the build's number."""
+
+    def __init__(self, number):
+        self.top, self.number = np.inf, number
+
+    def __call__(self, v):
+        return np.full(np.shape(v), float(self.number))
+
+
+def _counting_builds(monkeypatch, fail_above=np.inf):
+    """Replace _build_table by a counter (a table answering with the build's count, or
+    a RuntimeError where the range reaches `fail_above`); returns the call list."""
+    calls = []
+
+    def build(self, which, hi):
+        calls.append(hi)
+        if hi >= fail_above:
+            raise RuntimeError("the sweep failed")
+        return _FakeTable(len(calls))
+
+    monkeypatch.setattr(laws._SolvedRoller, "_build_table", build)
+    return calls
+
+
+def test_changing_the_profiled_rollers_own_settings_rebuilds_the_table(monkeypatch):
+    """The profiled-roller law depends on its solver's settings (slice grading, end
+    refinement, slice count): setting them on ``model.roller`` drops the tables, as
+    setting the model's tilt does; an unchanged model keeps its table."""
+    calls = _counting_builds(monkeypatch)
+    m = laws.ProfiledRollerModel(5e-3, 10e-3, E, "circular:Rc=0.5", n_slices=20)
+    d = m.first_contact_depth + np.linspace(1e-8, 1e-6, 4)
+    assert m._tabulated(d, "force")[0] == 1
+    assert m._tabulated(d, "force")[0] == 1 and len(calls) == 1, "kept while unchanged"
+    m.roller.grading = 0.3
+    assert m._tabulated(d, "force")[0] == 2, "a new grading must rebuild the table"
+    m.roller.refine_ends = False
+    assert m._tabulated(d, "force")[0] == 3, "a new refine_ends must rebuild the table"
+
+
+def test_a_failed_table_build_is_tried_again_for_a_smaller_range(monkeypatch):
+    """A build that fails (the solver cannot sweep the law up to the array's largest
+    value) is answered by the direct path (None here) and not tried again up to that
+    value; an array within a smaller range tries again and gets a table."""
+    calls = _counting_builds(monkeypatch, fail_above=10e-6)
+    m = _model()
+    d0 = m.first_contact_depth
+    assert m._tabulated(d0 + np.linspace(1e-8, 20e-6, 4), "force") is None
+    assert m._tabulated(d0 + np.linspace(1e-8, 30e-6, 4), "force") is None
+    assert len(calls) == 1, "a larger range than a failed one is not built again"
+    assert m._tabulated(d0 + np.linspace(1e-8, 5e-6, 4), "force")[0] == 2

@@ -140,6 +140,20 @@ class _LawTable:
         return res.reshape(np.shape(v))
 
 
+class _Identity:
+    """An object compared by identity (in the settings tuple of a model's tables)."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj):
+        self.obj = obj
+
+    def __eq__(self, other):
+        return isinstance(other, _Identity) and other.obj is self.obj
+
+    __hash__ = None
+
+
 class _SolvedRoller(ContactModel):
     """The contact law of a roller model from its solutions (``at_depth``,
     ``at_force`` returning :class:`RollerSolution`): one solve per value, each giving
@@ -242,14 +256,28 @@ class _SolvedRoller(ContactModel):
                 self.at_depth(float(flat[np.argmax(flat <= d0)]))   # raises
                 return None
         tables = self.__dict__.setdefault("_tables", {})
+        key = self._solver_settings()
+        if tables.get("settings", key) != key:
+            tables.clear()                   # the solver's own settings changed
+        tables["settings"] = key
         table = tables.get(which, False)
-        if table is False or (table is not None and table.top < hi):
+        # a build that failed up to some value is tried again for a smaller range
+        failed = tables.get(which + "_failed_above", np.inf)
+        if (table is False or (table is not None and table.top < hi)
+                or (table is None and hi < failed)):
             try:
                 table = self._build_table(which, hi)
             except (ValueError, ArithmeticError, RuntimeError):
                 table = None                 # a law the solver cannot sweep: direct
+                tables[which + "_failed_above"] = hi
             tables[which] = table
         return None if table is None else table(v)
+
+    def _solver_settings(self):
+        """What the solved law depends on besides the attributes whose assignment
+        drops the tables (__setattr__): the settings of a solver object the model
+        holds, which a user may change on that object (none here)."""
+        return ()
 
     def _build_table(self, which, hi):
         d0 = self.first_contact_depth
@@ -349,6 +377,13 @@ class ProfiledRollerModel(_SolvedRoller):
     def at_depth(self, depth):
         """:class:`RollerSolution` at depth d [m] and this model's tilt."""
         return self.roller.at_depth(depth, self.tilt)
+
+    def _solver_settings(self):
+        # `model.roller.grading = 0.5` changes the law as much as a new roller does;
+        # the profile by identity (a user table's arrays do not compare as one bool)
+        r = self.roller
+        return (r.radius, r.length, r.estar, r.n_slices, r.grading, r.refine_ends,
+                _Identity(r.profile))
 
     def _slice_onsets(self):
         return []                        # coupled slices: the ends' onsets are the breaks

@@ -4,7 +4,8 @@
         [--save FILE.json] [--against FILE.json]
 
 Each case as the study runs it (tools/studies/roller_study.py, ``runtime_case``): a new
-``linecontact.roller.ProfiledRoller`` (100 slices) per case, then one
+``linecontact.roller.ProfiledRoller`` (default settings: 50 slices since issue 20's
+fourth round, 100 in the records before) per case, then one
 ``at_force(F, tilt)`` (a task's tilt None: ``tilt="free"``, zero moment), timed with
 ``time.process_time`` (CPU time, not wall: the shared machine's load does not enter);
 the cases run in table order in one process, so the first includes the one-time build of the strip-function table.
@@ -62,8 +63,7 @@ def run(repeat=1):
     for _ in range(repeat):
         for i, t in enumerate(tasks):
             prof = rs.make_profile(t["profile"], t["length"], t["radius"], t["estar"])
-            model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof,
-                                   n_slices=100)
+            model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof)
             c0 = time.process_time()
             r = model.at_force(t["force"], tilt="free" if t["tilt"] is None else t["tilt"])
             times[i].append(time.process_time() - c0)
@@ -86,7 +86,7 @@ def main(argv=None):
     table, out = run(a.repeat)
     t = np.array([o["cpu_seconds"] for o in out])
     order = np.argsort(-t)
-    print(f"{len(t)} cases, 100 slices, CPU time per solve: median {np.median(t) * 1e3:.1f}"
+    print(f"{len(t)} cases, default slices, CPU time per solve: median {np.median(t) * 1e3:.1f}"
           f" ms, largest {t.max() * 1e3:.1f} ms, over 100 ms: {(t > 0.1).sum()}")
     print(f"Newton steps the solutions report (the last end-refinement level's): "
           f"{sum(o['iterations'] for o in out)} over {len(out)} cases")

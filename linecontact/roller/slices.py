@@ -338,6 +338,7 @@ class SliceEquations:
         self.P = drop(self.x)
         self.iterations = 0
         self.span = span
+        self.slope_values = None
 
     def kernels(self, S, b, targets=None, a_only=False):
         """A, D and their b-derivative parts for targets T (default S) and sources S.
@@ -568,7 +569,10 @@ class SliceEquations:
         return math.pi * self.E * np.array([dF @ G, dM @ G])
 
     def slope_at_slices(self):
-        """dP/dx at the slice centres (the owner sets ``slope``, a function of x)."""
+        """dP/dx at the slice centres (the owner sets ``slope``, a function of x, or
+        ``slope_values``, the values at the slice centres)."""
+        if self.slope_values is not None:
+            return self.slope_values
         return self.slope(self.x)
 
     def start(self, d, theta, warm=None):

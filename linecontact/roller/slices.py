@@ -800,22 +800,23 @@ class SliceEquations:
                 z = np.linalg.solve(J, B)
                 z[:ns] *= qsc
                 z[ns:] *= 1.0 / R
-                ws, xs = s.w[S], s.x[S]
-                W = np.stack([ws, ws * xs])
+                W = np.empty((2, ns))
+                s.w.take(S, out=W[0])
+                np.multiply(W[0], s.x[S], out=W[1])
                 wq, wxq = W @ qs
                 # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
                 Wz = W @ z[:ns]
                 K = Wz[:, 1:] + grid
                 lin = Wz[:, 0]
-                step = np.zeros(2)
-                want = np.array([(force / piE - wq - lin[0]) if force is not None
-                                 else 0.0, (-wxq - lin[1]) if zero_moment else 0.0])
                 if force is not None and zero_moment:
-                    step = np.linalg.solve(K, want)
+                    step = np.linalg.solve(K, np.array([force / piE - wq - lin[0],
+                                                        -wxq - lin[1]]))
                 elif force is not None:
-                    step[0] = want[0] / K[0, 0]
+                    step = np.array([(force / piE - wq - lin[0]) / K[0, 0], 0.0])
                 elif zero_moment:
-                    step[1] = want[1] / K[1, 1]
+                    step = np.array([0.0, (-wxq - lin[1]) / K[1, 1]])
+                else:
+                    step = np.zeros(2)
                 dz = z[:, 0] + z[:, 1:] @ step
                 dq, dc = dz[:ns], dz[ns:]
                 # slices at an end of the loaded set that the full step drives to q < 0
@@ -840,8 +841,8 @@ class SliceEquations:
             alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
             # keep the rigid overlap positive: no step lowers it by more than half its
             # largest value (d stays above first contact)
-            dmax = float(np.max(over))
-            drop = float(np.max(-(step[0] + step[1] * s.x[S])))
+            dmax = float(over.max())
+            drop = -float((step[0] + step[1] * s.x[S]).min())
             if drop > 0.5 * dmax:
                 alpha = min(alpha, 0.5 * dmax / drop)
             q[S] = qs + alpha * dq
@@ -850,9 +851,9 @@ class SliceEquations:
             theta = theta + alpha * step[1]
             if not abs(theta) < TILT_RANGE.high:
                 raise ConvergenceError("the tilt left the admissible range")
-            dqmax = float(np.max(np.abs(dq)))
+            dqmax = float(np.abs(dq).max())
             small = (alpha == 1.0 and dqmax <= tol * qsc
-                     and np.max(np.abs(dc)) * R <= tol
+                     and float(np.abs(dc).max()) * R <= tol
                      and abs(step[0]) <= tol * dmax
                      and abs(step[1]) * (s.hi - s.lo) <= tol * dmax)
             if alpha == 1.0:
@@ -862,11 +863,11 @@ class SliceEquations:
                 # steps; over the 104 cases of tables/roller_accuracy.csv this takes
                 # fewer steps than checking from a step of 5 % or 20 % of it)
                 if dqmax <= qsc:
-                    rest = np.ones(n, bool)
-                    rest[S] = False
+                    pen = gap > tol * dmax
+                    pen[S] = False
                     if left is not None:      # their gaps are those before they left
-                        rest[left] = False
-                    add = np.flatnonzero(rest & (gap > tol * dmax))
+                        pen[left] = False
+                    add = np.flatnonzero(pen)
                     if not small:
                         # a slice that left three times rejoins only once the others
                         # have converged without it: at a contact end between two

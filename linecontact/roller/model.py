@@ -128,6 +128,7 @@ class ProfiledRoller:
         self._warm = None
         self._memo = None
         self._free_memo = 0.0
+        self._d0_memo = None
         self.iterations = 0
 
     def first_contact_depth(self, tilt=0.0):
@@ -156,7 +157,13 @@ class ProfiledRoller:
         >>> r.first_contact_depth(), f"{r.first_contact_depth(1e-3) * 1e6:.3f} um"
         (0.0, '-0.050 um')
         """
-        th = TILT_RANGE.check(tilt).item()
+        return self._contact_depth(TILT_RANGE.check(tilt).item())
+
+    def _contact_depth(self, th):
+        """first_contact_depth at a checked tilt th (a float), the last one kept: a
+        solve at a given tilt asks twice (its start and its memo)."""
+        if self._d0_memo is not None and self._d0_memo[0] == th:
+            return self._d0_memo[1]
         h = self._fP - th * self._fx
         k = int(np.argmin(h))
         hmin = float(h[k])
@@ -166,6 +173,7 @@ class ProfiledRoller:
             if corr > 1e-12 * max(abs(h[k - 1]), abs(h[k + 1])):
                 # vertex of the parabola through the three smallest values
                 hmin = float(h[k] - corr)
+        self._d0_memo = (th, hmin)
         return hmin
 
     def _grid(self, d, th):
@@ -431,7 +439,7 @@ class ProfiledRoller:
     def _start_depth(self, F0, th):
         """A first depth for force F0 at tilt th: from the last solution of this roller
         (F ~ (d - d0)^slope), else the straight roller's 2D estimate."""
-        d0 = self.first_contact_depth(th)
+        d0 = self._contact_depth(th)
         L, R, E = self.length, self.radius, self.estar
         if self._memo is not None and self._memo[0] == th:
             _, e_last, F_last, slope = self._memo
@@ -623,7 +631,7 @@ class ProfiledRoller:
         if st is not None and abs(st[2] / F0 - 1) <= tol and (
                 not free or abs(st[3]) <= tol * F0 * self.length):
             d, th, F, K = st[0], st[1], st[2], st[4]
-            e = d - self.first_contact_depth(th)
+            e = d - self._contact_depth(th)
             if e > 0:
                 self._memo = (th, e, F, min(max(K[0, 0] * e / F, 0.5), 3.0))
             if free:

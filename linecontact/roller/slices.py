@@ -641,32 +641,41 @@ class SliceEquations:
             # the widths are frozen: a slice leaving only removes its row and column
             last = sweep == sweeps - 1
             A, Dk = s.kernels(S, b0, a_only=not last)[:2]
-            wm = 1.0 / np.mean(s.w[S])                      # the force row, scaled
+            ws, xs = s.w[S], s.x[S]
+            ns = len(S)
+            wm = 1.0 / (ws.sum() / ns)                      # the force row, scaled
+            # the bordered matrix of the whole overlap interval, built once a sweep: a
+            # slice leaving removes its row and column (the same values as building it
+            # anew for the slices left)
+            M = np.zeros((ns + nb, ns + nb))
+            M[:ns, :ns] = A
+            M[:ns, ns] = -1.0
+            M[ns, :ns] = ws * wm
+            rhs = np.empty(ns + nb)
+            rhs[ns] = target * wm
+            if zero_moment:
+                M[:ns, ns + 1] = -xs
+                M[ns + 1, :ns] = M[ns, :ns] * xs
+                rhs[:ns] = -s.P[S]
+                rhs[ns + 1] = 0.0
+            else:
+                rhs[:ns] = theta * xs - s.P[S]
+            keep = None
             for _ in range(s.n):
-                ns = len(S)
-                M = np.zeros((ns + nb, ns + nb))
-                M[:ns, :ns] = A
-                M[:ns, ns] = -1.0
-                M[ns, :ns] = s.w[S] * wm
-                rhs = np.empty(ns + nb)
-                rhs[ns] = target * wm
-                if zero_moment:
-                    M[:ns, ns + 1] = -s.x[S]
-                    M[ns + 1, :ns] = M[ns, :ns] * s.x[S]
-                    rhs[:ns] = -s.P[S]
-                    rhs[ns + 1] = 0.0
-                else:
-                    rhs[:ns] = theta * s.x[S] - s.P[S]
                 z = np.linalg.solve(M, rhs)
                 qs = z[:ns]
                 if (qs > 0).all():
                     break
                 on = qs > 0
-                S, b0, A = S[on], b0[on], A[on][:, on]
-                if Dk is not None:
-                    Dk = Dk[on][:, on]
+                S, b0 = S[on], b0[on]
+                keep = np.flatnonzero(on) if keep is None else keep[on]
                 if S.size == 0:
                     return None
+                rows = np.concatenate([np.flatnonzero(on), np.arange(ns, ns + nb)])
+                M, rhs = M[np.ix_(rows, rows)], rhs[rows]
+                ns = len(S)
+            if keep is not None and Dk is not None:
+                Dk = Dk[np.ix_(keep, keep)]
             d_new = float(z[ns])
             th_new = float(z[ns + 1]) if zero_moment else theta
             if not (math.isfinite(d_new) and abs(th_new) < TILT_RANGE.high):

@@ -30,8 +30,8 @@ one-solve medians round by round and their median. ``--no-refine`` solves with
 ``refine_ends=False`` (the solver alone, without the end refinement's re-solves;
 only for versions that have that option). ``--engine E`` passes ``engine=E`` to
 ``ProfiledRoller`` (only where given, so that the same command still times versions
-without engines; with ``--against`` only this checkout gets it: the other runs its
-own default). ``--kernels`` instead prints what the compiled engine costs
+without engines; with ``--against`` the other checkout gets it too where its own
+script takes ``--engine``, else it runs its own default). ``--kernels`` instead prints what the compiled engine costs
 (importing numba, loading its cached code, compiling it, each in a fresh process) and
 the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
 and whole solves with the two engines alternating in one process.
@@ -248,7 +248,10 @@ def _paired(a, argv):
         if v.startswith(("--against=", "--rounds=", "--engine=")):
             continue
         args.append(v)
-    mine = args + (["--engine", a.engine] if a.engine else [])   # this checkout only
+    mine = args + (["--engine", a.engine] if a.engine else [])
+    # the other checkout gets the engine too where its script knows the option
+    theirs = mine if "--engine" in (
+        other / "tools" / "benchmarks" / "bench_roller_speed.py").read_text() else args
     pat = re.compile(r"one solve, cold, (.+?): CPU median ([\d.]+) ms")
     ratios = {}
     for r in range(a.rounds):
@@ -256,7 +259,7 @@ def _paired(a, argv):
         for name, root in (("A", here), ("B", other)):
             env = dict(os.environ, PYTHONPATH=str(root))
             out = subprocess.run([sys.executable, "-m", "tools.benchmarks.bench_roller_speed",
-                                  *(mine if name == "A" else args)], cwd=root, env=env,
+                                  *(mine if name == "A" else theirs)], cwd=root, env=env,
                                  capture_output=True, text=True, check=True).stdout
             print(f"--- round {r + 1}, {name} = {root.name}:")
             print(out.rstrip())

@@ -851,11 +851,17 @@ class SliceEquations:
             # keep the rigid overlap positive: no step lowers it by more than half its
             # largest value (d stays above first contact)
             dmax = float(over.max())
-            drop = -float((step[0] + step[1] * s.x[S]).min())
+            # (at a given tilt the step in theta is 0: the drop is -step[0] everywhere)
+            drop = -float((step[0] + step[1] * s.x[S]).min()) if step[1] != 0.0 else (
+                -float(step[0]))
             if drop > 0.5 * dmax:
                 alpha = min(alpha, 0.5 * dmax / drop)
-            q[S] = qs + alpha * dq
-            c[S] = cs + alpha * dc
+            if alpha == 1.0:
+                q[S] = qs + dq
+                c[S] = cs + dc
+            else:
+                q[S] = qs + alpha * dq
+                c[S] = cs + alpha * dc
             d = d + alpha * step[0]
             theta = theta + alpha * step[1]
             if not abs(theta) < TILT_RANGE.high:
@@ -877,7 +883,7 @@ class SliceEquations:
                     if left is not None:      # their gaps are those before they left
                         pen[left] = False
                     add = np.flatnonzero(pen)
-                    if not small:
+                    if not small and len(add):
                         # a slice that left three times rejoins only once the others
                         # have converged without it: at a contact end between two
                         # slices (the refined end zones of a logarithmic profile) it

@@ -672,10 +672,10 @@ class SliceEquations:
                 if S.size == 0:
                     return None
                 rows = np.concatenate([np.flatnonzero(on), np.arange(ns, ns + nb)])
-                M, rhs = M[np.ix_(rows, rows)], rhs[rows]
+                M, rhs = M.take(rows, 0).take(rows, 1), rhs[rows]   # (np.ix_: 5x the time)
                 ns = len(S)
             if keep is not None and Dk is not None:
-                Dk = Dk[np.ix_(keep, keep)]
+                Dk = Dk.take(keep, 0).take(keep, 1)
             d_new = float(z[ns])
             th_new = float(z[ns + 1]) if zero_moment else theta
             if not (math.isfinite(d_new) and abs(th_new) < TILT_RANGE.high):

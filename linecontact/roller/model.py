@@ -176,11 +176,12 @@ class ProfiledRoller:
         self._d0_memo = (th, hmin)
         return hmin
 
-    def _grid(self, d, th):
+    def _grid(self, d, th, n=None):
         """Slices over the overlap interval, its ends interpolated between grid points.
 
         The ends move continuously (piecewise linearly) with d and theta, so that F(d)
-        is continuous; their derivatives enter the stiffness matrix.
+        is continuous; their derivatives enter the stiffness matrix. `n`: the number of
+        base slices (default n_slices; the cold start's first sweeps take fewer).
         """
         fx = self._fx
         over = d + th * fx - self._fP
@@ -219,7 +220,7 @@ class ProfiledRoller:
             P, slope = self._drop_slope(x)
             got.append(slope)
             return P
-        s = SliceEquations(self.radius, self.estar, float(lo), float(hi), self.n_slices,
+        s = SliceEquations(self.radius, self.estar, float(lo), float(hi), n or self.n_slices,
                            drop, self.grading, self._refine, resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
         s.slope = self._slope

@@ -271,6 +271,16 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
 #: "Round 5"); the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt
 #: takes 4 steps after 3 sweeps, 8 after 2.
 START_SWEEPS = 3
+#: The sweeps of a cold start but the last run on START_COARSE times fewer slices
+#: (where that leaves at least 20): the first sweeps only carry the depth, tilt,
+#: widths and active set to the last, and on 25 slices instead of 50 their kernels
+#: and dense solves cost about a quarter. Over the 104 cases of
+#: tables/roller_accuracy.csv 840 Newton steps instead of 827 and 2112 dense solves
+#: instead of 2160, CPU within 1-3 % (faster); the ISO 16281 case of
+#: tools/benchmarks/bench_roller_speed the same 6 and 4 steps, 3-7 % less CPU
+#: (tools/benchmarks/README.md, "Round 5, last step"). Results move within the
+#: Newton tolerance (2e-11 of the stiffness, 1e-12 elsewhere).
+START_COARSE = 2
 
 
 def _end_runs(S, out):
@@ -623,11 +633,17 @@ class SliceEquations:
         where the first answer leaves no contact (the caller then starts at its own
         depth, :meth:`start`). Given `width` (relative positions in the overlap
         interval and strip half-widths there, from a solution nearby), one solve with
-        those widths instead."""
+        those widths instead. The sweeps before the last run on :data:`START_COARSE`
+        times fewer slices (`regrid(d, theta, n)` the grid of n base slices; the
+        widths pass between grids by their relative positions, as between sweeps)."""
         s, R = self, self.R
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
         sweeps = START_SWEEPS if width is None else 1
+        n_coarse = s._geometry[0] // START_COARSE
+        coarse = width is None and sweeps > 1 and START_COARSE > 1 and n_coarse >= 20
+        if coarse:
+            s = regrid(d, theta, n_coarse)
         for sweep in range(sweeps):
             over = d + theta * s.x - s.P
             S = np.flatnonzero(over > 0)
@@ -684,7 +700,7 @@ class SliceEquations:
             qrel = qs
             if sweep < sweeps - 1:
                 d, theta = d_new, th_new
-                s2 = regrid(d, theta)
+                s2 = regrid(d, theta, n_coarse if coarse and sweep < sweeps - 2 else None)
                 s2.iterations = s.iterations
                 s = s2
         q = np.zeros(s.n)

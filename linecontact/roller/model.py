@@ -14,7 +14,8 @@ from ..validity import OutOfRangeError, check_flag, check_interval, check_positi
 from .._numerics import serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
-                     ConvergenceError, SliceEquations, check_engine, resolve_engine)
+                     ConvergenceError, SliceEquations, check_engine, coarse_slices,
+                     resolve_engine)
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["ProfiledRoller", "roller_contact"]
@@ -188,13 +189,13 @@ class ProfiledRoller:
         # the first and last grid points inside (argmax of the mask: a tenth of
         # flatnonzero's time on the 16 n + 1 points, the same indices)
         mask = over > 0
-        i = int(np.argmax(mask))
+        i = int(mask.argmax())
         dlo = dhi = (0.0, 0.0)
         if not mask[i]:
-            k = int(np.argmax(over))
+            k = int(over.argmax())
             lo, hi = fx[max(k - 1, 0)], fx[min(k + 1, len(fx) - 1)]
         else:
-            j = len(fx) - 1 - int(np.argmax(mask[::-1]))
+            j = len(fx) - 1 - int(mask[::-1].argmax())
             lo, hi = fx[0], fx[-1]
             h = fx[1] - fx[0]
             if i > 0 and math.isfinite(over[i - 1]):
@@ -242,7 +243,7 @@ class ProfiledRoller:
             u, x, P = self._end_points(key, end, side, x_in)
             over = d + th * x - P
             out = over <= 0
-            k = int(np.argmax(out))     # over[0] > 0: x_in is inside the interval
+            k = int(out.argmax())     # over[0] > 0: x_in is inside the interval
             if not out[k]:              # overlapping to within 1e-6 of the interval
                 return float(x[-1]), (0.0, 0.0)
             key += (k,)
@@ -396,7 +397,7 @@ class ProfiledRoller:
         there is none or the overlap changed by more than a factor 10."""
         if self._warm is None:
             return None
-        e = float(np.max(d + th * s.x - s.P))          # largest overlap on the slices
+        e = float((d + th * s.x - s.P).max())          # largest overlap on the slices
         xi_o, qo, co, eo = self._warm
         ratio = e / eo if eo > 0 else 0.0
         if not 0.1 < ratio < 10.0:
@@ -408,7 +409,11 @@ class ProfiledRoller:
     def _controlled(self, d, th, force=None, zero_moment=False, tol=1e-11):
         """Solve with the force and/or zero moment imposed, Newton on the slice loads
         together with d and/or theta (SliceEquations.bordered) from depth d, tilt th."""
-        s = self._grid(d, th)
+        # a cold start at a force begins on the coarser grid of its first sweeps
+        # (SliceEquations.start_at_force)
+        n0 = coarse_slices(self.n_slices) if (
+            force is not None and self._warm is None) else self.n_slices
+        s = self._grid(d, th, n0)
         warm = self._warm_start(s, d, th)
         first = None
         if force is not None:
@@ -423,17 +428,20 @@ class ProfiledRoller:
                 # the last solution's strip widths, scaled as b ~ overlap^(1/2)
                 xi_o, qo, co, eo = self._warm
                 on = qo > 0
-                ratio = float(np.max(d + th * s.x - s.P)) / eo
+                ratio = float((d + th * s.x - s.P).max()) / eo
                 width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
-            first = s.start_at_force(self._grid, d, th, force, zero_moment, width)
+            first = s.start_at_force(self._grid, d, th, force, zero_moment, width,
+                                     last_n=self.n_slices)
         if first is None:
+            if n0 != self.n_slices:
+                s = self._grid(d, th)
             S, q, c = s.start(d, th, warm)
         else:
             s, S, q, c, d, th = first
         s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
                                                 zero_moment, tol)
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
-                      float(np.max(d + th * s.x - s.P)))
+                      float((d + th * s.x - s.P).max()))
         self.iterations += s.iterations
         return d, th, F, M, K, (s, S, q, c)
 
@@ -453,7 +461,7 @@ class ProfiledRoller:
         warm = self._warm_start(s, d, th)
         S, q, c = s.solve(d, th, warm=warm, tol=tol)
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
-                      float(np.max(d + th * s.x - s.P)))
+                      float((d + th * s.x - s.P).max()))
         self.iterations += s.iterations
         scale = math.pi * self.estar
         F = scale * (s.w @ q)
@@ -495,7 +503,7 @@ class ProfiledRoller:
         resolved = False
         if edge is None:
             pm, xm = peak_pressure(s.x, p)
-            k = int(np.argmax(p))
+            k = int(p.argmax())
             resolved = bool(on[0] + 2 <= k <= on[-1] - 2) and not end_zone
             msg = ("peak of the Hertz strips (coupled slices, interpolated); the contact "
                    "stays inside the roller")
@@ -519,7 +527,7 @@ class ProfiledRoller:
             msg = ("edge loaded: the contact reaches the roller end ({}), where the "
                    "pressure on a half-space is singular; a peak pressure there depends "
                    "on the slice width and is not reported").format(edge)
-        if np.max(b) > 0.1 * self.radius:
+        if b.max() > 0.1 * self.radius:
             notes.append(f"contact half-width b = {np.max(b):.3g} m exceeds 0.1 R: the "
                          "parabolic gap y^2/(2R) is inaccurate")
         with np.errstate(invalid="ignore"):

@@ -283,6 +283,13 @@ START_SWEEPS = 3
 START_COARSE = 2
 
 
+def coarse_slices(n):
+    """The base slices of a cold start's first sweeps for a grid of n base slices:
+    n // START_COARSE where that leaves at least 20, else n."""
+    m = n // START_COARSE if START_COARSE > 1 else n
+    return m if m >= 20 else n
+
+
 def _end_runs(S, out):
     """The slices of `out` (a mask over the loaded set S) that reach an end of a run
     of consecutive loaded slices through slices of `out`: where the full step drives
@@ -620,7 +627,8 @@ class SliceEquations:
         q[S] = qs
         return S, q, c
 
-    def start_at_force(self, regrid, d, theta, force, zero_moment=False, width=None):
+    def start_at_force(self, regrid, d, theta, force, zero_moment=False, width=None,
+                       last_n=None):
         """A cold first (equations, S, q, c, d, theta) for the force `force` [N] (and
         zero moment): the linear problem with frozen strip widths and the force (and
         moment) rows bordering it, so that d (and theta) come out of the same solve,
@@ -634,16 +642,19 @@ class SliceEquations:
         depth, :meth:`start`). Given `width` (relative positions in the overlap
         interval and strip half-widths there, from a solution nearby), one solve with
         those widths instead. The sweeps before the last run on :data:`START_COARSE`
-        times fewer slices (`regrid(d, theta, n)` the grid of n base slices; the
-        widths pass between grids by their relative positions, as between sweeps)."""
+        times fewer slices (:func:`coarse_slices`; `regrid(d, theta, n)` the grid of n
+        base slices; the widths pass between grids by their relative positions, as
+        between sweeps), the last on `last_n` base slices (default: this grid's; this
+        grid may be the first sweeps' coarse one)."""
         s, R = self, self.R
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
         sweeps = START_SWEEPS if width is None else 1
-        n_coarse = s._geometry[0] // START_COARSE
-        coarse = width is None and sweeps > 1 and START_COARSE > 1 and n_coarse >= 20
-        if coarse:
-            s = regrid(d, theta, n_coarse)
+        n_full = s._geometry[0] if last_n is None else last_n
+        n_coarse = coarse_slices(n_full)
+        coarse = width is None and sweeps > 1 and n_coarse < n_full
+        if s._geometry[0] != (n_coarse if coarse else n_full):
+            s = regrid(d, theta, n_coarse if coarse else n_full)
         for sweep in range(sweeps):
             over = d + theta * s.x - s.P
             S = np.flatnonzero(over > 0)
@@ -700,7 +711,7 @@ class SliceEquations:
             qrel = qs
             if sweep < sweeps - 1:
                 d, theta = d_new, th_new
-                s2 = regrid(d, theta, n_coarse if coarse and sweep < sweeps - 2 else None)
+                s2 = regrid(d, theta, n_coarse if coarse and sweep < sweeps - 2 else n_full)
                 s2.iterations = s.iterations
                 s = s2
         q = np.zeros(s.n)

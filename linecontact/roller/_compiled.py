@@ -79,10 +79,11 @@ def _far_powers(b, span, fc):
 _far_powers = _jit(_far_powers)
 
 
-def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin,
-            tmax, coef, z0, ih, h, W, bnd):
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, taumax,
+            tmin, tmax, coef, z0, ih, h, W, bnd):
     """The four kernels of source slice si (strip half-width bi, far-field series
-    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED. tn, tf, lr,
+    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED (the far
+    field of A alone unless `full`: W[1:] then undefined there). tn, tf, lr,
     their logs ltn, ltf and Gt are indexed [source, target] (transposed); the spline's
     ln(t/b) is ln t + ln(span/b), one log per source. At t/b >= tmax (a strip far
     narrower than the slices: a slice about to leave the contact) the four functions
@@ -135,6 +136,10 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, 
                     continue
                 gj = g[j, k0:k1]
                 w0, w1, w2, w3 = W[0, k0:k1], W[1, k0:k1], W[2, k0:k1], W[3, k0:k1]
+                if not full:
+                    for k in range(gj.shape[0]):
+                        w0[k] += gj[k] * c0
+                    continue
                 for k in range(gj.shape[0]):
                     w0[k] += gj[k] * c0
                     w1[k] += gj[k] * c1
@@ -227,7 +232,7 @@ def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin,
     full = EA.shape[0] > 0
     for s in range(ns):
         if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
-                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+                       full, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         for kt in range(nt):
             A[kt, s] = W[0, T[kt]]
@@ -271,7 +276,7 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
     contiguous = S[ns - 1] - S[0] + 1 == ns
     for s in range(ns):
         if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
-                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+                       True, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         qv = qs[s]
         cv = cs[s]

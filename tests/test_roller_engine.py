@@ -287,3 +287,25 @@ def test_compiled_engine_without_a_writable_cache():
                          check=True).stdout.split()
     assert out[0] == "1", f"{out[0]} warnings that the compiled code is not cached"
     assert out[1:] == ["True", "True"], out
+
+
+def test_auto_switches_within_a_sweep():
+    """A load sweep on one roller with engine='auto' (the switching point lowered to
+    30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
+    imported part-way, and every row equals the numpy engine's sweep within 1e-10."""
+    pytest.importorskip("numba")
+    code = (
+        "import sys, numpy as np\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "slices.AUTO_SWITCH_STEPS = 30\n"
+        "F = np.linspace(500.0, 8000.0, 12)\n"
+        "auto = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281').at_force(F, tilt=1e-3)\n"
+        "print('linecontact.roller._compiled' in sys.modules)\n"
+        "ref = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281', engine='numpy')"
+        ".at_force(F, tilt=1e-3)\n"
+        "print(max(max(abs(a.depth / r.depth - 1), abs(a.p_max / r.p_max - 1))"
+        " for a, r in zip(auto, ref)))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "True", "engine='auto' never switched to the compiled kernels"
+    assert float(out[1]) <= 1e-10, out

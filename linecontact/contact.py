@@ -813,6 +813,7 @@ class Contact:
 
     def _slice_roller(self):
         from .roller import ProfiledRoller
+        from .roller.slices import DEFAULT_N_SLICES
 
         if self.model != "profiled-roller":
             raise CombinationError({"model": self.model}, "the tangential and creep "
@@ -820,7 +821,8 @@ class Contact:
                                    "model='profiled-roller'")
         if self._slices is None:
             self._slices = ProfiledRoller(self.radius, self.roller.length, self.estar,
-                                          self.profile, n_slices=self.n_slices or 100)
+                                          self.profile,
+                                          n_slices=self.n_slices or DEFAULT_N_SLICES)
         return self._slices
 
     def _fixed_tilt(self, what):
@@ -1257,13 +1259,14 @@ class Contact:
                                    unit={"misalignment": "rad"})
         th = self._fixed_tilt(what)
         from .roller import ProfiledRoller
+        from .roller.slices import DEFAULT_N_SLICES
 
         if self.model != "profiled-roller":
             raise CombinationError({"model": self.model}, "the creep laws use the "
                                    "coupled-slice model; use model='profiled-roller'")
         return [_ApproachLaw(ProfiledRoller(R, self.roller.length, self.estar,
                                             self.profile,
-                                            n_slices=self.n_slices or 100), t,
+                                            n_slices=self.n_slices or DEFAULT_N_SLICES), t,
                              self.model) for R, t in zip(radii, (th, psi - th))]
 
     def creep(self, time, *, force):

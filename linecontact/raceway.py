@@ -419,7 +419,7 @@ def roller_between_raceways(radius, length, estar, raceways, *, force=None,
         Roller tilt against the inner raceway, |theta| < 0.1 [rad] (default 0,
         aligned); ``"free"``: the tilt at which the roller's moments balance.
     n_slices : int, optional
-        Slices of a slice model [-] (default: the model's, 100 coupled, 30 ISO).
+        Slices of a slice model [-] (default: the model's, 50 coupled, 30 ISO).
     **options
         Passed to a law (e.g. ``c=0.72`` for Johnson's).
 
@@ -566,10 +566,11 @@ def _force_at_deflection(mi, mo, delta):
 def _slice_solver(model, R_eff, L, E, prof, n_slices):
     """force(F, tilt) -> RollerSolution of one contact, for a slice model."""
     from .roller import ProfiledRoller, iso_slicing
+    from .roller.slices import DEFAULT_N_SLICES
 
     if model == "profiled-roller":
-        roller = ProfiledRoller(R_eff, L, E, prof, n_slices=100 if n_slices is None
-                                else n_slices)
+        roller = ProfiledRoller(R_eff, L, E, prof, n_slices=DEFAULT_N_SLICES
+                                if n_slices is None else n_slices)
         return roller.at_force
     n = 30 if n_slices is None else n_slices
     return lambda F, tilt: iso_slicing(R_eff, L, E, prof, force=F, tilt=tilt, n_slices=n)

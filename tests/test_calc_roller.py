@@ -68,7 +68,8 @@ def test_json_carries_q_of_x(capsys):
     assert doc["models"][0]["rows"][0]["moment"] > 0
     row = blocks[0]["rows"][0]
     x, q = row["x"], row["q"]
-    assert len(x) == len(q) == 100
+    from linecontact.roller.slices import DEFAULT_N_SLICES
+    assert len(x) == len(q) == DEFAULT_N_SLICES       # the default slices, unrefined here
     w = row["width"]
     assert sum(qk * wk for qk, wk in zip(q, w)) == pytest.approx(1000.0, rel=1e-9)
     assert row["tilt"] == pytest.approx(5e-4, rel=1e-12)

@@ -59,12 +59,13 @@ by Newton's method on (q_k, q_k/b_k^2) with an active set; with the force (and z
 moment) imposed, d (and theta) join the same Newton iteration (a bordered system), and
 the exact stiffness matrix is the implicit derivative of the converged equations.
 
-Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md): circular crown
-against exact Hertz within 0.01 % in approach, p0, b and stiffness and 0.25 % in the
-contact half-length at 100 slices, converging at second order in the slice width; a
-straight roller within 0.4 % of the universal curve at 100 slices for d R/L^2 <= 4e-3
-(0.65 % for a short, deeply pressed roller, L/R = 0.2 at d R/L^2 = 0.04), approaching
-it from below as about n^(-0.75) (the end singularity).
+Accuracy (measured, tests/test_roller.py and docs/profiled_rollers.md; at the default
+50 slices graded 0.8, tools/benchmarks/bench_roller_default_slices.py ``--exact``):
+circular crown against exact Hertz within 0.02 % in approach, p0 and stiffness,
+0.08 % in b and 0.26 % in the contact half-length, converging at second order in the
+slice width; a straight roller within 0.26 % of the universal curve for d R/L^2 <=
+4e-3 (0.53 % for a short, deeply pressed roller, L/R = 0.2 at d R/L^2 = 0.04),
+approaching it from below (the end singularity).
 
 Edge loading: on a half-space the pressure at a sharp roller end touched by the contact
 is singular (a rigid flat-ended punch, Johnson 1985 section 5.6); the per-slice peak
@@ -73,8 +74,8 @@ there grows without bound as the slices are refined. The solution then reports
 number. Where the profile's drop is infinite at the ends (ISO 16281, Lundberg) the
 contact stays microns inside them and the pressure stays finite: the overlap
 interval's end is located between the last grid point and the end, and where the peak
-is still unresolved the end slices are refined until it settles (within 0.72 % of a
-3D BEM on 16384 cells along the axis in the worst case measured; docs/
+is still unresolved the end slices are refined until it settles (within 0.83 % of a
+3D BEM on 8192 cells along the axis in the worst case measured; docs/
 profiled_rollers.md, "Slice convergence").
 
 Measured range: ``tables/roller_accuracy.csv`` (tools/studies/roller_study.py) maps this

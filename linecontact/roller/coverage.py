@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import math
 
+from .slices import DEFAULT_N_SLICES
+
 __all__ = []
 
 
@@ -71,11 +73,12 @@ def _pct(v):
 
 
 def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
-                   free_tilt=False, edge_loaded=False, n_slices=100, end_gap=None):
+                   free_tilt=False, edge_loaded=False, n_slices=DEFAULT_N_SLICES,
+                   end_gap=None):
     """The note on where a coupled-slice case lies relative to the range measured in
     tables/roller_accuracy.csv (L/D with D = 2R, F/(L E* D), |theta| given or free,
     the tilt drop |theta| L/2 over the largest rigid overlap `approach` [m], the profile
-    key, n_slices >= 100, and `end_gap`, the contact's distance from a roller end where
+    key, n_slices >= DEFAULT_N_SLICES (the table's), and `end_gap`, the contact's distance from a roller end where
     the profile's drop is infinite over L, None if there is no such end): names each
     quantity outside, and states the table's largest errors (off the ends, or edge
     loaded). Bounds with a relative slack of 1e-5 (the header prints 6 digits)."""
@@ -104,8 +107,8 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
             end_gap < cov["end_gap"][0] * (1 - _COVER_SLACK)):
         outside.append(f"the contact ends {end_gap:.2g} L from a roller end where the "
                        f"drop is infinite (measured down to {cov['end_gap'][0]:.2g} L)")
-    if n_slices < 100:
-        outside.append(f"n_slices = {n_slices} (measured with 100)")
+    if n_slices < DEFAULT_N_SLICES:
+        outside.append(f"n_slices = {n_slices} (measured with {DEFAULT_N_SLICES})")
     off, edge = cov["off"], cov["edge"]
     if edge_loaded:
         errs = (f"edge loaded: deflection {_pct(edge['depth'])}, moment "

@@ -12,7 +12,7 @@ from ..profiles import as_profile
 from ..validity import check_positive, out
 from .iso import iso_slicing
 from .model import ProfiledRoller
-from .slices import TILT_RANGE
+from .slices import DEFAULT_N_SLICES, TILT_RANGE
 
 __all__ = ["ProfiledRollerModel", "ISOSlicingModel"]
 
@@ -329,7 +329,7 @@ class ProfiledRollerModel(_SolvedRoller):
     tilt : float, optional
         Tilt theta [rad], held fixed (default 0).
     n_slices : int, optional
-        Number of slices [-] (default 100).
+        Number of slices [-] (default 50).
 
     Notes
     -----
@@ -360,7 +360,8 @@ class ProfiledRollerModel(_SolvedRoller):
     _slices = "coupled slices"
     _onset_power = 1.5          # a crowned roller starts as a point contact, F ~ d^(3/2)
 
-    def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=100):
+    def __init__(self, radius, length, estar, profile=None, tilt=0.0,
+                 n_slices=DEFAULT_N_SLICES):
         super().__init__(radius, length, estar, tilt)
         self.roller = ProfiledRoller(self.radius, self.length, self.estar, profile,
                                      n_slices=n_slices)

@@ -13,8 +13,8 @@ from ..profiles import as_profile, is_free_tilt, roller_drop
 from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
 from .._numerics import serial_blas
 from .coverage import coverage_note, geometry_cause
-from .slices import (N_SLICES, SLICE_GRADING, TILT_RANGE, ConvergenceError,
-                     SliceEquations, check_engine, resolve_engine)
+from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
+                     ConvergenceError, SliceEquations, check_engine, resolve_engine)
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["ProfiledRoller", "roller_contact"]
@@ -25,7 +25,7 @@ DEFAULT_GRADING = 0.8
 #: refinements of the end slices where the peak is not resolved, and the change in
 #: p_max between the last two below which it counts as converged
 #: (ProfiledRoller._end_refined; docs/profiled_rollers.md, "Slice convergence")
-REFINE_LEVELS = 3
+REFINE_LEVELS = 5
 REFINE_TOL = 2e-3
 #: the relative distances from an infinite-drop end at which _end_root looks first
 _END_STEPS = np.geomspace(1.0, 1e-6, 40)
@@ -57,14 +57,14 @@ class ProfiledRoller:
         ``D=`` takes D = 2R, the roller's diameter only on a flat; against a raceway
         write ``"iso16281:D=..."``.
     n_slices : int, optional
-        Number of slices n, 10 <= n <= 4000 [-] (default 100).
+        Number of slices n, 10 <= n <= 4000 [-] (default 50).
     grading : float, optional
         Grading of the slice widths towards both ends of the overlap interval,
         0 <= grading < 1 [-]: the end slices are (1 - grading) times the uniform width
         and the middle ones (1 + grading) times (default 0.8; 0: uniform slices). The
         pressure varies fastest near the contact's ends (a crown's edge, a profile's
         end zone, an end relief); graded slices resolve its peak there: with the
-        default the peak pressure is within 0.5 % of the converged 3D BEM over
+        defaults the peak pressure is within 0.9 % of the converged 3D BEM over
         tables/roller_accuracy.csv, where 100 uniform slices were 3 % off
         (docs/profiled_rollers.md, "Slice convergence").
     refine_ends : bool, optional
@@ -72,8 +72,9 @@ class ProfiledRoller:
         end, or in the end zone of an end where the profile's drop is infinite, e.g.
         a logarithmic profile at a high load, whose contact ends microns before the
         roller end), solve again with the three end slices at each end split into
-        slices growing geometrically from 1/32, 1/64, 1/128 of their width, until two
-        successive refinements agree within 0.2 % in p_max (default True; False:
+        slices growing geometrically from 1/32, 1/64, ... 1/512 of their width (up to
+        five levels), until two successive refinements agree within 0.2 % in p_max
+        (default True; False:
         report the unrefined solution, flagged). Solutions whose peak is resolved
         are not affected.
     engine : {"auto", "numpy", "numba"}, optional
@@ -106,7 +107,7 @@ class ProfiledRoller:
     See the module docstring.
     """
 
-    def __init__(self, radius, length, estar, profile=None, n_slices=100,
+    def __init__(self, radius, length, estar, profile=None, n_slices=DEFAULT_N_SLICES,
                  grading=DEFAULT_GRADING, refine_ends=True, engine="auto"):
         self.radius = float(check_positive("radius", radius, "m"))
         self.length = float(check_positive("length", length, "m"))
@@ -120,6 +121,7 @@ class ProfiledRoller:
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
+        self._end_cache = {}
         self.refine_ends = check_flag("refine_ends", refine_ends)
         self.engine = check_engine(engine)
         self._refine = 0
@@ -214,23 +216,41 @@ class ProfiledRoller:
         interval's width down to 1e-6 of it), then on 33 even points in the bracket,
         and interpolated linearly there, as on the grid (continuous in d and theta).
         Returns the end and its derivatives with respect to (d, theta)."""
-        L = self.length
-        end = side * L / 2
-        u = abs(end - x_in) * _END_STEPS                     # distances from the end
+        end = side * self.length / 2
+        key = (side, x_in)
         for level in range(2):
-            x = end - side * u
-            over = d + th * x - roller_drop(self.profile, L, x)
+            u, x, P = self._end_points(key, end, side, x_in)
+            over = d + th * x - P
             out = np.flatnonzero(over <= 0)
             if len(out) == 0:           # overlapping to within 1e-6 of the interval
                 return float(x[-1]), (0.0, 0.0)
             k = int(out[0])             # over[0] > 0: x_in is inside the interval
-            if level == 0:
-                u = np.linspace(u[k - 1], u[k], 33)
+            key += (k,)
         o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
         return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+
+    def _end_points(self, key, end, side, x_in):
+        """The distances u from the end, the points x and the drop there of one level
+        of _end_root's search: key (side, x_in) the 40 graded points, key (side, x_in,
+        k) the 33 even points between the first level's points k - 1 and k. They depend
+        only on the key: cached, as the Newton steps of a solve, and the solves of a
+        sweep, meet the same few."""
+        hit = self._end_cache.get(key)
+        if hit is None:
+            if len(key) == 2:
+                u = abs(end - x_in) * _END_STEPS
+            else:
+                u0 = self._end_points(key[:2], end, side, x_in)[0]
+                u = np.linspace(u0[key[2] - 1], u0[key[2]], 33)
+            x = end - side * u
+            hit = (u, x, roller_drop(self.profile, self.length, x))
+            if len(self._end_cache) >= 64:
+                self._end_cache.clear()
+            self._end_cache[key] = hit
+        return hit
 
     def _slope(self, x):
         """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""
@@ -299,8 +319,8 @@ class ProfiledRoller:
     def _end_refined(self, solve):
         """`solve()`, and where its peak is not resolved (at the contact's end, or in
         the end zone of an infinite-drop end) solved again with the end slices split
-        (slices.end_refined, levels 1, 2, 3: end slices 1/32, 1/64, 1/128 of the
-        three base slices they replace, growing by at most 10 % a slice), each from
+        (slices.end_refined, levels 1 to REFINE_LEVELS: end slices 1/32, 1/64, ...
+        of the three base slices they replace, growing by at most 10 % a slice), each from
         the last solution, until two successive levels resolve the peak and agree
         within REFINE_TOL. Otherwise the finest level solved is returned, flagged
         unresolved, with the change it measured."""
@@ -363,12 +383,13 @@ class ProfiledRoller:
         s = self._grid(d, th)
         warm = self._warm_start(s, d, th)
         first = None
-        # the last solution as it is where its force is within 10 % (an end refinement
-        # solves the same force again; a close sweep step), else its strip widths in
-        # the bordered linear start
-        close = (warm is not None and self._memo is not None and force is not None
-                 and abs(force / self._memo[2] - 1) < 0.1)
-        if force is not None and not close:
+        if force is not None:
+            # the bordered linear start, with the last solution's strip widths where
+            # there is one (a sweep, an end refinement). Starting from its loads as they
+            # are, mapped onto this grid, took more Newton steps where the force was
+            # within 10 % of it: the refined end slices' loads are poor there (over the
+            # 104 cases of tables/roller_accuracy.csv the refinements' re-solves took
+            # 396 steps that way, 184 this way; a 20-force sweep 427 and 252 at 2 mrad)
             width = None
             if warm is not None:
                 # the last solution's strip widths, scaled as b ~ overlap^(1/2)
@@ -656,7 +677,7 @@ class ProfiledRoller:
 
 
 def roller_contact(radius, length, estar, profile=None, *, depth=None, force=None,
-                   tilt=0.0, n_slices=100):
+                   tilt=0.0, n_slices=DEFAULT_N_SLICES):
     """Solve a profiled, tilted roller on a flat at a depth or a force (coupled slices).
 
     .. math:: h(x, y) = y^2/(2R) + P(x) - \\theta x
@@ -681,7 +702,7 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
     tilt : float or str, optional
         Tilt theta [rad] (default 0), or ``"free"``.
     n_slices : int, optional
-        Number of slices [-] (default 100).
+        Number of slices [-] (default 50).
 
     Returns
     -------
@@ -701,7 +722,7 @@ def roller_contact(radius, length, estar, profile=None, *, depth=None, force=Non
     --------
     >>> s = roller_contact(10e-3, 20e-3, 115.385e9, "circular:Rc=0.2", force=2000.0)
     >>> f"{s.depth * 1e6:.2f} um, b {s.half_width.max() * 1e3:.4f} mm"
-    '13.92 um, b 0.2861 mm'
+    '13.92 um, b 0.2859 mm'
 
     References
     ----------

@@ -126,7 +126,8 @@ def slicing(n, rep, coupled=False):
     30 slices touching at 30 depths: F(d) and d(F) of n values from the tables, the
     first call on a new model (it builds the table) apart, and the direct solves of
     2000 values scaled to n; the table against the solves at 500 of the points.
-    ``coupled``: the same for the coupled-slice law (``profiled-roller``, 100 slices,
+    ``coupled``: the same for the coupled-slice law (``profiled-roller``, default
+    slices: 50 since issue 20's fourth round, 100 in the earlier records,
     1 mrad; 200 direct solves scaled, 100 check points: each is a coupled solve)."""
     from linecontact.roller.laws import ISOSlicingModel, ProfiledRollerModel
 

@@ -162,7 +162,7 @@ def report(rows, bem, table_path):
     t_rt = [r["seconds"] for r in rows]
     c_rt = [r["cpu"] for r in rows]
     t_tot = [r["seconds_total"] for r in rows]
-    say(f"runtime solve (100 slices): CPU median {statistics.median(c_rt) * 1e3:.1f} ms, "
+    say(f"runtime solve (default slices): CPU median {statistics.median(c_rt) * 1e3:.1f} ms, "
         f"largest {max(c_rt) * 1e3:.0f} ms; wall median {statistics.median(t_rt) * 1e3:.1f}"
         f" ms, largest {max(t_rt) * 1e3:.0f} ms (model construction included: wall median "
         f"{statistics.median(t_tot) * 1e3:.1f} ms)")

@@ -2,14 +2,15 @@
 and of the coarse 3D BEM on the same case (CPU time, medians).
 
     OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_speed [--repeat 30]
-        [--sweep 20] [--bem-repeat 3] [--no-bem] [--n-slices 100]
+        [--sweep 20] [--bem-repeat 3] [--no-bem] [--n-slices N]
 
 The case: the ISO 16281 profile of tables/roller_accuracy.csv (D = 10 mm, L = 14 mm,
 E* = 115.385 GPa), 4200 N (300 N/mm), tilt 2 mrad given (the table's case whose peak
 pressure was 3 % off with 100 uniform slices), and the same at a free (zero-moment)
 tilt. Measured:
 
-1. one solve, cold: a new ``ProfiledRoller`` (default slices) and ``at_force``,
+1. one solve, cold: a new ``ProfiledRoller`` (the version's default slices, 50 since
+   issue 20's fourth round and 100 before, or ``--n-slices``) and ``at_force``,
    ``--repeat`` times, median CPU time (``time.process_time``: on a shared, loaded
    machine what other jobs do not inflate; single-threaded BLAS);
 2. a load sweep: ``at_force`` of ``--sweep`` forces from 100 to 2000 N/mm on one roller
@@ -68,7 +69,8 @@ def main(argv=None):
     ap.add_argument("--sweep", type=int, default=20)
     ap.add_argument("--bem-repeat", type=int, default=3)
     ap.add_argument("--no-bem", action="store_true")
-    ap.add_argument("--n-slices", type=int, default=100)
+    ap.add_argument("--n-slices", type=int, default=None,
+                    help="slice count (default: the checkout's own default)")
     ap.add_argument("--no-refine", action="store_true")
     ap.add_argument("--against", default=None, metavar="DIR")
     ap.add_argument("--rounds", type=int, default=2)
@@ -82,6 +84,8 @@ def main(argv=None):
     extra = {"refine_ends": False} if a.no_refine else {}
     if a.engine is not None:                # only where given: older versions lack it
         extra["engine"] = a.engine
+    if a.n_slices is not None:
+        extra["n_slices"] = a.n_slices
 
     import linecontact
     from linecontact.roller import ProfiledRoller
@@ -91,13 +95,12 @@ def main(argv=None):
     prof = rs.make_profile("iso16281", L, R, ESTAR)
 
     def cold(force, tilt):
-        return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices,
-                              **extra).at_force(force, tilt=tilt)
+        return ProfiledRoller(R, L, ESTAR, prof, **extra).at_force(force, tilt=tilt)
 
     cold(FORCE, TILT)                      # the strip-function table, built once
     print(f"linecontact from {os.path.relpath(linecontact.__file__)}")
     print(f"case: ISO 16281 profile, D {D * 1e3:g} mm, L {L * 1e3:g} mm, F {FORCE:g} N, "
-          f"{a.n_slices} slices (default spacing of this version)"
+          f"{a.n_slices or 'default'} slices (default spacing of this version)"
           + (", refine_ends=False" if a.no_refine else "")
           + (f", engine={a.engine}" if a.engine else ""))
     rows = {}
@@ -112,8 +115,7 @@ def main(argv=None):
     forces = np.linspace(100e3, 2000e3, a.sweep) * L
     for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
         def sweep():
-            return ProfiledRoller(R, L, ESTAR, prof, n_slices=a.n_slices,
-                                  **extra).at_force(forces, tilt=tilt)
+            return ProfiledRoller(R, L, ESTAR, prof, **extra).at_force(forces, tilt=tilt)
 
         def singles():
             return [cold(f, tilt) for f in forces]
@@ -145,6 +147,8 @@ def _kernel_costs(a):
     (--repeat pairs, the engines alternating)."""
     import json
     import tempfile
+
+    slices = {} if a.n_slices is None else {"n_slices": a.n_slices}
 
     probe = (
         "import json, os, time\n"
@@ -184,7 +188,7 @@ def _kernel_costs(a):
     from tools.studies import roller_study as rs
 
     prof = rs.make_profile("iso16281", L, D / 2, ESTAR)
-    roller = ProfiledRoller(D / 2, L, ESTAR, prof, n_slices=a.n_slices, engine="numpy")
+    roller = ProfiledRoller(D / 2, L, ESTAR, prof, engine="numpy", **slices)
     sol = roller.at_force(FORCE, tilt=TILT)
     times = {}
     for engine in ("numpy", "numba"):
@@ -216,7 +220,7 @@ def _kernel_costs(a):
         for i in range(a.repeat):
             for engine in (("numpy", "numba") if i % 2 == 0 else ("numba", "numpy")):
                 c0 = time.process_time()
-                ProfiledRoller(D / 2, L, ESTAR, prof, n_slices=a.n_slices,
+                ProfiledRoller(D / 2, L, ESTAR, prof, **slices,
                                engine=engine).at_force(FORCE, tilt=tilt)
                 ts[engine].append(time.process_time() - c0)
         ratios = [b / n for b, n in zip(ts["numba"], ts["numpy"])]

@@ -28,7 +28,8 @@ tilt: the roller free to tilt, zero moment):
    pressure is then a singular end peak that depends on the grid (reported, never
    used as a target).
 2. The runtime coupled-slice model of linecontact.roller (``ProfiledRoller.at_force``,
-   100 slices) at the same F and theta, and the ISO 16281 slicing method
+   default settings: 50 slices since issue 20's fourth round, 100 before) at the same
+   F and theta, and the ISO 16281 slicing method
    (``iso_slicing``, 30 slices) with its misalignment term; each gives an approach d,
    a moment M, a peak pressure, the stiffnesses dF/dd and dM/dtheta and, where free,
    the tilt.
@@ -58,6 +59,7 @@ cases (about 2 min).
 """
 from __future__ import annotations
 
+import re
 import time
 from pathlib import Path
 
@@ -241,15 +243,15 @@ def _peak(sol):
     return float(sol.p_max) if sol.p_max is not None else float(np.max(sol.pressure))
 
 
-def runtime_case(task, n_slices=100):
+def runtime_case(task, n_slices=None):
     """The runtime coupled-slice model (linecontact.roller.ProfiledRoller) at the case's
     F and theta: d, M, p_max, stiffnesses, edge loading and the wall and CPU seconds of
     the solve (the model built once beforehand; CPU time is what a shared machine's
-    load does not inflate)."""
+    load does not inflate); `n_slices` None: the model's default."""
     from linecontact.roller import ProfiledRoller
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
-                           n_slices=n_slices)
+                           **({} if n_slices is None else {"n_slices": n_slices}))
     t0, c0 = time.perf_counter(), time.process_time()
     r = model.at_force(task["force"], tilt="free" if task["tilt"] is None else task["tilt"])
     dt, dc = time.perf_counter() - t0, time.process_time() - c0
@@ -287,7 +289,12 @@ def errors(ref, got, task):
 def run_case(task):
     """One study case: the BEM reference, the runtime and ISO slicing, and their errors
     (a module-level function of one task, for tools.studies.runner.run_study)."""
-    ref = bem_case(task)
+    return compare_case(task, bem_case(task))
+
+
+def compare_case(task, ref):
+    """The runtime and ISO slicing of one case against its BEM reference `ref` (the
+    dict of bem_case), and their errors: the result of run_case."""
     out = {f"bem_{k}": v for k, v in ref.items()}
     for name, fn in (("rt", runtime_case), ("iso", iso_case)):
         got = fn(task)
@@ -304,6 +311,48 @@ def run_case(task):
             out[f"{name}_seconds"] = got["seconds"]
             out[f"{name}_cpu_seconds"] = got["cpu_seconds"]
     return out
+
+
+def bem_from_table(tasks, table, n_x, n_y, tol):
+    """The BEM references of `tasks` (dicts as bem_case returns them) read back from
+    an earlier roller_accuracy table (``--bem-from``), whose cases, grids and
+    tolerance must be this run's: the inverse of tabulate's bem_* columns (the
+    observed orders are not columns: NaN, the table's ``accuracy`` line keeps them)."""
+    c = table.columns
+    tol_field = str(table.meta.get("tolerance", "")).split(" ")[0]
+    if tol_field != f"{tol:g}":
+        raise ValueError(f"--bem-from: the table's tolerance is {tol_field}, this run's "
+                         f"{tol:g}")
+    refs = []
+    for t in tasks:
+        free = t["tilt"] is None
+        m = ((np.abs(c["roller_length"] - t["length"]) < 1e-12)
+             & (c["profile"] == CODES[t["profile"]])
+             & (np.abs(c["force"] - t["force"]) <= 1e-9 * t["force"])
+             & (c["free_tilt"] == float(free))
+             & (free | (np.abs(c["tilt"] - (t["tilt"] or 0.0)) < 1e-12)))
+        i = np.flatnonzero(m)
+        if i.size != 1:
+            raise ValueError(f"--bem-from: case {t['key']} is {i.size} times in the table "
+                             "(1 expected: the same cases)")
+        i = int(i[0])
+        if c["bem_nx"][i] != END_GRIDS[1][0] and (c["bem_nx"][i], c["bem_ny"][i]) != (
+                2 * n_x, 2 * n_y):
+            raise ValueError(f"--bem-from: case {t['key']} has a finer grid of "
+                             f"{c['bem_nx'][i]:g} x {c['bem_ny'][i]:g} cells, this run "
+                             f"{2 * n_x} x {2 * n_y}")
+        r = {k: float(c[f"bem_{k}"][i]) for k in (
+            "depth", "delta", "moment", "p_max", "x_at_p_max", "contact_length",
+            "end_gap", "stiffness", "tilt_stiffness", "nx", "ny", "change_p_max",
+            "change_stiffness", "change_tilt_stiffness", "seconds")}
+        scale_m = abs(r["moment"]) if t["tilt"] else t["force"] * t["length"] / 2
+        r.update(tilt=float(c["tilt"][i]), edge=bool(c["bem_edge"][i]),
+                 change_depth=c["bem_change_depth"][i] * r["delta"],
+                 change_moment=c["bem_change_moment"][i] * scale_m,
+                 change_tilt=c["bem_change_tilt"][i] * c["tilt"][i] if free else 0.0,
+                 order_depth=np.nan, order_moment=np.nan)
+        refs.append(r)
+    return refs
 
 
 # --- the study ---------------------------------------------------------------------
@@ -334,6 +383,12 @@ def add_arguments(parser):
     parser.add_argument("--figure",
                         default=str(REPO / "docs" / "figures" / "roller_accuracy.png"),
                         help="where to write the figure ('' for none)")
+    parser.add_argument("--bem-from", type=Path, default=None, metavar="CSV",
+                        help="take the BEM columns of an earlier roller_accuracy.csv "
+                             "(the same cases, grids and tolerance; its accuracy line, "
+                             "provenance and time are carried into the header) and "
+                             "recompute only the runtime and ISO slicing columns: for a "
+                             "change of linecontact.roller, which the 3D BEM does not use")
     add_runner_arguments(parser)
 
 
@@ -554,10 +609,44 @@ def run(args):
 
     tasks = study_tasks(args.n_x, args.n_y, args.tol, args.check_every, args.quick)
     t0 = time.perf_counter()
-    results = run_study_from_args(run_case, tasks, args, desc="roller study")
+    old = None
+    if args.bem_from is not None:
+        from linecontact.tables import read_table
+        old = read_table(args.bem_from.stem, directory=args.bem_from.parent)
+        refs = bem_from_table(tasks, old, args.n_x, args.n_y, args.tol)
+        results = [compare_case(t, r) for t, r in zip(tasks, refs)]
+    else:
+        results = run_study_from_args(run_case, tasks, args, desc="roller study")
     wall = time.perf_counter() - t0
     col = tabulate(tasks, results)
     s = summarise(col, tasks, results)
+    accuracy = (
+        f"BEM grid change (coarse to fine) off the ends: d {s['bem_off_d']:.1e}, "
+        f"M {s['bem_off_m']:.1e}, p_max {s['bem_off_p']:.1e}; edge loaded: d "
+        f"{s['bem_edge_d']:.1e}, M {s['bem_edge_m']:.1e}; all cases: dF/dd "
+        f"{s['bem_k']:.1e}, dM/dtheta {s['bem_kt']:.1e} (flat and tilted punch on "
+        "the staircase contact set); observed orders "
+        f"{s['orders']} (from three grids; they scatter where the changes are "
+        "1e-5-1e-4, at the staircase contact boundary's level)")
+    wall_line = (wall_time_line(wall, results, "cases", args.scheduler, args.workers)
+                 + f"; the per-case times sum to {s['case_seconds']:.0f} s")
+    reuse = {}
+    if old is not None:
+        # the BEM columns are the earlier table's: its accuracy line (the observed
+        # orders are not columns) and its provenance and time
+        accuracy = old.meta["accuracy"]
+        # the earlier command, its checkpoint folder (a local path) named generically
+        old_cmd = re.sub(r"--checkpoint[ =]\S+", "--checkpoint DIR",
+                         str(old.meta.get("generated_by")))
+        reuse["bem_from"] = (
+            f"the bem_* columns (and the accuracy line) are those of the earlier "
+            f"{args.bem_from.name}, reused unchanged (the 3D BEM does not use "
+            f"linecontact.roller): written by '{old_cmd}', "
+            f"{old.meta.get('version')}, {old.meta.get('date')}; its wall_time: "
+            f"{old.meta.get('wall_time')}")
+        wall_line = (f"{wall:.1f} s for the runtime and ISO slicing columns of "
+                     f"{len(tasks)} cases in one process (the BEM columns reused: "
+                     "bem_from)")
     units = ", ".join(f"{k} [{u}]" for k, u in COLUMNS_UNITS.items())
     meta = table_meta(
         args.command_line,
@@ -602,13 +691,7 @@ def run(args):
              "third grid",
         tolerance=f"{args.tol:g} (gap error / largest interference); force 1e-6 F; "
                   "moment 1e-6 F L/2",
-        accuracy=f"BEM grid change (coarse to fine) off the ends: d {s['bem_off_d']:.1e}, "
-                 f"M {s['bem_off_m']:.1e}, p_max {s['bem_off_p']:.1e}; edge loaded: d "
-                 f"{s['bem_edge_d']:.1e}, M {s['bem_edge_m']:.1e}; all cases: dF/dd "
-                 f"{s['bem_k']:.1e}, dM/dtheta {s['bem_kt']:.1e} (flat and tilted punch on "
-                 "the staircase contact set); observed orders "
-                 f"{s['orders']} (from three grids; they scatter where the changes are "
-                 "1e-5-1e-4, at the staircase contact boundary's level)",
+        accuracy=accuracy,
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "
@@ -624,9 +707,8 @@ def run(args):
                   f"{s['iso_kt']:.2%}",
         covered=s["range"],
         **s["covered_fields"],
-        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers)
-                  + f"; the per-case times sum to {s['case_seconds']:.0f} s; "
-                  f"median per case: BEM "
+        **reuse,
+        wall_time=wall_line + "; median per case: BEM "
                   f"{s['bem_seconds']:.2f} s (both grids, wall), runtime solve "
                   f"{s['rt_seconds'] * 1e3:.1f} ms wall, {s['rt_cpu_seconds'] * 1e3:.1f} ms "
                   "CPU",

@@ -15,7 +15,8 @@ the fine grid, the traction mu p in +y with mu = 0.1 and 0.2):
    each plane, refined in depth by a parabola through the best plane and its two
    neighbours. The fine grid is the reference; the change from the coarse one is its
    stated resolution (``bem_change_*``).
-2. The runtime: linecontact.roller.ProfiledRoller (100 slices) at the same F and
+2. The runtime: linecontact.roller.ProfiledRoller (default settings: 50 slices since
+   issue 20's fourth round, 100 before) at the same F and
    theta, then linecontact.stresses.roller_stresses: the worst of each measure over the
    roller, and the wall/CPU time of the stresses against that of the contact solve.
 3. Errors: value/value_3D - 1 per measure (``err_*``) and the depth difference over b
@@ -36,6 +37,8 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from linecontact.roller.slices import DEFAULT_N_SLICES
 
 from ..bem.roller import grid_convergence, solve_roller_force
 from ..bem.stress import MEASURES, StressField
@@ -138,7 +141,7 @@ def bem_case(task):
                 contact_seconds=t1 - t0, field_seconds=time.perf_counter() - t1)
 
 
-def runtime_case(task, n_slices=100):
+def runtime_case(task, n_slices=None):
     """The runtime model and its stresses (strips alone and 3D-corrected, without and
     with friction), with the wall and CPU times of the solve and the 3D-corrected
     frictionless stresses."""
@@ -146,7 +149,7 @@ def runtime_case(task, n_slices=100):
     from linecontact.stresses import reaches_end, roller_stresses
     prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
-                           n_slices=n_slices)
+                           **({} if n_slices is None else {"n_slices": n_slices}))
     t0, c0 = time.perf_counter(), time.process_time()
     sol = model.at_force(task["force"], tilt=task["tilt"])
     t1, c1 = time.perf_counter(), time.process_time()
@@ -304,7 +307,8 @@ def run(args):
         grid=f"BEM: adapted window (contact box x 1.25, |y| <= 1.25 b), {args.n_x} x "
              f"{args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells (the finer the "
              f"reference); stress planes z/b = {DEPTHS_OVER_B[0]:g}-{DEPTHS_OVER_B[-1]:g} "
-             "step 0.1 at the cell centres; runtime: 100 slices; grid convergence of the "
+             "step 0.1 at the cell centres; runtime: the default settings "
+             f"({DEFAULT_N_SLICES} slices); grid convergence of the "
              "reference beyond these two grids: tools/benchmarks/bench_stresses.py "
              "--grid-case",
         tolerance=f"{args.tol:g} (BEM gap error / largest interference); force 1e-6 F",

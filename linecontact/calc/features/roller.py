@@ -18,7 +18,7 @@
 With any of them the contact is the library's composed contact
 (:class:`linecontact.contact.Contact` with a :class:`~linecontact.contact.Roller` of
 that profile and tilt): its models are the coupled-slice model (``profiled-roller``,
-100 slices) and, for steel, ISO 16281 slicing (``iso16281-slicing``, 30 slices), and
+50 slices) and, for steel, ISO 16281 slicing (``iso16281-slicing``, 30 slices), and
 a straight-cylinder law named with ``--model`` is refused for it. Every other feature
 composes with it: the tangential law is the profiled contact's own (from its F(d)), the
 raceways carry the profiled roller on both contacts. Columns: moment, tilt, tilt
@@ -55,7 +55,7 @@ parameters = (
 NAMES = tuple(p.name for p in parameters)
 
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
-        "coupling along the axis; linecontact.roller), 100 slices graded towards the "
+        "coupling along the axis; linecontact.roller), 50 slices graded towards the "
         "contact's ends; M: moment about the "
         "roller centre; p max: peak pressure (not printed where the contact reaches a "
         "roller end: singular there on a half-space, 'edge'); ISO 16281 slicing: "

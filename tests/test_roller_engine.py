@@ -101,16 +101,25 @@ def test_compiled_linearised_equals_numpy(grid):
                 _close(x, y, f"{grid} {name} ns={len(S)} nt={len(T)}")
 
 
-def test_compiled_falls_back_outside_the_spline_table():
-    """A strip far wider than the slices (tau = w/2b < 1e-4 on the diagonal, outside the
-    spline table) is evaluated by the numpy code (series/quadrature) under either
-    engine: the results agree."""
+def test_compiled_outside_the_spline_table():
+    """Beyond the spline table, t/b >= 1e4 (a slice about to leave, its strip
+    nanometres wide: b = 1e-12 m here), the compiled code takes the series itself and
+    agrees with the numpy code (which does the same); below it, t/b < 1e-4 (a strip
+    far wider than the slices, b = 20 m), the call goes to the numpy code (series and
+    quadrature) under either engine. Both: 1e-12 of each matrix's largest entry."""
     pytest.importorskip("numba")
+    from linecontact.roller import _compiled
+
     a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, "numba")
     S = np.arange(60)
-    bS = np.full(60, 20.0)                    # b = 20 m >> w = 0.2 mm
-    for x, y, name in zip(a.kernels(S, bS), b.kernels(S, bS), "A D EA ED".split()):
-        _close(x, y, name)
+    tiny = np.full(60, 1e-4)
+    tiny[[0, 7, 59]] = 1e-12                 # w/2b ~ 1e8 on those diagonals
+    got = _compiled.kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
+                            sl._far_geometry(*b._geometry), sl._FAR_COEF, False)
+    assert got is not None, "the compiled code fell back to numpy beyond the table"
+    for bS in (tiny, np.full(60, 20.0)):
+        for x, y, name in zip(a.kernels(S, bS), b.kernels(S, bS), "A D EA ED".split()):
+            _close(x, y, name)
 
 
 CASES = [
@@ -278,3 +287,25 @@ def test_compiled_engine_without_a_writable_cache():
                          check=True).stdout.split()
     assert out[0] == "1", f"{out[0]} warnings that the compiled code is not cached"
     assert out[1:] == ["True", "True"], out
+
+
+def test_auto_switches_within_a_sweep():
+    """A load sweep on one roller with engine='auto' (the switching point lowered to
+    30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
+    imported part-way, and every row equals the numpy engine's sweep within 1e-10."""
+    pytest.importorskip("numba")
+    code = (
+        "import sys, numpy as np\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "slices.AUTO_SWITCH_STEPS = 30\n"
+        "F = np.linspace(500.0, 8000.0, 12)\n"
+        "auto = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281').at_force(F, tilt=1e-3)\n"
+        "print('linecontact.roller._compiled' in sys.modules)\n"
+        "ref = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281', engine='numpy')"
+        ".at_force(F, tilt=1e-3)\n"
+        "print(max(max(abs(a.depth / r.depth - 1), abs(a.p_max / r.p_max - 1))"
+        " for a, r in zip(auto, ref)))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "True", "engine='auto' never switched to the compiled kernels"
+    assert float(out[1]) <= 1e-10, out

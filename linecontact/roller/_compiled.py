@@ -17,9 +17,10 @@ spline's ln(t/b) is ln t + ln(span/b) with ln t cached (one log per source, not 
 per pair). The Jacobian, residual and grid terms are assembled from each source's
 column as it is computed, without the four intermediate matrices.
 
-A spline argument outside the table (tau < 1e-4 or >= 1e4, which the numpy code
-evaluates by series or quadrature) makes a function return False: the caller then
-takes the numpy path for that call.
+Beyond the table (tau >= 1e4: a strip far narrower than the slices, a slice about to
+leave the contact) the strip functions come from their series, as in the numpy code;
+below it (tau < 1e-4, a strip thousands of slices wide: the quadrature) a function
+returns False and the caller takes the numpy path for that call.
 
 Imported only when the compiled engine is asked for (importing numba costs a few
 hundred ms; the compiled code is cached on disk next to this file, or in numba's
@@ -32,7 +33,7 @@ import warnings
 import numba
 import numpy as np
 
-from .kernel import spline_table
+from .kernel import R_INF, spline_table
 
 __all__ = []
 
@@ -78,13 +79,16 @@ def _far_powers(b, span, fc):
 _far_powers = _jit(_far_powers)
 
 
-def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, far, taumax, tmin, tmax,
-            coef, z0, ih, h, W, bnd):
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, taumax,
+            tmin, tmax, coef, z0, ih, h, W, bnd):
     """The four kernels of source slice si (strip half-width bi, far-field series
-    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED. tn, tf, lr,
+    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED (the far
+    field of A alone unless `full`: W[1:] then undefined there). tn, tf, lr,
     their logs ltn, ltf and Gt are indexed [source, target] (transposed); the spline's
-    ln(t/b) is ln t + ln(span/b), one log per source. Returns False where a spline
-    argument leaves the table [tmin, tmax).
+    ln(t/b) is ln t + ln(span/b), one log per source. At t/b >= tmax (a strip far
+    narrower than the slices: a slice about to leave the contact) the four functions
+    come from their series in (b/t)^2 (fc, as the numpy code's strip_values does);
+    returns False where t/b < tmin (the quadrature: then the numpy code).
 
     The near band, {k : tn[si, k] < 3 b/span} (the numpy code's test), is an interval
     [kl, kr] around si, since tn grows away from the source; outside it the far-field
@@ -132,6 +136,10 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, far, taumax, tmin
                     continue
                 gj = g[j, k0:k1]
                 w0, w1, w2, w3 = W[0, k0:k1], W[1, k0:k1], W[2, k0:k1], W[3, k0:k1]
+                if not full:
+                    for k in range(gj.shape[0]):
+                        w0[k] += gj[k] * c0
+                    continue
                 for k in range(gj.shape[0]):
                     w0[k] += gj[k] * c0
                     w1[k] += gj[k] * c1
@@ -163,9 +171,26 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, far, taumax, tmin
         r = ta = p = tp = 0.0
         for e in range(ntau):
             tau = tau0 if e == 0 else tau1
-            if not (tmin <= tau < tmax):
-                return False
             sg = 1.0 if e == 0 else -1.0
+            if tau >= tmax:
+                x = 1.0 / (tau * tau)
+                xp = 1.0
+                sr = sta = sp = stp = 0.0
+                for j in range(fc.shape[0]):
+                    xp *= x
+                    sr += fc[j, 0] * xp
+                    sta += fc[j, 1] * xp
+                    sp += fc[j, 2] * xp
+                    stp += fc[j, 3] * xp
+                    if xp * x < FAR_STOP:
+                        break
+                r += sg * (R_INF + sr)
+                ta += sg * (1.0 + sta)
+                p += sg * sp
+                tp += sg * stp
+                continue
+            if not tmin <= tau:
+                return False
             u = ((z0k if e == 0 else z1k) - z0) * ih
             i = int(u)
             if i > nseg - 1:
@@ -206,8 +231,8 @@ def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin,
     bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
     full = EA.shape[0] > 0
     for s in range(ns):
-        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, far,
-                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
+                       full, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         for kt in range(nt):
             A[kt, s] = W[0, T[kt]]
@@ -250,8 +275,8 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
     edc = np.zeros(ns)
     contiguous = S[ns - 1] - S[0] + 1 == ns
     for s in range(ns):
-        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, far,
-                       taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
+                       True, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
             return False
         qv = qs[s]
         cv = cs[s]

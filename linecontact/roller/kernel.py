@@ -23,6 +23,9 @@ __all__ = ["strip_influence"]
 
 
 _C0 = 0.5 + math.log(2.0)       # a(tau) - ln(2 tau) -> C0 as tau -> inf
+#: the limit of r = a(tau) - ln(2 tau) as tau -> inf, the constant term of its series in
+#: tau^-2 (far_field_coefficients gives the others)
+R_INF = _C0
 _TAU_SERIES = 2.5               # series for tau >= this, quadrature below
 _NTERMS = 28
 

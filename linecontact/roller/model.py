@@ -82,9 +82,9 @@ class ProfiledRoller:
         Who evaluates the slice equations' kernels and linearisation: "numpy" (the
         reference), "numba" (compiled loops, the same arithmetic: results equal within
         1e-10; needs numba, ``pip install linecontact[fast]``) or "auto" (default):
-        numpy until the process has taken 1500 Newton steps (about 150 solves), then
+        numpy until the process has taken 1500 Newton steps (some 150-200 solves), then
         numba where it is installed: importing numba and loading its cached code cost
-        about 0.4 s once, which the compiled engine repays at about 2.5 ms a solve
+        0.4-0.5 s once, which the compiled engine repays at 0.2-0.35 ms a step
         (docs/profiled_rollers.md, "Engines").
 
     Notes

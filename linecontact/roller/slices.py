@@ -158,12 +158,12 @@ def _far_geometry(n, grading, refine=0):
 #: one of these; SliceEquations.engine is "numpy" or "numba" (resolve_engine)
 ENGINES = ("auto", "numpy", "numba")
 #: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
-#: takes before it switches to the compiled engine, where numba is installed: about
-#: 150 solves at 100 slices, after which numpy has cost as much more than numba would
-#: have (about 2.5 ms a solve) as switching costs once (importing numba and loading
-#: its cached code, about 0.4 s): the break-even rule of renting against buying,
-#: never worse than twice the best choice in hindsight (docs/profiled_rollers.md,
-#: "Engines")
+#: takes before it switches to the compiled engine, where numba is installed: a numpy
+#: step costs 0.2-0.35 ms more than a compiled one at 50-100 slices, so by then numpy
+#: has cost about as much more than numba would have as switching costs once
+#: (importing numba and loading its cached code, 0.4-0.5 s): the break-even rule of
+#: renting against buying, never worse than twice the best choice in hindsight
+#: (docs/profiled_rollers.md, "Engines")
 AUTO_SWITCH_STEPS = 1500
 _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []

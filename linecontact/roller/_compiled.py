@@ -427,3 +427,76 @@ def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
                        grid):
         return None
     return res, J, rhs, gap, grid
+
+
+# -- the bordered Newton step's small arithmetic (SliceEquations.bordered) ------------
+# the numpy code there stays the reference: the same products by the same scalars
+# (computed by the caller), the sums over the loaded slices in another order
+
+def _scaled_system(J, res, rhs, ns, f_hi, f_lo, g_q, h_q, R, B):
+    """J's off-diagonal blocks scaled in place (J[:ns, ns:] * f_hi, J[ns:, :ns] *
+    f_lo) and the right-hand sides B (2 ns x 3): -res scaled (g_q = -1/qsc on the
+    load rows, -R on the curvature rows), then rhs scaled (h_q = 1/qsc, R)."""
+    n2 = 2 * ns
+    for j in range(ns, n2):
+        for i in range(ns):
+            J[i, j] *= f_hi
+    for j in range(ns):
+        for i in range(ns, n2):
+            J[i, j] *= f_lo
+    for i in range(ns):
+        B[i, 0] = res[i] * g_q
+        B[i, 1] = rhs[i, 0] * h_q
+        B[i, 2] = rhs[i, 1] * h_q
+    mR = -R
+    for i in range(ns, n2):
+        B[i, 0] = res[i] * mR
+        B[i, 1] = rhs[i, 0] * R
+        B[i, 2] = rhs[i, 1] * R
+
+
+_scaled_system = _jit(_scaled_system)
+
+
+def scaled_system(J, res, rhs, ns, qsc, R):
+    """The scaled Newton system of SliceEquations.bordered: J scaled in place, B new."""
+    B = np.empty((2 * ns, 3))
+    _scaled_system(J, res, rhs, ns, 1.0 / (qsc * R), qsc * R, -1.0 / qsc, 1.0 / qsc,
+                   float(R), B)
+    return B
+
+
+def _bordered_sums(z, ns, qsc, r_inv, w, x, S, qs, Wz):
+    """z unscaled in place (load rows times qsc, curvature rows times 1/R), and the
+    force and moment rows: returns (w.q, (w x).q) over the loaded slices S, Wz (2 x 3)
+    = those rows times z's load part."""
+    n2 = 2 * ns
+    for j in range(3):
+        for i in range(ns):
+            z[i, j] *= qsc
+        for i in range(ns, n2):
+            z[i, j] *= r_inv
+    wq = 0.0
+    wxq = 0.0
+    for j in range(3):
+        Wz[0, j] = 0.0
+        Wz[1, j] = 0.0
+    for i in range(ns):
+        wi = w[S[i]]
+        wx = wi * x[S[i]]
+        wq += wi * qs[i]
+        wxq += wx * qs[i]
+        for j in range(3):
+            Wz[0, j] += wi * z[i, j]
+            Wz[1, j] += wx * z[i, j]
+    return wq, wxq
+
+
+_bordered_sums = _jit(_bordered_sums)
+
+
+def bordered_sums(z, ns, qsc, R, w, x, S, qs):
+    """(w.q, (w x).q, Wz) of SliceEquations.bordered, z unscaled in place."""
+    Wz = np.empty((2, 3))
+    wq, wxq = _bordered_sums(z, ns, qsc, 1.0 / R, w, x, S, qs, Wz)
+    return wq, wxq, Wz

@@ -824,24 +824,34 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            J[:ns, ns:] *= 1.0 / (qsc * R)
-            J[ns:, :ns] *= qsc * R
-            B = np.empty((2 * ns, 3))
-            np.multiply(res[:ns], -1.0 / qsc, out=B[:ns, 0])
-            np.multiply(res[ns:], -R, out=B[ns:, 0])
-            np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
-            np.multiply(rhs[ns:], R, out=B[ns:, 1:])
+            # (the compiled engine does this step's small arithmetic in two calls,
+            # _compiled.scaled_system and .bordered_sums: the same products, the sums
+            # in another order)
+            jit = compiled() if s.engine == "numba" else None
+            if jit is not None:
+                B = jit.scaled_system(J, res, rhs, ns, qsc, R)
+            else:
+                J[:ns, ns:] *= 1.0 / (qsc * R)
+                J[ns:, :ns] *= qsc * R
+                B = np.empty((2 * ns, 3))
+                np.multiply(res[:ns], -1.0 / qsc, out=B[:ns, 0])
+                np.multiply(res[ns:], -R, out=B[ns:, 0])
+                np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
+                np.multiply(rhs[ns:], R, out=B[ns:, 1:])
             left = None
             while True:
                 z = np.linalg.solve(J, B)
-                z[:ns] *= qsc
-                z[ns:] *= 1.0 / R
-                W = np.empty((2, ns))
-                s.w.take(S, out=W[0])
-                np.multiply(W[0], s.x[S], out=W[1])
-                wq, wxq = W @ qs
+                if jit is not None:
+                    wq, wxq, Wz = jit.bordered_sums(z, ns, qsc, R, s.w, s.x, S, qs)
+                else:
+                    z[:ns] *= qsc
+                    z[ns:] *= 1.0 / R
+                    W = np.empty((2, ns))
+                    s.w.take(S, out=W[0])
+                    np.multiply(W[0], s.x[S], out=W[1])
+                    wq, wxq = W @ qs
+                    Wz = W @ z[:ns]
                 # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
-                Wz = W @ z[:ns]
                 K = Wz[:, 1:] + grid
                 lin = Wz[:, 0]
                 if force is not None and zero_moment:

@@ -500,3 +500,97 @@ def bordered_sums(z, ns, qsc, R, w, x, S, qs):
     Wz = np.empty((2, 3))
     wq, wxq = _bordered_sums(z, ns, qsc, 1.0 / R, w, x, S, qs, Wz)
     return wq, wxq, Wz
+
+
+def _step_out(z, s0, s1, ns, qs, dz, out):
+    """The step dz = z[:, 0] + z[:, 1:] (s0, s1) and the mask of the loaded slices it
+    drives below zero (q + dq < 0); returns how many."""
+    for i in range(2 * ns):
+        dz[i] = z[i, 0] + (z[i, 1] * s0 + z[i, 2] * s1)
+    k = 0
+    for i in range(ns):
+        out[i] = qs[i] + dz[i] < 0.0
+        if out[i]:
+            k += 1
+    return k
+
+
+_step_out = _jit(_step_out)
+
+
+def step_out(z, s0, s1, ns, qs):
+    """(dz, out, count) of SliceEquations.bordered's step."""
+    dz = np.empty(2 * ns)
+    out = np.empty(ns, dtype=np.bool_)
+    k = _step_out(z, float(s0), float(s1), ns, qs, dz, out)
+    return dz, out, k
+
+
+def _step_update(q, c, S, qs, cs, dq, dc, over, x, s0, s1, hit_q, res):
+    """The damped update of SliceEquations.bordered: alpha from the fraction to the
+    boundary (q to no less than 5 %, c to 20 % of its value; hit_q marks the slices
+    whose q limited it) and from the overlap (no step lowers it by more than half its
+    largest value); q[S], c[S] updated in place; res = (alpha, largest overlap,
+    largest |dq|, largest |dc|)."""
+    ns = S.shape[0]
+    alpha = 1.0
+    for i in range(ns):
+        hit_q[i] = qs[i] + dq[i] <= 0.05 * qs[i]
+        if hit_q[i]:
+            a = 0.95 * qs[i] / -dq[i]
+            if a < alpha:
+                alpha = a
+    amin = np.inf
+    for i in range(ns):
+        if cs[i] + dc[i] <= 0.2 * cs[i]:
+            a = 0.8 * cs[i] / -dc[i]
+            if a < amin:
+                amin = a
+    if amin < alpha:
+        alpha = amin
+    dmax = over[0]
+    for i in range(1, over.shape[0]):
+        if over[i] > dmax:
+            dmax = over[i]
+    if s1 != 0.0:
+        lowest = np.inf
+        for i in range(ns):
+            v = s0 + s1 * x[S[i]]
+            if v < lowest:
+                lowest = v
+        drop = -lowest
+    else:
+        drop = -s0
+    if drop > 0.5 * dmax:
+        a = 0.5 * dmax / drop
+        if a < alpha:
+            alpha = a
+    dqmax = 0.0
+    dcmax = 0.0
+    for i in range(ns):
+        if alpha == 1.0:
+            q[S[i]] = qs[i] + dq[i]
+            c[S[i]] = cs[i] + dc[i]
+        else:
+            q[S[i]] = qs[i] + alpha * dq[i]
+            c[S[i]] = cs[i] + alpha * dc[i]
+        if abs(dq[i]) > dqmax:
+            dqmax = abs(dq[i])
+        if abs(dc[i]) > dcmax:
+            dcmax = abs(dc[i])
+    res[0] = alpha
+    res[1] = dmax
+    res[2] = dqmax
+    res[3] = dcmax
+
+
+_step_update = _jit(_step_update)
+
+
+def step_update(q, c, S, qs, cs, dq, dc, over, x, s0, s1):
+    """(alpha, hit_q, largest overlap, largest |dq|, largest |dc|) of
+    SliceEquations.bordered's damped update, q and c updated in place."""
+    hit_q = np.empty(len(S), dtype=np.bool_)
+    res = np.empty(4)
+    _step_update(q, c, S, qs, cs, dq, dc, over, x, float(s0), float(s1), hit_q, res)
+    return float(res[0]), hit_q, float(res[1]), float(res[2]), float(res[3])

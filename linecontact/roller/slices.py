@@ -863,7 +863,10 @@ class SliceEquations:
                     step = np.array([0.0, (-wxq - lin[1]) / K[1, 1]])
                 else:
                     step = np.zeros(2)
-                dz = z[:, 0] + z[:, 1:] @ step
+                if jit is not None:
+                    dz, out, nout = jit.step_out(z, step[0], step[1], ns, qs)
+                else:
+                    dz = z[:, 0] + z[:, 1:] @ step
                 dq, dc = dz[:ns], dz[ns:]
                 # slices at an end of the loaded set that the full step drives to q < 0
                 # are outside the contact: they leave at once (they would only block the
@@ -871,8 +874,10 @@ class SliceEquations:
                 # linearisation (_unloaded: no new kernels; a fresh linearisation for
                 # each slice leaving took 22 % more linearisations over the 104 cases
                 # of tables/roller_accuracy.csv)
-                out = qs + dq < 0
-                if not (out.any() and ns > 2):
+                if jit is None:
+                    out = qs + dq < 0
+                    nout = out.any()
+                if not (nout and ns > 2):
                     break
                 out = _end_runs(S, out)
                 if not out.any() or out.all():
@@ -884,28 +889,34 @@ class SliceEquations:
                 S = S[~out]
                 ns = len(S)
                 qs, cs = q[S], c[S]
-            alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
-            # keep the rigid overlap positive: no step lowers it by more than half its
-            # largest value (d stays above first contact)
-            dmax = float(over.max())
-            # (at a given tilt the step in theta is 0: the drop is -step[0] everywhere)
-            drop = -float((step[0] + step[1] * s.x[S]).min()) if step[1] != 0.0 else (
-                -float(step[0]))
-            if drop > 0.5 * dmax:
-                alpha = min(alpha, 0.5 * dmax / drop)
-            if alpha == 1.0:
-                q[S] = qs + dq
-                c[S] = cs + dc
+            if jit is not None:
+                # the same update in one compiled call (_compiled.step_update)
+                alpha, hit_q, dmax, dqmax, dcmax = jit.step_update(
+                    q, c, S, qs, cs, dq, dc, over, s.x, step[0], step[1])
             else:
-                q[S] = qs + alpha * dq
-                c[S] = cs + alpha * dc
+                alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
+                # keep the rigid overlap positive: no step lowers it by more than half
+                # its largest value (d stays above first contact)
+                dmax = float(over.max())
+                # (at a given tilt the step in theta is 0: the drop is -step[0])
+                drop = -float((step[0] + step[1] * s.x[S]).min()) if step[1] != 0.0 else (
+                    -float(step[0]))
+                if drop > 0.5 * dmax:
+                    alpha = min(alpha, 0.5 * dmax / drop)
+                if alpha == 1.0:
+                    q[S] = qs + dq
+                    c[S] = cs + dc
+                else:
+                    q[S] = qs + alpha * dq
+                    c[S] = cs + alpha * dc
+                dqmax = float(np.abs(dq).max())
+                dcmax = None
             d = d + alpha * step[0]
             theta = theta + alpha * step[1]
             if not abs(theta) < TILT_RANGE.high:
                 raise ConvergenceError("the tilt left the admissible range")
-            dqmax = float(np.abs(dq).max())
             small = (alpha == 1.0 and dqmax <= tol * qsc
-                     and float(np.abs(dc).max()) * R <= tol
+                     and (float(np.abs(dc).max()) if dcmax is None else dcmax) * R <= tol
                      and abs(step[0]) <= tol * dmax
                      and abs(step[1]) * (s.hi - s.lo) <= tol * dmax)
             if alpha == 1.0:

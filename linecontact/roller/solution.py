@@ -155,7 +155,9 @@ class RollerSolution:
 def contact_extent(x, q, w, L, lo=None, hi=None):
     """Ends of the contact from the loaded slices, q extrapolated to zero (w: the slice
     widths, an array or one width for all)."""
-    w = np.broadcast_to(np.asarray(w, dtype=float), np.shape(x))
+    w = np.asarray(w, dtype=float)
+    if w.shape != np.shape(x):                 # one width for all
+        w = np.broadcast_to(w, np.shape(x))
     on = np.flatnonzero(q > 0)
     i0, i1 = on[0], on[-1]
     n = len(x)

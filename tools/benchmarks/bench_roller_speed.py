@@ -2,7 +2,8 @@
 and of the coarse 3D BEM on the same case (CPU time, medians).
 
     OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_speed [--repeat 30]
-        [--sweep 20] [--bem-repeat 3] [--no-bem] [--n-slices N]
+        [--sweep 20] [--bem-repeat 3] [--no-bem] [--n-slices N] [--engine E]
+        [--against DIR [--rounds 2 | --interleave]] [--kernels]
 
 The case: the ISO 16281 profile of tables/roller_accuracy.csv (D = 10 mm, L = 14 mm,
 E* = 115.385 GPa), 4200 N (300 N/mm), tilt 2 mrad given (the table's case whose peak
@@ -35,6 +36,12 @@ script takes ``--engine``, else it runs its own default). ``--kernels`` instead 
 (importing numba, loading its cached code, compiling it, each in a fresh process) and
 the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
 and whole solves with the two engines alternating in one process.
+``--against DIR --interleave`` instead alternates the two checkouts' solves within one
+process (DIR's ``linecontact`` copied to a temporary directory and imported as
+``linecontact_b``, which works as long as the package imports itself relatively):
+the machine's drift between processes, which moves medians of separate runs by 1.5x
+on a shared VM, then leaves the ratio alone. It prints, per tilt, both medians and the
+median of the --repeat pair ratios (``--engine`` goes to both checkouts).
 """
 from __future__ import annotations
 
@@ -76,7 +83,10 @@ def main(argv=None):
     ap.add_argument("--rounds", type=int, default=2)
     ap.add_argument("--engine", default=None, choices=("auto", "numpy", "numba"))
     ap.add_argument("--kernels", action="store_true")
+    ap.add_argument("--interleave", action="store_true")
     a = ap.parse_args(argv)
+    if a.against and a.interleave:
+        return _interleaved(a)
     if a.against:
         return _paired(a, argv if argv is not None else sys.argv[1:])
     if a.kernels:
@@ -229,6 +239,61 @@ def _kernel_costs(a):
               f"numba {statistics.median(ts['numba']) * 1e3:.2f} ms; ratio numba/numpy "
               f"median of pairs {statistics.median(ratios):.3f} (quartiles "
               f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f})")
+    return 0
+
+
+def _interleaved(a):
+    """--against DIR --interleave: this checkout (A) and DIR (B) in one process, their
+    cold solves alternating (A B, then B A), --repeat pairs per tilt."""
+    import importlib
+    import shutil
+    import tempfile
+
+    import linecontact
+    from tools.studies import roller_study as rs
+
+    other = Path(a.against).resolve()
+    tmp = tempfile.mkdtemp()
+    try:
+        shutil.copytree(other / "linecontact", Path(tmp) / "linecontact_b",
+                        ignore=shutil.ignore_patterns("__pycache__"))
+        sys.path.insert(0, tmp)
+        roller_b = importlib.import_module("linecontact_b.roller")
+        profiles_b = importlib.import_module("linecontact_b.profiles")
+        from linecontact import profiles as profiles_a
+        from linecontact import roller as roller_a
+        extra = {} if a.engine is None else {"engine": a.engine}
+        if a.n_slices is not None:
+            extra["n_slices"] = a.n_slices
+        prof_a = rs.make_profile("iso16281", L, D / 2, ESTAR)
+        # the same profile built by the other checkout (its own classes)
+        prof_b = getattr(profiles_b, type(prof_a).__name__)(L, D)
+        print(f"A = {Path(linecontact.__file__).parents[1].name}, B = {other.name} "
+              f"(imported as linecontact_b), engine={a.engine or 'default'}, "
+              f"{a.repeat} pairs per tilt, alternating in one process")
+        for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
+            def one(mod, prof):
+                return mod.ProfiledRoller(D / 2, L, ESTAR, prof, **extra).at_force(
+                    FORCE, tilt=tilt)
+            runs = {"A": (roller_a, prof_a), "B": (roller_b, prof_b)}
+            for k in "AB":                      # tables, caches, compiled code loaded
+                one(*runs[k])
+            ts = {"A": [], "B": []}
+            sol = {}
+            for i in range(a.repeat):
+                for k in ("AB" if i % 2 == 0 else "BA"):
+                    c0 = time.process_time()
+                    sol[k] = one(*runs[k])
+                    ts[k].append(time.process_time() - c0)
+            ratios = [x / y for x, y in zip(ts["A"], ts["B"])]
+            dev = abs(sol["A"].depth / sol["B"].depth - 1)
+            print(f"interleaved, one solve, {label}: CPU median A {statistics.median(ts['A']) * 1e3:.2f} ms "
+                  f"({sol['A'].iterations} steps), B {statistics.median(ts['B']) * 1e3:.2f} ms "
+                  f"({sol['B'].iterations} steps); ratio A/B median of pairs "
+                  f"{statistics.median(ratios):.3f} (quartiles {np.percentile(ratios, 25):.3f}-"
+                  f"{np.percentile(ratios, 75):.3f}); depth A/B - 1 = {dev:.1e}")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
     return 0
 
 

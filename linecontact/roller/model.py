@@ -221,8 +221,9 @@ class ProfiledRoller:
             P, slope = self._drop_slope(x)
             got.append(slope)
             return P
-        s = SliceEquations(self.radius, self.estar, float(lo), float(hi), n or self.n_slices,
-                           drop, self.grading, self._refine, resolve_engine(self.engine))
+        s = SliceEquations(self.radius, self.estar, float(lo), float(hi),
+                           n or self.n_slices, drop, self.grading, self._refine,
+                           resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
         s.slope = self._slope
         s.slope_values = got[0]

@@ -32,8 +32,9 @@ one-solve medians round by round and their median. ``--no-refine`` solves with
 only for versions that have that option). ``--engine E`` passes ``engine=E`` to
 ``ProfiledRoller`` (only where given, so that the same command still times versions
 without engines; with ``--against`` the other checkout gets it too where its own
-script takes ``--engine``, else it runs its own default). ``--kernels`` instead prints what the compiled engine costs
-(importing numba, loading its cached code, compiling it, each in a fresh process) and
+script takes ``--engine``, else it runs its own default). ``--kernels`` instead
+prints what the compiled engine costs (importing numba, loading its cached code,
+compiling it, each in a fresh process) and
 the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
 and whole solves with the two engines alternating in one process.
 ``--against DIR --interleave`` instead alternates the two checkouts' solves within one
@@ -287,11 +288,13 @@ def _interleaved(a):
                     ts[k].append(time.process_time() - c0)
             ratios = [x / y for x, y in zip(ts["A"], ts["B"])]
             dev = abs(sol["A"].depth / sol["B"].depth - 1)
-            print(f"interleaved, one solve, {label}: CPU median A {statistics.median(ts['A']) * 1e3:.2f} ms "
-                  f"({sol['A'].iterations} steps), B {statistics.median(ts['B']) * 1e3:.2f} ms "
+            ta, tb = (statistics.median(ts[k]) * 1e3 for k in "AB")
+            print(f"interleaved, one solve, {label}: CPU median A {ta:.2f} ms "
+                  f"({sol['A'].iterations} steps), B {tb:.2f} ms "
                   f"({sol['B'].iterations} steps); ratio A/B median of pairs "
-                  f"{statistics.median(ratios):.3f} (quartiles {np.percentile(ratios, 25):.3f}-"
-                  f"{np.percentile(ratios, 75):.3f}); depth A/B - 1 = {dev:.1e}")
+                  f"{statistics.median(ratios):.3f} (quartiles "
+                  f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f}); "
+                  f"depth A/B - 1 = {dev:.1e}")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return 0

@@ -355,6 +355,23 @@ def bem_from_table(tasks, table, n_x, n_y, tol):
     return refs
 
 
+def runtime_settings():
+    """What the rt_* and iso_* columns ran: the runtime model's settings (its defaults,
+    runtime_case) and ISO slicing's slice count, for the header (``runtime_settings``):
+    the table describes the model at those settings, which a later default may not
+    be."""
+    import inspect
+
+    from linecontact.roller import model
+    from linecontact.roller.slices import DEFAULT_N_SLICES
+    return (f"linecontact.roller.ProfiledRoller at its defaults: {DEFAULT_N_SLICES} "
+            f"slices graded {model.DEFAULT_GRADING:g} towards the overlap interval's "
+            f"ends, the end slices refined up to {model.REFINE_LEVELS} levels where the "
+            f"peak is unresolved (until p_max settles within {model.REFINE_TOL:g}); "
+            "ISO 16281 slicing (iso_slicing): "
+            f"{inspect.signature(iso_case).parameters['n_slices'].default} slices")
+
+
 def bem_from_line(meta, name):
     """The ``bem_from`` header line of a table whose BEM columns are reused from an
     earlier table (file `name`, header `meta`): the run that computed them, its
@@ -702,6 +719,7 @@ def run(args):
         tolerance=f"{args.tol:g} (gap error / largest interference); force 1e-6 F; "
                   "moment 1e-6 F L/2",
         accuracy=accuracy,
+        runtime_settings=runtime_settings(),
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "

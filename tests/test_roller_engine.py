@@ -336,3 +336,13 @@ def test_an_engine_set_after_construction_is_checked_at_the_solve():
                          check=True).stdout.splitlines()
     assert len(out) == 2 and all(o.startswith("refused: engine") for o in out), out
     assert "fortran" in out[0] and "pip install" in out[1], out
+
+
+def test_each_test_starts_on_the_numpy_reference():
+    """Which engine a test's default-engine solves use must not depend on the tests run
+    before it in the process: the step counter of engine='auto' is zero at the start of
+    every test (tests/conftest.py), so 'auto' is the numpy reference until a test itself
+    takes AUTO_SWITCH_STEPS steps. (Run after the rest of the suite, which takes far
+    more than 1500 numpy steps, this failed.)"""
+    assert sl._NUMPY_STEPS[0] == 0
+    assert sl.resolve_engine("auto") == "numpy"

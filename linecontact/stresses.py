@@ -741,7 +741,7 @@ def _love_corner(X, Y, z, w=None, only=None):
     """The corner functions of Love's uniformly loaded rectangle at offsets (X, Y) from
     one corner, depth z > 0 (see :func:`rectangle_stresses`), stacked (10, ...).
 
-    With corner weights `w` (along the last axis): their weighted sums over the
+    With corner weights `w` (n_corners,): their weighted sums over the
     corners instead, (10, ...), each function summed as soon as it is evaluated (the
     full arrays never coexist); with `only` (an index) just that function's sum, the
     others left 0."""
@@ -767,27 +767,33 @@ def _love_corner(X, Y, z, w=None, only=None):
     if w is None:
         return np.stack([np.broadcast_to(f(), rho.shape) for f in funcs])
     out = np.zeros((len(funcs),) + rho.shape[:-1])
-    for i in (range(len(funcs)) if only is None else (only,)):
-        out[i] = np.einsum("...c,...c->...", np.broadcast_to(funcs[i](), rho.shape), w)
+    for i in ((0, 2, 3, 4, 5, 6, 7, 9) if only is None else (only,)):
+        g = funcs[i]()
+        out[i] = (g if g.shape == rho.shape else np.broadcast_to(g, rho.shape)) @ w
+    if only is None:
+        # psi1 and H1 are harmonic (z > 0), and so is each corner function's
+        # potential: d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
+        # d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding)
+        out[1] = -(out[2] + out[3])
+        out[8] = -(out[0] + out[7])
     return out
 
 
 def _love_sums(X, Y, z, w, only=None):
-    """The corner sums sum_c w_pc g(X_pc, Y_pc, z_p) of the corner functions
-    (:func:`_love_corner`) over the last axis of the (n_points, n_corners) arrays X,
-    Y, w (z: (n_points, 1)): (10, n_points); `only` as there. Evaluated in blocks of
-    points of a few thousand elements, which stay in the processor's cache."""
-    n, c = np.broadcast_shapes(X.shape, Y.shape, w.shape)
+    """The corner sums sum_c w_c g(X_c, Y_pc, z_p) of the corner functions
+    (:func:`_love_corner`) at the points p of Y (n_points, n_corners), X (1,
+    n_corners), z (n_points, 1): (10, n_points); `only` as there. Evaluated in blocks
+    of points of a few thousand elements, which stay in the processor's cache."""
+    n, c = Y.shape
     step = max(1, _BLOCK // max(c, 1))
     if n <= step:
         return _love_corner(X, Y, z, w, only)
-    return np.concatenate([_love_corner(X[i:i + step], Y[i:i + step], z[i:i + step],
-                                        w[i:i + step], only)
+    return np.concatenate([_love_corner(X, Y[i:i + step], z[i:i + step], w, only)
                            for i in range(0, n, step)], axis=1)
 
 
 #: elements (points x corners) per block of :func:`_love_sums`
-_BLOCK = 16384
+_BLOCK = 8192
 
 
 def _love_components(t, z, nu):
@@ -954,21 +960,12 @@ def _field_3d(x, b, p0, mu, nu, ks, py, pz, corners, shear_only=False):
     ks = np.asarray(ks, dtype=int)
     py = np.asarray(py, float)
     pz = np.asarray(pz, float)
-    uk = np.unique(ks)
-    cs = {k: corners(int(k)) for k in uk}
-    nc = max(cs[k][2].size for k in uk)
-    # one row of corners per point, those of its slice, padded with zero weights at a
-    # harmless offset (X = 1, Y = py)
-    X = np.ones((ks.size, nc))
-    Y = np.repeat(py[:, None], nc, axis=1)
-    W = np.zeros((ks.size, nc))
-    for k in uk:
+    t = np.zeros((10, ks.size))
+    for k in np.unique(ks):
         rows = np.flatnonzero(ks == k)
-        cx, cy, w = cs[k]
-        X[rows, :w.size] = x[k] - cx
-        Y[rows, :w.size] = py[rows, None] - cy
-        W[rows, :w.size] = w
-    t = _love_sums(X, Y, pz[:, None], W, _PYZ if shear_only else None)
+        cx, cy, w = corners(int(k))
+        t[:, rows] = _love_sums((x[k] - cx)[None, :], py[rows, None] - cy[None, :],
+                                pz[rows, None], w, _PYZ if shear_only else None)
     bk, s0 = b[ks], p0[ks]
     sx, sy, sz, tyz = _unit_strip(py / bk, pz / bk, mu, nu)
     if shear_only:

@@ -900,9 +900,10 @@ def _corners_3d(xc, b, p0, k0):
     """Corner positions and weights of the pressure difference p - p_k0 (a row of
     Hertz strips, one per slice, minus the strip of slice k0 extended to infinity)."""
     n = xc.size
-    h = np.diff(xc)
-    xe = np.concatenate([[xc[0] - 0.5 * h[0]], 0.5 * (xc[1:] + xc[:-1]),
-                         [xc[-1] + 0.5 * h[-1]]])
+    xe = np.empty(n + 1)
+    xe[1:-1] = 0.5 * (xc[1:] + xc[:-1])
+    xe[0] = xc[0] - 0.5 * (xc[1] - xc[0])
+    xe[-1] = xc[-1] + 0.5 * (xc[-1] - xc[-2])
     b0, x0 = b[k0], xc[k0]
     near = np.abs(xc - x0) <= _NEAR * b0
     near[max(k0 - 2, 0):k0 + 3] = True
@@ -914,35 +915,42 @@ def _corners_3d(xc, b, p0, k0):
     B = max(float(b[i0:i1 + 1].max()), b0)
     ye = np.linspace(-B, B, _N_Y + 1)
     L = xe[-1] - xe[0]
-    ref = p0[k0] * _hertz_cell_means(ye, b0)
-    P = p0[i0:i1 + 1, None] * _hertz_cell_means(ye, b[i0:i1 + 1]) - ref
+    means = _hertz_cell_means(ye, np.concatenate([[b0], b[i0:i1 + 1]]))
+    ref = p0[k0] * means[0]
+    lo_ext, hi_ext = int(i0 == 0), int(i1 == n - 1)
+    rows = i1 - i0 + 1 + lo_ext + hi_ext
+    # the cells' pressures with a frame of zeros: their corners' weights are the
+    # mixed differences
+    Pp = np.zeros((rows + 2, _N_Y + 2))
+    Pp[1 + lo_ext:rows + 1 - hi_ext, 1:-1] = p0[i0:i1 + 1, None] * means[1:] - ref
+    if lo_ext:
+        Pp[1, 1:-1] = -ref
+    if hi_ext:
+        Pp[rows, 1:-1] = -ref
     xs = xe[i0:i1 + 2]
-    if i0 == 0:
-        P = np.vstack([-ref, P])
-        xs = np.concatenate([[xe[0] - 1e6 * L], xs])
-    if i1 == n - 1:
-        P = np.vstack([P, -ref])
-        xs = np.concatenate([xs, [xe[-1] + 1e6 * L]])
-    Pp = np.pad(P, 1)
+    if lo_ext or hi_ext:
+        xs = np.concatenate([[xe[0] - 1e6 * L]] * lo_ext + [xs]
+                            + [[xe[-1] + 1e6 * L]] * hi_ext)
     W = Pp[1:, 1:] - Pp[1:, :-1] - Pp[:-1, 1:] + Pp[:-1, :-1]
-    CX, CY = np.meshgrid(xs, ye, indexing="ij")
-    cx, cy, w = [CX.ravel()], [CY.ravel()], [W.ravel()]
+    cx, cy, w = [np.repeat(xs, _N_Y + 1)], [np.tile(ye, xs.size)], [W.ravel()]
     # far field (beyond _NEAR b0, where the distribution across matters to (b/r)^2
     # of a small difference): one cell per slice across |y| <= max(b, b0) with the
     # difference of the mean pressures (q - q_k0)/(2 max(b, b0)); beyond the roller's
     # ends (if the near grid does not reach them) k0's strip, one cell
     far = np.flatnonzero(~near)
-    q, q0 = 0.5 * np.pi * p0 * b, 0.5 * np.pi * p0[k0] * b0
-    lo_x, hi_x = list(xe[far]), list(xe[far + 1])
-    bf = list(np.maximum(b[far], b0))
-    dq = list(q[far] - q0)
-    if i0 > 0:
-        lo_x.append(xe[0] - 1e6 * L), hi_x.append(xe[0]), bf.append(b0), dq.append(-q0)
-    if i1 < n - 1:
-        lo_x.append(xe[-1]), hi_x.append(xe[-1] + 1e6 * L), bf.append(b0), dq.append(-q0)
-    if lo_x:
-        lo_x, hi_x, bf = np.array(lo_x), np.array(hi_x), np.array(bf)
-        pm = np.array(dq) / (2 * bf)
+    q0 = 0.5 * np.pi * p0[k0] * b0
+    lo_x, hi_x = xe[far], xe[far + 1]
+    bf = np.maximum(b[far], b0)
+    dq = 0.5 * np.pi * p0[far] * b[far] - q0
+    if not (lo_ext and hi_ext):
+        ends = ([(xe[0] - 1e6 * L, xe[0])] * (1 - lo_ext)
+                + [(xe[-1], xe[-1] + 1e6 * L)] * (1 - hi_ext))
+        lo_x = np.concatenate([lo_x, [e[0] for e in ends]])
+        hi_x = np.concatenate([hi_x, [e[1] for e in ends]])
+        bf = np.concatenate([bf, [b0] * len(ends)])
+        dq = np.concatenate([dq, [-q0] * len(ends)])
+    if lo_x.size:
+        pm = dq / (2 * bf)
         cx.append(np.concatenate([lo_x, lo_x, hi_x, hi_x]))
         cy.append(np.concatenate([-bf, bf, -bf, bf]))
         w.append(np.concatenate([pm, -pm, -pm, pm]))

@@ -14,8 +14,8 @@ What it measures:
    3D-corrected runtime (the default) and the strips alone, with the 3D field's own
    grid change;
 2. time: per study roller (each profile, three loads, two tilts), the CPU time
-   (time.process_time) of the runtime contact solve (ProfiledRoller.at_force, 100
-   slices, a fresh model built beforehand: no warm start from a previous solve) and
+   (time.process_time) of the runtime contact solve (ProfiledRoller.at_force at its
+   default slices, a fresh model built beforehand: no warm start from a previous solve) and
    of its stresses (roller_stresses with the 3D correction, the default), median of
    ``--repeat``; the stresses' first call (the cached strip maxima for a new (mu, nu),
    a grid search and ten zooms) is timed apart. Target: the stresses within

@@ -767,15 +767,28 @@ def _love_corner(X, Y, z, w=None, only=None):
     if w is None:
         return np.stack([np.broadcast_to(f(), rho.shape) for f in funcs])
     out = np.zeros((len(funcs),) + rho.shape[:-1])
-    for i in ((0, 2, 3, 4, 5, 6, 7, 9) if only is None else (only,)):
-        g = funcs[i]()
-        out[i] = (g if g.shape == rho.shape else np.broadcast_to(g, rho.shape)) @ w
-    if only is None:
-        # psi1 and H1 are harmonic (z > 0), and so is each corner function's
-        # potential: d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
-        # d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding)
-        out[1] = -(out[2] + out[3])
-        out[8] = -(out[0] + out[7])
+    if only is not None:
+        g = funcs[only]()
+        out[only] = (g if g.shape == rho.shape else np.broadcast_to(g, rho.shape)) @ w
+        return out
+    # the same functions with the reciprocals shared and arctan2 for the masked
+    # quotients (den >= 0, and num = 0 where den = 0); then, as psi1 and H1 are
+    # harmonic (z > 0) and so is each corner function's potential,
+    # d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
+    # d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding)
+    ir = 1.0 / rho
+    ixz = ir / (X2 + z2)                    # 1/(rho (X^2 + z^2))
+    iyz = ir / (Y2 + z2)
+    out[0] = -(np.arctan(XY * ir / z) @ w)
+    out[2] = -((XY * ixz) @ w)
+    out[3] = -((XY * iyz) @ w)
+    out[4] = ir @ w
+    out[5] = -((Y * z * ixz) @ w)
+    out[6] = -((np.broadcast_to(X * z, rho.shape) * iyz) @ w)
+    out[7] = np.arctan2(XY * (rho - z), X2 * rho + Y2 * z) @ w
+    out[9] = np.log(rho + z) @ w
+    out[1] = -(out[2] + out[3])
+    out[8] = -(out[0] + out[7])
     return out
 
 

@@ -101,3 +101,15 @@ def test_a_column_of_zeros_of_both_signs_keeps_each_sign():
         want = ["," + t for t in _python(values)]
         assert _result_cells(cols) == want
         assert _result_cells_by_row(cols) == want
+
+
+def test_a_column_of_one_infinite_value_is_empty_in_both_paths():
+    """inf == inf, so a column holding only inf looked constant and the matrix path
+    wrote 'inf' once for every row, where the row-by-row path writes a non-finite
+    result as an empty cell (found by hypothesis in the test above). Every cell of
+    such a column is empty in both paths, as a NaN's is."""
+    for values in ([np.inf], [np.inf, np.inf], [-np.inf] * 3):
+        cols = [("num", np.array(values)), ("num", np.arange(len(values), dtype=float))]
+        want = [",," + format(float(k), ".6g") for k in range(len(values))]
+        assert _result_cells(cols) == want
+        assert _result_cells_by_row(cols) == want

@@ -117,3 +117,59 @@ def test_geometry_caches_survive_a_concurrent_clear(monkeypatch):
     for a, b in zip(sl._unit_geometry(37, 0.8, 1), ref_geometry):
         assert np.array_equal(a, b)
     assert np.array_equal(sl._far_geometry(37, 0.8, 1), ref_far)
+
+
+def test_unloading_slices_equals_a_fresh_linearisation():
+    """Slices leaving within a Newton step (slices._unloaded): the linear system with
+    their loads set to zero through their Jacobian columns equals the one a fresh
+    linearisation at q = 0 gives (a source's share of the gap and curvature rows is
+    homogeneous of degree one in its (q, c)): the Jacobian to 1e-12 and the residual to
+    1e-10 of their largest entries (rounding of the spline table's sums), at a state
+    off the solution (loads and c perturbed by up to 5 %)."""
+    r = ProfiledRoller(D / 2, L, E, ISO, refine_ends=False)
+    sol = r.at_force(4200.0, tilt=2e-3)
+    eq = r._grid(sol.depth, sol.tilt)
+    eq._over = sol.depth + sol.tilt * eq.x - eq.P
+    slope = eq.slope_at_slices()
+    rng = np.random.default_rng(1)
+    S = np.flatnonzero(sol.q > 0)
+    q = sol.q / (np.pi * E) * (1 + 0.05 * rng.uniform(-1, 1, eq.n))
+    c = np.full(eq.n, 1.0 / (4 * eq.R))
+    c[S] = q[S] / sol.half_width[S] ** 2 * (1 + 0.05 * rng.uniform(-1, 1, len(S)))
+    ns, R = len(S), eq.R
+    qsc = q[S].max()
+
+    def scaled(S):
+        # the scaled system of SliceEquations.bordered (unknowns q/qsc and c R)
+        res, J = eq.linearised(S, q, c, sol.tilt, slope, np.arange(eq.n))[:2]
+        m = len(S)
+        J[:m, m:] *= 1.0 / (qsc * R)
+        J[m:, :m] *= qsc * R
+        B = np.concatenate([-res[:m] / qsc, -res[m:] * R])[:, None]
+        return J, B
+
+    J, B = scaled(S)
+    out = np.zeros(ns, bool)
+    out[[0, 1, -1]] = True
+    Ju, Bu = sl._unloaded(J, B, out, q[S] / qsc, c[S] * R)
+    q[S[out]] = 0.0
+    Jf, Bf = scaled(S[~out])
+    assert np.max(np.abs(Ju - Jf)) < 1e-12 * np.max(np.abs(Jf))
+    assert np.max(np.abs(Bu - Bf)) < 1e-10 * np.max(np.abs(Bf))
+
+
+@pytest.mark.parametrize("profile, tilt", [("iso16281", 0.0), ("lundberg", 5e-4)])
+def test_bordered_newton_converges_alone_at_refined_end_zones(monkeypatch, profile, tilt):
+    """At 2000 N/mm the contact of a logarithmic profile ends in its refined end zone,
+    where an end slice can sit between joining and leaving (table cases 28 and 45 of
+    tables/roller_accuracy.csv; an unloading of leaving slices through their q columns
+    alone cycled there): the bordered Newton settles the active set on its own, every
+    refinement level included, the nested fallback never called."""
+    from tools.studies.roller_study import make_profile
+
+    def no_fallback(*args, **kwargs):
+        raise AssertionError("the nested iteration was called")
+    monkeypatch.setattr(ProfiledRoller, "_depth_at_force", no_fallback)
+    r = ProfiledRoller(D / 2, L, E, make_profile(profile, L, D / 2, E))
+    s = r.at_force(28000.0, tilt=tilt)
+    assert s.force == pytest.approx(28000.0, rel=1e-10)

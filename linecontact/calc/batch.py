@@ -507,7 +507,10 @@ def _result_cells(getters):
 def _constant(v):
     """Whether every value of v is the same finite number written the same way: equal
     (NaN != NaN) and of one sign bit ('%.6g' writes -0.0 as '-0', 0.0 as '0')."""
-    return bool(np.all(v == v[0]) and np.all(np.signbit(v) == np.signbit(v[0])))
+    # finite first: inf == inf, but a missing or infinite result is an empty cell,
+    # which the row paths write cell by cell
+    return bool(np.isfinite(v[0]) and np.all(v == v[0])
+                and np.all(np.signbit(v) == np.signbit(v[0])))
 
 
 #: 10**k for k = 0..22, each exact in double precision.

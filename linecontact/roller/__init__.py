@@ -90,6 +90,8 @@ Modules
 -------
 ``kernel``     the strip influence functions (:func:`strip_influence`)
 ``slices``     the slice equations, their Newton / active-set solver, the stiffness matrix
+``_compiled``  the same kernels and linearisation as compiled loops (numba, optional;
+               ``ProfiledRoller(engine=...)``, docs/profiled_rollers.md, "Engines")
 ``coverage``   the note on where a case lies against tables/roller_accuracy.csv
 ``solution``   :class:`RollerSolution`, contact extent and peak pressure off the slices
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)

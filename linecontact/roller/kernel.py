@@ -11,6 +11,7 @@ K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), Eq. 3.19
 """
 from __future__ import annotations
 
+import collections
 import math
 
 import numpy as np
@@ -22,6 +23,9 @@ __all__ = ["strip_influence"]
 
 
 _C0 = 0.5 + math.log(2.0)       # a(tau) - ln(2 tau) -> C0 as tau -> inf
+#: the limit of r = a(tau) - ln(2 tau) as tau -> inf, the constant term of its series in
+#: tau^-2 (far_field_coefficients gives the others)
+R_INF = _C0
 _TAU_SERIES = 2.5               # series for tau >= this, quadrature below
 _NTERMS = 28
 
@@ -121,7 +125,8 @@ def _near_table():
         # one contiguous (function, segment) table per power: the gathers and the
         # Horner steps then run along the points (an inner loop over the four
         # functions is several times slower)
-        c0, c1, c2, c3 = (np.ascontiguousarray(c[:, k]) for k in range(4))
+        coef = np.ascontiguousarray(c.transpose(1, 0, 2))   # (power, function, segment)
+        c0, c1, c2, c3 = coef
 
         def spline(zq):
             u = (zq - z0) * (1.0 / h)
@@ -130,8 +135,24 @@ def _near_table():
             return ((np.take(c3, i, 1) * t + np.take(c2, i, 1)) * t
                     + np.take(c1, i, 1)) * t + np.take(c0, i, 1)
 
-        _NEAR_TABLE.append(spline)
-    return _NEAR_TABLE[0]
+        _NEAR_TABLE.append((spline, SplineTable(_TAB_MIN, _TAB_MAX, z0, h, coef)))
+    return _NEAR_TABLE[0][0]
+
+
+#: the spline table as data: tau_min <= tau < tau_max, nodes z0 + i h in z = ln tau,
+#: coefficients coef[power, function, segment] (spline_table)
+SplineTable = collections.namedtuple("SplineTable", "tau_min tau_max z0 h coef")
+
+
+def spline_table():
+    """The cubic spline of the four strip functions in z = ln(tau) that
+    :func:`strip_values` evaluates, as data for other implementations of the same
+    evaluation (the compiled kernels, :mod:`linecontact.roller._compiled`): valid for
+    tau_min <= tau < tau_max; with u = (z - z0)(1/h), segment i = min(floor(u),
+    nseg - 1) and t = (u - i) h, function f (r, tau a', p, tau p') is
+    ((c3 t + c2) t + c1) t + c0 with c_k = coef[k, f, i] (coef: (4, 4, nseg))."""
+    _near_table()
+    return _NEAR_TABLE[0][1]
 
 
 def _direct(flat):

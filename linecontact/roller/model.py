@@ -14,7 +14,7 @@ from ..validity import OutOfRangeError, check_flag, check_interval, check_positi
 from .._numerics import serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
-                     ConvergenceError, SliceEquations)
+                     ConvergenceError, SliceEquations, check_engine, resolve_engine)
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["ProfiledRoller", "roller_contact"]
@@ -77,6 +77,14 @@ class ProfiledRoller:
         (default True; False:
         report the unrefined solution, flagged). Solutions whose peak is resolved
         are not affected.
+    engine : {"auto", "numpy", "numba"}, optional
+        Who evaluates the slice equations' kernels and linearisation: "numpy" (the
+        reference), "numba" (compiled loops, the same arithmetic: results equal within
+        1e-10; needs numba, ``pip install linecontact[fast]``) or "auto" (default):
+        numpy until the process has taken 1500 Newton steps (some 150-200 solves), then
+        numba where it is installed: importing numba and loading its cached code cost
+        0.4-0.5 s once, which the compiled engine repays at 0.2-0.35 ms a step
+        (docs/profiled_rollers.md, "Engines").
 
     Notes
     -----
@@ -100,7 +108,7 @@ class ProfiledRoller:
     """
 
     def __init__(self, radius, length, estar, profile=None, n_slices=DEFAULT_N_SLICES,
-                 grading=DEFAULT_GRADING, refine_ends=True):
+                 grading=DEFAULT_GRADING, refine_ends=True, engine="auto"):
         self.radius = float(check_positive("radius", radius, "m"))
         self.length = float(check_positive("length", length, "m"))
         self.estar = float(check_positive("estar", estar, "Pa"))
@@ -113,7 +121,9 @@ class ProfiledRoller:
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
+        self._end_cache = {}
         self.refine_ends = check_flag("refine_ends", refine_ends)
+        self.engine = check_engine(engine)
         self._refine = 0
         self._warm = None
         self._memo = None
@@ -192,7 +202,7 @@ class ProfiledRoller:
                 hi, dhi = self._end_root(d, th, fx[j], 1)
         s = SliceEquations(self.radius, self.estar, float(lo), float(hi), self.n_slices,
                            lambda x: roller_drop(self.profile, self.length, x),
-                           self.grading, self._refine)
+                           self.grading, self._refine, resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
         s.slope = self._slope
         return s
@@ -206,23 +216,41 @@ class ProfiledRoller:
         interval's width down to 1e-6 of it), then on 33 even points in the bracket,
         and interpolated linearly there, as on the grid (continuous in d and theta).
         Returns the end and its derivatives with respect to (d, theta)."""
-        L = self.length
-        end = side * L / 2
-        u = abs(end - x_in) * _END_STEPS                     # distances from the end
+        end = side * self.length / 2
+        key = (side, x_in)
         for level in range(2):
-            x = end - side * u
-            over = d + th * x - roller_drop(self.profile, L, x)
+            u, x, P = self._end_points(key, end, side, x_in)
+            over = d + th * x - P
             out = np.flatnonzero(over <= 0)
             if len(out) == 0:           # overlapping to within 1e-6 of the interval
                 return float(x[-1]), (0.0, 0.0)
             k = int(out[0])             # over[0] > 0: x_in is inside the interval
-            if level == 0:
-                u = np.linspace(u[k - 1], u[k], 33)
+            key += (k,)
         o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
         return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+
+    def _end_points(self, key, end, side, x_in):
+        """The distances u from the end, the points x and the drop there of one level
+        of _end_root's search: key (side, x_in) the 40 graded points, key (side, x_in,
+        k) the 33 even points between the first level's points k - 1 and k. They depend
+        only on the key: cached, as the Newton steps of a solve, and the solves of a
+        sweep, meet the same few."""
+        hit = self._end_cache.get(key)
+        if hit is None:
+            if len(key) == 2:
+                u = abs(end - x_in) * _END_STEPS
+            else:
+                u0 = self._end_points(key[:2], end, side, x_in)[0]
+                u = np.linspace(u0[key[2] - 1], u0[key[2]], 33)
+            x = end - side * u
+            hit = (u, x, roller_drop(self.profile, self.length, x))
+            if len(self._end_cache) >= 64:
+                self._end_cache.clear()
+            self._end_cache[key] = hit
+        return hit
 
     def _slope(self, x):
         """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""
@@ -355,12 +383,13 @@ class ProfiledRoller:
         s = self._grid(d, th)
         warm = self._warm_start(s, d, th)
         first = None
-        # the last solution as it is where its force is within 10 % (an end refinement
-        # solves the same force again; a close sweep step), else its strip widths in
-        # the bordered linear start
-        close = (warm is not None and self._memo is not None and force is not None
-                 and abs(force / self._memo[2] - 1) < 0.1)
-        if force is not None and not close:
+        if force is not None:
+            # the bordered linear start, with the last solution's strip widths where
+            # there is one (a sweep, an end refinement). Starting from its loads as they
+            # are, mapped onto this grid, took more Newton steps where the force was
+            # within 10 % of it: the refined end slices' loads are poor there (over the
+            # 104 cases of tables/roller_accuracy.csv the refinements' re-solves took
+            # 396 steps that way, 184 this way; a 20-force sweep 427 and 252 at 2 mrad)
             width = None
             if warm is not None:
                 # the last solution's strip widths, scaled as b ~ overlap^(1/2)

@@ -154,6 +154,81 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
+#: the engines that evaluate the slice equations: ProfiledRoller(engine=...) takes
+#: one of these; SliceEquations.engine is "numpy" or "numba" (resolve_engine)
+ENGINES = ("auto", "numpy", "numba")
+#: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
+#: takes before it switches to the compiled engine, where numba is installed: a numpy
+#: step costs 0.2-0.35 ms more than a compiled one at 50-100 slices, so by then numpy
+#: has cost about as much more than numba would have as switching costs once
+#: (importing numba and loading its cached code, 0.4-0.5 s): the break-even rule of
+#: renting against buying, never worse than twice the best choice in hindsight
+#: (docs/profiled_rollers.md, "Engines")
+AUTO_SWITCH_STEPS = 1500
+_NUMPY_STEPS = [0]
+_HAVE_NUMBA = []
+_IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
+
+
+def numba_installed():
+    """Whether numba can be imported (looked up once, without importing it)."""
+    if not _HAVE_NUMBA:
+        import importlib.util
+        _HAVE_NUMBA.append(importlib.util.find_spec("numba") is not None)
+    return _HAVE_NUMBA[0]
+
+
+def check_engine(engine):
+    """`engine` checked: one of ENGINES, and "numba" only where numba is installed and
+    the compiled kernels import (then imported here, at the roller's construction)."""
+    from ..validity import OutOfRangeError, UnknownNameError
+    if not isinstance(engine, str) or engine not in ENGINES:
+        raise UnknownNameError("engine", engine, ENGINES)
+    if engine == "numba":
+        if not numba_installed():
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
+                                  "installed)", hint="install numba (pip install numba, "
+                                  "or linecontact[fast]) or use engine='auto'")
+        try:
+            if _IMPORT_ERROR:
+                raise ImportError(_IMPORT_ERROR[0])
+            compiled()
+        except Exception as err:     # e.g. a numba built for another numpy
+            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba does "
+                                  f"not import here: {err})") from err
+    return engine
+
+
+def resolve_engine(engine):
+    """"numpy" or "numba" for a new SliceEquations: "auto" is numpy until this process
+    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed and
+    imports (a single solve never imports numba; a sweep, a batch or a bearing repays
+    it); where the import fails, numpy for the rest of the process, said once by a
+    RuntimeWarning."""
+    if engine == "auto":
+        if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
+                or _IMPORT_ERROR):
+            return "numpy"
+        try:
+            compiled()
+        except Exception as err:
+            import warnings
+            _IMPORT_ERROR.append(str(err))
+            warnings.warn(f"linecontact: the compiled roller kernels do not import "
+                          f"({err}); engine='auto' stays with numpy", RuntimeWarning,
+                          stacklevel=2)
+            return "numpy"
+        return "numba"
+    return engine
+
+
+def compiled():
+    """The compiled kernels (:mod:`linecontact.roller._compiled`), imported on first
+    use: importing numba costs a few hundred ms, which only repeated solves repay."""
+    from . import _compiled
+    return _compiled
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -188,14 +263,62 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
     return S
 
 
+#: The sweeps of the cold start (SliceEquations.start_at_force), each a frozen-width
+#: linear solve on the grid of the last: over the 104 cases of
+#: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
+#: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4; measured
+#: while the end refinement still restarted from the loads, tools/benchmarks/README.md,
+#: "Round 5"); the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt
+#: takes 4 steps after 3 sweeps, 8 after 2.
+START_SWEEPS = 3
+
+
+def _end_runs(S, out):
+    """The slices of `out` (a mask over the loaded set S) that reach an end of a run
+    of consecutive loaded slices through slices of `out`: where the full step drives
+    the last few slices of the contact below zero, all of them are outside it (one by
+    one, each would cost a step)."""
+    ns = len(S)
+    cut = np.flatnonzero(np.diff(S) > 1) + 1
+    ends = np.zeros(ns, bool)
+    for a, b in zip(np.concatenate([[0], cut]), np.concatenate([cut, [ns]])):
+        seg = out[a:b]
+        if seg.all():
+            ends[a:b] = True
+            continue
+        ends[a:a + int(np.argmin(seg))] = True
+        ends[b - int(np.argmin(seg[::-1])):b] = True
+    return ends
+
+
+def _unloaded(J, B, out, u, v):
+    """The linear system J z = B of a Newton step in scaled unknowns (u = q/qsc
+    first, then v = c R) with the slices `out` unloaded: their rows and unknowns
+    dropped, and the right-hand side's first column the residual without their loads.
+    A source's share of the rows, A(b) q and D(b) c with b^2 = q/c, is homogeneous of
+    degree one in its (q, c), so it equals its two Jacobian columns times (u, v): the
+    residual a fresh linearisation at q = 0 would give, without new kernels (the
+    other columns of B, the grid's motion, keep the leaving slices' small share until
+    the next step)."""
+    ns = len(out)
+    B = B.copy()
+    B[:, 0] += J[:, :ns][:, out] @ u[out] + J[:, ns:][:, out] @ v[out]
+    keep = np.concatenate([~out, ~out])
+    return J[keep][:, keep], B[keep]       # (a quarter of np.ix_'s time)
+
+
 class SliceEquations:
     """Slice geometry and the Newton / active-set solver in scaled variables.
 
     Unknowns per loaded slice: qt = q/(pi E*) [m] and c = qt/b^2 [1/m].
     """
 
-    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0):
+    def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0,
+                 engine="numpy"):
         self.R = radius
+        # "numpy" or "numba" (resolved by the owner, ProfiledRoller): who evaluates
+        # kernels() and linearised(); the numpy code is the reference and the fallback
+        self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi
         self.dlo = self.dhi = (0.0, 0.0)       # d(lo, hi)/d(d, theta), set by the owner
@@ -234,6 +357,16 @@ class SliceEquations:
         With `a_only`, A alone (the others None).
         """
         T = S if targets is None else targets
+        if self.engine == "numba":
+            jit = compiled()
+            far = self.n <= _N_FAR
+            out = jit.kernels(S, T, b, self.span, self.dg, self._tnear, self._tfar,
+                              self._logratio,
+                              _far_geometry(*self._geometry) if far else None,
+                              _FAR_COEF, a_only)
+            if out is not None:
+                return out
+        _NUMPY_STEPS[0] += 1
         if self.n > _N_FAR:
             out = self._kernels_table(S, b, T)
             return (out[0], None, None, None) if a_only else out
@@ -477,8 +610,9 @@ class SliceEquations:
         """A cold first (equations, S, q, c, d, theta) for the force `force` [N] (and
         zero moment): the linear problem with frozen strip widths and the force (and
         moment) rows bordering it, so that d (and theta) come out of the same solve,
-        twice: the second time on the grid of the first answer's d and theta, with its
-        plane-strain widths b^2 = 4 R q/(pi E*) mapped onto that grid; c = q/b^2 from
+        :data:`START_SWEEPS` times: each time after the first on the grid of the last
+        answer's d and theta, with its plane-strain widths b^2 = 4 R q/(pi E*) mapped
+        onto that grid; c = q/b^2 from
         the curvature equations with the same frozen widths (linear in c: over the 104
         cases of tables/roller_accuracy.csv 4 % fewer Newton steps than the plane-strain
         c = 1/(4R), which is kept where that gives c <= 0). Returns None
@@ -489,7 +623,7 @@ class SliceEquations:
         s, R = self, self.R
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
-        sweeps = 2 if width is None else 1
+        sweeps = START_SWEEPS if width is None else 1
         for sweep in range(sweeps):
             over = d + theta * s.x - s.P
             S = np.flatnonzero(over > 0)
@@ -524,9 +658,9 @@ class SliceEquations:
                 if (qs > 0).all():
                     break
                 on = qs > 0
-                S, b0, A = S[on], b0[on], A[np.ix_(on, on)]
+                S, b0, A = S[on], b0[on], A[on][:, on]
                 if Dk is not None:
-                    Dk = Dk[np.ix_(on, on)]
+                    Dk = Dk[on][:, on]
                 if S.size == 0:
                     return None
             d_new = float(z[ns])
@@ -535,7 +669,7 @@ class SliceEquations:
                 return None
             width = ((s.x[S] - s.lo) / (s.hi - s.lo), np.sqrt(4 * R * qs))
             qrel = qs
-            if sweep == 0 and sweeps == 2:
+            if sweep < sweeps - 1:
                 d, theta = d_new, th_new
                 s2 = regrid(d, theta)
                 s2.iterations = s.iterations
@@ -560,6 +694,16 @@ class SliceEquations:
         slice loads together with d and theta needs, and at convergence the implicit
         derivative (:meth:`sensitivities`).
         """
+        if self.engine == "numba":
+            spos = S if len(targets) == self.n else np.searchsorted(targets, S)
+            far = self.n <= _N_FAR
+            out = compiled().linearised(
+                S, targets, spos, q, c, self._over, self.R, self.span, self.x, self.m,
+                self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
+                self._logratio, _far_geometry(*self._geometry) if far else None,
+                _FAR_COEF)
+            if out is not None:
+                return out
         R = self.R
         qs, cs = q[S], c[S]
         bb = qs / cs
@@ -627,6 +771,7 @@ class SliceEquations:
         n, R, piE = self.n, self.R, math.pi * self.E
         s = self
         blocked = np.zeros(n, int)
+        left_count = np.zeros(n, int)
         everyone = np.arange(n)
         for _ in range(max_steps):
             s.iterations += 1
@@ -646,40 +791,48 @@ class SliceEquations:
             np.multiply(res[ns:], -R, out=B[ns:, 0])
             np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
             np.multiply(rhs[ns:], R, out=B[ns:, 1:])
-            z = np.linalg.solve(J, B)
-            z[:ns] *= qsc
-            z[ns:] *= 1.0 / R
-            ws, xs = s.w[S], s.x[S]
-            W = np.stack([ws, ws * xs])
-            wq, wxq = W @ qs
-            # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
-            Wz = W @ z[:ns]
-            K = Wz[:, 1:] + grid
-            lin = Wz[:, 0]
-            step = np.zeros(2)
-            want = np.array([(force / piE - wq - lin[0]) if force is not None else 0.0,
-                             (-wxq - lin[1]) if zero_moment else 0.0])
-            if force is not None and zero_moment:
-                step = np.linalg.solve(K, want)
-            elif force is not None:
-                step[0] = want[0] / K[0, 0]
-            elif zero_moment:
-                step[1] = want[1] / K[1, 1]
-            dz = z[:, 0] + z[:, 1:] @ step
-            dq, dc = dz[:ns], dz[ns:]
-            # a slice at an end of the loaded set that the full step drives to q < 0 is
-            # outside the contact: it leaves at once (it would only block the step)
-            out = qs + dq < 0
-            if out.any() and ns > 2:
-                edge = np.zeros(ns, bool)
-                edge[[0, -1]] = True
-                gaps = np.flatnonzero(np.diff(S) > 1)
-                edge[gaps] = edge[gaps + 1] = True
-                out &= edge
-                if out.any() and not out.all():
-                    q[S[out]] = 0.0
-                    S = S[~out]
-                    continue
+            left = None
+            while True:
+                z = np.linalg.solve(J, B)
+                z[:ns] *= qsc
+                z[ns:] *= 1.0 / R
+                ws, xs = s.w[S], s.x[S]
+                W = np.stack([ws, ws * xs])
+                wq, wxq = W @ qs
+                # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
+                Wz = W @ z[:ns]
+                K = Wz[:, 1:] + grid
+                lin = Wz[:, 0]
+                step = np.zeros(2)
+                want = np.array([(force / piE - wq - lin[0]) if force is not None
+                                 else 0.0, (-wxq - lin[1]) if zero_moment else 0.0])
+                if force is not None and zero_moment:
+                    step = np.linalg.solve(K, want)
+                elif force is not None:
+                    step[0] = want[0] / K[0, 0]
+                elif zero_moment:
+                    step[1] = want[1] / K[1, 1]
+                dz = z[:, 0] + z[:, 1:] @ step
+                dq, dc = dz[:ns], dz[ns:]
+                # slices at an end of the loaded set that the full step drives to q < 0
+                # are outside the contact: they leave at once (they would only block the
+                # step), and the step is solved again without them on the same
+                # linearisation (_unloaded: no new kernels; a fresh linearisation for
+                # each slice leaving took 22 % more linearisations over the 104 cases
+                # of tables/roller_accuracy.csv)
+                out = qs + dq < 0
+                if not (out.any() and ns > 2):
+                    break
+                out = _end_runs(S, out)
+                if not out.any() or out.all():
+                    break
+                J, B = _unloaded(J, B, out, qs / qsc, cs * R)
+                left = S[out] if left is None else np.union1d(left, S[out])
+                left_count[S[out]] += 1
+                q[S[out]] = 0.0
+                S = S[~out]
+                ns = len(S)
+                qs, cs = q[S], c[S]
             alpha, hit_q = _fraction_to_boundary(qs, cs, dq, dc)
             # keep the rigid overlap positive: no step lowers it by more than half its
             # largest value (d stays above first contact)
@@ -707,7 +860,17 @@ class SliceEquations:
                 if dqmax <= qsc:
                     rest = np.ones(n, bool)
                     rest[S] = False
+                    if left is not None:      # their gaps are those before they left
+                        rest[left] = False
                     add = np.flatnonzero(rest & (gap > tol * dmax))
+                    if not small:
+                        # a slice that left three times rejoins only once the others
+                        # have converged without it: at a contact end between two
+                        # slices (the refined end zones of a logarithmic profile) it
+                        # could join and leave for ever (table cases 28 and 45 did so
+                        # when a refinement started from the coarser level's loads; a
+                        # safeguard now: no step count over the 104 cases changes)
+                        add = add[left_count[add] < 3]
                     if len(add) == 0 and small:
                         F = piE * (s.w @ q)
                         M = piE * ((s.w * s.x) @ q)

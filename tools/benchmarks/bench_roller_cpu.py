@@ -10,9 +10,14 @@ fourth round, 100 in the records before) per case, then one
 ``time.process_time`` (CPU time, not wall: the shared machine's load does not enter);
 the cases run in table order in one process, so the first includes the one-time build of the strip-function table.
 ``--repeat`` runs the whole list again and keeps each case's median. ``--save`` writes
-the results (depth, moment, tilt, p_max, edge, CPU time); ``--against`` compares with a
-saved run: the largest change in depth (over the case's largest approach), moment (over
-F L/2) and tilt (relative), to show that a speed-up leaves the results alone.
+the results (depth, moment, tilt, p_max, edge, CPU time, the Newton steps the solution
+reports); ``--against`` compares with a saved run: the largest change in depth (over the
+case's largest approach), moment (over F L/2) and tilt (relative), to show that a
+speed-up leaves the results alone. ``--count`` also counts the Newton steps of every
+solve a case makes (the linearisations, ``SliceEquations.linearised`` calls: the end
+refinement's re-solves included, which a solution's ``iterations`` leaves out) and the
+dense solves (``numpy.linalg.solve`` calls, any size); it wraps those functions, so
+run it apart from the timing.
 
 Complements tools/benchmarks/bench_roller.py (accuracy against the BEM, wall times).
 """
@@ -25,6 +30,24 @@ import sys
 import time
 
 import numpy as np
+
+
+def _counting():
+    """Wrap SliceEquations.linearised and numpy.linalg.solve to count their calls."""
+    from linecontact.roller import slices
+
+    counts = {"linearised": 0, "solve": 0}
+
+    def wrap(owner, name, key):
+        fn = getattr(owner, name)
+
+        def counted(*args, **kwargs):
+            counts[key] += 1
+            return fn(*args, **kwargs)
+        setattr(owner, name, counted)
+    wrap(slices.SliceEquations, "linearised", "linearised")
+    wrap(np.linalg, "solve", "solve")
+    return counts
 
 
 def run(repeat=1):
@@ -46,7 +69,7 @@ def run(repeat=1):
             times[i].append(time.process_time() - c0)
             out[i] = dict(case=i, profile=t["profile"], force=t["force"], tilt=r.tilt,
                           given_tilt=t["tilt"], depth=r.depth, moment=r.moment,
-                          p_max=r.p_max, edge=r.edge)
+                          p_max=r.p_max, edge=r.edge, iterations=r.iterations)
     for o, ts in zip(out, times):
         o["cpu_seconds"] = statistics.median(ts)
     return table, out
@@ -57,12 +80,19 @@ def main(argv=None):
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--save", default=None)
     ap.add_argument("--against", default=None)
+    ap.add_argument("--count", action="store_true")
     a = ap.parse_args(argv)
+    counts = _counting() if a.count else None
     table, out = run(a.repeat)
     t = np.array([o["cpu_seconds"] for o in out])
     order = np.argsort(-t)
     print(f"{len(t)} cases, default slices, CPU time per solve: median {np.median(t) * 1e3:.1f}"
           f" ms, largest {t.max() * 1e3:.1f} ms, over 100 ms: {(t > 0.1).sum()}")
+    print(f"Newton steps the solutions report (the last end-refinement level's): "
+          f"{sum(o['iterations'] for o in out)} over {len(out)} cases")
+    if counts is not None:
+        print(f"every solve of every case, {a.repeat} pass(es): {counts['linearised']} "
+              f"Newton steps (linearisations), {counts['solve']} dense solves")
     for i in order[:5]:
         o = out[i]
         tilt = "free" if o["given_tilt"] is None else f"{o['given_tilt'] * 1e3:g} mrad"

@@ -28,7 +28,13 @@ checkout and on the checkout DIR (each in a fresh process with its own directory
 on ``PYTHONPATH``), ``--rounds`` times each, A B A B, and prints the ratios of the
 one-solve medians round by round and their median. ``--no-refine`` solves with
 ``refine_ends=False`` (the solver alone, without the end refinement's re-solves;
-only for versions that have that option).
+only for versions that have that option). ``--engine E`` passes ``engine=E`` to
+``ProfiledRoller`` (only where given, so that the same command still times versions
+without engines; with ``--against`` only this checkout gets it: the other runs its
+own default). ``--kernels`` instead prints what the compiled engine costs
+(importing numba, loading its cached code, compiling it, each in a fresh process) and
+the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
+and whole solves with the two engines alternating in one process.
 """
 from __future__ import annotations
 
@@ -68,10 +74,16 @@ def main(argv=None):
     ap.add_argument("--no-refine", action="store_true")
     ap.add_argument("--against", default=None, metavar="DIR")
     ap.add_argument("--rounds", type=int, default=2)
+    ap.add_argument("--engine", default=None, choices=("auto", "numpy", "numba"))
+    ap.add_argument("--kernels", action="store_true")
     a = ap.parse_args(argv)
     if a.against:
         return _paired(a, argv if argv is not None else sys.argv[1:])
+    if a.kernels:
+        return _kernel_costs(a)
     extra = {"refine_ends": False} if a.no_refine else {}
+    if a.engine is not None:                # only where given: older versions lack it
+        extra["engine"] = a.engine
     if a.n_slices is not None:
         extra["n_slices"] = a.n_slices
 
@@ -89,7 +101,8 @@ def main(argv=None):
     print(f"linecontact from {os.path.relpath(linecontact.__file__)}")
     print(f"case: ISO 16281 profile, D {D * 1e3:g} mm, L {L * 1e3:g} mm, F {FORCE:g} N, "
           f"{a.n_slices or 'default'} slices (default spacing of this version)"
-          + (", refine_ends=False" if a.no_refine else ""))
+          + (", refine_ends=False" if a.no_refine else "")
+          + (f", engine={a.engine}" if a.engine else ""))
     rows = {}
     for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
         t, s = _cpu(lambda: cold(FORCE, tilt), a.repeat)
@@ -126,6 +139,99 @@ def main(argv=None):
     return 0
 
 
+def _kernel_costs(a):
+    """--kernels: what the compiled engine costs and saves, each in a fresh process
+    (importing numba, loading its cached code, compiling without a cache), per call
+    (SliceEquations.kernels and .linearised, numpy against numba, on the slice grid of
+    the converged 2 mrad solve: CPU medians of --repeat x 20 calls) and per solve
+    (--repeat pairs, the engines alternating)."""
+    import json
+    import tempfile
+
+    slices = {} if a.n_slices is None else {"n_slices": a.n_slices}
+
+    probe = (
+        "import json, os, time\n"
+        "c = time.process_time()\n"
+        "from linecontact.roller import ProfiledRoller\n"
+        "from tools.studies import roller_study as rs\n"
+        "prof = rs.make_profile('iso16281', %r, %r, %r)\n"
+        "t = {}\n"
+        "c0 = time.process_time()\n"
+        "ProfiledRoller(%r, %r, %r, prof, engine='numpy').at_force(%r, tilt=%r)\n"
+        "t['first numpy solve'] = time.process_time() - c0\n"
+        "c0 = time.process_time()\n"
+        "import numba\n"
+        "t['import numba'] = time.process_time() - c0\n"
+        "c0 = time.process_time()\n"
+        "ProfiledRoller(%r, %r, %r, prof, engine='numba').at_force(%r, tilt=%r)\n"
+        "t['first numba solve'] = time.process_time() - c0\n"
+        "print(json.dumps(t))\n"
+    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 2)
+    env = dict(os.environ)
+    with tempfile.TemporaryDirectory() as cache:
+        for label, extra in (("no cache (compiles)", {"NUMBA_CACHE_DIR": cache}),
+                             ("cache written above", {"NUMBA_CACHE_DIR": cache})):
+            rows = []
+            for _ in range(3):
+                out = subprocess.run([sys.executable, "-c", probe], capture_output=True,
+                                     text=True, check=True, env=dict(env, **extra)).stdout
+                rows.append(json.loads(out))
+                if label.startswith("no cache"):
+                    break
+            med = {k: statistics.median(r[k] for r in rows) for k in rows[0]}
+            print(f"fresh process, {label}: "
+                  + ", ".join(f"{k} {v * 1e3:.0f} ms" for k, v in med.items())
+                  + f" (median of {len(rows)})")
+
+    from linecontact.roller import ProfiledRoller
+    from tools.studies import roller_study as rs
+
+    prof = rs.make_profile("iso16281", L, D / 2, ESTAR)
+    roller = ProfiledRoller(D / 2, L, ESTAR, prof, engine="numpy", **slices)
+    sol = roller.at_force(FORCE, tilt=TILT)
+    times = {}
+    for engine in ("numpy", "numba"):
+        s = roller._grid(sol.depth, sol.tilt)
+        s.engine = engine
+        q = np.interp(s.x, sol.x, sol.q) / (np.pi * ESTAR)
+        S = np.flatnonzero(q > 0)
+        c = np.full(s.n, 1.0 / (4 * s.R))
+        b = np.sqrt(4 * s.R * q[S])
+        c[S] = q[S] / b ** 2
+        s._over = sol.depth + sol.tilt * s.x - s.P
+        slope = s.slope_at_slices()
+        every = np.arange(s.n)
+        s.linearised(S, q, c, sol.tilt, slope, every)     # compiled: loaded once
+        for name, fn in (("kernels", lambda: s.kernels(S, b)),
+                         ("linearised", lambda: s.linearised(S, q, c, sol.tilt, slope,
+                                                             every))):
+            t, _ = _cpu(lambda: [fn() for _ in range(20)], a.repeat)
+            times[(name, engine)] = t / 20
+    print(f"per call, {s.n} slices, {len(S)} loaded (CPU median over {a.repeat} x 20):")
+    for name in ("kernels", "linearised"):
+        tn, tb = times[(name, "numpy")], times[(name, "numba")]
+        print(f"  {name}: numpy {tn * 1e6:.0f} us, numba {tb * 1e6:.0f} us, "
+              f"ratio numba/numpy {tb / tn:.3f}")
+    # whole solves, the engines alternating in this one process (A B B A ...), so that
+    # the machine's drift between processes does not enter the ratio
+    for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
+        ts = {"numpy": [], "numba": []}
+        for i in range(a.repeat):
+            for engine in (("numpy", "numba") if i % 2 == 0 else ("numba", "numpy")):
+                c0 = time.process_time()
+                ProfiledRoller(D / 2, L, ESTAR, prof, **slices,
+                               engine=engine).at_force(FORCE, tilt=tilt)
+                ts[engine].append(time.process_time() - c0)
+        ratios = [b / n for b, n in zip(ts["numba"], ts["numpy"])]
+        print(f"one solve, {label}, engines alternating in one process ({a.repeat} "
+              f"pairs): CPU median numpy {statistics.median(ts['numpy']) * 1e3:.2f} ms, "
+              f"numba {statistics.median(ts['numba']) * 1e3:.2f} ms; ratio numba/numpy "
+              f"median of pairs {statistics.median(ratios):.3f} (quartiles "
+              f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f})")
+    return 0
+
+
 def _paired(a, argv):
     """This command on this checkout (A) and on the checkout a.against (B), in turn,
     a.rounds times each; the ratios A/B of the one-solve medians."""
@@ -136,12 +242,13 @@ def _paired(a, argv):
         if skip:
             skip = False
             continue
-        if v in ("--against", "--rounds"):
+        if v in ("--against", "--rounds", "--engine"):
             skip = True
             continue
-        if v.startswith(("--against=", "--rounds=")):
+        if v.startswith(("--against=", "--rounds=", "--engine=")):
             continue
         args.append(v)
+    mine = args + (["--engine", a.engine] if a.engine else [])   # this checkout only
     pat = re.compile(r"one solve, cold, (.+?): CPU median ([\d.]+) ms")
     ratios = {}
     for r in range(a.rounds):
@@ -149,8 +256,8 @@ def _paired(a, argv):
         for name, root in (("A", here), ("B", other)):
             env = dict(os.environ, PYTHONPATH=str(root))
             out = subprocess.run([sys.executable, "-m", "tools.benchmarks.bench_roller_speed",
-                                  *args], cwd=root, env=env, capture_output=True, text=True,
-                                 check=True).stdout
+                                  *(mine if name == "A" else args)], cwd=root, env=env,
+                                 capture_output=True, text=True, check=True).stdout
             print(f"--- round {r + 1}, {name} = {root.name}:")
             print(out.rstrip())
             got[name] = {k: float(v) for k, v in pat.findall(out)}

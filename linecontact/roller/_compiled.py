@@ -1,0 +1,429 @@
+"""Compiled loops of the coupled-slice equations (numba, optional; ``engine="numba"``).
+
+:meth:`SliceEquations.kernels <linecontact.roller.slices.SliceEquations.kernels>` and
+:meth:`~linecontact.roller.slices.SliceEquations.linearised` as loops over the source
+slices, each source's column of all four kernels at once, with the arithmetic of the
+numpy code in
+:mod:`linecontact.roller.slices`, which stays the reference and the fallback: the same
+cached unit geometry (near and far edge distances, their log ratio, the far-field
+power differences G), the same series coefficients
+(:func:`~linecontact.roller.kernel.far_field_coefficients`) and the same cubic spline
+(:func:`~linecontact.roller.kernel.spline_table`), the same split into far field,
+near band and diagonal. Three differences, all below 1e-15 of each matrix's scale:
+sums run in another order, the far-field sum of a pair stops once the next power of
+(b/t)^2 at its near edge is below 1e-18 (the numpy code always takes all 14 terms; at
+t/b = 3 they are needed, from t/b = 32 six and from 180 four suffice), and the
+spline's ln(t/b) is ln t + ln(span/b) with ln t cached (one log per source, not two
+per pair). The Jacobian, residual and grid terms are assembled from each source's
+column as it is computed, without the four intermediate matrices.
+
+Beyond the table (tau >= 1e4: a strip far narrower than the slices, a slice about to
+leave the contact) the strip functions come from their series, as in the numpy code;
+below it (tau < 1e-4, a strip thousands of slices wide: the quadrature) a function
+returns False and the caller takes the numpy path for that call.
+
+Imported only when the compiled engine is asked for (importing numba costs a few
+hundred ms; the compiled code is cached on disk next to this file, or in numba's
+user-wide cache where the package is read-only; docs/profiled_rollers.md, "Engines").
+"""
+from __future__ import annotations
+
+import warnings
+
+import numba
+import numpy as np
+
+from .kernel import R_INF, spline_table
+
+__all__ = []
+
+#: the far-field sum of a pair takes term j (x^(j + 1) times a coefficient below 1.3 in
+#: magnitude, x = (b/t)^2 at the near edge) where x^(j + 1) >= FAR_STOP, term 0 always
+FAR_STOP = 1e-18
+
+
+_UNCACHED = []
+
+
+def _jit(fn):
+    """njit with an on-disk cache (next to this file, else numba's user-wide cache
+    directory); without one where numba finds no writable place (a read-only install
+    and home): then every process compiles again (seconds), said once by a warning."""
+    try:
+        return numba.njit(cache=True, nogil=True)(fn)
+    except RuntimeError as err:              # numba: "no locator available"
+        if not _UNCACHED:
+            warnings.warn(f"linecontact: the compiled roller kernels cannot be cached "
+                          f"({err}); each process compiles them again, a few seconds "
+                          "(set NUMBA_CACHE_DIR to a writable directory)", RuntimeWarning,
+                          stacklevel=2)
+        _UNCACHED.append(fn.__name__)
+        return numba.njit(cache=False, nogil=True)(fn)
+
+
+def _far_powers(b, span, fc):
+    """C[i, j, f] = beta_i^(j+1) fc[j, f], beta = (b/span)^2 (the far-field series of
+    source i in its unit-geometry powers)."""
+    ns, K = b.shape[0], fc.shape[0]
+    C = np.empty((ns, K, 4))
+    for i in range(ns):
+        beta = (b[i] * (1.0 / span)) ** 2
+        bp = 1.0
+        for j in range(K):
+            bp *= beta
+            for f in range(4):
+                C[i, j, f] = bp * fc[j, f]
+    return C
+
+
+_far_powers = _jit(_far_powers)
+
+
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, taumax,
+            tmin, tmax, coef, z0, ih, h, W, bnd):
+    """The four kernels of source slice si (strip half-width bi, far-field series
+    coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED (the far
+    field of A alone unless `full`: W[1:] then undefined there). tn, tf, lr,
+    their logs ltn, ltf and Gt are indexed [source, target] (transposed); the spline's
+    ln(t/b) is ln t + ln(span/b), one log per source. At t/b >= tmax (a strip far
+    narrower than the slices: a slice about to leave the contact) the four functions
+    come from their series in (b/t)^2 (fc, as the numpy code's strip_values does);
+    returns False where t/b < tmin (the quadrature: then the numpy code).
+
+    The near band, {k : tn[si, k] < 3 b/span} (the numpy code's test), is an interval
+    [kl, kr] around si, since tn grows away from the source; outside it the far-field
+    series, term j over the targets whose near-edge t/b <= taumax[j] (those at which
+    it can exceed FAR_STOP): two intervals [bnd[0, j], kl) and (bnd[1, j], kr] that
+    shrink with j, so that the targets fall into bands of equal term counts."""
+    nseg = coef.shape[2]
+    ibi = span / bi
+    thr = 3.0 * (1.0 / ibi)
+    tnr = tn[si]
+    kl, kr = 0, n - 1
+    if far:
+        kl = si
+        while kl > 0 and tnr[kl - 1] < thr:
+            kl -= 1
+        kr = si
+        while kr < n - 1 and tnr[kr + 1] < thr:
+            kr += 1
+        K = Gt.shape[1]
+        lo, hi = 0, n - 1
+        for j in range(K):
+            if j > 0:
+                while lo < kl and tnr[lo] * ibi > taumax[j]:
+                    lo += 1
+                while hi > kr and tnr[hi] * ibi > taumax[j]:
+                    hi -= 1
+            bnd[0, j] = lo
+            bnd[1, j] = hi
+        bnd[0, K] = kl
+        bnd[1, K] = kr
+        g = Gt[si]
+        lrr = lr[si]
+        W[:, :kl] = 0.0
+        W[:, kr + 1:] = 0.0
+        # term j over the targets that take it: contiguous loops over 1D views (which
+        # numba vectorises; indexing W[f, k] in the loop it does not)
+        for j in range(K):
+            c0, c1, c2, c3 = Cs[j, 0], Cs[j, 1], Cs[j, 2], Cs[j, 3]
+            for side in range(2):
+                if side == 0:
+                    k0, k1 = bnd[0, j], kl
+                else:
+                    k0, k1 = kr + 1, bnd[1, j] + 1
+                if k1 <= k0:
+                    continue
+                gj = g[j, k0:k1]
+                w0, w1, w2, w3 = W[0, k0:k1], W[1, k0:k1], W[2, k0:k1], W[3, k0:k1]
+                if not full:
+                    for k in range(gj.shape[0]):
+                        w0[k] += gj[k] * c0
+                    continue
+                for k in range(gj.shape[0]):
+                    w0[k] += gj[k] * c0
+                    w1[k] += gj[k] * c1
+                    w2[k] += gj[k] * c2
+                    w3[k] += gj[k] * c3
+        for k in range(kl):
+            W[0, k] = lrr[k] + W[0, k]
+        for k in range(kr + 1, n):
+            W[0, k] = lrr[k] + W[0, k]
+    # the near band (every pair without the far field) at both edges, the diagonal at
+    # tau = w/2b
+    tfr = tf[si]
+    ltnr = ltn[si]
+    ltfr = ltf[si]
+    lib = np.log(ibi)
+    for k in range(kl, kr + 1):
+        if k == si:
+            ntau = 1
+            tau0 = (0.5 * span) * dg[si] / bi
+            tau1 = tau0
+            z0k = np.log(tau0)
+            z1k = z0k
+        else:
+            ntau = 2
+            tau0 = tfr[k] * ibi
+            tau1 = tnr[k] * ibi
+            z0k = ltfr[k] + lib
+            z1k = ltnr[k] + lib
+        r = ta = p = tp = 0.0
+        for e in range(ntau):
+            tau = tau0 if e == 0 else tau1
+            sg = 1.0 if e == 0 else -1.0
+            if tau >= tmax:
+                x = 1.0 / (tau * tau)
+                xp = 1.0
+                sr = sta = sp = stp = 0.0
+                for j in range(fc.shape[0]):
+                    xp *= x
+                    sr += fc[j, 0] * xp
+                    sta += fc[j, 1] * xp
+                    sp += fc[j, 2] * xp
+                    stp += fc[j, 3] * xp
+                    if xp * x < FAR_STOP:
+                        break
+                r += sg * (R_INF + sr)
+                ta += sg * (1.0 + sta)
+                p += sg * sp
+                tp += sg * stp
+                continue
+            if not tmin <= tau:
+                return False
+            u = ((z0k if e == 0 else z1k) - z0) * ih
+            i = int(u)
+            if i > nseg - 1:
+                i = nseg - 1
+            t = (u - i) * h
+            r += sg * (((coef[3, 0, i] * t + coef[2, 0, i]) * t + coef[1, 0, i]) * t
+                       + coef[0, 0, i])
+            ta += sg * (((coef[3, 1, i] * t + coef[2, 1, i]) * t + coef[1, 1, i]) * t
+                        + coef[0, 1, i])
+            p += sg * (((coef[3, 2, i] * t + coef[2, 2, i]) * t + coef[1, 2, i]) * t
+                       + coef[0, 2, i])
+            tp += sg * (((coef[3, 3, i] * t + coef[2, 3, i]) * t + coef[1, 3, i]) * t
+                        + coef[0, 3, i])
+        if ntau == 1:
+            W[0, k] = 2.0 * (np.log(span * dg[si] / bi) + r)
+            W[1, k] = 2.0 * ta
+            W[2, k] = 2.0 * p - 4.0
+            W[3, k] = 2.0 * tp
+        else:
+            W[0, k] = lr[si, k] + r
+            W[1, k] = ta
+            W[2, k] = p
+            W[3, k] = tp
+    return True
+
+
+_column = _jit(_column)
+
+
+def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax,
+             coef, z0, ih, h, A, EA, D, ED):
+    """A (and EA, D, ED where they are other arrays than A), (len(T), len(S)), Fortran
+    order: kernels(). False where a spline argument leaves the table."""
+    n = tn.shape[0]
+    ns, nt = S.shape[0], T.shape[0]
+    C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
+    W = np.empty((4, n))
+    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
+    full = EA.shape[0] > 0
+    for s in range(ns):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
+                       full, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+            return False
+        for kt in range(nt):
+            A[kt, s] = W[0, T[kt]]
+        if full:
+            for kt in range(nt):
+                k = T[kt]
+                EA[kt, s] = W[1, k]
+                D[kt, s] = W[2, k]
+                ED[kt, s] = W[3, k]
+    return True
+
+
+_kernels = _jit(_kernels)
+
+
+def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
+                tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax, coef, z0, ih, h,
+                res, J, rhs, gap, grid):
+    """res, J (Fortran order), rhs, gap and grid of SliceEquations.linearised, filled
+    in place, one source column at a time; spos[p] is the position of S[p] among the
+    targets T."""
+    n = tn.shape[0]
+    ns = S.shape[0]
+    nt = T.shape[0]
+    qs = np.empty(ns)
+    cs = np.empty(ns)
+    b = np.empty(ns)
+    bb = np.empty(ns)
+    for s in range(ns):
+        qs[s] = q[S[s]]
+        cs[s] = c[S[s]]
+        bb[s] = qs[s] / cs[s]
+        b[s] = np.sqrt(bb[s])
+    C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
+    W = np.empty((4, n))
+    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
+    aq = np.zeros(nt)
+    dc = np.zeros(ns)
+    eaq = np.zeros(ns)
+    edc = np.zeros(ns)
+    contiguous = S[ns - 1] - S[0] + 1 == ns
+    for s in range(ns):
+        if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
+                       True, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+            return False
+        qv = qs[s]
+        cv = cs[s]
+        hb = 0.5 * bb[s]
+        mhb = -0.5 / bb[s]
+        if nt == n:                                  # every slice a target: T[k] = k
+            w0 = W[0]
+            for k in range(n):
+                aq[k] += w0[k] * qv
+        else:
+            for kt in range(nt):
+                aq[kt] += W[0, T[kt]] * qv
+        if contiguous:
+            # the rows of S are one run of targets: contiguous views (vectorised)
+            wa, wea = W[0, S[0]:S[0] + ns], W[1, S[0]:S[0] + ns]
+            wd, wed = W[2, S[0]:S[0] + ns], W[3, S[0]:S[0] + ns]
+            j00, j10 = J[:ns, s], J[ns:, s]
+            j01, j11 = J[:ns, ns + s], J[ns:, ns + s]
+            for p in range(ns):
+                ea = wea[p]
+                ed = wed[p]
+                d = wd[p]
+                j00[p] = wa[p] + (-0.5) * ea
+                j10[p] = ed * mhb
+                j01[p] = ea * hb
+                j11[p] = ed * 0.5 + d
+                dc[p] += d * cv
+                eaq[p] += ea * qv
+                edc[p] += ed * cv
+            continue
+        for p in range(ns):
+            k = S[p]
+            a = W[0, k]
+            ea = W[1, k]
+            d = W[2, k]
+            ed = W[3, k]
+            J[p, s] = a + (-0.5) * ea
+            J[ns + p, s] = ed * mhb
+            J[p, ns + s] = ea * hb
+            J[ns + p, ns + s] = ed * 0.5 + d
+            dc[p] += d * cv
+            eaq[p] += ea * qv
+            edc[p] += ed * cv
+    for kt in range(nt):
+        gap[kt] = over[T[kt]] - aq[kt]
+    for p in range(ns):
+        k = S[p]
+        res[p] = -gap[spos[p]]
+        res[ns + p] = dc[p] + 1.0 / R
+        # -dR/d(d, theta) with the grid's motion (as the numpy code)
+        ts = theta - slope[k]
+        for g in range(2):
+            rhs[p, g] = (m[k] * (dhi[g] - dlo[g]) + dlo[g]) * ts
+            rhs[p, g] -= eaq[p] * ((dhi[g] - dlo[g]) / span)
+            rhs[ns + p, g] = edc[p] * (-((dhi[g] - dlo[g]) / span))
+        rhs[p, 0] += 1.0
+        rhs[p, 1] += x[k]
+    # d(w.q, (w x).q)/d(d, theta) at fixed q
+    dq = 0.0
+    dxq = 0.0
+    wqs = 0.0
+    wm = 0.0
+    for s in range(ns):
+        si = S[s]
+        dq += dg[si] * qs[s]
+        dxq += (dg[si] * qs[s]) * x[si]
+        wq = (span * dg[si]) * qs[s]
+        wqs += wq
+        wm += wq * m[si]
+    w1m = wqs - wm
+    dw0 = -dxq + w1m
+    dw1 = dxq + wm
+    for g in range(2):
+        grid[0, g] = dq * (dhi[g] - dlo[g])
+        grid[1, g] = dw0 * dlo[g] + dw1 * dhi[g]
+    return True
+
+
+_linearised = _jit(_linearised)
+
+
+_TABLE = []
+
+
+def table():
+    """tau_min, tau_max, coef, z0, 1/h, h of the spline table (built once)."""
+    if not _TABLE:
+        t = spline_table()
+        _TABLE.append((float(t.tau_min), float(t.tau_max), t.coef, float(t.z0),
+                       1.0 / t.h, float(t.h)))
+    return _TABLE[0]
+
+
+_NO_G = np.zeros((1, 1, 1))
+_T = {}
+
+
+def _transposed(tn, tf, lr, G, fc):
+    """The unit geometry as [source, target] (each source's column contiguous): tn,
+    tf, lr, ln tn, ln tf, and G as (source, power, target); taumax[j] =
+    FAR_STOP^(-1/(2(j+1))): term j of the series counts only where the near edge's t/b
+    is at most taumax[j]. Kept for the last few geometries (the numpy code's caches
+    hold the originals)."""
+    got = _T.get(id(tn))
+    if got is None or got[0] is not tn or got[1] is not G:
+        if len(_T) >= 8:
+            _T.clear()
+        K = fc.shape[0]
+        taumax = FAR_STOP ** (-1.0 / (2.0 * np.arange(1, K + 1)))
+        Gt = _NO_G if G is None else np.ascontiguousarray(G.transpose(0, 2, 1))
+        tnt, tft = np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T)
+        got = (tn, G, tnt, tft, np.ascontiguousarray(lr.T), np.log(tnt), np.log(tft), Gt,
+               taumax)
+        _T[id(tn)] = got
+    return got[2:]
+
+
+def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
+    """A, D, EA, ED (the others None with a_only) for targets T and sources S, or
+    None where a spline argument leaves the table. G None: every pair from the table."""
+    nt, ns = len(T), len(S)
+    A = np.empty((nt, ns), order="F")
+    if a_only:
+        EA = D = ED = np.empty((0, 0), order="F")
+    else:
+        EA, D, ED = (np.empty((nt, ns), order="F") for _ in range(3))
+    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    if not _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, G is not None,
+                    taumax, *table(), A, EA, D, ED):
+        return None
+    return (A, None, None, None) if a_only else (A, D, EA, ED)
+
+
+def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
+               tn, tf, lr, G, fc):
+    """(res, J, rhs, gap, grid) of SliceEquations.linearised (J in Fortran order), or
+    None where a spline argument leaves the table."""
+    ns, nt = len(S), len(T)
+    res = np.empty(2 * ns)
+    J = np.empty((2 * ns, 2 * ns), order="F")
+    rhs = np.empty((2 * ns, 2))
+    gap = np.empty(nt)
+    grid = np.empty((2, 2))
+    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    if not _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, float(theta),
+                       np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr, ltn,
+                       ltf, Gt, fc, G is not None, taumax, *table(), res, J, rhs, gap,
+                       grid):
+        return None
+    return res, J, rhs, gap, grid

@@ -1,0 +1,311 @@
+"""The engines of the coupled-slice equations: the compiled kernels and linearisation
+(linecontact/roller/_compiled.py, numba) against the numpy reference
+(SliceEquations.kernels, linearised), whole solves with both engines, and the choice of
+engine (docs/profiled_rollers.md, "Engines").
+
+The compiled code evaluates the same series coefficients, the same spline table and the
+same cached geometry with the same split into far field, near band and diagonal; it
+differs only in the order of sums and in stopping each far-field sum once the next
+power of (b/t)^2 is below 1e-18. So every entry agrees to a few units of rounding of
+the matrix's largest entry: 1e-12 of it leaves three orders of margin and still catches
+any term, pair or index taken wrongly (those are >= 1e-10 of the scale: the spline's
+own error against the series).
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from linecontact import OutOfRangeError
+from linecontact.roller import ProfiledRoller
+from linecontact.roller import slices as sl
+from linecontact.roller.slices import SliceEquations
+from linecontact.validity import UnknownNameError
+
+TOL = 1e-12
+
+
+def _equations(n, grading, refine, engine):
+    # a quartic drop over an asymmetric overlap interval; dlo, dhi and the slope are
+    # arbitrary numbers: the test compares two evaluations of the same formulas
+    s = SliceEquations(5e-3, 1.15e11, -6e-3, 6.5e-3, n, lambda x: 1e-6 * (x / 6e-3) ** 4,
+                       grading, refine, engine=engine)
+    s.dlo, s.dhi = (0.1, -0.3), (-0.2, 0.4)
+    s._over = 1e-6 + 1e-4 * s.x
+    return s
+
+
+def _close(a, b, what):
+    """Elementwise |a - b| <= TOL times the largest |a| (a the numpy reference)."""
+    if a is None:
+        assert b is None, what
+        return
+    scale = np.max(np.abs(a))
+    err = np.max(np.abs(np.asarray(a) - np.asarray(b))) / scale
+    assert err <= TOL, f"{what}: {err:.2e} of the largest entry"
+
+
+# uniform, graded, graded with refined ends, and above the far-field limit _N_FAR
+# (every pair from the spline table)
+GRIDS = [(60, 0.0, 0), (100, 0.8, 0), (100, 0.8, 2), (sl._N_FAR + 50, 0.5, 0)]
+
+
+def _states(N, rng):
+    """Loaded sets (all, contiguous, with gaps) and loads: q ~ 1e-7 m, b ~ 1e-4 m (the
+    near band then spans a few slices)."""
+    for S in (np.arange(N), np.arange(3, N - 5),
+              np.sort(rng.choice(N, N // 2, replace=False))):
+        q = np.zeros(N)
+        c = np.zeros(N)
+        q[S] = 1e-7 * (1 + rng.random(len(S)))
+        c[S] = q[S] / (1e-4 * (0.5 + rng.random(len(S)))) ** 2
+        yield S, q, c
+
+
+@pytest.mark.parametrize("grid", GRIDS)
+def test_compiled_kernels_equal_numpy(grid):
+    """A, D, EA, ED (and A alone) from the compiled loops equal the numpy kernels within
+    1e-12 of each matrix's largest entry, for every loaded set and target set."""
+    pytest.importorskip("numba")
+    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    N = a.n
+    rng = np.random.default_rng(1)
+    for S, q, c in _states(N, rng):
+        bS = np.sqrt(q[S] / c[S])
+        for T in (None, np.arange(N), np.union1d(S, [0, N - 1])):
+            for a_only in (False, True):
+                ka = a.kernels(S, bS, targets=T, a_only=a_only)
+                kb = b.kernels(S, bS, targets=T, a_only=a_only)
+                for name, x, y in zip("A D EA ED".split(), ka, kb):
+                    _close(x, y, f"{grid} {name} ns={len(S)} a_only={a_only}")
+
+
+@pytest.mark.parametrize("grid", GRIDS)
+def test_compiled_linearised_equals_numpy(grid):
+    """Residual, Jacobian, grid columns, gaps and the 2x2 grid terms of linearised()
+    from the compiled loops equal the numpy ones within 1e-12 of each one's largest
+    entry (all slices or a subset as targets)."""
+    pytest.importorskip("numba")
+    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    N = a.n
+    rng = np.random.default_rng(2)
+    slope = 4e-6 * a.x ** 3 / 6e-3 ** 4
+    for S, q, c in _states(N, rng):
+        for T in (np.arange(N), np.union1d(S, [0, N - 1])):
+            la = a.linearised(S, q, c, 1e-3, slope, T)
+            lb = b.linearised(S, q, c, 1e-3, slope, T)
+            for name, x, y in zip("res J rhs gap grid".split(), la, lb):
+                _close(x, y, f"{grid} {name} ns={len(S)} nt={len(T)}")
+
+
+def test_compiled_outside_the_spline_table():
+    """Beyond the spline table, t/b >= 1e4 (a slice about to leave, its strip
+    nanometres wide: b = 1e-12 m here), the compiled code takes the series itself and
+    agrees with the numpy code (which does the same); below it, t/b < 1e-4 (a strip
+    far wider than the slices, b = 20 m), the call goes to the numpy code (series and
+    quadrature) under either engine. Both: 1e-12 of each matrix's largest entry."""
+    pytest.importorskip("numba")
+    from linecontact.roller import _compiled
+
+    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, "numba")
+    S = np.arange(60)
+    tiny = np.full(60, 1e-4)
+    tiny[[0, 7, 59]] = 1e-12                 # w/2b ~ 1e8 on those diagonals
+    got = _compiled.kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
+                            sl._far_geometry(*b._geometry), sl._FAR_COEF, False)
+    assert got is not None, "the compiled code fell back to numpy beyond the table"
+    for bS in (tiny, np.full(60, 20.0)):
+        for x, y, name in zip(a.kernels(S, bS), b.kernels(S, bS), "A D EA ED".split()):
+            _close(x, y, name)
+
+
+CASES = [
+    # (profile, force [N], tilt): the ISO 16281 case of the speed benchmark at a given
+    # and a free tilt, a crowned roller, and a logarithmic end at a high load (the end
+    # refinement re-solves it on refined grids)
+    ("iso16281", 4200.0, 2e-3),
+    ("iso16281", 4200.0, "free"),
+    ("circular:Rc=0.5", 1000.0, 1e-3),
+    ("iso16281", 20000.0, 0.5e-3),
+]
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_whole_solves_agree_between_engines(case):
+    """A solve at a force with either engine: depth, tilt, moment, peak pressure and
+    stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the engines differ by
+    rounding only, so both reach the same converged state)."""
+    pytest.importorskip("numba")
+    profile, force, tilt = case
+    sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(
+        force, tilt=tilt) for e in ("numpy", "numba")]
+    a, b = sols
+    assert a.depth == pytest.approx(b.depth, rel=1e-10)
+    assert a.p_max == pytest.approx(b.p_max, rel=1e-10)
+    assert a.tilt == pytest.approx(b.tilt, rel=1e-10, abs=1e-10 * 1e-3)
+    assert abs(a.moment - b.moment) <= 1e-10 * force * 14e-3
+    np.testing.assert_allclose(a.stiffness_matrix, b.stiffness_matrix, rtol=1e-10,
+                               atol=1e-10 * np.max(np.abs(a.stiffness_matrix)))
+
+
+def test_engine_names_are_checked():
+    """engine takes 'auto', 'numpy' or 'numba'; anything else is refused by name."""
+    with pytest.raises(UnknownNameError, match="engine"):
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="fortran")
+
+
+def test_numpy_engine_without_numba():
+    """Without numba (its import blocked in a fresh interpreter) the numpy engine is
+    used: 'auto' and 'numpy' solve, 'auto' stays numpy past the switching point, and
+    'numba' is refused with a message naming the parameter, the value and what to
+    install."""
+    code = (
+        "import sys; sys.modules['numba'] = None\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "from linecontact import OutOfRangeError\n"
+        "for e in ('auto', 'numpy'):\n"
+        "    s = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
+        " engine=e).at_force(500.0)\n"
+        "slices._NUMPY_STEPS[0] = slices.AUTO_SWITCH_STEPS\n"
+        "assert slices.resolve_engine('auto') == 'numpy'\n"
+        "try:\n"
+        "    ProfiledRoller(5e-3, 14e-3, 1e11, engine='numba')\n"
+        "except OutOfRangeError as err:\n"
+        "    print(err)\n"
+        "assert 'linecontact.roller._compiled' not in sys.modules\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout
+    assert "engine" in out and "numba" in out and "pip install" in out, out
+
+
+def test_auto_switches_after_the_numpy_steps():
+    """engine='auto' resolves to numpy for a fresh process and to numba (where it is
+    installed) once the process has taken AUTO_SWITCH_STEPS numpy steps."""
+    kept = sl._NUMPY_STEPS[0]
+    try:
+        sl._NUMPY_STEPS[0] = 0
+        assert sl.resolve_engine("auto") == "numpy"
+        sl._NUMPY_STEPS[0] = sl.AUTO_SWITCH_STEPS
+        assert sl.resolve_engine("auto") == ("numba" if sl.numba_installed() else "numpy")
+        assert sl.resolve_engine("numpy") == "numpy"
+    finally:
+        sl._NUMPY_STEPS[0] = kept
+
+
+def test_auto_stays_numpy_where_numba_does_not_import():
+    """engine='auto' with a numba that is installed but does not import (say, built for
+    another numpy): past the switching point it warns once and keeps solving with
+    numpy; engine='numba' is refused at construction, naming the parameter."""
+    code = (
+        "import sys, warnings, importlib.util\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "from linecontact import OutOfRangeError\n"
+        "class Broken:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name == 'numba':\n"
+        "            raise ImportError('numba built for another numpy')\n"
+        "sys.modules.pop('numba', None)\n"
+        "sys.meta_path.insert(0, Broken())\n"
+        "slices._HAVE_NUMBA[:] = [True]\n"
+        "slices._NUMPY_STEPS[0] = slices.AUTO_SWITCH_STEPS\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    s = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20)"
+        ".at_force(500.0)\n"
+        "print(sum('do not import' in str(x.message) for x in w))\n"
+        "try:\n"
+        "    ProfiledRoller(5e-3, 14e-3, 1e11, engine='numba')\n"
+        "except OutOfRangeError as err:\n"
+        "    print('refused:', err)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout
+    assert out.splitlines()[0] == "1", out
+    assert "refused: engine" in out and "does not import" in out, out
+
+
+def test_a_single_solve_does_not_import_numba():
+    """Cold start: one profiled-roller solve with the default engine ('auto') in a
+    fresh interpreter never imports numba (its import and code loading cost about
+    0.5 s, some 40 solves)."""
+    code = ("import sys\n"
+            "from linecontact.roller import ProfiledRoller\n"
+            "ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281').at_force(4000.0, tilt=1e-3)\n"
+            "print('numba' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout
+    assert out.strip() == "False"
+
+
+def _twice(x):
+    return 2.0 * x
+
+
+def test_jit_falls_back_to_no_cache(monkeypatch):
+    """Where numba finds no writable cache directory (every cache location refusing,
+    as in a read-only install and home) the kernels' decorator compiles without a
+    cache instead of failing, and warns (once per process)."""
+    pytest.importorskip("numba")
+    import numba.core.caching as caching
+
+    from linecontact.roller import _compiled
+
+    def refuse(self):
+        raise OSError("read-only")
+
+    monkeypatch.setattr(caching._CacheLocator, "ensure_cache_path", refuse)
+    monkeypatch.setattr(_compiled, "_UNCACHED", [])
+    with pytest.warns(RuntimeWarning, match="cannot be cached"):
+        f = _compiled._jit(_twice)
+    assert f(3.0) == 6.0
+    assert _compiled._UNCACHED == ["_twice"]
+
+
+@pytest.mark.slow
+def test_compiled_engine_without_a_writable_cache():
+    """Where numba finds no writable cache directory (a read-only install and home:
+    simulated by making every cache location refuse), the compiled engine still
+    works: it compiles in the process (about 5 s, hence slow), says so once with a
+    RuntimeWarning, and solves as the numpy engine does (1e-10)."""
+    pytest.importorskip("numba")
+    code = (
+        "import warnings\n"
+        "import numba.core.caching as c\n"
+        "def refuse(self):\n"
+        "    raise OSError('read-only')\n"
+        "c._CacheLocator.ensure_cache_path = refuse\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    from linecontact.roller import ProfiledRoller\n"
+        "    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
+        " engine=e).at_force(500.0, tilt=1e-3) for e in ('numpy', 'numba'))\n"
+        "print(sum('cannot be cached' in str(x.message) for x in w))\n"
+        "print(abs(a.depth / b.depth - 1) < 1e-10, abs(a.p_max / b.p_max - 1) < 1e-10)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "1", f"{out[0]} warnings that the compiled code is not cached"
+    assert out[1:] == ["True", "True"], out
+
+
+def test_auto_switches_within_a_sweep():
+    """A load sweep on one roller with engine='auto' (the switching point lowered to
+    30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
+    imported part-way, and every row equals the numpy engine's sweep within 1e-10."""
+    pytest.importorskip("numba")
+    code = (
+        "import sys, numpy as np\n"
+        "from linecontact.roller import ProfiledRoller, slices\n"
+        "slices.AUTO_SWITCH_STEPS = 30\n"
+        "F = np.linspace(500.0, 8000.0, 12)\n"
+        "auto = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281').at_force(F, tilt=1e-3)\n"
+        "print('linecontact.roller._compiled' in sys.modules)\n"
+        "ref = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281', engine='numpy')"
+        ".at_force(F, tilt=1e-3)\n"
+        "print(max(max(abs(a.depth / r.depth - 1), abs(a.p_max / r.p_max - 1))"
+        " for a, r in zip(auto, ref)))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out[0] == "True", "engine='auto' never switched to the compiled kernels"
+    assert float(out[1]) <= 1e-10, out

@@ -383,6 +383,18 @@ def _covered():
             for k in meta if k.startswith("covered_") and k != "covered_profiles"}, meta
 
 
+def test_accuracy_table_describes_the_shipped_default_settings():
+    """The errors a solution's note quotes (and the issue's accuracy targets) are those
+    of tables/roller_accuracy.csv's runtime columns: its header must say which settings
+    those columns ran (slices, grading, end refinement, ISO slicing's slices), and they
+    must be the defaults shipped now; a changed default (as 100 -> 50 slices was)
+    without the table rebuilt (build_tables roller --bem-from, seconds) fails here."""
+    import tools.studies.roller_study as rs
+    _, meta = _covered()
+    assert meta.get("runtime_settings") == rs.runtime_settings(), (
+        meta.get("runtime_settings"), rs.runtime_settings())
+
+
 def test_solution_states_the_measured_error_inside_the_covered_range():
     # a case of the table (crown, L/D 1.4, 300 N/mm, 1 mrad): the note gives the
     # header's largest errors off the ends (the deflection's, as the header prints it)

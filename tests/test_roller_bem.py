@@ -411,3 +411,26 @@ def test_bem_columns_reused_from_the_shipped_table_round_trip():
         rs.bem_from_table(tasks, t, 128, 32, 1e-6)
     with pytest.raises(ValueError, match="grid"):
         rs.bem_from_table(tasks, t, 64, 32, 1e-7)
+
+
+def test_bem_from_keeps_the_bem_runs_provenance_when_rebuilt(tmp_path):
+    """Provenance of reused BEM columns: the shipped table was itself written with
+    ``--bem-from`` (its runtime columns recomputed, its BEM columns those of an earlier
+    full run). Its own command, `build_tables roller --bem-from
+    tables/roller_accuracy.csv`, rebuilt from it must still name that full run (command,
+    version, date, wall time) as the source of the BEM columns, not the reusing run
+    (which computed none of them): the header line is carried over unchanged. The
+    runtime columns it recomputes equal the shipped ones (the same code: 1e-6 relative,
+    the Newton tolerance being 1e-11, so any change of the solver's result shows)."""
+    from linecontact.tables import read_table, table_path
+    from tools.build_tables import main as build_tables
+    shipped = read_table("roller_accuracy")
+    assert "bem_from" in shipped.meta, "the shipped table reuses its BEM columns"
+    assert build_tables(["roller", "--bem-from", str(table_path("roller_accuracy")),
+                         "--figure", "", "--no-progress", "--out", str(tmp_path)]) == 0
+    new = read_table("roller_accuracy", directory=tmp_path)
+    assert new.meta["bem_from"] == shipped.meta["bem_from"], new.meta["bem_from"]
+    assert "--bem-from" not in new.meta["bem_from"]
+    for k in ("rt_depth", "rt_p_max"):
+        np.testing.assert_allclose(new.columns[k], shipped.columns[k], rtol=1e-6,
+                                   err_msg=k)

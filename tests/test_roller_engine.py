@@ -309,3 +309,40 @@ def test_auto_switches_within_a_sweep():
                          check=True).stdout.split()
     assert out[0] == "True", "engine='auto' never switched to the compiled kernels"
     assert float(out[1]) <= 1e-10, out
+
+
+def test_an_engine_set_after_construction_is_checked_at_the_solve():
+    """`engine` set on a built roller (or a roller pickled with engine='numba' to a
+    process without numba, e.g. a Dask worker) is checked when it solves, as at
+    construction: an unknown name is refused by name (it was silently solved with
+    numpy), and 'numba' where numba does not import is an OutOfRangeError naming
+    engine and what to install (it was a bare ImportError from deep in the solve).
+    Numba's import is blocked in a fresh interpreter."""
+    code = (
+        "import sys, pickle; sys.modules['numba'] = None\n"
+        "from linecontact.roller import ProfiledRoller\n"
+        "from linecontact import OutOfRangeError\n"
+        "from linecontact.validity import UnknownNameError\n"
+        "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
+        " engine='numpy')\n"
+        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError)):\n"
+        "    r.engine = e\n"
+        "    try:\n"
+        "        pickle.loads(pickle.dumps(r)).at_force(500.0)\n"
+        "        print('solved with', e)\n"
+        "    except err as exc:\n"
+        "        print('refused:', exc)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.splitlines()
+    assert len(out) == 2 and all(o.startswith("refused: engine") for o in out), out
+    assert "fortran" in out[0] and "pip install" in out[1], out
+
+
+def test_each_test_starts_on_the_numpy_reference():
+    """Which engine a test's default-engine solves use must not depend on the tests run
+    before it in the process: the step counter of engine='auto' is zero at the start of
+    every test (tests/conftest.py), so 'auto' is the numpy reference until a test itself
+    takes AUTO_SWITCH_STEPS steps. (Run after the rest of the suite, which takes far
+    more than 1500 numpy steps, this failed.)"""
+    assert sl._NUMPY_STEPS[0] == 0
+    assert sl.resolve_engine("auto") == "numpy"

@@ -151,3 +151,19 @@ def test_a_failed_table_build_is_tried_again_for_a_smaller_range(monkeypatch):
     assert m._tabulated(d0 + np.linspace(1e-8, 30e-6, 4), "force") is None
     assert len(calls) == 1, "a larger range than a failed one is not built again"
     assert m._tabulated(d0 + np.linspace(1e-8, 5e-6, 4), "force")[0] == 2
+
+
+def test_changing_a_profiled_roller_models_geometry_changes_its_law():
+    """`model.radius = ...` (or length, estar, n_slices) on a profiled-roller model
+    changed the label and dropped the tables, but the roller it solves kept the old
+    geometry: the same depth came back. Now the roller is built anew: the law equals a
+    new model's with that geometry, and a bad value is refused by name."""
+    m = laws.ProfiledRollerModel(5e-3, 10e-3, E, "circular:Rc=0.5", n_slices=20)
+    m.radius = 7e-3
+    m.n_slices = 24
+    fresh = laws.ProfiledRollerModel(7e-3, 10e-3, E, "circular:Rc=0.5", n_slices=24)
+    assert m.roller.radius == 7e-3 and m.roller.n_slices == 24
+    assert m.depth(1e3) == fresh.depth(1e3)
+    with pytest.raises(OutOfRangeError, match="^radius"):
+        m.radius = -1.0
+    assert m.radius == 7e-3, "a refused value leaves the model as it was"

@@ -325,3 +325,25 @@ def test_measured_hardness_above_the_maximum_is_refused():
     with pytest.raises(OutOfRangeError, match=r"^depths = 4e-05 m .*valid range") as e:
         case_check(s, h)
     assert "\n" not in str(e.value)
+
+
+def test_corner_sums_equal_the_direct_corner_functions():
+    """The 3D correction's weighted corner sums (two of the ten functions from the
+    others, psi1 and H1 being harmonic below the surface; shared reciprocals; arctan2
+    for the masked quotient) equal the weighted sums of the directly stacked corner
+    functions (rectangle_stresses' path) to 1e-10 of the sums of magnitudes, for
+    offsets 1e-3 to 1e4 times the depth, and the single-function path (the orthogonal
+    shear's) equals its row."""
+    from linecontact.stresses import _PYZ, _love_corner
+    rng = np.random.default_rng(7)
+    for scale in (1e-3, 1.0, 1e4):
+        X = (rng.random((1, 300)) - 0.5) * scale
+        Y = (rng.random((20, 300)) - 0.5) * scale
+        z = rng.random((20, 1)) * 0.5 + 1e-3
+        w = rng.normal(size=300)
+        g = _love_corner(X, Y, z)
+        direct = g @ w
+        mag = np.abs(g) @ np.abs(w)
+        assert np.all(np.abs(_love_corner(X, Y, z, w) - direct) <= 1e-10 * mag), scale
+        only = _love_corner(X, Y, z, w, _PYZ)
+        assert np.all(np.abs(only[_PYZ] - direct[_PYZ]) <= 1e-12 * mag[_PYZ]), scale

@@ -204,7 +204,10 @@ def resolve_engine(engine):
     has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed and
     imports (a single solve never imports numba; a sweep, a batch or a bearing repays
     it); where the import fails, numpy for the rest of the process, said once by a
-    RuntimeWarning."""
+    RuntimeWarning. Any other value is checked as at construction (check_engine): a
+    roller whose `engine` was set afterwards, or that was pickled to a process without
+    numba (a Dask worker), is refused by name, never solved with another engine or
+    failed by a bare ImportError."""
     if engine == "auto":
         if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
                 or _IMPORT_ERROR):
@@ -219,7 +222,7 @@ def resolve_engine(engine):
                           stacklevel=2)
             return "numpy"
         return "numba"
-    return engine
+    return engine if engine == "numpy" else check_engine(engine)
 
 
 def compiled():

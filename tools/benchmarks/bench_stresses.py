@@ -14,12 +14,18 @@ What it measures:
    3D-corrected runtime (the default) and the strips alone, with the 3D field's own
    grid change;
 2. time: per study roller (each profile, three loads, two tilts), the CPU time
-   (time.process_time) of the runtime contact solve (ProfiledRoller.at_force, 100
-   slices, a fresh model built beforehand: no warm start from a previous solve) and
+   (time.process_time) of the runtime contact solve (ProfiledRoller.at_force at its
+   default slices, a fresh model built beforehand: no warm start from a previous solve) and
    of its stresses (roller_stresses with the 3D correction, the default), median of
    ``--repeat``; the stresses' first call (the cached strip maxima for a new (mu, nu),
    a grid search and ten zooms) is timed apart. Target: the stresses within
    twice the contact solve's time.
+
+With ``--against DIR`` (another checkout) the timing also runs that checkout's
+``linecontact/stresses.py`` on the same solutions, in turn with this one's (loaded as a
+module of this checkout's package, so only the stresses module differs), and reports
+the CPU ratio this/other per roller (median of ``--repeat`` each): a paired comparison
+on a shared machine, where absolute times drift with the load.
 
 Prints a report and writes it to tools/benchmarks/results/stresses.txt.
 """
@@ -78,9 +84,26 @@ def accuracy(lines):
                     for m in MEASURES))
 
 
-def timing(lines, repeat):
+def _other_stresses(directory):
+    """DIR/linecontact/stresses.py as a module of this checkout's package."""
+    import importlib.util
+    path = Path(directory).resolve() / "linecontact" / "stresses.py"
+    if not path.is_file():
+        raise SystemExit(f"--against {directory}: no {path}")
+    spec = importlib.util.spec_from_file_location("linecontact._against_stresses", path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def timing(lines, repeat, against=None):
     from linecontact.roller import ProfiledRoller
     from linecontact.stresses import roller_stresses, strip_maxima
+    other = _other_stresses(against) if against else None
+    if other is not None:
+        other.strip_maxima(0.0, 0.3)
+    paired = []
     from tools.studies import stress_study as ss
     from tools.studies.roller_study import make_profile
 
@@ -93,7 +116,7 @@ def timing(lines, repeat):
     ratios, solves, stresses, keys = [], [], [], []
     for task in ss.study_tasks():
         prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
-        ts, tt = [], []
+        ts, tt, to = [], [], []
         for _ in range(repeat):
             # a fresh model each time: a model keeps its last solution as the next
             # solve's warm start, which makes a repeated solve of the same case a
@@ -106,6 +129,13 @@ def timing(lines, repeat):
             c2 = time.process_time()
             ts.append(c1 - c0)
             tt.append(c2 - c1)
+            if other is not None:
+                c3 = time.process_time()
+                other.roller_stresses(sol, 0.0, 0.3, roller=model)
+                to.append(time.process_time() - c3)
+        if to:
+            paired.append(statistics.median(tt) / statistics.median(to))
+            to.clear()
         if ts:
             solves.append(statistics.median(ts))
             stresses.append(statistics.median(tt))
@@ -119,6 +149,11 @@ def timing(lines, repeat):
                  f"{statistics.median(stresses) * 1e3:.3f} ms; ratio stresses/solve median "
                  f"{statistics.median(ratios):.4f}, largest {max(ratios):.4f} (target <= 2: "
                  f"{'met' if max(ratios) <= 2 else 'NOT met'})")
+    if paired:
+        lines.append(f"paired against the stresses module of {Path(against).resolve().name}/ "
+                     f"(the same solutions, "
+                     f"in turn): CPU of the stresses this/other, median {statistics.median(paired):.3f}, "
+                     f"range {min(paired):.3f}-{max(paired):.3f} over {len(paired)} rollers")
     lines.append(f"first call of a new (mu, nu) (strip maxima computed and cached): "
                  f"{first * 1e3:.0f} ms CPU, once per process")
     lines.append(f"(timing section: {time.process_time() - t0:.0f} s CPU)")
@@ -157,6 +192,9 @@ def main(argv=None):
                     help="coarse cells along x of each nested pair (default 64,128: "
                          "64 x 32, 128 x 64 and 256 x 128 cells)")
     ap.add_argument("--skip-timing", action="store_true")
+    ap.add_argument("--against", default=None, metavar="DIR",
+                    help="another checkout: time its linecontact/stresses.py in turn with "
+                         "this one's on the same solutions")
     args = ap.parse_args(argv)
     import linecontact
     lines = [f"bench_stresses: linecontact {linecontact.__version__}, Python "
@@ -169,7 +207,7 @@ def main(argv=None):
                          [int(v) for v in args.grid_n_x.split(",")])
     if not args.skip_timing:
         lines.append("")
-        timing(lines, args.repeat)
+        timing(lines, args.repeat, args.against)
     text = "\n".join(lines) + "\n"
     print(text)
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -355,6 +355,41 @@ def bem_from_table(tasks, table, n_x, n_y, tol):
     return refs
 
 
+def runtime_settings():
+    """What the rt_* and iso_* columns ran: the runtime model's settings (its defaults,
+    runtime_case) and ISO slicing's slice count, for the header (``runtime_settings``):
+    the table describes the model at those settings, which a later default may not
+    be."""
+    import inspect
+
+    from linecontact.roller import model
+    from linecontact.roller.slices import DEFAULT_N_SLICES
+    return (f"linecontact.roller.ProfiledRoller at its defaults: {DEFAULT_N_SLICES} "
+            f"slices graded {model.DEFAULT_GRADING:g} towards the overlap interval's "
+            f"ends, the end slices refined up to {model.REFINE_LEVELS} levels where the "
+            f"peak is unresolved (until p_max settles within {model.REFINE_TOL:g}); "
+            "ISO 16281 slicing (iso_slicing): "
+            f"{inspect.signature(iso_case).parameters['n_slices'].default} slices")
+
+
+def bem_from_line(meta, name):
+    """The ``bem_from`` header line of a table whose BEM columns are reused from an
+    earlier table (file `name`, header `meta`): the run that computed them, its
+    version, date and wall time. Where that table had itself reused them (its own
+    ``bem_from``), its line is carried over unchanged: the BEM columns are still those
+    of the run it names, not of the reusing run (whose command, version and time say
+    nothing about them)."""
+    if meta.get("bem_from"):
+        return meta["bem_from"]
+    # the earlier command, its checkpoint folder (a local path) named generically
+    cmd = re.sub(r"--checkpoint[ =]\S+", "--checkpoint DIR",
+                 str(meta.get("generated_by")))
+    return (f"the bem_* columns (and the accuracy line) are those of the earlier "
+            f"{name}, reused unchanged (the 3D BEM does not use linecontact.roller): "
+            f"written by '{cmd}', {meta.get('version')}, {meta.get('date')}; its "
+            f"wall_time: {meta.get('wall_time')}")
+
+
 # --- the study ---------------------------------------------------------------------
 
 def add_grid_arguments(parser):
@@ -635,15 +670,7 @@ def run(args):
         # the BEM columns are the earlier table's: its accuracy line (the observed
         # orders are not columns) and its provenance and time
         accuracy = old.meta["accuracy"]
-        # the earlier command, its checkpoint folder (a local path) named generically
-        old_cmd = re.sub(r"--checkpoint[ =]\S+", "--checkpoint DIR",
-                         str(old.meta.get("generated_by")))
-        reuse["bem_from"] = (
-            f"the bem_* columns (and the accuracy line) are those of the earlier "
-            f"{args.bem_from.name}, reused unchanged (the 3D BEM does not use "
-            f"linecontact.roller): written by '{old_cmd}', "
-            f"{old.meta.get('version')}, {old.meta.get('date')}; its wall_time: "
-            f"{old.meta.get('wall_time')}")
+        reuse["bem_from"] = bem_from_line(old.meta, args.bem_from.name)
         wall_line = (f"{wall:.1f} s for the runtime and ISO slicing columns of "
                      f"{len(tasks)} cases in one process (the BEM columns reused: "
                      "bem_from)")
@@ -692,6 +719,7 @@ def run(args):
         tolerance=f"{args.tol:g} (gap error / largest interference); force 1e-6 F; "
                   "moment 1e-6 F L/2",
         accuracy=accuracy,
+        runtime_settings=runtime_settings(),
         runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "

@@ -594,3 +594,46 @@ def step_update(q, c, S, qs, cs, dq, dc, over, x, s0, s1):
     res = np.empty(4)
     _step_update(q, c, S, qs, cs, dq, dc, over, x, float(s0), float(s1), hit_q, res)
     return float(res[0]), hit_q, float(res[1]), float(res[2]), float(res[3])
+
+
+def _solve(J, B):
+    """np.linalg.solve in compiled code: numba's binding of LAPACK's gesv (the LU
+    factorisation with partial pivoting numpy's solve calls, from scipy's LAPACK)."""
+    return np.linalg.solve(J, B)
+
+
+_solve = _jit(_solve)
+
+
+def solve(J, B):
+    """np.linalg.solve(J, B) for the compiled engine's dense solves (the Newton step's
+    and the cold start's): the same LAPACK routine without numpy's per-call overhead
+    (about 5-10 us a call, 14-16 calls a solve). Where numba refuses the system (a
+    singular matrix, or an entry that is not finite: numba checks, numpy does not),
+    numpy's solve answers, so that the caller sees what the numpy engine would."""
+    try:
+        return _solve(J, B)
+    except np.linalg.LinAlgError:
+        return np.linalg.solve(J, B)
+
+
+def _solve_sums(J, B, ns, qsc, r_inv, w, x, S, qs, Wz, sums):
+    z = np.linalg.solve(J, B)
+    sums[0], sums[1] = _bordered_sums(z, ns, qsc, r_inv, w, x, S, qs, Wz)
+    return z
+
+
+_solve_sums = _jit(_solve_sums)
+
+
+def solve_sums(J, B, ns, qsc, R, w, x, S, qs):
+    """(z, w.q, (w x).q, Wz) of SliceEquations.bordered's step in one compiled call:
+    the dense solve (:func:`solve`) and :func:`bordered_sums`."""
+    Wz = np.empty((2, 3))
+    sums = np.empty(2)
+    try:
+        z = _solve_sums(J, B, ns, qsc, 1.0 / R, w, x, S, qs, Wz, sums)
+    except np.linalg.LinAlgError:
+        z = np.linalg.solve(J, B)
+        return (z,) + bordered_sums(z, ns, qsc, R, w, x, S, qs)
+    return z, float(sums[0]), float(sums[1]), Wz

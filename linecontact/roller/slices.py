@@ -168,6 +168,7 @@ AUTO_SWITCH_STEPS = 1500
 _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
 _IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
+_NUMBA_OK = []              # [True] once check_engine("numba") passed in this process
 
 
 def numba_installed():
@@ -222,7 +223,12 @@ def resolve_engine(engine):
                           stacklevel=2)
             return "numpy"
         return "numba"
-    return engine if engine == "numpy" else check_engine(engine)
+    if engine == "numpy" or (engine == "numba" and _NUMBA_OK):
+        return engine      # (every regrid asks: the check once a process)
+    engine = check_engine(engine)
+    if engine == "numba":
+        _NUMBA_OK.append(True)
+    return engine
 
 
 def compiled():
@@ -653,6 +659,9 @@ class SliceEquations:
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
         sweeps = START_SWEEPS if width is None else 1
+        # the dense solves: compiled under the numba engine (_compiled.solve, the same
+        # LAPACK routine without numpy's call overhead)
+        solve = compiled().solve if s.engine == "numba" else np.linalg.solve
         n_full = s._geometry[0] if last_n is None else last_n
         n_coarse = coarse_slices(n_full)
         coarse = width is None and sweeps > 1 and n_coarse < n_full
@@ -692,7 +701,7 @@ class SliceEquations:
                 rhs[:ns] = theta * xs - s.P[S]
             keep = None
             for _ in range(s.n):
-                z = np.linalg.solve(M, rhs)
+                z = solve(M, rhs)
                 qs = z[:ns]
                 if (qs > 0).all():
                     break
@@ -722,7 +731,7 @@ class SliceEquations:
         c = np.full(s.n, 1.0 / (4 * R))
         if Dk is not None:
             # the curvature equations D c = -1/R with the same frozen widths
-            cs = np.linalg.solve(Dk, np.full(len(S), -1.0 / R))
+            cs = solve(Dk, np.full(len(S), -1.0 / R))
             if (cs > 0).all():
                 c[S] = cs
         return s, S, q, c, d_new, th_new
@@ -843,10 +852,11 @@ class SliceEquations:
                 np.multiply(rhs[ns:], R, out=B[ns:, 1:])
             left = None
             while True:
-                z = np.linalg.solve(J, B)
                 if jit is not None:
-                    wq, wxq, Wz = jit.bordered_sums(z, ns, qsc, R, s.w, s.x, S, qs)
+                    # the dense solve and the sums in one compiled call
+                    z, wq, wxq, Wz = jit.solve_sums(J, B, ns, qsc, R, s.w, s.x, S, qs)
                 else:
+                    z = np.linalg.solve(J, B)
                     z[:ns] *= qsc
                     z[ns:] *= 1.0 / R
                     W = np.empty((2, ns))

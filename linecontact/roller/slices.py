@@ -317,6 +317,16 @@ def _end_runs(S, out):
     return ends
 
 
+def _cramer(K, r):
+    """The solution of the 2 x 2 system K s = r by Cramer's rule (a tuple), or None
+    where K's determinant is zero or not finite (then np.linalg.solve decides)."""
+    k00, k01, k10, k11 = (float(v) for v in K.flat)
+    det = k00 * k11 - k01 * k10
+    if det == 0.0 or not math.isfinite(det):
+        return None
+    return ((r[0] * k11 - k01 * r[1]) / det, (k00 * r[1] - k10 * r[0]) / det)
+
+
 def _unloaded(J, B, out, u, v):
     """The linear system J z = B of a Newton step in scaled unknowns (u = q/qsc
     first, then v = c R) with the slices `out` unloaded: their rows and unknowns
@@ -868,8 +878,12 @@ class SliceEquations:
                 K = Wz[:, 1:] + grid
                 lin = Wz[:, 0]
                 if force is not None and zero_moment:
-                    step = np.linalg.solve(K, np.array([force / piE - wq - lin[0],
-                                                        -wxq - lin[1]]))
+                    r = (force / piE - wq - lin[0], -wxq - lin[1])
+                    # (the compiled engine: the 2 x 2 system by Cramer's rule,
+                    # np.linalg.solve's call costs more than its arithmetic)
+                    step = _cramer(K, r) if jit is not None else None
+                    if step is None:
+                        step = np.linalg.solve(K, np.array(r))
                 elif force is not None:
                     step = np.array([(force / piE - wq - lin[0]) / K[0, 0], 0.0])
                 elif zero_moment:

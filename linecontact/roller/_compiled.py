@@ -637,3 +637,53 @@ def solve_sums(J, B, ns, qsc, R, w, x, S, qs):
         z = np.linalg.solve(J, B)
         return (z,) + bordered_sums(z, ns, qsc, R, w, x, S, qs)
     return z, float(sums[0]), float(sums[1]), Wz
+
+
+def _start_solve(M, rhs, ns, nb, keep):
+    """The cold start's active-set loop on the bordered frozen-width system M z = rhs
+    (ns slice rows, nb border rows last): solved, the slices with z <= 0 removed (their
+    rows and columns: the same submatrix as numpy's take), again until every load is
+    positive; keep[:k] the kept slices' indices. Returns (z, k); k = 0: none left."""
+    n = ns
+    for i in range(ns):
+        keep[i] = i
+    while True:
+        z = np.linalg.solve(M, rhs)
+        k = 0
+        for i in range(n):
+            if z[i] > 0.0:
+                k += 1
+        if k == n or k == 0:
+            return z, k
+        rows = np.empty(k + nb, np.int64)
+        j = 0
+        for i in range(n):
+            if z[i] > 0.0:
+                rows[j] = i
+                keep[j] = keep[i]
+                j += 1
+        for i in range(nb):
+            rows[k + i] = n + i
+        m = k + nb
+        M2 = np.empty((m, m))
+        r2 = np.empty(m)
+        for a in range(m):
+            r2[a] = rhs[rows[a]]
+            for b in range(m):
+                M2[a, b] = M[rows[a], rows[b]]
+        M, rhs, n = M2, r2, k
+
+
+_start_solve = _jit(_start_solve)
+
+
+def start_solve(M, rhs, ns, nb):
+    """(z, kept slice indices, their count) of SliceEquations.start_at_force's active-set
+    loop in one compiled call, or None where numba refuses a system (singular, not
+    finite): the caller then runs its numpy loop, which answers as the numpy engine."""
+    keep = np.empty(ns, np.int64)
+    try:
+        z, k = _start_solve(M, rhs, ns, nb, keep)
+    except np.linalg.LinAlgError:
+        return None
+    return z, keep[:k], k

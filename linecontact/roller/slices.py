@@ -671,7 +671,8 @@ class SliceEquations:
         sweeps = START_SWEEPS if width is None else 1
         # the dense solves: compiled under the numba engine (_compiled.solve, the same
         # LAPACK routine without numpy's call overhead)
-        solve = compiled().solve if s.engine == "numba" else np.linalg.solve
+        jit = compiled() if s.engine == "numba" else None
+        solve = np.linalg.solve if jit is None else jit.solve
         n_full = s._geometry[0] if last_n is None else last_n
         n_coarse = coarse_slices(n_full)
         coarse = width is None and sweeps > 1 and n_coarse < n_full
@@ -710,7 +711,17 @@ class SliceEquations:
             else:
                 rhs[:ns] = theta * xs - s.P[S]
             keep = None
-            for _ in range(s.n):
+            got = jit.start_solve(M, rhs, ns, nb) if jit is not None else None
+            if got is not None:
+                # the loop below in one compiled call (_compiled.start_solve: the same
+                # submatrices and solves)
+                z, kept, k = got
+                if k == 0:
+                    return None
+                if k < ns:
+                    S, b0, keep, ns = S[kept], b0[kept], kept, k
+                qs = z[:ns]
+            for _ in range(0 if got is not None else s.n):
                 z = solve(M, rhs)
                 qs = z[:ns]
                 if (qs > 0).all():

@@ -168,6 +168,7 @@ AUTO_SWITCH_STEPS = 1500
 _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
 _IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
+_COMPILED = []              # the module _compiled, once imported
 _NUMBA_OK = []              # [True] once check_engine("numba") passed in this process
 
 
@@ -233,9 +234,12 @@ def resolve_engine(engine):
 
 def compiled():
     """The compiled kernels (:mod:`linecontact.roller._compiled`), imported on first
-    use: importing numba costs a few hundred ms, which only repeated solves repay."""
-    from . import _compiled
-    return _compiled
+    use: importing numba costs a few hundred ms, which only repeated solves repay
+    (kept once imported: the import statement costs microseconds, at every step)."""
+    if not _COMPILED:
+        from . import _compiled
+        _COMPILED.append(_compiled)
+    return _COMPILED[0]
 
 
 class ConvergenceError(RuntimeError):

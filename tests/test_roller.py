@@ -487,3 +487,22 @@ def test_refine_ends_takes_a_boolean_only():
         with pytest.raises(OutOfRangeError, match="refine_ends"):
             ProfiledRoller(5e-3, 10e-3, 115e9, "lundberg:F0=1kN", refine_ends=bad)
     assert ProfiledRoller(5e-3, 10e-3, 115e9, refine_ends=np.False_).refine_ends is False
+
+
+def test_a_setting_changed_after_construction_is_checked_and_used_throughout():
+    """ProfiledRoller keeps the profile drop on a grid of its length and caches built
+    for its settings: a length, slice count or grading set after construction was used
+    by some steps and not others (grading 1.5 gave NaN warnings), and a bad value was
+    not refused. Now the roller is built anew: the answer equals a new roller's, and a
+    bad value is refused by name, leaving the roller as it was."""
+    from linecontact.validity import OutOfRangeError
+    r = ProfiledRoller(5e-3, 10e-3, 115.385e9, "circular:Rc=0.5", n_slices=20)
+    r.at_force(1e3)
+    r.length = 12e-3
+    r.grading = 0.5
+    fresh = ProfiledRoller(5e-3, 12e-3, 115.385e9, "circular:Rc=0.5", n_slices=20,
+                           grading=0.5)
+    assert r.at_force(1e3).depth == fresh.at_force(1e3).depth
+    with pytest.raises(OutOfRangeError, match="^grading"):
+        r.grading = 1.5
+    assert r.grading == 0.5

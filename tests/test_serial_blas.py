@@ -89,3 +89,38 @@ def test_a_first_use_under_a_one_thread_limit_does_not_disable_it_later():
         inside = _blas_threads()
     assert inside == [1] * len(before), inside
     assert _blas_threads() == before
+
+
+def test_compiled_engine_solves_use_one_thread():
+    """With engine="numba" the dense solves run in compiled code on scipy's LAPACK, in
+    its own BLAS library, which a process may load only after the guard was built (a
+    first solve with numpy): inside a later compiled solve every loaded BLAS, scipy's
+    included, runs one thread (recorded at each compiled solve, in a fresh process
+    that has not loaded scipy's BLAS before)."""
+    pytest.importorskip("numba")
+    import subprocess
+    import sys
+    code = (
+        "import threadpoolctl\n"
+        "from linecontact.roller import ProfiledRoller\n"
+        "def threads():\n"
+        "    return [i['num_threads'] for i in threadpoolctl.threadpool_info()\n"
+        "            if i['user_api'] == 'blas']\n"
+        "with threadpoolctl.threadpool_limits(2, user_api='blas'):\n"
+        "    ProfiledRoller(5e-3, 14e-3, 115e9, 'iso16281', engine='numpy')"
+        ".at_force(4200.0)\n"
+        "r = ProfiledRoller(5e-3, 14e-3, 115e9, 'iso16281', engine='numba')\n"
+        "from linecontact.roller import _compiled\n"
+        "seen, solve_sums = [], _compiled.solve_sums\n"
+        "def recording(*a):\n"
+        "    seen.append(threads())\n"
+        "    return solve_sums(*a)\n"
+        "_compiled.solve_sums = recording\n"
+        "with threadpoolctl.threadpool_limits(2, user_api='blas'):\n"
+        "    libs = len(threads())\n"
+        "    r.at_force(4200.0, tilt=2e-3)\n"
+        "print(libs, len(seen), max(max(t) for t in seen))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert int(out[1]) > 0 and int(out[2]) == 1, (
+        f"{out[0]} BLAS libraries; a compiled solve ran with {out[2]} threads")

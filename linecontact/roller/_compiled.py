@@ -32,8 +32,15 @@ import warnings
 
 import numba
 import numpy as np
+# numba's np.linalg.solve calls LAPACK through scipy's bindings, in scipy's own BLAS
+# library: loaded now, so that the one-BLAS-thread guard of the slice solvers
+# (_numerics.serial_blas) finds and limits it as it does numpy's
+import scipy.linalg.cython_lapack  # noqa: F401
 
+from .._numerics import rescan_blas
 from .kernel import R_INF, spline_table
+
+rescan_blas()
 
 __all__ = []
 

@@ -9,6 +9,7 @@ fourth round, 100 in the records before) per case, then one
 ``at_force(F, tilt)`` (a task's tilt None: ``tilt="free"``, zero moment), timed with
 ``time.process_time`` (CPU time, not wall: the shared machine's load does not enter);
 the cases run in table order in one process, so the first includes the one-time build of the strip-function table.
+``--engine`` picks ``ProfiledRoller(engine=...)`` (default ``"auto"``).
 ``--repeat`` runs the whole list again and keeps each case's median. ``--save`` writes
 the results (depth, moment, tilt, p_max, edge, CPU time, the Newton steps the solution
 reports); ``--against`` compares with a saved run: the largest change in depth (over the
@@ -50,7 +51,7 @@ def _counting():
     return counts
 
 
-def run(repeat=1):
+def run(repeat=1, engine="auto"):
     from linecontact.roller import ProfiledRoller
     from linecontact.tables import read_table
     from tools.studies import roller_study as rs
@@ -63,13 +64,17 @@ def run(repeat=1):
     for _ in range(repeat):
         for i, t in enumerate(tasks):
             prof = rs.make_profile(t["profile"], t["length"], t["radius"], t["estar"])
-            model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof)
+            model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof,
+                                   engine=engine)
             c0 = time.process_time()
             r = model.at_force(t["force"], tilt="free" if t["tilt"] is None else t["tilt"])
             times[i].append(time.process_time() - c0)
             out[i] = dict(case=i, profile=t["profile"], force=t["force"], tilt=r.tilt,
                           given_tilt=t["tilt"], depth=r.depth, moment=r.moment,
-                          p_max=r.p_max, edge=r.edge, iterations=r.iterations)
+                          p_max=r.p_max, edge=r.edge, iterations=r.iterations,
+                          stiffness=np.asarray(r.stiffness_matrix).tolist(),
+                          flags=[r.edge_loaded, r.p_max_resolved, r.message,
+                                 list(r.notes), r.n_slices])
     for o, ts in zip(out, times):
         o["cpu_seconds"] = statistics.median(ts)
     return table, out
@@ -81,9 +86,11 @@ def main(argv=None):
     ap.add_argument("--save", default=None)
     ap.add_argument("--against", default=None)
     ap.add_argument("--count", action="store_true")
+    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba"),
+                    help="ProfiledRoller(engine=...) of every case (default auto)")
     a = ap.parse_args(argv)
     counts = _counting() if a.count else None
-    table, out = run(a.repeat)
+    table, out = run(a.repeat, a.engine)
     t = np.array([o["cpu_seconds"] for o in out])
     order = np.argsort(-t)
     print(f"{len(t)} cases, default slices, CPU time per solve: median {np.median(t) * 1e3:.1f}"
@@ -112,8 +119,18 @@ def main(argv=None):
             ch["moment"] = max(ch["moment"], abs(x["moment"] - y["moment"]) / FL2)
             if x["tilt"]:
                 ch["tilt"] = max(ch["tilt"], abs(x["tilt"] / y["tilt"] - 1))
+            if x.get("p_max") is not None and y["p_max"] is not None:
+                ch["p_max"] = max(ch.get("p_max", 0.0), abs(x["p_max"] / y["p_max"] - 1))
+            if "stiffness" in x:
+                K0, K1 = np.array(x["stiffness"]), np.array(y["stiffness"])
+                ch["stiffness"] = max(ch.get("stiffness", 0.0),
+                                      np.abs(K0 - K1).max() / np.abs(K0).max())
+            if "flags" in x:
+                ch["cases with other flags"] = ch.get("cases with other flags", 0) + (
+                    x["flags"] != y["flags"] or x["edge"] != y["edge"]
+                    or (x["p_max"] is None) != (y["p_max"] is None))
         print("largest change against " + a.against + ": " + ", ".join(
-            f"{k} {v:.1e}" for k, v in ch.items()))
+            f"{k} {v:.1e}" if isinstance(v, float) else f"{k} {v}" for k, v in ch.items()))
     return 0
 
 

@@ -162,9 +162,11 @@ class ProfiledRoller:
 
     def _contact_depth(self, th):
         """first_contact_depth at a checked tilt th (a float), the last one kept: a
-        solve at a given tilt asks twice (its start and its memo)."""
-        if self._d0_memo is not None and self._d0_memo[0] == th:
-            return self._d0_memo[1]
+        solve at a given tilt asks twice (its start and its memo). The memo is read once
+        (a pair replaced whole): another thread may replace it between two reads."""
+        memo = self._d0_memo
+        if memo is not None and memo[0] == th:
+            return memo[1]
         h = self._fP - th * self._fx
         k = int(np.argmin(h))
         hmin = float(h[k])

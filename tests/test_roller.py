@@ -518,3 +518,22 @@ def test_first_contact_depth_memo_is_read_once():
     r = Racing(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", n_slices=10)
     r.reads = 0
     assert r.first_contact_depth(0.0) == d_a, "a depth of another tilt's memo"
+
+
+def test_a_setting_changed_after_construction_is_checked_and_used_throughout():
+    """ProfiledRoller keeps the profile drop on a grid of its length and caches built
+    for its settings: a length, slice count or grading set after construction was used
+    by some steps and not others (grading 1.5 gave NaN warnings), and a bad value was
+    not refused. Now the roller is built anew: the answer equals a new roller's, and a
+    bad value is refused by name, leaving the roller as it was."""
+    from linecontact.validity import OutOfRangeError
+    r = ProfiledRoller(5e-3, 10e-3, 115.385e9, "circular:Rc=0.5", n_slices=20)
+    r.at_force(1e3)
+    r.length = 12e-3
+    r.grading = 0.5
+    fresh = ProfiledRoller(5e-3, 12e-3, 115.385e9, "circular:Rc=0.5", n_slices=20,
+                           grading=0.5)
+    assert r.at_force(1e3).depth == fresh.at_force(1e3).depth
+    with pytest.raises(OutOfRangeError, match="^grading"):
+        r.grading = 1.5
+    assert r.grading == 0.5

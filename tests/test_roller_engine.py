@@ -311,13 +311,14 @@ def test_auto_switches_within_a_sweep():
     assert float(out[1]) <= 1e-10, out
 
 
-def test_an_engine_set_after_construction_is_checked_at_the_solve():
-    """`engine` set on a built roller (or a roller pickled with engine='numba' to a
-    process without numba, e.g. a Dask worker) is checked when it solves, as at
-    construction: an unknown name is refused by name (it was silently solved with
-    numpy), and 'numba' where numba does not import is an OutOfRangeError naming
-    engine and what to install (it was a bare ImportError from deep in the solve).
-    Numba's import is blocked in a fresh interpreter."""
+def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
+    """`engine` set on a built roller is checked at once, as at construction (the
+    roller is built anew): an unknown name is refused by name (it was silently solved
+    with numpy), and 'numba' where numba does not import is an OutOfRangeError naming
+    engine and what to install. A roller pickled with engine='numba' to a process
+    without numba (a Dask worker; unpickling sets the attribute without a check) is
+    refused the same way when it solves (it was a bare ImportError from deep in the
+    solve). Numba's import is blocked in a fresh interpreter."""
     code = (
         "import sys, pickle; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller\n"
@@ -326,16 +327,24 @@ def test_an_engine_set_after_construction_is_checked_at_the_solve():
         "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
         " engine='numpy')\n"
         "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError)):\n"
-        "    r.engine = e\n"
         "    try:\n"
-        "        pickle.loads(pickle.dumps(r)).at_force(500.0)\n"
+        "        r.engine = e\n"
+        "        print('set', e)\n"
+        "    except err as exc:\n"
+        "        print('refused:', exc)\n"
+        "    assert r.engine == 'numpy'\n"
+        "    w = pickle.loads(pickle.dumps(r))\n"
+        "    w.__dict__['engine'] = e          # as unpickled from a numba process\n"
+        "    try:\n"
+        "        w.at_force(500.0)\n"
         "        print('solved with', e)\n"
         "    except err as exc:\n"
         "        print('refused:', exc)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.splitlines()
-    assert len(out) == 2 and all(o.startswith("refused: engine") for o in out), out
-    assert "fortran" in out[0] and "pip install" in out[1], out
+    assert len(out) == 4 and all(o.startswith("refused: engine") for o in out), out
+    assert "fortran" in out[0] and "fortran" in out[1], out
+    assert "pip install" in out[2] and "pip install" in out[3], out
 
 
 def test_each_test_starts_on_the_numpy_reference():

@@ -118,6 +118,7 @@ class ProfiledRoller:
             raise OutOfRangeError("n_slices", n_slices, "an integer in [10, 4000]")
         self.n_slices = int(n)
         self.grading = float(SLICE_GRADING.check(grading).item())
+        self._profile_spec = profile             # read again with a new R (__setattr__)
         self.profile = as_profile(profile, self.radius, self.length, self.estar)
         L = self.length
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
@@ -131,6 +132,22 @@ class ProfiledRoller:
         self._free_memo = 0.0
         self._d0_memo = None
         self.iterations = 0
+
+    #: The settings a solve depends on: one set after construction builds the roller
+    #: anew, checked as at construction (the grid of the profile drop, the caches and
+    #: the warm starts follow it): a length or grading set later was used by some
+    #: steps and not by others, and a bad one was not refused.
+    _SETTINGS = ("radius", "length", "estar", "profile", "n_slices", "grading",
+                 "refine_ends", "engine")
+
+    def __setattr__(self, name, value):
+        if name in self._SETTINGS and "_warm" in self.__dict__:     # constructed
+            args = {k: self.__dict__[k] for k in self._SETTINGS}
+            args["profile"] = self._profile_spec
+            args[name] = value
+            self.__dict__.update(ProfiledRoller(**args).__dict__)
+            return
+        object.__setattr__(self, name, value)
 
     def first_contact_depth(self, tilt=0.0):
         """Depth of first contact, min over x of P(x) - theta x [m] (on the 16 n + 1 grid).

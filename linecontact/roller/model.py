@@ -93,6 +93,10 @@ class ProfiledRoller:
     profile must cover -L/2 <= x <= L/2. The overlap interval is found on a grid of
     16 n + 1 points along the roller. Accuracy: see the module docstring.
 
+    A roller keeps its last solution to start the next (sweeps and end refinements
+    are warm-started), so its solves change its state: use one roller per thread
+    (a copy each; solving one roller from several threads at once is not safe).
+
     Examples
     --------
     Crowned roller, R = 10 mm, Rc = 500 mm, L = 20 mm, steel, 1 kN (exact Hertz: approach

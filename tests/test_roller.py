@@ -489,6 +489,37 @@ def test_refine_ends_takes_a_boolean_only():
     assert ProfiledRoller(5e-3, 10e-3, 115e9, refine_ends=np.False_).refine_ends is False
 
 
+def test_first_contact_depth_memo_is_read_once():
+    """The memo of the last tilt's first-contact depth (one (tilt, depth) pair, replaced
+    whole) is read once per call: another thread solving the same roller at another
+    tilt may replace it between two reads, and a check of the tilt on one pair with the
+    depth taken from the next returned that tilt's depth for this one. Simulated
+    deterministically: the memo attribute changes to another tilt's pair after its
+    second read. The depth must equal the one computed without a memo (exactly: the
+    same arithmetic)."""
+    from linecontact.roller import ProfiledRoller
+
+    ref = ProfiledRoller(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", n_slices=10)
+    d_a, d_b = ref.first_contact_depth(0.0), ref.first_contact_depth(3e-3)
+    assert d_a != d_b
+
+    class Racing(ProfiledRoller):
+        reads = 0
+
+        @property
+        def _d0_memo(self):
+            self.reads += 1
+            return (0.0, d_a) if self.reads <= 2 else (3e-3, d_b)
+
+        @_d0_memo.setter
+        def _d0_memo(self, value):
+            pass
+
+    r = Racing(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", n_slices=10)
+    r.reads = 0
+    assert r.first_contact_depth(0.0) == d_a, "a depth of another tilt's memo"
+
+
 def test_a_setting_changed_after_construction_is_checked_and_used_throughout():
     """ProfiledRoller keeps the profile drop on a grid of its length and caches built
     for its settings: a length, slice count or grading set after construction was used

@@ -355,3 +355,84 @@ def test_each_test_starts_on_the_numpy_reference():
     more than 1500 numpy steps, this failed.)"""
     assert sl._NUMPY_STEPS[0] == 0
     assert sl.resolve_engine("auto") == "numpy"
+
+
+def test_compiled_step_helpers_equal_their_numpy_lines():
+    """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
+    bordered_sums, step_out, step_update) give what the numpy lines they replace in
+    SliceEquations.bordered give, written out here: the scaled system bit for bit (the
+    same products), the sums to 1e-13 of their scale (another order of addition), the
+    step's mask, its damping alpha (from the loads, the curvatures and the overlap, at a
+    given tilt and with a tilt step), the slices that limited it and the largest
+    changes. A whole solve cannot check the damping and the mask: a wrong alpha or
+    hit_q changes the Newton path, not the converged answer."""
+    pytest.importorskip("numba")
+    from linecontact.roller import _compiled as jit
+
+    rng = np.random.default_rng(3)
+    n, ns, R, qsc = 30, 12, 5e-3, 2e-7
+    S = np.sort(rng.choice(n, ns, replace=False))
+    w, x = rng.random(n) * 1e-4, rng.random(n) * 1e-2 - 5e-3
+    J0 = rng.normal(size=(2 * ns, 2 * ns)) + 5 * np.eye(2 * ns)
+    res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
+    # the scaled system
+    J, Jn = J0.copy(), J0.copy()
+    B = jit.scaled_system(J, res, rhs, ns, qsc, R)
+    Jn[:ns, ns:] *= 1.0 / (qsc * R)
+    Jn[ns:, :ns] *= qsc * R
+    Bn = np.empty((2 * ns, 3))
+    np.multiply(res[:ns], -1.0 / qsc, out=Bn[:ns, 0])
+    np.multiply(res[ns:], -R, out=Bn[ns:, 0])
+    np.multiply(rhs[:ns], 1.0 / qsc, out=Bn[:ns, 1:])
+    np.multiply(rhs[ns:], R, out=Bn[ns:, 1:])
+    assert np.array_equal(J, Jn) and np.array_equal(B, Bn), "scaled_system"
+    # the force and moment sums
+    z0 = rng.normal(size=(2 * ns, 3))
+    qs = qsc * (0.1 + rng.random(ns))
+    z, zn = z0.copy(), z0.copy()
+    wq, wxq, Wz = jit.bordered_sums(z, ns, qsc, R, w, x, S, qs)
+    zn[:ns] *= qsc
+    zn[ns:] *= 1.0 / R
+    W = np.stack([w[S], w[S] * x[S]])
+    assert np.array_equal(z, zn), "bordered_sums: z unscaled"
+    _close(W @ qs, np.array([wq, wxq]), "bordered_sums: w.q, (w x).q")
+    _close(W @ zn[:ns], Wz, "bordered_sums: Wz")
+    # the step and the slices it drives below zero
+    for s0, s1 in ((1e-7, 0.0), (-2e-7, 3e-5)):
+        zs = zn * np.r_[np.full(ns, 1.0), np.full(ns, 1e3)][:, None]
+        dz, out, k = jit.step_out(zs, s0, s1, ns, qs)
+        dzn = zs[:, 0] + zs[:, 1:] @ np.array([s0, s1])
+        _close(dzn, dz, "step_out: dz")
+        assert np.array_equal(out, qs + dzn[:ns] < 0) and k == out.sum(), "step_out"
+    # the damped update: alpha = 1, limited by q, by c, by the overlap (s1 = 0 and not)
+    over = 1e-6 * (0.2 + rng.random(n))
+    over[0] = 1.5e-6                                   # the largest first
+    cs = 1.0 / (4 * R) * (0.5 + rng.random(ns))
+    for case in range(5):
+        dq, dc = 0.1 * qs * rng.normal(size=ns), 0.1 * cs * rng.normal(size=ns)
+        s0, s1 = 1e-8, 0.0
+        if case == 1:
+            dq[[2, 7]] = [-0.97, -2.0] * qs[[2, 7]]     # to 3 % (limit 5 %) and below 0
+        elif case == 2:
+            dc[5] = -0.85 * cs[5]                       # to 15 % (limit 20 %)
+        elif case == 3:
+            s0 = -0.9 * over.max()
+        elif case == 4:
+            s0, s1 = -0.3 * over.max(), 2e-4           # the lowest at an end slice
+        q, c = np.zeros(n), np.zeros(n)
+        qn, cn = q.copy(), c.copy()
+        alpha, hit_q, dmax, dqmax, dcmax = jit.step_update(q, c, S, qs, cs, dq, dc,
+                                                           over, x, s0, s1)
+        an, hit_n = sl._fraction_to_boundary(qs, cs, dq, dc)
+        dmax_n = float(over.max())
+        drop = -float((s0 + s1 * x[S]).min())
+        if drop > 0.5 * dmax_n:
+            an = min(an, 0.5 * dmax_n / drop)
+        qn[S], cn[S] = qs + an * dq, cs + an * dc
+        assert (alpha < 1.0) == (case > 0), f"case {case}: the damping was not reached"
+        assert alpha == pytest.approx(an, rel=1e-14), f"step_update alpha, case {case}"
+        assert np.array_equal(hit_q, hit_n), f"step_update hit_q, case {case}"
+        assert dmax == dmax_n, f"step_update: largest overlap, case {case}"
+        assert dqmax == np.abs(dq).max() and dcmax == np.abs(dc).max(), case
+        _close(qn, q, f"step_update q, case {case}")
+        _close(cn, c, f"step_update c, case {case}")

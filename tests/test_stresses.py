@@ -347,3 +347,25 @@ def test_corner_sums_equal_the_direct_corner_functions():
         assert np.all(np.abs(_love_corner(X, Y, z, w) - direct) <= 1e-10 * mag), scale
         only = _love_corner(X, Y, z, w, _PYZ)
         assert np.all(np.abs(only[_PYZ] - direct[_PYZ]) <= 1e-12 * mag[_PYZ]), scale
+
+
+def test_corner_sums_on_the_edges_extensions_and_near_the_surface():
+    """The corner sums' shortcuts hold where the corner functions' quotients degenerate:
+    field points on an edge's extension (X = 0 or Y = 0, signed zeros included), below
+    a corner (X = Y = 0, the masked 0/0 of d2H1/dx2, which arctan2 must map to 0, not
+    pi), in all four quadrants, at depths from 1e-14 to 1e6 of the offsets' unit (z -> 0,
+    where d psi1/dz -> -pi/2 sign(XY) and d2H1/dx2 + d2H1/dy2 -> the same with its sign
+    reversed). Each corner alone (unit weight) against the stacked direct functions, to
+    1e-12 of max(1, |value|)."""
+    from linecontact.stresses import _love_corner
+    v = np.array([0.0, -0.0, 1e-12, -1e-12, 0.3, -0.3, 7.0, -7.0, 1e4, -1e4])
+    X = np.repeat(v, v.size)[None, :]
+    Y = np.tile(v, v.size)[None, :]
+    eye = np.eye(X.size)
+    for z in (1e-14, 1e-9, 1e-3, 1.0, 1e3, 1e6):
+        zz = np.array([[z]])
+        direct = _love_corner(X, Y, zz)[:, 0, :]                      # (10, corners)
+        sums = np.stack([_love_corner(X, Y, zz, eye[i])[:, 0] for i in range(X.size)], 1)
+        assert np.all(np.isfinite(sums)), z
+        err = np.abs(sums - direct) / np.maximum(1.0, np.abs(direct))
+        assert err.max() <= 1e-12, (z, np.unravel_index(err.argmax(), err.shape))

@@ -93,6 +93,10 @@ class ProfiledRoller:
     profile must cover -L/2 <= x <= L/2. The overlap interval is found on a grid of
     16 n + 1 points along the roller. Accuracy: see the module docstring.
 
+    A roller keeps its last solution to start the next (sweeps and end refinements
+    are warm-started), so its solves change its state: use one roller per thread
+    (a copy each; solving one roller from several threads at once is not safe).
+
     Examples
     --------
     Crowned roller, R = 10 mm, Rc = 500 mm, L = 20 mm, steel, 1 kN (exact Hertz: approach
@@ -179,9 +183,11 @@ class ProfiledRoller:
 
     def _contact_depth(self, th):
         """first_contact_depth at a checked tilt th (a float), the last one kept: a
-        solve at a given tilt asks twice (its start and its memo)."""
-        if self._d0_memo is not None and self._d0_memo[0] == th:
-            return self._d0_memo[1]
+        solve at a given tilt asks twice (its start and its memo). The memo is read once
+        (a pair replaced whole): another thread may replace it between two reads."""
+        memo = self._d0_memo
+        if memo is not None and memo[0] == th:
+            return memo[1]
         h = self._fP - th * self._fx
         k = int(np.argmin(h))
         hmin = float(h[k])

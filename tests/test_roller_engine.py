@@ -436,3 +436,54 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
         assert dqmax == np.abs(dq).max() and dcmax == np.abs(dc).max(), case
         _close(qn, q, f"step_update q, case {case}")
         _close(cn, c, f"step_update c, case {case}")
+
+
+def test_compiled_dense_solves_equal_the_numpy_loops():
+    """The compiled engine's dense solves give what the numpy lines they replace give:
+    _compiled.solve_sums the solution of np.linalg.solve (the same LAPACK routine;
+    1e-12 of its scale allows another BLAS build) and bordered_sums' sums;
+    _compiled.start_solve the cold start's active-set loop of
+    SliceEquations.start_at_force (written out here: solve, remove the slices whose
+    load is not positive, solve again), the same kept slices and solution, on a
+    bordered system where slices leave in two rounds; a singular system falls back to
+    numpy's solve, which raises numpy's LinAlgError."""
+    pytest.importorskip("numba")
+    from linecontact.roller import _compiled as jit
+
+    rng = np.random.default_rng(5)
+    n, ns, R, qsc = 30, 12, 5e-3, 2e-7
+    S = np.sort(rng.choice(n, ns, replace=False))
+    w, x = rng.random(n) * 1e-4, rng.random(n) * 1e-2 - 5e-3
+    J = rng.normal(size=(2 * ns, 2 * ns)) + 5 * np.eye(2 * ns)
+    B, qs = rng.normal(size=(2 * ns, 3)), rng.random(ns)
+    z, wq, wxq, Wz = jit.solve_sums(J.copy(), B, ns, qsc, R, w, x, S, qs)
+    zn = np.linalg.solve(J, B)
+    want = jit.bordered_sums(zn, ns, qsc, R, w, x, S, qs)
+    np.testing.assert_allclose(z, zn, rtol=0, atol=1e-12 * np.abs(zn).max())
+    assert wq == pytest.approx(want[0], rel=1e-13)
+    assert wxq == pytest.approx(want[1], rel=1e-13)
+    np.testing.assert_allclose(Wz, want[2], rtol=1e-12, atol=1e-13 * np.abs(want[2]).max())
+    # the start's loop: loads of a diagonal-dominant system with some negative targets
+    m, nb = 16, 2
+    M = np.zeros((m + nb, m + nb))
+    M[:m, :m] = np.eye(m) * 4 + rng.random((m, m)) * 0.3
+    M[:m, m] = -1.0
+    M[:m, m + 1] = -np.linspace(-1, 1, m)
+    M[m, :m] = 1.0
+    M[m + 1, :m] = np.linspace(-1, 1, m)
+    rhs = np.concatenate([np.sin(np.arange(m)) * 3 - 1.0, [5.0, 0.0]])
+    keep, Mk, rk, rounds = np.arange(m), M, rhs, 0
+    while True:                                   # the numpy loop, as in slices.py
+        zk = np.linalg.solve(Mk, rk)
+        on = zk[:len(keep)] > 0
+        if on.all():
+            break
+        rounds += 1
+        rows = np.concatenate([np.flatnonzero(on), np.arange(len(keep), len(keep) + nb)])
+        keep, Mk, rk = keep[on], Mk.take(rows, 0).take(rows, 1), rk[rows]
+    assert rounds >= 2 and 0 < len(keep) < m, "the system should shed slices twice"
+    zc, kept, k = jit.start_solve(M, rhs, m, nb)
+    assert k == len(keep) and (kept == keep).all()
+    np.testing.assert_allclose(zc, zk, rtol=0, atol=1e-12 * np.abs(zk).max())
+    with pytest.raises(np.linalg.LinAlgError, match="Singular matrix"):
+        jit.solve(np.zeros((3, 3)), np.ones(3))

@@ -720,3 +720,18 @@ def serial_blas(fn):
         with _SERIAL_BLAS:
             return fn(*args, **kwargs)
     return wrapper
+
+
+#: The most a module-wide cache of n x n slice geometry holds before it is emptied
+#: (linecontact.roller: one geometry is several n x n arrays; at the largest n = 4000
+#: three of them take 384 MB, so only the newest is kept then).
+CACHE_BYTES = 2**28
+
+
+def cache_nbytes(cache):
+    """Bytes of the arrays held in a dict cache's values (arrays or tuples of them)."""
+    total = 0
+    for v in list(cache.values()):
+        for a in (v if isinstance(v, tuple) else (v,)):
+            total += getattr(a, "nbytes", 0)
+    return total

@@ -487,3 +487,18 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     np.testing.assert_allclose(zc, zk, rtol=0, atol=1e-12 * np.abs(zk).max())
     with pytest.raises(np.linalg.LinAlgError, match="Singular matrix"):
         jit.solve(np.zeros((3, 3)), np.ones(3))
+
+
+def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
+    """The module-wide caches of slice geometry (n x n arrays, five of them per
+    geometry in the compiled engine) were bounded only in count: sixteen geometries at
+    n = 4000 would hold gigabytes. With the bound set to 1 MB, after building four
+    geometries of 0.9-2 MB each the cache holds at most the bound plus the newest."""
+    from linecontact._numerics import cache_nbytes
+    monkeypatch.setattr(sl, "CACHE_BYTES", 2**20)
+    monkeypatch.setattr(sl, "_GEOMETRY", {})
+    newest = 0
+    for n in (200, 230, 260, 290):
+        got = sl._unit_geometry(n, 0.8, 0)
+        newest = sum(a.nbytes for a in got)
+    assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest

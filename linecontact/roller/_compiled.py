@@ -37,7 +37,7 @@ import numpy as np
 # (_numerics.serial_blas) finds and limits it as it does numpy's
 import scipy.linalg.cython_lapack  # noqa: F401
 
-from .._numerics import rescan_blas
+from .._numerics import CACHE_BYTES, cache_nbytes, rescan_blas
 from .kernel import R_INF, spline_table
 
 rescan_blas()
@@ -389,7 +389,7 @@ def _transposed(tn, tf, lr, G, fc):
     hold the originals)."""
     got = _T.get(id(tn))
     if got is None or got[0] is not tn or got[1] is not G:
-        if len(_T) >= 8:
+        if len(_T) >= 8 or cache_nbytes(_T) > CACHE_BYTES:
             _T.clear()
         K = fc.shape[0]
         taumax = FAR_STOP ** (-1.0 / (2.0 * np.arange(1, K + 1)))

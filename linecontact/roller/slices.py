@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from .._numerics import CACHE_BYTES, cache_nbytes
 from ..profiles import TILT_RANGE
 from ..validity import Interval
 from .kernel import far_field_coefficients, strip_values
@@ -62,7 +63,9 @@ def end_refined(g, level):
     fewest base slices m >= REFINED_SLICES are replaced (a region of width W_m) for
     which k = ceil(ln(1 + W_m (R - 1)/w_end)/ln R) slices (R = REFINE_RATIO) end no
     narrower than the next base slice over R; r then solves w_end (r^k - 1)/(r - 1) =
-    W_m. Neighbouring widths so differ by at most about R everywhere: a peak where
+    W_m. Neighbouring widths so differ by at most about R (at the default 50 slices at
+    most 1.35; with under about 20 base slices the search for m stops at the middle
+    and the junction may jump several times in width): a peak where
     the refined slices meet the base ones is resolved (with the three end slices
     alone replaced the junction jumped 3-5 times in width, and a corner relief's peak
     sitting there came out 11 % high and "resolved" at 50 slices)."""
@@ -112,7 +115,7 @@ def _unit_geometry(n, grading, refine=0):
         lr = np.log(far / near)
         np.fill_diagonal(lr, 0.0)
         cached = (near, far, lr, m, dg)
-        if len(_GEOMETRY) > 16:
+        if len(_GEOMETRY) > 16 or cache_nbytes(_GEOMETRY) > CACHE_BYTES:
             _GEOMETRY.clear()
         _GEOMETRY[key] = cached
     return cached

@@ -247,6 +247,7 @@ def _interleaved(a):
     """--against DIR --interleave: this checkout (A) and DIR (B) in one process, their
     cold solves alternating (A B, then B A), --repeat pairs per tilt."""
     import importlib
+    import inspect
     import shutil
     import tempfile
 
@@ -266,17 +267,21 @@ def _interleaved(a):
         extra = {} if a.engine is None else {"engine": a.engine}
         if a.n_slices is not None:
             extra["n_slices"] = a.n_slices
+        # an older checkout without engines solves with its only (numpy) code
+        takes = inspect.signature(roller_b.ProfiledRoller).parameters
+        extra_b = {k: v for k, v in extra.items() if k in takes}
         prof_a = rs.make_profile("iso16281", L, D / 2, ESTAR)
         # the same profile built by the other checkout (its own classes)
         prof_b = getattr(profiles_b, type(prof_a).__name__)(L, D)
         print(f"A = {Path(linecontact.__file__).parents[1].name}, B = {other.name} "
-              f"(imported as linecontact_b), engine={a.engine or 'default'}, "
+              f"(imported as linecontact_b), engine={a.engine or 'default'}"
+              f"{'' if 'engine' in extra_b or a.engine is None else ' (B: none, its numpy code)'}, "
               f"{a.repeat} pairs per tilt, alternating in one process")
         for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
-            def one(mod, prof):
-                return mod.ProfiledRoller(D / 2, L, ESTAR, prof, **extra).at_force(
+            def one(mod, prof, kw):
+                return mod.ProfiledRoller(D / 2, L, ESTAR, prof, **kw).at_force(
                     FORCE, tilt=tilt)
-            runs = {"A": (roller_a, prof_a), "B": (roller_b, prof_b)}
+            runs = {"A": (roller_a, prof_a, extra), "B": (roller_b, prof_b, extra_b)}
             for k in "AB":                      # tables, caches, compiled code loaded
                 one(*runs[k])
             ts = {"A": [], "B": []}

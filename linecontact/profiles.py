@@ -994,10 +994,14 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
             P = np.asarray(profile._drop(xc), dtype=float)
     else:
         P = np.asarray(profile.drop(xc), dtype=float)
+    if not ends_may_be_inf and P.size and P.min() >= 0 and P.max() < np.inf:
+        # finite and >= 0 everywhere, in two reductions (NaN fails both tests): the
+        # slice solver asks at every regrid, and the masks below cost more calls
+        return P
     ok = np.isfinite(P) & (P >= 0)
     if ends_may_be_inf:
         ok |= np.isposinf(P) & (np.abs(x) >= length / 2 * (1 - 1e-12))
-    if not np.all(ok):
+    if not ok.all():
         i = int(np.flatnonzero(~ok)[0])
         raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
                               where=f"at x = {x[i]:.6g} m")

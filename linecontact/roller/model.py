@@ -128,6 +128,9 @@ class ProfiledRoller:
         self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
         self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
         self._end_cache = {}
+        # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2 (a
+        # logarithmic profile's drop is infinite at the ends): per roller, not per regrid
+        self._slope_consts = (1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9))
         self.refine_ends = check_flag("refine_ends", refine_ends)
         self.engine = check_engine(engine)
         self._refine = 0
@@ -304,15 +307,12 @@ class ProfiledRoller:
     def _drop_slope(self, x, drop=True):
         """The drop P(x) (where `drop`) and dP/dx by central differences (step 1e-7 L,
         inside the roller), from one evaluation of the profile."""
-        h = 1e-7 * self.length
-        lo, hi = -self.length / 2, self.length / 2
-        # inside the roller by 1e-9 L/2: a logarithmic profile's drop is infinite at
-        # the ends
-        xp = np.minimum(x + h, hi * (1 - 1e-9))
-        xm = np.maximum(x - h, lo * (1 - 1e-9))
+        h, lo_in, hi_in = self._slope_consts
+        xp = np.minimum(x + h, hi_in)
+        xm = np.maximum(x - h, lo_in)
         n = len(x)
         P = roller_drop(self.profile, self.length,
-                        np.concatenate([x, xp, xm] if drop else [xp, xm]))
+                        np.concatenate((x, xp, xm) if drop else (xp, xm)))
         k = n if drop else 0
         return (P[:n] if drop else None), (P[k:k + n] - P[k + n:]) / (xp - xm)
 
@@ -496,10 +496,11 @@ class ProfiledRoller:
     def _solution(self, d, th, F, M, K, state, free_tilt=False):
         s, S, q, c = state
         qN = math.pi * self.estar * q
-        b = np.zeros_like(q)
-        b[S] = np.sqrt(q[S] / c[S])
-        p = np.zeros_like(q)
-        p[S] = 2.0 * self.estar * np.sqrt(q[S] * c[S])       # 2 q/(pi b)
+        qS, cS = q[S], c[S]
+        b = np.zeros(q.shape)
+        b[S] = np.sqrt(qS / cS)
+        p = np.zeros(q.shape)
+        p[S] = 2.0 * self.estar * np.sqrt(qS * cS)       # 2 q/(pi b)
         start, stop, lo_edge, hi_edge = contact_extent(s.x, q, s.w, self.length,
                                                         s.lo, s.hi)
         # within the end slice's width (or L/1000) of an end counts as reaching it: a
@@ -551,11 +552,12 @@ class ProfiledRoller:
             msg = ("edge loaded: the contact reaches the roller end ({}), where the "
                    "pressure on a half-space is singular; a peak pressure there depends "
                    "on the slice width and is not reported").format(edge)
-        if b.max() > 0.1 * self.radius:
-            notes.append(f"contact half-width b = {np.max(b):.3g} m exceeds 0.1 R: the "
+        bmax = b.max()
+        if bmax > 0.1 * self.radius:
+            notes.append(f"contact half-width b = {bmax:.3g} m exceeds 0.1 R: the "
                          "parabolic gap y^2/(2R) is inaccurate")
         with np.errstate(invalid="ignore"):
-            approach = float(np.max(d + th * self._fx - self._fP))
+            approach = float((d + th * self._fx - self._fP).max())
         gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
             [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,

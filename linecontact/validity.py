@@ -741,10 +741,16 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
         if ((vmin > lo if low_open else vmin >= lo)
                 and (vmax < hi if high_open else vmax <= hi)):
             return v
+    elif not v.ndim and lo.ndim == 0 and hi.ndim == 0:
+        # a scalar between fixed ends (every constructor and solve checks several):
+        # two comparisons, without the masks below (NaN fails them and takes that path)
+        if ((v > lo if low_open else v >= lo)
+                and (v < hi if high_open else v <= hi)):
+            return v
     above = v > lo if low_open else v >= lo
     below = v < hi if high_open else v <= hi
     ok = above & below
-    if np.all(ok):
+    if ok.all():
         return v
     shape = ok.shape
     idx = tuple(int(i) for i in np.argwhere(~ok)[0]) if shape else ()

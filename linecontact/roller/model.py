@@ -192,9 +192,9 @@ class ProfiledRoller:
         if memo is not None and memo[0] == th:
             return memo[1]
         h = self._fP - th * self._fx
-        k = int(np.argmin(h))
+        k = int(h.argmin())
         hmin = float(h[k])
-        if 0 < k < len(h) - 1 and np.all(np.isfinite(h[k - 1:k + 2])):
+        if 0 < k < len(h) - 1 and np.isfinite(h[k - 1:k + 2]).all():
             den = h[k - 1] - 2 * h[k] + h[k + 1]
             corr = (h[k + 1] - h[k - 1]) ** 2 / (8 * den) if den > 0 else 0.0
             if corr > 1e-12 * max(abs(h[k - 1]), abs(h[k + 1])):
@@ -517,7 +517,7 @@ class ProfiledRoller:
         # from 1024 to 4096 cells; docs/profiled_rollers.md). A contact reaching the last
         # slice there is an end zone narrower than the slices: p_max unresolved, below.
         inf_lo, inf_hi = (not np.isfinite(self._fP[0]), not np.isfinite(self._fP[-1]))
-        on = np.flatnonzero(q > 0)
+        on = (q > 0).nonzero()[0]
         end_zone = ((inf_lo and lo_edge and on[0] == 0)
                     or (inf_hi and hi_edge and on[-1] == len(q) - 1))
         lo_edge = lo_edge and not inf_lo

@@ -624,7 +624,7 @@ class SliceEquations:
         with the plane-strain widths b^2 = 4 R q/(pi E*) of the first answer)."""
         n, R = self.n, self.R
         over = d + theta * self.x - self.P
-        S = np.flatnonzero(over > 0)
+        S = (over > 0).nonzero()[0]
         none_in_contact = ConvergenceError(
             f"no slice is in contact at d = {d:.6g} m: the contact is narrower than one "
             "slice (too small a load for the slicing)")
@@ -687,7 +687,7 @@ class SliceEquations:
             s = regrid(d, theta, n_coarse if coarse else n_full)
         for sweep in range(sweeps):
             over = d + theta * s.x - s.P
-            S = np.flatnonzero(over > 0)
+            S = (over > 0).nonzero()[0]
             if S.size == 0:
                 return None
             if width is None:
@@ -735,10 +735,10 @@ class SliceEquations:
                     break
                 on = qs > 0
                 S, b0 = S[on], b0[on]
-                keep = np.flatnonzero(on) if keep is None else keep[on]
+                keep = on.nonzero()[0] if keep is None else keep[on]
                 if S.size == 0:
                     return None
-                rows = np.concatenate([np.flatnonzero(on), np.arange(ns, ns + nb)])
+                rows = np.concatenate([on.nonzero()[0], np.arange(ns, ns + nb)])
                 M, rhs = M.take(rows, 0).take(rows, 1), rhs[rows]   # (np.ix_: 5x the time)
                 ns = len(S)
             if keep is not None and Dk is not None:
@@ -975,7 +975,7 @@ class SliceEquations:
                     pen[S] = False
                     if left is not None:      # their gaps are those before they left
                         pen[left] = False
-                    add = np.flatnonzero(pen)
+                    add = pen.nonzero()[0]
                     if not small and len(add):
                         # a slice that left three times rejoins only once the others
                         # have converged without it: at a contact end between two

@@ -357,6 +357,18 @@ def test_each_test_starts_on_the_numpy_reference():
     assert sl.resolve_engine("auto") == "numpy"
 
 
+def _random_step_system(seed):
+    """A random Newton system of the bordered step (30 slices, 12 loaded; a Jacobian
+    made well conditioned by 5 I) and the generator, drawn on after it by each test:
+    (rng, n, ns, R, qsc, S, w, x, J)."""
+    rng = np.random.default_rng(seed)
+    n, ns, R, qsc = 30, 12, 5e-3, 2e-7
+    S = np.sort(rng.choice(n, ns, replace=False))
+    w, x = rng.random(n) * 1e-4, rng.random(n) * 1e-2 - 5e-3
+    J = rng.normal(size=(2 * ns, 2 * ns)) + 5 * np.eye(2 * ns)
+    return rng, n, ns, R, qsc, S, w, x, J
+
+
 def test_compiled_step_helpers_equal_their_numpy_lines():
     """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
     bordered_sums, step_out, step_update) give what the numpy lines they replace in
@@ -369,11 +381,7 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
     pytest.importorskip("numba")
     from linecontact.roller import _compiled as jit
 
-    rng = np.random.default_rng(3)
-    n, ns, R, qsc = 30, 12, 5e-3, 2e-7
-    S = np.sort(rng.choice(n, ns, replace=False))
-    w, x = rng.random(n) * 1e-4, rng.random(n) * 1e-2 - 5e-3
-    J0 = rng.normal(size=(2 * ns, 2 * ns)) + 5 * np.eye(2 * ns)
+    rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(3)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
     # the scaled system
     J, Jn = J0.copy(), J0.copy()
@@ -450,11 +458,7 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     pytest.importorskip("numba")
     from linecontact.roller import _compiled as jit
 
-    rng = np.random.default_rng(5)
-    n, ns, R, qsc = 30, 12, 5e-3, 2e-7
-    S = np.sort(rng.choice(n, ns, replace=False))
-    w, x = rng.random(n) * 1e-4, rng.random(n) * 1e-2 - 5e-3
-    J = rng.normal(size=(2 * ns, 2 * ns)) + 5 * np.eye(2 * ns)
+    rng, n, ns, R, qsc, S, w, x, J = _random_step_system(5)
     B, qs = rng.normal(size=(2 * ns, 3)), rng.random(ns)
     z, wq, wxq, Wz = jit.solve_sums(J.copy(), B, ns, qsc, R, w, x, S, qs)
     zn = np.linalg.solve(J, B)

@@ -371,10 +371,10 @@ def _random_step_system(seed):
 
 def test_compiled_step_helpers_equal_their_numpy_lines():
     """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
-    bordered_sums, step_out, step_update) give what the numpy lines they replace in
-    SliceEquations.bordered give, written out here: the scaled system bit for bit (the
-    same products), the sums to 1e-13 of their scale (another order of addition), the
-    step's mask, its damping alpha (from the loads, the curvatures and the overlap, at a
+    bordered_sums, step_out, step_update) give what the numpy code they replace in
+    SliceEquations.bordered gives (slices.scaled_system; the other lines written out
+    here): the scaled system bit for bit (the same products), the sums to 1e-13 of
+    their scale (another order of addition), the step's mask, its damping alpha (from the loads, the curvatures and the overlap, at a
     given tilt and with a tilt step), the slices that limited it and the largest
     changes. A whole solve cannot check the damping and the mask: a wrong alpha or
     hit_q changes the Newton path, not the converged answer."""
@@ -386,14 +386,9 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
     # the scaled system
     J, Jn = J0.copy(), J0.copy()
     B = jit.scaled_system(J, res, rhs, ns, qsc, R)
-    Jn[:ns, ns:] *= 1.0 / (qsc * R)
-    Jn[ns:, :ns] *= qsc * R
-    Bn = np.empty((2 * ns, 3))
-    np.multiply(res[:ns], -1.0 / qsc, out=Bn[:ns, 0])
-    np.multiply(res[ns:], -R, out=Bn[ns:, 0])
-    np.multiply(rhs[:ns], 1.0 / qsc, out=Bn[:ns, 1:])
-    np.multiply(rhs[ns:], R, out=Bn[ns:, 1:])
+    Bn = sl.scaled_system(Jn, res, rhs, ns, qsc, R)
     assert np.array_equal(J, Jn) and np.array_equal(B, Bn), "scaled_system"
+    assert not np.array_equal(J, J0), "the scaling must change J (in place)"
     # the force and moment sums
     z0 = rng.normal(size=(2 * ns, 3))
     qs = qsc * (0.1 + rng.random(ns))

@@ -245,6 +245,21 @@ def compiled():
     return _COMPILED[0]
 
 
+def scaled_system(J, res, rhs, ns, qsc, R):
+    """The bordered Newton step's system in scaled unknowns (q/qsc, c R) and rows
+    (gap/qsc, curvature R): J's off-diagonal blocks scaled in place, and the
+    right-hand sides B = (-res, rhs) scaled likewise (2 ns x 3). The numpy reference
+    of _compiled.scaled_system."""
+    J[:ns, ns:] *= 1.0 / (qsc * R)
+    J[ns:, :ns] *= qsc * R
+    B = np.empty((2 * ns, 3))
+    np.multiply(res[:ns], -1.0 / qsc, out=B[:ns, 0])
+    np.multiply(res[ns:], -R, out=B[ns:, 0])
+    np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
+    np.multiply(rhs[ns:], R, out=B[ns:, 1:])
+    return B
+
+
 class ConvergenceError(RuntimeError):
     """The slice equations did not converge (reported, never hidden)."""
 
@@ -868,16 +883,8 @@ class SliceEquations:
             # _compiled.scaled_system and .bordered_sums: the same products, the sums
             # in another order)
             jit = compiled() if s.engine == "numba" else None
-            if jit is not None:
-                B = jit.scaled_system(J, res, rhs, ns, qsc, R)
-            else:
-                J[:ns, ns:] *= 1.0 / (qsc * R)
-                J[ns:, :ns] *= qsc * R
-                B = np.empty((2 * ns, 3))
-                np.multiply(res[:ns], -1.0 / qsc, out=B[:ns, 0])
-                np.multiply(res[ns:], -R, out=B[ns:, 0])
-                np.multiply(rhs[:ns], 1.0 / qsc, out=B[:ns, 1:])
-                np.multiply(rhs[ns:], R, out=B[ns:, 1:])
+            B = (jit.scaled_system if jit is not None else scaled_system)(
+                J, res, rhs, ns, qsc, R)
             left = None
             while True:
                 if jit is not None:

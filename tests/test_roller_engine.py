@@ -374,9 +374,9 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
     bordered_sums, step_out, step_update) give what the numpy code they replace in
     SliceEquations.bordered gives (slices.scaled_system; the other lines written out
     here): the scaled system bit for bit (the same products), the sums to 1e-13 of
-    their scale (another order of addition), the step's mask, its damping alpha (from the loads, the curvatures and the overlap, at a
-    given tilt and with a tilt step), the slices that limited it and the largest
-    changes. A whole solve cannot check the damping and the mask: a wrong alpha or
+    their scale (another order of addition), the step's mask, its damping alpha (from
+    the loads, the curvatures and the overlap, at a given tilt and with a tilt step),
+    the slices that limited it and the largest changes. A whole solve cannot check the damping and the mask: a wrong alpha or
     hit_q changes the Newton path, not the converged answer."""
     pytest.importorskip("numba")
     from linecontact.roller import _compiled as jit

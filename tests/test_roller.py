@@ -537,3 +537,17 @@ def test_a_setting_changed_after_construction_is_checked_and_used_throughout():
     with pytest.raises(OutOfRangeError, match="^grading"):
         r.grading = 1.5
     assert r.grading == 0.5
+
+
+def test_an_offset_crown_free_to_tilt_rests_at_minus_x0_over_rc():
+    """An offset circular crown (x0 = 2 mm, Rc = 500 mm, R 5 mm, L 27.254 mm, 5592.05 N:
+    a random case of the slice study, reported there as a singular bordered system in
+    one intermediate state of issue 20's fifth round) free to tilt rests at theta =
+    -x0/Rc: the lowest point of the tilted profile, x0 + theta Rc, is then at x = 0,
+    where the moment about x = 0 vanishes; to 1e-6 of the tilt."""
+    from linecontact.profiles import CircularCrownProfile
+    L = 27.254e-3
+    prof = CircularCrownProfile(L, crown_radius=0.5, offset=2e-3)
+    s = ProfiledRoller(5e-3, L, 115.385e9, prof).at_force(5592.05, tilt="free")
+    assert abs(s.tilt - (-2e-3 / 0.5)) < 1e-6 * 4e-3, s.tilt
+    assert abs(s.force / 5592.05 - 1) < 1e-9 and s.p_max_resolved

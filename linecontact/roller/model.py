@@ -251,7 +251,6 @@ class ProfiledRoller:
                            n or self.n_slices, drop, self.grading, self._refine,
                            resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
-        s.slope = self._slope
         s.slope_values = got[0]
         return s
 
@@ -300,21 +299,15 @@ class ProfiledRoller:
             self._end_cache[key] = hit
         return hit
 
-    def _slope(self, x):
-        """dP/dx at the slice centres by central differences (step 1e-7 L, inside)."""
-        return self._drop_slope(x, drop=False)[1]
-
-    def _drop_slope(self, x, drop=True):
-        """The drop P(x) (where `drop`) and dP/dx by central differences (step 1e-7 L,
-        inside the roller), from one evaluation of the profile."""
+    def _drop_slope(self, x):
+        """The drop P(x) and dP/dx by central differences (step 1e-7 L, inside the
+        roller), from one evaluation of the profile."""
         h, lo_in, hi_in = self._slope_consts
         xp = np.minimum(x + h, hi_in)
         xm = np.maximum(x - h, lo_in)
         n = len(x)
-        P = roller_drop(self.profile, self.length,
-                        np.concatenate((x, xp, xm) if drop else (xp, xm)))
-        k = n if drop else 0
-        return (P[:n] if drop else None), (P[k:k + n] - P[k + n:]) / (xp - xm)
+        P = roller_drop(self.profile, self.length, np.concatenate((x, xp, xm)))
+        return P[:n], (P[n:2 * n] - P[2 * n:]) / (xp - xm)
 
     # -- depth control ---------------------------------------------------------------
     @serial_blas
@@ -490,7 +483,7 @@ class ProfiledRoller:
         scale = math.pi * self.estar
         F = scale * (s.w @ q)
         M = scale * ((s.w * s.x) @ q)
-        K = s.sensitivities(S, q, c, th, self._slope(s.x))
+        K = s.sensitivities(S, q, c, th, s.slope_at_slices())
         return d, th, F, M, K, (s, S, q, c)
 
     def _solution(self, d, th, F, M, K, state, free_tilt=False):

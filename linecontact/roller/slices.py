@@ -627,11 +627,9 @@ class SliceEquations:
         return math.pi * self.E * np.array([dF @ G, dM @ G])
 
     def slope_at_slices(self):
-        """dP/dx at the slice centres (the owner sets ``slope``, a function of x, or
-        ``slope_values``, the values at the slice centres)."""
-        if self.slope_values is not None:
-            return self.slope_values
-        return self.slope(self.x)
+        """dP/dx at the slice centres (``slope_values``, set by the owner with the
+        drop: ProfiledRoller._grid)."""
+        return self.slope_values
 
     def start(self, d, theta, warm=None):
         """A first (S, q, c) at depth d and tilt theta: the warm start mapped onto this

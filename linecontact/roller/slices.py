@@ -151,7 +151,7 @@ def _far_geometry(n, grading, refine=0):
             pn *= un
             pf *= uf
         G[np.arange(n), np.arange(n)] = 0.0
-        if len(_FAR) >= 8 or sum(v.nbytes for v in list(_FAR.values())) > 2**26:
+        if len(_FAR) >= 8 or cache_nbytes(_FAR) > 2**26:
             _FAR.clear()
         _FAR[key] = G
     return G

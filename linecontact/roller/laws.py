@@ -363,7 +363,6 @@ class ProfiledRollerModel(_SolvedRoller):
     def __init__(self, radius, length, estar, profile=None, tilt=0.0,
                  n_slices=DEFAULT_N_SLICES):
         super().__init__(radius, length, estar, tilt)
-        self._profile_spec = profile
         self.roller = ProfiledRoller(self.radius, self.length, self.estar, profile,
                                      n_slices=n_slices)
         self.axial_profile = self.roller.profile
@@ -376,18 +375,12 @@ class ProfiledRollerModel(_SolvedRoller):
         r = self.__dict__.get("roller")
         if (r is not None and name in self._ROLLER_ATTRIBUTES
                 and value != getattr(r, name)):
-            # `model.radius = ...` must change the law, not only the label: the roller
-            # is built anew (checked there) with the same profile spec (read with the
-            # new R, as at construction) and the roller's own settings
-            args = {k: getattr(r, k) for k in self._ROLLER_ATTRIBUTES}
-            args[name] = value
-            new = ProfiledRoller(args["radius"], args["length"], args["estar"],
-                                 self._profile_spec, n_slices=args["n_slices"],
-                                 grading=r.grading, refine_ends=r.refine_ends,
-                                 engine=r.engine)
-            super().__setattr__("roller", new)
-            super().__setattr__("axial_profile", new.profile)
-            value = getattr(new, name)
+            # `model.radius = ...` must change the law, not only the label: set on the
+            # roller, which builds itself anew (checked there, its profile spec read
+            # with the new R, as at construction; ProfiledRoller.__setattr__)
+            setattr(r, name, value)
+            super().__setattr__("axial_profile", r.profile)
+            value = getattr(r, name)
         super().__setattr__(name, value)
 
     @property

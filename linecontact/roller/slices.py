@@ -172,7 +172,6 @@ _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
 _IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
 _COMPILED = []              # the module _compiled, once imported
-_NUMBA_OK = []              # [True] once check_engine("numba") passed in this process
 
 
 def numba_installed():
@@ -227,12 +226,10 @@ def resolve_engine(engine):
                           stacklevel=2)
             return "numpy"
         return "numba"
-    if engine == "numpy" or (engine == "numba" and _NUMBA_OK):
-        return engine      # (every regrid asks: the check once a process)
-    engine = check_engine(engine)
-    if engine == "numba":
-        _NUMBA_OK.append(True)
-    return engine
+    if engine == "numpy" or (engine == "numba" and _COMPILED):
+        return engine      # (every regrid asks: once the compiled module imported,
+        #                     check_engine("numba") can only pass)
+    return check_engine(engine)
 
 
 def compiled():

@@ -646,6 +646,82 @@ def solve_sums(J, B, ns, qsc, R, w, x, S, qs):
     return z, float(sums[0]), float(sums[1]), Wz
 
 
+def _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
+                 over, B, Kout, st, hit_q, upd):
+    """One bordered Newton step after the linearisation, in one call: the scaled system
+    (_scaled_system), its dense solve and sums (_solve_sums), K = Wz[:, 1:] + grid (in
+    Kout), the step in (d, theta) as SliceEquations.bordered computes it (mode 1: the
+    force row, 2: the moment row, 3: both by Cramer's rule, 0: none; target = F/(pi E*);
+    st[:2]), the step dz and its mask of slices driven below zero (_step_out), and,
+    where no slice leaves, the damped update of q and c (_step_update: upd = alpha,
+    largest overlap, largest |dq|, largest |dc|). Returns (status, z, dz, out): status
+    0 the update done; 1 slices leave (nout > 0 and ns > 2: the caller removes them
+    and solves again, as in the numpy code); 2 Cramer's determinant is zero or not
+    finite (the caller solves the 2 x 2 system with numpy, st[2:4] holding its
+    right-hand side; dz and out are then empty)."""
+    n2 = 2 * ns
+    _scaled_system(J, res, rhs, ns, 1.0 / (qsc * R), qsc * R, -1.0 / qsc, 1.0 / qsc, R, B)
+    z = np.linalg.solve(J, B)
+    Wz = np.empty((2, 3))
+    wq, wxq = _bordered_sums(z, ns, qsc, 1.0 / R, w, x, S, qs, Wz)
+    for i in range(2):
+        for j in range(2):
+            Kout[i, j] = Wz[i, j + 1] + grid[i, j]
+    lin0 = Wz[0, 0]
+    lin1 = Wz[1, 0]
+    s0 = 0.0
+    s1 = 0.0
+    if mode == 3:
+        r0 = target - wq - lin0
+        r1 = -wxq - lin1
+        k00, k01, k10, k11 = Kout[0, 0], Kout[0, 1], Kout[1, 0], Kout[1, 1]
+        det = k00 * k11 - k01 * k10
+        if det == 0.0 or not np.isfinite(det):
+            st[2] = r0
+            st[3] = r1
+            return 2, z, np.empty(0), np.empty(0, np.bool_)
+        s0 = (r0 * k11 - k01 * r1) / det
+        s1 = (k00 * r1 - k10 * r0) / det
+    elif mode == 1:
+        s0 = (target - wq - lin0) / Kout[0, 0]
+    elif mode == 2:
+        s1 = (-wxq - lin1) / Kout[1, 1]
+    st[0] = s0
+    st[1] = s1
+    dz = np.empty(n2)
+    out = np.empty(ns, np.bool_)
+    nout = _step_out(z, s0, s1, ns, qs, dz, out)
+    if nout > 0 and ns > 2:
+        return 1, z, dz, out
+    _step_update(q, c, S, qs, cs, dz[:ns], dz[ns:], over, x, s0, s1, hit_q, upd)
+    return 0, z, dz, out
+
+
+_newton_step = _jit(_newton_step)
+
+
+def newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
+                over):
+    """One step of SliceEquations.bordered after the linearisation in one compiled
+    call (_newton_step): (status, B, z, K, step, dz, out, hit_q, upd), B the scaled
+    right-hand sides (J scaled in place), step[:2] the step in (d, theta) (status 2:
+    step[2:] the right-hand side of the 2 x 2 system), upd = (alpha, largest overlap,
+    largest |dq|, largest |dc|) where status is 0. (None, B) where numba refuses the
+    dense system (singular, not finite): J and B are scaled, and the caller's numpy
+    solve answers as the numpy engine would."""
+    B = np.empty((2 * ns, 3))
+    K = np.empty((2, 2))
+    st = np.empty(4)
+    hit_q = np.empty(ns, np.bool_)
+    upd = np.empty(4)
+    try:
+        status, z, dz, out = _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs,
+                                          target, mode, q, c, over, B, K, st, hit_q, upd)
+    except np.linalg.LinAlgError:
+        return None, B
+    return status, B, z, K, st, dz, out, hit_q, upd
+
+
 def _start_solve(M, rhs, ns, nb, keep):
     """The cold start's active-set loop on the bordered frozen-width system M z = rhs
     (ns slice rows, nb border rows last): solved, the slices with z <= 0 removed (their

@@ -279,11 +279,11 @@ def _fraction_to_boundary(qs, cs, dq, dc):
 #: on an unchanged loaded set, the error left in the scaled unknowns (loads over the
 #: largest, c R, d and the tilt's travel over the largest overlap) is at most
 #: NEWTON_C times :func:`newton_error` of the step. Measured over the 104 cases of
-#: tables/roller_accuracy.csv and the ISO 16281 case of
-#: tools/benchmarks/bench_roller_speed (every full step of every solve against the
-#: converged state): at most 9.9 times, so 100 leaves a margin of ten
-#: (docs/profiled_rollers.md, "Newton's method"); the returned state is then within
-#: the tolerance of the converged one.
+#: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
+#: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
+#: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
+#: most 9.9 times (10.7 with the numba engine, the same step), so 100 leaves a margin
+#: of about ten; the returned state is then within the tolerance of the converged one.
 NEWTON_C = 100.0
 #: the largest step size (as `small` measures it) at which the estimate is tried: above
 #: it the estimate cannot fall below any tolerance in use (it is at least the step's

@@ -919,9 +919,6 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            # (the compiled engine does this step's small arithmetic in two calls,
-            # _compiled.scaled_system and .bordered_sums: the same products, the sums
-            # in another order)
             jit = compiled() if s.engine == "numba" else None
             fused = status = None
             if jit is not None:

@@ -1008,6 +1008,48 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
     return P
 
 
+#: The profile classes whose drop, by its formula and the checks of its constructor,
+#: is finite and >= 0 at every x strictly inside a roller it covers (the logarithmic
+#: ones are infinite only at the ends): :func:`drop_inside` evaluates them without
+#: roller_drop's range clamp and checks, and :func:`profile_identity` names them by
+#: their parameters.
+_FORMULA_PROFILES = (StraightProfile, EndReliefProfile, CircularCrownProfile,
+                     ISO16281Profile, LundbergProfile, JohnsGoharProfile,
+                     TabulatedProfile)
+
+
+def drop_inside(profile, length):
+    """A callable x -> P(x) [m] for points strictly inside a roller of length L
+    (|x| < L/2) that `profile` covers (checked before by :func:`roller_drop`): for the
+    profiles of this module (the exact classes, not subclasses) their formula directly,
+    the same floats as roller_drop without its clamp (an identity inside) and its
+    finite, >= 0 check (true of the formula there); for any other profile
+    roller_drop itself, checks included. The roller solver evaluates the drop at every
+    regrid, on some 150 points, where those calls cost more than the formula."""
+    if type(profile) in _FORMULA_PROFILES:
+        return profile._drop
+
+    def checked(x):
+        return roller_drop(profile, length, x)
+    return checked
+
+
+def profile_identity(profile):
+    """A hashable key that equals another profile's exactly when both are of the same
+    class of this module and hold equal parameters (so that their drops are the same
+    floats), or None for a profile without one (a table, a user's class): a key for
+    caching what depends on the drop alone. Read at each call: a profile whose
+    parameters were changed in place gets a new key."""
+    if type(profile) not in _FORMULA_PROFILES:
+        return None
+    key = (type(profile),) + tuple(sorted(vars(profile).items()))
+    try:
+        hash(key)
+    except TypeError:            # an array parameter (a table)
+        return None
+    return key
+
+
 def is_free_tilt(tilt):
     """Whether a tilt argument asks for moment equilibrium (``"free"``) or holds a
     number; any other word, and None, is refused.

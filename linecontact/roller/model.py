@@ -9,9 +9,10 @@ import math
 
 import numpy as np
 
-from ..profiles import as_profile, is_free_tilt, roller_drop
+from ..profiles import (as_profile, drop_inside, is_free_tilt, profile_identity,
+                        roller_drop)
 from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
-from .._numerics import serial_blas
+from .._numerics import CACHE_BYTES, cache_nbytes, serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
                      ConvergenceError, SliceEquations, check_engine, coarse_slices,
@@ -125,20 +126,18 @@ class ProfiledRoller:
         self._profile_spec = profile             # read again with a new R (__setattr__)
         self.profile = as_profile(profile, self.radius, self.length, self.estar)
         L = self.length
-        self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
-        self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
-        self._end_cache = {}
-        # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2 (a
-        # logarithmic profile's drop is infinite at the ends): per roller, not per regrid
-        self._slope_consts = (1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9))
-        self.refine_ends = check_flag("refine_ends", refine_ends)
-        self.engine = check_engine(engine)
-        self._refine = 0
-        self._warm = None
-        self._memo = None
-        self._free_memo = 0.0
-        self._d0_memo = None
-        self.iterations = 0
+        fx, fP, end_cache = _fine_grid(self.profile, L, self.n_slices)
+        # set at once, past __setattr__ (which only watches the settings above)
+        self.__dict__.update(
+            _fx=fx, _fP=fP, _end_cache=end_cache,
+            _drop_at=drop_inside(self.profile, L),
+            # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2
+            # (a logarithmic profile's drop is infinite at the ends): per roller
+            _slope_consts=(1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9)),
+            refine_ends=check_flag("refine_ends", refine_ends),
+            engine=check_engine(engine), _refine=0, _memo=None, _free_memo=0.0,
+            _d0_memo=None, _last_over=None, iterations=0)
+        self._warm = None                        # last: marks the roller constructed
 
     #: The settings a solve depends on: one set after construction builds the roller
     #: anew, checked as at construction (the grid of the profile drop, the caches and
@@ -212,33 +211,43 @@ class ProfiledRoller:
         """
         fx = self._fx
         over = d + th * fx - self._fP
+        # kept for the solution's largest overlap (_solution), which is this grid's at
+        # the converged (d, theta)
+        self._last_over = (d, th, over)
         # the first and last grid points inside (argmax of the mask: a tenth of
         # flatnonzero's time on the 16 n + 1 points, the same indices)
         mask = over > 0
         i = int(mask.argmax())
         dlo = dhi = (0.0, 0.0)
+        last = len(fx) - 1
+        # (the scalars below as Python floats: the same IEEE arithmetic as numpy's
+        # scalars, at a fraction of the cost per operation)
         if not mask[i]:
             k = int(over.argmax())
-            lo, hi = fx[max(k - 1, 0)], fx[min(k + 1, len(fx) - 1)]
+            lo, hi = float(fx[max(k - 1, 0)]), float(fx[min(k + 1, last)])
         else:
-            j = len(fx) - 1 - int(mask[::-1].argmax())
-            lo, hi = fx[0], fx[-1]
-            h = fx[1] - fx[0]
-            if i > 0 and math.isfinite(over[i - 1]):
-                o0, o1, x0, x1 = over[i - 1], over[i], fx[i - 1], fx[i]
-                delta = o1 - o0
-                lo = x0 + h * (-o0 / delta)
-                dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
-            elif i > 0:
-                # the drop is infinite at the end x = -L/2 (a logarithmic profile)
-                lo, dlo = self._end_root(d, th, fx[i], -1)
-            if j < len(fx) - 1 and math.isfinite(over[j + 1]):
-                o0, o1, x0, x1 = over[j], over[j + 1], fx[j], fx[j + 1]
-                delta = o0 - o1
-                hi = x0 + h * (o0 / delta)
-                dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
-            elif j < len(fx) - 1:
-                hi, dhi = self._end_root(d, th, fx[j], 1)
+            j = last - int(mask[::-1].argmax())
+            lo, hi = float(fx[0]), float(fx[-1])
+            h = float(fx[1] - fx[0])
+            if i > 0:
+                o0, o1 = over[i - 1:i + 1].tolist()
+                if math.isfinite(o0):
+                    x0, x1 = fx[i - 1:i + 1].tolist()
+                    delta = o1 - o0
+                    lo = x0 + h * (-o0 / delta)
+                    dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
+                else:
+                    # the drop is infinite at the end x = -L/2 (a logarithmic profile)
+                    lo, dlo = self._end_root(d, th, float(fx[i]), -1)
+            if j < last:
+                o0, o1 = over[j:j + 2].tolist()
+                if math.isfinite(o1):
+                    x0, x1 = fx[j:j + 2].tolist()
+                    delta = o0 - o1
+                    hi = x0 + h * (o0 / delta)
+                    dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+                else:
+                    hi, dhi = self._end_root(d, th, float(fx[j]), 1)
         # the drop and its slope at the slice centres in one evaluation of the profile
         # (the slope serves every Newton step on this grid, _drop_slope)
         got = []
@@ -247,7 +256,7 @@ class ProfiledRoller:
             P, slope = self._drop_slope(x)
             got.append(slope)
             return P
-        s = SliceEquations(self.radius, self.estar, float(lo), float(hi),
+        s = SliceEquations(self.radius, self.estar, lo, hi,
                            n or self.n_slices, drop, self.grading, self._refine,
                            resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
@@ -273,7 +282,7 @@ class ProfiledRoller:
             if not out[k]:              # overlapping to within 1e-6 of the interval
                 return float(x[-1]), (0.0, 0.0)
             key += (k,)
-        o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
+        (o0, o1), (x0, x1) = over[k - 1:k + 1].tolist(), x[k - 1:k + 1].tolist()
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
@@ -301,13 +310,19 @@ class ProfiledRoller:
 
     def _drop_slope(self, x):
         """The drop P(x) and dP/dx by central differences (step 1e-7 L, inside the
-        roller), from one evaluation of the profile."""
+        roller), from one evaluation of the profile at x, x + h and x - h (points
+        strictly inside the roller: profiles.drop_inside, without roller_drop's clamp
+        and checks for the profiles of linecontact.profiles; the same floats)."""
         h, lo_in, hi_in = self._slope_consts
-        xp = np.minimum(x + h, hi_in)
-        xm = np.maximum(x - h, lo_in)
         n = len(x)
-        P = roller_drop(self.profile, self.length, np.concatenate((x, xp, xm)))
-        return P[:n], (P[n:2 * n] - P[2 * n:]) / (xp - xm)
+        X = np.empty(3 * n)
+        X[:n] = x
+        xp, xm = X[n:2 * n], X[2 * n:]
+        np.minimum(np.add(x, h, out=xp), hi_in, out=xp)
+        np.maximum(np.subtract(x, h, out=xm), lo_in, out=xm)
+        P = self._drop_at(X)
+        dP = np.subtract(P[n:2 * n], P[2 * n:])
+        return P[:n], np.divide(dP, np.subtract(xp, xm, out=xp), out=dP)
 
     # -- depth control ---------------------------------------------------------------
     @serial_blas
@@ -499,8 +514,8 @@ class ProfiledRoller:
         # within the end slice's width (or L/1000) of an end counts as reaching it: a
         # log profile's contact approaches the end without touching it exactly, and
         # the contact's end is located to within the slice width there
-        near_lo = max(s.w[0], 1e-3 * self.length)
-        near_hi = max(s.w[-1], 1e-3 * self.length)
+        near_lo = max(float(s.w[0]), 1e-3 * self.length)
+        near_hi = max(float(s.w[-1]), 1e-3 * self.length)
         lo_edge = lo_edge or start <= -self.length / 2 + near_lo
         hi_edge = hi_edge or stop >= self.length / 2 - near_hi
         # an end where the drop is infinite (Lundberg, ISO 16281: ln 1/(1 - (2x/L)^2))
@@ -509,10 +524,12 @@ class ProfiledRoller:
         # 1 kN: contact ends 9.8 um before each end, peak 972 MPa 28 um from it, converged
         # from 1024 to 4096 cells; docs/profiled_rollers.md). A contact reaching the last
         # slice there is an end zone narrower than the slices: p_max unresolved, below.
-        inf_lo, inf_hi = (not np.isfinite(self._fP[0]), not np.isfinite(self._fP[-1]))
+        inf_lo, inf_hi = (not math.isfinite(self._fP[0]),
+                          not math.isfinite(self._fP[-1]))
         on = (q > 0).nonzero()[0]
-        end_zone = ((inf_lo and lo_edge and on[0] == 0)
-                    or (inf_hi and hi_edge and on[-1] == len(q) - 1))
+        on0, on1 = int(on[0]), int(on[-1])
+        end_zone = ((inf_lo and lo_edge and on0 == 0)
+                    or (inf_hi and hi_edge and on1 == len(q) - 1))
         lo_edge = lo_edge and not inf_lo
         hi_edge = hi_edge and not inf_hi
         edge = {(True, True): "both", (True, False): "-x", (False, True): "+x"}.get(
@@ -522,7 +539,7 @@ class ProfiledRoller:
         if edge is None:
             pm, xm = peak_pressure(s.x, p)
             k = int(p.argmax())
-            resolved = bool(on[0] + 2 <= k <= on[-1] - 2) and not end_zone
+            resolved = on0 + 2 <= k <= on1 - 2 and not end_zone
             msg = ("peak of the Hertz strips (coupled slices, interpolated); the contact "
                    "stays inside the roller")
             if end_zone:
@@ -549,8 +566,14 @@ class ProfiledRoller:
         if bmax > 0.1 * self.radius:
             notes.append(f"contact half-width b = {bmax:.3g} m exceeds 0.1 R: the "
                          "parabolic gap y^2/(2R) is inaccurate")
-        with np.errstate(invalid="ignore"):
-            approach = float((d + th * self._fx - self._fP).max())
+        # the largest rigid overlap on the 16 n + 1 points: the last grid's, where it
+        # was built at this (d, theta) (the same array), else computed
+        last = self._last_over
+        if last is not None and last[0] == d and last[1] == th:
+            approach = float(last[2].max())
+        else:
+            with np.errstate(invalid="ignore"):
+                approach = float((d + th * self._fx - self._fP).max())
         gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
             [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,
@@ -729,6 +752,30 @@ class ProfiledRoller:
             new = th - s.moment / s.stiffness_matrix[1, 1]
             th = new if lo < new < hi else 0.5 * (lo + hi)
         raise ConvergenceError(f"no zero-moment tilt at depth {depth:g} m")
+
+
+_FINE = {}
+
+
+def _fine_grid(profile, length, n):
+    """The 16 n + 1 points along the roller on which the overlap interval is found,
+    the profile's drop there (checked: finite and >= 0, infinite only at an end) and
+    the cache of _end_root's points, which depend on the profile, L and n alone:
+    shared by the rollers of equal profiles (profiles.profile_identity; built anew for
+    a profile without one), up to 16 of them (the arrays read-only)."""
+    ident = profile_identity(profile)
+    key = None if ident is None else (ident, length, n)
+    hit = _FINE.get(key) if key is not None else None
+    if hit is None:
+        fx = np.linspace(-length / 2, length / 2, 16 * n + 1)
+        fP = roller_drop(profile, length, fx, ends_may_be_inf=True)
+        fx.flags.writeable = fP.flags.writeable = False
+        hit = (fx, fP, {})
+        if key is not None:
+            if len(_FINE) >= 16 or cache_nbytes(_FINE) > CACHE_BYTES:
+                _FINE.clear()
+            _FINE[key] = hit
+    return hit
 
 
 def roller_contact(radius, length, estar, profile=None, *, depth=None, force=None,

@@ -274,26 +274,32 @@ class ProfiledRoller:
         Returns the end and its derivatives with respect to (d, theta)."""
         end = side * self.length / 2
         key = (side, x_in)
+        # a scan in Python floats (the same arithmetic as numpy's, elementwise): the
+        # first point outside comes after a few (the 4th-6th of 40 in the benchmark's
+        # solves), where the array operations cost more than the scan
+        d, th = float(d), float(th)
         for level in range(2):
-            u, x, P = self._end_points(key, end, side, x_in)
-            over = d + th * x - P
-            out = over <= 0
-            k = int(out.argmax())     # over[0] > 0: x_in is inside the interval
-            if not out[k]:              # overlapping to within 1e-6 of the interval
-                return float(x[-1]), (0.0, 0.0)
+            xs, Ps = self._end_points(key, end, side, x_in)[3:]
+            for k, (xk, Pk) in enumerate(zip(xs, Ps)):
+                if d + th * xk - Pk <= 0:     # (the first point, x_in, is inside)
+                    break
+            else:                           # overlapping to within 1e-6 of the interval
+                return xs[-1], (0.0, 0.0)
             key += (k,)
-        (o0, o1), (x0, x1) = over[k - 1:k + 1].tolist(), x[k - 1:k + 1].tolist()
+        x0, x1 = xs[k - 1], xs[k]
+        o0, o1 = d + th * x0 - Ps[k - 1], d + th * x1 - Ps[k]
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
-        return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+        return root, (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
 
     def _end_points(self, key, end, side, x_in):
         """The distances u from the end, the points x and the drop there of one level
-        of _end_root's search: key (side, x_in) the 40 graded points, key (side, x_in,
-        k) the 33 even points between the first level's points k - 1 and k. They depend
-        only on the key: cached, as the Newton steps of a solve, and the solves of a
-        sweep, meet the same few."""
+        of _end_root's search (and x and the drop as lists of floats): key (side, x_in)
+        the 40 graded points, key (side, x_in, k) the 33 even points between the first
+        level's points k - 1 and k. They depend only on the key: cached, as the Newton
+        steps of a solve, and the solves of a sweep, meet the same few (the cache is
+        shared by the rollers of equal profiles, _fine_grid)."""
         hit = self._end_cache.get(key)
         if hit is None:
             if len(key) == 2:
@@ -302,7 +308,8 @@ class ProfiledRoller:
                 u0 = self._end_points(key[:2], end, side, x_in)[0]
                 u = np.linspace(u0[key[2] - 1], u0[key[2]], 33)
             x = end - side * u
-            hit = (u, x, roller_drop(self.profile, self.length, x))
+            P = roller_drop(self.profile, self.length, x)
+            hit = (u, x, P, x.tolist(), P.tolist())
             if len(self._end_cache) >= 64:
                 self._end_cache.clear()
             self._end_cache[key] = hit

@@ -167,20 +167,21 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
 
     def end(i, step):
         # q near a smooth contact edge falls linearly; use the last three loaded slices
-        idx = [i - step * k for k in range(3)]
-        if not all(0 <= j < n and ql[j] > 0 for j in idx):
-            idx = idx[:2] if all(0 <= j < n and ql[j] > 0 for j in idx[:2]) else idx[:1]
-        if len(idx) == 1:
+        # (slice i is loaded: the line through two where the third is not, or i alone)
+        j1, j2 = i - step, i - 2 * step
+        two = 0 <= j1 < n and ql[j1] > 0
+        three = two and 0 <= j2 < n and ql[j2] > 0
+        if not two:
             return xl[i] + step * wl[i] / 2
         # the line or parabola through them, in u = x - x[i]: q0 + s1 u + a u (u - u1)
         # (Newton's divided differences), its real roots in closed form
-        u1 = xl[idx[1]] - xl[i]
-        q0, q1 = float(ql[i]), float(ql[idx[1]])
+        u1 = xl[j1] - xl[i]
+        q0, q1 = float(ql[i]), float(ql[j1])
         s1 = (q1 - q0) / u1
         a = 0.0
-        if len(idx) == 3:
-            u2 = xl[idx[2]] - xl[i]
-            a = ((float(ql[idx[2]]) - q1) / (u2 - u1) - s1) / u2
+        if three:
+            u2 = xl[j2] - xl[i]
+            a = ((float(ql[j2]) - q1) / (u2 - u1) - s1) / u2
         bq = s1 - a * u1
         if a == 0.0:
             roots = [-q0 / bq] if bq != 0.0 else []

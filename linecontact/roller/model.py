@@ -527,8 +527,12 @@ class ProfiledRoller:
         b[S] = np.sqrt(qS / cS)
         p = np.zeros(q.shape)
         p[S] = 2.0 * self.estar * np.sqrt(qS * cS)       # 2 q/(pi b)
+        # the first and last loaded slice (argmax of the mask: the indices of
+        # flatnonzero's first and last, without its index array)
+        on = q > 0
+        on0, on1 = int(on.argmax()), len(q) - 1 - int(on[::-1].argmax())
         start, stop, lo_edge, hi_edge = contact_extent(s.x, q, s.w, self.length,
-                                                        s.lo, s.hi)
+                                                        s.lo, s.hi, (on0, on1))
         # within the end slice's width (or L/1000) of an end counts as reaching it: a
         # log profile's contact approaches the end without touching it exactly, and
         # the contact's end is located to within the slice width there
@@ -544,8 +548,6 @@ class ProfiledRoller:
         # slice there is an end zone narrower than the slices: p_max unresolved, below.
         inf_lo, inf_hi = (not math.isfinite(self._fP[0]),
                           not math.isfinite(self._fP[-1]))
-        on = (q > 0).nonzero()[0]
-        on0, on1 = int(on[0]), int(on[-1])
         end_zone = ((inf_lo and lo_edge and on0 == 0)
                     or (inf_hi and hi_edge and on1 == len(q) - 1))
         lo_edge = lo_edge and not inf_lo

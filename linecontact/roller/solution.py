@@ -152,14 +152,17 @@ class RollerSolution:
         return d
 
 
-def contact_extent(x, q, w, L, lo=None, hi=None):
+def contact_extent(x, q, w, L, lo=None, hi=None, loaded=None):
     """Ends of the contact from the loaded slices, q extrapolated to zero (w: the slice
-    widths, an array or one width for all)."""
+    widths, an array or one width for all; `loaded`: the first and last loaded slice
+    where the caller has them, else found here)."""
     w = np.asarray(w, dtype=float)
     if w.shape != np.shape(x):                 # one width for all
         w = np.broadcast_to(w, np.shape(x))
-    on = np.flatnonzero(q > 0)
-    i0, i1 = int(on[0]), int(on[-1])
+    if loaded is None:
+        on = np.flatnonzero(q > 0)
+        loaded = int(on[0]), int(on[-1])
+    i0, i1 = loaded
     n = len(x)
     # the few slices read below as Python floats (the same IEEE arithmetic as numpy's
     # scalars, at a fraction of the cost per operation)
@@ -209,9 +212,10 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
 def peak_pressure(x, p):
     """Peak of p over the slices, refined by a parabola through p^2 (exact for Hertz;
     the slice centres x may be unevenly spaced)."""
-    k = int(np.argmax(p))
+    p = np.asarray(p)
+    k = int(p.argmax())
+    # as Python floats (the same arithmetic as numpy's scalars, faster)
     if 0 < k < len(x) - 1 and p[k - 1] > 0 and p[k + 1] > 0:
-        # as Python floats (the same arithmetic as numpy's scalars, faster)
         (p0, p1, p2), (x0, x1, x2) = p[k - 1:k + 2].tolist(), x[k - 1:k + 2].tolist()
         y0, y1, y2 = p0 ** 2, p1 ** 2, p2 ** 2
         h0, h1 = x1 - x0, x2 - x1

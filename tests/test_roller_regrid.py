@@ -86,6 +86,9 @@ def test_fine_grid_is_shared_and_read_only():
     r3 = ProfiledRoller(D / 2, L, E, p2)
     assert r3._fP is not r1._fP
     assert np.array_equal(r3._fP, lp.roller_drop(p2, L, fx, ends_may_be_inf=True))
+    # the first-contact depth per tilt is shared with the grid: equal to a fresh one's
+    d0 = r1.first_contact_depth(1e-3)
+    assert r2._d0_shared[1e-3] == d0 == r2._first_contact(1e-3)
     # a table has no identity: its own grid each time, the same floats
     t = PROFILES[-1]
     r4, r5 = ProfiledRoller(D / 2, L, E, t), ProfiledRoller(D / 2, L, E, t)

@@ -126,10 +126,10 @@ class ProfiledRoller:
         self._profile_spec = profile             # read again with a new R (__setattr__)
         self.profile = as_profile(profile, self.radius, self.length, self.estar)
         L = self.length
-        fx, fP, end_cache = _fine_grid(self.profile, L, self.n_slices)
+        fx, fP, end_cache, d0_cache = _fine_grid(self.profile, L, self.n_slices)
         # set at once, past __setattr__ (which only watches the settings above)
         self.__dict__.update(
-            _fx=fx, _fP=fP, _end_cache=end_cache,
+            _fx=fx, _fP=fP, _end_cache=end_cache, _d0_shared=d0_cache,
             _drop_at=drop_inside(self.profile, L),
             _drop_slope_at=drop_slope_inside(self.profile),
             # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2
@@ -187,10 +187,25 @@ class ProfiledRoller:
     def _contact_depth(self, th):
         """first_contact_depth at a checked tilt th (a float), the last one kept: a
         solve at a given tilt asks twice (its start and its memo). The memo is read once
-        (a pair replaced whole): another thread may replace it between two reads."""
+        (a pair replaced whole): another thread may replace it between two reads. Past
+        the memo, the depths of the tilts met so far by the rollers that share this
+        one's grid (_fine_grid: equal profiles, L and n), up to 64: a new roller per
+        solve meets the same tilt each time."""
         memo = self._d0_memo
         if memo is not None and memo[0] == th:
             return memo[1]
+        shared = self._d0_shared
+        hmin = shared.get(th)
+        if hmin is None:
+            hmin = self._first_contact(th)
+            if len(shared) >= 64:
+                shared.clear()
+            shared[th] = hmin
+        self._d0_memo = (th, hmin)
+        return hmin
+
+    def _first_contact(self, th):
+        """min over the 16 n + 1 points of P(x) - theta x, refined by a parabola."""
         h = self._fP - th * self._fx
         k = int(h.argmin())
         hmin = float(h[k])
@@ -200,7 +215,6 @@ class ProfiledRoller:
             if corr > 1e-12 * max(abs(h[k - 1]), abs(h[k + 1])):
                 # vertex of the parabola through the three smallest values
                 hmin = float(h[k] - corr)
-        self._d0_memo = (th, hmin)
         return hmin
 
     def _grid(self, d, th, n=None):
@@ -779,8 +793,9 @@ _FINE = {}
 
 def _fine_grid(profile, length, n):
     """The 16 n + 1 points along the roller on which the overlap interval is found,
-    the profile's drop there (checked: finite and >= 0, infinite only at an end) and
-    the cache of _end_root's points, which depend on the profile, L and n alone:
+    the profile's drop there (checked: finite and >= 0, infinite only at an end), the
+    cache of _end_root's points and that of the first-contact depth per tilt
+    (_contact_depth), which depend on the profile, L and n alone:
     shared by the rollers of equal profiles (profiles.profile_identity; built anew for
     a profile without one), up to 16 of them (the arrays read-only)."""
     ident = profile_identity(profile)
@@ -790,7 +805,7 @@ def _fine_grid(profile, length, n):
         fx = np.linspace(-length / 2, length / 2, 16 * n + 1)
         fP = roller_drop(profile, length, fx, ends_may_be_inf=True)
         fx.flags.writeable = fP.flags.writeable = False
-        hit = (fx, fP, {})
+        hit = (fx, fP, {}, {})
         if key is not None:
             if len(_FINE) >= 16 or cache_nbytes(_FINE) > CACHE_BYTES:
                 _FINE.clear()

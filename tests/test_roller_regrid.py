@@ -139,17 +139,6 @@ def test_peak_pressure_exact_for_hertz():
     assert math.isfinite(pm)
 
 
-def test_solution_overlap_memo():
-    """The solution's largest rigid overlap read off the last grid equals the overlap
-    computed afresh on the 16 n + 1 points (the coverage note's tilt drop uses it)."""
-    r = ProfiledRoller(D / 2, L, E, lp.ISO16281Profile(L, D))
-    s = r.at_force(4200.0, tilt=2e-3)
-    d, th, over = r._last_over
-    assert (d, th) == (s.depth, s.tilt)
-    assert float(over.max()) == float((s.depth + s.tilt * r._fx - r._fP).max())
-    assert rm._FINE                       # the grid of this profile is cached
-
-
 SMOOTH = [p for p in PROFILES if type(p) in (lp.StraightProfile, lp.CircularCrownProfile,
                                               lp.ISO16281Profile, lp.LundbergProfile,
                                               lp.JohnsGoharProfile)]

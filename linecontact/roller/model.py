@@ -137,7 +137,7 @@ class ProfiledRoller:
             _slope_consts=(1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9)),
             refine_ends=check_flag("refine_ends", refine_ends),
             engine=check_engine(engine), _refine=0, _memo=None, _free_memo=0.0,
-            _d0_memo=None, _last_over=None, iterations=0)
+            _d0_memo=None, iterations=0)
         self._warm = None                        # last: marks the roller constructed
 
     #: The settings a solve depends on: one set after construction builds the roller
@@ -226,9 +226,6 @@ class ProfiledRoller:
         """
         fx = self._fx
         over = d + th * fx - self._fP
-        # kept for the solution's largest overlap (_solution), which is this grid's at
-        # the converged (d, theta)
-        self._last_over = (d, th, over)
         # the first and last grid points inside (argmax of the mask: a tenth of
         # flatnonzero's time on the 16 n + 1 points, the same indices)
         mask = over > 0
@@ -600,14 +597,10 @@ class ProfiledRoller:
         if bmax > 0.1 * self.radius:
             notes.append(f"contact half-width b = {bmax:.3g} m exceeds 0.1 R: the "
                          "parabolic gap y^2/(2R) is inaccurate")
-        # the largest rigid overlap on the 16 n + 1 points: the last grid's, where it
-        # was built at this (d, theta) (the same array), else computed
-        last = self._last_over
-        if last is not None and last[0] == d and last[1] == th:
-            approach = float(last[2].max())
-        else:
-            with np.errstate(invalid="ignore"):
-                approach = float((d + th * self._fx - self._fP).max())
+        # the largest rigid overlap on the 16 n + 1 points (where the drop is infinite
+        # at an end the overlap there is -inf, never NaN: no floating-point warning to
+        # silence, as _grid's overlap)
+        approach = float((d + th * self._fx - self._fP).max())
         gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
             [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,

@@ -401,11 +401,11 @@ def _log_drop(coef, t):
     return -coef * np.log1p(-(t * t))
 
 
-def _log_drop_slope(coef, t):
-    """_log_drop(coef, t) (the same floats) and its derivative 2 coef t/(1 - t^2) with
-    respect to t, for |t| < 1."""
+def _log_drop_slope(coef, t, dt):
+    """_log_drop(coef, t) (the same floats) and its derivative 2 coef t/(1 - t^2) dt
+    with respect to x, for |t| < 1 and dt = dt/dx (a number)."""
     tt = t * t
-    return -coef * np.log1p(-tt), (2 * coef) * t / (1 - tt)
+    return -coef * np.log1p(-tt), (2 * coef * dt) * t / (1 - tt)
 
 
 class ISO16281Profile(Profile):
@@ -471,13 +471,11 @@ class ISO16281Profile(Profile):
         dP/dt dt/dx with dt/dx = 2/L, or sign(x) 2/(2.5 D) outside the flat middle."""
         L, D = self.length, self.diameter
         if not self.long:
-            P, dt = _log_drop_slope(ISO16281_SHORT * D, 2 * x / L)
-            dt *= 2 / L
-            return P, dt
+            return _log_drop_slope(ISO16281_SHORT * D, 2 * x / L, 2 / L)
         t = np.maximum(2 * np.abs(x) - L + 2.5 * D, 0.0) / (2.5 * D)
-        P, dt = _log_drop_slope(ISO16281_LONG * D, t)
-        dt *= np.sign(x) * (2 / (2.5 * D))
-        return P, dt
+        P, slope = _log_drop_slope(ISO16281_LONG * D, t, 2 / (2.5 * D))
+        slope *= np.sign(x)
+        return P, slope
 
     @property
     def label(self):
@@ -537,9 +535,7 @@ class LundbergProfile(Profile):
     def _drop_slope(self, x):
         """The drop (the floats of _drop) and dP/dx = dP/dt 2/L, for |x| < L/2
         (drop_slope_inside)."""
-        P, dt = _log_drop_slope(self.coefficient, 2 * x / self.length)
-        dt *= 2 / self.length
-        return P, dt
+        return _log_drop_slope(self.coefficient, 2 * x / self.length, 2 / self.length)
 
     @property
     def label(self):

@@ -385,7 +385,8 @@ def test_bem_columns_reused_from_the_shipped_table_round_trip():
     runtime and ISO slicing against the BEM columns of the shipped table: read back
     (bem_from_table, the inverse of tabulate's bem_* columns) and written again, those
     columns are the table's to rounding (1e-12), on one case of each kind (given tilt,
-    untilted, free tilt, an end-zone row on 8192 cells)."""
+    untilted, free tilt, an end-zone row on 8192 cells). Another tolerance, grid or
+    --check-every than the table's is refused."""
     from linecontact.tables import read_table
     import tools.studies.roller_study as rs
     t = read_table("roller_accuracy")
@@ -411,6 +412,9 @@ def test_bem_columns_reused_from_the_shipped_table_round_trip():
         rs.bem_from_table(tasks, t, 128, 32, 1e-6)
     with pytest.raises(ValueError, match="grid"):
         rs.bem_from_table(tasks, t, 64, 32, 1e-7)
+    # the third-grid cases too: the reused accuracy line's observed orders are theirs
+    with pytest.raises(ValueError, match="check-every is 5"):
+        rs.bem_from_table(tasks, t, 128, 32, 1e-7, check_every=5)
 
 
 def test_bem_from_keeps_the_bem_runs_provenance_when_rebuilt(tmp_path):

@@ -511,8 +511,9 @@ class ProfiledRoller:
         (F ~ (d - d0)^slope), else the straight roller's 2D estimate."""
         d0 = self._contact_depth(th)
         L, R, E = self.length, self.radius, self.estar
-        if self._memo is not None and self._memo[0] == th:
-            _, e_last, F_last, slope = self._memo
+        memo = self._memo           # read once: another thread may replace it (whole)
+        if memo is not None and memo[0] == th:
+            _, e_last, F_last, slope = memo
             return d0 + e_last * (F0 / F_last) ** (1.0 / slope)
         return d0 + F0 / (math.pi * E * L) * max(
             1.0 + math.log(max(math.pi * E * L**3 / (R * F0), math.e)), 2.0)
@@ -622,16 +623,17 @@ class ProfiledRoller:
         """Newton on ln(d - d0) for F(d) = F0 at fixed tilt (F increases with d)."""
         d0 = self.first_contact_depth(th)
         L, R, E = self.length, self.radius, self.estar
-        if self._memo is not None and self._memo[0] == th:
+        memo = self._memo           # read once: another thread may replace it (whole)
+        if memo is not None and memo[0] == th:
             # from the last solution of this roller: F ~ e^slope
-            _, e_last, F_last, slope = self._memo
+            _, e_last, F_last, slope = memo
             e = e_last * (F0 / F_last) ** (1.0 / slope)
         else:
             # the straight roller's 2D estimate (a lower bound for a profiled roller)
             e = F0 / (math.pi * E * L) * max(
                 1.0 + math.log(max(math.pi * E * L**3 / (R * F0), math.e)), 2.0)
         lo, hi = 0.0, math.inf
-        err = 0.0 if self._memo is not None else math.inf   # a memo start is close
+        err = 0.0 if memo is not None else math.inf   # a memo start is close
         for _ in range(100):
             # solve loosely while far from the force (inexact Newton), tightly near it
             inner = 1e-11 if err < 1e-3 else 1e-7

@@ -313,16 +313,23 @@ def compare_case(task, ref):
     return out
 
 
-def bem_from_table(tasks, table, n_x, n_y, tol):
+def bem_from_table(tasks, table, n_x, n_y, tol, check_every=7):
     """The BEM references of `tasks` (dicts as bem_case returns them) read back from
-    an earlier roller_accuracy table (``--bem-from``), whose cases, grids and
-    tolerance must be this run's: the inverse of tabulate's bem_* columns (the
-    observed orders are not columns: NaN, the table's ``accuracy`` line keeps them)."""
+    an earlier roller_accuracy table (``--bem-from``), whose cases, grids, tolerance
+    and third-grid cases (``--check-every``: its accuracy line, reused, holds their
+    observed orders, and the header's grid line names them) must be this run's: the
+    inverse of tabulate's bem_* columns (the observed orders are not columns: NaN, the
+    table's ``accuracy`` line keeps them)."""
     c = table.columns
     tol_field = str(table.meta.get("tolerance", "")).split(" ")[0]
     if tol_field != f"{tol:g}":
         raise ValueError(f"--bem-from: the table's tolerance is {tol_field}, this run's "
                          f"{tol:g}")
+    every = re.search(r"every (\d+)th case also on", str(table.meta.get("grid", "")))
+    if every is None or int(every.group(1)) != check_every:
+        raise ValueError("--bem-from: the table solved every "
+                         f"{every.group(1) if every else '(unstated)'}th case on a third "
+                         f"grid, this run's --check-every is {check_every}")
     refs = []
     for t in tasks:
         free = t["tilt"] is None
@@ -648,7 +655,8 @@ def run(args):
     if args.bem_from is not None:
         from linecontact.tables import read_table
         old = read_table(args.bem_from.stem, directory=args.bem_from.parent)
-        refs = bem_from_table(tasks, old, args.n_x, args.n_y, args.tol)
+        refs = bem_from_table(tasks, old, args.n_x, args.n_y, args.tol,
+                              args.check_every)
         results = [compare_case(t, r) for t, r in zip(tasks, refs)]
     else:
         results = run_study_from_args(run_case, tasks, args, desc="roller study")

@@ -115,23 +115,23 @@ class ProfiledRoller:
 
     def __init__(self, radius, length, estar, profile=None, n_slices=DEFAULT_N_SLICES,
                  grading=DEFAULT_GRADING, refine_ends=True, engine="auto"):
-        self.radius = float(check_positive("radius", radius, "m"))
-        self.length = float(check_positive("length", length, "m"))
-        self.estar = float(check_positive("estar", estar, "Pa"))
+        R = float(check_positive("radius", radius, "m"))
+        L = float(check_positive("length", length, "m"))
+        E = float(check_positive("estar", estar, "Pa"))
         n = N_SLICES.check(n_slices).item()
         if n != int(n):
             raise OutOfRangeError("n_slices", n_slices, "an integer in [10, 4000]")
-        self.n_slices = int(n)
-        self.grading = float(SLICE_GRADING.check(grading).item())
-        self._profile_spec = profile             # read again with a new R (__setattr__)
-        self.profile = as_profile(profile, self.radius, self.length, self.estar)
-        L = self.length
-        fx, fP, end_cache, d0_cache = _fine_grid(self.profile, L, self.n_slices)
-        # set at once, past __setattr__ (which only watches the settings above)
+        n = int(n)
+        grading = float(SLICE_GRADING.check(grading).item())
+        prof = as_profile(profile, R, L, E)
+        fx, fP, end_cache, d0_cache = _fine_grid(prof, L, n)
+        # set at once, past __setattr__ (whose rebuild starts once _warm is set)
         self.__dict__.update(
+            radius=R, length=L, estar=E, n_slices=n, grading=grading,
+            _profile_spec=profile,             # read again with a new R (__setattr__)
+            profile=prof,
             _fx=fx, _fP=fP, _end_cache=end_cache, _d0_shared=d0_cache,
-            _drop_at=drop_inside(self.profile, L),
-            _drop_slope_at=drop_slope_inside(self.profile),
+            _drop_at=drop_inside(prof, L), _drop_slope_at=drop_slope_inside(prof),
             # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2
             # (a logarithmic profile's drop is infinite at the ends): per roller
             _slope_consts=(1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9)),

@@ -189,3 +189,23 @@ def test_scalar_check_matches_the_array_path(value, ends):
     got = check_interval("v", value, lo, hi, **kw)
     assert got.shape == () and got.dtype == np.float64
     assert got.item() == ref and math.copysign(1, got.item()) == math.copysign(1, ref)
+
+
+def test_solution_built_as_the_constructor_builds_it():
+    """RollerSolution._built (the solver's fast path) holds the same attributes, in the
+    same order (to_dict and JSON follow it), as the dataclass constructor given the
+    same fields; a missing or unknown field is refused."""
+    from linecontact.roller.solution import RollerSolution
+    s = ProfiledRoller(D / 2, L, E, lp.ISO16281Profile(L, D)).at_force(4200.0, tilt=2e-3)
+    kw = dict(reversed(list(vars(s).items())))           # another order of the names
+    ref = RollerSolution(**kw)
+    got = RollerSolution._built(**kw)
+    assert type(got) is RollerSolution
+    assert list(vars(got)) == list(vars(ref)) == list(vars(s))
+    assert all(vars(got)[k] is vars(ref)[k] for k in vars(ref))
+    assert list(got.to_dict()) == list(ref.to_dict())
+    kw.pop("notes")
+    with pytest.raises(TypeError):
+        RollerSolution._built(**kw)
+    with pytest.raises(TypeError):
+        RollerSolution._built(**kw, notes=(), extra=1)

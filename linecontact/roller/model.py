@@ -609,7 +609,7 @@ class ProfiledRoller:
                                     edge is not None, self.n_slices,
                                     min(gaps) if gaps else None))
         its, self.iterations = self.iterations, 0
-        return RollerSolution(
+        return RollerSolution._built(
             depth=float(d), tilt=float(th), force=float(F), moment=float(M),
             stiffness=float(K[0, 0]), tilt_stiffness=float(K[1, 1]), stiffness_matrix=K,
             x=s.x.copy(), width=s.w.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,

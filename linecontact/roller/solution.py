@@ -4,7 +4,7 @@ contact's extent and peak pressure off the slices.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -119,6 +119,20 @@ class RollerSolution:
     p_max_resolved: bool = True
     width: np.ndarray = None
 
+    @classmethod
+    def _built(cls, **fields):
+        """The solution holding `fields` (every field, by name), as the constructor
+        builds it (the attributes in the order of the fields) without its per-field
+        frozen-dataclass assignments: a solver returns one per solve, and the
+        constructor's 25 keyword arguments cost several microseconds there."""
+        if len(fields) != len(_FIELDS):
+            raise TypeError(f"RollerSolution fields: {sorted(set(fields) ^ set(_FIELDS))}")
+        obj = object.__new__(cls)
+        d = obj.__dict__
+        for name in _FIELDS:
+            d[name] = fields[name]
+        return obj
+
     def to_dict(self, arrays=True):
         """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
 
@@ -150,6 +164,10 @@ class RollerSolution:
                       "x_at_p_max": "m", "contact_start": "m", "contact_end": "m",
                       "contact_length": "m"}
         return d
+
+
+#: the field names of RollerSolution, in their order (RollerSolution._built)
+_FIELDS = tuple(f.name for f in fields(RollerSolution))
 
 
 def contact_extent(x, q, w, L, lo=None, hi=None, loaded=None):

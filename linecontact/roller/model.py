@@ -225,7 +225,9 @@ class ProfiledRoller:
         base slices (default n_slices; the cold start's first sweeps take fewer).
         """
         fx = self._fx
-        over = d + th * fx - self._fP
+        over = th * fx          # d + theta x - P in place (the sum commutes: the same
+        over += d               # floats as the expression, without its temporaries)
+        over -= self._fP
         # the first and last grid points inside (argmax of the mask: a tenth of
         # flatnonzero's time on the 16 n + 1 points, the same indices)
         mask = over > 0

@@ -545,6 +545,8 @@ class ProfiledRoller:
         # flatnonzero's first and last, without its index array)
         on = q > 0
         on0, on1 = int(on.argmax()), len(q) - 1 - int(on[::-1].argmax())
+        if not on[on0]:          # (the solver keeps at least one: never met)
+            raise ConvergenceError("no slice is loaded in the solution")
         start, stop, lo_edge, hi_edge = contact_extent(s.x, q, s.w, self.length,
                                                         s.lo, s.hi, (on0, on1))
         # within the end slice's width (or L/1000) of an end counts as reaching it: a
@@ -603,7 +605,10 @@ class ProfiledRoller:
         # the largest rigid overlap on the 16 n + 1 points (where the drop is infinite
         # at an end the overlap there is -inf, never NaN: no floating-point warning to
         # silence, as _grid's overlap)
-        approach = float((d + th * self._fx - self._fP).max())
+        over = th * self._fx
+        over += d
+        over -= self._fP
+        approach = float(over.max())
         gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
             [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,

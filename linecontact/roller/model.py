@@ -501,8 +501,15 @@ class ProfiledRoller:
             S, q, c = s.start(d, th, warm)
         else:
             s, S, q, c, d, th = first
-        s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
-                                                zero_moment, tol)
+        try:
+            s, S, q, c, d, th, F, M, K = s.bordered(self._grid, S, q, c, d, th, force,
+                                                    zero_moment, tol)
+        except np.linalg.LinAlgError as err:
+            # a Newton system gone singular (a free tilt started far off: the loaded
+            # set down to two slices, whose force and moment rows are then dependent)
+            # is a failure to converge, which the caller answers with the nested
+            # iteration (never a bare LinAlgError to the user)
+            raise ConvergenceError(f"the Newton system became singular ({err})") from err
         self._warm = ((s.x - s.lo) / (s.hi - s.lo), q.copy(), c.copy(),
                       float((d + th * s.x - s.P).max()))
         self.iterations += s.iterations

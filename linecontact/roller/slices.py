@@ -275,6 +275,45 @@ def _fraction_to_boundary(qs, cs, dq, dc):
     return alpha, hit_q
 
 
+#: The constant of SliceEquations.bordered's error estimate: after a full Newton step
+#: on an unchanged loaded set, the error left in the scaled unknowns (loads over the
+#: largest, c R, d and the tilt's travel over the largest overlap) is at most
+#: NEWTON_C times :func:`newton_error` of the step. Measured over the 104 cases of
+#: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
+#: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
+#: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
+#: most 9.9 times (10.7 with the numba engine, the same step), so 100 leaves a margin
+#: of about ten; the returned state is then within the tolerance of the converged one.
+NEWTON_C = 100.0
+#: the largest step size (as `small` measures it) at which the estimate is tried: above
+#: it the estimate cannot fall below any tolerance in use (it is at least the step's
+#: size squared) and is not computed
+NEAR_STEP = 1e-5
+#: an estimate-ended solve also needs every unloaded slice's gap below -GAP_MARGIN
+#: times the step's size times the largest overlap (a gap moves by about the step's
+#: size over a step; over the 104 cases the closest was 290 times it)
+GAP_MARGIN = 100.0
+
+
+def newton_error(qs, cs, dq, dc, qsc, R, dd, dth):
+    """Newton's quadratic error estimate of the state after the full step (dq, dc, dd,
+    dth) from (qs, cs): max_k dq_k^2/(q_k qsc), R dc_k^2/c_k, dd^2, dth^2 (dd, dth: the
+    steps in d and in theta times the interval's length, over the largest overlap).
+
+    The slice equations depend on the loads through ln b_k, b_k^2 = q_k/c_k (the strip
+    kernel's logarithm): their second derivatives in q_k and c_k scale as 1/q_k and
+    1/c_k, so a step leaves a remainder of dq_k^2/q_k and dc_k^2/c_k, which the
+    Jacobian maps to an error of the same order. Weighing each slice's step by its own
+    load, not by the largest, is what makes the estimate hold where a slice carries
+    little (a slice that just joined: its relative step is large). A constant estimated
+    from the last two steps instead (the error after a step about C |step|^2, C =
+    |step|/|last step|^2) was off by up to 1000 over the table's cases: the contraction
+    differs from one step's direction to the next's."""
+    wq = float(np.max(dq * dq / qs)) / qsc
+    wc = float(np.max(dc * dc / cs)) * R
+    return max(wq, wc, dd * dd, dth * dth)
+
+
 def _drop_blocked(S, q, blocked, hit_q, qsc):
     """The loaded set S after a damped step: a slice whose load limited the step three
     times running, or fell to 1e-12 of the largest `qsc`, leaves the contact (q = 0;
@@ -855,14 +894,20 @@ class SliceEquations:
         `regrid(d, theta)` returns the SliceEquations of that depth and tilt (the slice
         index k keeps its place in the overlap interval). Damped to keep q, c > 0;
         slices driven to q <= 0 leave; unloaded slices that would interpenetrate
-        join. Returns (equations, S, q, c, d, theta, K) with the stiffness matrix K of
-        the converged state, or raises ConvergenceError.
+        join. Ends at a full step below `tol` (in loads over the largest, c R, and d
+        and theta's travel over the largest overlap), or where Newton's error estimate
+        of the state after a full step is below it (:func:`newton_error` times
+        NEWTON_C; the steps contracting faster than linearly, no unloaded slice close
+        to touching): that state is returned on its own grid. Returns (equations, S,
+        q, c, d, theta, F, M, K) with the force, moment and stiffness matrix K of the
+        converged state (K from the last linearisation), or raises ConvergenceError.
         """
         n, R, piE = self.n, self.R, math.pi * self.E
         s = self
         blocked = np.zeros(n, int)
         left_count = np.zeros(n, int)
         everyone = np.arange(n)
+        last_size = math.inf            # the last step's size (inf: none, or damped)
         for _ in range(max_steps):
             s.iterations += 1
             over = d + theta * s.x - s.P
@@ -962,10 +1007,27 @@ class SliceEquations:
             theta = theta + alpha * step[1]
             if not abs(theta) < TILT_RANGE.high:
                 raise ConvergenceError("the tilt left the admissible range")
-            small = (alpha == 1.0 and dqmax <= tol * qsc
-                     and (float(np.abs(dc).max()) if dcmax is None else dcmax) * R <= tol
-                     and abs(step[0]) <= tol * dmax
-                     and abs(step[1]) * (s.hi - s.lo) <= tol * dmax)
+            # the full step's size in the scaled unknowns (loads over the largest, c R,
+            # d and the tilt's travel over the interval, over the largest overlap),
+            # where it may end the solve (not above NEAR_STEP)
+            size = dqmax / qsc if alpha == 1.0 else math.inf
+            if size <= NEAR_STEP:
+                if dcmax is None:
+                    dcmax = float(np.abs(dc).max())
+                size = max(size, dcmax * R, abs(step[0]) / dmax,
+                           abs(step[1]) * (s.hi - s.lo) / dmax)
+            small = size <= tol
+            # Newton's own error estimate: a full step on an unchanged loaded set that
+            # leaves an error below tol ends the solve without a step to confirm it
+            # (newton_error: the state after this step is returned, on its own grid)
+            # (and only where the steps contract faster than linearly, size <= the
+            # last step's size^1.5: a Newton stalled at its rounding floor, an
+            # ill-conditioned system's, is never taken as converged)
+            near = (not small and left is None and size <= NEAR_STEP
+                    and size <= last_size ** 1.5
+                    and NEWTON_C * newton_error(qs, cs, dq, dc, qsc, R, step[0] / dmax,
+                                                step[1] * (s.hi - s.lo) / dmax) <= tol)
+            last_size = size
             if alpha == 1.0:
                 blocked[S] = 0
                 # the active set is checked once no load changes by more than the
@@ -986,7 +1048,18 @@ class SliceEquations:
                         # when a refinement started from the coarser level's loads; a
                         # safeguard now: no step count over the 104 cases changes)
                         add = add[left_count[add] < 3]
-                    if len(add) == 0 and small:
+                    if near and len(add) == 0:
+                        # no unloaded slice within GAP_MARGIN steps of touching: a gap
+                        # moves by about the step's size over the step
+                        close = gap > -GAP_MARGIN * size * dmax
+                        close[S] = False
+                        if close.any():
+                            near = False
+                        elif force is not None or zero_moment:
+                            it = s.iterations
+                            s = regrid(d, theta)
+                            s.iterations = it
+                    if len(add) == 0 and (small or near):
                         F = piE * (s.w @ q)
                         M = piE * ((s.w * s.x) @ q)
                         return s, S, q, c, d, theta, F, M, piE * K

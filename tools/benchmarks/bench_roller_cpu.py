@@ -12,8 +12,9 @@ the cases run in table order in one process, so the first includes the one-time 
 ``--engine`` picks ``ProfiledRoller(engine=...)`` (default ``"auto"``).
 ``--repeat`` runs the whole list again and keeps each case's median. ``--save`` writes
 the results (depth, moment, tilt, p_max, edge, CPU time, the Newton steps the solution
-reports); ``--against`` compares with a saved run: the largest change in depth (over the
-case's largest approach), moment (over F L/2) and tilt (relative), to show that a
+reports, the slice loads); ``--against`` compares with a saved run: the largest change
+in depth (over the case's largest approach), moment (over F L/2), tilt, peak pressure
+(relative), stiffness matrix and slice loads (over their largest), to show that a
 speed-up leaves the results alone. ``--count`` also counts the Newton steps of every
 solve a case makes (the linearisations, ``SliceEquations.linearised`` calls: the end
 refinement's re-solves included, which a solution's ``iterations`` leaves out) and the
@@ -73,6 +74,7 @@ def run(repeat=1, engine="auto"):
                           given_tilt=t["tilt"], depth=r.depth, moment=r.moment,
                           p_max=r.p_max, edge=r.edge, iterations=r.iterations,
                           stiffness=np.asarray(r.stiffness_matrix).tolist(),
+                          q=np.asarray(r.q).tolist(),
                           flags=[r.edge_loaded, r.p_max_resolved, r.message,
                                  list(r.notes), r.n_slices])
     for o, ts in zip(out, times):
@@ -125,6 +127,9 @@ def main(argv=None):
                 K0, K1 = np.array(x["stiffness"]), np.array(y["stiffness"])
                 ch["stiffness"] = max(ch.get("stiffness", 0.0),
                                       np.abs(K0 - K1).max() / np.abs(K0).max())
+            if "q" in x and len(x["q"]) == len(y["q"]):
+                q0, q1 = np.array(x["q"]), np.array(y["q"])
+                ch["q"] = max(ch.get("q", 0.0), np.abs(q0 - q1).max() / np.abs(q0).max())
             if "flags" in x:
                 ch["cases with other flags"] = ch.get("cases with other flags", 0) + (
                     x["flags"] != y["flags"] or x["edge"] != y["edge"]

@@ -742,22 +742,25 @@ def _love_corner(X, Y, z, w=None, only=None):
     one corner, depth z > 0 (see :func:`rectangle_stresses`), stacked (10, ...).
 
     With corner weights `w` (n_corners,): their weighted sums over the
-    corners instead, (10, ...), each function summed as soon as it is evaluated (the
-    full arrays never coexist); with `only` (an index) just that function's sum, the
-    others left 0."""
+    corners instead, (10, ...); with `only` (an index) just that function's sum, the
+    others left 0. The sums take the shortcuts of :func:`_love_weighted` where X is
+    one row (1, n_corners) and z one column (n_points, 1), as the 3D correction's."""
+    if (w is not None and only is None and np.ndim(X) == 2 and np.shape(X)[0] == 1
+            and np.ndim(z) == 2 and np.shape(z)[1] == 1):
+        return _love_weighted(X, Y, z, w)
     X2, Y2, z2 = X * X, Y * Y, z * z
     rho = np.sqrt(X2 + Y2 + z2)
-    XY = X * Y
 
     def h(den):
         # arctan(XY (rho - z)/den); den = 0 only where X = Y = 0, where XY = 0: the
         # limit 0 (the same as masking it)
+        XY = X * Y
         return np.arctan(XY * (rho - z) / (den + (den == 0)))
 
-    funcs = (lambda: -np.arctan(XY / (z * rho)),                              # d psi1/dz
-             lambda: XY * (rho * rho + z2) / (rho * (X2 + z2) * (Y2 + z2)),   # d2 psi1/dz2
-             lambda: -XY / (rho * (X2 + z2)),                                  # d2 psi1/dx2
-             lambda: -XY / (rho * (Y2 + z2)),                                  # d2 psi1/dy2
+    funcs = (lambda: -np.arctan(X * Y / (z * rho)),                           # d psi1/dz
+             lambda: X * Y * (rho * rho + z2) / (rho * (X2 + z2) * (Y2 + z2)),  # d2 psi1/dz2
+             lambda: -X * Y / (rho * (X2 + z2)),                               # d2 psi1/dx2
+             lambda: -X * Y / (rho * (Y2 + z2)),                               # d2 psi1/dy2
              lambda: 1.0 / rho,                                                # d2 psi1/dxdy
              lambda: -Y * z / (rho * (X2 + z2)),                               # d2 psi1/dxdz
              lambda: -X * z / (rho * (Y2 + z2)),                               # d2 psi1/dydz
@@ -771,22 +774,55 @@ def _love_corner(X, Y, z, w=None, only=None):
         g = funcs[only]()
         out[only] = (g if g.shape == rho.shape else np.broadcast_to(g, rho.shape)) @ w
         return out
-    # the same functions with the reciprocals shared and arctan2 for the masked
-    # quotients (den >= 0, and num = 0 where den = 0); then, as psi1 and H1 are
-    # harmonic (z > 0) and so is each corner function's potential,
-    # d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
-    # d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding)
+    return np.stack([np.broadcast_to(f(), rho.shape) for f in funcs]) @ w
+
+
+def _love_weighted(X, Y, z, w):
+    """The weighted corner sums sum_c w_c g(X_c, Y_pc, z_p) of all ten corner
+    functions (:func:`_love_corner`) at the points p: X (1, n_corners), Y (n_points,
+    n_corners), z (n_points, 1), w (n_corners,) -> (10, n_points).
+
+    The functions with the reciprocals shared and arctan2 for the masked quotient of
+    d2H1/dx2 (den >= 0, and num = 0 where den = 0); two of them are not evaluated:
+    as psi1 and H1 are harmonic (z > 0) and so is each corner function's potential,
+    d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
+    d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding). X is one
+    row (the points share it): a factor X of a function goes into the weights (X w),
+    a factor z (one per point) out of the sum, so that Y/(rho (X^2 + z^2)) serves
+    d2 psi1/dx2 and d2 psi1/dxdz, and 1/(rho (Y^2 + z^2)) d2 psi1/dydz and, times Y,
+    d2 psi1/dy2; the work arrays are reused in place."""
+    out = np.empty((10, Y.shape[0]))
+    X2, z2 = X * X, z * z
+    zc = z[:, 0]
+    Xw = X[0] * w
+    Y2 = Y * Y
+    a = X2 + z2                             # X^2 + z^2
+    rho = X2 + Y2
+    rho += z2
+    np.sqrt(rho, out=rho)
     ir = 1.0 / rho
-    ixz = ir / (X2 + z2)                    # 1/(rho (X^2 + z^2))
-    iyz = ir / (Y2 + z2)
-    out[0] = -(np.arctan(XY * ir / z) @ w)
-    out[2] = -((XY * ixz) @ w)
-    out[3] = -((XY * iyz) @ w)
+    np.divide(ir, a, out=a)                 # 1/(rho (X^2 + z^2))
+    t = Y2 + z2
+    np.divide(ir, t, out=t)                 # 1/(rho (Y^2 + z^2))
     out[4] = ir @ w
-    out[5] = -((Y * z * ixz) @ w)
-    out[6] = -((np.broadcast_to(X * z, rho.shape) * iyz) @ w)
-    out[7] = np.arctan2(XY * (rho - z), X2 * rho + Y2 * z) @ w
-    out[9] = np.log(rho + z) @ w
+    out[6] = -zc * (t @ Xw)
+    t *= Y
+    out[3] = -(t @ Xw)
+    a *= Y                                  # Y/(rho (X^2 + z^2))
+    out[2] = -(a @ Xw)
+    out[5] = -zc * (a @ w)
+    XY = X * Y
+    ir *= XY
+    ir /= z
+    out[0] = -(np.arctan(ir, out=ir) @ w)
+    np.subtract(rho, z, out=a)
+    a *= XY
+    np.multiply(X2, rho, out=t)
+    Y2 *= z
+    t += Y2
+    out[7] = np.arctan2(a, t, out=a) @ w
+    rho += z
+    out[9] = np.log(rho, out=rho) @ w
     out[1] = -(out[2] + out[3])
     out[8] = -(out[0] + out[7])
     return out
@@ -798,9 +834,10 @@ def _love_sums(X, Y, z, w, only=None):
     n_corners), z (n_points, 1): (10, n_points); `only` as there. Evaluated in blocks
     of points of a few thousand elements, which stay in the processor's cache."""
     n, c = Y.shape
-    step = max(1, _BLOCK // max(c, 1))
-    if n <= step:
+    blocks = -(-n * c // _BLOCK)            # blocks of about equal size
+    if blocks <= 1:
         return _love_corner(X, Y, z, w, only)
+    step = -(-n // blocks)
     return np.concatenate([_love_corner(X, Y[i:i + step], z[i:i + step], w, only)
                            for i in range(0, n, step)], axis=1)
 
@@ -894,11 +931,12 @@ def _hertz_cell_means(edges, b):
     """Mean of sqrt(1 - y^2/b^2) over each cell [edges[i], edges[i+1]] (0 beyond b);
     b a scalar, or an array of half-widths (one row of cells each; 0 for none)."""
     b = np.asarray(b, dtype=float)[..., None]
-    bs = np.where(b > 0, b, 1.0)
-    u = np.clip(edges / bs, -1.0, 1.0)
+    pos = b > 0
+    bs = np.where(pos, b, 1.0)
+    u = np.minimum(np.maximum(edges / bs, -1.0), 1.0)
     prim = 0.5 * (u * np.sqrt(1.0 - u * u) + np.arcsin(u))     # int sqrt(1-u^2) du
-    out = np.diff(prim, axis=-1) * bs / np.diff(edges)
-    return np.where(b > 0, out, 0.0)
+    out = (prim[..., 1:] - prim[..., :-1]) * bs / (edges[1:] - edges[:-1])
+    return np.where(pos, out, 0.0)
 
 
 #: 3D correction: cells across the contact, near-field half-window over b
@@ -909,26 +947,44 @@ _ZOOMS = 3
 _SHRINK = 2.5
 
 
-def _corners_3d(xc, b, p0, k0):
-    """Corner positions and weights of the pressure difference p - p_k0 (a row of
-    Hertz strips, one per slice, minus the strip of slice k0 extended to infinity)."""
+def _slice_edges(xc):
+    """The slices' edges along the roller (midpoints; the end slices mirrored)."""
     n = xc.size
     xe = np.empty(n + 1)
     xe[1:-1] = 0.5 * (xc[1:] + xc[:-1])
     xe[0] = xc[0] - 0.5 * (xc[1] - xc[0])
     xe[-1] = xc[-1] + 0.5 * (xc[-1] - xc[-2])
+    return xe
+
+
+#: 0, 1, ..., _N_Y: the near grid's edges are -B + (2B/_N_Y) i (np.linspace's)
+_STEPS_Y = np.arange(_N_Y + 1, dtype=float)
+
+
+def _corners_3d(xc, b, p0, k0, xe=None):
+    """Corner positions and weights of the pressure difference p - p_k0 (a row of
+    Hertz strips, one per slice, minus the strip of slice k0 extended to infinity);
+    `xe` the slices' edges (:func:`_slice_edges`, computed if not given)."""
+    n = xc.size
+    if xe is None:
+        xe = _slice_edges(xc)
     b0, x0 = b[k0], xc[k0]
     near = np.abs(xc - x0) <= _NEAR * b0
     near[max(k0 - 2, 0):k0 + 3] = True
-    i0, i1 = np.flatnonzero(near)[[0, -1]]
-    near[i0:i1 + 1] = True
+    at = np.flatnonzero(near)
+    i0, i1 = int(at[0]), int(at[-1])
     # near field: a common grid across |y| <= B, each slice's Hertz profile averaged
     # onto its cells; minus slice k0's profile; the extension of k0's strip beyond the
     # roller's ends (to +-1e6 L) closes the infinite strip whose field is McEwen's
-    B = max(float(b[i0:i1 + 1].max()), b0)
-    ye = np.linspace(-B, B, _N_Y + 1)
+    bn = b[i0:i1 + 1]
+    B = max(float(bn.max()), b0)
+    ye = _STEPS_Y * ((B + B) / _N_Y) - B           # np.linspace(-B, B, _N_Y + 1)
+    ye[-1] = B
     L = xe[-1] - xe[0]
-    means = _hertz_cell_means(ye, np.concatenate([[b0], b[i0:i1 + 1]]))
+    bb = np.empty(bn.size + 1)
+    bb[0] = b0
+    bb[1:] = bn
+    means = _hertz_cell_means(ye, bb)
     ref = p0[k0] * means[0]
     lo_ext, hi_ext = int(i0 == 0), int(i1 == n - 1)
     rows = i1 - i0 + 1 + lo_ext + hi_ext
@@ -940,34 +996,64 @@ def _corners_3d(xc, b, p0, k0):
         Pp[1, 1:-1] = -ref
     if hi_ext:
         Pp[rows, 1:-1] = -ref
-    xs = xe[i0:i1 + 2]
-    if lo_ext or hi_ext:
-        xs = np.concatenate([[xe[0] - 1e6 * L]] * lo_ext + [xs]
-                            + [[xe[-1] + 1e6 * L]] * hi_ext)
+    xs = np.empty(rows + 1)
+    xs[lo_ext:rows + 1 - hi_ext] = xe[i0:i1 + 2]
+    if lo_ext:
+        xs[0] = xe[0] - 1e6 * L
+    if hi_ext:
+        xs[-1] = xe[-1] + 1e6 * L
     W = Pp[1:, 1:] - Pp[1:, :-1] - Pp[:-1, 1:] + Pp[:-1, :-1]
-    cx, cy, w = [np.repeat(xs, _N_Y + 1)], [np.tile(ye, xs.size)], [W.ravel()]
+    nn = W.size
     # far field (beyond _NEAR b0, where the distribution across matters to (b/r)^2
     # of a small difference): one cell per slice across |y| <= max(b, b0) with the
     # difference of the mean pressures (q - q_k0)/(2 max(b, b0)); beyond the roller's
     # ends (if the near grid does not reach them) k0's strip, one cell
-    far = np.flatnonzero(~near)
+    nl, nr = i0, n - 1 - i1                         # far slices left and right
+    m = nl + nr + (1 - lo_ext) + (1 - hi_ext)       # far cells, the ends' included
+    cx, cy, w = np.empty(nn + 4 * m), np.empty(nn + 4 * m), np.empty(nn + 4 * m)
+    cx[:nn].reshape(rows + 1, _N_Y + 1)[:] = xs[:, None]
+    cy[:nn].reshape(rows + 1, _N_Y + 1)[:] = ye
+    w[:nn] = W.ravel()
+    if m == 0:
+        keep = w != 0
+        return cx[keep], cy[keep], w[keep]
     q0 = 0.5 * np.pi * p0[k0] * b0
-    lo_x, hi_x = xe[far], xe[far + 1]
-    bf = np.maximum(b[far], b0)
-    dq = 0.5 * np.pi * p0[far] * b[far] - q0
-    if not (lo_ext and hi_ext):
-        ends = ([(xe[0] - 1e6 * L, xe[0])] * (1 - lo_ext)
-                + [(xe[-1], xe[-1] + 1e6 * L)] * (1 - hi_ext))
-        lo_x = np.concatenate([lo_x, [e[0] for e in ends]])
-        hi_x = np.concatenate([hi_x, [e[1] for e in ends]])
-        bf = np.concatenate([bf, [b0] * len(ends)])
-        dq = np.concatenate([dq, [-q0] * len(ends)])
-    if lo_x.size:
-        pm = dq / (2 * bf)
-        cx.append(np.concatenate([lo_x, lo_x, hi_x, hi_x]))
-        cy.append(np.concatenate([-bf, bf, -bf, bf]))
-        w.append(np.concatenate([pm, -pm, -pm, pm]))
-    cx, cy, w = (np.concatenate(v) for v in (cx, cy, w))
+    lo_x, hi_x, bf, dq = np.empty(m), np.empty(m), np.empty(m), np.empty(m)
+    lo_x[:nl], hi_x[:nl] = xe[:nl], xe[1:nl + 1]
+    lo_x[nl:nl + nr], hi_x[nl:nl + nr] = xe[i1 + 1:n], xe[i1 + 2:]
+    fb = np.concatenate([b[:nl], b[i1 + 1:]])
+    fp = np.concatenate([p0[:nl], p0[i1 + 1:]])
+    bf[:nl + nr] = np.maximum(fb, b0)
+    dq[:nl + nr] = 0.5 * np.pi * fp * fb - q0
+    j = nl + nr
+    if not lo_ext:
+        lo_x[j], hi_x[j], bf[j], dq[j] = xe[0] - 1e6 * L, xe[0], b0, -q0
+        j += 1
+    if not hi_ext:
+        lo_x[j], hi_x[j], bf[j], dq[j] = xe[-1], xe[-1] + 1e6 * L, b0, -q0
+    pm = dq / (2 * bf)
+    fx, fy, fw = cx[nn:].reshape(4, m), cy[nn:].reshape(4, m), w[nn:].reshape(4, m)
+    fx[0], fx[1], fx[2], fx[3] = lo_x, lo_x, hi_x, hi_x
+    fy[0], fy[2] = -bf, -bf
+    fy[1], fy[3] = bf, bf
+    fw[0], fw[3] = pm, pm
+    fw[1], fw[2] = -pm, -pm
+    # adjacent far cells of the same half-width share the corners on their common
+    # edge (every cell below a slice narrower than b0, and the ends' extensions, has
+    # half-width b0): one corner each, with the sum of the weights (exactly 0 between
+    # two unloaded slices)
+    fx, fy, fw = fx.ravel(), fy.ravel(), fw.ravel()
+    order = np.lexsort((fy, fx))
+    fx, fy, fw = fx[order], fy[order], fw[order]
+    first = np.empty(4 * m, dtype=bool)
+    first[0] = True
+    np.not_equal(fx[1:], fx[:-1], out=first[1:])
+    first[1:] |= fy[1:] != fy[:-1]
+    at = np.flatnonzero(first)
+    fw = np.add.reduceat(fw, at)
+    cx = np.concatenate([cx[:nn], fx[at]])
+    cy = np.concatenate([cy[:nn], fy[at]])
+    w = np.concatenate([w[:nn], fw])
     keep = w != 0
     return cx[keep], cy[keep], w[keep]
 
@@ -1047,8 +1133,11 @@ def stress_measures(sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz):
 def _measure_3d(name, sx, sy, sz, txy, txz, tyz):
     """One of :data:`MEASURES` of broadcast 3D stress components (stress_measures)."""
     if name == "tresca":
-        T = np.stack([np.stack([sx, txy, txz], -1), np.stack([txy, sy, tyz], -1),
-                      np.stack([txz, tyz, sz], -1)], -2)
+        T = np.empty(np.shape(sx) + (3, 3))
+        T[..., 0, 0], T[..., 1, 1], T[..., 2, 2] = sx, sy, sz
+        T[..., 0, 1] = T[..., 1, 0] = txy
+        T[..., 0, 2] = T[..., 2, 0] = txz
+        T[..., 1, 2] = T[..., 2, 1] = tyz
         ev = np.linalg.eigvalsh(T)
         return 0.5 * (ev[..., -1] - ev[..., 0])
     if name == "von_mises":
@@ -1065,8 +1154,9 @@ def _worst_3d(x, b, p0, mu, nu, value2d, m):
     optimum lies within 0.1 b of the surface keep the strip's value (None here).
 
     Each grid's centre is the best point so far, whose value is known, so it is not
-    evaluated again; the measures' points below the same slice are evaluated in one
-    batch (the orthogonal shear's with tau_yz alone)."""
+    evaluated again; the points below the same slice are evaluated in one batch per
+    pass (the orthogonal shear's apart, with tau_yz alone), each slice's corners
+    built once (:func:`_corners_3d`) with their offsets along the roller."""
     grids = []
     for n in (5, 3):
         u = np.linspace(-1.0, 1.0, n)
@@ -1074,49 +1164,72 @@ def _worst_3d(x, b, p0, mu, nu, value2d, m):
         keep = np.arange(U.size) != U.size // 2          # the centre: the best so far
         grids.append((U[keep], V[keep]))
     cache = {}
+    xe = _slice_edges(x)
 
-    def corners(k):
+    def field(k, py, pz, shear_only=False):
+        """_field_3d below one slice k at the points (py, pz)."""
         if k not in cache:
-            cache[k] = _corners_3d(x, b, p0, k)
-        return cache[k]
+            cx, cy, w = _corners_3d(x, b, p0, k, xe)
+            cache[k] = ((x[k] - cx)[None, :], cy, w)
+        X, cy, w = cache[k]
+        t = _love_sums(X, py[:, None] - cy[None, :], pz[:, None], w,
+                       _PYZ if shear_only else None)
+        bk, s0 = b[k], p0[k]
+        sx, sy, sz, tyz = _unit_strip(py / bk, pz / bk, mu, nu)
+        if shear_only:
+            return s0 * tyz - (1.0 / (2.0 * np.pi)) * pz * t[_PYZ]
+        d = _love_components(t, pz, nu)
+        return (s0 * sx + d[0], s0 * sy + d[1], s0 * sz + d[2], d[3], d[4],
+                s0 * tyz + d[5])
 
     def evaluate(pts):
-        """pts: name -> (k, py, pz); the measure at those points below slice k, all
-        measures but the orthogonal shear in one batch, that one with tau_yz alone."""
+        """pts: name -> (k, py, pz); the measure at those points below slice k: the
+        measures but the orthogonal shear below the same slice in one batch, that one
+        with tau_yz alone."""
         out = {}
-        for group in ([n for n in pts if n != "orthogonal_shear"],
-                      [n for n in pts if n == "orthogonal_shear"]):
-            if not group:
-                continue
-            ks, py, pz = (np.concatenate([np.broadcast_to(pts[n][i], pts[n][1].shape)
-                                          for n in group]) for i in range(3))
-            comps = _field_3d(x, b, p0, mu, nu, ks, py, pz, corners,
-                              shear_only=group == ["orthogonal_shear"])
-            ends = np.cumsum([0] + [pts[n][1].size for n in group])
-            for n, i0, i1 in zip(group, ends[:-1], ends[1:]):
-                if n == "orthogonal_shear":
-                    out[n] = np.abs(comps[i0:i1])
-                else:
-                    out[n] = _measure_3d(n, *(c[i0:i1] for c in comps))
+        if "orthogonal_shear" in pts:
+            k, py, pz = pts["orthogonal_shear"]
+            out["orthogonal_shear"] = np.abs(field(k, py, pz, True))
+        rest = [n for n in pts if n != "orthogonal_shear"]
+        while rest:
+            k = pts[rest[0]][0]
+            group = [n for n in rest if pts[n][0] == k]
+            rest = [n for n in rest if pts[n][0] != k]
+            if len(group) == 1:
+                py, pz = pts[group[0]][1:]
+            else:
+                py = np.concatenate([pts[n][1] for n in group])
+                pz = np.concatenate([pts[n][2] for n in group])
+            comps = field(k, py, pz)
+            i0 = 0
+            for n in group:
+                i1 = i0 + pts[n][1].size
+                out[n] = _measure_3d(n, *(c[i0:i1] for c in comps))
+                i0 = i1
         return out
 
     names = [n for n in MEASURES if m.z[n] >= 0.1]
     # the candidate slices: the strip's worst and two either side, at the strip's
-    # optimum; all in one batch (the orthogonal shear's with the others: one point each)
+    # optimum; per slice, all measures' points in one batch (one point each)
     cands = {}
     for name in names:
         k = int(np.argmax(value2d[name]))
-        cands[name] = np.array([kk for kk in range(max(k - 2, 0), min(k + 3, x.size))
-                                if b[kk] > 0])
-    pts = {n: (cands[n], m.y[n] * b[cands[n]], m.z[n] * b[cands[n]]) for n in names}
-    ks, py, pz = (np.concatenate([pts[n][i] for n in names]) for i in range(3))
-    comps = _field_3d(x, b, p0, mu, nu, ks, py, pz, corners)
-    ends = np.cumsum([0] + [cands[n].size for n in names])
+        cands[name] = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
+    comps = {name: [] for name in names}
+    for kk in sorted(set().union(*cands.values())):
+        group = [n for n in names if kk in cands[n]]
+        bk = b[kk]
+        c = field(kk, np.array([m.y[n] * bk for n in group]),
+                  np.array([m.z[n] * bk for n in group]))
+        for i, n in enumerate(group):
+            comps[n].append((kk, [a[i] for a in c]))
     st = {}
-    for name, i0, i1 in zip(names, ends[:-1], ends[1:]):
-        v = _measure_3d(name, *(c[i0:i1] for c in comps))
+    for name in names:
+        # in the order of the candidates (ties go to the first, as before)
+        at = dict(comps[name])
+        v = _measure_3d(name, *(np.array(a) for a in zip(*(at[kk] for kk in cands[name]))))
         j = int(np.argmax(v))
-        kk = int(cands[name][j])
+        kk = cands[name][j]
         bb = b[kk]
         st[name] = dict(k=kk, val=float(v[j]), by=m.y[name] * bb, bz=m.z[name] * bb,
                         hy=0.4 * bb, hz=0.3 * bb)

@@ -725,7 +725,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     s = _assemble(x, b, p0, mu, nu, notes, edge)
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
-    w3 = _worst_3d(x, b, p0, mu, nu, s.value, _maxima(mu, nu))
+    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu))
     worst = {k: (s.worst[k] if w3[k] is None else w3[k]) for k in MEASURES}
     return dataclasses.replace(s, worst=worst, strip_worst=s.worst, error=error,
                                method="strip + 3D correction")
@@ -1058,27 +1058,53 @@ def _corners_3d(xc, b, p0, k0, xe=None):
     return cx[keep], cy[keep], w[keep]
 
 
-def _field_3d(x, b, p0, mu, nu, ks, py, pz, corners, shear_only=False):
-    """Stresses (sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz) at the points
-    (x_k, py, pz), k = ks per point: McEwen's strip of slice k (pressure and traction)
-    plus the 3D field of the pressure's difference from it (Love's rectangles;
-    `corners(k)` gives those of :func:`_corners_3d`); with `shear_only`, tau_yz alone
-    (the orthogonal shear's one component)."""
-    ks = np.asarray(ks, dtype=int)
-    py = np.asarray(py, float)
-    pz = np.asarray(pz, float)
-    t = np.zeros((10, ks.size))
-    for k in np.unique(ks):
-        rows = np.flatnonzero(ks == k)
-        cx, cy, w = corners(int(k))
-        t[:, rows] = _love_sums((x[k] - cx)[None, :], py[rows, None] - cy[None, :],
-                                pz[rows, None], w, _PYZ if shear_only else None)
-    bk, s0 = b[ks], p0[ks]
+def _field_3d(x, b, p0, mu, nu, batches, corners):
+    """Stresses at points below slices: McEwen's strip of the slice (pressure and
+    traction) plus the 3D field of the pressure's difference from it (Love's
+    rectangles; `corners(k)` gives slice k's offsets along the roller (1, n), its
+    corners across (n,) and weights (n,), from :func:`_corners_3d`). `batches`: a list
+    of (k, py, pz, shear_only), the points (py, pz) below slice k; returns per batch
+    the six components (sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz), or with
+    `shear_only` tau_yz alone (the orthogonal shear's one component, one corner
+    function). The corner sums are per slice; the strips' fields and the components
+    of all batches are evaluated at once."""
+    sums, full = [], []
+    for i, (k, py, pz, shear) in enumerate(batches):
+        X, cy, w = corners(k)
+        sums.append(_love_sums(X, py[:, None] - cy[None, :], pz[:, None], w,
+                               _PYZ if shear else None))
+        if not shear:
+            full.append(i)
+    sizes = [bt[1].size for bt in batches]
+    ends = np.cumsum([0] + sizes)
+    if len(batches) == 1:
+        k, py, pz = batches[0][:3]
+        bk, s0 = b[k], p0[k]
+    else:
+        py = np.concatenate([bt[1] for bt in batches])
+        pz = np.concatenate([bt[2] for bt in batches])
+        ks = [bt[0] for bt in batches]
+        bk, s0 = np.repeat(b[ks], sizes), np.repeat(p0[ks], sizes)
     sx, sy, sz, tyz = _unit_strip(py / bk, pz / bk, mu, nu)
-    if shear_only:
-        return s0 * tyz - (1.0 / (2.0 * np.pi)) * pz * t[_PYZ]
-    d = _love_components(t, pz, nu)
-    return (s0 * sx + d[0], s0 * sy + d[1], s0 * sz + d[2], d[3], d[4], s0 * tyz + d[5])
+    sx, sy, sz, tyz = s0 * sx, s0 * sy, s0 * sz, s0 * tyz
+    if full:
+        if len(full) == 1:
+            T, rows = sums[full[0]], slice(ends[full[0]], ends[full[0] + 1])
+        else:
+            T = np.concatenate([sums[i] for i in full], axis=1)
+            rows = np.concatenate([np.arange(ends[i], ends[i + 1]) for i in full])
+        d = _love_components(T, pz[rows], nu)
+        comps = (sx[rows] + d[0], sy[rows] + d[1], sz[rows] + d[2], d[3], d[4],
+                 tyz[rows] + d[5])
+    out, j = [], 0
+    for i, (k, py_, pz_, shear) in enumerate(batches):
+        r = slice(ends[i], ends[i + 1])
+        if shear:
+            out.append(tyz[r] - (1.0 / (2.0 * np.pi)) * pz[r] * sums[i][_PYZ])
+        else:
+            out.append(tuple(c[j:j + sizes[i]] for c in comps))
+            j += sizes[i]
+    return out
 
 
 def stress_measures(sigma_x, sigma_y, sigma_z, tau_xy, tau_xz, tau_yz):
@@ -1146,50 +1172,44 @@ def _measure_3d(name, sx, sy, sz, txy, txz, tyz):
     return np.abs(tyz)
 
 
-def _worst_3d(x, b, p0, mu, nu, value2d, m):
-    """The worst of each measure with the 3D correction (:func:`_field_3d`): the
-    strip's optimum point below the slice of the strip's worst and two slices either
-    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
-    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
-    optimum lies within 0.1 b of the surface keep the strip's value (None here).
-
-    Each grid's centre is the best point so far, whose value is known, so it is not
-    evaluated again; the points below the same slice are evaluated in one batch per
-    pass (the orthogonal shear's apart, with tau_yz alone), each slice's corners
-    built once (:func:`_corners_3d`) with their offsets along the roller."""
+def _search_grids():
     grids = []
     for n in (5, 3):
         u = np.linspace(-1.0, 1.0, n)
         U, V = (a.ravel() for a in np.meshgrid(u, u, indexing="ij"))
         keep = np.arange(U.size) != U.size // 2          # the centre: the best so far
         grids.append((U[keep], V[keep]))
+    return grids
+
+
+#: the 3D search's grids in (y, z) over the window's half-sides: 5 x 5 then 3 x 3,
+#: each without its centre (the best point so far, whose value is known)
+_SEARCH_GRIDS = _search_grids()
+
+
+def _worst_3d(x, b, p0, mu, nu, m):
+    """The worst of each measure with the 3D correction (:func:`_field_3d`): the
+    strip's optimum point below the slice of the strips' worst and two slices either
+    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
+    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
+    optimum lies within 0.1 b of the surface keep the strip's value (None here).
+
+    Each grid's centre is the best point so far, whose value is known, so it is not
+    evaluated again; the points below the same slice are summed in one batch per
+    pass (the orthogonal shear's apart, with tau_yz alone), each slice's corners
+    built once (:func:`_corners_3d`) with their offsets along the roller."""
     cache = {}
     xe = _slice_edges(x)
 
-    def field(k, py, pz, shear_only=False):
-        """_field_3d below one slice k at the points (py, pz)."""
+    def corners(k):
         if k not in cache:
             cx, cy, w = _corners_3d(x, b, p0, k, xe)
             cache[k] = ((x[k] - cx)[None, :], cy, w)
-        X, cy, w = cache[k]
-        t = _love_sums(X, py[:, None] - cy[None, :], pz[:, None], w,
-                       _PYZ if shear_only else None)
-        bk, s0 = b[k], p0[k]
-        sx, sy, sz, tyz = _unit_strip(py / bk, pz / bk, mu, nu)
-        if shear_only:
-            return s0 * tyz - (1.0 / (2.0 * np.pi)) * pz * t[_PYZ]
-        d = _love_components(t, pz, nu)
-        return (s0 * sx + d[0], s0 * sy + d[1], s0 * sz + d[2], d[3], d[4],
-                s0 * tyz + d[5])
+        return cache[k]
 
     def evaluate(pts):
-        """pts: name -> (k, py, pz); the measure at those points below slice k: the
-        measures but the orthogonal shear below the same slice in one batch, that one
-        with tau_yz alone."""
-        out = {}
-        if "orthogonal_shear" in pts:
-            k, py, pz = pts["orthogonal_shear"]
-            out["orthogonal_shear"] = np.abs(field(k, py, pz, True))
+        """pts: name -> (k, py, pz); the measure at those points below slice k."""
+        batches, groups = [], []
         rest = [n for n in pts if n != "orthogonal_shear"]
         while rest:
             k = pts[rest[0]][0]
@@ -1200,41 +1220,46 @@ def _worst_3d(x, b, p0, mu, nu, value2d, m):
             else:
                 py = np.concatenate([pts[n][1] for n in group])
                 pz = np.concatenate([pts[n][2] for n in group])
-            comps = field(k, py, pz)
+            batches.append((k, py, pz, False))
+            groups.append(group)
+        if "orthogonal_shear" in pts:
+            batches.append(pts["orthogonal_shear"] + (True,))
+            groups.append(["orthogonal_shear"])
+        out = {}
+        for group, res in zip(groups, _field_3d(x, b, p0, mu, nu, batches, corners)):
+            if group == ["orthogonal_shear"]:
+                out["orthogonal_shear"] = np.abs(res)
+                continue
             i0 = 0
             for n in group:
                 i1 = i0 + pts[n][1].size
-                out[n] = _measure_3d(n, *(c[i0:i1] for c in comps))
+                out[n] = _measure_3d(n, *(c[i0:i1] for c in res))
                 i0 = i1
         return out
 
     names = [n for n in MEASURES if m.z[n] >= 0.1]
-    # the candidate slices: the strip's worst and two either side, at the strip's
-    # optimum; per slice, all measures' points in one batch (one point each)
-    cands = {}
-    for name in names:
-        k = int(np.argmax(value2d[name]))
-        cands[name] = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
-    comps = {name: [] for name in names}
-    for kk in sorted(set().union(*cands.values())):
-        group = [n for n in names if kk in cands[n]]
-        bk = b[kk]
-        c = field(kk, np.array([m.y[n] * bk for n in group]),
-                  np.array([m.z[n] * bk for n in group]))
-        for i, n in enumerate(group):
-            comps[n].append((kk, [a[i] for a in c]))
+    # the candidate slices: the strips' worst and two either side, each at the
+    # strip's optimum of every measure (the slices' points summed per slice, the
+    # strips' fields at once). Every measure's strip maxima are one constant times
+    # p0, so the strips' worst slice is p0's largest for all of them (taken from p0
+    # itself: the products may order two mirror slices of a symmetric roller
+    # differently, by rounding, which would double the candidates)
+    k = int(np.argmax(p0))
+    cand = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
+    res = _field_3d(x, b, p0, mu, nu,
+                    [(kk, np.array([m.y[n] * b[kk] for n in names]),
+                      np.array([m.z[n] * b[kk] for n in names]), False) for kk in cand],
+                    corners)
     st = {}
-    for name in names:
-        # in the order of the candidates (ties go to the first, as before)
-        at = dict(comps[name])
-        v = _measure_3d(name, *(np.array(a) for a in zip(*(at[kk] for kk in cands[name]))))
+    for i, name in enumerate(names):
+        v = _measure_3d(name, *(np.array([r[c][i] for r in res]) for c in range(6)))
         j = int(np.argmax(v))
-        kk = cands[name][j]
+        kk = cand[j]
         bb = b[kk]
         st[name] = dict(k=kk, val=float(v[j]), by=m.y[name] * bb, bz=m.z[name] * bb,
                         hy=0.4 * bb, hz=0.3 * bb)
     for it in range(_ZOOMS + 1):
-        U, V = grids[min(it, 1)]
+        U, V = _SEARCH_GRIDS[min(it, 1)]
         pts = {}
         for name in names:
             c = st[name]

@@ -745,9 +745,22 @@ def _love_corner(X, Y, z, w=None, only=None):
     corners instead, (10, ...); with `only` (an index) just that function's sum, the
     others left 0. The sums take the shortcuts of :func:`_love_weighted` where X is
     one row (1, n_corners) and z one column (n_points, 1), as the 3D correction's."""
-    if (w is not None and only is None and np.ndim(X) == 2 and np.shape(X)[0] == 1
-            and np.ndim(z) == 2 and np.shape(z)[1] == 1):
-        return _love_weighted(X, Y, z, w)
+    if (w is not None and np.ndim(X) == 2 and np.shape(X)[0] == 1
+            and np.ndim(z) == 2 and np.shape(z)[1] == 1 and only in (None, _PYZ)):
+        if only is None:
+            return _love_weighted(X, Y, z, w)
+        # d2 psi1/dydz alone: -z sum_c (X_c w_c)/(rho (Y^2 + z^2))
+        out = np.zeros((10, Y.shape[0]))
+        z2 = z * z
+        Y2 = Y * Y
+        t = Y2 + z2
+        rho = X * X + Y2
+        rho += z2
+        np.sqrt(rho, out=rho)
+        t *= rho
+        np.divide(1.0, t, out=t)
+        out[_PYZ] = -z[:, 0] * (t @ (X[0] * w))
+        return out
     X2, Y2, z2 = X * X, Y * Y, z * z
     rho = np.sqrt(X2 + Y2 + z2)
 
@@ -1076,7 +1089,9 @@ def _field_3d(x, b, p0, mu, nu, batches, corners):
         if not shear:
             full.append(i)
     sizes = [bt[1].size for bt in batches]
-    ends = np.cumsum([0] + sizes)
+    ends = [0]
+    for size in sizes:
+        ends.append(ends[-1] + size)
     if len(batches) == 1:
         k, py, pz = batches[0][:3]
         bk, s0 = b[k], p0[k]

@@ -1053,20 +1053,17 @@ def _corners_3d(xc, b, p0, k0, xe=None):
     fw[1], fw[2] = -pm, -pm
     # adjacent far cells of the same half-width share the corners on their common
     # edge (every cell below a slice narrower than b0, and the ends' extensions, has
-    # half-width b0): one corner each, with the sum of the weights (exactly 0 between
-    # two unloaded slices)
-    fx, fy, fw = fx.ravel(), fy.ravel(), fw.ravel()
-    order = np.lexsort((fy, fx))
-    fx, fy, fw = fx[order], fy[order], fw[order]
-    first = np.empty(4 * m, dtype=bool)
+    # half-width b0), and the near grid's end corners at +-B those of a far cell as
+    # wide: one corner each, with the sum of the weights (exactly 0 between two
+    # unloaded slices)
+    order = np.lexsort((cy, cx))
+    cx, cy, w = cx[order], cy[order], w[order]
+    first = np.empty(cx.size, dtype=bool)
     first[0] = True
-    np.not_equal(fx[1:], fx[:-1], out=first[1:])
-    first[1:] |= fy[1:] != fy[:-1]
+    np.not_equal(cx[1:], cx[:-1], out=first[1:])
+    first[1:] |= cy[1:] != cy[:-1]
     at = np.flatnonzero(first)
-    fw = np.add.reduceat(fw, at)
-    cx = np.concatenate([cx[:nn], fx[at]])
-    cy = np.concatenate([cy[:nn], fy[at]])
-    w = np.concatenate([w[:nn], fw])
+    cx, cy, w = cx[at], cy[at], np.add.reduceat(w, at)
     keep = w != 0
     return cx[keep], cy[keep], w[keep]
 

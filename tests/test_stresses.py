@@ -369,3 +369,92 @@ def test_corner_sums_on_the_edges_extensions_and_near_the_surface():
         assert np.all(np.isfinite(sums)), z
         err = np.abs(sums - direct) / np.maximum(1.0, np.abs(direct))
         assert err.max() <= 1e-12, (z, np.unravel_index(err.argmax(), err.shape))
+
+
+def _slice_pressure_arrays(sol):
+    x = np.asarray(sol.x, float)
+    b = np.asarray(sol.half_width, float)
+    q = np.asarray(sol.q, float)
+    loaded = (b > 0) & (q > 0)
+    p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
+    return x, np.where(loaded, b, 0.0), p0
+
+
+def test_3d_correction_corners_rebuild_the_pressure_difference():
+    """The 3D correction's corner weights are the mixed differences of a piecewise
+    constant pressure: summed over the corners below and left of a point, sum_c w_c
+    [x > x_c][y > y_c], they give back the pressure there, to 1e-9 of p0 (rounding of
+    the sums): in the near grid, slice i's Hertz cell mean p0_i <sqrt(1 - y^2/b_i^2)>
+    minus slice k0's; in a far slice, (q_i - q_k0)/(2 max(b_i, b_k0)) across |y| <
+    max(b_i, b_k0); beyond the roller's ends -q_k0/(2 b_k0) (k0's strip extended). So
+    the far cells' corners merged on common edges (adjacent cells of one half-width)
+    lose nothing; and no two corners share a position."""
+    from linecontact.stresses import _N_Y, _NEAR, _corners_3d, _hertz_cell_means
+    for shape, force, tilt in (("circular:Rc=0.5", 4200.0, 0.0), ("iso16281", 11200.0, 2e-3),
+                               ("end-relief:r=2mm,l=1.5mm", 4200.0, 0.0)):
+        r = ProfiledRoller(5e-3, 14e-3, ESTAR, shape)
+        x, b, p0 = _slice_pressure_arrays(r.at_force(force, tilt=tilt))
+        n = x.size
+        xe = np.concatenate([[x[0] - 0.5 * (x[1] - x[0])], 0.5 * (x[1:] + x[:-1]),
+                             [x[-1] + 0.5 * (x[-1] - x[-2])]])
+        for k0 in {int(np.argmax(p0)), int(np.flatnonzero(b > 0)[0])}:
+            cx, cy, w = _corners_3d(x, b, p0, k0)
+            assert len(set(zip(cx.tolist(), cy.tolist()))) == cx.size
+            near = np.abs(x - x[k0]) <= _NEAR * b[k0]
+            near[max(k0 - 2, 0):k0 + 3] = True
+            i0, i1 = np.flatnonzero(near)[[0, -1]]
+            B = max(b[i0:i1 + 1].max(), b[k0])
+            ye = np.linspace(-B, B, _N_Y + 1)
+            ref = p0[k0] * _hertz_cell_means(ye, b[k0])
+            q = 0.5 * np.pi * p0 * b
+
+            def rebuilt(px, py):
+                return float(np.sum(w[(px > cx) & (py > cy)]))
+
+            for i in range(n):
+                px = x[i]
+                if i0 <= i <= i1:
+                    cells = p0[i] * _hertz_cell_means(ye, b[i]) - ref
+                    for j in (0, _N_Y // 2 - 1, _N_Y // 2 + 3):
+                        py = 0.5 * (ye[j] + ye[j + 1])
+                        assert rebuilt(px, py) == pytest.approx(
+                            cells[j], abs=1e-9 * p0.max()), (shape, k0, i, j)
+                else:
+                    bf = max(b[i], b[k0])
+                    want = (q[i] - q[k0]) / (2 * bf)
+                    for py in (0.0, 0.6 * bf, -0.9 * bf):
+                        assert rebuilt(px, py) == pytest.approx(
+                            want, abs=1e-9 * p0.max()), (shape, k0, i, py)
+            for px in (xe[0] - 1e-3, xe[-1] + 1e-3):
+                if (px < x[i0] and i0 > 0) or (px > x[i1] and i1 < n - 1):
+                    want = -q[k0] / (2 * b[k0])
+                else:
+                    want = -ref[_N_Y // 2]
+                assert rebuilt(px, 1e-3 * b[k0]) == pytest.approx(
+                    want, abs=1e-9 * p0.max()), (shape, k0, px)
+
+
+def test_3d_correction_of_a_mirrored_roller_is_mirrored():
+    """A roller's solution mirrored along its axis (x -> -x, the slices reversed)
+    carries the mirror image of the load, so its 3D-corrected worst of each measure
+    is the same value (to 1e-12: the searches' points are mirror images; for an
+    untilted, symmetric roller the two mirror slices tie and either may hold it) at
+    the mirrored position, for a tilted roller and an untilted one."""
+    from types import SimpleNamespace
+    for shape, tilt in (("iso16281", 2e-3), ("circular:Rc=0.5", 0.0)):
+        r = ProfiledRoller(5e-3, 14e-3, ESTAR, shape)
+        sol = r.at_force(11200.0, tilt=tilt)
+        mirror = SimpleNamespace(x=-np.asarray(sol.x)[::-1],
+                                 half_width=np.asarray(sol.half_width)[::-1],
+                                 q=np.asarray(sol.q)[::-1], tilt=-tilt, force=sol.force,
+                                 edge_loaded=sol.edge_loaded)
+        for mu in (0.0, 0.1):
+            a = roller_stresses(sol, mu, 0.3).worst
+            m = roller_stresses(mirror, mu, 0.3).worst
+            for name in MEASURES:
+                assert m[name]["value"] == pytest.approx(a[name]["value"], rel=1e-12), name
+                assert m[name]["z"] == pytest.approx(a[name]["z"], rel=1e-9), name
+                if tilt:
+                    assert m[name]["x"] == pytest.approx(-a[name]["x"], abs=1e-12), name
+                else:
+                    assert abs(m[name]["x"]) == pytest.approx(abs(a[name]["x"]), abs=1e-12)

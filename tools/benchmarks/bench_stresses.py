@@ -21,11 +21,16 @@ What it measures:
    a grid search and ten zooms) is timed apart. Target: the stresses within
    twice the contact solve's time.
 
+``--engine`` picks the contact solve's engine (``ProfiledRoller(engine=...)``, default
+"auto", which stays numpy for this benchmark's few solves; "numba" is about twice as
+fast, so its ratio is about twice as large); the stresses are numpy either way.
+
 With ``--against DIR`` (another checkout) the timing also runs that checkout's
 ``linecontact/stresses.py`` on the same solutions, in turn with this one's (loaded as a
 module of this checkout's package, so only the stresses module differs), and reports
 the CPU ratio this/other per roller (median of ``--repeat`` each): a paired comparison
-on a shared machine, where absolute times drift with the load.
+on a shared machine, where absolute times drift with the load; and the other module's
+stresses/solve ratio on the same solves (its "before").
 
 Prints a report and writes it to tools/benchmarks/results/stresses.txt.
 """
@@ -97,7 +102,7 @@ def _other_stresses(directory):
     return mod
 
 
-def timing(lines, repeat, against=None):
+def timing(lines, repeat, against=None, engine="auto"):
     from linecontact.roller import ProfiledRoller
     from linecontact.stresses import roller_stresses, strip_maxima
     other = _other_stresses(against) if against else None
@@ -113,15 +118,23 @@ def timing(lines, repeat, against=None):
     strip_maxima(0.05, 0.31)
     first = time.process_time() - c0
     strip_maxima(0.0, 0.3)   # the study's (mu, nu), cached before the timed loop
-    ratios, solves, stresses, keys = [], [], [], []
-    for task in ss.study_tasks():
+    ratios, solves, stresses, keys, others = [], [], [], [], []
+    tasks = ss.study_tasks()
+    if engine == "numba":
+        # the compiled kernels' import and cache load (once per process) before timing
+        t = tasks[0]
+        ProfiledRoller(t["radius"], t["length"], t["estar"],
+                       make_profile(t["profile"], t["length"], t["radius"], t["estar"]),
+                       engine=engine).at_force(t["force"], tilt=t["tilt"])
+    for task in tasks:
         prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
         ts, tt, to = [], [], []
         for _ in range(repeat):
             # a fresh model each time: a model keeps its last solution as the next
             # solve's warm start, which makes a repeated solve of the same case a
             # fraction of a user's one solve
-            model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof)
+            model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
+                                   engine=engine)
             c0 = time.process_time()
             sol = model.at_force(task["force"], tilt=task["tilt"])
             c1 = time.process_time()
@@ -135,6 +148,7 @@ def timing(lines, repeat, against=None):
                 to.append(time.process_time() - c3)
         if to:
             paired.append(statistics.median(tt) / statistics.median(to))
+            others.append(statistics.median(to) / statistics.median(ts))
             to.clear()
         if ts:
             solves.append(statistics.median(ts))
@@ -144,6 +158,8 @@ def timing(lines, repeat, against=None):
     k = int(np.argmax(ratios))
     lines.append(f"largest ratio: {keys[k]} (solve {solves[k] * 1e3:.1f} ms, stresses "
                  f"{stresses[k] * 1e3:.1f} ms)")
+    lines.append(f"engine {engine!r}: the contact solve's, as ProfiledRoller(engine=...); the "
+                 "stresses are numpy either way")
     lines.append(f"time (CPU, median of {repeat} per case, {len(ratios)} cases): contact "
                  f"solve median {statistics.median(solves) * 1e3:.1f} ms; stresses median "
                  f"{statistics.median(stresses) * 1e3:.3f} ms; ratio stresses/solve median "
@@ -153,7 +169,9 @@ def timing(lines, repeat, against=None):
         lines.append(f"paired against the stresses module of {Path(against).resolve().name}/ "
                      f"(the same solutions, "
                      f"in turn): CPU of the stresses this/other, median {statistics.median(paired):.3f}, "
-                     f"range {min(paired):.3f}-{max(paired):.3f} over {len(paired)} rollers")
+                     f"range {min(paired):.3f}-{max(paired):.3f} over {len(paired)} rollers; "
+                     f"its stresses/solve ratio median {statistics.median(others):.4f}, largest "
+                     f"{max(others):.4f} ({keys[int(np.argmax(others))]})")
     lines.append(f"first call of a new (mu, nu) (strip maxima computed and cached): "
                  f"{first * 1e3:.0f} ms CPU, once per process")
     lines.append(f"(timing section: {time.process_time() - t0:.0f} s CPU)")
@@ -192,6 +210,9 @@ def main(argv=None):
                     help="coarse cells along x of each nested pair (default 64,128: "
                          "64 x 32, 128 x 64 and 256 x 128 cells)")
     ap.add_argument("--skip-timing", action="store_true")
+    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba"),
+                    help="the contact solve's engine (ProfiledRoller(engine=...); default "
+                         "auto, numpy for the few solves of this benchmark)")
     ap.add_argument("--against", default=None, metavar="DIR",
                     help="another checkout: time its linecontact/stresses.py in turn with "
                          "this one's on the same solutions")
@@ -207,7 +228,7 @@ def main(argv=None):
                          [int(v) for v in args.grid_n_x.split(",")])
     if not args.skip_timing:
         lines.append("")
-        timing(lines, args.repeat, args.against)
+        timing(lines, args.repeat, args.against, args.engine)
     text = "\n".join(lines) + "\n"
     print(text)
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -899,8 +899,10 @@ class SliceEquations:
         of the state after a full step is below it (:func:`newton_error` times
         NEWTON_C; the steps contracting faster than linearly, no unloaded slice close
         to touching): that state is returned on its own grid. Returns (equations, S,
-        q, c, d, theta, F, M, K) with the force, moment and stiffness matrix K of the
-        converged state (K from the last linearisation), or raises ConvergenceError.
+        q, c, d, theta, F, M, K) with the force and moment of the returned state and
+        the stiffness matrix K of the last linearisation (where the estimate ended the
+        solve, at the state one full step before: within about sqrt(tol/NEWTON_C)
+        relative), or raises ConvergenceError.
         """
         n, R, piE = self.n, self.R, math.pi * self.E
         s = self

@@ -219,6 +219,10 @@ class StraightProfile(Profile):
     def _drop(self, x):
         return np.zeros_like(x)
 
+    def _drop_slope(self, x):
+        """The drop and dP/dx = 0 (drop_slope_inside)."""
+        return np.zeros_like(x), np.zeros_like(x)
+
     @property
     def label(self):
         return "straight"
@@ -379,6 +383,11 @@ class CircularCrownProfile(Profile):
     def _drop(self, x):
         return (x - self.offset) ** 2 / (2 * self.crown_radius)
 
+    def _drop_slope(self, x):
+        """The drop (the floats of _drop) and dP/dx = (x - x0)/Rc (drop_slope_inside)."""
+        u = x - self.offset
+        return u ** 2 / (2 * self.crown_radius), u / self.crown_radius
+
     @property
     def label(self):
         s = f"circular crown (Rc = {self.crown_radius * 1e3:.6g} mm"
@@ -390,6 +399,13 @@ class CircularCrownProfile(Profile):
 def _log_drop(coef, t):
     """coef * ln[1/(1 - t^2)] for |t| <= 1 (inf at |t| = 1), without cancellation."""
     return -coef * np.log1p(-(t * t))
+
+
+def _log_drop_slope(coef, t, dt):
+    """_log_drop(coef, t) (the same floats) and its derivative 2 coef t/(1 - t^2) dt
+    with respect to x, for |t| < 1 and dt = dt/dx (a number)."""
+    tt = t * t
+    return -coef * np.log1p(-tt), (2 * coef * dt) * t / (1 - tt)
 
 
 class ISO16281Profile(Profile):
@@ -450,6 +466,17 @@ class ISO16281Profile(Profile):
         t = np.maximum(2 * np.abs(x) - L + 2.5 * D, 0.0) / (2.5 * D)
         return _log_drop(ISO16281_LONG * D, t)
 
+    def _drop_slope(self, x):
+        """The drop (the floats of _drop) and dP/dx, for |x| < L/2 (drop_slope_inside):
+        dP/dt dt/dx with dt/dx = 2/L, or sign(x) 2/(2.5 D) outside the flat middle."""
+        L, D = self.length, self.diameter
+        if not self.long:
+            return _log_drop_slope(ISO16281_SHORT * D, 2 * x / L, 2 / L)
+        t = np.maximum(2 * np.abs(x) - L + 2.5 * D, 0.0) / (2.5 * D)
+        P, slope = _log_drop_slope(ISO16281_LONG * D, t, 2 / (2.5 * D))
+        slope *= np.sign(x)
+        return P, slope
+
     @property
     def label(self):
         branch = "L > 2.5 D, flat middle" if self.long else "L <= 2.5 D"
@@ -504,6 +531,11 @@ class LundbergProfile(Profile):
 
     def _drop(self, x):
         return _log_drop(self.coefficient, 2 * x / self.length)
+
+    def _drop_slope(self, x):
+        """The drop (the floats of _drop) and dP/dx = dP/dt 2/L, for |x| < L/2
+        (drop_slope_inside)."""
+        return _log_drop_slope(self.coefficient, 2 * x / self.length, 2 / self.length)
 
     @property
     def label(self):
@@ -575,6 +607,15 @@ class JohnsGoharProfile(Profile):
     def _drop(self, x):
         a = self.length / 2
         return -self.coefficient * np.log1p(-self.factor * (x / a) ** 2)
+
+    def _drop_slope(self, x):
+        """The drop (the floats of _drop) and dP/dx = 2 c f (x/a)/(a (1 - f (x/a)^2))
+        (drop_slope_inside)."""
+        a = self.length / 2
+        u = x / a
+        fu2 = self.factor * u ** 2
+        c = self.coefficient
+        return -c * np.log1p(-fu2), (2 * c * self.factor / a) * u / (1 - fu2)
 
     @property
     def label(self):
@@ -1006,6 +1047,66 @@ def roller_drop(profile, length, x, ends_may_be_inf=False):
         raise OutOfRangeError("profile drop", float(P[i]), "[0, inf) m", unit="m",
                               where=f"at x = {x[i]:.6g} m")
     return P
+
+
+#: The profile classes whose drop, by its formula and the checks of its constructor,
+#: is finite and >= 0 at every x strictly inside a roller it covers (the logarithmic
+#: ones are infinite only at the ends): :func:`drop_inside` evaluates them without
+#: roller_drop's range clamp and checks, and :func:`profile_identity` names them by
+#: their parameters.
+_FORMULA_PROFILES = (StraightProfile, EndReliefProfile, CircularCrownProfile,
+                     ISO16281Profile, LundbergProfile, JohnsGoharProfile,
+                     TabulatedProfile)
+
+
+def drop_inside(profile, length):
+    """A callable x -> P(x) [m] for points strictly inside a roller of length L
+    (|x| < L/2) that `profile` covers (checked before by :func:`roller_drop`): for the
+    profiles of this module (the exact classes, not subclasses) their formula directly,
+    the same floats as roller_drop without its clamp (an identity inside) and its
+    finite, >= 0 check (true of the formula there); for any other profile
+    roller_drop itself, checks included. The roller solver evaluates the drop at every
+    regrid, on some 150 points, where those calls cost more than the formula."""
+    if type(profile) in _FORMULA_PROFILES:
+        return profile._drop
+
+    def checked(x):
+        return roller_drop(profile, length, x)
+    return checked
+
+
+#: The profile classes with a smooth drop inside the roller whose derivative
+#: :func:`drop_slope_inside` gives in closed form (an end relief's kink and a table's
+#: knots are left to differences).
+_SLOPE_PROFILES = (StraightProfile, CircularCrownProfile, ISO16281Profile,
+                   LundbergProfile, JohnsGoharProfile)
+
+
+def drop_slope_inside(profile):
+    """A callable x -> (P(x), dP/dx) [m, -] for points strictly inside a roller the
+    profile covers (as :func:`drop_inside`), the drop the same floats as drop_inside's
+    and the slope in closed form, for the smooth profiles of this module (exact
+    classes: straight, circular, iso16281, lundberg, johns-gohar); None for the others
+    (the roller solver then takes central differences of the drop)."""
+    if type(profile) in _SLOPE_PROFILES:
+        return profile._drop_slope
+    return None
+
+
+def profile_identity(profile):
+    """A hashable key that equals another profile's exactly when both are of the same
+    class of this module and hold equal parameters (so that their drops are the same
+    floats), or None for a profile without one (a table, a user's class): a key for
+    caching what depends on the drop alone. Read at each call: a profile whose
+    parameters were changed in place gets a new key."""
+    if type(profile) not in _FORMULA_PROFILES:
+        return None
+    key = (type(profile),) + tuple(sorted(vars(profile).items()))
+    try:
+        hash(key)
+    except TypeError:            # an array parameter (a table)
+        return None
+    return key
 
 
 def is_free_tilt(tilt):

@@ -45,6 +45,16 @@ def _coverage():
                          if "covered_infinite_end_gap_over_length" in meta else None),
                 off=errors("runtime_error_off_ends"),
                 edge=errors("runtime_error_edge_loaded"))
+            # the largest errors as coverage_note states them, written once
+            off, edge = cov["off"], cov["edge"]
+            cov["errors_edge_loaded"] = (
+                f"edge loaded: deflection {_pct(edge['depth'])}, moment "
+                f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} (peak "
+                "pressure singular, not reported)")
+            cov["errors_off_ends"] = (
+                f"contact off the ends: deflection {_pct(off['depth'])}, moment "
+                f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
+                f"zero-moment tilt {_pct(off['tilt'])}")
         except (FileNotFoundError, KeyError, ValueError):
             cov = None
         _COVERAGE.append(cov)
@@ -109,15 +119,7 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
                        f"drop is infinite (measured down to {cov['end_gap'][0]:.2g} L)")
     if n_slices < DEFAULT_N_SLICES:
         outside.append(f"n_slices = {n_slices} (measured with {DEFAULT_N_SLICES})")
-    off, edge = cov["off"], cov["edge"]
-    if edge_loaded:
-        errs = (f"edge loaded: deflection {_pct(edge['depth'])}, moment "
-                f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} (peak "
-                "pressure singular, not reported)")
-    else:
-        errs = (f"contact off the ends: deflection {_pct(off['depth'])}, moment "
-                f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
-                f"zero-moment tilt {_pct(off['tilt'])}")
+    errs = cov["errors_edge_loaded"] if edge_loaded else cov["errors_off_ends"]
     if outside:
         return (f"{'; '.join(outside)}: outside the range where this model's error was "
                 f"measured against {where}; inside it the largest errors are, {errs}")

@@ -9,9 +9,10 @@ import math
 
 import numpy as np
 
-from ..profiles import as_profile, is_free_tilt, roller_drop
+from ..profiles import (as_profile, drop_inside, drop_slope_inside, is_free_tilt,
+                        profile_identity, roller_drop)
 from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
-from .._numerics import serial_blas
+from .._numerics import CACHE_BYTES, cache_nbytes, serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
                      ConvergenceError, SliceEquations, check_engine, coarse_slices,
@@ -114,31 +115,30 @@ class ProfiledRoller:
 
     def __init__(self, radius, length, estar, profile=None, n_slices=DEFAULT_N_SLICES,
                  grading=DEFAULT_GRADING, refine_ends=True, engine="auto"):
-        self.radius = float(check_positive("radius", radius, "m"))
-        self.length = float(check_positive("length", length, "m"))
-        self.estar = float(check_positive("estar", estar, "Pa"))
+        R = float(check_positive("radius", radius, "m"))
+        L = float(check_positive("length", length, "m"))
+        E = float(check_positive("estar", estar, "Pa"))
         n = N_SLICES.check(n_slices).item()
         if n != int(n):
             raise OutOfRangeError("n_slices", n_slices, "an integer in [10, 4000]")
-        self.n_slices = int(n)
-        self.grading = float(SLICE_GRADING.check(grading).item())
-        self._profile_spec = profile             # read again with a new R (__setattr__)
-        self.profile = as_profile(profile, self.radius, self.length, self.estar)
-        L = self.length
-        self._fx = np.linspace(-L / 2, L / 2, 16 * self.n_slices + 1)
-        self._fP = roller_drop(self.profile, L, self._fx, ends_may_be_inf=True)
-        self._end_cache = {}
-        # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2 (a
-        # logarithmic profile's drop is infinite at the ends): per roller, not per regrid
-        self._slope_consts = (1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9))
-        self.refine_ends = check_flag("refine_ends", refine_ends)
-        self.engine = check_engine(engine)
-        self._refine = 0
-        self._warm = None
-        self._memo = None
-        self._free_memo = 0.0
-        self._d0_memo = None
-        self.iterations = 0
+        n = int(n)
+        grading = float(SLICE_GRADING.check(grading).item())
+        prof = as_profile(profile, R, L, E)
+        fx, fP, end_cache, d0_cache = _fine_grid(prof, L, n)
+        # set at once, past __setattr__ (whose rebuild starts once _warm is set)
+        self.__dict__.update(
+            radius=R, length=L, estar=E, n_slices=n, grading=grading,
+            _profile_spec=profile,             # read again with a new R (__setattr__)
+            profile=prof,
+            _fx=fx, _fP=fP, _end_cache=end_cache, _d0_shared=d0_cache,
+            _drop_at=drop_inside(prof, L), _drop_slope_at=drop_slope_inside(prof),
+            # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2
+            # (a logarithmic profile's drop is infinite at the ends): per roller
+            _slope_consts=(1e-7 * L, -L / 2 * (1 - 1e-9), L / 2 * (1 - 1e-9)),
+            refine_ends=check_flag("refine_ends", refine_ends),
+            engine=check_engine(engine), _refine=0, _memo=None, _free_memo=0.0,
+            _d0_memo=None, iterations=0)
+        self._warm = None                        # last: marks the roller constructed
 
     #: The settings a solve depends on: one set after construction builds the roller
     #: anew, checked as at construction (the grid of the profile drop, the caches and
@@ -187,10 +187,25 @@ class ProfiledRoller:
     def _contact_depth(self, th):
         """first_contact_depth at a checked tilt th (a float), the last one kept: a
         solve at a given tilt asks twice (its start and its memo). The memo is read once
-        (a pair replaced whole): another thread may replace it between two reads."""
+        (a pair replaced whole): another thread may replace it between two reads. Past
+        the memo, the depths of the tilts met so far by the rollers that share this
+        one's grid (_fine_grid: equal profiles, L and n), up to 64: a new roller per
+        solve meets the same tilt each time."""
         memo = self._d0_memo
         if memo is not None and memo[0] == th:
             return memo[1]
+        shared = self._d0_shared
+        hmin = shared.get(th)
+        if hmin is None:
+            hmin = self._first_contact(th)
+            if len(shared) >= 64:
+                shared.clear()
+            shared[th] = hmin
+        self._d0_memo = (th, hmin)
+        return hmin
+
+    def _first_contact(self, th):
+        """min over the 16 n + 1 points of P(x) - theta x, refined by a parabola."""
         h = self._fP - th * self._fx
         k = int(h.argmin())
         hmin = float(h[k])
@@ -200,7 +215,6 @@ class ProfiledRoller:
             if corr > 1e-12 * max(abs(h[k - 1]), abs(h[k + 1])):
                 # vertex of the parabola through the three smallest values
                 hmin = float(h[k] - corr)
-        self._d0_memo = (th, hmin)
         return hmin
 
     def _grid(self, d, th, n=None):
@@ -211,34 +225,43 @@ class ProfiledRoller:
         base slices (default n_slices; the cold start's first sweeps take fewer).
         """
         fx = self._fx
-        over = d + th * fx - self._fP
+        over = th * fx          # d + theta x - P in place (the sum commutes: the same
+        over += d               # floats as the expression, without its temporaries)
+        over -= self._fP
         # the first and last grid points inside (argmax of the mask: a tenth of
         # flatnonzero's time on the 16 n + 1 points, the same indices)
         mask = over > 0
         i = int(mask.argmax())
         dlo = dhi = (0.0, 0.0)
+        last = len(fx) - 1
+        # (the scalars below as Python floats: the same IEEE arithmetic as numpy's
+        # scalars, at a fraction of the cost per operation)
         if not mask[i]:
             k = int(over.argmax())
-            lo, hi = fx[max(k - 1, 0)], fx[min(k + 1, len(fx) - 1)]
+            lo, hi = float(fx[max(k - 1, 0)]), float(fx[min(k + 1, last)])
         else:
-            j = len(fx) - 1 - int(mask[::-1].argmax())
-            lo, hi = fx[0], fx[-1]
-            h = fx[1] - fx[0]
-            if i > 0 and math.isfinite(over[i - 1]):
-                o0, o1, x0, x1 = over[i - 1], over[i], fx[i - 1], fx[i]
-                delta = o1 - o0
-                lo = x0 + h * (-o0 / delta)
-                dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
-            elif i > 0:
-                # the drop is infinite at the end x = -L/2 (a logarithmic profile)
-                lo, dlo = self._end_root(d, th, fx[i], -1)
-            if j < len(fx) - 1 and math.isfinite(over[j + 1]):
-                o0, o1, x0, x1 = over[j], over[j + 1], fx[j], fx[j + 1]
-                delta = o0 - o1
-                hi = x0 + h * (o0 / delta)
-                dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
-            elif j < len(fx) - 1:
-                hi, dhi = self._end_root(d, th, fx[j], 1)
+            j = last - int(mask[::-1].argmax())
+            lo, hi = float(fx[0]), float(fx[-1])
+            h = float(fx[1] - fx[0])
+            if i > 0:
+                o0, o1 = over[i - 1:i + 1].tolist()
+                if math.isfinite(o0):
+                    x0, x1 = fx[i - 1:i + 1].tolist()
+                    delta = o1 - o0
+                    lo = x0 + h * (-o0 / delta)
+                    dlo = (-h / delta, h * (-x0 * delta + o0 * (x1 - x0)) / delta**2)
+                else:
+                    # the drop is infinite at the end x = -L/2 (a logarithmic profile)
+                    lo, dlo = self._end_root(d, th, float(fx[i]), -1)
+            if j < last:
+                o0, o1 = over[j:j + 2].tolist()
+                if math.isfinite(o1):
+                    x0, x1 = fx[j:j + 2].tolist()
+                    delta = o0 - o1
+                    hi = x0 + h * (o0 / delta)
+                    dhi = (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+                else:
+                    hi, dhi = self._end_root(d, th, float(fx[j]), 1)
         # the drop and its slope at the slice centres in one evaluation of the profile
         # (the slope serves every Newton step on this grid, _drop_slope)
         got = []
@@ -247,7 +270,7 @@ class ProfiledRoller:
             P, slope = self._drop_slope(x)
             got.append(slope)
             return P
-        s = SliceEquations(self.radius, self.estar, float(lo), float(hi),
+        s = SliceEquations(self.radius, self.estar, lo, hi,
                            n or self.n_slices, drop, self.grading, self._refine,
                            resolve_engine(self.engine))
         s.dlo, s.dhi = dlo, dhi
@@ -265,26 +288,32 @@ class ProfiledRoller:
         Returns the end and its derivatives with respect to (d, theta)."""
         end = side * self.length / 2
         key = (side, x_in)
+        # a scan in Python floats (the same arithmetic as numpy's, elementwise): the
+        # first point outside comes after a few (the 4th-6th of 40 in the benchmark's
+        # solves), where the array operations cost more than the scan
+        d, th = float(d), float(th)
         for level in range(2):
-            u, x, P = self._end_points(key, end, side, x_in)
-            over = d + th * x - P
-            out = over <= 0
-            k = int(out.argmax())     # over[0] > 0: x_in is inside the interval
-            if not out[k]:              # overlapping to within 1e-6 of the interval
-                return float(x[-1]), (0.0, 0.0)
+            xs, Ps = self._end_points(key, end, side, x_in)[3:]
+            for k, (xk, Pk) in enumerate(zip(xs, Ps)):
+                if d + th * xk - Pk <= 0:     # (the first point, x_in, is inside)
+                    break
+            else:                           # overlapping to within 1e-6 of the interval
+                return xs[-1], (0.0, 0.0)
             key += (k,)
-        o0, o1, x0, x1 = over[k - 1], over[k], x[k - 1], x[k]
+        x0, x1 = xs[k - 1], xs[k]
+        o0, o1 = d + th * x0 - Ps[k - 1], d + th * x1 - Ps[k]
         delta = o0 - o1
         h = x1 - x0
         root = x0 + h * (o0 / delta)
-        return float(root), (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
+        return root, (h / delta, h * (x0 * delta - o0 * (x0 - x1)) / delta**2)
 
     def _end_points(self, key, end, side, x_in):
         """The distances u from the end, the points x and the drop there of one level
-        of _end_root's search: key (side, x_in) the 40 graded points, key (side, x_in,
-        k) the 33 even points between the first level's points k - 1 and k. They depend
-        only on the key: cached, as the Newton steps of a solve, and the solves of a
-        sweep, meet the same few."""
+        of _end_root's search (and x and the drop as lists of floats): key (side, x_in)
+        the 40 graded points, key (side, x_in, k) the 33 even points between the first
+        level's points k - 1 and k. They depend only on the key: cached, as the Newton
+        steps of a solve, and the solves of a sweep, meet the same few (the cache is
+        shared by the rollers of equal profiles, _fine_grid)."""
         hit = self._end_cache.get(key)
         if hit is None:
             if len(key) == 2:
@@ -293,21 +322,38 @@ class ProfiledRoller:
                 u0 = self._end_points(key[:2], end, side, x_in)[0]
                 u = np.linspace(u0[key[2] - 1], u0[key[2]], 33)
             x = end - side * u
-            hit = (u, x, roller_drop(self.profile, self.length, x))
+            P = roller_drop(self.profile, self.length, x)
+            hit = (u, x, P, x.tolist(), P.tolist())
             if len(self._end_cache) >= 64:
                 self._end_cache.clear()
             self._end_cache[key] = hit
         return hit
 
     def _drop_slope(self, x):
-        """The drop P(x) and dP/dx by central differences (step 1e-7 L, inside the
-        roller), from one evaluation of the profile."""
+        """The drop P(x) and dP/dx at points x strictly inside the roller: the slope
+        in closed form where the profile has one (profiles.drop_slope_inside: the
+        smooth profiles of linecontact.profiles), else by central differences (step
+        1e-7 L, inside the roller) from one evaluation of the profile at x, x + h and
+        x - h (profiles.drop_inside: without roller_drop's clamp and checks for the
+        profiles of linecontact.profiles). Central differences carry a relative error
+        of ~1e-9 (rounding of P over h); the slope enters the Newton step's grid columns
+        and the stiffness matrix, so the closed form moved the converged results of the
+        104 cases of tables/roller_accuracy.csv within the Newton tolerance: the
+        stiffness matrix by up to 8e-11 (of sqrt(K_ii K_jj)), q 1.4e-12, p_max 5e-13,
+        the depth 1e-14 (docs/profiled_rollers.md, "Time per solve")."""
+        exact = self._drop_slope_at
+        if exact is not None:
+            return exact(x)
         h, lo_in, hi_in = self._slope_consts
-        xp = np.minimum(x + h, hi_in)
-        xm = np.maximum(x - h, lo_in)
         n = len(x)
-        P = roller_drop(self.profile, self.length, np.concatenate((x, xp, xm)))
-        return P[:n], (P[n:2 * n] - P[2 * n:]) / (xp - xm)
+        X = np.empty(3 * n)
+        X[:n] = x
+        xp, xm = X[n:2 * n], X[2 * n:]
+        np.minimum(np.add(x, h, out=xp), hi_in, out=xp)
+        np.maximum(np.subtract(x, h, out=xm), lo_in, out=xm)
+        P = self._drop_at(X)
+        dP = np.subtract(P[n:2 * n], P[2 * n:])
+        return P[:n], np.divide(dP, np.subtract(xp, xm, out=xp), out=dP)
 
     # -- depth control ---------------------------------------------------------------
     @serial_blas
@@ -502,13 +548,19 @@ class ProfiledRoller:
         b[S] = np.sqrt(qS / cS)
         p = np.zeros(q.shape)
         p[S] = 2.0 * self.estar * np.sqrt(qS * cS)       # 2 q/(pi b)
+        # the first and last loaded slice (argmax of the mask: the indices of
+        # flatnonzero's first and last, without its index array)
+        on = q > 0
+        on0, on1 = int(on.argmax()), len(q) - 1 - int(on[::-1].argmax())
+        if not on[on0]:          # (the solver keeps at least one: never met)
+            raise ConvergenceError("no slice is loaded in the solution")
         start, stop, lo_edge, hi_edge = contact_extent(s.x, q, s.w, self.length,
-                                                        s.lo, s.hi)
+                                                        s.lo, s.hi, (on0, on1))
         # within the end slice's width (or L/1000) of an end counts as reaching it: a
         # log profile's contact approaches the end without touching it exactly, and
         # the contact's end is located to within the slice width there
-        near_lo = max(s.w[0], 1e-3 * self.length)
-        near_hi = max(s.w[-1], 1e-3 * self.length)
+        near_lo = max(float(s.w[0]), 1e-3 * self.length)
+        near_hi = max(float(s.w[-1]), 1e-3 * self.length)
         lo_edge = lo_edge or start <= -self.length / 2 + near_lo
         hi_edge = hi_edge or stop >= self.length / 2 - near_hi
         # an end where the drop is infinite (Lundberg, ISO 16281: ln 1/(1 - (2x/L)^2))
@@ -517,10 +569,10 @@ class ProfiledRoller:
         # 1 kN: contact ends 9.8 um before each end, peak 972 MPa 28 um from it, converged
         # from 1024 to 4096 cells; docs/profiled_rollers.md). A contact reaching the last
         # slice there is an end zone narrower than the slices: p_max unresolved, below.
-        inf_lo, inf_hi = (not np.isfinite(self._fP[0]), not np.isfinite(self._fP[-1]))
-        on = (q > 0).nonzero()[0]
-        end_zone = ((inf_lo and lo_edge and on[0] == 0)
-                    or (inf_hi and hi_edge and on[-1] == len(q) - 1))
+        inf_lo, inf_hi = (not math.isfinite(self._fP[0]),
+                          not math.isfinite(self._fP[-1]))
+        end_zone = ((inf_lo and lo_edge and on0 == 0)
+                    or (inf_hi and hi_edge and on1 == len(q) - 1))
         lo_edge = lo_edge and not inf_lo
         hi_edge = hi_edge and not inf_hi
         edge = {(True, True): "both", (True, False): "-x", (False, True): "+x"}.get(
@@ -530,7 +582,7 @@ class ProfiledRoller:
         if edge is None:
             pm, xm = peak_pressure(s.x, p)
             k = int(p.argmax())
-            resolved = bool(on[0] + 2 <= k <= on[-1] - 2) and not end_zone
+            resolved = on0 + 2 <= k <= on1 - 2 and not end_zone
             msg = ("peak of the Hertz strips (coupled slices, interpolated); the contact "
                    "stays inside the roller")
             if end_zone:
@@ -557,8 +609,13 @@ class ProfiledRoller:
         if bmax > 0.1 * self.radius:
             notes.append(f"contact half-width b = {bmax:.3g} m exceeds 0.1 R: the "
                          "parabolic gap y^2/(2R) is inaccurate")
-        with np.errstate(invalid="ignore"):
-            approach = float((d + th * self._fx - self._fP).max())
+        # the largest rigid overlap on the 16 n + 1 points (where the drop is infinite
+        # at an end the overlap there is -inf, never NaN: no floating-point warning to
+        # silence, as _grid's overlap)
+        over = th * self._fx
+        over += d
+        over -= self._fP
+        approach = float(over.max())
         gaps = ([(start + self.length / 2) / self.length] if inf_lo else []) + (
             [(self.length / 2 - stop) / self.length] if inf_hi else [])
         notes.append(coverage_note(self.radius, self.length, self.estar,
@@ -566,7 +623,7 @@ class ProfiledRoller:
                                     edge is not None, self.n_slices,
                                     min(gaps) if gaps else None))
         its, self.iterations = self.iterations, 0
-        return RollerSolution(
+        return RollerSolution._built(
             depth=float(d), tilt=float(th), force=float(F), moment=float(M),
             stiffness=float(K[0, 0]), tilt_stiffness=float(K[1, 1]), stiffness_matrix=K,
             x=s.x.copy(), width=s.w.copy(), q=qN, half_width=b, pressure=p, p_max=pm, x_at_p_max=xm,
@@ -738,6 +795,31 @@ class ProfiledRoller:
             new = th - s.moment / s.stiffness_matrix[1, 1]
             th = new if lo < new < hi else 0.5 * (lo + hi)
         raise ConvergenceError(f"no zero-moment tilt at depth {depth:g} m")
+
+
+_FINE = {}
+
+
+def _fine_grid(profile, length, n):
+    """The 16 n + 1 points along the roller on which the overlap interval is found,
+    the profile's drop there (checked: finite and >= 0, infinite only at an end), the
+    cache of _end_root's points and that of the first-contact depth per tilt
+    (_contact_depth), which depend on the profile, L and n alone:
+    shared by the rollers of equal profiles (profiles.profile_identity; built anew for
+    a profile without one), up to 16 of them (the arrays read-only)."""
+    ident = profile_identity(profile)
+    key = None if ident is None else (ident, length, n)
+    hit = _FINE.get(key) if key is not None else None
+    if hit is None:
+        fx = np.linspace(-length / 2, length / 2, 16 * n + 1)
+        fP = roller_drop(profile, length, fx, ends_may_be_inf=True)
+        fx.flags.writeable = fP.flags.writeable = False
+        hit = (fx, fP, {}, {})
+        if key is not None:
+            if len(_FINE) >= 16 or cache_nbytes(_FINE) > CACHE_BYTES:
+                _FINE.clear()
+            _FINE[key] = hit
+    return hit
 
 
 def roller_contact(radius, length, estar, profile=None, *, depth=None, force=None,

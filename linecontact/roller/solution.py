@@ -4,7 +4,7 @@ contact's extent and peak pressure off the slices.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -121,6 +121,20 @@ class RollerSolution:
     p_max_resolved: bool = True
     width: np.ndarray = None
 
+    @classmethod
+    def _built(cls, **fields):
+        """The solution holding `fields` (every field, by name), as the constructor
+        builds it (the attributes in the order of the fields) without its per-field
+        frozen-dataclass assignments: a solver returns one per solve, and the
+        constructor's 25 keyword arguments cost several microseconds there."""
+        if len(fields) != len(_FIELDS):
+            raise TypeError(f"RollerSolution fields: {sorted(set(fields) ^ set(_FIELDS))}")
+        obj = object.__new__(cls)
+        d = obj.__dict__
+        for name in _FIELDS:
+            d[name] = fields[name]
+        return obj
+
     def to_dict(self, arrays=True):
         """Plain-Python dict (for JSON): scalars in SI, arrays as lists if `arrays`.
 
@@ -154,32 +168,43 @@ class RollerSolution:
         return d
 
 
-def contact_extent(x, q, w, L, lo=None, hi=None):
+#: the field names of RollerSolution, in their order (RollerSolution._built)
+_FIELDS = tuple(f.name for f in fields(RollerSolution))
+
+
+def contact_extent(x, q, w, L, lo=None, hi=None, loaded=None):
     """Ends of the contact from the loaded slices, q extrapolated to zero (w: the slice
-    widths, an array or one width for all)."""
+    widths, an array or one width for all; `loaded`: the first and last loaded slice
+    where the caller has them, else found here)."""
     w = np.asarray(w, dtype=float)
     if w.shape != np.shape(x):                 # one width for all
         w = np.broadcast_to(w, np.shape(x))
-    on = np.flatnonzero(q > 0)
-    i0, i1 = on[0], on[-1]
+    if loaded is None:
+        on = np.flatnonzero(q > 0)
+        loaded = int(on[0]), int(on[-1])
+    i0, i1 = loaded
     n = len(x)
+    # the few slices read below as Python floats (the same IEEE arithmetic as numpy's
+    # scalars, at a fraction of the cost per operation)
+    xl, ql, wl = np.asarray(x, dtype=float).tolist(), np.asarray(q).tolist(), w.tolist()
 
     def end(i, step):
         # q near a smooth contact edge falls linearly; use the last three loaded slices
-        idx = [i - step * k for k in range(3)]
-        if not all(0 <= j < n and q[j] > 0 for j in idx):
-            idx = idx[:2] if all(0 <= j < n and q[j] > 0 for j in idx[:2]) else idx[:1]
-        if len(idx) == 1:
-            return x[i] + step * w[i] / 2
+        # (slice i is loaded: the line through two where the third is not, or i alone)
+        j1, j2 = i - step, i - 2 * step
+        two = 0 <= j1 < n and ql[j1] > 0
+        three = two and 0 <= j2 < n and ql[j2] > 0
+        if not two:
+            return xl[i] + step * wl[i] / 2
         # the line or parabola through them, in u = x - x[i]: q0 + s1 u + a u (u - u1)
         # (Newton's divided differences), its real roots in closed form
-        u1 = float(x[idx[1]] - x[i])
-        q0, q1 = float(q[i]), float(q[idx[1]])
+        u1 = xl[j1] - xl[i]
+        q0, q1 = float(ql[i]), float(ql[j1])
         s1 = (q1 - q0) / u1
         a = 0.0
-        if len(idx) == 3:
-            u2 = float(x[idx[2]] - x[i])
-            a = ((float(q[idx[2]]) - q1) / (u2 - u1) - s1) / u2
+        if three:
+            u2 = xl[j2] - xl[i]
+            a = ((float(ql[j2]) - q1) / (u2 - u1) - s1) / u2
         bq = s1 - a * u1
         if a == 0.0:
             roots = [-q0 / bq] if bq != 0.0 else []
@@ -190,11 +215,11 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
             else:
                 h = -0.5 * (bq + math.copysign(math.sqrt(disc), bq))
                 roots = [h / a, q0 / h] if h != 0.0 else [0.0]
-        lo, hi = sorted((0.0, step * float(w[i])))
+        lo, hi = sorted((0.0, step * wl[i]))
         roots = [r for r in roots if lo <= r <= hi]
         if not roots:
-            return x[i] + step * w[i] / 2
-        return float(x[i] + min(roots, key=abs))
+            return xl[i] + step * wl[i] / 2
+        return xl[i] + min(roots, key=abs)
 
     lo = -L / 2 if lo is None else lo
     hi = L / 2 if hi is None else hi
@@ -207,14 +232,17 @@ def contact_extent(x, q, w, L, lo=None, hi=None):
 def peak_pressure(x, p):
     """Peak of p over the slices, refined by a parabola through p^2 (exact for Hertz;
     the slice centres x may be unevenly spaced)."""
-    k = int(np.argmax(p))
+    p = np.asarray(p)
+    k = int(p.argmax())
+    # as Python floats (the same arithmetic as numpy's scalars, faster)
     if 0 < k < len(x) - 1 and p[k - 1] > 0 and p[k + 1] > 0:
-        y0, y1, y2 = p[k - 1] ** 2, p[k] ** 2, p[k + 1] ** 2
-        h0, h1 = x[k] - x[k - 1], x[k + 1] - x[k]
+        (p0, p1, p2), (x0, x1, x2) = p[k - 1:k + 2].tolist(), x[k - 1:k + 2].tolist()
+        y0, y1, y2 = p0 ** 2, p1 ** 2, p2 ** 2
+        h0, h1 = x1 - x0, x2 - x1
         s0, s1 = (y1 - y0) / h0, (y2 - y1) / h1           # divided differences
         curv = (s1 - s0) / (h0 + h1)                       # y = y1 + g u + curv u^2
         if curv < 0:
             g = s0 + curv * h0                             # slope at x[k]
             u = -g / (2 * curv)
-            return math.sqrt(y1 - g * g / (4 * curv)), float(x[k] + u)
+            return math.sqrt(y1 - g * g / (4 * curv)), x1 + u
     return float(p[k]), float(x[k])

@@ -910,6 +910,14 @@ class SliceEquations:
         left_count = np.zeros(n, int)
         everyone = np.arange(n)
         last_size = math.inf            # the last step's size (inf: none, or damped)
+        # the grid is that of the current (d, theta) once rebuilt: the one passed in
+        # may not be (start_at_force returns its last sweep's grid, built at the sweep
+        # before's answer, with that answer's d and theta; a warm start's single sweep
+        # is solved on the grid of the depth it started from). A step on such a grid
+        # solves equations whose ends are not those of its d and theta: however small,
+        # it says nothing of the error of the state on its own grid (a sweep's solve,
+        # offset crown at a free tilt, ended on its first step with F off by 1.6e-7)
+        own_grid = force is None and not zero_moment
         for _ in range(max_steps):
             s.iterations += 1
             over = d + theta * s.x - s.P
@@ -1025,7 +1033,7 @@ class SliceEquations:
             # (and only where the steps contract faster than linearly, size <= the
             # last step's size^1.5: a Newton stalled at its rounding floor, an
             # ill-conditioned system's, is never taken as converged)
-            near = (not small and left is None and size <= NEAR_STEP
+            near = (not small and own_grid and left is None and size <= NEAR_STEP
                     and size <= last_size ** 1.5
                     and NEWTON_C * newton_error(qs, cs, dq, dc, qsc, R, step[0] / dmax,
                                                 step[1] * (s.hi - s.lo) / dmax) <= tol)
@@ -1075,6 +1083,7 @@ class SliceEquations:
                 it = s.iterations
                 s = regrid(d, theta)
                 s.iterations = it
+                own_grid = True
                 # slices outside the new overlap interval's grid keep their index
         raise ConvergenceError("Newton iteration on the slice loads (bordered) did not "
                                f"converge in {max_steps} steps")

@@ -282,7 +282,7 @@ def _fraction_to_boundary(qs, cs, dq, dc):
 #: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
 #: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
 #: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
-#: most 9.9 times (10.7 with the numba engine, the same step), so 100 leaves a margin
+#: most 10.7 times (either engine, the same step at the rounding floor), so 100 leaves a margin
 #: of about ten; the returned state is then within the tolerance of the converged one.
 NEWTON_C = 100.0
 #: the largest step size (as `small` measures it) at which the estimate is tried: above

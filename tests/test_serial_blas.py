@@ -96,7 +96,8 @@ def test_compiled_engine_solves_use_one_thread():
     its own BLAS library, which a process may load only after the guard was built (a
     first solve with numpy): inside a later compiled solve every loaded BLAS, scipy's
     included, runs one thread (recorded at each compiled solve, in a fresh process
-    that has not loaded scipy's BLAS before)."""
+    that has not loaded scipy's BLAS before; _compiled.newton_step holds the Newton
+    step's solve)."""
     pytest.importorskip("numba")
     import subprocess
     import sys
@@ -111,11 +112,11 @@ def test_compiled_engine_solves_use_one_thread():
         ".at_force(4200.0)\n"
         "r = ProfiledRoller(5e-3, 14e-3, 115e9, 'iso16281', engine='numba')\n"
         "from linecontact.roller import _compiled\n"
-        "seen, solve_sums = [], _compiled.solve_sums\n"
+        "seen, newton_step = [], _compiled.newton_step\n"
         "def recording(*a):\n"
         "    seen.append(threads())\n"
-        "    return solve_sums(*a)\n"
-        "_compiled.solve_sums = recording\n"
+        "    return newton_step(*a)\n"
+        "_compiled.newton_step = recording\n"
         "with threadpoolctl.threadpool_limits(2, user_api='blas'):\n"
         "    libs = len(threads())\n"
         "    r.at_force(4200.0, tilt=2e-3)\n"

@@ -9,13 +9,14 @@ cached unit geometry (near and far edge distances, their log ratio, the far-fiel
 power differences G), the same series coefficients
 (:func:`~linecontact.roller.kernel.far_field_coefficients`) and the same cubic spline
 (:func:`~linecontact.roller.kernel.spline_table`), the same split into far field,
-near band and diagonal. Three differences, all below 1e-15 of each matrix's scale:
-sums run in another order, the far-field sum of a pair stops once the next power of
-(b/t)^2 at its near edge is below 1e-18 (the numpy code always takes all 14 terms; at
-t/b = 3 they are needed, from t/b = 32 six and from 180 four suffice), and the
-spline's ln(t/b) is ln t + ln(span/b) with ln t cached (one log per source, not two
-per pair). The Jacobian, residual and grid terms are assembled from each source's
-column as it is computed, without the four intermediate matrices.
+near band and diagonal. Two differences, both at the level of rounding (below
+2e-15 of each matrix's scale): sums run in another order (the far-field series, all
+14 terms, over every target in contiguous loops that numba vectorises, the near
+band's entries then overwritten), and the spline's ln(t/b) is ln t + ln(span/b) with
+ln t cached (one log per source, not two per pair). The Jacobian, residual and grid
+terms are assembled from each source's column as it is computed, without the four
+intermediate matrices. The spline's coefficients are kept as (segment, power,
+function): a point's sixteen in two cache lines.
 
 Beyond the table (tau >= 1e4: a strip far narrower than the slices, a slice about to
 leave the contact) the strip functions come from their series, as in the numpy code;
@@ -44,8 +45,9 @@ rescan_blas()
 
 __all__ = []
 
-#: the far-field sum of a pair takes term j (x^(j + 1) times a coefficient below 1.3 in
-#: magnitude, x = (b/t)^2 at the near edge) where x^(j + 1) >= FAR_STOP, term 0 always
+#: the series of a near-band pair beyond the spline table (t/b >= tau_max = 1e4) stops
+#: once the next power of x = (b/t)^2 is below FAR_STOP (a term x^(j + 1) times a
+#: coefficient below 1.3 in magnitude); the far field takes every term
 FAR_STOP = 1e-18
 
 
@@ -86,8 +88,8 @@ def _far_powers(b, span, fc):
 _far_powers = _jit(_far_powers)
 
 
-def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, taumax,
-            tmin, tmax, coef, z0, ih, h, W, bnd):
+def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, tmin,
+            tmax, coef, z0, ih, h, W):
     """The four kernels of source slice si (strip half-width bi, far-field series
     coefficients Cs = C[s]) at every slice k: W[f, k] for f = A, EA, D, ED (the far
     field of A alone unless `full`: W[1:] then undefined there). tn, tf, lr,
@@ -99,10 +101,8 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, ta
 
     The near band, {k : tn[si, k] < 3 b/span} (the numpy code's test), is an interval
     [kl, kr] around si, since tn grows away from the source; outside it the far-field
-    series, term j over the targets whose near-edge t/b <= taumax[j] (those at which
-    it can exceed FAR_STOP): two intervals [bnd[0, j], kl) and (bnd[1, j], kr] that
-    shrink with j, so that the targets fall into bands of equal term counts."""
-    nseg = coef.shape[2]
+    series, all its terms as in the numpy code."""
+    nseg = coef.shape[0]
     ibi = span / bi
     thr = 3.0 * (1.0 / ibi)
     tnr = tn[si]
@@ -115,47 +115,36 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, ta
         while kr < n - 1 and tnr[kr + 1] < thr:
             kr += 1
         K = Gt.shape[1]
-        lo, hi = 0, n - 1
-        for j in range(K):
-            if j > 0:
-                while lo < kl and tnr[lo] * ibi > taumax[j]:
-                    lo += 1
-                while hi > kr and tnr[hi] * ibi > taumax[j]:
-                    hi -= 1
-            bnd[0, j] = lo
-            bnd[1, j] = hi
-        bnd[0, K] = kl
-        bnd[1, K] = kr
         g = Gt[si]
-        lrr = lr[si]
-        W[:, :kl] = 0.0
-        W[:, kr + 1:] = 0.0
-        # term j over the targets that take it: contiguous loops over 1D views (which
-        # numba vectorises; indexing W[f, k] in the loop it does not)
+        # the far-field series, every term j in turn, over every target: contiguous
+        # loops of n (which numba vectorises; over the far targets alone, runs of a
+        # few slices each side, they ran as scalars); the near band's entries are
+        # overwritten below
+        w0, w1, w2, w3 = W[0], W[1], W[2], W[3]
         for j in range(K):
+            gj = g[j]
             c0, c1, c2, c3 = Cs[j, 0], Cs[j, 1], Cs[j, 2], Cs[j, 3]
-            for side in range(2):
-                if side == 0:
-                    k0, k1 = bnd[0, j], kl
-                else:
-                    k0, k1 = kr + 1, bnd[1, j] + 1
-                if k1 <= k0:
-                    continue
-                gj = g[j, k0:k1]
-                w0, w1, w2, w3 = W[0, k0:k1], W[1, k0:k1], W[2, k0:k1], W[3, k0:k1]
-                if not full:
-                    for k in range(gj.shape[0]):
-                        w0[k] += gj[k] * c0
-                    continue
-                for k in range(gj.shape[0]):
+            if j == 0:
+                for k in range(n):
+                    w0[k] = gj[k] * c0
+                if full:
+                    for k in range(n):
+                        w1[k] = gj[k] * c1
+                        w2[k] = gj[k] * c2
+                        w3[k] = gj[k] * c3
+                continue
+            if not full:
+                for k in range(n):
                     w0[k] += gj[k] * c0
-                    w1[k] += gj[k] * c1
-                    w2[k] += gj[k] * c2
-                    w3[k] += gj[k] * c3
-        for k in range(kl):
-            W[0, k] = lrr[k] + W[0, k]
-        for k in range(kr + 1, n):
-            W[0, k] = lrr[k] + W[0, k]
+                continue
+            for k in range(n):
+                w0[k] += gj[k] * c0
+                w1[k] += gj[k] * c1
+                w2[k] += gj[k] * c2
+                w3[k] += gj[k] * c3
+        lrr = lr[si]
+        for k in range(n):
+            w0[k] = lrr[k] + w0[k]
     # the near band (every pair without the far field) at both edges, the diagonal at
     # tau = w/2b
     tfr = tf[si]
@@ -203,14 +192,14 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, ta
             if i > nseg - 1:
                 i = nseg - 1
             t = (u - i) * h
-            r += sg * (((coef[3, 0, i] * t + coef[2, 0, i]) * t + coef[1, 0, i]) * t
-                       + coef[0, 0, i])
-            ta += sg * (((coef[3, 1, i] * t + coef[2, 1, i]) * t + coef[1, 1, i]) * t
-                        + coef[0, 1, i])
-            p += sg * (((coef[3, 2, i] * t + coef[2, 2, i]) * t + coef[1, 2, i]) * t
-                       + coef[0, 2, i])
-            tp += sg * (((coef[3, 3, i] * t + coef[2, 3, i]) * t + coef[1, 3, i]) * t
-                        + coef[0, 3, i])
+            r += sg * (((coef[i, 3, 0] * t + coef[i, 2, 0]) * t + coef[i, 1, 0]) * t
+                       + coef[i, 0, 0])
+            ta += sg * (((coef[i, 3, 1] * t + coef[i, 2, 1]) * t + coef[i, 1, 1]) * t
+                        + coef[i, 0, 1])
+            p += sg * (((coef[i, 3, 2] * t + coef[i, 2, 2]) * t + coef[i, 1, 2]) * t
+                       + coef[i, 0, 2])
+            tp += sg * (((coef[i, 3, 3] * t + coef[i, 2, 3]) * t + coef[i, 1, 3]) * t
+                        + coef[i, 0, 3])
         if ntau == 1:
             W[0, k] = 2.0 * (np.log(span * dg[si] / bi) + r)
             W[1, k] = 2.0 * ta
@@ -227,7 +216,7 @@ def _column(si, bi, Cs, n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, full, ta
 _column = _jit(_column)
 
 
-def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax,
+def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, tmin, tmax,
              coef, z0, ih, h, A, EA, D, ED):
     """A (and EA, D, ED where they are other arrays than A), (len(T), len(S)), Fortran
     order: kernels(). False where a spline argument leaves the table."""
@@ -235,11 +224,10 @@ def _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin,
     ns, nt = S.shape[0], T.shape[0]
     C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
     W = np.empty((4, n))
-    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
     full = EA.shape[0] > 0
     for s in range(ns):
         if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
-                       full, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+                       full, tmin, tmax, coef, z0, ih, h, W):
             return False
         for kt in range(nt):
             A[kt, s] = W[0, T[kt]]
@@ -256,7 +244,7 @@ _kernels = _jit(_kernels)
 
 
 def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
-                tn, tf, lr, ltn, ltf, Gt, fc, far, taumax, tmin, tmax, coef, z0, ih, h,
+                tn, tf, lr, ltn, ltf, Gt, fc, far, tmin, tmax, coef, z0, ih, h,
                 res, J, rhs, gap, grid):
     """res, J (Fortran order), rhs, gap and grid of SliceEquations.linearised, filled
     in place, one source column at a time; spos[p] is the position of S[p] among the
@@ -275,7 +263,6 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
         b[s] = np.sqrt(bb[s])
     C = _far_powers(b, span, fc) if far else np.zeros((ns, 1, 4))
     W = np.empty((4, n))
-    bnd = np.empty((2, Gt.shape[1] + 1), np.int64)
     aq = np.zeros(nt)
     dc = np.zeros(ns)
     eaq = np.zeros(ns)
@@ -283,7 +270,7 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
     contiguous = S[ns - 1] - S[0] + 1 == ns
     for s in range(ns):
         if not _column(S[s], b[s], C[s], n, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, far,
-                       True, taumax, tmin, tmax, coef, z0, ih, h, W, bnd):
+                       True, tmin, tmax, coef, z0, ih, h, W):
             return False
         qv = qs[s]
         cv = cs[s]
@@ -372,7 +359,10 @@ def table():
     """tau_min, tau_max, coef, z0, 1/h, h of the spline table (built once)."""
     if not _TABLE:
         t = spline_table()
-        _TABLE.append((float(t.tau_min), float(t.tau_max), t.coef, float(t.z0),
+        # (segment, power, function): a point's 16 coefficients in two cache lines
+        # (in the table's (power, function, segment) order 16 lines apart)
+        _TABLE.append((float(t.tau_min), float(t.tau_max),
+                       np.ascontiguousarray(t.coef.transpose(2, 0, 1)), float(t.z0),
                        1.0 / t.h, float(t.h)))
     return _TABLE[0]
 
@@ -383,20 +373,15 @@ _T = {}
 
 def _transposed(tn, tf, lr, G, fc):
     """The unit geometry as [source, target] (each source's column contiguous): tn,
-    tf, lr, ln tn, ln tf, and G as (source, power, target); taumax[j] =
-    FAR_STOP^(-1/(2(j+1))): term j of the series counts only where the near edge's t/b
-    is at most taumax[j]. Kept for the last few geometries (the numpy code's caches
-    hold the originals)."""
+    tf, lr, ln tn, ln tf, and G as (source, power, target). Kept for the last few
+    geometries (the numpy code's caches hold the originals)."""
     got = _T.get(id(tn))
     if got is None or got[0] is not tn or got[1] is not G:
         if len(_T) >= 8 or cache_nbytes(_T) > CACHE_BYTES:
             _T.clear()
-        K = fc.shape[0]
-        taumax = FAR_STOP ** (-1.0 / (2.0 * np.arange(1, K + 1)))
         Gt = _NO_G if G is None else np.ascontiguousarray(G.transpose(0, 2, 1))
         tnt, tft = np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T)
-        got = (tn, G, tnt, tft, np.ascontiguousarray(lr.T), np.log(tnt), np.log(tft), Gt,
-               taumax)
+        got = (tn, G, tnt, tft, np.ascontiguousarray(lr.T), np.log(tnt), np.log(tft), Gt)
         _T[id(tn)] = got
     return got[2:]
 
@@ -410,9 +395,9 @@ def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
         EA = D = ED = np.empty((0, 0), order="F")
     else:
         EA, D, ED = (np.empty((nt, ns), order="F") for _ in range(3))
-    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    tn, tf, lr, ltn, ltf, Gt = _transposed(tn, tf, lr, G, fc)
     if not _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, G is not None,
-                    taumax, *table(), A, EA, D, ED):
+                    *table(), A, EA, D, ED):
         return None
     return (A, None, None, None) if a_only else (A, D, EA, ED)
 
@@ -427,10 +412,10 @@ def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
     rhs = np.empty((2 * ns, 2))
     gap = np.empty(nt)
     grid = np.empty((2, 2))
-    tn, tf, lr, ltn, ltf, Gt, taumax = _transposed(tn, tf, lr, G, fc)
+    tn, tf, lr, ltn, ltf, Gt = _transposed(tn, tf, lr, G, fc)
     if not _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, float(theta),
                        np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr, ltn,
-                       ltf, Gt, fc, G is not None, taumax, *table(), res, J, rhs, gap,
+                       ltf, Gt, fc, G is not None, *table(), res, J, rhs, gap,
                        grid):
         return None
     return res, J, rhs, gap, grid
@@ -644,6 +629,82 @@ def solve_sums(J, B, ns, qsc, R, w, x, S, qs):
         z = np.linalg.solve(J, B)
         return (z,) + bordered_sums(z, ns, qsc, R, w, x, S, qs)
     return z, float(sums[0]), float(sums[1]), Wz
+
+
+def _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
+                 over, B, Kout, st, hit_q, upd):
+    """One bordered Newton step after the linearisation, in one call: the scaled system
+    (_scaled_system), its dense solve and sums (_solve_sums), K = Wz[:, 1:] + grid (in
+    Kout), the step in (d, theta) as SliceEquations.bordered computes it (mode 1: the
+    force row, 2: the moment row, 3: both by Cramer's rule, 0: none; target = F/(pi E*);
+    st[:2]), the step dz and its mask of slices driven below zero (_step_out), and,
+    where no slice leaves, the damped update of q and c (_step_update: upd = alpha,
+    largest overlap, largest |dq|, largest |dc|). Returns (status, z, dz, out): status
+    0 the update done; 1 slices leave (nout > 0 and ns > 2: the caller removes them
+    and solves again, as in the numpy code); 2 Cramer's determinant is zero or not
+    finite (the caller solves the 2 x 2 system with numpy, st[2:4] holding its
+    right-hand side; dz and out are then empty)."""
+    n2 = 2 * ns
+    _scaled_system(J, res, rhs, ns, 1.0 / (qsc * R), qsc * R, -1.0 / qsc, 1.0 / qsc, R, B)
+    z = np.linalg.solve(J, B)
+    Wz = np.empty((2, 3))
+    wq, wxq = _bordered_sums(z, ns, qsc, 1.0 / R, w, x, S, qs, Wz)
+    for i in range(2):
+        for j in range(2):
+            Kout[i, j] = Wz[i, j + 1] + grid[i, j]
+    lin0 = Wz[0, 0]
+    lin1 = Wz[1, 0]
+    s0 = 0.0
+    s1 = 0.0
+    if mode == 3:
+        r0 = target - wq - lin0
+        r1 = -wxq - lin1
+        k00, k01, k10, k11 = Kout[0, 0], Kout[0, 1], Kout[1, 0], Kout[1, 1]
+        det = k00 * k11 - k01 * k10
+        if det == 0.0 or not np.isfinite(det):
+            st[2] = r0
+            st[3] = r1
+            return 2, z, np.empty(0), np.empty(0, np.bool_)
+        s0 = (r0 * k11 - k01 * r1) / det
+        s1 = (k00 * r1 - k10 * r0) / det
+    elif mode == 1:
+        s0 = (target - wq - lin0) / Kout[0, 0]
+    elif mode == 2:
+        s1 = (-wxq - lin1) / Kout[1, 1]
+    st[0] = s0
+    st[1] = s1
+    dz = np.empty(n2)
+    out = np.empty(ns, np.bool_)
+    nout = _step_out(z, s0, s1, ns, qs, dz, out)
+    if nout > 0 and ns > 2:
+        return 1, z, dz, out
+    _step_update(q, c, S, qs, cs, dz[:ns], dz[ns:], over, x, s0, s1, hit_q, upd)
+    return 0, z, dz, out
+
+
+_newton_step = _jit(_newton_step)
+
+
+def newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
+                over):
+    """One step of SliceEquations.bordered after the linearisation in one compiled
+    call (_newton_step): (status, B, z, K, step, dz, out, hit_q, upd), B the scaled
+    right-hand sides (J scaled in place), step[:2] the step in (d, theta) (status 2:
+    step[2:] the right-hand side of the 2 x 2 system), upd = (alpha, largest overlap,
+    largest |dq|, largest |dc|) where status is 0. (None, B) where numba refuses the
+    dense system (singular, not finite): J and B are scaled, and the caller's numpy
+    solve answers as the numpy engine would."""
+    B = np.empty((2 * ns, 3))
+    K = np.empty((2, 2))
+    st = np.empty(4)
+    hit_q = np.empty(ns, np.bool_)
+    upd = np.empty(4)
+    try:
+        status, z, dz, out = _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs,
+                                          target, mode, q, c, over, B, K, st, hit_q, upd)
+    except np.linalg.LinAlgError:
+        return None, B
+    return status, B, z, K, st, dz, out, hit_q, upd
 
 
 def _start_solve(M, rhs, ns, nb, keep):

@@ -929,46 +929,66 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            # (the compiled engine does this step's small arithmetic in two calls,
-            # _compiled.scaled_system and .bordered_sums: the same products, the sums
-            # in another order)
             jit = compiled() if s.engine == "numba" else None
-            B = (jit.scaled_system if jit is not None else scaled_system)(
-                J, res, rhs, ns, qsc, R)
+            fused = status = None
+            if jit is not None:
+                # the scaling, dense solve, sums, step, mask and damped update below in
+                # one compiled call (_compiled.newton_step: the same arithmetic); it
+                # stops where slices leave (status 1) or Cramer's rule fails (2), and
+                # the lines below go on from there
+                fused = jit.newton_step(
+                    J, res, rhs, grid, ns, qsc, R, s.w, s.x, S, qs, cs,
+                    0.0 if force is None else force / piE,
+                    (force is not None) + 2 * bool(zero_moment), q, c, over)
+                B = fused[1]
+                if fused[0] is None:         # numba refused the system: numpy's solve
+                    fused = None
+            else:
+                B = scaled_system(J, res, rhs, ns, qsc, R)
             left = None
             while True:
-                if jit is not None:
-                    # the dense solve and the sums in one compiled call
-                    z, wq, wxq, Wz = jit.solve_sums(J, B, ns, qsc, R, s.w, s.x, S, qs)
+                if fused is not None:
+                    status, _, z, K, step, dz, out, hit_q, upd = fused
+                    fused = None
+                    if status == 2:
+                        step = np.linalg.solve(K, step[2:])
+                        dz, out, nout = jit.step_out(z, step[0], step[1], ns, qs)
+                    else:
+                        nout = status        # 1: slices leave (0: the update is done)
                 else:
-                    z = np.linalg.solve(J, B)
-                    z[:ns] *= qsc
-                    z[ns:] *= 1.0 / R
-                    W = np.empty((2, ns))
-                    s.w.take(S, out=W[0])
-                    np.multiply(W[0], s.x[S], out=W[1])
-                    wq, wxq = W @ qs
-                    Wz = W @ z[:ns]
-                # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
-                K = Wz[:, 1:] + grid
-                lin = Wz[:, 0]
-                if force is not None and zero_moment:
-                    r = (force / piE - wq - lin[0], -wxq - lin[1])
-                    # (the compiled engine: the 2 x 2 system by Cramer's rule,
-                    # np.linalg.solve's call costs more than its arithmetic)
-                    step = _cramer(K, r) if jit is not None else None
-                    if step is None:
-                        step = np.linalg.solve(K, np.array(r))
-                elif force is not None:
-                    step = np.array([(force / piE - wq - lin[0]) / K[0, 0], 0.0])
-                elif zero_moment:
-                    step = np.array([0.0, (-wxq - lin[1]) / K[1, 1]])
-                else:
-                    step = np.zeros(2)
-                if jit is not None:
-                    dz, out, nout = jit.step_out(z, step[0], step[1], ns, qs)
-                else:
-                    dz = z[:, 0] + z[:, 1:] @ step
+                    status = None
+                    if jit is not None:
+                        # the dense solve and the sums in one compiled call
+                        z, wq, wxq, Wz = jit.solve_sums(J, B, ns, qsc, R, s.w, s.x, S, qs)
+                    else:
+                        z = np.linalg.solve(J, B)
+                        z[:ns] *= qsc
+                        z[ns:] *= 1.0 / R
+                        W = np.empty((2, ns))
+                        s.w.take(S, out=W[0])
+                        np.multiply(W[0], s.x[S], out=W[1])
+                        wq, wxq = W @ qs
+                        Wz = W @ z[:ns]
+                    # K = d(w.q, (w x).q)/d(d, theta) along the equations (per pi E*)
+                    K = Wz[:, 1:] + grid
+                    lin = Wz[:, 0]
+                    if force is not None and zero_moment:
+                        r = (force / piE - wq - lin[0], -wxq - lin[1])
+                        # (the compiled engine: the 2 x 2 system by Cramer's rule,
+                        # np.linalg.solve's call costs more than its arithmetic)
+                        step = _cramer(K, r) if jit is not None else None
+                        if step is None:
+                            step = np.linalg.solve(K, np.array(r))
+                    elif force is not None:
+                        step = np.array([(force / piE - wq - lin[0]) / K[0, 0], 0.0])
+                    elif zero_moment:
+                        step = np.array([0.0, (-wxq - lin[1]) / K[1, 1]])
+                    else:
+                        step = np.zeros(2)
+                    if jit is not None:
+                        dz, out, nout = jit.step_out(z, step[0], step[1], ns, qs)
+                    else:
+                        dz = z[:, 0] + z[:, 1:] @ step
                 dq, dc = dz[:ns], dz[ns:]
                 # slices at an end of the loaded set that the full step drives to q < 0
                 # are outside the contact: they leave at once (they would only block the
@@ -976,6 +996,8 @@ class SliceEquations:
                 # linearisation (_unloaded: no new kernels; a fresh linearisation for
                 # each slice leaving took 22 % more linearisations over the 104 cases
                 # of tables/roller_accuracy.csv)
+                if status == 0:
+                    break
                 if jit is None:
                     out = qs + dq < 0
                     nout = out.any()
@@ -991,7 +1013,10 @@ class SliceEquations:
                 S = S[~out]
                 ns = len(S)
                 qs, cs = q[S], c[S]
-            if jit is not None:
+            if status == 0:
+                # (done in the compiled step)
+                alpha, dmax, dqmax, dcmax = (float(v) for v in upd)
+            elif jit is not None:
                 # the same update in one compiled call (_compiled.step_update)
                 alpha, hit_q, dmax, dqmax, dcmax = jit.step_update(
                     q, c, S, qs, cs, dq, dc, over, s.x, step[0], step[1])

@@ -106,6 +106,23 @@ def test_a_singular_newton_system_falls_back_to_the_nested_iteration():
     assert abs(s.force / 5481.615554452891 - 1) < 1e-9
 
 
+def test_a_singular_cold_start_falls_back_to_the_nested_iteration(monkeypatch):
+    """The cold start's bordered linear system (start_at_force) singular, as the
+    Newton system above: a failure to converge, not numpy's LinAlgError to the user.
+    Forced here (no in-range case is known to do it): the nested iteration answers
+    with the force to its tolerance and the same state as the bordered solve (depth
+    within 1e-9 of the largest overlap: both converge to the Newton tolerance)."""
+    from linecontact.roller.slices import SliceEquations
+    ref = ProfiledRoller(D / 2, 14e-3, E, "iso16281", engine="numpy").at_force(4200.0)
+
+    def singular(self, *args, **kwargs):
+        raise np.linalg.LinAlgError("Singular matrix")
+    monkeypatch.setattr(SliceEquations, "start_at_force", singular)
+    s = ProfiledRoller(D / 2, 14e-3, E, "iso16281", engine="numpy").at_force(4200.0)
+    assert abs(s.force / 4200.0 - 1) < 1e-9
+    assert abs(s.depth - ref.depth) < 1e-9 * max(ref.depth, 1e-12), (s.depth, ref.depth)
+
+
 @pytest.mark.parametrize("engine", ["numpy", "numba"])
 def test_a_sweeps_warm_start_is_not_ended_on_its_first_grid(monkeypatch, engine):
     """A sweep on one roller (a random case of the covered range: offset crown x0 = 2

@@ -493,8 +493,13 @@ class ProfiledRoller:
                 on = qo > 0
                 ratio = float((d + th * s.x - s.P).max()) / eo
                 width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
-            first = s.start_at_force(self._grid, d, th, force, zero_moment, width,
-                                     last_n=self.n_slices)
+            try:
+                first = s.start_at_force(self._grid, d, th, force, zero_moment, width,
+                                         last_n=self.n_slices)
+            except np.linalg.LinAlgError as err:
+                # as a singular Newton system below: the nested iteration answers
+                raise ConvergenceError(
+                    f"the cold start's linear system became singular ({err})") from err
         if first is None:
             if n0 != self.n_slices:
                 s = self._grid(d, th)

@@ -231,3 +231,20 @@ def test_a_profile_changed_in_place_leaves_the_shared_caches_alone():
     assert fresh._end_cache is changed._end_cache     # the grid is shared
     got = fresh.at_force(**case)
     assert got.depth == ref.depth and np.array_equal(got.q, ref.q)
+
+
+class _UserCrown(lp.CircularCrownProfile):
+    """A user's profile class (not one of linecontact.profiles' own: checked drop)."""
+
+
+@pytest.mark.parametrize("prof", [_UserCrown(L, 0.5), PROFILES[1], PROFILES[-1]],
+                         ids=["user class", "end relief", "table"])
+def test_roller_pickles_with_any_profile(prof):
+    """A roller is pickled to the workers of a process pool or Dask: with a user's
+    profile class too (the drop it evaluates inside the roller, drop_inside's checked
+    roller_drop, must pickle), answering as the original."""
+    import pickle
+    r = ProfiledRoller(D / 2, L, E, prof)
+    got = pickle.loads(pickle.dumps(r)).at_force(2000.0, tilt=1e-3)
+    want = r.at_force(2000.0, tilt=1e-3)
+    assert got.depth == want.depth and np.array_equal(got.q, want.q)

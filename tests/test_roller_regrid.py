@@ -170,13 +170,16 @@ def test_closed_form_slope(prof):
 
 
 @pytest.mark.parametrize("value", [0.005, 50, -0.0, 0.0, 1e308, 2.3e-308, -0.05, 0.1,
-                                   float("nan"), float("inf"), 5e-320, -5e-320, 2 ** 60])
+                                   float("nan"), float("inf"), 5e-320, -5e-320, 2 ** 60,
+                                   2 ** 53])
 @pytest.mark.parametrize("ends", [(0.0, np.inf, True, True), (-0.1, 0.1, True, True),
-                                  (0.0, 0.5, False, False), (10, 4000, False, False)])
+                                  (0.0, 0.5, False, False), (10, 4000, False, False),
+                                  (0, 2 ** 53 + 1, False, True)])
 def test_scalar_check_matches_the_array_path(value, ends):
     """check_interval's fast path for one Python number returns the 0-d float array of
     the general path (the value checked as a 1-element array, then reshaped), and
-    refuses exactly what it refuses (NaN, out of range, subnormal)."""
+    refuses exactly what it refuses (NaN, out of range, subnormal; 2^60 below an open
+    end of 2^53 + 1, which rounds to 2^53 as a float: refused there, as 2^53 is)."""
     from linecontact.validity import OutOfRangeError, check_interval
     lo, hi, lo_open, hi_open = ends
     kw = dict(low_open=lo_open, high_open=hi_open)

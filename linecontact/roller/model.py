@@ -344,7 +344,8 @@ class ProfiledRoller:
         and the stiffness matrix, so the closed form moved the converged results of the
         104 cases of tables/roller_accuracy.csv within the Newton tolerance: the
         stiffness matrix by up to 8e-11 (of sqrt(K_ii K_jj)), q 1.4e-12, p_max 5e-13,
-        the depth 1e-14 (docs/profiled_rollers.md, "Time per solve")."""
+        the depth 1e-14; up to 4.8e-9 in the stiffness of a Lundberg roller with L =
+        3 D (docs/profiled_rollers.md, "Time per solve")."""
         exact = self._drop_slope_at
         if exact is not None:
             return exact(x)

@@ -41,6 +41,7 @@ References
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 from pathlib import Path
@@ -1069,10 +1070,9 @@ def drop_inside(profile, length):
     regrid, on some 150 points, where those calls cost more than the formula."""
     if type(profile) in _FORMULA_PROFILES:
         return profile._drop
-
-    def checked(x):
-        return roller_drop(profile, length, x)
-    return checked
+    # (a partial, not a closure: a roller holding it pickles, to a process pool's
+    # workers, with a user's profile class too)
+    return functools.partial(roller_drop, profile, length)
 
 
 #: The profile classes with a smooth drop inside the roller whose derivative

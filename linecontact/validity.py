@@ -588,10 +588,18 @@ def _as_float_array(name, value, unit=""):
 
 
 _TINY = float(np.finfo(float).tiny)
-#: the types of the fixed ends that check_interval's scalar fast path takes
-_SCALARS = (float, int, np.float64)
 #: the largest integer a float holds exactly (larger ones take the general path)
 _EXACT_INT = 2 ** 53
+
+
+def _exact_scalar(x):
+    """Whether check_interval's scalar fast path takes x (a value or a fixed end): a
+    float, or an int a float holds exactly. The general path compares float arrays;
+    the fast path compares the Python numbers themselves, which is the same only for
+    these (an end of 2^53 + 1 rounds there; an int end of 10^400 overflows there)."""
+    kind = type(x)
+    return kind is float or kind is np.float64 or (
+        kind is int and -_EXACT_INT <= x <= _EXACT_INT)
 
 
 def _refuse_subnormal(name, v, unit):
@@ -735,9 +743,7 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     ...
     linecontact.validity.OutOfRangeError: poisson = 0.5 (element [1] of shape (2,)) is outside the valid range [0, 0.5)
     """
-    kind = type(value)
-    if (kind is float or (kind is int and -_EXACT_INT <= value <= _EXACT_INT)) and \
-            type(low) in _SCALARS and type(high) in _SCALARS:
+    if _exact_scalar(value) and _exact_scalar(low) and _exact_scalar(high):
         # one Python number between fixed ends (every constructor and solve checks
         # several): the comparisons of the general path below on Python floats, the
         # same answer (NaN and subnormals fail here and take that path, which names

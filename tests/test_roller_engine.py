@@ -616,3 +616,37 @@ def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
         got = sl._unit_geometry(n, 0.8, 0)
         newest = sum(a.nbytes for a in got)
     assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest
+
+
+@pytest.mark.parametrize("mode", [1, 2])
+def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode):
+    """The step of a force row (mode 1) or a moment row (mode 2) is its residual over
+    K[0, 0] or K[1, 1]; where that entry is exactly zero the lines _compiled.newton_step
+    replaced divided numpy floats (IEEE: +-inf, NaN for 0/0) and went on, where numba's
+    compiled division raises ZeroDivisionError. The fused step must hand back what the
+    helpers give (the same step, dz, mask, update; NaN compared as NaN), not raise."""
+    pytest.importorskip("numba")
+    from linecontact.roller import _compiled as jit
+
+    rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(11)
+    res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
+    over = 1e-6 * (0.2 + rng.random(n))
+    cs = 1.0 / (4 * R) * (0.5 + rng.random(ns))
+    qs = qsc * (0.5 + rng.random(ns))
+    K = jit.newton_step(J0.copy(order="F"), res, rhs, np.zeros((2, 2)), ns, qsc, R, w,
+                        x, S, qs, cs, 3e-7, mode, np.zeros(n), np.zeros(n), over)[3]
+    grid = np.zeros((2, 2))
+    grid[mode - 1, mode - 1] = -K[mode - 1, mode - 1]      # K's entry exactly 0
+    q1, c1, q2, c2 = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    got = jit.newton_step(J0.copy(order="F"), res, rhs, grid, ns, qsc, R, w, x, S, qs,
+                          cs, 3e-7, mode, q1, c1, over)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        want = _step_by_helpers(jit, J0.copy(order="F"), res, rhs, grid, ns, qsc, R, w,
+                                x, S, qs, cs, 3e-7, mode, q2, c2, over)
+    assert got[3][mode - 1, mode - 1] == 0.0
+    assert got[0] == want[0]
+    assert np.isinf(got[4][mode - 1]) and tuple(got[4][:2]) == tuple(want[4])
+    assert np.array_equal(got[5], want[5], equal_nan=True), "dz"
+    assert np.array_equal(got[6], want[6]), "the mask of slices leaving"
+    if got[0] == 0:
+        assert np.array_equal(q1, q2, equal_nan=True) and np.array_equal(c1, c2, equal_nan=True)

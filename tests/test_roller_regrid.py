@@ -170,13 +170,16 @@ def test_closed_form_slope(prof):
 
 
 @pytest.mark.parametrize("value", [0.005, 50, -0.0, 0.0, 1e308, 2.3e-308, -0.05, 0.1,
-                                   float("nan"), float("inf"), 5e-320, -5e-320, 2 ** 60])
+                                   float("nan"), float("inf"), 5e-320, -5e-320, 2 ** 60,
+                                   2 ** 53])
 @pytest.mark.parametrize("ends", [(0.0, np.inf, True, True), (-0.1, 0.1, True, True),
-                                  (0.0, 0.5, False, False), (10, 4000, False, False)])
+                                  (0.0, 0.5, False, False), (10, 4000, False, False),
+                                  (0, 2 ** 53 + 1, False, True)])
 def test_scalar_check_matches_the_array_path(value, ends):
     """check_interval's fast path for one Python number returns the 0-d float array of
     the general path (the value checked as a 1-element array, then reshaped), and
-    refuses exactly what it refuses (NaN, out of range, subnormal)."""
+    refuses exactly what it refuses (NaN, out of range, subnormal; 2^60 below an open
+    end of 2^53 + 1, which rounds to 2^53 as a float: refused there, as 2^53 is)."""
     from linecontact.validity import OutOfRangeError, check_interval
     lo, hi, lo_open, hi_open = ends
     kw = dict(low_open=lo_open, high_open=hi_open)
@@ -209,3 +212,42 @@ def test_solution_built_as_the_constructor_builds_it():
         RollerSolution._built(**kw)
     with pytest.raises(TypeError):
         RollerSolution._built(**kw, notes=(), extra=1)
+
+
+def test_a_profile_changed_in_place_leaves_the_shared_caches_alone():
+    """A roller's _end_root points are cached per grid shared by the rollers of equal
+    profiles (_fine_grid). A roller whose profile object is changed in place after
+    construction evaluates the changed drop there: that must not reach the cache of
+    the profile's former parameters, so that a new roller of a profile equal to the
+    original solves exactly as with caches of its own (here the drop the changed
+    Lundberg profile, 20 kN design force instead of 4.2 kN, wrote there moved another
+    roller's slice loads by 60 % of the largest)."""
+    case = dict(force=9000.0, tilt=2e-3)          # the contact reaches the end zone
+    rm._FINE.clear()
+    ref = ProfiledRoller(D / 2, L, E, lp.LundbergProfile(L, E, 4200.0)).at_force(**case)
+    rm._FINE.clear()
+    p = lp.LundbergProfile(L, E, 4200.0)
+    changed = ProfiledRoller(D / 2, L, E, p)
+    p.design_force = 20000.0                      # changed in place after construction
+    changed.at_force(**case)
+    fresh = ProfiledRoller(D / 2, L, E, lp.LundbergProfile(L, E, 4200.0))
+    assert fresh._end_cache is changed._end_cache     # the grid is shared
+    got = fresh.at_force(**case)
+    assert got.depth == ref.depth and np.array_equal(got.q, ref.q)
+
+
+class _UserCrown(lp.CircularCrownProfile):
+    """A user's profile class (not one of linecontact.profiles' own: checked drop)."""
+
+
+@pytest.mark.parametrize("prof", [_UserCrown(L, 0.5), PROFILES[1], PROFILES[-1]],
+                         ids=["user class", "end relief", "table"])
+def test_roller_pickles_with_any_profile(prof):
+    """A roller is pickled to the workers of a process pool or Dask: with a user's
+    profile class too (the drop it evaluates inside the roller, drop_inside's checked
+    roller_drop, must pickle), answering as the original."""
+    import pickle
+    r = ProfiledRoller(D / 2, L, E, prof)
+    got = pickle.loads(pickle.dumps(r)).at_force(2000.0, tilt=1e-3)
+    want = r.at_force(2000.0, tilt=1e-3)
+    assert got.depth == want.depth and np.array_equal(got.q, want.q)

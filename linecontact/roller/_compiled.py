@@ -29,6 +29,7 @@ user-wide cache where the package is read-only; docs/profiled_rollers.md, "Engin
 """
 from __future__ import annotations
 
+import math
 import warnings
 
 import numba
@@ -631,6 +632,18 @@ def solve_sums(J, B, ns, qsc, R, w, x, S, qs):
     return z, float(sums[0]), float(sums[1]), Wz
 
 
+def _quotient(num, k):
+    """num / k as numpy's float division answers it, k = 0 included (+-inf, NaN for
+    0/0: num * inf * sign(k)); numba's compiled division raises ZeroDivisionError
+    there."""
+    if k == 0.0:
+        return num * np.inf * math.copysign(1.0, k)
+    return num / k
+
+
+_quotient = _jit(_quotient)
+
+
 def _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
                  over, B, Kout, st, hit_q, upd):
     """One bordered Newton step after the linearisation, in one call: the scaled system
@@ -668,9 +681,9 @@ def _newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q
         s0 = (r0 * k11 - k01 * r1) / det
         s1 = (k00 * r1 - k10 * r0) / det
     elif mode == 1:
-        s0 = (target - wq - lin0) / Kout[0, 0]
+        s0 = _quotient(target - wq - lin0, Kout[0, 0])
     elif mode == 2:
-        s1 = (-wxq - lin1) / Kout[1, 1]
+        s1 = _quotient(-wxq - lin1, Kout[1, 1])
     st[0] = s0
     st[1] = s1
     dz = np.empty(n2)

@@ -124,13 +124,13 @@ class ProfiledRoller:
         n = int(n)
         grading = float(SLICE_GRADING.check(grading).item())
         prof = as_profile(profile, R, L, E)
-        fx, fP, end_cache, d0_cache = _fine_grid(prof, L, n)
+        fx, fP, end_cache, d0_cache, ident = _fine_grid(prof, L, n)
         # set at once, past __setattr__ (whose rebuild starts once _warm is set)
         self.__dict__.update(
             radius=R, length=L, estar=E, n_slices=n, grading=grading,
             _profile_spec=profile,             # read again with a new R (__setattr__)
             profile=prof,
-            _fx=fx, _fP=fP, _end_cache=end_cache, _d0_shared=d0_cache,
+            _fx=fx, _fP=fP, _end_cache=end_cache, _d0_shared=d0_cache, _ident=ident,
             _drop_at=drop_inside(prof, L), _drop_slope_at=drop_slope_inside(prof),
             # _drop_slope's step 1e-7 L and its bounds, inside the roller by 1e-9 L/2
             # (a logarithmic profile's drop is infinite at the ends): per roller
@@ -324,6 +324,10 @@ class ProfiledRoller:
             x = end - side * u
             P = roller_drop(self.profile, self.length, x)
             hit = (u, x, P, x.tolist(), P.tolist())
+            if self._ident is not None and profile_identity(self.profile) != self._ident:
+                # the profile was changed in place since construction: its drop is not
+                # that of the rollers this cache is shared with (_fine_grid), kept out
+                return hit
             if len(self._end_cache) >= 64:
                 self._end_cache.clear()
             self._end_cache[key] = hit
@@ -340,7 +344,8 @@ class ProfiledRoller:
         and the stiffness matrix, so the closed form moved the converged results of the
         104 cases of tables/roller_accuracy.csv within the Newton tolerance: the
         stiffness matrix by up to 8e-11 (of sqrt(K_ii K_jj)), q 1.4e-12, p_max 5e-13,
-        the depth 1e-14 (docs/profiled_rollers.md, "Time per solve")."""
+        the depth 1e-14; up to 4.8e-9 in the stiffness of a Lundberg roller with L =
+        3 D (docs/profiled_rollers.md, "Time per solve")."""
         exact = self._drop_slope_at
         if exact is not None:
             return exact(x)
@@ -493,8 +498,13 @@ class ProfiledRoller:
                 on = qo > 0
                 ratio = float((d + th * s.x - s.P).max()) / eo
                 width = (xi_o[on], np.sqrt(qo[on] / co[on] * ratio))
-            first = s.start_at_force(self._grid, d, th, force, zero_moment, width,
-                                     last_n=self.n_slices)
+            try:
+                first = s.start_at_force(self._grid, d, th, force, zero_moment, width,
+                                         last_n=self.n_slices)
+            except np.linalg.LinAlgError as err:
+                # as a singular Newton system below: the nested iteration answers
+                raise ConvergenceError(
+                    f"the cold start's linear system became singular ({err})") from err
         if first is None:
             if n0 != self.n_slices:
                 s = self._grid(d, th)
@@ -806,7 +816,11 @@ def _fine_grid(profile, length, n):
     cache of _end_root's points and that of the first-contact depth per tilt
     (_contact_depth), which depend on the profile, L and n alone:
     shared by the rollers of equal profiles (profiles.profile_identity; built anew for
-    a profile without one), up to 16 of them (the arrays read-only)."""
+    a profile without one), up to 16 of them (the arrays read-only); and that identity
+    (None: not shared), against which a roller checks its profile before it adds
+    _end_root's points, read off its live profile, to the shared cache (a profile
+    changed in place after construction; the first-contact depths come from the
+    grid itself)."""
     ident = profile_identity(profile)
     key = None if ident is None else (ident, length, n)
     hit = _FINE.get(key) if key is not None else None
@@ -819,7 +833,7 @@ def _fine_grid(profile, length, n):
             if len(_FINE) >= 16 or cache_nbytes(_FINE) > CACHE_BYTES:
                 _FINE.clear()
             _FINE[key] = hit
-    return hit
+    return hit + (ident,)
 
 
 def roller_contact(radius, length, estar, profile=None, *, depth=None, force=None,

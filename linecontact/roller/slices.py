@@ -282,7 +282,7 @@ def _fraction_to_boundary(qs, cs, dq, dc):
 #: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
 #: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
 #: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
-#: most 9.9 times (10.7 with the numba engine, the same step), so 100 leaves a margin
+#: most 10.7 times (either engine, the same step at the rounding floor), so 100 leaves a margin
 #: of about ten; the returned state is then within the tolerance of the converged one.
 NEWTON_C = 100.0
 #: the largest step size (as `small` measures it) at which the estimate is tried: above
@@ -899,8 +899,10 @@ class SliceEquations:
         of the state after a full step is below it (:func:`newton_error` times
         NEWTON_C; the steps contracting faster than linearly, no unloaded slice close
         to touching): that state is returned on its own grid. Returns (equations, S,
-        q, c, d, theta, F, M, K) with the force, moment and stiffness matrix K of the
-        converged state (K from the last linearisation), or raises ConvergenceError.
+        q, c, d, theta, F, M, K) with the force and moment of the returned state and
+        the stiffness matrix K of the last linearisation (where the estimate ended the
+        solve, at the state one full step before: within about sqrt(tol/NEWTON_C)
+        relative), or raises ConvergenceError.
         """
         n, R, piE = self.n, self.R, math.pi * self.E
         s = self
@@ -908,6 +910,14 @@ class SliceEquations:
         left_count = np.zeros(n, int)
         everyone = np.arange(n)
         last_size = math.inf            # the last step's size (inf: none, or damped)
+        # the grid is that of the current (d, theta) once rebuilt: the one passed in
+        # may not be (start_at_force returns its last sweep's grid, built at the sweep
+        # before's answer, with that answer's d and theta; a warm start's single sweep
+        # is solved on the grid of the depth it started from). A step on such a grid
+        # solves equations whose ends are not those of its d and theta: however small,
+        # it says nothing of the error of the state on its own grid (a sweep's solve,
+        # offset crown at a free tilt, ended on its first step with F off by 1.6e-7)
+        own_grid = force is None and not zero_moment
         for _ in range(max_steps):
             s.iterations += 1
             over = d + theta * s.x - s.P
@@ -1048,7 +1058,7 @@ class SliceEquations:
             # (and only where the steps contract faster than linearly, size <= the
             # last step's size^1.5: a Newton stalled at its rounding floor, an
             # ill-conditioned system's, is never taken as converged)
-            near = (not small and left is None and size <= NEAR_STEP
+            near = (not small and own_grid and left is None and size <= NEAR_STEP
                     and size <= last_size ** 1.5
                     and NEWTON_C * newton_error(qs, cs, dq, dc, qsc, R, step[0] / dmax,
                                                 step[1] * (s.hi - s.lo) / dmax) <= tol)
@@ -1098,6 +1108,7 @@ class SliceEquations:
                 it = s.iterations
                 s = regrid(d, theta)
                 s.iterations = it
+                own_grid = True
                 # slices outside the new overlap interval's grid keep their index
         raise ConvergenceError("Newton iteration on the slice loads (bordered) did not "
                                f"converge in {max_steps} steps")

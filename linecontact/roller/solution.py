@@ -35,7 +35,9 @@ class RollerSolution:
     tilt_stiffness : float
         dM/dtheta at fixed depth [N m/rad].
     stiffness_matrix : ndarray
-        [[dF/dd, dF/dtheta], [dM/dd, dM/dtheta]] [N/m, N/rad; N, N m/rad].
+        [[dF/dd, dF/dtheta], [dM/dd, dM/dtheta]] [N/m, N/rad; N, N m/rad]. At a
+        force (coupled slices) the last Newton step's linearisation: the derivative at
+        a state within about 3e-7 (relative) of the returned one.
     x : ndarray
         Slice centres [m].
     width : ndarray

@@ -856,7 +856,7 @@ def _love_sums(X, Y, z, w, only=None):
 
 
 #: elements (points x corners) per block of :func:`_love_sums`
-_BLOCK = 8192
+_BLOCK = 16384
 
 
 def _love_components(t, z, nu):
@@ -942,13 +942,14 @@ def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
 
 def _hertz_cell_means(edges, b):
     """Mean of sqrt(1 - y^2/b^2) over each cell [edges[i], edges[i+1]] (0 beyond b);
-    b a scalar, or an array of half-widths (one row of cells each; 0 for none)."""
+    b a scalar, or an array of half-widths (one row of cells each; 0 for none); edges
+    one row for all, or one row per half-width."""
     b = np.asarray(b, dtype=float)[..., None]
     pos = b > 0
     bs = np.where(pos, b, 1.0)
     u = np.minimum(np.maximum(edges / bs, -1.0), 1.0)
     prim = 0.5 * (u * np.sqrt(1.0 - u * u) + np.arcsin(u))     # int sqrt(1-u^2) du
-    out = (prim[..., 1:] - prim[..., :-1]) * bs / (edges[1:] - edges[:-1])
+    out = (prim[..., 1:] - prim[..., :-1]) * bs / (edges[..., 1:] - edges[..., :-1])
     return np.where(pos, out, 0.0)
 
 
@@ -978,26 +979,48 @@ def _corners_3d(xc, b, p0, k0, xe=None):
     """Corner positions and weights of the pressure difference p - p_k0 (a row of
     Hertz strips, one per slice, minus the strip of slice k0 extended to infinity);
     `xe` the slices' edges (:func:`_slice_edges`, computed if not given)."""
+    return _corners_many(xc, b, p0, [k0], xe)[0]
+
+
+def _corners_many(xc, b, p0, ks, xe=None):
+    """:func:`_corners_3d` of each slice k0 of `ks`: a list of (cx, cy, w); the
+    slices' Hertz cell means on every k0's grid in one evaluation."""
     n = xc.size
     if xe is None:
         xe = _slice_edges(xc)
-    b0, x0 = b[k0], xc[k0]
-    near = np.abs(xc - x0) <= _NEAR * b0
-    near[max(k0 - 2, 0):k0 + 3] = True
-    at = np.flatnonzero(near)
-    i0, i1 = int(at[0]), int(at[-1])
+    L = xe[-1] - xe[0]
+    q = 0.5 * np.pi * p0 * b                        # the line loads
     # near field: a common grid across |y| <= B, each slice's Hertz profile averaged
     # onto its cells; minus slice k0's profile; the extension of k0's strip beyond the
     # roller's ends (to +-1e6 L) closes the infinite strip whose field is McEwen's
-    bn = b[i0:i1 + 1]
-    B = max(float(bn.max()), b0)
-    ye = _STEPS_Y * ((B + B) / _N_Y) - B           # np.linspace(-B, B, _N_Y + 1)
-    ye[-1] = B
-    L = xe[-1] - xe[0]
-    bb = np.empty(bn.size + 1)
-    bb[0] = b0
-    bb[1:] = bn
-    means = _hertz_cell_means(ye, bb)
+    heads, rows_b = [], []
+    for k0 in ks:
+        b0, x0 = b[k0], xc[k0]
+        near = np.abs(xc - x0) <= _NEAR * b0
+        near[max(k0 - 2, 0):k0 + 3] = True
+        at = np.flatnonzero(near)
+        i0, i1 = int(at[0]), int(at[-1])
+        bn = b[i0:i1 + 1]
+        heads.append((k0, i0, i1, max(float(bn.max()), b0)))
+        rows_b += [b[k0:k0 + 1], bn]
+    B = np.array([h[3] for h in heads])
+    ye = _STEPS_Y * ((B + B) / _N_Y)[:, None] - B[:, None]   # np.linspace(-B, B, _N_Y + 1)
+    ye[:, -1] = B
+    sizes = [h[2] - h[1] + 2 for h in heads]
+    means_all = _hertz_cell_means(np.repeat(ye, sizes, axis=0), np.concatenate(rows_b))
+    out, off = [], 0
+    for (k0, i0, i1, _), ye, size in zip(heads, ye, sizes):
+        means = means_all[off:off + size]
+        off += size
+        out.append(_corners_assemble(xe, L, b, p0, q, k0, i0, i1, ye, means))
+    return out
+
+
+def _corners_assemble(xe, L, b, p0, q, k0, i0, i1, ye, means):
+    """The corners of :func:`_corners_3d` from k0's near window [i0, i1], its grid
+    across ye and the cell means (k0's row, then the window's slices')."""
+    n = b.size
+    b0 = b[k0]
     ref = p0[k0] * means[0]
     lo_ext, hi_ext = int(i0 == 0), int(i1 == n - 1)
     rows = i1 - i0 + 1 + lo_ext + hi_ext
@@ -1030,14 +1053,14 @@ def _corners_3d(xc, b, p0, k0, xe=None):
     if m == 0:
         keep = w != 0
         return cx[keep], cy[keep], w[keep]
-    q0 = 0.5 * np.pi * p0[k0] * b0
+    q0 = q[k0]
     lo_x, hi_x, bf, dq = np.empty(m), np.empty(m), np.empty(m), np.empty(m)
     lo_x[:nl], hi_x[:nl] = xe[:nl], xe[1:nl + 1]
     lo_x[nl:nl + nr], hi_x[nl:nl + nr] = xe[i1 + 1:n], xe[i1 + 2:]
-    fb = np.concatenate([b[:nl], b[i1 + 1:]])
-    fp = np.concatenate([p0[:nl], p0[i1 + 1:]])
-    bf[:nl + nr] = np.maximum(fb, b0)
-    dq[:nl + nr] = 0.5 * np.pi * fp * fb - q0
+    bf[:nl], bf[nl:nl + nr] = b[:nl], b[i1 + 1:]
+    np.maximum(bf[:nl + nr], b0, out=bf[:nl + nr])
+    dq[:nl], dq[nl:nl + nr] = q[:nl], q[i1 + 1:]
+    dq[:nl + nr] -= q0
     j = nl + nr
     if not lo_ext:
         lo_x[j], hi_x[j], bf[j], dq[j] = xe[0] - 1e6 * L, xe[0], b0, -q0
@@ -1215,9 +1238,12 @@ def _worst_3d(x, b, p0, mu, nu, m):
 
     def corners(k):
         if k not in cache:
-            cx, cy, w = _corners_3d(x, b, p0, k, xe)
-            cache[k] = ((x[k] - cx)[None, :], cy, w)
+            add([k])
         return cache[k]
+
+    def add(ks):
+        for k, (cx, cy, w) in zip(ks, _corners_many(x, b, p0, ks, xe)):
+            cache[k] = ((x[k] - cx)[None, :], cy, w)
 
     def evaluate(pts):
         """pts: name -> (k, py, pz); the measure at those points below slice k."""
@@ -1258,6 +1284,7 @@ def _worst_3d(x, b, p0, mu, nu, m):
     # differently, by rounding, which would double the candidates)
     k = int(np.argmax(p0))
     cand = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
+    add(cand)
     res = _field_3d(x, b, p0, mu, nu,
                     [(kk, np.array([m.y[n] * b[kk] for n in names]),
                       np.array([m.z[n] * b[kk] for n in names]), False) for kk in cand],

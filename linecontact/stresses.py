@@ -1276,6 +1276,8 @@ def _worst_3d(x, b, p0, mu, nu, m):
         return out
 
     names = [n for n in MEASURES if m.z[n] >= 0.1]
+    if not names:                       # every maximum at the surface (mu >= ~0.4)
+        return {name: None for name in MEASURES}
     # the candidate slices: the strips' worst and two either side, each at the
     # strip's optimum of every measure (the slices' points summed per slice, the
     # strips' fields at once). Every measure's strip maxima are one constant times

@@ -458,3 +458,16 @@ def test_3d_correction_of_a_mirrored_roller_is_mirrored():
                     assert m[name]["x"] == pytest.approx(-a[name]["x"], abs=1e-12), name
                 else:
                     assert abs(m[name]["x"]) == pytest.approx(abs(a[name]["x"]), abs=1e-12)
+
+
+def test_roller_stresses_with_every_maximum_at_the_surface_keep_the_strips():
+    """At mu >= 0.4 every measure's strip maximum lies at the surface (z < 0.1 b), so
+    the 3D correction applies to none and the worst is the strips' (the docstring's
+    rule): the search must not fail for lack of a measure below the surface."""
+    from linecontact.roller import roller_contact
+    from linecontact.stresses import _maxima
+    sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
+    for mu in (0.4, 0.5, 1.0):
+        assert all(_maxima(mu, 0.3).z[n] < 0.1 for n in MEASURES), mu
+        s = roller_stresses(sol, friction=mu)
+        assert s.worst == s.strip_worst, mu

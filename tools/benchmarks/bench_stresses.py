@@ -30,7 +30,8 @@ With ``--against DIR`` (another checkout) the timing also runs that checkout's
 module of this checkout's package, so only the stresses module differs), and reports
 the CPU ratio this/other per roller (median of ``--repeat`` each): a paired comparison
 on a shared machine, where absolute times drift with the load; and the other module's
-stresses/solve ratio on the same solves (its "before").
+stresses/solve ratio on the same solves (its "before"); and whether the two modules give
+the same worst values (largest relative difference, how many on another slice).
 
 Prints a report and writes it to tools/benchmarks/results/stresses.txt.
 """
@@ -109,6 +110,9 @@ def timing(lines, repeat, against=None, engine="auto"):
     if other is not None:
         other.strip_maxima(0.0, 0.3)
     paired = []
+    # largest relative difference of a worst value, checks, on another slice, largest
+    # shift of (y, z) on the same slice [m]
+    agree = [0.0, 0, 0, 0.0, 0]     # and of those the mirror slice, untilted
     from tools.studies import stress_study as ss
     from tools.studies.roller_study import make_profile
 
@@ -138,14 +142,23 @@ def timing(lines, repeat, against=None, engine="auto"):
             c0 = time.process_time()
             sol = model.at_force(task["force"], tilt=task["tilt"])
             c1 = time.process_time()
-            roller_stresses(sol, 0.0, 0.3, roller=model)     # 3D-corrected (default)
+            mine = roller_stresses(sol, 0.0, 0.3, roller=model)   # 3D-corrected (default)
             c2 = time.process_time()
             ts.append(c1 - c0)
             tt.append(c2 - c1)
             if other is not None:
                 c3 = time.process_time()
-                other.roller_stresses(sol, 0.0, 0.3, roller=model)
+                theirs = other.roller_stresses(sol, 0.0, 0.3, roller=model)
                 to.append(time.process_time() - c3)
+                for name in MEASURES:               # the same worst values, where
+                    u, v = mine.worst[name], theirs.worst[name]
+                    agree[0] = max(agree[0], abs(u["value"] - v["value"]) / abs(v["value"]))
+                    agree[1] += 1
+                    agree[2] += u["slice"] != v["slice"]
+                    agree[4] += (u["slice"] != v["slice"] and not task["tilt"]
+                                 and u["slice"] + v["slice"] == len(sol.x) - 1)
+                    if u["slice"] == v["slice"]:
+                        agree[3] = max(agree[3], abs(u["y"] - v["y"]), abs(u["z"] - v["z"]))
         if to:
             paired.append(statistics.median(tt) / statistics.median(to))
             others.append(statistics.median(to) / statistics.median(ts))
@@ -172,6 +185,13 @@ def timing(lines, repeat, against=None, engine="auto"):
                      f"range {min(paired):.3f}-{max(paired):.3f} over {len(paired)} rollers; "
                      f"its stresses/solve ratio median {statistics.median(others):.4f}, largest "
                      f"{max(others):.4f} ({keys[int(np.argmax(others))]})")
+        lines.append(f"worst values against {Path(against).resolve().name}/ (mu 0, nu 0.3, "
+                     f"{agree[1]} checks: 3 measures x {repeat} solves x {len(paired)} "
+                     f"rollers): largest relative difference {agree[0]:.2g}; "
+                     f"{agree[2]} on another slice ({agree[4]} of them the mirror slice of "
+                     f"an untilted roller: a tie decided by rounding), (y, z) on the same "
+                     f"slice within "
+                     f"{agree[3]:.2g} m")
     lines.append(f"first call of a new (mu, nu) (strip maxima computed and cached): "
                  f"{first * 1e3:.0f} ms CPU, once per process")
     lines.append(f"(timing section: {time.process_time() - t0:.0f} s CPU)")

@@ -21,11 +21,10 @@ Wall time of the wrapped calls (the timer's own cost, about 0.1 us a call, inclu
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
-import shutil
 import statistics
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -57,16 +56,12 @@ def main(argv=None):
     here = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(here))
     tilt = "free" if args.tilt == "free" else float(args.tilt)
+    from tools.benchmarks.bench_roller_speed import other_checkout
     names = ["linecontact"]
-    tmp = None
-    if args.against:
-        tmp = tempfile.mkdtemp()
-        shutil.copytree(Path(args.against).resolve() / "linecontact",
-                        Path(tmp) / "linecontact_b",
-                        ignore=shutil.ignore_patterns("__pycache__"))
-        sys.path.insert(0, tmp)
-        names.append("linecontact_b")
-    try:
+    with contextlib.ExitStack() as stack:
+        tmp = args.against is not None
+        if tmp:
+            names.append(stack.enter_context(other_checkout(args.against)))
         runs = []
         for pkg in names:
             roller = importlib.import_module(f"{pkg}.roller")
@@ -100,9 +95,6 @@ def main(argv=None):
                 print(f"  {part:10s} {len(v) / args.repeat:4.1f} calls a solve, "
                       f"{statistics.median(v) * 1e6:7.1f} us a call")
             print(f"  one solve  {statistics.median(total) * 1e3:.3f} ms")
-    finally:
-        if tmp:
-            shutil.rmtree(tmp, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -47,6 +47,7 @@ median of the --repeat pair ratios (``--engine`` goes to both checkouts).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import re
 import statistics
@@ -59,6 +60,27 @@ import numpy as np
 
 D, L, ESTAR = 10e-3, 14e-3, 115.385e9
 FORCE, TILT = 4200.0, 2e-3
+
+
+@contextlib.contextmanager
+def other_checkout(path):
+    """The package ``linecontact`` of the checkout `path` importable as
+    ``linecontact_b`` for the duration (copied to a temporary directory put first on
+    sys.path; which works as long as the package imports itself relatively): the
+    ``--interleave`` pairing here and in bench_roller_parts.py and bench_roller_step.py.
+    Yields the name."""
+    import shutil
+    import tempfile
+    tmp = tempfile.mkdtemp()
+    try:
+        shutil.copytree(Path(path).resolve() / "linecontact", Path(tmp) / "linecontact_b",
+                        ignore=shutil.ignore_patterns("__pycache__"))
+        sys.path.insert(0, tmp)
+        yield "linecontact_b"
+    finally:
+        if tmp in sys.path:
+            sys.path.remove(tmp)
+        shutil.rmtree(tmp, ignore_errors=True)
 
 
 def _cpu(fn, repeat):
@@ -248,18 +270,12 @@ def _interleaved(a):
     cold solves alternating (A B, then B A), --repeat pairs per tilt."""
     import importlib
     import inspect
-    import shutil
-    import tempfile
 
     import linecontact
     from tools.studies import roller_study as rs
 
     other = Path(a.against).resolve()
-    tmp = tempfile.mkdtemp()
-    try:
-        shutil.copytree(other / "linecontact", Path(tmp) / "linecontact_b",
-                        ignore=shutil.ignore_patterns("__pycache__"))
-        sys.path.insert(0, tmp)
+    with other_checkout(other):
         roller_b = importlib.import_module("linecontact_b.roller")
         profiles_b = importlib.import_module("linecontact_b.profiles")
         from linecontact import profiles as profiles_a
@@ -300,8 +316,6 @@ def _interleaved(a):
                   f"{statistics.median(ratios):.3f} (quartiles "
                   f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f}); "
                   f"depth A/B - 1 = {dev:.1e}")
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
     return 0
 
 

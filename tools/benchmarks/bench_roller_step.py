@@ -26,11 +26,10 @@ checkout DIR too, the two checkouts' solves alternating in one process (DIR's
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
-import shutil
 import statistics
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -93,16 +92,12 @@ def main(argv=None):
     here = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(here))
     tilt = "free" if args.tilt == "free" else float(args.tilt)
+    from tools.benchmarks.bench_roller_speed import other_checkout
     names = ["linecontact"]
-    tmp = None
-    if args.against:
-        tmp = tempfile.mkdtemp()
-        shutil.copytree(Path(args.against).resolve() / "linecontact",
-                        Path(tmp) / "linecontact_b",
-                        ignore=shutil.ignore_patterns("__pycache__"))
-        sys.path.insert(0, tmp)
-        names.append("linecontact_b")
-    try:
+    with contextlib.ExitStack() as stack:
+        tmp = args.against is not None
+        if tmp:
+            names.append(stack.enter_context(other_checkout(args.against)))
         runs = []
         for pkg in names:
             roller = importlib.import_module(f"{pkg}.roller")
@@ -161,9 +156,6 @@ def main(argv=None):
             print(f"{run['name']}: {med['lin'] * 1e6:6.1f} | {run['solve'] * 1e6:6.1f} "
                   f"({run['n2']}) | {(med['rest'] - run['solve']) * 1e6:6.1f} "
                   f"| {med['steps']:.0f} | {med['total'] * 1e3:.3f} ms")
-    finally:
-        if tmp:
-            shutil.rmtree(tmp, ignore_errors=True)
 
 
 if __name__ == "__main__":

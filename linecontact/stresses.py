@@ -726,6 +726,10 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
     w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu))
+    if all(v is None for v in w3.values()):
+        # every measure's worst at the surface (friction >= ~0.4): nothing corrected,
+        # the strips' worst as it is, and the method says so
+        return dataclasses.replace(s, error=error)
     worst = {k: (s.worst[k] if w3[k] is None else w3[k]) for k in MEASURES}
     return dataclasses.replace(s, worst=worst, strip_worst=s.worst, error=error,
                                method="strip + 3D correction")

@@ -463,11 +463,14 @@ def test_3d_correction_of_a_mirrored_roller_is_mirrored():
 def test_roller_stresses_with_every_maximum_at_the_surface_keep_the_strips():
     """At mu >= 0.4 every measure's strip maximum lies at the surface (z < 0.1 b), so
     the 3D correction applies to none and the worst is the strips' (the docstring's
-    rule): the search must not fail for lack of a measure below the surface."""
+    rule): the search must not fail for lack of a measure below the surface, and the
+    solution says what it is, a plane-strain strip result (no 3D correction made)."""
     from linecontact.roller import roller_contact
     from linecontact.stresses import _maxima
     sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     for mu in (0.4, 0.5, 1.0):
         assert all(_maxima(mu, 0.3).z[n] < 0.1 for n in MEASURES), mu
         s = roller_stresses(sol, friction=mu)
-        assert s.worst == s.strip_worst, mu
+        strips = roller_stresses(sol, friction=mu, three_d=False)
+        assert s.worst == strips.worst, mu
+        assert s.method == "plane-strain strip" and s.strip_worst is None, s.method

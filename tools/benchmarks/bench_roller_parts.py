@@ -21,7 +21,6 @@ Wall time of the wrapped calls (the timer's own cost, about 0.1 us a call, inclu
 from __future__ import annotations
 
 import argparse
-import contextlib
 import importlib
 import statistics
 import sys
@@ -56,12 +55,8 @@ def main(argv=None):
     here = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(here))
     tilt = "free" if args.tilt == "free" else float(args.tilt)
-    from tools.benchmarks.bench_roller_speed import other_checkout
-    names = ["linecontact"]
-    with contextlib.ExitStack() as stack:
-        tmp = args.against is not None
-        if tmp:
-            names.append(stack.enter_context(other_checkout(args.against)))
+    from tools.benchmarks.bench_roller_speed import checkout_packages
+    with checkout_packages(args.against) as names:
         runs = []
         for pkg in names:
             roller = importlib.import_module(f"{pkg}.roller")
@@ -88,7 +83,7 @@ def main(argv=None):
                 solve(roller, prof)
                 total.append(time.perf_counter() - t0)
         print(f"engine {args.engine}, tilt {args.tilt}, {args.repeat} solves each"
-              f"{', alternating in one process' if tmp else ''} (wall, medians)")
+              f"{', alternating in one process' if len(names) > 1 else ''} (wall, medians)")
         for name, _, _, times, total in runs:
             print(f"{name}:")
             for part, v in times.items():

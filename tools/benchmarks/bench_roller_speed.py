@@ -83,6 +83,17 @@ def other_checkout(path):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+@contextlib.contextmanager
+def checkout_packages(against=None):
+    """The package names to time: ``["linecontact"]``, and with a second checkout
+    `against` also ``"linecontact_b"`` (:func:`other_checkout`, for the duration)."""
+    if against is None:
+        yield ["linecontact"]
+        return
+    with other_checkout(against) as name:
+        yield ["linecontact", name]
+
+
 def _cpu(fn, repeat):
     ts = []
     out = None

@@ -26,7 +26,6 @@ checkout DIR too, the two checkouts' solves alternating in one process (DIR's
 from __future__ import annotations
 
 import argparse
-import contextlib
 import importlib
 import statistics
 import sys
@@ -92,12 +91,8 @@ def main(argv=None):
     here = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(here))
     tilt = "free" if args.tilt == "free" else float(args.tilt)
-    from tools.benchmarks.bench_roller_speed import other_checkout
-    names = ["linecontact"]
-    with contextlib.ExitStack() as stack:
-        tmp = args.against is not None
-        if tmp:
-            names.append(stack.enter_context(other_checkout(args.against)))
+    from tools.benchmarks.bench_roller_speed import checkout_packages
+    with checkout_packages(args.against) as names:
         runs = []
         for pkg in names:
             roller = importlib.import_module(f"{pkg}.roller")
@@ -147,7 +142,7 @@ def main(argv=None):
         for run in runs:
             run["solve"] = statistics.median(run["ts"])
         print(f"engine {args.engine}, tilt {args.tilt}, {args.repeat} solves each"
-              f"{', alternating in one process' if tmp else ''} (wall, medians, us)")
+              f"{', alternating in one process' if len(names) > 1 else ''} (wall, medians, us)")
         print("checkout: linearised a call | dense solve (2ns) | glue a step "
               "(step less linearised and solve) | steps | one solve")
         for run in runs:

@@ -1,7 +1,12 @@
 """The engines of the coupled-slice equations: the compiled kernels and linearisation
-(linecontact/roller/_compiled.py, numba) against the numpy reference
-(SliceEquations.kernels, linearised), whole solves with both engines, and the choice of
+(linecontact/roller/_compiled.py, numba; linecontact/roller/_cengine.py over the C
+extension _ckernels, the same loops in C) against the numpy reference
+(SliceEquations.kernels, linearised), whole solves with every engine, and the choice of
 engine (docs/profiled_rollers.md, "Engines").
+
+Each agreement test runs for both compiled engines; one is skipped, with its reason,
+where numba is not installed or the C extension is not built (pip install -e . builds
+it where a C compiler is present; so does CI).
 
 The compiled code evaluates the same series coefficients, the same spline table and the
 same cached geometry with the same split into far field, near band and diagonal; it
@@ -25,6 +30,30 @@ from linecontact.roller.slices import SliceEquations
 from linecontact.validity import UnknownNameError
 
 TOL = 1e-12
+#: the compiled engines, each checked against the numpy reference
+COMPILED = ["numba", "c"]
+
+
+def _need(engine):
+    """Skip unless `engine` can run here (numba installed; the C extension built)."""
+    if engine == "numba":
+        pytest.importorskip("numba")
+    elif sl.c_engine() is None:
+        pytest.skip("the C extension linecontact.roller._ckernels is not built here "
+                    f"({sl._C_ENGINE[0]}): pip install -e . with a C compiler builds it")
+
+
+def _module(engine):
+    """The module of a compiled engine's kernels() and linearised()."""
+    if engine == "numba":
+        from linecontact.roller import _compiled
+        return _compiled
+    return sl.c_engine()
+
+
+#: Python lines that make the C extension unimportable in a fresh interpreter (as
+#: where it was not built): the engine 'auto' then keeps the numpy / numba policy
+NO_C = "import sys; sys.modules['linecontact.roller._ckernels'] = None\n"
 
 
 def _equations(n, grading, refine, engine):
@@ -64,12 +93,13 @@ def _states(N, rng):
         yield S, q, c
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_kernels_equal_numpy(grid):
+def test_compiled_kernels_equal_numpy(grid, engine):
     """A, D, EA, ED (and A alone) from the compiled loops equal the numpy kernels within
     1e-12 of each matrix's largest entry, for every loaded set and target set."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     N = a.n
     rng = np.random.default_rng(1)
     for S, q, c in _states(N, rng):
@@ -82,14 +112,15 @@ def test_compiled_kernels_equal_numpy(grid):
                     _close(x, y, f"{grid} {name} ns={len(S)} a_only={a_only}")
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS[:3])
-def test_compiled_far_field_takes_every_term(grid):
+def test_compiled_far_field_takes_every_term(grid, engine):
     """The compiled far field sums all 14 terms of the series over every target, as
     the numpy code does: the kernels agree within 1e-14 of each matrix's largest entry
     (rounding: 1.5e-15 observed). That is tight enough to see one term missing: the
     last (14th) term at the near band's edge, t/b = 3, is 4.6e-14 of ED's scale."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     rng = np.random.default_rng(1)
     for S, q, c in _states(a.n, rng):
         bS = np.sqrt(q[S] / c[S])
@@ -103,13 +134,14 @@ def test_compiled_far_field_takes_every_term(grid):
                 assert err <= 1e-14, f"{grid} {name} ns={len(S)}: {err:.2e} of the scale"
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_linearised_equals_numpy(grid):
+def test_compiled_linearised_equals_numpy(grid, engine):
     """Residual, Jacobian, grid columns, gaps and the 2x2 grid terms of linearised()
     from the compiled loops equal the numpy ones within 1e-12 of each one's largest
     entry (all slices or a subset as targets)."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     N = a.n
     rng = np.random.default_rng(2)
     slope = 4e-6 * a.x ** 3 / 6e-3 ** 4
@@ -121,22 +153,24 @@ def test_compiled_linearised_equals_numpy(grid):
                 _close(x, y, f"{grid} {name} ns={len(S)} nt={len(T)}")
 
 
-def test_compiled_outside_the_spline_table():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_outside_the_spline_table(engine):
     """Beyond the spline table, t/b >= 1e4 (a slice about to leave, its strip
     nanometres wide: b = 1e-12 m here), the compiled code takes the series itself and
     agrees with the numpy code (which does the same); below it, t/b < 1e-4 (a strip
     far wider than the slices, b = 20 m), the call goes to the numpy code (series and
     quadrature) under either engine. Both: 1e-12 of each matrix's largest entry."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled
-
-    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, "numba")
+    _need(engine)
+    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, engine)
     S = np.arange(60)
     tiny = np.full(60, 1e-4)
     tiny[[0, 7, 59]] = 1e-12                 # w/2b ~ 1e8 on those diagonals
-    got = _compiled.kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
+    got = _module(engine).kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
                             sl._far_geometry(*b._geometry), sl._FAR_COEF, False)
     assert got is not None, "the compiled code fell back to numpy beyond the table"
+    assert _module(engine).kernels(S, S, np.full(60, 20.0), b.span, b.dg, b._tnear,
+                                   b._tfar, b._logratio, sl._far_geometry(*b._geometry),
+                                   sl._FAR_COEF, False) is None, "below the table: None"
     for bS in (tiny, np.full(60, 20.0)):
         for x, y, name in zip(a.kernels(S, bS), b.kernels(S, bS), "A D EA ED".split()):
             _close(x, y, name)
@@ -153,15 +187,16 @@ CASES = [
 ]
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("case", CASES)
-def test_whole_solves_agree_between_engines(case):
-    """A solve at a force with either engine: depth, tilt, moment, peak pressure and
-    stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the engines differ by
-    rounding only, so both reach the same converged state)."""
-    pytest.importorskip("numba")
+def test_whole_solves_agree_between_engines(case, engine):
+    """A solve at a force with a compiled engine and with numpy: depth, tilt, moment,
+    peak pressure and stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the
+    engines differ by rounding only, so both reach the same converged state)."""
+    _need(engine)
     profile, force, tilt = case
     sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(
-        force, tilt=tilt) for e in ("numpy", "numba")]
+        force, tilt=tilt) for e in ("numpy", engine)]
     a, b = sols
     assert a.depth == pytest.approx(b.depth, rel=1e-10)
     assert a.p_max == pytest.approx(b.p_max, rel=1e-10)
@@ -172,18 +207,19 @@ def test_whole_solves_agree_between_engines(case):
 
 
 def test_engine_names_are_checked():
-    """engine takes 'auto', 'numpy' or 'numba'; anything else is refused by name."""
+    """engine takes 'auto', 'numpy', 'numba' or 'c'; anything else is refused by
+    name."""
     with pytest.raises(UnknownNameError, match="engine"):
         ProfiledRoller(5e-3, 14e-3, 1e11, engine="fortran")
 
 
 def test_numpy_engine_without_numba():
-    """Without numba (its import blocked in a fresh interpreter) the numpy engine is
-    used: 'auto' and 'numpy' solve, 'auto' stays numpy past the switching point, and
-    'numba' is refused with a message naming the parameter, the value and what to
-    install."""
+    """Without numba and without the C extension (both imports blocked in a fresh
+    interpreter) the numpy engine is used: 'auto' and 'numpy' solve, 'auto' stays
+    numpy past the switching point, and 'numba' is refused with a message naming the
+    parameter, the value and what to install."""
     code = (
-        "import sys; sys.modules['numba'] = None\n"
+        NO_C + "import sys; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "from linecontact import OutOfRangeError\n"
         "for e in ('auto', 'numpy'):\n"
@@ -201,9 +237,11 @@ def test_numpy_engine_without_numba():
     assert "engine" in out and "numba" in out and "pip install" in out, out
 
 
-def test_auto_switches_after_the_numpy_steps():
-    """engine='auto' resolves to numpy for a fresh process and to numba (where it is
+def test_auto_switches_after_the_numpy_steps(monkeypatch):
+    """Where the C extension is not built (its import failed: monkeypatched here),
+    engine='auto' resolves to numpy for a fresh process and to numba (where it is
     installed) once the process has taken AUTO_SWITCH_STEPS numpy steps."""
+    monkeypatch.setattr(sl, "_C_ENGINE", ["No module named '_ckernels' (test)"])
     kept = sl._NUMPY_STEPS[0]
     try:
         sl._NUMPY_STEPS[0] = 0
@@ -220,7 +258,7 @@ def test_auto_stays_numpy_where_numba_does_not_import():
     another numpy): past the switching point it warns once and keeps solving with
     numpy; engine='numba' is refused at construction, naming the parameter."""
     code = (
-        "import sys, warnings, importlib.util\n"
+        NO_C + "import sys, warnings, importlib.util\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "from linecontact import OutOfRangeError\n"
         "class Broken:\n"
@@ -312,10 +350,11 @@ def test_compiled_engine_without_a_writable_cache():
 def test_auto_switches_within_a_sweep():
     """A load sweep on one roller with engine='auto' (the switching point lowered to
     30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
-    imported part-way, and every row equals the numpy engine's sweep within 1e-10."""
+    imported part-way, and every row equals the numpy engine's sweep within 1e-10.
+    (The C extension blocked: where it is built, 'auto' takes it from the start.)"""
     pytest.importorskip("numba")
     code = (
-        "import sys, numpy as np\n"
+        NO_C + "import sys, numpy as np\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "slices.AUTO_SWITCH_STEPS = 30\n"
         "F = np.linspace(500.0, 8000.0, 12)\n"
@@ -338,15 +377,18 @@ def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
     engine and what to install. A roller pickled with engine='numba' to a process
     without numba (a Dask worker; unpickling sets the attribute without a check) is
     refused the same way when it solves (it was a bare ImportError from deep in the
-    solve). Numba's import is blocked in a fresh interpreter."""
+    solve). Likewise 'c' where the C extension is not built (a roller pickled with
+    engine='c' to a process without it). Numba's and the extension's imports are
+    blocked in a fresh interpreter."""
     code = (
-        "import sys, pickle; sys.modules['numba'] = None\n"
+        NO_C + "import sys, pickle; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller\n"
         "from linecontact import OutOfRangeError\n"
         "from linecontact.validity import UnknownNameError\n"
         "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
         " engine='numpy')\n"
-        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError)):\n"
+        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError),\n"
+        "               ('c', OutOfRangeError)):\n"
         "    try:\n"
         "        r.engine = e\n"
         "        print('set', e)\n"
@@ -362,19 +404,60 @@ def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
         "        print('refused:', exc)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.splitlines()
-    assert len(out) == 4 and all(o.startswith("refused: engine") for o in out), out
+    assert len(out) == 6 and all(o.startswith("refused: engine") for o in out), out
     assert "fortran" in out[0] and "fortran" in out[1], out
     assert "pip install" in out[2] and "pip install" in out[3], out
+    assert all("'c'" in o and "C compiler" in o for o in out[4:]), out
 
 
 def test_each_test_starts_on_the_numpy_reference():
     """Which engine a test's default-engine solves use must not depend on the tests run
     before it in the process: the step counter of engine='auto' is zero at the start of
-    every test (tests/conftest.py), so 'auto' is the numpy reference until a test itself
-    takes AUTO_SWITCH_STEPS steps. (Run after the rest of the suite, which takes far
-    more than 1500 numpy steps, this failed.)"""
+    every test (tests/conftest.py), so 'auto' is the C engine where its extension is
+    built (from the first solve, whatever came before) and else the numpy reference
+    until a test itself takes AUTO_SWITCH_STEPS steps. (Run after the rest of the
+    suite, which takes far more than 1500 numpy steps, this failed.)"""
     assert sl._NUMPY_STEPS[0] == 0
+    assert sl.resolve_engine("auto") == ("c" if sl.c_engine() is not None else "numpy")
+
+
+def test_without_the_c_extension_auto_falls_back_and_c_is_refused(monkeypatch):
+    """Where the C extension was not built (its import made to fail here, as without a
+    C compiler at install), engine='auto' solves with numpy, and the same answer as
+    engine='numpy' to the last bit (the same code); engine='c' is refused at
+    construction by an OutOfRangeError naming engine, the value and how to build it."""
+    import linecontact.roller as package
+    for name in ("_ckernels", "_cengine"):        # (as in a process that never had them)
+        monkeypatch.delattr(package, name, raising=False)
+        monkeypatch.delitem(sys.modules, f"linecontact.roller.{name}", raising=False)
+    monkeypatch.setitem(sys.modules, "linecontact.roller._ckernels", None)
+    monkeypatch.setattr(sl, "_C_ENGINE", [])
+    assert sl.c_engine() is None, "the blocked extension imported"
     assert sl.resolve_engine("auto") == "numpy"
+    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, "circular:Rc=0.5", n_slices=20,
+                           engine=e).at_force(500.0, tilt=1e-3) for e in ("auto", "numpy"))
+    assert a.depth == b.depth and a.p_max == b.p_max
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
+    assert "'c'" in str(err.value) and "C compiler" in str(err.value), str(err.value)
+
+
+def test_auto_takes_the_c_engine_from_the_first_solve():
+    """Where the C extension is built, one solve with the default engine in a fresh
+    interpreter runs on it (the module _cengine imported) and imports neither numba nor
+    scipy: a single solve takes the compiled loops at no start-up cost."""
+    _need("c")
+    code = ("import sys\n"
+            "from linecontact.roller import ProfiledRoller, slices\n"
+            "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281')\n"
+            "r.at_force(4000.0, tilt=1e-3)\n"
+            "print(slices.resolve_engine(r.engine), slices._NUMPY_STEPS[0],"
+            " 'linecontact.roller._cengine' in sys.modules, 'numba' in sys.modules,"
+            " 'scipy' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == ["c", "0", "True", "False", "False"], (
+        f"engine, numpy steps, C engine / numba / scipy imported: {out}")
 
 
 def _random_step_system(seed):

@@ -472,7 +472,8 @@ def _random_step_system(seed):
     return rng, n, ns, R, qsc, S, w, x, J
 
 
-def test_compiled_step_helpers_equal_their_numpy_lines():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_step_helpers_equal_their_numpy_lines(engine):
     """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
     bordered_sums, step_out, step_update) give what the numpy code they replace in
     SliceEquations.bordered gives (slices.scaled_system; the other lines written out
@@ -481,8 +482,8 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
     the loads, the curvatures and the overlap, at a given tilt and with a tilt step),
     the slices that limited it and the largest changes. A whole solve cannot check the damping and the mask: a wrong alpha or
     hit_q changes the Newton path, not the converged answer."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(3)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -570,7 +571,8 @@ def _step_by_helpers(jit, J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target
     return 0, B, z, K, step, dz, out, upd
 
 
-def test_compiled_newton_step_equals_the_helpers_it_fuses():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
     """_compiled.newton_step, the bordered step after the linearisation in one compiled
     call, gives bit for bit what the helpers it replaces give with the Python lines
     between them (_step_by_helpers: scaled_system, solve_sums, K = Wz[:, 1:] + grid,
@@ -579,8 +581,8 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses():
     enough that the update is done (status 0) and with slices the step drives below
     zero (status 1); Cramer's rule on a K that is not finite hands the 2 x 2 system back
     (status 2), and a singular Jacobian the scaled system (None: numpy's solve)."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(7)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -639,7 +641,8 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses():
     assert np.array_equal(got[1], sl.scaled_system(np.zeros_like(Js), res, rhs, ns, qsc, R))
 
 
-def test_compiled_dense_solves_equal_the_numpy_loops():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_dense_solves_equal_the_numpy_loops(engine):
     """The compiled engine's dense solves give what the numpy lines they replace give:
     _compiled.solve_sums the solution of np.linalg.solve (the same LAPACK routine;
     1e-12 of its scale allows another BLAS build) and bordered_sums' sums;
@@ -647,9 +650,10 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     SliceEquations.start_at_force (written out here: solve, remove the slices whose
     load is not positive, solve again), the same kept slices and solution, on a
     bordered system where slices leave in two rounds; a singular system falls back to
-    numpy's solve, which raises numpy's LinAlgError."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    numpy's solve, which raises numpy's LinAlgError. (The C engine's solve_sums is
+    numpy's solve and the C sums; the cold start is numpy's under it: numba only.)"""
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J = _random_step_system(5)
     B, qs = rng.normal(size=(2 * ns, 3)), rng.random(ns)
@@ -660,6 +664,8 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     assert wq == pytest.approx(want[0], rel=1e-13)
     assert wxq == pytest.approx(want[1], rel=1e-13)
     np.testing.assert_allclose(Wz, want[2], rtol=1e-12, atol=1e-13 * np.abs(want[2]).max())
+    if engine != "numba":
+        return
     # the start's loop: loads of a diagonal-dominant system with some negative targets
     m, nb = 16, 2
     M = np.zeros((m + nb, m + nb))
@@ -686,6 +692,35 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
         jit.solve(np.zeros((3, 3)), np.ones(3))
 
 
+def test_the_c_extension_checks_its_arrays():
+    """The C extension reads its arrays through the buffer protocol without numpy's
+    help, so it checks them itself: an array of the wrong length, of the wrong type
+    (int64 for float64), not contiguous, or a slice index outside the grid raises a
+    ValueError naming the array, instead of reading or writing out of bounds."""
+    _need("c")
+    from linecontact.roller import _ckernels, _layout
+
+    e = _equations(60, 0.0, 0, "c")
+    S = np.arange(10, 20)
+    b = np.full(10, 1e-4)
+    tn, tf, lr, ltn, ltf, Gt = _layout.transposed(
+        e._tnear, e._tfar, e._logratio, sl._far_geometry(*e._geometry))
+
+    def call(S=S, b=b, A=None, dg=e.dg):
+        A = np.empty((len(S), 60)) if A is None else A
+        return _ckernels.kernels(S, np.arange(60), b, e.span, dg, tn, tf, lr, ltn, ltf,
+                                 Gt, sl._FAR_COEF, True, A, None, None, None)
+
+    assert call() is True
+    for kwargs, name in ((dict(b=b[:-1]), "b"), (dict(A=np.empty((10, 59))), "A"),
+                         (dict(S=np.r_[S[:-1], 60]), r"S\[9\] = 60"),
+                         (dict(S=S.astype(float)), "S"), (dict(b=b.astype(np.int64)), "b"),
+                         (dict(dg=np.r_[e.dg, e.dg][::2]), "dg"),
+                         (dict(A=np.empty((60, 10)).T), "A")):
+        with pytest.raises(ValueError, match=name):
+            call(**kwargs)
+
+
 def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     """The module-wide caches of slice geometry (n x n arrays, five of them per
     geometry in the compiled engine) were bounded only in count: sixteen geometries at
@@ -701,15 +736,16 @@ def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("mode", [1, 2])
-def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode):
+def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode, engine):
     """The step of a force row (mode 1) or a moment row (mode 2) is its residual over
     K[0, 0] or K[1, 1]; where that entry is exactly zero the lines _compiled.newton_step
     replaced divided numpy floats (IEEE: +-inf, NaN for 0/0) and went on, where numba's
     compiled division raises ZeroDivisionError. The fused step must hand back what the
     helpers give (the same step, dz, mask, update; NaN compared as NaN), not raise."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(11)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))

@@ -7,7 +7,10 @@
  * the far-field series (all its terms, every target), the near band from the cubic
  * spline table of the strip functions (kernel.spline_table), the diagonal; beyond the
  * table (tau >= tau_max) the series in (b/t)^2, below it (tau < tau_min) a call
- * returns False and the caller takes the numpy path.
+ * returns False and the caller takes the numpy path. Also the bordered Newton step's
+ * small arithmetic around numpy's dense solve (the numba engine's _scaled_system,
+ * _bordered_sums, _step_out, _step_update and _newton_step less its solve), which
+ * numpy's many small array operations made cost more than the loops above.
  *
  * IEEE double arithmetic: built without -ffast-math and with -ffp-contract=off (no
  * fused multiply-adds), so that every operation rounds as numba's and numpy's do.
@@ -330,6 +333,210 @@ static int linearised_loop(const Geometry *g, const State *st, double *res, doub
 }
 
 /* ---------------------------------------------------------------------------------- */
+/* the bordered Newton step's small arithmetic around numpy's dense solve
+ * (SliceEquations.bordered; the numba engine's _compiled._scaled_system,
+ * _bordered_sums, _step_out, _step_update and _newton_step, the same order)          */
+
+/* J's off-diagonal blocks scaled in place, J[i, j] at J[i * si + j * sj], and the
+ * right-hand sides B (2 ns x 3, C order) */
+static void scaled_system_loop(double *J, Py_ssize_t si, Py_ssize_t sj, const double *res,
+                               const double *rhs, Py_ssize_t ns, double f_hi, double f_lo,
+                               double g_q, double h_q, double R, double *B)
+{
+    const Py_ssize_t n2 = 2 * ns;
+    for (Py_ssize_t j = ns; j < n2; j++)
+        for (Py_ssize_t i = 0; i < ns; i++)
+            J[i * si + j * sj] *= f_hi;
+    for (Py_ssize_t j = 0; j < ns; j++)
+        for (Py_ssize_t i = ns; i < n2; i++)
+            J[i * si + j * sj] *= f_lo;
+    for (Py_ssize_t i = 0; i < ns; i++) {
+        B[i * 3] = res[i] * g_q;
+        B[i * 3 + 1] = rhs[i * 2] * h_q;
+        B[i * 3 + 2] = rhs[i * 2 + 1] * h_q;
+    }
+    const double mR = -R;
+    for (Py_ssize_t i = ns; i < n2; i++) {
+        B[i * 3] = res[i] * mR;
+        B[i * 3 + 1] = rhs[i * 2] * R;
+        B[i * 3 + 2] = rhs[i * 2 + 1] * R;
+    }
+}
+
+/* z (2 ns x 3, C order) unscaled in place; the force and moment rows: sums[0] = w.q,
+ * sums[1] = (w x).q over S, Wz (2 x 3) those rows times z's load part */
+static void bordered_sums_loop(double *z, Py_ssize_t ns, double qsc, double r_inv,
+                               const double *w, const double *x, const int64_t *S,
+                               const double *qs, double *Wz, double *sums)
+{
+    const Py_ssize_t n2 = 2 * ns;
+    for (int j = 0; j < 3; j++) {
+        for (Py_ssize_t i = 0; i < ns; i++)
+            z[i * 3 + j] *= qsc;
+        for (Py_ssize_t i = ns; i < n2; i++)
+            z[i * 3 + j] *= r_inv;
+    }
+    double wq = 0.0, wxq = 0.0;
+    for (int j = 0; j < 6; j++)
+        Wz[j] = 0.0;
+    for (Py_ssize_t i = 0; i < ns; i++) {
+        const double wi = w[S[i]];
+        const double wx = wi * x[S[i]];
+        wq += wi * qs[i];
+        wxq += wx * qs[i];
+        for (int j = 0; j < 3; j++) {
+            Wz[j] += wi * z[i * 3 + j];
+            Wz[3 + j] += wx * z[i * 3 + j];
+        }
+    }
+    sums[0] = wq;
+    sums[1] = wxq;
+}
+
+/* the step dz = z[:, 0] + z[:, 1:] (s0, s1) and the mask of the loaded slices it drives
+ * below zero; returns how many */
+static Py_ssize_t step_out_loop(const double *z, double s0, double s1, Py_ssize_t ns,
+                                const double *qs, double *dz, char *out)
+{
+    for (Py_ssize_t i = 0; i < 2 * ns; i++)
+        dz[i] = z[i * 3] + (z[i * 3 + 1] * s0 + z[i * 3 + 2] * s1);
+    Py_ssize_t k = 0;
+    for (Py_ssize_t i = 0; i < ns; i++) {
+        out[i] = qs[i] + dz[i] < 0.0;
+        if (out[i])
+            k++;
+    }
+    return k;
+}
+
+/* the damped update (_compiled._step_update): q[S], c[S] in place; res = (alpha,
+ * largest overlap, largest |dq|, largest |dc|) */
+static void step_update_loop(double *q, double *c, const int64_t *S, Py_ssize_t ns,
+                             const double *qs, const double *cs, const double *dq,
+                             const double *dc, const double *over, Py_ssize_t n,
+                             const double *x, double s0, double s1, char *hit_q,
+                             double *res)
+{
+    double alpha = 1.0;
+    for (Py_ssize_t i = 0; i < ns; i++) {
+        hit_q[i] = qs[i] + dq[i] <= 0.05 * qs[i];
+        if (hit_q[i]) {
+            double a = 0.95 * qs[i] / -dq[i];
+            if (a < alpha)
+                alpha = a;
+        }
+    }
+    double amin = INFINITY;
+    for (Py_ssize_t i = 0; i < ns; i++)
+        if (cs[i] + dc[i] <= 0.2 * cs[i]) {
+            double a = 0.8 * cs[i] / -dc[i];
+            if (a < amin)
+                amin = a;
+        }
+    if (amin < alpha)
+        alpha = amin;
+    double dmax = over[0];
+    for (Py_ssize_t i = 1; i < n; i++)
+        if (over[i] > dmax)
+            dmax = over[i];
+    double drop;
+    if (s1 != 0.0) {
+        double lowest = INFINITY;
+        for (Py_ssize_t i = 0; i < ns; i++) {
+            double v = s0 + s1 * x[S[i]];
+            if (v < lowest)
+                lowest = v;
+        }
+        drop = -lowest;
+    } else
+        drop = -s0;
+    if (drop > 0.5 * dmax) {
+        double a = 0.5 * dmax / drop;
+        if (a < alpha)
+            alpha = a;
+    }
+    double dqmax = 0.0, dcmax = 0.0;
+    for (Py_ssize_t i = 0; i < ns; i++) {
+        if (alpha == 1.0) {
+            q[S[i]] = qs[i] + dq[i];
+            c[S[i]] = cs[i] + dc[i];
+        } else {
+            q[S[i]] = qs[i] + alpha * dq[i];
+            c[S[i]] = cs[i] + alpha * dc[i];
+        }
+        if (fabs(dq[i]) > dqmax)
+            dqmax = fabs(dq[i]);
+        if (fabs(dc[i]) > dcmax)
+            dcmax = fabs(dc[i]);
+    }
+    res[0] = alpha;
+    res[1] = dmax;
+    res[2] = dqmax;
+    res[3] = dcmax;
+}
+
+/* num / k as numpy's float division answers it, k = 0 included (_compiled._quotient) */
+static double quotient(double num, double k)
+{
+    if (k == 0.0)
+        return num * INFINITY * copysign(1.0, k);
+    return num / k;
+}
+
+typedef struct {
+    double *z;
+    const double *grid, *w, *x, *qs, *cs, *over;
+    const int64_t *S;
+    double *q, *c, *K, *st, *dz, *upd;
+    char *out, *hit_q;
+    Py_ssize_t ns, n;
+    double qsc, r_inv, target;
+    int mode;
+} Step;
+
+/* _compiled._newton_step after its dense solve: the sums, K = Wz[:, 1:] + grid, the
+ * step in (d, theta) of each mode, its mask and, where no slice leaves, the damped
+ * update. Returns the status: 0 updated, 1 slices leave, 2 Cramer's determinant zero
+ * or not finite (st[2:4] the 2 x 2 system's right-hand side). */
+static int newton_after_loop(const Step *p)
+{
+    double Wz[6], sums[2];
+    const Py_ssize_t ns = p->ns;
+    bordered_sums_loop(p->z, ns, p->qsc, p->r_inv, p->w, p->x, p->S, p->qs, Wz, sums);
+    const double wq = sums[0], wxq = sums[1];
+    double *K = p->K;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            K[i * 2 + j] = Wz[i * 3 + j + 1] + p->grid[i * 2 + j];
+    const double lin0 = Wz[0], lin1 = Wz[3];
+    double s0 = 0.0, s1 = 0.0;
+    if (p->mode == 3) {
+        double r0 = p->target - wq - lin0;
+        double r1 = -wxq - lin1;
+        double k00 = K[0], k01 = K[1], k10 = K[2], k11 = K[3];
+        double det = k00 * k11 - k01 * k10;
+        if (det == 0.0 || !isfinite(det)) {
+            p->st[2] = r0;
+            p->st[3] = r1;
+            return 2;
+        }
+        s0 = (r0 * k11 - k01 * r1) / det;
+        s1 = (k00 * r1 - k10 * r0) / det;
+    } else if (p->mode == 1)
+        s0 = quotient(p->target - wq - lin0, K[0]);
+    else if (p->mode == 2)
+        s1 = quotient(-wxq - lin1, K[3]);
+    p->st[0] = s0;
+    p->st[1] = s1;
+    Py_ssize_t nout = step_out_loop(p->z, s0, s1, ns, p->qs, p->dz, p->out);
+    if (nout > 0 && ns > 2)
+        return 1;
+    step_update_loop(p->q, p->c, p->S, ns, p->qs, p->cs, p->dz, p->dz + ns, p->over, p->n,
+                     p->x, s0, s1, p->hit_q, p->upd);
+    return 0;
+}
+
+/* ---------------------------------------------------------------------------------- */
 /* argument checks                                                                    */
 
 #define MAXBUF 32
@@ -346,7 +553,7 @@ static void release(Buffers *bs)
     bs->count = 0;
 }
 
-/* the buffer of `obj` (C-contiguous, item size 8, kind 'd' float64 or 'i' int64, exactly
+/* the buffer of `obj` (C-contiguous, kind 'd' float64, 'i' int64 or 'b' bool, exactly
  * `len` items unless len < 0), or NULL with ValueError set */
 static void *take(Buffers *bs, PyObject *obj, const char *name, char kind,
                   Py_ssize_t len, int writable)
@@ -357,22 +564,25 @@ static void *take(Buffers *bs, PyObject *obj, const char *name, char kind,
         PyErr_Clear();
         PyErr_Format(PyExc_ValueError, "_ckernels: %s must be a C-contiguous%s array "
                      "of %s", name, writable ? " writable" : "",
-                     kind == 'd' ? "float64" : "int64");
+                     kind == 'd' ? "float64" : kind == 'b' ? "bool" : "int64");
         return NULL;
     }
     bs->count++;
     const char *f = v->format == NULL ? "B" : v->format;
     if (*f == '@' || *f == '=' || *f == '<')
         f++;
+    const Py_ssize_t size = kind == 'b' ? 1 : 8;
     int fmt_ok = kind == 'd' ? strcmp(f, "d") == 0
-                             : (strcmp(f, "q") == 0 || strcmp(f, "l") == 0);
-    if (v->itemsize != 8 || !fmt_ok) {
+                 : kind == 'b' ? strcmp(f, "?") == 0
+                               : (strcmp(f, "q") == 0 || strcmp(f, "l") == 0);
+    if (v->itemsize != size || !fmt_ok) {
         PyErr_Format(PyExc_ValueError, "_ckernels: %s must hold %s (got format '%s', "
-                     "item size %zd)", name, kind == 'd' ? "float64" : "int64",
+                     "item size %zd)", name,
+                     kind == 'd' ? "float64" : kind == 'b' ? "bool" : "int64",
                      v->format == NULL ? "B" : v->format, v->itemsize);
         return NULL;
     }
-    Py_ssize_t got = v->len / 8;
+    Py_ssize_t got = v->len / size;
     if (len >= 0 && got != len) {
         PyErr_Format(PyExc_ValueError, "_ckernels: %s has %zd items, %zd expected", name,
                      got, len);
@@ -581,6 +791,156 @@ done:
     return result(ok);
 }
 
+/* the slice arrays of the step: w, x (n), S (ns, in [0, n)), qs (ns) */
+static int step_slices(Buffers *bs, PyObject *w, PyObject *x, PyObject *S, PyObject *qs,
+                       Py_ssize_t ns, const double **w_, const double **x_,
+                       const int64_t **S_, const double **qs_, Py_ssize_t *n)
+{
+    if (!(*w_ = take(bs, w, "w", 'd', -1, 0)))
+        return 0;
+    *n = items(bs);
+    if (!(*x_ = take(bs, x, "x", 'd', *n, 0)) || !(*S_ = take(bs, S, "S", 'i', ns, 0))
+        || !(*qs_ = take(bs, qs, "qs", 'd', ns, 0)))
+        return 0;
+    return in_range(*S_, ns, *n, "S");
+}
+
+static PyObject *scaled_system(PyObject *self, PyObject *args)
+{
+    PyObject *J, *res, *rhs, *B;
+    Py_ssize_t ns;
+    int fortran;
+    double f_hi, f_lo, g_q, h_q, R;
+    if (!PyArg_ParseTuple(args, "OpOOndddddO:scaled_system", &J, &fortran, &res, &rhs, &ns,
+                          &f_hi, &f_lo, &g_q, &h_q, &R, &B))
+        return NULL;
+    Buffers bs = {.count = 0};
+    double *J_, *B_;
+    const double *res_, *rhs_;
+    const Py_ssize_t n2 = 2 * ns;
+    PyObject *ret = NULL;
+    if (ns > 0 && (J_ = take(&bs, J, "J", 'd', n2 * n2, 1))
+        && (res_ = take(&bs, res, "res", 'd', n2, 0))
+        && (rhs_ = take(&bs, rhs, "rhs", 'd', n2 * 2, 0))
+        && (B_ = take(&bs, B, "B", 'd', n2 * 3, 1))) {
+        /* J[i, j]: the buffer of J.T (Fortran-order J) or of J (C order) */
+        scaled_system_loop(J_, fortran ? 1 : n2, fortran ? n2 : 1, res_, rhs_, ns, f_hi,
+                           f_lo, g_q, h_q, R, B_);
+        ret = Py_None;
+        Py_INCREF(ret);
+    } else if (!PyErr_Occurred())
+        PyErr_SetString(PyExc_ValueError, "_ckernels: ns must be positive");
+    release(&bs);
+    return ret;
+}
+
+static PyObject *bordered_sums(PyObject *self, PyObject *args)
+{
+    PyObject *z, *w, *x, *S, *qs, *Wz;
+    Py_ssize_t ns, n;
+    double qsc, r_inv;
+    if (!PyArg_ParseTuple(args, "OnddOOOOO:bordered_sums", &z, &ns, &qsc, &r_inv, &w, &x,
+                          &S, &qs, &Wz))
+        return NULL;
+    Buffers bs = {.count = 0};
+    double *z_, *Wz_, sums[2];
+    const double *w_, *x_, *qs_;
+    const int64_t *S_;
+    PyObject *ret = NULL;
+    if ((z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
+        && step_slices(&bs, w, x, S, qs, ns, &w_, &x_, &S_, &qs_, &n)
+        && (Wz_ = take(&bs, Wz, "Wz", 'd', 6, 1))) {
+        bordered_sums_loop(z_, ns, qsc, r_inv, w_, x_, S_, qs_, Wz_, sums);
+        ret = Py_BuildValue("dd", sums[0], sums[1]);
+    }
+    release(&bs);
+    return ret;
+}
+
+static PyObject *step_out(PyObject *self, PyObject *args)
+{
+    PyObject *z, *qs, *dz, *out;
+    Py_ssize_t ns;
+    double s0, s1;
+    if (!PyArg_ParseTuple(args, "OddnOOO:step_out", &z, &s0, &s1, &ns, &qs, &dz, &out))
+        return NULL;
+    Buffers bs = {.count = 0};
+    const double *z_, *qs_;
+    double *dz_;
+    char *out_;
+    PyObject *ret = NULL;
+    if ((z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 0))
+        && (qs_ = take(&bs, qs, "qs", 'd', ns, 0))
+        && (dz_ = take(&bs, dz, "dz", 'd', 2 * ns, 1))
+        && (out_ = take(&bs, out, "out", 'b', ns, 1)))
+        ret = PyLong_FromSsize_t(step_out_loop(z_, s0, s1, ns, qs_, dz_, out_));
+    release(&bs);
+    return ret;
+}
+
+static PyObject *step_update(PyObject *self, PyObject *args)
+{
+    PyObject *q, *c, *S, *qs, *cs, *dq, *dc, *over, *x, *hit_q, *res;
+    double s0, s1;
+    if (!PyArg_ParseTuple(args, "OOOOOOOOOddOO:step_update", &q, &c, &S, &qs, &cs, &dq,
+                          &dc, &over, &x, &s0, &s1, &hit_q, &res))
+        return NULL;
+    Buffers bs = {.count = 0};
+    double *q_, *c_, *res_;
+    const double *qs_, *cs_, *dq_, *dc_, *over_, *x_;
+    const int64_t *S_;
+    char *hit_;
+    Py_ssize_t n, ns;
+    PyObject *ret = NULL;
+    if ((q_ = take(&bs, q, "q", 'd', -1, 1)) && (n = items(&bs)) > 0
+        && (c_ = take(&bs, c, "c", 'd', n, 1)) && (over_ = take(&bs, over, "over", 'd', n, 0))
+        && (x_ = take(&bs, x, "x", 'd', n, 0)) && (S_ = take(&bs, S, "S", 'i', -1, 0))
+        && (ns = items(&bs)) >= 0 && in_range(S_, ns, n, "S")
+        && (qs_ = take(&bs, qs, "qs", 'd', ns, 0)) && (cs_ = take(&bs, cs, "cs", 'd', ns, 0))
+        && (dq_ = take(&bs, dq, "dq", 'd', ns, 0)) && (dc_ = take(&bs, dc, "dc", 'd', ns, 0))
+        && (hit_ = take(&bs, hit_q, "hit_q", 'b', ns, 1))
+        && (res_ = take(&bs, res, "res", 'd', 4, 1))) {
+        step_update_loop(q_, c_, S_, ns, qs_, cs_, dq_, dc_, over_, n, x_, s0, s1, hit_, res_);
+        ret = Py_None;
+        Py_INCREF(ret);
+    } else if (!PyErr_Occurred())
+        PyErr_SetString(PyExc_ValueError, "_ckernels: q is empty");
+    release(&bs);
+    return ret;
+}
+
+static PyObject *newton_after(PyObject *self, PyObject *args)
+{
+    PyObject *z, *grid, *w, *x, *S, *qs, *cs, *q, *c, *over, *K, *st, *dz, *out, *hit_q,
+        *upd;
+    Step p;
+    if (!PyArg_ParseTuple(args, "OOnddOOOOOdiOOOOOOOOO:newton_after", &z, &grid, &p.ns,
+                          &p.qsc, &p.r_inv, &w, &x, &S, &qs, &cs, &p.target, &p.mode, &q,
+                          &c, &over, &K, &st, &dz, &out, &hit_q, &upd))
+        return NULL;
+    Buffers bs = {.count = 0};
+    const Py_ssize_t ns = p.ns;
+    PyObject *ret = NULL;
+    if ((p.z = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
+        && (p.grid = take(&bs, grid, "grid", 'd', 4, 0))
+        && step_slices(&bs, w, x, S, qs, ns, &p.w, &p.x, &p.S, &p.qs, &p.n)
+        && (p.cs = take(&bs, cs, "cs", 'd', ns, 0))
+        && (p.q = take(&bs, q, "q", 'd', p.n, 1)) && (p.c = take(&bs, c, "c", 'd', p.n, 1))
+        && (p.over = take(&bs, over, "over", 'd', p.n, 0))
+        && (p.K = take(&bs, K, "K", 'd', 4, 1)) && (p.st = take(&bs, st, "st", 'd', 4, 1))
+        && (p.dz = take(&bs, dz, "dz", 'd', 2 * ns, 1))
+        && (p.out = take(&bs, out, "out", 'b', ns, 1))
+        && (p.hit_q = take(&bs, hit_q, "hit_q", 'b', ns, 1))
+        && (p.upd = take(&bs, upd, "upd", 'd', 4, 1))) {
+        if (p.n == 0)
+            PyErr_SetString(PyExc_ValueError, "_ckernels: w is empty");
+        else
+            ret = PyLong_FromLong(newton_after_loop(&p));
+    }
+    release(&bs);
+    return ret;
+}
+
 static PyMethodDef methods[] = {
     {"set_table", set_table, METH_VARARGS,
      "set_table(coef, tau_min, tau_max, z0, 1/h, h, r_inf) -> bool: the spline "
@@ -594,6 +954,20 @@ static PyMethodDef methods[] = {
      "linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo0, dlo1, "
      "dhi0, dhi1, tn, tf, lr, ltn, ltf, Gt, fc, far, res, J, rhs, gap, grid) -> bool: "
      "SliceEquations.linearised's outputs filled (J as its C-order transpose)."},
+    {"scaled_system", scaled_system, METH_VARARGS,
+     "scaled_system(J, fortran, res, rhs, ns, f_hi, f_lo, g_q, h_q, R, B): the Newton "
+     "step's scaled system, J (the buffer of J.T where fortran) scaled in place, B filled."},
+    {"bordered_sums", bordered_sums, METH_VARARGS,
+     "bordered_sums(z, ns, qsc, 1/R, w, x, S, qs, Wz) -> (w.q, (w x).q): z unscaled in "
+     "place, Wz (2 x 3) filled."},
+    {"step_out", step_out, METH_VARARGS,
+     "step_out(z, s0, s1, ns, qs, dz, out) -> count: the step and its mask."},
+    {"step_update", step_update, METH_VARARGS,
+     "step_update(q, c, S, qs, cs, dq, dc, over, x, s0, s1, hit_q, res): the damped "
+     "update in place; res = (alpha, largest overlap, largest |dq|, largest |dc|)."},
+    {"newton_after", newton_after, METH_VARARGS,
+     "newton_after(z, grid, ns, qsc, 1/R, w, x, S, qs, cs, target, mode, q, c, over, K, "
+     "st, dz, out, hit_q, upd) -> status: the Newton step after its dense solve."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module = {

@@ -963,7 +963,9 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            jit = compiled() if s.engine == "numba" else None
+            # (the C engine: the same helpers in C, numpy's dense solve between them)
+            jit = (compiled() if s.engine == "numba" else
+                   c_engine() if s.engine == "c" else None)
             fused = status = None
             if jit is not None:
                 # the scaling, dense solve, sums, step, mask and damped update below in

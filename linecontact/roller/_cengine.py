@@ -19,21 +19,29 @@ numba helpers' names, signatures and order of operations (``newton_step``,
 themselves are numpy's (``np.linalg.solve``: no LAPACK is linked into the extension),
 and so is the cold start.
 
-Importing this module raises ImportError where the extension was not built (the
-caller, :func:`linecontact.roller.slices.c_engine`, then keeps to numpy or numba).
+Where the extension was not built this module still imports (so that every module of
+the package does), with ``UNAVAILABLE`` saying why; the caller,
+:func:`linecontact.roller.slices.c_engine`, then keeps to numpy or numba.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from . import _ckernels
 from ._layout import table, transposed
 from .kernel import R_INF
 
-__all__ = []
+try:
+    from . import _ckernels
+except ImportError as err:           # not built (no C compiler at install)
+    _ckernels = None
+    #: why the C engine cannot run here (None where it can)
+    UNAVAILABLE = str(err) or "the extension linecontact.roller._ckernels is not built"
+else:
+    UNAVAILABLE = None
+    _tmin, _tmax, _coef, _z0, _ih, _h = table()
+    _ckernels.set_table(_coef, _tmin, _tmax, _z0, _ih, _h, float(R_INF))
 
-_tmin, _tmax, _coef, _z0, _ih, _h = table()
-_ckernels.set_table(_coef, _tmin, _tmax, _z0, _ih, _h, float(R_INF))
+__all__ = []
 
 _I8 = np.dtype(np.int64)
 _F8 = np.dtype(np.float64)

@@ -193,11 +193,9 @@ def c_engine():
     compiler at install; built for another Python). Tried once per process; importing
     it costs well under a millisecond."""
     if not _C_ENGINE:
-        try:
-            from . import _cengine
-            _C_ENGINE.append(_cengine)
-        except ImportError as err:
-            _C_ENGINE.append(str(err))
+        from . import _cengine
+        _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
+                         _cengine.UNAVAILABLE)
     got = _C_ENGINE[0]
     return None if isinstance(got, str) else got
 
@@ -230,7 +228,7 @@ def check_engine(engine):
 
 def resolve_engine(engine):
     """"numpy", "numba" or "c" for a new SliceEquations: "auto" is "c" where the C
-    extension imports (from the first solve: it imports in microseconds); else numpy
+    extension imports (from the first solve: it imports in under a millisecond); else numpy
     until this process has taken AUTO_SWITCH_STEPS numpy steps, then numba where it
     is installed and imports (a single solve never imports numba; a sweep, a batch or
     a bearing repays it); where that import fails, numpy for the rest of the process,
@@ -443,7 +441,8 @@ class SliceEquations:
         self.R = radius
         # "numpy", "numba" or "c" (resolved by the owner, ProfiledRoller): who
         # evaluates kernels() and linearised(); the numpy code is the reference and the
-        # fallback (the dense solves and updates are numba's under "numba" only)
+        # fallback (the Newton step's arithmetic is compiled under both compiled
+        # engines, its dense solves and the cold start's under "numba" only)
         self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi

@@ -1,5 +1,7 @@
 """Shared test settings: hypothesis runs few, deadline-free examples so the suite stays
-fast; every test starts with the profiled-roller engine 'auto' on its numpy reference."""
+fast; every test starts with the profiled-roller engine 'auto' where a fresh process
+has it: the C engine where its extension is built, else the numpy reference (the
+engines' agreement with numpy: tests/test_roller_engine.py)."""
 import pytest
 from hypothesis import settings
 

@@ -1,7 +1,12 @@
 """The engines of the coupled-slice equations: the compiled kernels and linearisation
-(linecontact/roller/_compiled.py, numba) against the numpy reference
-(SliceEquations.kernels, linearised), whole solves with both engines, and the choice of
+(linecontact/roller/_compiled.py, numba; linecontact/roller/_cengine.py over the C
+extension _ckernels, the same loops in C) against the numpy reference
+(SliceEquations.kernels, linearised), whole solves with every engine, and the choice of
 engine (docs/profiled_rollers.md, "Engines").
+
+Each agreement test runs for both compiled engines; one is skipped, with its reason,
+where numba is not installed or the C extension is not built (pip install -e . builds
+it where a C compiler is present; so does CI).
 
 The compiled code evaluates the same series coefficients, the same spline table and the
 same cached geometry with the same split into far field, near band and diagonal; it
@@ -25,6 +30,30 @@ from linecontact.roller.slices import SliceEquations
 from linecontact.validity import UnknownNameError
 
 TOL = 1e-12
+#: the compiled engines, each checked against the numpy reference
+COMPILED = ["numba", "c"]
+
+
+def _need(engine):
+    """Skip unless `engine` can run here (numba installed; the C extension built)."""
+    if engine == "numba":
+        pytest.importorskip("numba")
+    elif sl.c_engine() is None:
+        pytest.skip("the C extension linecontact.roller._ckernels is not built here "
+                    f"({sl._C_ENGINE[0]}): pip install -e . with a C compiler builds it")
+
+
+def _module(engine):
+    """The module of a compiled engine's kernels() and linearised()."""
+    if engine == "numba":
+        from linecontact.roller import _compiled
+        return _compiled
+    return sl.c_engine()
+
+
+#: Python lines that make the C extension unimportable in a fresh interpreter (as
+#: where it was not built): the engine 'auto' then keeps the numpy / numba policy
+NO_C = "import sys; sys.modules['linecontact.roller._ckernels'] = None\n"
 
 
 def _equations(n, grading, refine, engine):
@@ -64,12 +93,13 @@ def _states(N, rng):
         yield S, q, c
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_kernels_equal_numpy(grid):
+def test_compiled_kernels_equal_numpy(grid, engine):
     """A, D, EA, ED (and A alone) from the compiled loops equal the numpy kernels within
     1e-12 of each matrix's largest entry, for every loaded set and target set."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     N = a.n
     rng = np.random.default_rng(1)
     for S, q, c in _states(N, rng):
@@ -82,14 +112,15 @@ def test_compiled_kernels_equal_numpy(grid):
                     _close(x, y, f"{grid} {name} ns={len(S)} a_only={a_only}")
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS[:3])
-def test_compiled_far_field_takes_every_term(grid):
+def test_compiled_far_field_takes_every_term(grid, engine):
     """The compiled far field sums all 14 terms of the series over every target, as
     the numpy code does: the kernels agree within 1e-14 of each matrix's largest entry
     (rounding: 1.5e-15 observed). That is tight enough to see one term missing: the
     last (14th) term at the near band's edge, t/b = 3, is 4.6e-14 of ED's scale."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     rng = np.random.default_rng(1)
     for S, q, c in _states(a.n, rng):
         bS = np.sqrt(q[S] / c[S])
@@ -103,13 +134,14 @@ def test_compiled_far_field_takes_every_term(grid):
                 assert err <= 1e-14, f"{grid} {name} ns={len(S)}: {err:.2e} of the scale"
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_linearised_equals_numpy(grid):
+def test_compiled_linearised_equals_numpy(grid, engine):
     """Residual, Jacobian, grid columns, gaps and the 2x2 grid terms of linearised()
     from the compiled loops equal the numpy ones within 1e-12 of each one's largest
     entry (all slices or a subset as targets)."""
-    pytest.importorskip("numba")
-    a, b = _equations(*grid, "numpy"), _equations(*grid, "numba")
+    _need(engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
     N = a.n
     rng = np.random.default_rng(2)
     slope = 4e-6 * a.x ** 3 / 6e-3 ** 4
@@ -121,22 +153,24 @@ def test_compiled_linearised_equals_numpy(grid):
                 _close(x, y, f"{grid} {name} ns={len(S)} nt={len(T)}")
 
 
-def test_compiled_outside_the_spline_table():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_outside_the_spline_table(engine):
     """Beyond the spline table, t/b >= 1e4 (a slice about to leave, its strip
     nanometres wide: b = 1e-12 m here), the compiled code takes the series itself and
     agrees with the numpy code (which does the same); below it, t/b < 1e-4 (a strip
     far wider than the slices, b = 20 m), the call goes to the numpy code (series and
     quadrature) under either engine. Both: 1e-12 of each matrix's largest entry."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled
-
-    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, "numba")
+    _need(engine)
+    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, engine)
     S = np.arange(60)
     tiny = np.full(60, 1e-4)
     tiny[[0, 7, 59]] = 1e-12                 # w/2b ~ 1e8 on those diagonals
-    got = _compiled.kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
+    got = _module(engine).kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
                             sl._far_geometry(*b._geometry), sl._FAR_COEF, False)
     assert got is not None, "the compiled code fell back to numpy beyond the table"
+    assert _module(engine).kernels(S, S, np.full(60, 20.0), b.span, b.dg, b._tnear,
+                                   b._tfar, b._logratio, sl._far_geometry(*b._geometry),
+                                   sl._FAR_COEF, False) is None, "below the table: None"
     for bS in (tiny, np.full(60, 20.0)):
         for x, y, name in zip(a.kernels(S, bS), b.kernels(S, bS), "A D EA ED".split()):
             _close(x, y, name)
@@ -153,15 +187,16 @@ CASES = [
 ]
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("case", CASES)
-def test_whole_solves_agree_between_engines(case):
-    """A solve at a force with either engine: depth, tilt, moment, peak pressure and
-    stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the engines differ by
-    rounding only, so both reach the same converged state)."""
-    pytest.importorskip("numba")
+def test_whole_solves_agree_between_engines(case, engine):
+    """A solve at a force with a compiled engine and with numpy: depth, tilt, moment,
+    peak pressure and stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the
+    engines differ by rounding only, so both reach the same converged state)."""
+    _need(engine)
     profile, force, tilt = case
     sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(
-        force, tilt=tilt) for e in ("numpy", "numba")]
+        force, tilt=tilt) for e in ("numpy", engine)]
     a, b = sols
     assert a.depth == pytest.approx(b.depth, rel=1e-10)
     assert a.p_max == pytest.approx(b.p_max, rel=1e-10)
@@ -172,18 +207,19 @@ def test_whole_solves_agree_between_engines(case):
 
 
 def test_engine_names_are_checked():
-    """engine takes 'auto', 'numpy' or 'numba'; anything else is refused by name."""
+    """engine takes 'auto', 'numpy', 'numba' or 'c'; anything else is refused by
+    name."""
     with pytest.raises(UnknownNameError, match="engine"):
         ProfiledRoller(5e-3, 14e-3, 1e11, engine="fortran")
 
 
 def test_numpy_engine_without_numba():
-    """Without numba (its import blocked in a fresh interpreter) the numpy engine is
-    used: 'auto' and 'numpy' solve, 'auto' stays numpy past the switching point, and
-    'numba' is refused with a message naming the parameter, the value and what to
-    install."""
+    """Without numba and without the C extension (both imports blocked in a fresh
+    interpreter) the numpy engine is used: 'auto' and 'numpy' solve, 'auto' stays
+    numpy past the switching point, and 'numba' is refused with a message naming the
+    parameter, the value and what to install."""
     code = (
-        "import sys; sys.modules['numba'] = None\n"
+        NO_C + "import sys; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "from linecontact import OutOfRangeError\n"
         "for e in ('auto', 'numpy'):\n"
@@ -201,9 +237,11 @@ def test_numpy_engine_without_numba():
     assert "engine" in out and "numba" in out and "pip install" in out, out
 
 
-def test_auto_switches_after_the_numpy_steps():
-    """engine='auto' resolves to numpy for a fresh process and to numba (where it is
+def test_auto_switches_after_the_numpy_steps(monkeypatch):
+    """Where the C extension is not built (its import failed: monkeypatched here),
+    engine='auto' resolves to numpy for a fresh process and to numba (where it is
     installed) once the process has taken AUTO_SWITCH_STEPS numpy steps."""
+    monkeypatch.setattr(sl, "_C_ENGINE", ["No module named '_ckernels' (test)"])
     kept = sl._NUMPY_STEPS[0]
     try:
         sl._NUMPY_STEPS[0] = 0
@@ -220,7 +258,7 @@ def test_auto_stays_numpy_where_numba_does_not_import():
     another numpy): past the switching point it warns once and keeps solving with
     numpy; engine='numba' is refused at construction, naming the parameter."""
     code = (
-        "import sys, warnings, importlib.util\n"
+        NO_C + "import sys, warnings, importlib.util\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "from linecontact import OutOfRangeError\n"
         "class Broken:\n"
@@ -312,10 +350,11 @@ def test_compiled_engine_without_a_writable_cache():
 def test_auto_switches_within_a_sweep():
     """A load sweep on one roller with engine='auto' (the switching point lowered to
     30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
-    imported part-way, and every row equals the numpy engine's sweep within 1e-10."""
+    imported part-way, and every row equals the numpy engine's sweep within 1e-10.
+    (The C extension blocked: where it is built, 'auto' takes it from the start.)"""
     pytest.importorskip("numba")
     code = (
-        "import sys, numpy as np\n"
+        NO_C + "import sys, numpy as np\n"
         "from linecontact.roller import ProfiledRoller, slices\n"
         "slices.AUTO_SWITCH_STEPS = 30\n"
         "F = np.linspace(500.0, 8000.0, 12)\n"
@@ -338,15 +377,18 @@ def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
     engine and what to install. A roller pickled with engine='numba' to a process
     without numba (a Dask worker; unpickling sets the attribute without a check) is
     refused the same way when it solves (it was a bare ImportError from deep in the
-    solve). Numba's import is blocked in a fresh interpreter."""
+    solve). Likewise 'c' where the C extension is not built (a roller pickled with
+    engine='c' to a process without it). Numba's and the extension's imports are
+    blocked in a fresh interpreter."""
     code = (
-        "import sys, pickle; sys.modules['numba'] = None\n"
+        NO_C + "import sys, pickle; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller\n"
         "from linecontact import OutOfRangeError\n"
         "from linecontact.validity import UnknownNameError\n"
         "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
         " engine='numpy')\n"
-        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError)):\n"
+        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError),\n"
+        "               ('c', OutOfRangeError)):\n"
         "    try:\n"
         "        r.engine = e\n"
         "        print('set', e)\n"
@@ -362,19 +404,60 @@ def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
         "        print('refused:', exc)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.splitlines()
-    assert len(out) == 4 and all(o.startswith("refused: engine") for o in out), out
+    assert len(out) == 6 and all(o.startswith("refused: engine") for o in out), out
     assert "fortran" in out[0] and "fortran" in out[1], out
     assert "pip install" in out[2] and "pip install" in out[3], out
+    assert all("'c'" in o and "C compiler" in o for o in out[4:]), out
 
 
 def test_each_test_starts_on_the_numpy_reference():
     """Which engine a test's default-engine solves use must not depend on the tests run
     before it in the process: the step counter of engine='auto' is zero at the start of
-    every test (tests/conftest.py), so 'auto' is the numpy reference until a test itself
-    takes AUTO_SWITCH_STEPS steps. (Run after the rest of the suite, which takes far
-    more than 1500 numpy steps, this failed.)"""
+    every test (tests/conftest.py), so 'auto' is the C engine where its extension is
+    built (from the first solve, whatever came before) and else the numpy reference
+    until a test itself takes AUTO_SWITCH_STEPS steps. (Run after the rest of the
+    suite, which takes far more than 1500 numpy steps, this failed.)"""
     assert sl._NUMPY_STEPS[0] == 0
+    assert sl.resolve_engine("auto") == ("c" if sl.c_engine() is not None else "numpy")
+
+
+def test_without_the_c_extension_auto_falls_back_and_c_is_refused(monkeypatch):
+    """Where the C extension was not built (its import made to fail here, as without a
+    C compiler at install), engine='auto' solves with numpy, and the same answer as
+    engine='numpy' to the last bit (the same code); engine='c' is refused at
+    construction by an OutOfRangeError naming engine, the value and how to build it."""
+    import linecontact.roller as package
+    for name in ("_ckernels", "_cengine"):        # (as in a process that never had them)
+        monkeypatch.delattr(package, name, raising=False)
+        monkeypatch.delitem(sys.modules, f"linecontact.roller.{name}", raising=False)
+    monkeypatch.setitem(sys.modules, "linecontact.roller._ckernels", None)
+    monkeypatch.setattr(sl, "_C_ENGINE", [])
+    assert sl.c_engine() is None, "the blocked extension imported"
     assert sl.resolve_engine("auto") == "numpy"
+    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, "circular:Rc=0.5", n_slices=20,
+                           engine=e).at_force(500.0, tilt=1e-3) for e in ("auto", "numpy"))
+    assert a.depth == b.depth and a.p_max == b.p_max
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
+    assert "'c'" in str(err.value) and "C compiler" in str(err.value), str(err.value)
+
+
+def test_auto_takes_the_c_engine_from_the_first_solve():
+    """Where the C extension is built, one solve with the default engine in a fresh
+    interpreter runs on it (the module _cengine imported) and imports neither numba nor
+    scipy: a single solve takes the compiled loops at no start-up cost."""
+    _need("c")
+    code = ("import sys\n"
+            "from linecontact.roller import ProfiledRoller, slices\n"
+            "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281')\n"
+            "r.at_force(4000.0, tilt=1e-3)\n"
+            "print(slices.resolve_engine(r.engine), slices._NUMPY_STEPS[0],"
+            " 'linecontact.roller._cengine' in sys.modules, 'numba' in sys.modules,"
+            " 'scipy' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == ["c", "0", "True", "False", "False"], (
+        f"engine, numpy steps, C engine / numba / scipy imported: {out}")
 
 
 def _random_step_system(seed):
@@ -389,7 +472,8 @@ def _random_step_system(seed):
     return rng, n, ns, R, qsc, S, w, x, J
 
 
-def test_compiled_step_helpers_equal_their_numpy_lines():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_step_helpers_equal_their_numpy_lines(engine):
     """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
     bordered_sums, step_out, step_update) give what the numpy code they replace in
     SliceEquations.bordered gives (slices.scaled_system; the other lines written out
@@ -398,8 +482,8 @@ def test_compiled_step_helpers_equal_their_numpy_lines():
     the loads, the curvatures and the overlap, at a given tilt and with a tilt step),
     the slices that limited it and the largest changes. A whole solve cannot check the damping and the mask: a wrong alpha or
     hit_q changes the Newton path, not the converged answer."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(3)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -487,7 +571,8 @@ def _step_by_helpers(jit, J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target
     return 0, B, z, K, step, dz, out, upd
 
 
-def test_compiled_newton_step_equals_the_helpers_it_fuses():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
     """_compiled.newton_step, the bordered step after the linearisation in one compiled
     call, gives bit for bit what the helpers it replaces give with the Python lines
     between them (_step_by_helpers: scaled_system, solve_sums, K = Wz[:, 1:] + grid,
@@ -496,8 +581,8 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses():
     enough that the update is done (status 0) and with slices the step drives below
     zero (status 1); Cramer's rule on a K that is not finite hands the 2 x 2 system back
     (status 2), and a singular Jacobian the scaled system (None: numpy's solve)."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(7)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -556,7 +641,8 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses():
     assert np.array_equal(got[1], sl.scaled_system(np.zeros_like(Js), res, rhs, ns, qsc, R))
 
 
-def test_compiled_dense_solves_equal_the_numpy_loops():
+@pytest.mark.parametrize("engine", COMPILED)
+def test_compiled_dense_solves_equal_the_numpy_loops(engine):
     """The compiled engine's dense solves give what the numpy lines they replace give:
     _compiled.solve_sums the solution of np.linalg.solve (the same LAPACK routine;
     1e-12 of its scale allows another BLAS build) and bordered_sums' sums;
@@ -564,9 +650,10 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     SliceEquations.start_at_force (written out here: solve, remove the slices whose
     load is not positive, solve again), the same kept slices and solution, on a
     bordered system where slices leave in two rounds; a singular system falls back to
-    numpy's solve, which raises numpy's LinAlgError."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    numpy's solve, which raises numpy's LinAlgError. (The C engine's solve_sums is
+    numpy's solve and the C sums; the cold start is numpy's under it: numba only.)"""
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J = _random_step_system(5)
     B, qs = rng.normal(size=(2 * ns, 3)), rng.random(ns)
@@ -577,6 +664,8 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
     assert wq == pytest.approx(want[0], rel=1e-13)
     assert wxq == pytest.approx(want[1], rel=1e-13)
     np.testing.assert_allclose(Wz, want[2], rtol=1e-12, atol=1e-13 * np.abs(want[2]).max())
+    if engine != "numba":
+        return
     # the start's loop: loads of a diagonal-dominant system with some negative targets
     m, nb = 16, 2
     M = np.zeros((m + nb, m + nb))
@@ -603,6 +692,55 @@ def test_compiled_dense_solves_equal_the_numpy_loops():
         jit.solve(np.zeros((3, 3)), np.ones(3))
 
 
+def test_c_engine_solves_in_threads():
+    """The C loops run without the GIL, with their scratch memory per call: rollers
+    solved by four threads at once (one roller per solve, as ProfiledRoller asks) give
+    the same bits as the same solves one after another."""
+    _need("c")
+    from concurrent.futures import ThreadPoolExecutor
+
+    cases = [(F, tilt) for F in (1000.0, 3000.0, 6000.0) for tilt in (1e-3, "free")]
+
+    def solve(case):
+        return ProfiledRoller(5e-3, 14e-3, 115.385e9, "iso16281", engine="c").at_force(
+            case[0], tilt=case[1])
+
+    serial = [solve(c) for c in cases]
+    with ThreadPoolExecutor(4) as pool:
+        threaded = list(pool.map(solve, cases * 4))
+    for a, b in zip(serial * 4, threaded):
+        assert a.depth == b.depth and np.array_equal(a.q, b.q), "a threaded solve differs"
+
+
+def test_the_c_extension_checks_its_arrays():
+    """The C extension reads its arrays through the buffer protocol without numpy's
+    help, so it checks them itself: an array of the wrong length, of the wrong type
+    (int64 for float64), not contiguous, or a slice index outside the grid raises a
+    ValueError naming the array, instead of reading or writing out of bounds."""
+    _need("c")
+    from linecontact.roller import _ckernels, _layout
+
+    e = _equations(60, 0.0, 0, "c")
+    S = np.arange(10, 20)
+    b = np.full(10, 1e-4)
+    tn, tf, lr, ltn, ltf, Gt = _layout.transposed(
+        e._tnear, e._tfar, e._logratio, sl._far_geometry(*e._geometry))
+
+    def call(S=S, b=b, A=None, dg=e.dg):
+        A = np.empty((len(S), 60)) if A is None else A
+        return _ckernels.kernels(S, np.arange(60), b, e.span, dg, tn, tf, lr, ltn, ltf,
+                                 Gt, sl._FAR_COEF, True, A, None, None, None)
+
+    assert call() is True
+    for kwargs, name in ((dict(b=b[:-1]), "b"), (dict(A=np.empty((10, 59))), "A"),
+                         (dict(S=np.r_[S[:-1], 60]), r"S\[9\] = 60"),
+                         (dict(S=S.astype(float)), "S"), (dict(b=b.astype(np.int64)), "b"),
+                         (dict(dg=np.r_[e.dg, e.dg][::2]), "dg"),
+                         (dict(A=np.empty((60, 10)).T), "A")):
+        with pytest.raises(ValueError, match=name):
+            call(**kwargs)
+
+
 def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     """The module-wide caches of slice geometry (n x n arrays, five of them per
     geometry in the compiled engine) were bounded only in count: sixteen geometries at
@@ -618,15 +756,16 @@ def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest
 
 
+@pytest.mark.parametrize("engine", COMPILED)
 @pytest.mark.parametrize("mode", [1, 2])
-def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode):
+def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode, engine):
     """The step of a force row (mode 1) or a moment row (mode 2) is its residual over
     K[0, 0] or K[1, 1]; where that entry is exactly zero the lines _compiled.newton_step
     replaced divided numpy floats (IEEE: +-inf, NaN for 0/0) and went on, where numba's
     compiled division raises ZeroDivisionError. The fused step must hand back what the
     helpers give (the same step, dz, mask, update; NaN compared as NaN), not raise."""
-    pytest.importorskip("numba")
-    from linecontact.roller import _compiled as jit
+    _need(engine)
+    jit = _module(engine)
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(11)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))

@@ -93,6 +93,9 @@ Modules
 ``slices``     the slice equations, their Newton / active-set solver, the stiffness matrix
 ``_compiled``  the same kernels and linearisation as compiled loops (numba, optional;
                ``ProfiledRoller(engine=...)``, docs/profiled_rollers.md, "Engines")
+``_cengine``   the same loops in C (the extension ``_ckernels``, built at install
+               where a C compiler exists; ``engine="c"``, the default's choice there)
+``_layout``    the geometry and spline table as both compiled engines read them
 ``coverage``   the note on where a case lies against tables/roller_accuracy.csv
 ``solution``   :class:`RollerSolution`, contact extent and peak pressure off the slices
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)

@@ -39,8 +39,9 @@ import numpy as np
 # (_numerics.serial_blas) finds and limits it as it does numpy's
 import scipy.linalg.cython_lapack  # noqa: F401
 
-from .._numerics import CACHE_BYTES, cache_nbytes, rescan_blas
-from .kernel import R_INF, spline_table
+from .._numerics import rescan_blas
+from ._layout import table, transposed
+from .kernel import R_INF
 
 rescan_blas()
 
@@ -353,40 +354,6 @@ def _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dh
 _linearised = _jit(_linearised)
 
 
-_TABLE = []
-
-
-def table():
-    """tau_min, tau_max, coef, z0, 1/h, h of the spline table (built once)."""
-    if not _TABLE:
-        t = spline_table()
-        # (segment, power, function): a point's 16 coefficients in two cache lines
-        # (in the table's (power, function, segment) order 16 lines apart)
-        _TABLE.append((float(t.tau_min), float(t.tau_max),
-                       np.ascontiguousarray(t.coef.transpose(2, 0, 1)), float(t.z0),
-                       1.0 / t.h, float(t.h)))
-    return _TABLE[0]
-
-
-_NO_G = np.zeros((1, 1, 1))
-_T = {}
-
-
-def _transposed(tn, tf, lr, G, fc):
-    """The unit geometry as [source, target] (each source's column contiguous): tn,
-    tf, lr, ln tn, ln tf, and G as (source, power, target). Kept for the last few
-    geometries (the numpy code's caches hold the originals)."""
-    got = _T.get(id(tn))
-    if got is None or got[0] is not tn or got[1] is not G:
-        if len(_T) >= 8 or cache_nbytes(_T) > CACHE_BYTES:
-            _T.clear()
-        Gt = _NO_G if G is None else np.ascontiguousarray(G.transpose(0, 2, 1))
-        tnt, tft = np.ascontiguousarray(tn.T), np.ascontiguousarray(tf.T)
-        got = (tn, G, tnt, tft, np.ascontiguousarray(lr.T), np.log(tnt), np.log(tft), Gt)
-        _T[id(tn)] = got
-    return got[2:]
-
-
 def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
     """A, D, EA, ED (the others None with a_only) for targets T and sources S, or
     None where a spline argument leaves the table. G None: every pair from the table."""
@@ -396,7 +363,7 @@ def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
         EA = D = ED = np.empty((0, 0), order="F")
     else:
         EA, D, ED = (np.empty((nt, ns), order="F") for _ in range(3))
-    tn, tf, lr, ltn, ltf, Gt = _transposed(tn, tf, lr, G, fc)
+    tn, tf, lr, ltn, ltf, Gt = transposed(tn, tf, lr, G)
     if not _kernels(S, T, b, span, dg, tn, tf, lr, ltn, ltf, Gt, fc, G is not None,
                     *table(), A, EA, D, ED):
         return None
@@ -413,7 +380,7 @@ def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
     rhs = np.empty((2 * ns, 2))
     gap = np.empty(nt)
     grid = np.empty((2, 2))
-    tn, tf, lr, ltn, ltf, Gt = _transposed(tn, tf, lr, G, fc)
+    tn, tf, lr, ltn, ltf, Gt = transposed(tn, tf, lr, G)
     if not _linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, float(theta),
                        np.asarray(dlo, float), np.asarray(dhi, float), tn, tf, lr, ltn,
                        ltf, Gt, fc, G is not None, *table(), res, J, rhs, gap,

@@ -79,13 +79,16 @@ class ProfiledRoller:
         (default True; False:
         report the unrefined solution, flagged). Solutions whose peak is resolved
         are not affected.
-    engine : {"auto", "numpy", "numba"}, optional
+    engine : {"auto", "numpy", "numba", "c"}, optional
         Who evaluates the slice equations' kernels and linearisation: "numpy" (the
-        reference), "numba" (compiled loops, the same arithmetic: results equal within
-        1e-10; needs numba, ``pip install linecontact[fast]``) or "auto" (default):
-        numpy until the process has taken 1500 Newton steps (some 150-200 solves), then
-        numba where it is installed: importing numba and loading its cached code cost
-        0.4-0.5 s once, which the compiled engine repays at 0.2-0.35 ms a step
+        reference), "c" (the C extension built at install where a C compiler exists:
+        compiled loops, the same arithmetic, results equal within 1e-10; refused
+        where it is not built), "numba" (the same loops compiled by numba; needs
+        numba, ``pip install linecontact[fast]``) or "auto" (default): "c" where the
+        extension is built (it imports in microseconds), else numpy until the process
+        has taken 1500 Newton steps (some 150-200 solves), then numba where it is
+        installed: importing numba and loading its cached code cost 0.4-0.5 s once,
+        which the compiled engine repays at 0.2-0.35 ms a step
         (docs/profiled_rollers.md, "Engines").
 
     Notes

@@ -158,8 +158,8 @@ def _far_geometry(n, grading, refine=0):
 
 
 #: the engines that evaluate the slice equations: ProfiledRoller(engine=...) takes
-#: one of these; SliceEquations.engine is "numpy" or "numba" (resolve_engine)
-ENGINES = ("auto", "numpy", "numba")
+#: one of these; SliceEquations.engine is "numpy", "numba" or "c" (resolve_engine)
+ENGINES = ("auto", "numpy", "numba", "c")
 #: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
 #: takes before it switches to the compiled engine, where numba is installed: a numpy
 #: step costs 0.2-0.35 ms more than a compiled one at 50-100 slices, so by then numpy
@@ -172,6 +172,11 @@ _NUMPY_STEPS = [0]
 _HAVE_NUMBA = []
 _IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
 _COMPILED = []              # the module _compiled, once imported
+_C_ENGINE = []              # the module _cengine, or the ImportError's text, once tried
+#: how to build the C engine, said where it is asked for and not built
+C_BUILD_HINT = ("install a C compiler (gcc, clang, MSVC) and reinstall linecontact "
+                "from its source (pip install . or pip install -e . in a checkout), or "
+                "use engine='auto'")
 
 
 def numba_installed():
@@ -182,12 +187,30 @@ def numba_installed():
     return _HAVE_NUMBA[0]
 
 
+def c_engine():
+    """The C engine (:mod:`linecontact.roller._cengine`, over the extension
+    ``_ckernels`` built at install), or None where it does not import (not built: no C
+    compiler at install; built for another Python). Tried once per process; importing
+    it costs well under a millisecond."""
+    if not _C_ENGINE:
+        from . import _cengine
+        _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
+                         _cengine.UNAVAILABLE)
+    got = _C_ENGINE[0]
+    return None if isinstance(got, str) else got
+
+
 def check_engine(engine):
-    """`engine` checked: one of ENGINES, and "numba" only where numba is installed and
-    the compiled kernels import (then imported here, at the roller's construction)."""
+    """`engine` checked: one of ENGINES, "numba" only where numba is installed and
+    the compiled kernels import (then imported here, at the roller's construction),
+    "c" only where the C extension imports."""
     from ..validity import OutOfRangeError, UnknownNameError
     if not isinstance(engine, str) or engine not in ENGINES:
         raise UnknownNameError("engine", engine, ENGINES)
+    if engine == "c" and c_engine() is None:
+        raise OutOfRangeError("engine", "c", "'auto', 'numpy' or 'numba' (the C "
+                              "extension linecontact.roller._ckernels is not built "
+                              f"here: {_C_ENGINE[0]})", hint=C_BUILD_HINT)
     if engine == "numba":
         if not numba_installed():
             raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
@@ -204,15 +227,20 @@ def check_engine(engine):
 
 
 def resolve_engine(engine):
-    """"numpy" or "numba" for a new SliceEquations: "auto" is numpy until this process
-    has taken AUTO_SWITCH_STEPS numpy steps, then numba where it is installed and
-    imports (a single solve never imports numba; a sweep, a batch or a bearing repays
-    it); where the import fails, numpy for the rest of the process, said once by a
-    RuntimeWarning. Any other value is checked as at construction (check_engine): a
-    roller whose `engine` was set afterwards, or that was pickled to a process without
-    numba (a Dask worker), is refused by name, never solved with another engine or
-    failed by a bare ImportError."""
+    """"numpy", "numba" or "c" for a new SliceEquations: "auto" is "c" where the C
+    extension imports (from the first solve: it imports in under a millisecond); else numpy
+    until this process has taken AUTO_SWITCH_STEPS numpy steps, then numba where it
+    is installed and imports (a single solve never imports numba; a sweep, a batch or
+    a bearing repays it); where that import fails, numpy for the rest of the process,
+    said once by a RuntimeWarning. Any other value is checked as at construction
+    (check_engine): a roller whose `engine` was set afterwards, or that was pickled to
+    a process without numba or without the C extension (a Dask worker), is refused by
+    name, never solved with another engine or failed by a bare ImportError. Every
+    engine is thread-safe as the numpy one is (the compiled loops keep their scratch
+    per call; a roller is still one thread's, ProfiledRoller)."""
     if engine == "auto":
+        if c_engine() is not None:
+            return "c"
         if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
                 or _IMPORT_ERROR):
             return "numpy"
@@ -226,7 +254,8 @@ def resolve_engine(engine):
                           stacklevel=2)
             return "numpy"
         return "numba"
-    if engine == "numpy" or (engine == "numba" and _COMPILED):
+    if (engine == "numpy" or (engine == "numba" and _COMPILED)
+            or (engine == "c" and c_engine() is not None)):
         return engine      # (every regrid asks: once the compiled module imported,
         #                     check_engine("numba") can only pass)
     return check_engine(engine)
@@ -410,8 +439,10 @@ class SliceEquations:
     def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0,
                  engine="numpy"):
         self.R = radius
-        # "numpy" or "numba" (resolved by the owner, ProfiledRoller): who evaluates
-        # kernels() and linearised(); the numpy code is the reference and the fallback
+        # "numpy", "numba" or "c" (resolved by the owner, ProfiledRoller): who
+        # evaluates kernels() and linearised(); the numpy code is the reference and the
+        # fallback (the Newton step's arithmetic is compiled under both compiled
+        # engines, its dense solves and the cold start's under "numba" only)
         self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi
@@ -452,8 +483,9 @@ class SliceEquations:
         With `a_only`, A alone (the others None).
         """
         T = S if targets is None else targets
-        if self.engine == "numba":
-            jit = compiled()
+        if self.engine != "numpy":
+            # the compiled loops (numba: _compiled; C: _cengine), the same arithmetic
+            jit = compiled() if self.engine == "numba" else c_engine()
             far = self.n <= _N_FAR
             out = jit.kernels(S, T, b, self.span, self.dg, self._tnear, self._tfar,
                               self._logratio,
@@ -823,10 +855,11 @@ class SliceEquations:
         slice loads together with d and theta needs, and at convergence the implicit
         derivative (:meth:`sensitivities`).
         """
-        if self.engine == "numba":
+        if self.engine != "numpy":
             spos = S if len(targets) == self.n else np.searchsorted(targets, S)
             far = self.n <= _N_FAR
-            out = compiled().linearised(
+            jit = compiled() if self.engine == "numba" else c_engine()
+            out = jit.linearised(
                 S, targets, spos, q, c, self._over, self.R, self.span, self.x, self.m,
                 self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
                 self._logratio, _far_geometry(*self._geometry) if far else None,
@@ -929,7 +962,9 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            jit = compiled() if s.engine == "numba" else None
+            # (the C engine: the same helpers in C, numpy's dense solve between them)
+            jit = (compiled() if s.engine == "numba" else
+                   c_engine() if s.engine == "c" else None)
             fused = status = None
             if jit is not None:
                 # the scaling, dense solve, sums, step, mask and damped update below in

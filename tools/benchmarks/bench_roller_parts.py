@@ -49,7 +49,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--against", default=None, help="a second checkout to time")
     ap.add_argument("--repeat", type=int, default=200)
-    ap.add_argument("--engine", default="numba", choices=("numpy", "numba", "auto"))
+    ap.add_argument("--engine", default="numba", choices=("numpy", "numba", "c", "auto"))
     ap.add_argument("--tilt", default="2e-3", help="tilt [rad] or 'free'")
     args = ap.parse_args(argv)
     here = Path(__file__).resolve().parents[2]

@@ -33,10 +33,11 @@ only for versions that have that option). ``--engine E`` passes ``engine=E`` to
 ``ProfiledRoller`` (only where given, so that the same command still times versions
 without engines; with ``--against`` the other checkout gets it too where its own
 script takes ``--engine``, else it runs its own default). ``--kernels`` instead
-prints what the compiled engine costs (importing numba, loading its cached code,
-compiling it, each in a fresh process) and
-the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine,
-and whole solves with the two engines alternating in one process.
+prints what the compiled engines cost (importing numba, loading its cached code,
+compiling it; importing the C engine; each in a fresh process) and
+the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine
+(numpy, numba, and c where its extension is built), and whole solves with the engines
+alternating in one process.
 ``--against DIR --interleave`` instead alternates the two checkouts' solves within one
 process (DIR's ``linecontact`` copied to a temporary directory and imported as
 ``linecontact_b``, which works as long as the package imports itself relatively):
@@ -115,7 +116,7 @@ def main(argv=None):
     ap.add_argument("--no-refine", action="store_true")
     ap.add_argument("--against", default=None, metavar="DIR")
     ap.add_argument("--rounds", type=int, default=2)
-    ap.add_argument("--engine", default=None, choices=("auto", "numpy", "numba"))
+    ap.add_argument("--engine", default=None, choices=("auto", "numpy", "numba", "c"))
     ap.add_argument("--kernels", action="store_true")
     ap.add_argument("--interleave", action="store_true")
     a = ap.parse_args(argv)
@@ -184,11 +185,11 @@ def main(argv=None):
 
 
 def _kernel_costs(a):
-    """--kernels: what the compiled engine costs and saves, each in a fresh process
-    (importing numba, loading its cached code, compiling without a cache), per call
-    (SliceEquations.kernels and .linearised, numpy against numba, on the slice grid of
-    the converged 2 mrad solve: CPU medians of --repeat x 20 calls) and per solve
-    (--repeat pairs, the engines alternating)."""
+    """--kernels: what the compiled engines cost and save, each in a fresh process
+    (importing numba, loading its cached code, compiling without a cache; importing
+    the C engine), per call (SliceEquations.kernels and .linearised, numpy against
+    numba and c, on the slice grid of the converged 2 mrad solve: CPU medians of
+    --repeat x 20 calls) and per solve (--repeat rounds, the engines alternating)."""
     import json
     import tempfile
 
@@ -205,13 +206,20 @@ def _kernel_costs(a):
         "ProfiledRoller(%r, %r, %r, prof, engine='numpy').at_force(%r, tilt=%r)\n"
         "t['first numpy solve'] = time.process_time() - c0\n"
         "c0 = time.process_time()\n"
+        "from linecontact.roller import slices\n"
+        "if slices.c_engine() is not None:\n"
+        "    t['import the C engine'] = time.process_time() - c0\n"
+        "    c0 = time.process_time()\n"
+        "    ProfiledRoller(%r, %r, %r, prof, engine='c').at_force(%r, tilt=%r)\n"
+        "    t['first c solve'] = time.process_time() - c0\n"
+        "c0 = time.process_time()\n"
         "import numba\n"
         "t['import numba'] = time.process_time() - c0\n"
         "c0 = time.process_time()\n"
         "ProfiledRoller(%r, %r, %r, prof, engine='numba').at_force(%r, tilt=%r)\n"
         "t['first numba solve'] = time.process_time() - c0\n"
         "print(json.dumps(t))\n"
-    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 2)
+    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 3)
     env = dict(os.environ)
     with tempfile.TemporaryDirectory() as cache:
         for label, extra in (("no cache (compiles)", {"NUMBA_CACHE_DIR": cache}),
@@ -229,13 +237,17 @@ def _kernel_costs(a):
                   + f" (median of {len(rows)})")
 
     from linecontact.roller import ProfiledRoller
+    from linecontact.roller import slices as sl
     from tools.studies import roller_study as rs
 
+    engines = ["numpy", "numba"]
+    if getattr(sl, "c_engine", lambda: None)() is not None:
+        engines.append("c")
     prof = rs.make_profile("iso16281", L, D / 2, ESTAR)
     roller = ProfiledRoller(D / 2, L, ESTAR, prof, engine="numpy", **slices)
     sol = roller.at_force(FORCE, tilt=TILT)
     times = {}
-    for engine in ("numpy", "numba"):
+    for engine in engines:
         s = roller._grid(sol.depth, sol.tilt)
         s.engine = engine
         q = np.interp(s.x, sol.x, sol.q) / (np.pi * ESTAR)
@@ -254,25 +266,35 @@ def _kernel_costs(a):
             times[(name, engine)] = t / 20
     print(f"per call, {s.n} slices, {len(S)} loaded (CPU median over {a.repeat} x 20):")
     for name in ("kernels", "linearised"):
-        tn, tb = times[(name, "numpy")], times[(name, "numba")]
-        print(f"  {name}: numpy {tn * 1e6:.0f} us, numba {tb * 1e6:.0f} us, "
-              f"ratio numba/numpy {tb / tn:.3f}")
-    # whole solves, the engines alternating in this one process (A B B A ...), so that
-    # the machine's drift between processes does not enter the ratio
+        tn = times[(name, "numpy")]
+        print(f"  {name}: numpy {tn * 1e6:.0f} us, "
+              + ", ".join(f"{e} {times[(name, e)] * 1e6:.0f} us" for e in engines[1:])
+              + "; ratio to numpy "
+              + ", ".join(f"{e} {times[(name, e)] / tn:.3f}" for e in engines[1:]))
+    # whole solves, the engines alternating in this one process (their order reversed
+    # every other round), so that the machine's drift between processes does not
+    # enter the ratios
     for label, tilt in (("tilt 2 mrad", TILT), ("tilt free", "free")):
-        ts = {"numpy": [], "numba": []}
+        ts = {e: [] for e in engines}
         for i in range(a.repeat):
-            for engine in (("numpy", "numba") if i % 2 == 0 else ("numba", "numpy")):
+            for engine in (engines if i % 2 == 0 else engines[::-1]):
                 c0 = time.process_time()
                 ProfiledRoller(D / 2, L, ESTAR, prof, **slices,
                                engine=engine).at_force(FORCE, tilt=tilt)
                 ts[engine].append(time.process_time() - c0)
-        ratios = [b / n for b, n in zip(ts["numba"], ts["numpy"])]
+        med = {e: statistics.median(ts[e]) * 1e3 for e in engines}
         print(f"one solve, {label}, engines alternating in one process ({a.repeat} "
-              f"pairs): CPU median numpy {statistics.median(ts['numpy']) * 1e3:.2f} ms, "
-              f"numba {statistics.median(ts['numba']) * 1e3:.2f} ms; ratio numba/numpy "
-              f"median of pairs {statistics.median(ratios):.3f} (quartiles "
-              f"{np.percentile(ratios, 25):.3f}-{np.percentile(ratios, 75):.3f})")
+              f"rounds): CPU median " + ", ".join(f"{e} {med[e]:.2f} ms" for e in engines))
+        for e in engines[1:]:
+            ratios = [b / n for b, n in zip(ts[e], ts["numpy"])]
+            print(f"  ratio {e}/numpy median of pairs {statistics.median(ratios):.3f} "
+                  f"(quartiles {np.percentile(ratios, 25):.3f}-"
+                  f"{np.percentile(ratios, 75):.3f})")
+        if "c" in engines:
+            ratios = [c / b for c, b in zip(ts["c"], ts["numba"])]
+            print(f"  ratio c/numba median of pairs {statistics.median(ratios):.3f} "
+                  f"(quartiles {np.percentile(ratios, 25):.3f}-"
+                  f"{np.percentile(ratios, 75):.3f})")
     return 0
 
 

@@ -1,7 +1,7 @@
 """pyproject.toml installs every sub-package of linecontact.
 
 Fact checked: each folder of linecontact/ with an __init__.py is named in
-[tool.setuptools] packages, so that a non-editable install (CI's `pip install '.[test]'`,
+[tool.setuptools] packages, so that a non-editable install (README's `pip install .`,
 a dask worker without the repository) has the same modules as the checkout.
 """
 from __future__ import annotations

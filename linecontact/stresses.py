@@ -725,10 +725,9 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     s = _assemble(x, b, p0, mu, nu, notes, edge)
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
-    # the contact at or near an end, or p0 with several local maxima: the worst may
-    # lie anywhere along the roller, and the search scans every part of it
-    rise = np.flatnonzero((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:]))
-    wide = edge or reaches_end(solution) or rise.size > 1
+    # the contact at or near an end: the worst may lie anywhere along the roller, and
+    # the search scans every part of it
+    wide = edge or reaches_end(solution)
     w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu), wide)
     if all(v is None for v in w3.values()):
         # every measure's worst at the surface (friction >= ~0.4): nothing corrected,
@@ -972,6 +971,8 @@ _SHRINK = 2.5
 #: slices where p0 rises towards the end)
 _STRIDE_PARTS = 4
 _COARSE_SLICES = 1
+#: p0's local maxima within this factor of the largest are candidates too
+_PEAK_MARGIN = 1.1
 
 
 def _slice_edges(xc):
@@ -1259,32 +1260,30 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
             cache[k] = ((x[k] - cx)[None, :], cy, w)
 
     def evaluate(pts):
-        """pts: name -> (k, py, pz); the measure at those points below slice k."""
+        """pts: (name, ...) -> (k, py, pz); the measure `name` at those points below
+        slice k, the points below one slice in one batch (the orthogonal shear's
+        apart)."""
         batches, groups = [], []
-        rest = [n for n in pts if n != "orthogonal_shear"]
-        while rest:
-            k = pts[rest[0]][0]
-            group = [n for n in rest if pts[n][0] == k]
-            rest = [n for n in rest if pts[n][0] != k]
-            if len(group) == 1:
-                py, pz = pts[group[0]][1:]
-            else:
-                py = np.concatenate([pts[n][1] for n in group])
-                pz = np.concatenate([pts[n][2] for n in group])
-            batches.append((k, py, pz, False))
-            groups.append(group)
-        if "orthogonal_shear" in pts:
-            batches.append(pts["orthogonal_shear"] + (True,))
-            groups.append(["orthogonal_shear"])
+        for shear in (False, True):
+            rest = [n for n in pts if (n[0] == "orthogonal_shear") == shear]
+            while rest:
+                k = pts[rest[0]][0]
+                group = [n for n in rest if pts[n][0] == k]
+                rest = [n for n in rest if pts[n][0] != k]
+                if len(group) == 1:
+                    py, pz = pts[group[0]][1:]
+                else:
+                    py = np.concatenate([pts[n][1] for n in group])
+                    pz = np.concatenate([pts[n][2] for n in group])
+                batches.append((k, py, pz, shear))
+                groups.append(group)
         out = {}
         for group, res in zip(groups, _field_3d(x, b, p0, mu, nu, batches, corners)):
-            if group == ["orthogonal_shear"]:
-                out["orthogonal_shear"] = np.abs(res)
-                continue
             i0 = 0
             for n in group:
                 i1 = i0 + pts[n][1].size
-                out[n] = _measure_3d(n, *(c[i0:i1] for c in res))
+                out[n] = (np.abs(res[i0:i1]) if n[0] == "orthogonal_shear"
+                          else _measure_3d(n[0], *(c[i0:i1] for c in res)))
                 i0 = i1
         return out
 
@@ -1304,7 +1303,8 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     seen = set()
 
     def scan(ks):
-        ks = sorted({int(kk) for kk in ks if 0 <= kk < x.size and b[kk] > 0} - seen)
+        ks = sorted({int(kk) for kk in ks if 0 <= kk < x.size and b[kk] > 0
+                     and (in_half is None or not wide or in_half(kk))} - seen)
         if not ks:
             return
         seen.update(ks)
@@ -1320,19 +1320,29 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
 
     score = {name: {} for name in names}
     step = max(-(-(loaded.size - 1) // _STRIDE_PARTS), 1)
-    inner = (p0[1:-1] > 0) & (p0[1:-1] >= p0[:-2]) & (p0[1:-1] >= p0[2:])
+    # p0's other local maxima whose strip worst is within the 3D correction's reach
+    # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
+    inner = ((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])
+             & (_PEAK_MARGIN * p0[1:-1] >= p0[k]))
     peaks = np.flatnonzero(inner) + 1
+    if x.size > 2 and np.allclose(x, -x[::-1], rtol=0, atol=1e-12 * np.ptp(x)) \
+            and np.allclose(p0, p0[::-1], rtol=1e-12, atol=0):
+        # a mirror-symmetric load: its mirror slices tie, so one half is scanned
+        mid = (x.size - 1) / 2
+        in_half = (lambda kk: kk <= mid + 1) if k <= mid else (lambda kk: kk >= mid - 1)
+        peaks = peaks[[in_half(pk) for pk in peaks]] if peaks.size else peaks
+    else:
+        in_half = None
     if not wide:
         step = 1
-        scan(range(k - 2, k + 3))
+        scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)])
     else:
         # every s-th loaded slice, counted from either end (a mirror-symmetric set)
         j = np.arange(_STRIDE_PARTS + 1)
         half = np.floor(np.minimum(j, _STRIDE_PARTS - j) * (loaded.size - 1)
                         / _STRIDE_PARTS + 0.5).astype(int)
         even = loaded[np.where(2 * j <= _STRIDE_PARTS, half, loaded.size - 1 - half)]
-        scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)]
-             + [loaded[0], loaded[0] + 1, loaded[-1] - 1, loaded[-1]] + list(even))
+        scan(list(range(k - 2, k + 3)) + list(peaks) + list(even))
     while step > 1:
         step = (step + 1) // 2
         near = []
@@ -1344,49 +1354,43 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
                 near += [kb - step, kb + step]
         scan(near)
     st = {}
+    near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
     for name in names:
         # the best two slices by their one point, each given the first (coarse)
         # window below; the better goes on to the zooms
         top = sorted(score[name], key=score[name].get,
                      reverse=True)[:_COARSE_SLICES if wide else 1]
+        # and the best of p0's largest +-2 (the former search's choice, so that the
+        # result is never below it)
+        kk = max(near_k, key=score[name].get)
+        top += [kk] if kk not in top else []
         # and the end slices (their one point, the strip's optimum, can sit far from
         # their worst below a singular end peak)
         # where p0 rises to them and their strip value (below a rising end peak the
         # 3D field's is lower: the load spreads along the roller) could beat the best
-        top += [int(kk) for kk in (loaded[0], loaded[-1]) if wide and kk not in top
+        top += [int(kk) for kk in (loaded[0], loaded[-1])
+                if wide and kk not in top and kk in score[name]
                 and (p0[kk] >= p0[min(kk + 1, x.size - 1)] if kk == loaded[0]
                      else p0[kk] >= p0[kk - 1])
                 and m.value[name] * p0[kk] > score[name][top[0]]]
         st[name] = [dict(k=kk, val=score[name][kk], by=m.y[name] * b[kk],
                          bz=m.z[name] * b[kk], hy=0.4 * b[kk], hz=0.3 * b[kk])
                     for kk in top]
-    U, V = _SEARCH_GRIDS[0]
-    for j in range(max(len(c) for c in st.values())):
-        pts = {name: (c[j]["k"], c[j]["by"] + c[j]["hy"] * U,
-                      np.maximum(c[j]["bz"] + c[j]["hz"] * V, 0.05 * b[c[j]["k"]]))
-               for name, c in st.items() if len(c) > j}
-        for n, v in evaluate(pts).items():
-            c = st[n][j]
+    # every candidate: a 5 x 5 grid, then three zooms of a 3 x 3 grid, all candidates'
+    # points below one slice in one batch per pass
+    for it in range(_ZOOMS + 1):
+        U, V = _SEARCH_GRIDS[min(it, 1)]
+        pts = {(name, j): (c["k"], c["by"] + c["hy"] * U,
+                           np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
+               for name in names for j, c in enumerate(st[name])}
+        for key, v in evaluate(pts).items():
+            c = st[key[0]][key[1]]
             i = int(np.argmax(v))
             if v[i] > c["val"]:
-                c["val"], c["by"], c["bz"] = float(v[i]), pts[n][1][i], pts[n][2][i]
+                c["val"], c["by"], c["bz"] = float(v[i]), pts[key][1][i], pts[key][2][i]
             c["hy"] /= _SHRINK
             c["hz"] /= _SHRINK
     st = {name: max(c, key=lambda d: d["val"]) for name, c in st.items()}
-    for it in range(_ZOOMS):
-        U, V = _SEARCH_GRIDS[1]
-        pts = {}
-        for name in names:
-            c = st[name]
-            pts[name] = (c["k"], c["by"] + c["hy"] * U,
-                         np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
-        for n, v in evaluate(pts).items():
-            c = st[n]
-            j = int(np.argmax(v))
-            if v[j] > c["val"]:
-                c["val"], c["by"], c["bz"] = float(v[j]), pts[n][1][j], pts[n][2][j]
-            c["hy"] /= _SHRINK
-            c["hz"] /= _SHRINK
     out = {name: None for name in MEASURES}
     for name in names:
         c = st[name]

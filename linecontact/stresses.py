@@ -661,8 +661,9 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
               \text{ at } z_k = \hat z(\mu, \nu)\, b_k
 
     per slice (plane strain); the worst of each measure then gets a 3D correction:
-    below the slice of the strips' worst and two either side, the field is McEwen's
-    strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
+    below candidate slices (the strips' worst and two either side, p0's other peaks;
+    where the contact reaches an end, slices spread over the whole roller, refined
+    along it), the field is McEwen's strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
     of the difference between the slices' Hertz pressures and that strip extended
     to infinity, maximised over (y, z) by a zoomed grid search (docs/stresses.md).
 
@@ -1238,10 +1239,16 @@ _SEARCH_GRIDS = _search_grids()
 
 def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     """The worst of each measure with the 3D correction (:func:`_field_3d`): the
-    strip's optimum point below the slice of the strips' worst and two slices either
-    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
-    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
-    optimum lies within 0.1 b of the surface keep the strip's value (None here).
+    strip's optimum point below candidate slices scores them (p0's largest and two
+    either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
+    contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones,
+    the best refined along the roller by halving steps); the best slice of each
+    measure, the best of p0's largest +-2 (the former search's choice) and, with
+    `wide`, an end slice under a rising end peak whose strip value could beat them,
+    each get a 5 x 5 grid in (y, z) around the strip's optimum (+-0.4 b, +-0.3 b),
+    then three zooms of a 3 x 3 grid (window / 2.5 each); the best is the worst.
+    Measures whose strip optimum lies within 0.1 b of the surface keep the strip's
+    value (None here).
 
     Each grid's centre is the best point so far, whose value is known, so it is not
     evaluated again; the points below the same slice are summed in one batch per

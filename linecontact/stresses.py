@@ -661,8 +661,9 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
               \text{ at } z_k = \hat z(\mu, \nu)\, b_k
 
     per slice (plane strain); the worst of each measure then gets a 3D correction:
-    below the slice of the strips' worst and two either side, the field is McEwen's
-    strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
+    below candidate slices (the strips' worst and two either side, p0's other peaks;
+    where the contact reaches an end, slices spread over the whole roller, refined
+    along it), the field is McEwen's strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
     of the difference between the slices' Hertz pressures and that strip extended
     to infinity, maximised over (y, z) by a zoomed grid search (docs/stresses.md).
 
@@ -725,7 +726,10 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     s = _assemble(x, b, p0, mu, nu, notes, edge)
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
-    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu))
+    # the contact at or near an end: the worst may lie anywhere along the roller, and
+    # the search scans every part of it
+    wide = edge or reaches_end(solution)
+    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu), wide)
     if all(v is None for v in w3.values()):
         # every measure's worst at the surface (friction >= ~0.4): nothing corrected,
         # the strips' worst as it is, and the method says so
@@ -963,6 +967,13 @@ _NEAR = 8.0
 #: 3D search: zooms after the first 5 x 5 grid (3 x 3 each), window shrink per zoom
 _ZOOMS = 3
 _SHRINK = 2.5
+#: the 3D search: every loaded slice's parts scanned first (a stride of n/this), and
+#: how many best slices of each measure get the first (coarse) window (and the end
+#: slices where p0 rises towards the end)
+_STRIDE_PARTS = 4
+_COARSE_SLICES = 1
+#: p0's local maxima within this factor of the largest are candidates too
+_PEAK_MARGIN = 1.1
 
 
 def _slice_edges(xc):
@@ -1226,12 +1237,18 @@ def _search_grids():
 _SEARCH_GRIDS = _search_grids()
 
 
-def _worst_3d(x, b, p0, mu, nu, m):
+def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     """The worst of each measure with the 3D correction (:func:`_field_3d`): the
-    strip's optimum point below the slice of the strips' worst and two slices either
-    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
-    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
-    optimum lies within 0.1 b of the surface keep the strip's value (None here).
+    strip's optimum point below candidate slices scores them (p0's largest and two
+    either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
+    contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones,
+    the best refined along the roller by halving steps); the best slice of each
+    measure, the best of p0's largest +-2 (the former search's choice) and, with
+    `wide`, an end slice under a rising end peak whose strip value could beat them,
+    each get a 5 x 5 grid in (y, z) around the strip's optimum (+-0.4 b, +-0.3 b),
+    then three zooms of a 3 x 3 grid (window / 2.5 each); the best is the worst.
+    Measures whose strip optimum lies within 0.1 b of the surface keep the strip's
+    value (None here).
 
     Each grid's centre is the best point so far, whose value is known, so it is not
     evaluated again; the points below the same slice are summed in one batch per
@@ -1250,73 +1267,137 @@ def _worst_3d(x, b, p0, mu, nu, m):
             cache[k] = ((x[k] - cx)[None, :], cy, w)
 
     def evaluate(pts):
-        """pts: name -> (k, py, pz); the measure at those points below slice k."""
+        """pts: (name, ...) -> (k, py, pz); the measure `name` at those points below
+        slice k, the points below one slice in one batch (the orthogonal shear's
+        apart)."""
         batches, groups = [], []
-        rest = [n for n in pts if n != "orthogonal_shear"]
-        while rest:
-            k = pts[rest[0]][0]
-            group = [n for n in rest if pts[n][0] == k]
-            rest = [n for n in rest if pts[n][0] != k]
-            if len(group) == 1:
-                py, pz = pts[group[0]][1:]
-            else:
-                py = np.concatenate([pts[n][1] for n in group])
-                pz = np.concatenate([pts[n][2] for n in group])
-            batches.append((k, py, pz, False))
-            groups.append(group)
-        if "orthogonal_shear" in pts:
-            batches.append(pts["orthogonal_shear"] + (True,))
-            groups.append(["orthogonal_shear"])
+        for shear in (False, True):
+            rest = [n for n in pts if (n[0] == "orthogonal_shear") == shear]
+            while rest:
+                k = pts[rest[0]][0]
+                group = [n for n in rest if pts[n][0] == k]
+                rest = [n for n in rest if pts[n][0] != k]
+                if len(group) == 1:
+                    py, pz = pts[group[0]][1:]
+                else:
+                    py = np.concatenate([pts[n][1] for n in group])
+                    pz = np.concatenate([pts[n][2] for n in group])
+                batches.append((k, py, pz, shear))
+                groups.append(group)
         out = {}
         for group, res in zip(groups, _field_3d(x, b, p0, mu, nu, batches, corners)):
-            if group == ["orthogonal_shear"]:
-                out["orthogonal_shear"] = np.abs(res)
-                continue
             i0 = 0
             for n in group:
                 i1 = i0 + pts[n][1].size
-                out[n] = _measure_3d(n, *(c[i0:i1] for c in res))
+                out[n] = (np.abs(res[i0:i1]) if n[0] == "orthogonal_shear"
+                          else _measure_3d(n[0], *(c[i0:i1] for c in res)))
                 i0 = i1
         return out
 
     names = [n for n in MEASURES if m.z[n] >= 0.1]
     if not names:                       # every maximum at the surface (mu >= ~0.4)
         return {name: None for name in MEASURES}
-    # the candidate slices: the strips' worst and two either side, each at the
-    # strip's optimum of every measure (the slices' points summed per slice, the
-    # strips' fields at once). Every measure's strip maxima are one constant times
-    # p0, so the strips' worst slice is p0's largest for all of them (taken from p0
-    # itself: the products may order two mirror slices of a symmetric roller
-    # differently, by rounding, which would double the candidates)
+    # the candidate slices, each scored by the 3D field at every measure's strip
+    # optimum: p0's largest and two either side (every measure's strip maximum is a
+    # constant times p0, so this is each measure's strip worst; taken from p0 itself,
+    # so that rounding cannot split two mirror slices), p0's other local maxima along
+    # the roller and their neighbours (a two-peaked pressure), the first and last two
+    # loaded slices (near an end the 3D field departs from the strip's: the worst can
+    # sit on an end slice or well inside it), and every s-th loaded slice; the best
+    # slice of each measure is then refined along the roller (s/2, ..., 1 either side)
+    loaded = np.flatnonzero(b > 0)
     k = int(np.argmax(p0))
-    cand = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
-    add(cand)
-    res = _field_3d(x, b, p0, mu, nu,
-                    [(kk, np.array([m.y[n] * b[kk] for n in names]),
-                      np.array([m.z[n] * b[kk] for n in names]), False) for kk in cand],
-                    corners)
+    seen = set()
+
+    def scan(ks):
+        ks = sorted({int(kk) for kk in ks if 0 <= kk < x.size and b[kk] > 0
+                     and (in_half is None or not wide or in_half(kk))} - seen)
+        if not ks:
+            return
+        seen.update(ks)
+        add([kk for kk in ks if kk not in cache])
+        res = _field_3d(x, b, p0, mu, nu,
+                        [(kk, np.array([m.y[n] * b[kk] for n in names]),
+                          np.array([m.z[n] * b[kk] for n in names]), False)
+                         for kk in ks], corners)
+        for i, name in enumerate(names):
+            v = _measure_3d(name, *(np.array([r[c][i] for r in res]) for c in range(6)))
+            for kk, vv in zip(ks, v):
+                score[name][kk] = float(vv)
+
+    score = {name: {} for name in names}
+    step = max(-(-(loaded.size - 1) // _STRIDE_PARTS), 1)
+    # p0's other local maxima whose strip worst is within the 3D correction's reach
+    # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
+    inner = ((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])
+             & (_PEAK_MARGIN * p0[1:-1] >= p0[k]))
+    peaks = np.flatnonzero(inner) + 1
+    if x.size > 2 and np.allclose(x, -x[::-1], rtol=0, atol=1e-12 * np.ptp(x)) \
+            and np.allclose(p0, p0[::-1], rtol=1e-12, atol=0):
+        # a mirror-symmetric load: its mirror slices tie, so one half is scanned
+        mid = (x.size - 1) / 2
+        in_half = (lambda kk: kk <= mid + 1) if k <= mid else (lambda kk: kk >= mid - 1)
+        peaks = peaks[[in_half(pk) for pk in peaks]] if peaks.size else peaks
+    else:
+        in_half = None
+    if not wide:
+        step = 1
+        scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)])
+    else:
+        # every s-th loaded slice, counted from either end (a mirror-symmetric set)
+        j = np.arange(_STRIDE_PARTS + 1)
+        half = np.floor(np.minimum(j, _STRIDE_PARTS - j) * (loaded.size - 1)
+                        / _STRIDE_PARTS + 0.5).astype(int)
+        even = loaded[np.where(2 * j <= _STRIDE_PARTS, half, loaded.size - 1 - half)]
+        scan(list(range(k - 2, k + 3)) + list(peaks) + list(even))
+    while step > 1:
+        step = (step + 1) // 2
+        near = []
+        for name in names:
+            kb = max(score[name], key=score[name].get)
+            # not where the best is already a local maximum of the scanned slices
+            if not all(b[kb + d] == 0 or score[name].get(kb + d, np.inf)
+                       <= score[name][kb] for d in (-1, 1) if 0 <= kb + d < x.size):
+                near += [kb - step, kb + step]
+        scan(near)
     st = {}
-    for i, name in enumerate(names):
-        v = _measure_3d(name, *(np.array([r[c][i] for r in res]) for c in range(6)))
-        j = int(np.argmax(v))
-        kk = cand[j]
-        bb = b[kk]
-        st[name] = dict(k=kk, val=float(v[j]), by=m.y[name] * bb, bz=m.z[name] * bb,
-                        hy=0.4 * bb, hz=0.3 * bb)
+    near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
+    for name in names:
+        # the best two slices by their one point, each given the first (coarse)
+        # window below; the better goes on to the zooms
+        top = sorted(score[name], key=score[name].get,
+                     reverse=True)[:_COARSE_SLICES if wide else 1]
+        # and the best of p0's largest +-2 (the former search's choice, so that the
+        # result is never below it)
+        kk = max(near_k, key=score[name].get)
+        top += [kk] if kk not in top else []
+        # and the end slices (their one point, the strip's optimum, can sit far from
+        # their worst below a singular end peak)
+        # where p0 rises to them and their strip value (below a rising end peak the
+        # 3D field's is lower: the load spreads along the roller) could beat the best
+        top += [int(kk) for kk in (loaded[0], loaded[-1])
+                if wide and kk not in top and kk in score[name]
+                and (p0[kk] >= p0[min(kk + 1, x.size - 1)] if kk == loaded[0]
+                     else p0[kk] >= p0[kk - 1])
+                and m.value[name] * p0[kk] > score[name][top[0]]]
+        st[name] = [dict(k=kk, val=score[name][kk], by=m.y[name] * b[kk],
+                         bz=m.z[name] * b[kk], hy=0.4 * b[kk], hz=0.3 * b[kk])
+                    for kk in top]
+    # every candidate: a 5 x 5 grid, then three zooms of a 3 x 3 grid, all candidates'
+    # points below one slice in one batch per pass
     for it in range(_ZOOMS + 1):
         U, V = _SEARCH_GRIDS[min(it, 1)]
-        pts = {}
-        for name in names:
-            c = st[name]
-            pts[name] = (c["k"], c["by"] + c["hy"] * U,
-                         np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
-        for n, v in evaluate(pts).items():
-            c = st[n]
-            j = int(np.argmax(v))
-            if v[j] > c["val"]:
-                c["val"], c["by"], c["bz"] = float(v[j]), pts[n][1][j], pts[n][2][j]
+        pts = {(name, j): (c["k"], c["by"] + c["hy"] * U,
+                           np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
+               for name in names for j, c in enumerate(st[name])}
+        for key, v in evaluate(pts).items():
+            c = st[key[0]][key[1]]
+            i = int(np.argmax(v))
+            if v[i] > c["val"]:
+                c["val"], c["by"], c["bz"] = float(v[i]), pts[key][1][i], pts[key][2][i]
             c["hy"] /= _SHRINK
             c["hz"] /= _SHRINK
+    st = {name: max(c, key=lambda d: d["val"]) for name, c in st.items()}
     out = {name: None for name in MEASURES}
     for name in names:
         c = st[name]

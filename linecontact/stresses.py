@@ -974,6 +974,9 @@ _STRIDE_PARTS = 4
 _COARSE_SLICES = 1
 #: p0's local maxima within this factor of the largest are candidates too
 _PEAK_MARGIN = 1.1
+#: where the contact reaches an end, Tresca and von Mises are also scored at this
+#: depth over b (below an end slice their 3D worst rises to z ~ 0.35-0.4 b)
+_SHALLOW_Z = 0.4
 
 
 def _slice_edges(xc):
@@ -1242,11 +1245,12 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     strip's optimum point below candidate slices scores them (p0's largest and two
     either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
     contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones,
-    the best refined along the roller by halving steps); the best slice of each
-    measure, the best of p0's largest +-2 (the former search's choice) and, with
-    `wide`, an end slice under a rising end peak whose strip value could beat them,
-    each get a 5 x 5 grid in (y, z) around the strip's optimum (+-0.4 b, +-0.3 b),
-    then three zooms of a 3 x 3 grid (window / 2.5 each); the best is the worst.
+    the best refined along the roller by halving steps, and Tresca and von Mises
+    scored at a second, shallow point, z = _SHALLOW_Z b, where an end slice's worst
+    lies); the best slice of each measure and the best of p0's largest +-2 (the
+    former search's choice) each get a 5 x 5 grid in (y, z) around its better point
+    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each); the
+    best is the worst.
     Measures whose strip optimum lies within 0.1 b of the surface keep the strip's
     value (None here).
 
@@ -1316,16 +1320,31 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
             return
         seen.update(ks)
         add([kk for kk in ks if kk not in cache])
+        # each measure's strip optimum and, where the contact reaches an end, the
+        # shallow point of Tresca and von Mises (below an end slice their 3D worst
+        # rises to z ~ 0.35-0.4 b, far from the strip's 0.7-0.79 b)
+        ys = [m.y[n] for n in names] + [m.y[n] for n in shallow]
+        zs = [m.z[n] for n in names] + [_SHALLOW_Z] * len(shallow)
         res = _field_3d(x, b, p0, mu, nu,
-                        [(kk, np.array([m.y[n] * b[kk] for n in names]),
-                          np.array([m.z[n] * b[kk] for n in names]), False)
+                        [(kk, np.array(ys) * b[kk], np.array(zs) * b[kk], False)
                          for kk in ks], corners)
+        cols = [np.array([r[c] for r in res]) for c in range(6)]
         for i, name in enumerate(names):
-            v = _measure_3d(name, *(np.array([r[c][i] for r in res]) for c in range(6)))
-            for kk, vv in zip(ks, v):
+            v = _measure_3d(name, *(c[:, i] for c in cols))
+            if name in shallow:
+                j = len(names) + shallow.index(name)
+                vs = _measure_3d(name, *(c[:, j] for c in cols))
+            for s_, (kk, vv) in enumerate(zip(ks, v)):
                 score[name][kk] = float(vv)
+                start[name][kk] = (m.y[name] * b[kk], m.z[name] * b[kk])
+                if name in shallow and vs[s_] > vv:
+                    score[name][kk] = float(vs[s_])
+                    start[name][kk] = (m.y[name] * b[kk], _SHALLOW_Z * b[kk])
 
     score = {name: {} for name in names}
+    start = {name: {} for name in names}
+    shallow = ([n for n in names if n != "orthogonal_shear" and m.z[n] > _SHALLOW_Z]
+               if wide and _SHALLOW_Z else [])
     step = max(-(-(loaded.size - 1) // _STRIDE_PARTS), 1)
     # p0's other local maxima whose strip worst is within the 3D correction's reach
     # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
@@ -1371,17 +1390,8 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
         # result is never below it)
         kk = max(near_k, key=score[name].get)
         top += [kk] if kk not in top else []
-        # and the end slices (their one point, the strip's optimum, can sit far from
-        # their worst below a singular end peak)
-        # where p0 rises to them and their strip value (below a rising end peak the
-        # 3D field's is lower: the load spreads along the roller) could beat the best
-        top += [int(kk) for kk in (loaded[0], loaded[-1])
-                if wide and kk not in top and kk in score[name]
-                and (p0[kk] >= p0[min(kk + 1, x.size - 1)] if kk == loaded[0]
-                     else p0[kk] >= p0[kk - 1])
-                and m.value[name] * p0[kk] > score[name][top[0]]]
-        st[name] = [dict(k=kk, val=score[name][kk], by=m.y[name] * b[kk],
-                         bz=m.z[name] * b[kk], hy=0.4 * b[kk], hz=0.3 * b[kk])
+        st[name] = [dict(k=kk, val=score[name][kk], by=start[name][kk][0],
+                         bz=start[name][kk][1], hy=0.4 * b[kk], hz=0.3 * b[kk])
                     for kk in top]
     # every candidate: a 5 x 5 grid, then three zooms of a 3 x 3 grid, all candidates'
     # points below one slice in one batch per pass

@@ -1244,8 +1244,9 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     """The worst of each measure with the 3D correction (:func:`_field_3d`): the
     strip's optimum point below candidate slices scores them (p0's largest and two
     either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
-    contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones,
-    the best refined along the roller by halving steps, and Tresca and von Mises
+    contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones and
+    every local maximum of p0 with its neighbours, each measure's best then climbing
+    along the roller to a local maximum of the scanned slices, and Tresca and von Mises
     scored at a second, shallow point, z = _SHALLOW_Z b, where an end slice's worst
     lies); the best slice of each measure and the best of p0's largest +-2 (the
     former search's choice) each get a 5 x 5 grid in (y, z) around its better point
@@ -1305,10 +1306,11 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     # optimum: p0's largest and two either side (every measure's strip maximum is a
     # constant times p0, so this is each measure's strip worst; taken from p0 itself,
     # so that rounding cannot split two mirror slices), p0's other local maxima along
-    # the roller and their neighbours (a two-peaked pressure), the first and last two
-    # loaded slices (near an end the 3D field departs from the strip's: the worst can
-    # sit on an end slice or well inside it), and every s-th loaded slice; the best
-    # slice of each measure is then refined along the roller (s/2, ..., 1 either side)
+    # the roller and their neighbours (a two-peaked pressure); where the contact
+    # reaches an end (the 3D field departs from the strip's there: the worst can sit
+    # on an end slice or well inside it) also every s-th loaded slice, the ends
+    # included, and every local maximum of p0, each measure's best then climbing
+    # along the roller (Tresca and von Mises scored at a shallow point too)
     loaded = np.flatnonzero(b > 0)
     k = int(np.argmax(p0))
     seen = set()
@@ -1317,7 +1319,7 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
         ks = sorted({int(kk) for kk in ks if 0 <= kk < x.size and b[kk] > 0
                      and (in_half is None or not wide or in_half(kk))} - seen)
         if not ks:
-            return
+            return 0
         seen.update(ks)
         add([kk for kk in ks if kk not in cache])
         # each measure's strip optimum and, where the contact reaches an end, the
@@ -1340,12 +1342,12 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
                 if name in shallow and vs[s_] > vv:
                     score[name][kk] = float(vs[s_])
                     start[name][kk] = (m.y[name] * b[kk], _SHALLOW_Z * b[kk])
+        return len(ks)
 
     score = {name: {} for name in names}
     start = {name: {} for name in names}
     shallow = ([n for n in names if n != "orthogonal_shear" and m.z[n] > _SHALLOW_Z]
                if wide and _SHALLOW_Z else [])
-    step = max(-(-(loaded.size - 1) // _STRIDE_PARTS), 1)
     # p0's other local maxima whose strip worst is within the 3D correction's reach
     # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
     inner = ((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])
@@ -1360,25 +1362,24 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     else:
         in_half = None
     if not wide:
-        step = 1
         scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)])
     else:
-        # every s-th loaded slice, counted from either end (a mirror-symmetric set)
+        # every s-th loaded slice, counted from either end (a mirror-symmetric set),
+        # and every local maximum of p0 with its neighbours (where the orthogonal
+        # shear, whose 3D correction is small, has its worst off the ends)
         j = np.arange(_STRIDE_PARTS + 1)
         half = np.floor(np.minimum(j, _STRIDE_PARTS - j) * (loaded.size - 1)
                         / _STRIDE_PARTS + 0.5).astype(int)
         even = loaded[np.where(2 * j <= _STRIDE_PARTS, half, loaded.size - 1 - half)]
-        scan(list(range(k - 2, k + 3)) + list(peaks) + list(even))
-    while step > 1:
-        step = (step + 1) // 2
-        near = []
-        for name in names:
-            kb = max(score[name], key=score[name].get)
-            # not where the best is already a local maximum of the scanned slices
-            if not all(b[kb + d] == 0 or score[name].get(kb + d, np.inf)
-                       <= score[name][kb] for d in (-1, 1) if 0 <= kb + d < x.size):
-                near += [kb - step, kb + step]
-        scan(near)
+        tops = np.flatnonzero((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])) + 1
+        scan(list(range(k - 2, k + 3)) + list(even)
+             + [pk + d for pk in tops for d in (-1, 0, 1)])
+        # then each measure's best climbs along the roller until both its neighbours
+        # are scanned and lower (a local maximum of the scanned slices)
+        while scan([kb + d for name in names
+                    for kb in (max(score[name], key=score[name].get),)
+                    for d in (-1, 1)]):
+            pass
     st = {}
     near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
     for name in names:

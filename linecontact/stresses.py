@@ -801,49 +801,56 @@ def _love_corner(X, Y, z, w=None, only=None):
 def _love_weighted(X, Y, z, w):
     """The weighted corner sums sum_c w_c g(X_c, Y_pc, z_p) of all ten corner
     functions (:func:`_love_corner`) at the points p: X (1, n_corners), Y (n_points,
-    n_corners), z (n_points, 1), w (n_corners,) -> (10, n_points).
+    n_corners), z (n_points, 1), w (n_corners,) -> (10, n_points); or with a leading
+    axis of batches on each (X (n, 1, c), Y (n, p, c), z (n, p, 1), w (n, c)), each
+    batch its own corners and weights -> (10, n, p).
 
-    The functions with the reciprocals shared and arctan2 for the masked quotient of
-    d2H1/dx2 (den >= 0, and num = 0 where den = 0); two of them are not evaluated:
-    as psi1 and H1 are harmonic (z > 0) and so is each corner function's potential,
+    The functions with the reciprocals shared; two of them are not evaluated: as
+    psi1 and H1 are harmonic (z > 0) and so is each corner function's potential,
     d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
-    d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding). X is one
-    row (the points share it): a factor X of a function goes into the weights (X w),
-    a factor z (one per point) out of the sum, so that Y/(rho (X^2 + z^2)) serves
-    d2 psi1/dx2 and d2 psi1/dxdz, and 1/(rho (Y^2 + z^2)) d2 psi1/dydz and, times Y,
-    d2 psi1/dy2; the work arrays are reused in place."""
-    out = np.empty((10, Y.shape[0]))
+    d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding). d2H1/dx2
+    = arctan(XY (rho - z)/(X^2 rho + Y^2 z)) is taken as arctan(XY/(X^2 + z^2 +
+    z rho)), its numerator and denominator times (rho + z) over X^2 + Y^2 (the same
+    where X^2 + Y^2 > 0, and 0 where X = Y = 0, as the masked form), one division
+    and arctan in place of arctan2. X is one row (the points share it): a factor X
+    of a function goes into the weights (X w), a factor z (one per point) out of the
+    sum, so that Y/(rho (X^2 + z^2)) serves d2 psi1/dx2 and d2 psi1/dxdz, and
+    1/(rho (Y^2 + z^2)) d2 psi1/dydz and, times Y, d2 psi1/dy2; the work arrays are
+    reused in place."""
+    out = np.empty((10,) + Y.shape[:-1])
     X2, z2 = X * X, z * z
-    zc = z[:, 0]
-    Xw = X[0] * w
+    zc = z[..., 0]
+    Xw = X[..., 0, :] * w
+    if Y.ndim == 2:
+        def dot(A, v):
+            return A @ v
+    else:
+        def dot(A, v):
+            return np.matmul(A, v[..., None])[..., 0]
     Y2 = Y * Y
     a = X2 + z2                             # X^2 + z^2
-    rho = X2 + Y2
-    rho += z2
+    rho = Y2 + a
     np.sqrt(rho, out=rho)
-    ir = 1.0 / rho
-    np.divide(ir, a, out=a)                 # 1/(rho (X^2 + z^2))
-    t = Y2 + z2
-    np.divide(ir, t, out=t)                 # 1/(rho (Y^2 + z^2))
-    out[4] = ir @ w
-    out[6] = -zc * (t @ Xw)
-    t *= Y
-    out[3] = -(t @ Xw)
-    a *= Y                                  # Y/(rho (X^2 + z^2))
-    out[2] = -(a @ Xw)
-    out[5] = -zc * (a @ w)
+    zr = z * rho                            # z rho
     XY = X * Y
-    ir *= XY
-    ir /= z
-    out[0] = -(np.arctan(ir, out=ir) @ w)
-    np.subtract(rho, z, out=a)
-    a *= XY
-    np.multiply(X2, rho, out=t)
-    Y2 *= z
-    t += Y2
-    out[7] = np.arctan2(a, t, out=a) @ w
+    h = a + zr                              # X^2 + z^2 + z rho
+    np.divide(XY, h, out=h)
+    out[7] = dot(np.arctan(h, out=h), w)
+    np.divide(XY, zr, out=zr)               # XY/(z rho)
+    out[0] = -(dot(np.arctan(zr, out=zr), w))
+    ir = np.divide(1.0, rho, out=XY)
+    np.divide(ir, a, out=a)                 # 1/(rho (X^2 + z^2))
+    Y2 += z2
+    np.divide(ir, Y2, out=Y2)               # 1/(rho (Y^2 + z^2))
+    out[4] = dot(ir, w)
+    out[6] = -zc * (dot(Y2, Xw))
+    Y2 *= Y
+    out[3] = -(dot(Y2, Xw))
+    a *= Y                                  # Y/(rho (X^2 + z^2))
+    out[2] = -(dot(a, Xw))
+    out[5] = -zc * (dot(a, w))
     rho += z
-    out[9] = np.log(rho, out=rho) @ w
+    out[9] = dot(np.log(rho, out=rho), w)
     out[1] = -(out[2] + out[3])
     out[8] = -(out[0] + out[7])
     return out
@@ -861,6 +868,49 @@ def _love_sums(X, Y, z, w, only=None):
     step = -(-n // blocks)
     return np.concatenate([_love_corner(X, Y[i:i + step], z[i:i + step], w, only)
                            for i in range(0, n, step)], axis=1)
+
+
+def _love_batches(items, only=None):
+    """:func:`_love_sums` of several (X, Y, z, w) at once: their corners and points
+    padded to the largest (offsets 0, weight 0; depth 1), one evaluation with a
+    leading batch axis (in groups of about _BLOCK elements) in place of one per
+    item; a list of (10, n_points) per item."""
+    if len(items) == 1:
+        return [_love_sums(*items[0], only)]
+    cs = [it[3].size for it in items]
+    ps = [it[1].shape[0] for it in items]
+    C, P = max(cs), max(ps)
+    per = max(_BLOCK // (P * C), 1)
+    out = []
+    for g0 in range(0, len(items), per):
+        grp = items[g0:g0 + per]
+        n = len(grp)
+        X = np.zeros((n, 1, C))
+        Y = np.zeros((n, P, C))
+        z = np.ones((n, P, 1))
+        w = np.zeros((n, C))
+        for i, (Xi, Yi, zi, wi) in enumerate(grp):
+            c, p = wi.size, Yi.shape[0]
+            X[i, 0, :c] = Xi[0]
+            Y[i, :p, :c] = Yi
+            z[i, :p] = zi
+            w[i, :c] = wi
+        if only is None:
+            t = _love_weighted(X, Y, z, w)
+        else:
+            # d2 psi1/dydz alone (as _love_corner's)
+            t = np.zeros((10, n, P))
+            z2 = z * z
+            Y2 = Y * Y
+            tt = Y2 + z2
+            rho = X * X + Y2
+            rho += z2
+            np.sqrt(rho, out=rho)
+            tt *= rho
+            np.divide(1.0, tt, out=tt)
+            t[_PYZ] = -z[..., 0] * np.matmul(tt, (X[:, 0, :] * w)[..., None])[..., 0]
+        out += [t[:, i, :Yi.shape[0]] for i, (_, Yi, _, _) in enumerate(grp)]
+    return out
 
 
 #: elements (points x corners) per block of :func:`_love_sums`
@@ -1119,13 +1169,17 @@ def _field_3d(x, b, p0, mu, nu, batches, corners):
     `shear_only` tau_yz alone (the orthogonal shear's one component, one corner
     function). The corner sums are per slice; the strips' fields and the components
     of all batches are evaluated at once."""
-    sums, full = [], []
-    for i, (k, py, pz, shear) in enumerate(batches):
-        X, cy, w = corners(k)
-        sums.append(_love_sums(X, py[:, None] - cy[None, :], pz[:, None], w,
-                               _PYZ if shear else None))
-        if not shear:
-            full.append(i)
+    sums = [None] * len(batches)
+    full = [i for i, bt in enumerate(batches) if not bt[3]]
+    for group, only in ((full, None), ([i for i in range(len(batches)) if batches[i][3]],
+                                       _PYZ)):
+        items = []
+        for i in group:
+            k, py, pz, _ = batches[i]
+            X, cy, w = corners(k)
+            items.append((X, py[:, None] - cy[None, :], pz[:, None], w))
+        for i, t in zip(group, _love_batches(items, only) if items else ()):
+            sums[i] = t
     sizes = [bt[1].size for bt in batches]
     ends = [0]
     for size in sizes:

@@ -108,6 +108,8 @@ __all__ = [
     "case_check",
 ]
 
+#: where roller_stresses' 3D search looks (its ``search``)
+_SEARCHES = ("candidates", "every slice")
 #: the three stress measures, in the order they are reported
 MEASURES = ("tresca", "von_mises", "orthogonal_shear")
 #: allowable stress over the yield strength, per measure (the yield criteria)
@@ -653,7 +655,8 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
                             "modelled",))
 
 
-def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=True):
+def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=True,
+                    search="candidates"):
     r"""Stress maxima along a roller solved by slices, per slice and the worst of all.
 
     .. math:: p_{0,k} = \frac{2 q_k}{\pi b_k},\qquad
@@ -682,6 +685,10 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     three_d : bool, optional
         Apply the 3D correction to the worst (default; without it the worst is the
         plane-strain strips', up to 5 % low under a crown, a relief or a tilt).
+    search : {"candidates", "every slice"}, optional
+        Where the 3D correction's grid search looks: below the candidate slices
+        (default), or below every loaded slice (a check of the candidates' choice:
+        never lower, some 10-50 times the cost).
 
     Returns
     -------
@@ -710,6 +717,8 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     (1949); A. E. H. Love (1929).
     """
     mu, nu = _check_material(friction, poisson)
+    if search not in _SEARCHES:
+        raise ValueError(f"search = {search!r} is not one of {_SEARCHES}")
     x = np.asarray(solution.x, dtype=float)
     b = np.asarray(solution.half_width, dtype=float)
     q = np.asarray(solution.q, dtype=float)
@@ -729,7 +738,8 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     # the contact at or near an end: the worst may lie anywhere along the roller, and
     # the search scans every part of it
     wide = edge or reaches_end(solution)
-    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu), wide)
+    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu), wide,
+                   every=search == "every slice")
     if all(v is None for v in w3.values()):
         # every measure's worst at the surface (friction >= ~0.4): nothing corrected,
         # the strips' worst as it is, and the method says so
@@ -1024,9 +1034,10 @@ _STRIDE_PARTS = 4
 _COARSE_SLICES = 1
 #: p0's local maxima within this factor of the largest are candidates too
 _PEAK_MARGIN = 1.1
-#: where the contact reaches an end, Tresca and von Mises are also scored at this
-#: depth over b (below an end slice their 3D worst rises to z ~ 0.35-0.4 b)
-_SHALLOW_Z = 0.4
+#: where the contact reaches an end, each measure is also scored at these depths
+#: over b (towards an end the 3D worst rises from the strip's 0.5-0.79 b to 0.35-0.4 b
+#: below an end slice, and to ~0.15-0.2 b on the thin slices next to an end peak)
+_SHALLOW_Z = (0.4, 0.2)
 
 
 def _slice_edges(xc):
@@ -1294,15 +1305,15 @@ def _search_grids():
 _SEARCH_GRIDS = _search_grids()
 
 
-def _worst_3d(x, b, p0, mu, nu, m, wide=False):
+def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     """The worst of each measure with the 3D correction (:func:`_field_3d`): the
     strip's optimum point below candidate slices scores them (p0's largest and two
     either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
     contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones and
     every local maximum of p0 with its neighbours, each measure's best then climbing
-    along the roller to a local maximum of the scanned slices, and Tresca and von Mises
-    scored at a second, shallow point, z = _SHALLOW_Z b, where an end slice's worst
-    lies); the best slice of each measure and the best of p0's largest +-2 (the
+    along the roller to a local maximum of the scanned slices, and every measure
+    scored at shallower points too, z = _SHALLOW_Z b, where the worst lies near an
+    end); the best slice of each measure and the best of p0's largest +-2 (the
     former search's choice) each get a 5 x 5 grid in (y, z) around its better point
     (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each); the
     best is the worst.
@@ -1312,7 +1323,8 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     Each grid's centre is the best point so far, whose value is known, so it is not
     evaluated again; the points below the same slice are summed in one batch per
     pass (the orthogonal shear's apart, with tau_yz alone), each slice's corners
-    built once (:func:`_corners_3d`) with their offsets along the roller."""
+    built once (:func:`_corners_3d`) with their offsets along the roller. With
+    `every`, every loaded slice is scanned and searched (a check of the choice)."""
     cache = {}
     xe = _slice_edges(x)
 
@@ -1364,7 +1376,7 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
     # reaches an end (the 3D field departs from the strip's there: the worst can sit
     # on an end slice or well inside it) also every s-th loaded slice, the ends
     # included, and every local maximum of p0, each measure's best then climbing
-    # along the roller (Tresca and von Mises scored at a shallow point too)
+    # along the roller (every measure scored at shallower points too)
     loaded = np.flatnonzero(b > 0)
     k = int(np.argmax(p0))
     seen = set()
@@ -1376,32 +1388,29 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
             return 0
         seen.update(ks)
         add([kk for kk in ks if kk not in cache])
-        # each measure's strip optimum and, where the contact reaches an end, the
-        # shallow point of Tresca and von Mises (below an end slice their 3D worst
-        # rises to z ~ 0.35-0.4 b, far from the strip's 0.7-0.79 b)
-        ys = [m.y[n] for n in names] + [m.y[n] for n in shallow]
-        zs = [m.z[n] for n in names] + [_SHALLOW_Z] * len(shallow)
+        # each measure's strip optimum and, where the contact reaches an end, its
+        # shallower points (towards an end the 3D worst rises far above the strip's
+        # depth); a slice's score is the best of them, which the zooms start from
+        ys = [m.y[n] for n in names] + [m.y[n] for n in shallow for _ in _SHALLOW_Z]
+        zs = [m.z[n] for n in names] + [zz for _ in shallow for zz in _SHALLOW_Z]
         res = _field_3d(x, b, p0, mu, nu,
                         [(kk, np.array(ys) * b[kk], np.array(zs) * b[kk], False)
                          for kk in ks], corners)
         cols = [np.array([r[c] for r in res]) for c in range(6)]
         for i, name in enumerate(names):
-            v = _measure_3d(name, *(c[:, i] for c in cols))
-            if name in shallow:
-                j = len(names) + shallow.index(name)
-                vs = _measure_3d(name, *(c[:, j] for c in cols))
-            for s_, (kk, vv) in enumerate(zip(ks, v)):
-                score[name][kk] = float(vv)
-                start[name][kk] = (m.y[name] * b[kk], m.z[name] * b[kk])
-                if name in shallow and vs[s_] > vv:
-                    score[name][kk] = float(vs[s_])
-                    start[name][kk] = (m.y[name] * b[kk], _SHALLOW_Z * b[kk])
+            js = [i] + ([len(names) + shallow.index(name) * len(_SHALLOW_Z) + d
+                         for d in range(len(_SHALLOW_Z))] if name in shallow else [])
+            v = _measure_3d(name, *(c[:, js] for c in cols))
+            best = np.argmax(v, axis=1)
+            for s_, kk in enumerate(ks):
+                score[name][kk] = float(v[s_, best[s_]])
+                start[name][kk] = (ys[js[best[s_]]] * b[kk], zs[js[best[s_]]] * b[kk])
         return len(ks)
 
     score = {name: {} for name in names}
     start = {name: {} for name in names}
-    shallow = ([n for n in names if n != "orthogonal_shear" and m.z[n] > _SHALLOW_Z]
-               if wide and _SHALLOW_Z else [])
+    shallow = ([n for n in names if m.z[n] > max(_SHALLOW_Z)]
+               if wide or every else [])
     # p0's other local maxima whose strip worst is within the 3D correction's reach
     # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
     inner = ((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])
@@ -1415,7 +1424,10 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
         peaks = peaks[[in_half(pk) for pk in peaks]] if peaks.size else peaks
     else:
         in_half = None
-    if not wide:
+    if every:
+        in_half = None
+        scan(loaded)
+    elif not wide:
         scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)])
     else:
         # every s-th loaded slice, counted from either end (a mirror-symmetric set),
@@ -1441,6 +1453,8 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False):
         # window below; the better goes on to the zooms
         top = sorted(score[name], key=score[name].get,
                      reverse=True)[:_COARSE_SLICES if wide else 1]
+        if every:
+            top = sorted(score[name])
         # and the best of p0's largest +-2 (the former search's choice, so that the
         # result is never below it)
         kk = max(near_k, key=score[name].get)

@@ -887,8 +887,16 @@ def _love_batches(items, only=None):
     item; a list of (10, n_points) per item."""
     if len(items) == 1:
         return [_love_sums(*items[0], only)]
-    cs = [it[3].size for it in items]
     ps = [it[1].shape[0] for it in items]
+    if len(set(ps)) > 1:
+        # one padded evaluation per number of points
+        out = [None] * len(items)
+        for p in sorted(set(ps)):
+            at = [i for i in range(len(items)) if ps[i] == p]
+            for i, t in zip(at, _love_batches([items[i] for i in at], only)):
+                out[i] = t
+        return out
+    cs = [it[3].size for it in items]
     C, P = max(cs), max(ps)
     per = max(_BLOCK // (P * C), 1)
     out = []
@@ -1038,6 +1046,7 @@ _PEAK_MARGIN = 1.1
 #: over b (towards an end the 3D worst rises from the strip's 0.5-0.79 b to 0.35-0.4 b
 #: below an end slice, and to ~0.15-0.2 b on the thin slices next to an end peak)
 _SHALLOW_Z = (0.4, 0.2)
+_SHALLOW_NEAR = 1.5
 
 
 def _slice_edges(xc):
@@ -1388,23 +1397,33 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
             return 0
         seen.update(ks)
         add([kk for kk in ks if kk not in cache])
-        # each measure's strip optimum and, where the contact reaches an end, its
-        # shallower points (towards an end the 3D worst rises far above the strip's
-        # depth); a slice's score is the best of them, which the zooms start from
-        ys = [m.y[n] for n in names] + [m.y[n] for n in shallow for _ in _SHALLOW_Z]
-        zs = [m.z[n] for n in names] + [zz for _ in shallow for zz in _SHALLOW_Z]
-        res = _field_3d(x, b, p0, mu, nu,
-                        [(kk, np.array(ys) * b[kk], np.array(zs) * b[kk], False)
-                         for kk in ks], corners)
-        cols = [np.array([r[c] for r in res]) for c in range(6)]
-        for i, name in enumerate(names):
-            js = [i] + ([len(names) + shallow.index(name) * len(_SHALLOW_Z) + d
-                         for d in range(len(_SHALLOW_Z))] if name in shallow else [])
-            v = _measure_3d(name, *(c[:, js] for c in cols))
-            best = np.argmax(v, axis=1)
-            for s_, kk in enumerate(ks):
-                score[name][kk] = float(v[s_, best[s_]])
-                start[name][kk] = (ys[js[best[s_]]] * b[kk], zs[js[best[s_]]] * b[kk])
+        # each measure's strip optimum and, where the contact reaches an end, on
+        # the slices within _SHALLOW_NEAR b of a loaded end, its shallower points
+        # (there the 3D worst rises far above the strip's depth); a slice's score is
+        # the best of them, which the zooms start from
+        base = [(m.y[n], m.z[n]) for n in names]
+        more = base + [(m.y[n], zz) for n in shallow for zz in _SHALLOW_Z]
+        near = [kk for kk in ks if shallow and min(x[kk] - xe[loaded[0]],
+                                                   xe[loaded[-1] + 1] - x[kk])
+                < _SHALLOW_NEAR * b[kk]]
+        groups = [(g, p) for g, p in (([kk for kk in ks if kk not in near], base),
+                                      (near, more)) if g]
+        batches = [(kk, np.array([u for u, _ in p]) * b[kk],
+                    np.array([v for _, v in p]) * b[kk], False)
+                   for g, p in groups for kk in g]
+        res = iter(_field_3d(x, b, p0, mu, nu, batches, corners))
+        for g, p in groups:
+            cols = [np.array(c) for c in zip(*(next(res) for _ in g))]
+            for i, name in enumerate(names):
+                js = [i] + ([len(names) + shallow.index(name) * len(_SHALLOW_Z) + d
+                             for d in range(len(_SHALLOW_Z))]
+                            if p is more and name in shallow else [])
+                v = _measure_3d(name, *(c[:, js] for c in cols))
+                best = np.argmax(v, axis=1)
+                for s_, kk in enumerate(g):
+                    j = js[best[s_]]
+                    score[name][kk] = float(v[s_, best[s_]])
+                    start[name][kk] = (p[j][0] * b[kk], p[j][1] * b[kk])
         return len(ks)
 
     score = {name: {} for name in names}

@@ -517,9 +517,8 @@ def _brute_worst(sol, mu=0.0, nu=0.3, n=15):
 
 #: the 3D search against the brute force: it may find more (its zooms leave the
 #: window), and less by its choice among slices of nearly equal worst by one point
-#: each (a few points): measured up to 1.1 % against this brute force over 60
-#: end-reaching rollers, and up to 2.0 % against search="every slice" over 84
-#: (tools/benchmarks/bench_stress_search.py), near an end
+#: each (a few points): measured up to 2.0 % near an end against search="every
+#: slice" over 84 end-reaching rollers (tools/benchmarks/bench_stress_search.py)
 SEARCH_TOL = 0.02
 
 

@@ -1,0 +1,378 @@
+/*
+ * The weighted corner sums of Love's rectangles (the 3D correction of the subsurface
+ * stresses, linecontact/stresses.py: _love_weighted, the numpy reference) in C99, one
+ * fused loop per point with no temporaries: at each point p (offset py along the
+ * slice, depth z > 0) and for the corners c (offsets X_c along the roller, cy_c
+ * across, weights w_c), Y = py - cy_c, rho = sqrt(Y^2 + X^2 + z^2) and
+ *
+ *   out[0] = -sum w arctan(XY/(z rho))          d psi1/dz
+ *   out[2] = -sum (X w) Y/(rho (X^2 + z^2))     d2 psi1/dx2
+ *   out[3] = -sum (X w) Y/(rho (Y^2 + z^2))     d2 psi1/dy2
+ *   out[4] =  sum w / rho                       d2 psi1/dxdy
+ *   out[5] = -z sum w Y/(rho (X^2 + z^2))       d2 psi1/dxdz
+ *   out[6] = -z sum (X w)/(rho (Y^2 + z^2))     d2 psi1/dydz
+ *   out[7] =  sum w arctan(XY/(X^2 + z^2 + z rho))   d2 H1/dx2
+ *   out[9] =  sum w log(rho + z)                d2 H1/dxdy
+ *   out[1] = -(out[2] + out[3]),  out[8] = -(out[0] + out[7])
+ *
+ * (the same formulas, reciprocals and harmonic identities as _love_weighted; with
+ * `only`, out[6] alone and the others 0, as _love_corner's). The arctangents and the
+ * logarithm are written out (Cephes' atan and log: a branch-free range reduction and
+ * a rational minimax approximation, accurate to about 2 ulp; S. L. Moshier, Methods
+ * and Programs for Mathematical Functions, 1989) so that the compiler can vectorise
+ * the loop over the corners; the arctangent's argument is reduced from its numerator
+ * and denominator (one division fewer than arctan(n/d)). The corners are summed in
+ * LANES interleaved partial sums (a vector's lanes), then those in order: the sums
+ * agree with numpy's (whose matrix products sum in their own order) to rounding.
+ * Where the compiler supports it (gcc, clang on x86-64 Linux) the loop is compiled
+ * for AVX-512, AVX2 and the baseline, picked at load by the processor
+ * (target_clones). IEEE arithmetic: no -ffast-math, no fused multiply-adds.
+ *
+ * Arrays come through the buffer protocol: each is checked to be C-contiguous float64
+ * (or writable for the output) of the expected length before any is read; a mismatch
+ * raises ValueError. The sum returns False (out untouched beyond what was written)
+ * where an input is not finite or a depth is not positive: the caller then takes the
+ * numpy path, whose result there is the reference.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#define LANES 8
+
+/* the helpers inlined into the vectorised loop */
+#if defined(__GNUC__)
+#define INLINE static inline __attribute__((always_inline))
+#else
+#define INLINE static inline
+#endif
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(_M_X64)) && defined(__linux__) \
+    && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+#endif
+#ifndef CLONES
+#define CLONES
+#endif
+
+#define PIO2 1.57079632679489661923
+#define PIO4 0.78539816339744830962
+#define MOREBITS 6.123233995736765886130e-17
+#define T3P8 2.41421356237309504880
+
+/* Cephes' atan (atan.c), its range reduction taken on the numerator and denominator
+ * of arctan(n/d), d > 0: the reduced argument x = num/den, the offset y0 + more and
+ * the rational P(x^2)/Q(x^2) apart, so that the caller can share one division
+ * between several rationals (|x| <= tan(pi/8): 194 < Q < 300) */
+typedef struct {
+    double x, z, y0, more, p, q;
+} Atan;
+
+INLINE Atan atan_parts(double n, double d)
+{
+    Atan a;
+    double an = fabs(n);
+    int big = an > T3P8 * d;
+    int mid = an > 0.66 * d;
+    double num = big ? -d : (mid ? an - d : an);
+    double den = big ? an : (mid ? an + d : d);
+    a.y0 = big ? PIO2 : (mid ? PIO4 : 0.0);
+    a.more = big ? MOREBITS : (mid ? 0.5 * MOREBITS : 0.0);
+    a.x = num / den;
+    double z = a.z = a.x * a.x;
+    a.p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z
+            - 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z
+          - 6.485021904942025371773e1;
+    a.q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z
+            + 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z
+          + 1.945506571482613964425e2;
+    return a;
+}
+
+/* arctan(n/d) from its parts and P/Q */
+INLINE double atan_end(const Atan *a, double pq, double n)
+{
+    double r = a->x * (a->z * pq) + a->x;
+    return copysign(a->y0 + (r + a->more), n);
+}
+
+/* Cephes' log (log.c), x a positive normal finite number: its |e| <= 2 branch for
+ * every exponent (frexp by bits, the mantissa f + 1 in [sqrt(1/2), sqrt 2)), the
+ * rational P(f)/Q(f) apart (8 < Q < 40) */
+typedef struct {
+    double e, f, p, q;
+} Log;
+
+INLINE Log log_parts(double x)
+{
+    Log g;
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    uint64_t eb = (u >> 52) | UINT64_C(0x4330000000000000);
+    double e;
+    memcpy(&e, &eb, sizeof e);
+    e -= 4503599627370496.0 + 1022.0;            /* the exponent of frexp */
+    uint64_t mb = (u & UINT64_C(0x000fffffffffffff)) | UINT64_C(0x3fe0000000000000);
+    double m;
+    memcpy(&m, &mb, sizeof m);                   /* frexp's mantissa in [0.5, 1) */
+    int low = m < 0.70710678118654752440;
+    g.e = low ? e - 1.0 : e;
+    double f = g.f = low ? (m + m) - 1.0 : m - 1.0;
+    g.p = ((((1.01875663804580931796e-4 * f + 4.97494994976747001425e-1) * f
+             + 4.70579119878881725854e0) * f + 1.44989225341610930846e1) * f
+           + 1.79368678507819816313e1) * f + 7.70838733755885391666e0;
+    g.q = ((((f + 1.12873587189167450590e1) * f + 4.52279145837532221105e1) * f
+            + 8.29875266912776603211e1) * f + 7.11544750618563894466e1) * f
+          + 2.31251620126765340583e1;
+    return g;
+}
+
+INLINE double log_end(const Log *g, double pq)
+{
+    double f = g->f, z = f * f;
+    double y = f * (z * pq);
+    y = y - g->e * 2.121944400546905827679e-4;
+    y = y - 0.5 * z;
+    double r = f + y;
+    return r + g->e * 0.693359375;
+}
+
+/* the corner sums at one point: s[0..7] = sum w atan(XY/(z rho)), sum (Xw) Y/(rho a),
+ * sum (Xw) Y/(rho b), sum w/rho, sum w Y/(rho a), sum (Xw)/(rho b),
+ * sum w atan(XY/(a + z rho)), sum w log(rho + z); a = X^2 + z^2, b = Y^2 + z^2.
+ * Four divisions: 1/(rho a b) gives the three reciprocals, 1/(Q1 Q2 Q3) the three
+ * rationals (each reciprocal within a few ulp; the rationals are small corrections
+ * of the functions, so that their rounding moves the functions by well under an ulp) */
+#define NS 8
+
+INLINE void pair(double X, double cy, double w, double yp, double z, double z2,
+                        double *acc)
+{
+    double X2 = X * X;
+    double a = X2 + z2;
+    double Y = yp - cy;
+    double Y2 = Y * Y;
+    double b = Y2 + z2;
+    double rho = sqrt(Y2 + a);
+    double zr = z * rho;
+    double XY = X * Y;
+    double Xw = X * w;
+    double inv = 1.0 / (rho * (a * b));
+    double ia = inv * b;                         /* 1/(rho a) */
+    double ib = inv * a;                         /* 1/(rho b) */
+    double ir = ia * a;                          /* 1/rho */
+    Atan t0 = atan_parts(XY, zr);
+    Atan t7 = atan_parts(XY, a + zr);
+    Log lg = log_parts(rho + z);
+    double q01 = t0.q * t7.q;
+    double iq = 1.0 / (q01 * lg.q);
+    double iq2 = iq * lg.q;                      /* 1/(Q1 Q2) */
+    acc[0] += atan_end(&t0, t0.p * (t7.q * iq2), XY) * w;
+    acc[1] += (ia * Y) * Xw;
+    acc[2] += (ib * Y) * Xw;
+    acc[3] += ir * w;
+    acc[4] += (ia * Y) * w;
+    acc[5] += ib * Xw;
+    acc[6] += atan_end(&t7, t7.p * (t0.q * iq2), XY) * w;
+    acc[7] += log_end(&lg, lg.p * (q01 * iq)) * w;
+}
+
+/* d2 psi1/dydz's sum alone: sum (X w)/(rho (Y^2 + z^2)), rho as _love_corner's */
+INLINE double pair_yz(double X, double cy, double w, double yp, double z2)
+{
+    double Y = yp - cy;
+    double Y2 = Y * Y;
+    double rho = sqrt((X * X + Y2) + z2);
+    return (1.0 / ((Y2 + z2) * rho)) * (X * w);
+}
+
+CLONES
+static void love_loop(Py_ssize_t nc, const double *X, const double *cy, const double *w,
+                      Py_ssize_t npt, const double *py, const double *pz, int only,
+                      double *out)
+{
+    for (Py_ssize_t p = 0; p < npt; p++) {
+        const double yp = py[p], z = pz[p], z2 = z * z;
+        double s[NS];
+        if (only) {
+            double acc[LANES] = {0.0};
+            Py_ssize_t c = 0;
+            for (; c + LANES <= nc; c += LANES)
+                for (int l = 0; l < LANES; l++)
+                    acc[l] += pair_yz(X[c + l], cy[c + l], w[c + l], yp, z2);
+            for (int l = 0; c + l < nc; l++)
+                acc[l] += pair_yz(X[c + l], cy[c + l], w[c + l], yp, z2);
+            double t = 0.0;
+            for (int l = 0; l < LANES; l++)
+                t += acc[l];
+            for (int f = 0; f < 10; f++)
+                out[f * npt + p] = 0.0;
+            out[6 * npt + p] = -z * t;
+            continue;
+        }
+        double acc[NS][LANES];
+        for (int k = 0; k < NS; k++)
+            for (int l = 0; l < LANES; l++)
+                acc[k][l] = 0.0;
+        Py_ssize_t c = 0;
+        for (; c + LANES <= nc; c += LANES) {
+            for (int l = 0; l < LANES; l++) {
+                double t[NS] = {0.0};
+                pair(X[c + l], cy[c + l], w[c + l], yp, z, z2, t);
+                for (int k = 0; k < NS; k++)
+                    acc[k][l] += t[k];
+            }
+        }
+        for (int l = 0; c + l < nc; l++) {
+            double t[NS] = {0.0};
+            pair(X[c + l], cy[c + l], w[c + l], yp, z, z2, t);
+            for (int k = 0; k < NS; k++)
+                acc[k][l] += t[k];
+        }
+        for (int k = 0; k < NS; k++) {
+            double t = 0.0;
+            for (int l = 0; l < LANES; l++)
+                t += acc[k][l];
+            s[k] = t;
+        }
+        double o0 = -s[0], o2 = -s[1], o3 = -s[2], o7 = s[6];
+        out[0 * npt + p] = o0;
+        out[1 * npt + p] = -(o2 + o3);
+        out[2 * npt + p] = o2;
+        out[3 * npt + p] = o3;
+        out[4 * npt + p] = s[3];
+        out[5 * npt + p] = -z * s[4];
+        out[6 * npt + p] = -z * s[5];
+        out[7 * npt + p] = o7;
+        out[8 * npt + p] = -(o0 + o7);
+        out[9 * npt + p] = s[7];
+    }
+}
+
+/* ---------------------------------------------------------------------------------- */
+/* argument checks                                                                    */
+
+#define MAXBUF 8
+
+typedef struct {
+    Py_buffer v[MAXBUF];
+    int count;
+} Buffers;
+
+static void release(Buffers *bs)
+{
+    for (int i = 0; i < bs->count; i++)
+        PyBuffer_Release(&bs->v[i]);
+    bs->count = 0;
+}
+
+/* the buffer of `obj`: C-contiguous float64, exactly `len` items (any where len < 0;
+ * then *got holds the count), or NULL with ValueError set */
+static double *take(Buffers *bs, PyObject *obj, const char *name, Py_ssize_t len,
+                    int writable, Py_ssize_t *got)
+{
+    if (bs->count >= MAXBUF) {
+        PyErr_SetString(PyExc_RuntimeError, "_cstresses: too many buffers");
+        return NULL;
+    }
+    Py_buffer *v = &bs->v[bs->count];
+    int flags = PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | (writable ? PyBUF_WRITABLE : 0);
+    if (PyObject_GetBuffer(obj, v, flags) < 0) {
+        PyErr_Clear();
+        PyErr_Format(PyExc_ValueError, "_cstresses: %s must be a C-contiguous%s array "
+                     "of float64", name, writable ? " writable" : "");
+        return NULL;
+    }
+    bs->count++;
+    const char *f = v->format == NULL ? "B" : v->format;
+    if (*f == '@' || *f == '=' || *f == '<')
+        f++;
+    if (v->itemsize != 8 || strcmp(f, "d") != 0) {
+        PyErr_Format(PyExc_ValueError, "_cstresses: %s must hold float64 (got format "
+                     "'%s', item size %zd)", name, v->format == NULL ? "B" : v->format,
+                     v->itemsize);
+        return NULL;
+    }
+    Py_ssize_t n = v->len / 8;
+    if (len >= 0 && n != len) {
+        PyErr_Format(PyExc_ValueError, "_cstresses: %s has %zd items, %zd expected",
+                     name, n, len);
+        return NULL;
+    }
+    if (got != NULL)
+        *got = n;
+    return (double *)v->buf;
+}
+
+static int finite_all(const double *a, Py_ssize_t n)
+{
+    for (Py_ssize_t i = 0; i < n; i++)
+        if (!isfinite(a[i]))
+            return 0;
+    return 1;
+}
+
+static PyObject *love_sums(PyObject *self, PyObject *args)
+{
+    PyObject *X, *cy, *w, *py, *pz, *out;
+    int only;
+    if (!PyArg_ParseTuple(args, "OOOOOpO:love_sums", &X, &cy, &w, &py, &pz, &only, &out))
+        return NULL;
+    Buffers bs = {.count = 0};
+    PyObject *ret = NULL;
+    Py_ssize_t nc, npt;
+    const double *x_, *cy_, *w_, *py_, *pz_;
+    double *o_;
+    if (!(x_ = take(&bs, X, "X", -1, 0, &nc)) || !(cy_ = take(&bs, cy, "cy", nc, 0, NULL))
+        || !(w_ = take(&bs, w, "w", nc, 0, NULL)) || !(py_ = take(&bs, py, "py", -1, 0, &npt))
+        || !(pz_ = take(&bs, pz, "pz", npt, 0, NULL)))
+        goto done;
+    if (npt > PY_SSIZE_T_MAX / 10) {
+        PyErr_SetString(PyExc_ValueError, "_cstresses: too many points");
+        goto done;
+    }
+    if (!(o_ = take(&bs, out, "out", 10 * npt, 1, NULL)))
+        goto done;
+    int ok = finite_all(x_, nc) && finite_all(cy_, nc) && finite_all(w_, nc)
+             && finite_all(py_, npt) && finite_all(pz_, npt);
+    /* depths in a range where z^2, rho and the logarithm's argument are normal
+     * numbers (z > 1e-150 m) and their squares finite */
+    for (Py_ssize_t p = 0; ok && p < npt; p++)
+        ok = pz_[p] > 1e-150 && pz_[p] < 1e150;
+    for (Py_ssize_t c = 0; ok && c < nc; c++)
+        ok = fabs(x_[c]) < 1e150 && fabs(cy_[c]) < 1e150;
+    for (Py_ssize_t p = 0; ok && p < npt; p++)
+        ok = fabs(py_[p]) < 1e150;
+    if (ok) {
+        Py_BEGIN_ALLOW_THREADS
+        love_loop(nc, x_, cy_, w_, npt, py_, pz_, only, o_);
+        Py_END_ALLOW_THREADS
+    }
+    ret = PyBool_FromLong(ok);
+done:
+    release(&bs);
+    return ret;
+}
+
+static PyMethodDef methods[] = {
+    {"love_sums", love_sums, METH_VARARGS,
+     "love_sums(X, cy, w, py, pz, only, out) -> bool: the weighted corner sums of "
+     "Love's rectangles into out (10, len(py)) for corners at (X, cy) with weights w "
+     "and points (py, pz); with only, out[6] alone (the others 0). False (out "
+     "undefined) where an input is not finite, or a depth is not in (1e-150, 1e150)."},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT, "_cstresses",
+    "The corner sums of the stresses' 3D correction in C (linecontact/stresses.py "
+    "wraps them).", -1, methods};
+
+PyMODINIT_FUNC PyInit__cstresses(void)
+{
+    return PyModule_Create(&module);
+}

@@ -1,0 +1,143 @@
+"""The C corner sums of the stresses' 3D correction (linecontact/_cstresses.c) against
+the numpy reference (linecontact.stresses._love_weighted / _love_corner), and the
+stresses computed with each: the same sums to rounding, the same worst values.
+
+Skipped where the optional extension is not built (no C compiler at install)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from linecontact import stresses as st
+from linecontact.roller import ProfiledRoller
+
+pytestmark = pytest.mark.skipif(
+    st._cstresses is None,
+    reason="the optional C extension linecontact._cstresses is not built here")
+
+ESTAR = 115.385e9
+
+
+def _c(X, cy, w, py, pz, only=False):
+    out = np.full((10, np.size(py)), np.nan)
+    ok = st._cstresses.love_sums(np.ascontiguousarray(X, dtype=float),
+                                 np.ascontiguousarray(cy, dtype=float),
+                                 np.ascontiguousarray(w, dtype=float),
+                                 np.ascontiguousarray(py, dtype=float),
+                                 np.ascontiguousarray(pz, dtype=float), only, out)
+    return out if ok else None
+
+
+def _numpy(X, cy, w, py, pz, only=None):
+    return st._love_corner(np.asarray(X, dtype=float)[None, :],
+                           np.subtract.outer(py, cy), np.asarray(pz, dtype=float)[:, None],
+                           np.asarray(w, dtype=float), only)
+
+
+def _rel(a, b):
+    """Largest difference per function over that function's largest magnitude."""
+    scale = np.maximum(np.abs(b).max(axis=1, keepdims=True), 1e-300)
+    return (np.abs(a - b) / scale).max()
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_c_corner_sums_equal_numpy(seed):
+    """Random corners (a few hundred, offsets ~b and a few far ones at 1e6 L) and
+    points (depths 0.01 b to 10 b): each of the ten sums agrees with numpy's to 1e-13
+    of its largest value (both round each term to an ulp or two and sum several
+    hundred terms in different orders: ~1e-15 measured); with `only`, d2 psi1/dydz
+    alone and the other nine exactly 0."""
+    rng = np.random.default_rng(seed)
+    b = 1e-4
+    nc = 301 + seed                      # not a multiple of the 8 lanes: the tail too
+    X = rng.normal(size=nc) * 10 * b
+    X[:4] = [-3e4, 3e4, -2e4, 2e4]       # the ends' extensions (1e6 L)
+    cy = rng.normal(size=nc) * b
+    w = rng.normal(size=nc)
+    py = rng.normal(size=37) * b
+    pz = b * 10 ** rng.uniform(-2, 1, 37)
+    got, ref = _c(X, cy, w, py, pz), _numpy(X, cy, w, py, pz)
+    assert _rel(got, ref) < 1e-13, f"C sums off numpy's by {_rel(got, ref):.2g}"
+    got6 = _c(X, cy, w, py, pz, only=True)
+    ref6 = _numpy(X, cy, w, py, pz, st._PYZ)
+    assert _rel(got6[6:7], ref6[6:7]) < 1e-13
+    assert not np.delete(got6, 6, axis=0).any(), "only: the other sums not 0"
+
+
+def test_c_arctan_and_log_over_their_whole_range():
+    """One corner with unit weight: out[9] = log(rho + z) and out[0] =
+    -arctan(XY/(z rho)). X = Y = 0 (rho = z): log(2z) for z from 1e-140 to 1e140
+    within 2 ulp of numpy's; X = Y = 1: the arctangent of arguments from ~1e140 down
+    to ~1e-140 (both signs) within 2 ulp of numpy's arctan of the same argument,
+    and exactly 0 where X = Y = 0 (d psi1/dz and d2 H1/dx2 of a corner below the
+    point)."""
+    z = 10.0 ** np.linspace(-140, 140, 2001)
+    zero = np.zeros(1)
+    got = _c(zero, zero, np.ones(1), np.zeros(z.size), z)
+    ref = np.log(z + z)
+    assert np.all(np.abs(got[9] - ref) <= 2 * np.spacing(np.abs(ref)))
+    assert not got[0].any() and not got[7].any() and not got[8].any()
+    for sgn in (1.0, -1.0):
+        got = _c(np.ones(1), zero, np.ones(1), np.full(z.size, sgn), z)
+        rho = np.sqrt(1.0 + (1.0 + z * z))
+        ref = -np.arctan(sgn / (z * rho))
+        assert np.all(np.abs(got[0] - ref) <= 2 * np.spacing(np.abs(ref))), \
+            "arctan off numpy's by more than 2 ulp"
+
+
+def test_c_corner_sums_refuse_what_they_do_not_cover():
+    """Non-finite inputs and depths outside (1e-150, 1e150) m return False (the caller
+    takes numpy); a buffer of the wrong length, dtype or layout is a ValueError
+    naming it, before anything is read."""
+    one = np.ones(3)
+    assert _c(one, one, one, np.ones(2), np.array([1.0, np.nan])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e-200])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 0.0])) is None
+    assert _c(np.array([1.0, np.inf, 1.0]), one, one, np.ones(2), np.ones(2)) is None
+    f = st._cstresses.love_sums
+    with pytest.raises(ValueError, match="cy has 2 items, 3 expected"):
+        f(one, np.ones(2), one, one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="out has 20 items, 30 expected"):
+        f(one, one, one, one, one, False, np.empty(20))
+    with pytest.raises(ValueError, match="w must hold float64"):
+        f(one, one, np.ones(3, dtype=np.float32), one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="X must be a C-contiguous"):
+        f(np.ones(6)[::2], one, one, one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="out must be a C-contiguous writable"):
+        ro = np.empty(30)
+        ro.flags.writeable = False
+        f(one, one, one, one, one, False, ro)
+
+
+def _worst(sol, model, corners):
+    saved = st._CORNERS[0]
+    st._CORNERS[0] = corners
+    try:
+        return st.roller_stresses(sol, 0.0, 0.3, roller=model).worst
+    finally:
+        st._CORNERS[0] = saved
+
+
+@pytest.mark.parametrize("profile, force, tilt", [
+    ("circular:Rc=0.5", 4200.0, 0.0),          # off the ends
+    ("lundberg:design_force=11200", 4200.0, 2e-3),  # off the ends, tilted
+    ("johns-gohar", 11.2e3, 0.0),              # edge loaded at both ends
+    ("lundberg:design_force=11200", 11.2e3, 2e-3),  # the contact at an end
+])
+def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt):
+    """roller_stresses with the C corner sums and with numpy's: every measure's worst
+    value within 1e-12 relative (the search takes the same steps: rounding-level
+    differences of the field, ~1e-15 measured), at the same point, or at the mirror
+    slice of an untilted roller (a tie)."""
+    if profile == "johns-gohar":
+        from tools.studies.roller_study import make_profile
+        profile = make_profile("johns-gohar", 14e-3)
+    model = ProfiledRoller(5e-3, 14e-3, ESTAR, profile)
+    sol = model.at_force(force, tilt=tilt)
+    c, n = _worst(sol, model, "c"), _worst(sol, model, "numpy")
+    for name in st.MEASURES:
+        u, v = c[name], n[name]
+        assert abs(u["value"] - v["value"]) <= 1e-12 * abs(v["value"]), name
+        same = u["slice"] == v["slice"] or (tilt == 0.0
+                                            and u["slice"] + v["slice"] == sol.x.size - 1)
+        assert same, f"{name}: slice {u['slice']} (C) against {v['slice']} (numpy)"

@@ -255,9 +255,174 @@ static void love_loop(Py_ssize_t nc, const double *X, const double *cy, const do
 }
 
 /* ---------------------------------------------------------------------------------- */
+/* the corners of a slice's pressure difference (stresses._corners_assemble)          */
+
+typedef struct {
+    double x, y, w;
+    Py_ssize_t i;
+} Corner;
+
+static int corner_order(const void *pa, const void *pb)
+{
+    const Corner *a = pa, *b = pb;
+    if (a->x < b->x)
+        return -1;
+    if (a->x > b->x)
+        return 1;
+    if (a->y < b->y)
+        return -1;
+    if (a->y > b->y)
+        return 1;
+    return (a->i > b->i) - (a->i < b->i);      /* stable, as np.lexsort */
+}
+
+/* _corners_assemble's arithmetic in its order: the near grid's mixed differences of
+ * the framed cell pressures, the far cells' four corners each, then the corners sorted
+ * by (x, y) (stably), those at one place merged (their weights summed in order) and
+ * the zero weights dropped. cx, cy, w hold room for every corner; returns how many
+ * were kept, -1 where the near grid's corners are not in order (numpy then), -2 where
+ * memory ran out */
+static Py_ssize_t assemble(Py_ssize_t n, const double *xe, double L, const double *b,
+                           const double *p0, const double *q, Py_ssize_t k0, Py_ssize_t i0,
+                           Py_ssize_t i1, Py_ssize_t NY, const double *ye,
+                           const double *means, double *cx, double *cy, double *w)
+{
+    const double b0 = b[k0], pk = p0[k0];
+    const int lo_ext = i0 == 0, hi_ext = i1 == n - 1;
+    const Py_ssize_t rows = i1 - i0 + 1 + lo_ext + hi_ext, NC = NY + 2;
+    double *Pp = calloc((size_t)((rows + 2) * NC + rows + 1), sizeof(double));
+    if (Pp == NULL)
+        return -2;
+    double *xs = Pp + (rows + 2) * NC;
+    for (Py_ssize_t r = 0; r <= i1 - i0; r++)
+        for (Py_ssize_t j = 0; j < NY; j++)
+            Pp[(1 + lo_ext + r) * NC + 1 + j] = p0[i0 + r] * means[(1 + r) * NY + j]
+                                                - pk * means[j];
+    for (Py_ssize_t j = 0; j < NY; j++) {
+        if (lo_ext)
+            Pp[1 * NC + 1 + j] = -(pk * means[j]);
+        if (hi_ext)
+            Pp[rows * NC + 1 + j] = -(pk * means[j]);
+    }
+    for (Py_ssize_t t = 0; t <= i1 - i0 + 1; t++)
+        xs[lo_ext + t] = xe[i0 + t];
+    if (lo_ext)
+        xs[0] = xe[0] - 1e6 * L;
+    if (hi_ext)
+        xs[rows] = xe[n] + 1e6 * L;
+    Py_ssize_t nn = 0;
+    int sorted = 1;
+    for (Py_ssize_t r = 0; r <= rows; r++) {
+        sorted &= r == 0 || xs[r] > xs[r - 1];
+        for (Py_ssize_t j = 0; j <= NY; j++, nn++) {
+            sorted &= j == 0 || ye[j] > ye[j - 1];
+            cx[nn] = xs[r];
+            cy[nn] = ye[j];
+            w[nn] = ((Pp[(r + 1) * NC + j + 1] - Pp[(r + 1) * NC + j])
+                     - Pp[r * NC + j + 1]) + Pp[r * NC + j];
+        }
+    }
+    free(Pp);
+    if (!sorted)
+        return -1;
+    const Py_ssize_t nl = i0, nr = n - 1 - i1;
+    const Py_ssize_t m = nl + nr + (1 - lo_ext) + (1 - hi_ext);
+    Py_ssize_t k = 0;
+    if (m == 0) {
+        for (Py_ssize_t i = 0; i < nn; i++)
+            if (w[i] != 0.0) {
+                cx[k] = cx[i];
+                cy[k] = cy[i];
+                w[k++] = w[i];
+            }
+        return k;
+    }
+    Corner *far = malloc(sizeof(Corner) * (size_t)(4 * m));
+    if (far == NULL)
+        return -2;
+    const double q0 = q[k0];
+    for (Py_ssize_t t = 0; t < m; t++) {
+        double lo, hi, bf, dq;
+        if (t < nl + nr) {
+            Py_ssize_t s = t < nl ? t : i1 + 1 + (t - nl);
+            lo = xe[s];
+            hi = xe[s + 1];
+            bf = b[s] > b0 ? b[s] : b0;            /* np.maximum */
+            dq = q[s] - q0;
+        } else if (t == nl + nr && !lo_ext) {
+            lo = xe[0] - 1e6 * L;
+            hi = xe[0];
+            bf = b0;
+            dq = -q0;
+        } else {
+            lo = xe[n];
+            hi = xe[n] + 1e6 * L;
+            bf = b0;
+            dq = -q0;
+        }
+        double pm = dq / (2 * bf);
+        const double fx[4] = {lo, lo, hi, hi}, fy[4] = {-bf, bf, -bf, bf},
+                     fw[4] = {pm, -pm, -pm, pm};
+        for (int f = 0; f < 4; f++) {
+            Corner *c = &far[f * m + t];
+            c->x = fx[f];
+            c->y = fy[f];
+            c->w = fw[f];
+            c->i = nn + f * m + t;
+        }
+    }
+    qsort(far, (size_t)(4 * m), sizeof(Corner), corner_order);
+    /* merge the near grid (sorted, before every far corner at one place) with the far
+     * corners, summing the weights at one place in that order */
+    double *ox = cx, *oy = cy, *ow = w;     /* written behind the near grid's reads */
+    double *nx = malloc(sizeof(double) * (size_t)(3 * nn));
+    if (nx == NULL) {
+        free(far);
+        return -2;
+    }
+    memcpy(nx, cx, sizeof(double) * (size_t)nn);
+    memcpy(nx + nn, cy, sizeof(double) * (size_t)nn);
+    memcpy(nx + 2 * nn, w, sizeof(double) * (size_t)nn);
+    const double *ny = nx + nn, *nw = nx + 2 * nn;
+    Py_ssize_t a = 0, f = 0, out = -1;
+    double lx = 0.0, ly = 0.0;
+    while (a < nn || f < 4 * m) {
+        double x, y, wt;
+        int near = f >= 4 * m || (a < nn && (nx[a] < far[f].x
+                                             || (nx[a] == far[f].x && ny[a] <= far[f].y)));
+        if (near) {
+            x = nx[a];
+            y = ny[a];
+            wt = nw[a++];
+        } else {
+            x = far[f].x;
+            y = far[f].y;
+            wt = far[f++].w;
+        }
+        if (out >= 0 && x == lx && y == ly)
+            ow[out] += wt;
+        else {
+            out++;
+            ox[out] = lx = x;
+            oy[out] = ly = y;
+            ow[out] = wt;
+        }
+    }
+    free(nx);
+    free(far);
+    for (Py_ssize_t i = 0; i <= out; i++)
+        if (w[i] != 0.0) {
+            cx[k] = cx[i];
+            cy[k] = cy[i];
+            w[k++] = w[i];
+        }
+    return k;
+}
+
+/* ---------------------------------------------------------------------------------- */
 /* argument checks                                                                    */
 
-#define MAXBUF 8
+#define MAXBUF 12
 
 typedef struct {
     Py_buffer v[MAXBUF];
@@ -359,12 +524,63 @@ done:
     return ret;
 }
 
+static PyObject *corners(PyObject *self, PyObject *args)
+{
+    PyObject *xe, *b, *p0, *q, *ye, *means, *cx, *cy, *w;
+    double L;
+    Py_ssize_t k0, i0, i1;
+    if (!PyArg_ParseTuple(args, "OdOOOnnnOOOOO:corners", &xe, &L, &b, &p0, &q, &k0, &i0,
+                          &i1, &ye, &means, &cx, &cy, &w))
+        return NULL;
+    Buffers bs = {.count = 0};
+    PyObject *ret = NULL;
+    Py_ssize_t n, ny;
+    const double *xe_, *b_, *p0_, *q_, *ye_, *m_;
+    double *cx_, *cy_, *w_;
+    if (!(b_ = take(&bs, b, "b", -1, 0, &n)) || !(xe_ = take(&bs, xe, "xe", n + 1, 0, NULL))
+        || !(p0_ = take(&bs, p0, "p0", n, 0, NULL)) || !(q_ = take(&bs, q, "q", n, 0, NULL))
+        || !(ye_ = take(&bs, ye, "ye", -1, 0, &ny)))
+        goto done;
+    if (n < 1 || ny < 2 || !(0 <= i0 && i0 <= k0 && k0 <= i1 && i1 < n)
+        || n > (PY_SSIZE_T_MAX / 8 - 16) / ny) {
+        PyErr_Format(PyExc_ValueError, "_cstresses: slices %zd, grid edges %zd and "
+                     "0 <= i0 %zd <= k0 %zd <= i1 %zd < n out of range", n, ny, i0, k0, i1);
+        goto done;
+    }
+    const Py_ssize_t NY = ny - 1;
+    const Py_ssize_t room = (n + 3) * ny + 4 * (n + 2);
+    if (!(m_ = take(&bs, means, "means", (i1 - i0 + 2) * NY, 0, NULL))
+        || !(cx_ = take(&bs, cx, "cx", room, 1, NULL))
+        || !(cy_ = take(&bs, cy, "cy", room, 1, NULL))
+        || !(w_ = take(&bs, w, "w", room, 1, NULL)))
+        goto done;
+    if (!(finite_all(xe_, n + 1) && finite_all(b_, n) && finite_all(p0_, n)
+          && finite_all(q_, n) && finite_all(ye_, ny) && finite_all(m_, (i1 - i0 + 2) * NY)
+          && isfinite(L))) {
+        ret = PyLong_FromSsize_t(-1);
+        goto done;
+    }
+    Py_ssize_t k;
+    Py_BEGIN_ALLOW_THREADS
+    k = assemble(n, xe_, L, b_, p0_, q_, k0, i0, i1, NY, ye_, m_, cx_, cy_, w_);
+    Py_END_ALLOW_THREADS
+    ret = k == -2 ? PyErr_NoMemory() : PyLong_FromSsize_t(k);
+done:
+    release(&bs);
+    return ret;
+}
+
 static PyMethodDef methods[] = {
     {"love_sums", love_sums, METH_VARARGS,
      "love_sums(X, cy, w, py, pz, only, out) -> bool: the weighted corner sums of "
      "Love's rectangles into out (10, len(py)) for corners at (X, cy) with weights w "
      "and points (py, pz); with only, out[6] alone (the others 0). False (out "
      "undefined) where an input is not finite, or a depth is not in (1e-150, 1e150)."},
+    {"corners", corners, METH_VARARGS,
+     "corners(xe, L, b, p0, q, k0, i0, i1, ye, means, cx, cy, w) -> count: the corners "
+     "of slice k0's pressure difference (stresses._corners_assemble) into cx, cy, w "
+     "(each (n + 3) len(ye) + 4 (n + 2) long), the first `count` kept; -1 where numpy "
+     "is to build them (an input not finite, the grid not increasing)."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module = {

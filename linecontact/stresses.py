@@ -944,6 +944,21 @@ except ImportError:
 _CORNERS = ["c" if _cstresses is not None else "numpy"]
 
 
+def _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means):
+    """:func:`_corners_assemble` by the C extension (the same arithmetic, the corners
+    in the same order), or None where it returns -1 (an input not finite, the grid
+    not increasing) and numpy is to build them."""
+    f = np.ascontiguousarray
+    room = (b.size + 3) * ye.size + 4 * (b.size + 2)
+    cx, cy, w = np.empty(room), np.empty(room), np.empty(room)
+    k = _cstresses.corners(f(xe, dtype=float), float(L), f(b, dtype=float),
+                           f(p0, dtype=float), f(q, dtype=float), int(k0), int(i0),
+                           int(i1), f(ye, dtype=float), f(means, dtype=float), cx, cy, w)
+    if k < 0:
+        return None
+    return cx[:k], cy[:k], w[:k]
+
+
 def _love_c(X, cy, w, py, pz, only=None):
     """The corner sums of :func:`_love_weighted` (`only`: d2 psi1/dydz's alone, as
     :func:`_love_corner`'s) by the C extension, at the points (py, pz) for the corners
@@ -1133,6 +1148,10 @@ def _corners_many(xc, b, p0, ks, xe=None):
 def _corners_assemble(xe, L, b, p0, q, k0, i0, i1, ye, means):
     """The corners of :func:`_corners_3d` from k0's near window [i0, i1], its grid
     across ye and the cell means (k0's row, then the window's slices')."""
+    if _CORNERS[0] == "c":
+        got = _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means)
+        if got is not None:
+            return got
     n = b.size
     b0 = b[k0]
     ref = p0[k0] * means[0]

@@ -141,3 +141,55 @@ def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt):
         same = u["slice"] == v["slice"] or (tilt == 0.0
                                             and u["slice"] + v["slice"] == sol.x.size - 1)
         assert same, f"{name}: slice {u['slice']} (C) against {v['slice']} (numpy)"
+
+
+def test_c_corners_are_numpy_s():
+    """The corners of each loaded slice's pressure difference (_corners_many) built by
+    C and by numpy: the same corners in the same order and the same weights, bit for
+    bit (the same operations in the same order; the merge of coincident corners sums
+    in lexsort's stable order), off the ends (the far cells and the ends' extensions)
+    and with the near window at an end (its extension rows)."""
+    from tools.studies.roller_study import make_profile
+    saved = st._CORNERS[0]
+    try:
+        for profile, force, tilt in (("circular:Rc=0.5", 4200.0, 2e-3),
+                                     (make_profile("johns-gohar", 14e-3), 11.2e3, 0.0)):
+            sol = ProfiledRoller(5e-3, 14e-3, ESTAR, profile).at_force(force, tilt=tilt)
+            x, b, q = (np.asarray(v) for v in (sol.x, sol.half_width, sol.q))
+            loaded = (b > 0) & (q > 0)          # as roller_stresses
+            p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
+            b = np.where(loaded, b, 0.0)
+            ks = [int(k) for k in np.flatnonzero(loaded)]
+            st._CORNERS[0] = "c"
+            got = st._corners_many(x, b, p0, ks)
+            st._CORNERS[0] = "numpy"
+            ref = st._corners_many(x, b, p0, ks)
+            for k, (g, r) in enumerate(zip(got, ref)):
+                for a, e, what in zip(g, r, ("x", "y", "weights")):
+                    assert np.array_equal(a, e), f"slice {k}: {what} differ"
+    finally:
+        st._CORNERS[0] = saved
+
+
+def test_c_corners_refuse_bad_buffers():
+    """corners(): a window outside the slices, or buffers too short for every corner,
+    are ValueErrors before anything is read or written; a non-finite input returns -1
+    (numpy builds those corners)."""
+    n, ny = 5, 25
+    xe, b = np.linspace(0, 1, n + 1), np.ones(n)
+    ye, means = np.linspace(-1, 1, ny), np.ones(((n - 1) + 2) * (ny - 1))
+    room = (n + 3) * ny + 4 * (n + 2)
+    f = st._cstresses.corners
+    with pytest.raises(ValueError, match="out of range"):
+        f(xe, 1.0, b, b, b, 3, 1, 2, ye, means, np.empty(room), np.empty(room),
+          np.empty(room))
+    with pytest.raises(ValueError, match="w has"):
+        f(xe, 1.0, b, b, b, 2, 0, 4, ye, np.ones(6 * (ny - 1)), np.empty(room),
+          np.empty(room), np.empty(room - 1))
+    with pytest.raises(ValueError, match="means has"):
+        f(xe, 1.0, b, b, b, 2, 0, 4, ye, np.ones(5 * (ny - 1)), np.empty(room),
+          np.empty(room), np.empty(room))
+    bad = b.copy()
+    bad[1] = np.nan
+    assert f(xe, 1.0, bad, b, b, 2, 0, 4, ye, np.ones(6 * (ny - 1)), np.empty(room),
+             np.empty(room), np.empty(room)) == -1

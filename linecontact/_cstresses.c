@@ -31,8 +31,9 @@
  * Arrays come through the buffer protocol: each is checked to be C-contiguous float64
  * (or writable for the output) of the expected length before any is read; a mismatch
  * raises ValueError. The sum returns False (out untouched beyond what was written)
- * where an input is not finite or a depth is not positive: the caller then takes the
- * numpy path, whose result there is the reference.
+ * where an input is not finite, a depth is outside (1e-60, 1e60) or an offset's size
+ * not below 1e60 (metres: far outside any contact; there an intermediate could
+ * leave the normal numbers): the caller then takes the numpy path.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -51,7 +52,7 @@
 #endif
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(_M_X64)) && defined(__linux__) \
-    && defined(__has_attribute)
+    && defined(__GLIBC__) && defined(__has_attribute)
 #if __has_attribute(target_clones)
 #define CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
@@ -505,14 +506,14 @@ static PyObject *love_sums(PyObject *self, PyObject *args)
         goto done;
     int ok = finite_all(x_, nc) && finite_all(cy_, nc) && finite_all(w_, nc)
              && finite_all(py_, npt) && finite_all(pz_, npt);
-    /* depths in a range where z^2, rho and the logarithm's argument are normal
-     * numbers (z > 1e-150 m) and their squares finite */
+    /* depths and offsets in a range where every intermediate is a normal finite
+     * number: 1e-60 < z < 1e60 and |X|, |cy|, |py| < 1e60 keep rho (a)(b) within
+     * [1e-300, 3e301] (a = X^2 + z^2, b = Y^2 + z^2) and the logarithm's argument
+     * normal */
     for (Py_ssize_t p = 0; ok && p < npt; p++)
-        ok = pz_[p] > 1e-150 && pz_[p] < 1e150;
+        ok = pz_[p] > 1e-60 && pz_[p] < 1e60 && fabs(py_[p]) < 1e60;
     for (Py_ssize_t c = 0; ok && c < nc; c++)
-        ok = fabs(x_[c]) < 1e150 && fabs(cy_[c]) < 1e150;
-    for (Py_ssize_t p = 0; ok && p < npt; p++)
-        ok = fabs(py_[p]) < 1e150;
+        ok = fabs(x_[c]) < 1e60 && fabs(cy_[c]) < 1e60;
     if (ok) {
         Py_BEGIN_ALLOW_THREADS
         love_loop(nc, x_, cy_, w_, npt, py_, pz_, only, o_);
@@ -575,7 +576,8 @@ static PyMethodDef methods[] = {
      "love_sums(X, cy, w, py, pz, only, out) -> bool: the weighted corner sums of "
      "Love's rectangles into out (10, len(py)) for corners at (X, cy) with weights w "
      "and points (py, pz); with only, out[6] alone (the others 0). False (out "
-     "undefined) where an input is not finite, or a depth is not in (1e-150, 1e150)."},
+     "undefined) where an input is not finite, a depth is not in (1e-60, 1e60) or an "
+     "offset's size not below 1e60."},
     {"corners", corners, METH_VARARGS,
      "corners(xe, L, b, p0, q, k0, i0, i1, ye, means, cx, cy, w) -> count: the corners "
      "of slice k0's pressure difference (stresses._corners_assemble) into cx, cy, w "

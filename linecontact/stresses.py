@@ -964,7 +964,7 @@ def _love_c(X, cy, w, py, pz, only=None):
     :func:`_love_corner`'s) by the C extension, at the points (py, pz) for the corners
     at X (1, n) along the roller and cy (n,) across with weights w (n,): (10, len(py)),
     or None where the extension returns False (an input not finite, a depth outside
-    (1e-150, 1e150) m) and numpy is to take them."""
+    (1e-60, 1e60) m or an offset not below 1e60 m) and numpy is to take them."""
     if only not in (None, _PYZ):
         return None
     f = np.ascontiguousarray

@@ -66,12 +66,13 @@ def test_c_corner_sums_equal_numpy(seed):
 
 def test_c_arctan_and_log_over_their_whole_range():
     """One corner with unit weight: out[9] = log(rho + z) and out[0] =
-    -arctan(XY/(z rho)). X = Y = 0 (rho = z): log(2z) for z from 1e-140 to 1e140
-    within 2 ulp of numpy's; X = Y = 1: the arctangent of arguments from ~1e140 down
-    to ~1e-140 (both signs) within 2 ulp of numpy's arctan of the same argument,
+    -arctan(XY/(z rho)). X = Y = 0 (rho = z): log(2z) for z from 1e-59 to 1e59
+    within 2 ulp of numpy's; X = Y = 1: the arctangent of arguments from ~1e59 down
+    to ~1e-59 (both signs) within 2 ulp of numpy's arctan of the same argument,
     and exactly 0 where X = Y = 0 (d psi1/dz and d2 H1/dx2 of a corner below the
-    point)."""
-    z = 10.0 ** np.linspace(-140, 140, 2001)
+    point); all ten sums within 1e-13 of numpy's at the depths' extremes, a corner
+    above the point and one offset by 1 m."""
+    z = 10.0 ** np.linspace(-59, 59, 4001)
     zero = np.zeros(1)
     got = _c(zero, zero, np.ones(1), np.zeros(z.size), z)
     ref = np.log(z + z)
@@ -83,15 +84,21 @@ def test_c_arctan_and_log_over_their_whole_range():
         ref = -np.arctan(sgn / (z * rho))
         assert np.all(np.abs(got[0] - ref) <= 2 * np.spacing(np.abs(ref))), \
             "arctan off numpy's by more than 2 ulp"
+    X, cy, w = np.array([0.0, 1.0]), np.array([0.0, -1.0]), np.array([1.0, -0.5])
+    for zz in (1.1e-60, 1e-30, 1e-9, 1e30, 0.9e60):
+        py, pz = np.array([0.0, 1e-9]), np.full(2, zz)
+        assert _rel(_c(X, cy, w, py, pz), _numpy(X, cy, w, py, pz)) < 1e-13, zz
 
 
 def test_c_corner_sums_refuse_what_they_do_not_cover():
-    """Non-finite inputs and depths outside (1e-150, 1e150) m return False (the caller
-    takes numpy); a buffer of the wrong length, dtype or layout is a ValueError
+    """Non-finite inputs, depths outside (1e-60, 1e60) m and offsets of 1e60 m return
+    False (the caller takes numpy); a buffer of the wrong length, dtype or layout is a ValueError
     naming it, before anything is read."""
     one = np.ones(3)
     assert _c(one, one, one, np.ones(2), np.array([1.0, np.nan])) is None
-    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e-200])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e-61])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e61])) is None
+    assert _c(one, one, one, np.array([1.0, 1e60]), np.ones(2)) is None
     assert _c(one, one, one, np.ones(2), np.array([1.0, 0.0])) is None
     assert _c(np.array([1.0, np.inf, 1.0]), one, one, np.ones(2), np.ones(2)) is None
     f = st._cstresses.love_sums
@@ -193,3 +200,25 @@ def test_c_corners_refuse_bad_buffers():
     bad[1] = np.nan
     assert f(xe, 1.0, bad, b, b, 2, 0, 4, ye, np.ones(6 * (ny - 1)), np.empty(room),
              np.empty(room), np.empty(room)) == -1
+
+
+def test_where_c_declines_numpy_takes_over(monkeypatch):
+    """Where the extension declines (love_sums False, corners -1: inputs it does not
+    cover) the numpy path computes those sums and corners: roller_stresses then gives
+    numpy's worst values exactly (the same code ran)."""
+    class Declines:
+        @staticmethod
+        def love_sums(*args):
+            return False
+
+        @staticmethod
+        def corners(*args):
+            return -1
+
+    model = ProfiledRoller(5e-3, 14e-3, ESTAR, "circular:Rc=0.5")
+    sol = model.at_force(4200.0, tilt=2e-3)
+    ref = _worst(sol, model, "numpy")
+    monkeypatch.setattr(st, "_cstresses", Declines)
+    got = _worst(sol, model, "c")
+    for name in st.MEASURES:
+        assert got[name] == ref[name], name

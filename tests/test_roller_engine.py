@@ -741,6 +741,34 @@ def test_the_c_extension_checks_its_arrays():
             call(**kwargs)
 
 
+def test_the_c_extension_refuses_a_negative_slice_count():
+    """The Newton step's C functions take the loaded-slice count ns as a number and
+    size their arrays by it (z: 2 ns x 3, qs: ns, ...); a length below zero means "any
+    length" to the extension's checks, so a negative ns passed every check and the
+    call returned a made-up answer (step_out: 0 slices leaving; bordered_sums: zero
+    sums) instead of refusing it. Each now raises a ValueError naming ns."""
+    _need("c")
+    from linecontact.roller import _ckernels
+
+    z, qs, dz, out = np.zeros(6), np.ones(1), np.zeros(2), np.zeros(1, dtype=bool)
+    w, x, S = np.ones(3), np.ones(3), np.zeros(1, dtype=np.int64)
+    calls = {
+        "step_out": lambda ns: _ckernels.step_out(z, 0.0, 0.0, ns, qs, dz, out),
+        "bordered_sums": lambda ns: _ckernels.bordered_sums(z, ns, 1.0, 1.0, w, x, S,
+                                                            qs, np.zeros(6)),
+        "newton_after": lambda ns: _ckernels.newton_after(
+            z, np.zeros(4), ns, 1.0, 1.0, w, x, S, qs, qs, 1.0, 1, np.ones(3),
+            np.ones(3), np.ones(3), np.zeros(4), np.zeros(4), dz, out,
+            np.zeros(1, dtype=bool), np.zeros(4)),
+    }
+    for name, call in calls.items():
+        call(1)                                  # (the arrays fit ns = 1)
+        for ns in (-1, -2**62):
+            with pytest.raises(ValueError, match="ns"):
+                call(ns)
+                pytest.fail(f"{name} accepted ns = {ns}")
+
+
 def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     """The module-wide caches of slice geometry (n x n arrays, five of them per
     geometry in the compiled engine) were bounded only in count: sixteen geometries at

@@ -839,3 +839,21 @@ def test_the_c_source_compiles_where_a_c_compiler_is_present(tmp_path):
         "-fno-fast-math", "-c", str(src), "-o", str(tmp_path / "_ckernels.o")]
     got = subprocess.run(cmd, capture_output=True, text=True)
     assert got.returncode == 0, f"{' '.join(cmd)}:\n{got.stderr[-3000:]}"
+
+
+def test_a_refused_engine_names_the_engines_that_run_here(monkeypatch):
+    """The error that refuses an engine not available here gives as its valid range the
+    engines that are: where numba is not installed but the C extension is built,
+    engine='numba' was refused with "'auto' or 'numpy'", leaving out the C engine; where
+    neither is, engine='c' was refused with "'auto', 'numpy' or 'numba'", naming an
+    engine that is refused too."""
+    _need("c")
+    monkeypatch.setattr(sl, "_HAVE_NUMBA", [False])          # (as without numba)
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="numba")
+    assert "'auto', 'numpy' or 'c' (numba is not installed)" in str(err.value), (
+        str(err.value))
+    monkeypatch.setattr(sl, "_C_ENGINE", ["not built (blocked by the test)"])
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
+    assert "range 'auto' or 'numpy' (the C extension" in str(err.value), str(err.value)

@@ -191,7 +191,7 @@ def c_engine():
     """The C engine (:mod:`linecontact.roller._cengine`, over the extension
     ``_ckernels`` built at install), or None where it does not import (not built: no C
     compiler at install; built for another Python). Tried once per process; importing
-    it costs well under a millisecond."""
+    it costs 1-3 ms (tools/benchmarks/README.md, "Round 7")."""
     if not _C_ENGINE:
         from . import _cengine
         _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
@@ -239,7 +239,7 @@ def _runnable_here(refused):
 
 def resolve_engine(engine):
     """"numpy", "numba" or "c" for a new SliceEquations: "auto" is "c" where the C
-    extension imports (from the first solve: it imports in under a millisecond); else numpy
+    extension imports (from the first solve: it loads in 1-3 ms); else numpy
     until this process has taken AUTO_SWITCH_STEPS numpy steps, then numba where it
     is installed and imports (a single solve never imports numba; a sweep, a batch or
     a bearing repays it); where that import fails, numpy for the rest of the process,

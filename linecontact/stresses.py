@@ -108,6 +108,8 @@ __all__ = [
     "case_check",
 ]
 
+#: where roller_stresses' 3D search looks (its ``search``)
+_SEARCHES = ("candidates", "every slice")
 #: the three stress measures, in the order they are reported
 MEASURES = ("tresca", "von_mises", "orthogonal_shear")
 #: allowable stress over the yield strength, per measure (the yield criteria)
@@ -653,7 +655,8 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
                             "modelled",))
 
 
-def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=True):
+def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=True,
+                    search="candidates"):
     r"""Stress maxima along a roller solved by slices, per slice and the worst of all.
 
     .. math:: p_{0,k} = \frac{2 q_k}{\pi b_k},\qquad
@@ -661,8 +664,9 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
               \text{ at } z_k = \hat z(\mu, \nu)\, b_k
 
     per slice (plane strain); the worst of each measure then gets a 3D correction:
-    below the slice of the strips' worst and two either side, the field is McEwen's
-    strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
+    below candidate slices (the strips' worst and two either side, p0's other peaks;
+    where the contact reaches an end, slices spread over the whole roller, refined
+    along it), the field is McEwen's strip of that slice plus the 3D field (Love's rectangles, :func:`rectangle_stresses`)
     of the difference between the slices' Hertz pressures and that strip extended
     to infinity, maximised over (y, z) by a zoomed grid search (docs/stresses.md).
 
@@ -681,6 +685,10 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     three_d : bool, optional
         Apply the 3D correction to the worst (default; without it the worst is the
         plane-strain strips', up to 5 % low under a crown, a relief or a tilt).
+    search : {"candidates", "every slice"}, optional
+        Where the 3D correction's grid search looks: below the candidate slices
+        (default), or below every loaded slice (a check of the candidates' choice:
+        never lower, some 20-25 times the cost).
 
     Returns
     -------
@@ -709,6 +717,8 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     (1949); A. E. H. Love (1929).
     """
     mu, nu = _check_material(friction, poisson)
+    if search not in _SEARCHES:
+        raise ValueError(f"search = {search!r} is not one of {_SEARCHES}")
     x = np.asarray(solution.x, dtype=float)
     b = np.asarray(solution.half_width, dtype=float)
     q = np.asarray(solution.q, dtype=float)
@@ -725,7 +735,11 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     s = _assemble(x, b, p0, mu, nu, notes, edge)
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
-    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu))
+    # the contact at or near an end: the worst may lie anywhere along the roller, and
+    # the search scans every part of it
+    wide = edge or reaches_end(solution)
+    w3 = _worst_3d(x, b, p0, mu, nu, _maxima(mu, nu), wide,
+                   every=search == "every slice")
     if all(v is None for v in w3.values()):
         # every measure's worst at the surface (friction >= ~0.4): nothing corrected,
         # the strips' worst as it is, and the method says so
@@ -797,49 +811,56 @@ def _love_corner(X, Y, z, w=None, only=None):
 def _love_weighted(X, Y, z, w):
     """The weighted corner sums sum_c w_c g(X_c, Y_pc, z_p) of all ten corner
     functions (:func:`_love_corner`) at the points p: X (1, n_corners), Y (n_points,
-    n_corners), z (n_points, 1), w (n_corners,) -> (10, n_points).
+    n_corners), z (n_points, 1), w (n_corners,) -> (10, n_points); or with a leading
+    axis of batches on each (X (n, 1, c), Y (n, p, c), z (n, p, 1), w (n, c)), each
+    batch its own corners and weights -> (10, n, p).
 
-    The functions with the reciprocals shared and arctan2 for the masked quotient of
-    d2H1/dx2 (den >= 0, and num = 0 where den = 0); two of them are not evaluated:
-    as psi1 and H1 are harmonic (z > 0) and so is each corner function's potential,
+    The functions with the reciprocals shared; two of them are not evaluated: as
+    psi1 and H1 are harmonic (z > 0) and so is each corner function's potential,
     d2 psi1/dz2 = -(d2 psi1/dx2 + d2 psi1/dy2) and, as dH1/dz = psi1,
-    d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding). X is one
-    row (the points share it): a factor X of a function goes into the weights (X w),
-    a factor z (one per point) out of the sum, so that Y/(rho (X^2 + z^2)) serves
-    d2 psi1/dx2 and d2 psi1/dxdz, and 1/(rho (Y^2 + z^2)) d2 psi1/dydz and, times Y,
-    d2 psi1/dy2; the work arrays are reused in place."""
-    out = np.empty((10, Y.shape[0]))
+    d2 H1/dy2 = -(d psi1/dz + d2 H1/dx2) (both hold per corner to rounding). d2H1/dx2
+    = arctan(XY (rho - z)/(X^2 rho + Y^2 z)) is taken as arctan(XY/(X^2 + z^2 +
+    z rho)), its numerator and denominator times (rho + z) over X^2 + Y^2 (the same
+    where X^2 + Y^2 > 0, and 0 where X = Y = 0, as the masked form), one division
+    and arctan in place of arctan2. X is one row (the points share it): a factor X
+    of a function goes into the weights (X w), a factor z (one per point) out of the
+    sum, so that Y/(rho (X^2 + z^2)) serves d2 psi1/dx2 and d2 psi1/dxdz, and
+    1/(rho (Y^2 + z^2)) d2 psi1/dydz and, times Y, d2 psi1/dy2; the work arrays are
+    reused in place."""
+    out = np.empty((10,) + Y.shape[:-1])
     X2, z2 = X * X, z * z
-    zc = z[:, 0]
-    Xw = X[0] * w
+    zc = z[..., 0]
+    Xw = X[..., 0, :] * w
+    if Y.ndim == 2:
+        def dot(A, v):
+            return A @ v
+    else:
+        def dot(A, v):
+            return np.matmul(A, v[..., None])[..., 0]
     Y2 = Y * Y
     a = X2 + z2                             # X^2 + z^2
-    rho = X2 + Y2
-    rho += z2
+    rho = Y2 + a
     np.sqrt(rho, out=rho)
-    ir = 1.0 / rho
-    np.divide(ir, a, out=a)                 # 1/(rho (X^2 + z^2))
-    t = Y2 + z2
-    np.divide(ir, t, out=t)                 # 1/(rho (Y^2 + z^2))
-    out[4] = ir @ w
-    out[6] = -zc * (t @ Xw)
-    t *= Y
-    out[3] = -(t @ Xw)
-    a *= Y                                  # Y/(rho (X^2 + z^2))
-    out[2] = -(a @ Xw)
-    out[5] = -zc * (a @ w)
+    zr = z * rho                            # z rho
     XY = X * Y
-    ir *= XY
-    ir /= z
-    out[0] = -(np.arctan(ir, out=ir) @ w)
-    np.subtract(rho, z, out=a)
-    a *= XY
-    np.multiply(X2, rho, out=t)
-    Y2 *= z
-    t += Y2
-    out[7] = np.arctan2(a, t, out=a) @ w
+    h = a + zr                              # X^2 + z^2 + z rho
+    np.divide(XY, h, out=h)
+    out[7] = dot(np.arctan(h, out=h), w)
+    np.divide(XY, zr, out=zr)               # XY/(z rho)
+    out[0] = -(dot(np.arctan(zr, out=zr), w))
+    ir = np.divide(1.0, rho, out=XY)
+    np.divide(ir, a, out=a)                 # 1/(rho (X^2 + z^2))
+    Y2 += z2
+    np.divide(ir, Y2, out=Y2)               # 1/(rho (Y^2 + z^2))
+    out[4] = dot(ir, w)
+    out[6] = -zc * (dot(Y2, Xw))
+    Y2 *= Y
+    out[3] = -(dot(Y2, Xw))
+    a *= Y                                  # Y/(rho (X^2 + z^2))
+    out[2] = -(dot(a, Xw))
+    out[5] = -zc * (dot(a, w))
     rho += z
-    out[9] = np.log(rho, out=rho) @ w
+    out[9] = dot(np.log(rho, out=rho), w)
     out[1] = -(out[2] + out[3])
     out[8] = -(out[0] + out[7])
     return out
@@ -857,6 +878,57 @@ def _love_sums(X, Y, z, w, only=None):
     step = -(-n // blocks)
     return np.concatenate([_love_corner(X, Y[i:i + step], z[i:i + step], w, only)
                            for i in range(0, n, step)], axis=1)
+
+
+def _love_batches(items, only=None):
+    """:func:`_love_sums` of several (X, Y, z, w) at once: their corners and points
+    padded to the largest (offsets 0, weight 0; depth 1), one evaluation with a
+    leading batch axis (in groups of about _BLOCK elements) in place of one per
+    item; a list of (10, n_points) per item."""
+    if len(items) == 1:
+        return [_love_sums(*items[0], only)]
+    ps = [it[1].shape[0] for it in items]
+    if len(set(ps)) > 1:
+        # one padded evaluation per number of points
+        out = [None] * len(items)
+        for p in sorted(set(ps)):
+            at = [i for i in range(len(items)) if ps[i] == p]
+            for i, t in zip(at, _love_batches([items[i] for i in at], only)):
+                out[i] = t
+        return out
+    cs = [it[3].size for it in items]
+    C, P = max(cs), max(ps)
+    per = max(_BLOCK // (P * C), 1)
+    out = []
+    for g0 in range(0, len(items), per):
+        grp = items[g0:g0 + per]
+        n = len(grp)
+        X = np.zeros((n, 1, C))
+        Y = np.zeros((n, P, C))
+        z = np.ones((n, P, 1))
+        w = np.zeros((n, C))
+        for i, (Xi, Yi, zi, wi) in enumerate(grp):
+            c, p = wi.size, Yi.shape[0]
+            X[i, 0, :c] = Xi[0]
+            Y[i, :p, :c] = Yi
+            z[i, :p] = zi
+            w[i, :c] = wi
+        if only is None:
+            t = _love_weighted(X, Y, z, w)
+        else:
+            # d2 psi1/dydz alone (as _love_corner's)
+            t = np.zeros((10, n, P))
+            z2 = z * z
+            Y2 = Y * Y
+            tt = Y2 + z2
+            rho = X * X + Y2
+            rho += z2
+            np.sqrt(rho, out=rho)
+            tt *= rho
+            np.divide(1.0, tt, out=tt)
+            t[_PYZ] = -z[..., 0] * np.matmul(tt, (X[:, 0, :] * w)[..., None])[..., 0]
+        out += [t[:, i, :Yi.shape[0]] for i, (_, Yi, _, _) in enumerate(grp)]
+    return out
 
 
 #: elements (points x corners) per block of :func:`_love_sums`
@@ -963,6 +1035,18 @@ _NEAR = 8.0
 #: 3D search: zooms after the first 5 x 5 grid (3 x 3 each), window shrink per zoom
 _ZOOMS = 3
 _SHRINK = 2.5
+#: the 3D search: every loaded slice's parts scanned first (a stride of n/this), and
+#: how many best slices of each measure get the first (coarse) window (and the end
+#: slices where p0 rises towards the end)
+_STRIDE_PARTS = 4
+_COARSE_SLICES = 1
+#: p0's local maxima within this factor of the largest are candidates too
+_PEAK_MARGIN = 1.1
+#: where the contact reaches an end, each measure is also scored at these depths
+#: over b (towards an end the 3D worst rises from the strip's 0.5-0.79 b to 0.35-0.4 b
+#: below an end slice, and to ~0.15-0.2 b on the thin slices next to an end peak)
+_SHALLOW_Z = (0.4, 0.2)
+_SHALLOW_NEAR = 1.5
 
 
 def _slice_edges(xc):
@@ -1105,13 +1189,17 @@ def _field_3d(x, b, p0, mu, nu, batches, corners):
     `shear_only` tau_yz alone (the orthogonal shear's one component, one corner
     function). The corner sums are per slice; the strips' fields and the components
     of all batches are evaluated at once."""
-    sums, full = [], []
-    for i, (k, py, pz, shear) in enumerate(batches):
-        X, cy, w = corners(k)
-        sums.append(_love_sums(X, py[:, None] - cy[None, :], pz[:, None], w,
-                               _PYZ if shear else None))
-        if not shear:
-            full.append(i)
+    sums = [None] * len(batches)
+    full = [i for i, bt in enumerate(batches) if not bt[3]]
+    for group, only in ((full, None), ([i for i in range(len(batches)) if batches[i][3]],
+                                       _PYZ)):
+        items = []
+        for i in group:
+            k, py, pz, _ = batches[i]
+            X, cy, w = corners(k)
+            items.append((X, py[:, None] - cy[None, :], pz[:, None], w))
+        for i, t in zip(group, _love_batches(items, only) if items else ()):
+            sums[i] = t
     sizes = [bt[1].size for bt in batches]
     ends = [0]
     for size in sizes:
@@ -1226,17 +1314,26 @@ def _search_grids():
 _SEARCH_GRIDS = _search_grids()
 
 
-def _worst_3d(x, b, p0, mu, nu, m):
+def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     """The worst of each measure with the 3D correction (:func:`_field_3d`): the
-    strip's optimum point below the slice of the strips' worst and two slices either
-    side picks the slice; there a 5 x 5 grid in (y, z) around the strip's optimum
-    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each). Measures whose strip
-    optimum lies within 0.1 b of the surface keep the strip's value (None here).
+    strip's optimum point below candidate slices scores them (p0's largest and two
+    either side, p0's other local maxima within _PEAK_MARGIN; with `wide`, the
+    contact at an end, also _STRIDE_PARTS + 1 slices spread over the loaded ones and
+    every local maximum of p0 with its neighbours, each measure's best then climbing
+    along the roller to a local maximum of the scanned slices, and every measure
+    scored at shallower points too, z = _SHALLOW_Z b, where the worst lies near an
+    end); the best slice of each measure and the best of p0's largest +-2 (the
+    former search's choice) each get a 5 x 5 grid in (y, z) around its better point
+    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each); the
+    best is the worst.
+    Measures whose strip optimum lies within 0.1 b of the surface keep the strip's
+    value (None here).
 
     Each grid's centre is the best point so far, whose value is known, so it is not
     evaluated again; the points below the same slice are summed in one batch per
     pass (the orthogonal shear's apart, with tau_yz alone), each slice's corners
-    built once (:func:`_corners_3d`) with their offsets along the roller."""
+    built once (:func:`_corners_3d`) with their offsets along the roller. With
+    `every`, every loaded slice is scanned and searched (a check of the choice)."""
     cache = {}
     xe = _slice_edges(x)
 
@@ -1250,73 +1347,156 @@ def _worst_3d(x, b, p0, mu, nu, m):
             cache[k] = ((x[k] - cx)[None, :], cy, w)
 
     def evaluate(pts):
-        """pts: name -> (k, py, pz); the measure at those points below slice k."""
+        """pts: (name, ...) -> (k, py, pz); the measure `name` at those points below
+        slice k, the points below one slice in one batch (the orthogonal shear's
+        apart)."""
         batches, groups = [], []
-        rest = [n for n in pts if n != "orthogonal_shear"]
-        while rest:
-            k = pts[rest[0]][0]
-            group = [n for n in rest if pts[n][0] == k]
-            rest = [n for n in rest if pts[n][0] != k]
-            if len(group) == 1:
-                py, pz = pts[group[0]][1:]
-            else:
-                py = np.concatenate([pts[n][1] for n in group])
-                pz = np.concatenate([pts[n][2] for n in group])
-            batches.append((k, py, pz, False))
-            groups.append(group)
-        if "orthogonal_shear" in pts:
-            batches.append(pts["orthogonal_shear"] + (True,))
-            groups.append(["orthogonal_shear"])
+        for shear in (False, True):
+            rest = [n for n in pts if (n[0] == "orthogonal_shear") == shear]
+            while rest:
+                k = pts[rest[0]][0]
+                group = [n for n in rest if pts[n][0] == k]
+                rest = [n for n in rest if pts[n][0] != k]
+                if len(group) == 1:
+                    py, pz = pts[group[0]][1:]
+                else:
+                    py = np.concatenate([pts[n][1] for n in group])
+                    pz = np.concatenate([pts[n][2] for n in group])
+                batches.append((k, py, pz, shear))
+                groups.append(group)
         out = {}
         for group, res in zip(groups, _field_3d(x, b, p0, mu, nu, batches, corners)):
-            if group == ["orthogonal_shear"]:
-                out["orthogonal_shear"] = np.abs(res)
-                continue
             i0 = 0
             for n in group:
                 i1 = i0 + pts[n][1].size
-                out[n] = _measure_3d(n, *(c[i0:i1] for c in res))
+                out[n] = (np.abs(res[i0:i1]) if n[0] == "orthogonal_shear"
+                          else _measure_3d(n[0], *(c[i0:i1] for c in res)))
                 i0 = i1
         return out
 
     names = [n for n in MEASURES if m.z[n] >= 0.1]
     if not names:                       # every maximum at the surface (mu >= ~0.4)
         return {name: None for name in MEASURES}
-    # the candidate slices: the strips' worst and two either side, each at the
-    # strip's optimum of every measure (the slices' points summed per slice, the
-    # strips' fields at once). Every measure's strip maxima are one constant times
-    # p0, so the strips' worst slice is p0's largest for all of them (taken from p0
-    # itself: the products may order two mirror slices of a symmetric roller
-    # differently, by rounding, which would double the candidates)
+    # the candidate slices, each scored by the 3D field at every measure's strip
+    # optimum: p0's largest and two either side (every measure's strip maximum is a
+    # constant times p0, so this is each measure's strip worst; taken from p0 itself,
+    # so that rounding cannot split two mirror slices), p0's other local maxima along
+    # the roller and their neighbours (a two-peaked pressure); where the contact
+    # reaches an end (the 3D field departs from the strip's there: the worst can sit
+    # on an end slice or well inside it) also every s-th loaded slice, the ends
+    # included, and every local maximum of p0, each measure's best then climbing
+    # along the roller (every measure scored at shallower points too)
+    loaded = np.flatnonzero(b > 0)
     k = int(np.argmax(p0))
-    cand = [kk for kk in range(max(k - 2, 0), min(k + 3, x.size)) if b[kk] > 0]
-    add(cand)
-    res = _field_3d(x, b, p0, mu, nu,
-                    [(kk, np.array([m.y[n] * b[kk] for n in names]),
-                      np.array([m.z[n] * b[kk] for n in names]), False) for kk in cand],
-                    corners)
+    seen = set()
+
+    def scan(ks):
+        ks = sorted({int(kk) for kk in ks if 0 <= kk < x.size and b[kk] > 0
+                     and (in_half is None or not wide or in_half(kk))} - seen)
+        if not ks:
+            return 0
+        seen.update(ks)
+        add([kk for kk in ks if kk not in cache])
+        # each measure's strip optimum and, where the contact reaches an end, on
+        # the slices within _SHALLOW_NEAR b of a loaded end, its shallower points
+        # (there the 3D worst rises far above the strip's depth); a slice's score is
+        # the best of them, which the zooms start from
+        base = [(m.y[n], m.z[n]) for n in names]
+        more = base + [(m.y[n], zz) for n in shallow for zz in _SHALLOW_Z]
+        near = [kk for kk in ks if shallow and min(x[kk] - xe[loaded[0]],
+                                                   xe[loaded[-1] + 1] - x[kk])
+                < _SHALLOW_NEAR * b[kk]]
+        groups = [(g, p) for g, p in (([kk for kk in ks if kk not in near], base),
+                                      (near, more)) if g]
+        batches = [(kk, np.array([u for u, _ in p]) * b[kk],
+                    np.array([v for _, v in p]) * b[kk], False)
+                   for g, p in groups for kk in g]
+        res = iter(_field_3d(x, b, p0, mu, nu, batches, corners))
+        for g, p in groups:
+            cols = [np.array(c) for c in zip(*(next(res) for _ in g))]
+            for i, name in enumerate(names):
+                js = [i] + ([len(names) + shallow.index(name) * len(_SHALLOW_Z) + d
+                             for d in range(len(_SHALLOW_Z))]
+                            if p is more and name in shallow else [])
+                v = _measure_3d(name, *(c[:, js] for c in cols))
+                best = np.argmax(v, axis=1)
+                for s_, kk in enumerate(g):
+                    j = js[best[s_]]
+                    score[name][kk] = float(v[s_, best[s_]])
+                    start[name][kk] = (p[j][0] * b[kk], p[j][1] * b[kk])
+        return len(ks)
+
+    score = {name: {} for name in names}
+    start = {name: {} for name in names}
+    shallow = ([n for n in names if m.z[n] > max(_SHALLOW_Z)]
+               if wide or every else [])
+    # p0's other local maxima whose strip worst is within the 3D correction's reach
+    # off the ends (the strips up to 5 % low: a margin of 10 %) of the largest
+    inner = ((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])
+             & (_PEAK_MARGIN * p0[1:-1] >= p0[k]))
+    peaks = np.flatnonzero(inner) + 1
+    if x.size > 2 and np.allclose(x, -x[::-1], rtol=0, atol=1e-12 * np.ptp(x)) \
+            and np.allclose(p0, p0[::-1], rtol=1e-12, atol=0):
+        # a mirror-symmetric load: its mirror slices tie, so one half is scanned
+        mid = (x.size - 1) / 2
+        in_half = (lambda kk: kk <= mid + 1) if k <= mid else (lambda kk: kk >= mid - 1)
+        peaks = peaks[[in_half(pk) for pk in peaks]] if peaks.size else peaks
+    else:
+        in_half = None
+    if every:
+        in_half = None
+        scan(loaded)
+    elif not wide:
+        scan(list(range(k - 2, k + 3)) + [pk + d for pk in peaks for d in (-1, 0, 1)])
+    else:
+        # every s-th loaded slice, counted from either end (a mirror-symmetric set),
+        # and every local maximum of p0 with its neighbours (where the orthogonal
+        # shear, whose 3D correction is small, has its worst off the ends)
+        j = np.arange(_STRIDE_PARTS + 1)
+        half = np.floor(np.minimum(j, _STRIDE_PARTS - j) * (loaded.size - 1)
+                        / _STRIDE_PARTS + 0.5).astype(int)
+        even = loaded[np.where(2 * j <= _STRIDE_PARTS, half, loaded.size - 1 - half)]
+        tops = np.flatnonzero((p0[1:-1] > p0[:-2]) & (p0[1:-1] >= p0[2:])) + 1
+        scan(list(range(k - 2, k + 3)) + list(even)
+             + [pk + d for pk in tops for d in (-1, 0, 1)])
+        # then each measure's best climbs along the roller until both its neighbours
+        # are scanned and lower (a local maximum of the scanned slices)
+        while scan([kb + d for name in names
+                    for kb in (max(score[name], key=score[name].get),)
+                    for d in (-1, 1)]):
+            pass
     st = {}
-    for i, name in enumerate(names):
-        v = _measure_3d(name, *(np.array([r[c][i] for r in res]) for c in range(6)))
-        j = int(np.argmax(v))
-        kk = cand[j]
-        bb = b[kk]
-        st[name] = dict(k=kk, val=float(v[j]), by=m.y[name] * bb, bz=m.z[name] * bb,
-                        hy=0.4 * bb, hz=0.3 * bb)
+    near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
+    for name in names:
+        # the best two slices by their one point, each given the first (coarse)
+        # window below; the better goes on to the zooms
+        top = sorted(score[name], key=score[name].get,
+                     reverse=True)[:_COARSE_SLICES if wide else 1]
+        if every:
+            top = sorted(score[name])
+        # and the best of p0's largest +-2 (the former search's choice: off the ends
+        # the result is never below it; at an end its zooms may start from a
+        # shallower point and end up to ~0.7 % below the former search's)
+        kk = max(near_k, key=score[name].get)
+        top += [kk] if kk not in top else []
+        st[name] = [dict(k=kk, val=score[name][kk], by=start[name][kk][0],
+                         bz=start[name][kk][1], hy=0.4 * b[kk], hz=0.3 * b[kk])
+                    for kk in top]
+    # every candidate: a 5 x 5 grid, then three zooms of a 3 x 3 grid, all candidates'
+    # points below one slice in one batch per pass
     for it in range(_ZOOMS + 1):
         U, V = _SEARCH_GRIDS[min(it, 1)]
-        pts = {}
-        for name in names:
-            c = st[name]
-            pts[name] = (c["k"], c["by"] + c["hy"] * U,
-                         np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
-        for n, v in evaluate(pts).items():
-            c = st[n]
-            j = int(np.argmax(v))
-            if v[j] > c["val"]:
-                c["val"], c["by"], c["bz"] = float(v[j]), pts[n][1][j], pts[n][2][j]
+        pts = {(name, j): (c["k"], c["by"] + c["hy"] * U,
+                           np.maximum(c["bz"] + c["hz"] * V, 0.05 * b[c["k"]]))
+               for name in names for j, c in enumerate(st[name])}
+        for key, v in evaluate(pts).items():
+            c = st[key[0]][key[1]]
+            i = int(np.argmax(v))
+            if v[i] > c["val"]:
+                c["val"], c["by"], c["bz"] = float(v[i]), pts[key][1][i], pts[key][2][i]
             c["hy"] /= _SHRINK
             c["hz"] /= _SHRINK
+    st = {name: max(c, key=lambda d: d["val"]) for name, c in st.items()}
     out = {name: None for name in MEASURES}
     for name in names:
         c = st[name]

@@ -741,6 +741,34 @@ def test_the_c_extension_checks_its_arrays():
             call(**kwargs)
 
 
+def test_the_c_extension_refuses_a_negative_slice_count():
+    """The Newton step's C functions take the loaded-slice count ns as a number and
+    size their arrays by it (z: 2 ns x 3, qs: ns, ...); a length below zero means "any
+    length" to the extension's checks, so a negative ns passed every check and the
+    call returned a made-up answer (step_out: 0 slices leaving; bordered_sums: zero
+    sums) instead of refusing it. Each now raises a ValueError naming ns."""
+    _need("c")
+    from linecontact.roller import _ckernels
+
+    z, qs, dz, out = np.zeros(6), np.ones(1), np.zeros(2), np.zeros(1, dtype=bool)
+    w, x, S = np.ones(3), np.ones(3), np.zeros(1, dtype=np.int64)
+    calls = {
+        "step_out": lambda ns: _ckernels.step_out(z, 0.0, 0.0, ns, qs, dz, out),
+        "bordered_sums": lambda ns: _ckernels.bordered_sums(z, ns, 1.0, 1.0, w, x, S,
+                                                            qs, np.zeros(6)),
+        "newton_after": lambda ns: _ckernels.newton_after(
+            z, np.zeros(4), ns, 1.0, 1.0, w, x, S, qs, qs, 1.0, 1, np.ones(3),
+            np.ones(3), np.ones(3), np.zeros(4), np.zeros(4), dz, out,
+            np.zeros(1, dtype=bool), np.zeros(4)),
+    }
+    for name, call in calls.items():
+        call(1)                                  # (the arrays fit ns = 1)
+        for ns in (-1, -2**62):
+            with pytest.raises(ValueError, match="ns"):
+                call(ns)
+                pytest.fail(f"{name} accepted ns = {ns}")
+
+
 def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
     """The module-wide caches of slice geometry (n x n arrays, five of them per
     geometry in the compiled engine) were bounded only in count: sixteen geometries at
@@ -789,3 +817,43 @@ def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode, engine)
     assert np.array_equal(got[6], want[6]), "the mask of slices leaving"
     if got[0] == 0:
         assert np.array_equal(q1, q2, equal_nan=True) and np.array_equal(c1, c2, equal_nan=True)
+
+
+def test_the_c_source_compiles_where_a_c_compiler_is_present(tmp_path):
+    """setup.py declares the C extension optional: where it fails to compile, `pip
+    install -e .` (CI's install) still succeeds, c_engine() is None and every C test
+    above skips, so an error in _ckernels.c left the whole suite green. Where the C
+    compiler Python was built with is present, the source must compile (gcc, no
+    optimisation: well under a second), with the flags setup.py adds."""
+    import shlex
+    import shutil
+    import sysconfig
+    from pathlib import Path
+
+    cc = sysconfig.get_config_var("CC")
+    if not cc or shutil.which(shlex.split(cc)[0]) is None:
+        pytest.skip(f"no C compiler here (sysconfig CC = {cc!r})")
+    src = Path(sl.__file__).with_name("_ckernels.c")
+    cmd = shlex.split(cc) + shlex.split(sysconfig.get_config_var("CCSHARED") or "") + [
+        "-I", sysconfig.get_paths()["include"], "-O0", "-ffp-contract=off",
+        "-fno-fast-math", "-c", str(src), "-o", str(tmp_path / "_ckernels.o")]
+    got = subprocess.run(cmd, capture_output=True, text=True)
+    assert got.returncode == 0, f"{' '.join(cmd)}:\n{got.stderr[-3000:]}"
+
+
+def test_a_refused_engine_names_the_engines_that_run_here(monkeypatch):
+    """The error that refuses an engine not available here gives as its valid range the
+    engines that are: where numba is not installed but the C extension is built,
+    engine='numba' was refused with "'auto' or 'numpy'", leaving out the C engine; where
+    neither is, engine='c' was refused with "'auto', 'numpy' or 'numba'", naming an
+    engine that is refused too."""
+    _need("c")
+    monkeypatch.setattr(sl, "_HAVE_NUMBA", [False])          # (as without numba)
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="numba")
+    assert "'auto', 'numpy' or 'c' (numba is not installed)" in str(err.value), (
+        str(err.value))
+    monkeypatch.setattr(sl, "_C_ENGINE", ["not built (blocked by the test)"])
+    with pytest.raises(OutOfRangeError, match="engine") as err:
+        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
+    assert "range 'auto' or 'numpy' (the C extension" in str(err.value), str(err.value)

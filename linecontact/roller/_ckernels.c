@@ -608,6 +608,21 @@ static int in_range(const int64_t *ix, Py_ssize_t len, Py_ssize_t bound, const c
     return 1;
 }
 
+/* a slice count passed as a number (ns): the arrays are sized by it, and a length below
+ * zero means "any" to take(), so it must lie in [0, MAX_COUNT] (MAX_COUNT keeps products
+ * such as (2 ns)^2 within Py_ssize_t) */
+#define MAX_COUNT ((Py_ssize_t)1 << 24)
+
+static int count_ok(Py_ssize_t ns)
+{
+    if (ns < 0 || ns > MAX_COUNT) {
+        PyErr_Format(PyExc_ValueError, "_ckernels: ns = %zd is outside [0, %zd]", ns,
+                     MAX_COUNT);
+        return 0;
+    }
+    return 1;
+}
+
 /* the geometry arguments: dg (n), tn, tf, lr, ltn, ltf (n x n), Gt (n x K x n, or
  * anything where not far), fc (nfc x 4; K = nfc where far) */
 static int geometry(Buffers *bs, Geometry *g, double span, PyObject *dg, PyObject *tn,
@@ -817,9 +832,9 @@ static PyObject *scaled_system(PyObject *self, PyObject *args)
     Buffers bs = {.count = 0};
     double *J_, *B_;
     const double *res_, *rhs_;
-    const Py_ssize_t n2 = 2 * ns;
+    const Py_ssize_t n2 = ns > 0 && ns <= MAX_COUNT ? 2 * ns : 0;   /* (checked below) */
     PyObject *ret = NULL;
-    if (ns > 0 && (J_ = take(&bs, J, "J", 'd', n2 * n2, 1))
+    if (ns > 0 && count_ok(ns) && (J_ = take(&bs, J, "J", 'd', n2 * n2, 1))
         && (res_ = take(&bs, res, "res", 'd', n2, 0))
         && (rhs_ = take(&bs, rhs, "rhs", 'd', n2 * 2, 0))
         && (B_ = take(&bs, B, "B", 'd', n2 * 3, 1))) {
@@ -847,7 +862,7 @@ static PyObject *bordered_sums(PyObject *self, PyObject *args)
     const double *w_, *x_, *qs_;
     const int64_t *S_;
     PyObject *ret = NULL;
-    if ((z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
+    if (count_ok(ns) && (z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
         && step_slices(&bs, w, x, S, qs, ns, &w_, &x_, &S_, &qs_, &n)
         && (Wz_ = take(&bs, Wz, "Wz", 'd', 6, 1))) {
         bordered_sums_loop(z_, ns, qsc, r_inv, w_, x_, S_, qs_, Wz_, sums);
@@ -869,7 +884,7 @@ static PyObject *step_out(PyObject *self, PyObject *args)
     double *dz_;
     char *out_;
     PyObject *ret = NULL;
-    if ((z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 0))
+    if (count_ok(ns) && (z_ = take(&bs, z, "z", 'd', 2 * ns * 3, 0))
         && (qs_ = take(&bs, qs, "qs", 'd', ns, 0))
         && (dz_ = take(&bs, dz, "dz", 'd', 2 * ns, 1))
         && (out_ = take(&bs, out, "out", 'b', ns, 1)))
@@ -921,7 +936,7 @@ static PyObject *newton_after(PyObject *self, PyObject *args)
     Buffers bs = {.count = 0};
     const Py_ssize_t ns = p.ns;
     PyObject *ret = NULL;
-    if ((p.z = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
+    if (count_ok(ns) && (p.z = take(&bs, z, "z", 'd', 2 * ns * 3, 1))
         && (p.grid = take(&bs, grid, "grid", 'd', 4, 0))
         && step_slices(&bs, w, x, S, qs, ns, &p.w, &p.x, &p.S, &p.qs, &p.n)
         && (p.cs = take(&bs, cs, "cs", 'd', ns, 0))

@@ -85,7 +85,7 @@ class ProfiledRoller:
         compiled loops, the same arithmetic, results equal within 1e-10; refused
         where it is not built), "numba" (the same loops compiled by numba; needs
         numba, ``pip install linecontact[fast]``) or "auto" (default): "c" where the
-        extension is built (it imports in microseconds), else numpy until the process
+        extension is built (it loads in 1-3 ms), else numpy until the process
         has taken 1500 Newton steps (some 150-200 solves), then numba where it is
         installed: importing numba and loading its cached code cost 0.4-0.5 s once,
         which the compiled engine repays at 0.2-0.35 ms a step

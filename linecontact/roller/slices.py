@@ -191,7 +191,7 @@ def c_engine():
     """The C engine (:mod:`linecontact.roller._cengine`, over the extension
     ``_ckernels`` built at install), or None where it does not import (not built: no C
     compiler at install; built for another Python). Tried once per process; importing
-    it costs well under a millisecond."""
+    it costs 1-3 ms (tools/benchmarks/README.md, "Round 7")."""
     if not _C_ENGINE:
         from . import _cengine
         _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
@@ -208,27 +208,38 @@ def check_engine(engine):
     if not isinstance(engine, str) or engine not in ENGINES:
         raise UnknownNameError("engine", engine, ENGINES)
     if engine == "c" and c_engine() is None:
-        raise OutOfRangeError("engine", "c", "'auto', 'numpy' or 'numba' (the C "
+        raise OutOfRangeError("engine", "c", f"{_runnable_here('c')} (the C "
                               "extension linecontact.roller._ckernels is not built "
                               f"here: {_C_ENGINE[0]})", hint=C_BUILD_HINT)
     if engine == "numba":
         if not numba_installed():
-            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba is not "
-                                  "installed)", hint="install numba (pip install numba, "
-                                  "or linecontact[fast]) or use engine='auto'")
+            raise OutOfRangeError("engine", "numba", f"{_runnable_here('numba')} (numba "
+                                  "is not installed)", hint="install numba (pip install "
+                                  "numba, or linecontact[fast]) or use engine='auto'")
         try:
             if _IMPORT_ERROR:
                 raise ImportError(_IMPORT_ERROR[0])
             compiled()
         except Exception as err:     # e.g. a numba built for another numpy
-            raise OutOfRangeError("engine", "numba", "'auto' or 'numpy' (numba does "
-                                  f"not import here: {err})") from err
+            raise OutOfRangeError("engine", "numba", f"{_runnable_here('numba')} (numba "
+                                  f"does not import here: {err})") from err
     return engine
+
+
+def _runnable_here(refused):
+    """The engines other than `refused` that can be asked for in this process, as a
+    valid range for the error that refuses it: 'auto' and 'numpy' always, 'c' where
+    the C extension imports, 'numba' where numba is installed."""
+    names = ["auto", "numpy"] + [e for e, ok in (
+        ("c", refused != "c" and c_engine() is not None),
+        ("numba", refused != "numba" and numba_installed())) if ok]
+    quoted = [f"'{e}'" for e in names]
+    return ", ".join(quoted[:-1]) + " or " + quoted[-1]
 
 
 def resolve_engine(engine):
     """"numpy", "numba" or "c" for a new SliceEquations: "auto" is "c" where the C
-    extension imports (from the first solve: it imports in under a millisecond); else numpy
+    extension imports (from the first solve: it loads in 1-3 ms); else numpy
     until this process has taken AUTO_SWITCH_STEPS numpy steps, then numba where it
     is installed and imports (a single solve never imports numba; a sweep, a batch or
     a bearing repays it); where that import fails, numpy for the rest of the process,

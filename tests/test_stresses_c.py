@@ -2,7 +2,8 @@
 the numpy reference (linecontact.stresses._love_weighted / _love_corner), and the
 stresses computed with each: the same sums to rounding, the same worst values.
 
-Skipped where the optional extension is not built (no C compiler at install)."""
+Skipped where the optional extension is not built (no C compiler at install), but
+for the check that its source compiles where a C compiler is present."""
 from __future__ import annotations
 
 import numpy as np
@@ -11,7 +12,7 @@ import pytest
 from linecontact import stresses as st
 from linecontact.roller import ProfiledRoller
 
-pytestmark = pytest.mark.skipif(
+needs_c = pytest.mark.skipif(
     st._cstresses is None,
     reason="the optional C extension linecontact._cstresses is not built here")
 
@@ -40,6 +41,7 @@ def _rel(a, b):
     return (np.abs(a - b) / scale).max()
 
 
+@needs_c
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_c_corner_sums_equal_numpy(seed):
     """Random corners (a few hundred, offsets ~b and a few far ones at 1e6 L) and
@@ -64,6 +66,7 @@ def test_c_corner_sums_equal_numpy(seed):
     assert not np.delete(got6, 6, axis=0).any(), "only: the other sums not 0"
 
 
+@needs_c
 def test_c_arctan_and_log_over_their_whole_range():
     """One corner with unit weight: out[9] = log(rho + z) and out[0] =
     -arctan(XY/(z rho)). X = Y = 0 (rho = z): log(2z) for z from 1e-59 to 1e59
@@ -90,6 +93,7 @@ def test_c_arctan_and_log_over_their_whole_range():
         assert _rel(_c(X, cy, w, py, pz), _numpy(X, cy, w, py, pz)) < 1e-13, zz
 
 
+@needs_c
 def test_c_corner_sums_refuse_what_they_do_not_cover():
     """Non-finite inputs, depths outside (1e-60, 1e60) m and offsets of 1e60 m return
     False (the caller takes numpy); a buffer of the wrong length, dtype or layout is a ValueError
@@ -125,6 +129,7 @@ def _worst(sol, model, corners):
         st._CORNERS[0] = saved
 
 
+@needs_c
 @pytest.mark.parametrize("profile, force, tilt", [
     ("circular:Rc=0.5", 4200.0, 0.0),          # off the ends
     ("lundberg:design_force=11200", 4200.0, 2e-3),  # off the ends, tilted
@@ -150,6 +155,7 @@ def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt):
         assert same, f"{name}: slice {u['slice']} (C) against {v['slice']} (numpy)"
 
 
+@needs_c
 def test_c_corners_are_numpy_s():
     """The corners of each loaded slice's pressure difference (_corners_many) built by
     C and by numpy: the same corners in the same order and the same weights, bit for
@@ -178,6 +184,7 @@ def test_c_corners_are_numpy_s():
         st._CORNERS[0] = saved
 
 
+@needs_c
 def test_c_corners_refuse_bad_buffers():
     """corners(): a window outside the slices, or buffers too short for every corner,
     are ValueErrors before anything is read or written; a non-finite input returns -1
@@ -202,6 +209,7 @@ def test_c_corners_refuse_bad_buffers():
              np.empty(room), np.empty(room)) == -1
 
 
+@needs_c
 def test_where_c_declines_numpy_takes_over(monkeypatch):
     """Where the extension declines (love_sums False, corners -1: inputs it does not
     cover) the numpy path computes those sums and corners: roller_stresses then gives
@@ -222,3 +230,27 @@ def test_where_c_declines_numpy_takes_over(monkeypatch):
     got = _worst(sol, model, "c")
     for name in st.MEASURES:
         assert got[name] == ref[name], name
+
+
+def test_the_stresses_c_source_compiles_where_a_c_compiler_is_present(tmp_path):
+    """setup.py declares the extension optional: where _cstresses.c fails to compile,
+    the install still succeeds, the numpy path runs and every test above skips, so an
+    error in the source would leave the suite green. Where the C compiler Python was
+    built with is present, the source must compile with setup.py's flags (the
+    target_clones dispatch included)."""
+    import shlex
+    import shutil
+    import subprocess
+    import sysconfig
+    from pathlib import Path
+
+    cc = sysconfig.get_config_var("CC")
+    if not cc or shutil.which(shlex.split(cc)[0]) is None:
+        pytest.skip(f"no C compiler here (sysconfig CC = {cc!r})")
+    src = Path(st.__file__).with_name("_cstresses.c")
+    cmd = shlex.split(cc) + shlex.split(sysconfig.get_config_var("CCSHARED") or "") + [
+        "-I", sysconfig.get_paths()["include"], "-O1", "-ffp-contract=off",
+        "-fno-fast-math", "-fno-math-errno", "-c", str(src), "-o",
+        str(tmp_path / "_cstresses.o")]
+    got = subprocess.run(cmd, capture_output=True, text=True)
+    assert got.returncode == 0, f"{' '.join(cmd)}:\n{got.stderr[-3000:]}"

@@ -934,6 +934,47 @@ def _love_batches(items, only=None):
 #: elements (points x corners) per block of :func:`_love_sums`
 _BLOCK = 16384
 
+try:        # the corner sums in C (linecontact/_cstresses.c), built at install where a
+    from . import _cstresses          # C compiler exists; numpy where it is not
+except ImportError:
+    _cstresses = None
+#: which evaluates the 3D correction's corner sums: "c" (the extension, where it is
+#: built) or "numpy" (the reference, :func:`_love_batches`); a list, so that a test
+#: can switch it
+_CORNERS = ["c" if _cstresses is not None else "numpy"]
+
+
+def _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means):
+    """:func:`_corners_assemble` by the C extension (the same arithmetic, the corners
+    in the same order), or None where it returns -1 (an input not finite, the grid
+    not increasing) and numpy is to build them."""
+    f = np.ascontiguousarray
+    room = (b.size + 3) * ye.size + 4 * (b.size + 2)
+    cx, cy, w = np.empty(room), np.empty(room), np.empty(room)
+    k = _cstresses.corners(f(xe, dtype=float), float(L), f(b, dtype=float),
+                           f(p0, dtype=float), f(q, dtype=float), int(k0), int(i0),
+                           int(i1), f(ye, dtype=float), f(means, dtype=float), cx, cy, w)
+    if k < 0:
+        return None
+    return cx[:k], cy[:k], w[:k]
+
+
+def _love_c(X, cy, w, py, pz, only=None):
+    """The corner sums of :func:`_love_weighted` (`only`: d2 psi1/dydz's alone, as
+    :func:`_love_corner`'s) by the C extension, at the points (py, pz) for the corners
+    at X (1, n) along the roller and cy (n,) across with weights w (n,): (10, len(py)),
+    or None where the extension returns False (an input not finite, a depth outside
+    (1e-60, 1e60) m or an offset not below 1e60 m) and numpy is to take them."""
+    if only not in (None, _PYZ):
+        return None
+    f = np.ascontiguousarray
+    py, pz = f(py, dtype=float), f(pz, dtype=float)
+    out = np.empty((10, py.size))
+    if _cstresses.love_sums(f(X[0], dtype=float), f(cy, dtype=float),
+                            f(w, dtype=float), py, pz, only is not None, out):
+        return out
+    return None
+
 
 def _love_components(t, z, nu):
     """The six stress components from the corner sums t (9, ...) at depth z."""
@@ -1107,6 +1148,10 @@ def _corners_many(xc, b, p0, ks, xe=None):
 def _corners_assemble(xe, L, b, p0, q, k0, i0, i1, ye, means):
     """The corners of :func:`_corners_3d` from k0's near window [i0, i1], its grid
     across ye and the cell means (k0's row, then the window's slices')."""
+    if _CORNERS[0] == "c":
+        got = _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means)
+        if got is not None:
+            return got
     n = b.size
     b0 = b[k0]
     ref = p0[k0] * means[0]
@@ -1197,8 +1242,13 @@ def _field_3d(x, b, p0, mu, nu, batches, corners):
         for i in group:
             k, py, pz, _ = batches[i]
             X, cy, w = corners(k)
-            items.append((X, py[:, None] - cy[None, :], pz[:, None], w))
-        for i, t in zip(group, _love_batches(items, only) if items else ()):
+            t = _love_c(X, cy, w, py, pz, only) if _CORNERS[0] == "c" else None
+            if t is not None:
+                sums[i] = t
+            else:
+                items.append((i, (X, py[:, None] - cy[None, :], pz[:, None], w)))
+        for (i, _), t in zip(items, _love_batches([it for _, it in items], only)
+                             if items else ()):
             sums[i] = t
     sizes = [bt[1].size for bt in batches]
     ends = [0]

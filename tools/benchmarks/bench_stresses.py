@@ -22,8 +22,9 @@ What it measures:
    twice the contact solve's time.
 
 ``--engine`` picks the contact solve's engine (``ProfiledRoller(engine=...)``, default
-"auto", which stays numpy for this benchmark's few solves; "numba" is about twice as
-fast, so its ratio is about twice as large); the stresses are numpy either way.
+"auto": "c" where the C extension is built, else numpy); the stresses' corner sums are
+C where the extension linecontact._cstresses is built, else numpy (the report says
+which).
 
 With ``--against DIR`` (another checkout) the timing also runs that checkout's
 ``linecontact/stresses.py`` on the same solutions, in turn with this one's (loaded as a
@@ -171,8 +172,10 @@ def timing(lines, repeat, against=None, engine="auto"):
     k = int(np.argmax(ratios))
     lines.append(f"largest ratio: {keys[k]} (solve {solves[k] * 1e3:.1f} ms, stresses "
                  f"{stresses[k] * 1e3:.1f} ms)")
+    from linecontact import stresses as _st
     lines.append(f"engine {engine!r}: the contact solve's, as ProfiledRoller(engine=...); the "
-                 "stresses are numpy either way")
+                 f"stresses' corner sums: {_st._CORNERS[0]} (C where the extension "
+                 "linecontact._cstresses is built, else numpy)")
     lines.append(f"time (CPU, median of {repeat} per case, {len(ratios)} cases): contact "
                  f"solve median {statistics.median(solves) * 1e3:.1f} ms; stresses median "
                  f"{statistics.median(stresses) * 1e3:.3f} ms; ratio stresses/solve median "
@@ -230,7 +233,7 @@ def main(argv=None):
                     help="coarse cells along x of each nested pair (default 64,128: "
                          "64 x 32, 128 x 64 and 256 x 128 cells)")
     ap.add_argument("--skip-timing", action="store_true")
-    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba"),
+    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba", "c"),
                     help="the contact solve's engine (ProfiledRoller(engine=...); default "
                          "auto, numpy for the few solves of this benchmark)")
     ap.add_argument("--against", default=None, metavar="DIR",

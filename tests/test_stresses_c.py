@@ -1,0 +1,256 @@
+"""The C corner sums of the stresses' 3D correction (linecontact/_cstresses.c) against
+the numpy reference (linecontact.stresses._love_weighted / _love_corner), and the
+stresses computed with each: the same sums to rounding, the same worst values.
+
+Skipped where the optional extension is not built (no C compiler at install), but
+for the check that its source compiles where a C compiler is present."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from linecontact import stresses as st
+from linecontact.roller import ProfiledRoller
+
+needs_c = pytest.mark.skipif(
+    st._cstresses is None,
+    reason="the optional C extension linecontact._cstresses is not built here")
+
+ESTAR = 115.385e9
+
+
+def _c(X, cy, w, py, pz, only=False):
+    out = np.full((10, np.size(py)), np.nan)
+    ok = st._cstresses.love_sums(np.ascontiguousarray(X, dtype=float),
+                                 np.ascontiguousarray(cy, dtype=float),
+                                 np.ascontiguousarray(w, dtype=float),
+                                 np.ascontiguousarray(py, dtype=float),
+                                 np.ascontiguousarray(pz, dtype=float), only, out)
+    return out if ok else None
+
+
+def _numpy(X, cy, w, py, pz, only=None):
+    return st._love_corner(np.asarray(X, dtype=float)[None, :],
+                           np.subtract.outer(py, cy), np.asarray(pz, dtype=float)[:, None],
+                           np.asarray(w, dtype=float), only)
+
+
+def _rel(a, b):
+    """Largest difference per function over that function's largest magnitude."""
+    scale = np.maximum(np.abs(b).max(axis=1, keepdims=True), 1e-300)
+    return (np.abs(a - b) / scale).max()
+
+
+@needs_c
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_c_corner_sums_equal_numpy(seed):
+    """Random corners (a few hundred, offsets ~b and a few far ones at 1e6 L) and
+    points (depths 0.01 b to 10 b): each of the ten sums agrees with numpy's to 1e-13
+    of its largest value (both round each term to an ulp or two and sum several
+    hundred terms in different orders: ~1e-15 measured); with `only`, d2 psi1/dydz
+    alone and the other nine exactly 0."""
+    rng = np.random.default_rng(seed)
+    b = 1e-4
+    nc = 301 + seed                      # not a multiple of the 8 lanes: the tail too
+    X = rng.normal(size=nc) * 10 * b
+    X[:4] = [-3e4, 3e4, -2e4, 2e4]       # the ends' extensions (1e6 L)
+    cy = rng.normal(size=nc) * b
+    w = rng.normal(size=nc)
+    py = rng.normal(size=37) * b
+    pz = b * 10 ** rng.uniform(-2, 1, 37)
+    got, ref = _c(X, cy, w, py, pz), _numpy(X, cy, w, py, pz)
+    assert _rel(got, ref) < 1e-13, f"C sums off numpy's by {_rel(got, ref):.2g}"
+    got6 = _c(X, cy, w, py, pz, only=True)
+    ref6 = _numpy(X, cy, w, py, pz, st._PYZ)
+    assert _rel(got6[6:7], ref6[6:7]) < 1e-13
+    assert not np.delete(got6, 6, axis=0).any(), "only: the other sums not 0"
+
+
+@needs_c
+def test_c_arctan_and_log_over_their_whole_range():
+    """One corner with unit weight: out[9] = log(rho + z) and out[0] =
+    -arctan(XY/(z rho)). X = Y = 0 (rho = z): log(2z) for z from 1e-59 to 1e59
+    within 2 ulp of numpy's; X = Y = 1: the arctangent of arguments from ~1e59 down
+    to ~1e-59 (both signs) within 2 ulp of numpy's arctan of the same argument,
+    and exactly 0 where X = Y = 0 (d psi1/dz and d2 H1/dx2 of a corner below the
+    point); all ten sums within 1e-13 of numpy's at the depths' extremes, a corner
+    above the point and one offset by 1 m."""
+    z = 10.0 ** np.linspace(-59, 59, 4001)
+    zero = np.zeros(1)
+    got = _c(zero, zero, np.ones(1), np.zeros(z.size), z)
+    ref = np.log(z + z)
+    assert np.all(np.abs(got[9] - ref) <= 2 * np.spacing(np.abs(ref)))
+    assert not got[0].any() and not got[7].any() and not got[8].any()
+    for sgn in (1.0, -1.0):
+        got = _c(np.ones(1), zero, np.ones(1), np.full(z.size, sgn), z)
+        rho = np.sqrt(1.0 + (1.0 + z * z))
+        ref = -np.arctan(sgn / (z * rho))
+        assert np.all(np.abs(got[0] - ref) <= 2 * np.spacing(np.abs(ref))), \
+            "arctan off numpy's by more than 2 ulp"
+    X, cy, w = np.array([0.0, 1.0]), np.array([0.0, -1.0]), np.array([1.0, -0.5])
+    for zz in (1.1e-60, 1e-30, 1e-9, 1e30, 0.9e60):
+        py, pz = np.array([0.0, 1e-9]), np.full(2, zz)
+        assert _rel(_c(X, cy, w, py, pz), _numpy(X, cy, w, py, pz)) < 1e-13, zz
+
+
+@needs_c
+def test_c_corner_sums_refuse_what_they_do_not_cover():
+    """Non-finite inputs, depths outside (1e-60, 1e60) m and offsets of 1e60 m return
+    False (the caller takes numpy); a buffer of the wrong length, dtype or layout is a ValueError
+    naming it, before anything is read."""
+    one = np.ones(3)
+    assert _c(one, one, one, np.ones(2), np.array([1.0, np.nan])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e-61])) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 1e61])) is None
+    assert _c(one, one, one, np.array([1.0, 1e60]), np.ones(2)) is None
+    assert _c(one, one, one, np.ones(2), np.array([1.0, 0.0])) is None
+    assert _c(np.array([1.0, np.inf, 1.0]), one, one, np.ones(2), np.ones(2)) is None
+    f = st._cstresses.love_sums
+    with pytest.raises(ValueError, match="cy has 2 items, 3 expected"):
+        f(one, np.ones(2), one, one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="out has 20 items, 30 expected"):
+        f(one, one, one, one, one, False, np.empty(20))
+    with pytest.raises(ValueError, match="w must hold float64"):
+        f(one, one, np.ones(3, dtype=np.float32), one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="X must be a C-contiguous"):
+        f(np.ones(6)[::2], one, one, one, one, False, np.empty(30))
+    with pytest.raises(ValueError, match="out must be a C-contiguous writable"):
+        ro = np.empty(30)
+        ro.flags.writeable = False
+        f(one, one, one, one, one, False, ro)
+
+
+def _worst(sol, model, corners):
+    saved = st._CORNERS[0]
+    st._CORNERS[0] = corners
+    try:
+        return st.roller_stresses(sol, 0.0, 0.3, roller=model).worst
+    finally:
+        st._CORNERS[0] = saved
+
+
+@needs_c
+@pytest.mark.parametrize("profile, force, tilt", [
+    ("circular:Rc=0.5", 4200.0, 0.0),          # off the ends
+    ("lundberg:design_force=11200", 4200.0, 2e-3),  # off the ends, tilted
+    ("johns-gohar", 11.2e3, 0.0),              # edge loaded at both ends
+    ("lundberg:design_force=11200", 11.2e3, 2e-3),  # the contact at an end
+])
+def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt):
+    """roller_stresses with the C corner sums and with numpy's: every measure's worst
+    value within 1e-12 relative (the search takes the same steps: rounding-level
+    differences of the field, ~1e-15 measured), at the same point, or at the mirror
+    slice of an untilted roller (a tie)."""
+    if profile == "johns-gohar":
+        from tools.studies.roller_study import make_profile
+        profile = make_profile("johns-gohar", 14e-3)
+    model = ProfiledRoller(5e-3, 14e-3, ESTAR, profile)
+    sol = model.at_force(force, tilt=tilt)
+    c, n = _worst(sol, model, "c"), _worst(sol, model, "numpy")
+    for name in st.MEASURES:
+        u, v = c[name], n[name]
+        assert abs(u["value"] - v["value"]) <= 1e-12 * abs(v["value"]), name
+        same = u["slice"] == v["slice"] or (tilt == 0.0
+                                            and u["slice"] + v["slice"] == sol.x.size - 1)
+        assert same, f"{name}: slice {u['slice']} (C) against {v['slice']} (numpy)"
+
+
+@needs_c
+def test_c_corners_are_numpy_s():
+    """The corners of each loaded slice's pressure difference (_corners_many) built by
+    C and by numpy: the same corners in the same order and the same weights, bit for
+    bit (the same operations in the same order; the merge of coincident corners sums
+    in lexsort's stable order), off the ends (the far cells and the ends' extensions)
+    and with the near window at an end (its extension rows)."""
+    from tools.studies.roller_study import make_profile
+    saved = st._CORNERS[0]
+    try:
+        for profile, force, tilt in (("circular:Rc=0.5", 4200.0, 2e-3),
+                                     (make_profile("johns-gohar", 14e-3), 11.2e3, 0.0)):
+            sol = ProfiledRoller(5e-3, 14e-3, ESTAR, profile).at_force(force, tilt=tilt)
+            x, b, q = (np.asarray(v) for v in (sol.x, sol.half_width, sol.q))
+            loaded = (b > 0) & (q > 0)          # as roller_stresses
+            p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
+            b = np.where(loaded, b, 0.0)
+            ks = [int(k) for k in np.flatnonzero(loaded)]
+            st._CORNERS[0] = "c"
+            got = st._corners_many(x, b, p0, ks)
+            st._CORNERS[0] = "numpy"
+            ref = st._corners_many(x, b, p0, ks)
+            for k, (g, r) in enumerate(zip(got, ref)):
+                for a, e, what in zip(g, r, ("x", "y", "weights")):
+                    assert np.array_equal(a, e), f"slice {k}: {what} differ"
+    finally:
+        st._CORNERS[0] = saved
+
+
+@needs_c
+def test_c_corners_refuse_bad_buffers():
+    """corners(): a window outside the slices, or buffers too short for every corner,
+    are ValueErrors before anything is read or written; a non-finite input returns -1
+    (numpy builds those corners)."""
+    n, ny = 5, 25
+    xe, b = np.linspace(0, 1, n + 1), np.ones(n)
+    ye, means = np.linspace(-1, 1, ny), np.ones(((n - 1) + 2) * (ny - 1))
+    room = (n + 3) * ny + 4 * (n + 2)
+    f = st._cstresses.corners
+    with pytest.raises(ValueError, match="out of range"):
+        f(xe, 1.0, b, b, b, 3, 1, 2, ye, means, np.empty(room), np.empty(room),
+          np.empty(room))
+    with pytest.raises(ValueError, match="w has"):
+        f(xe, 1.0, b, b, b, 2, 0, 4, ye, np.ones(6 * (ny - 1)), np.empty(room),
+          np.empty(room), np.empty(room - 1))
+    with pytest.raises(ValueError, match="means has"):
+        f(xe, 1.0, b, b, b, 2, 0, 4, ye, np.ones(5 * (ny - 1)), np.empty(room),
+          np.empty(room), np.empty(room))
+    bad = b.copy()
+    bad[1] = np.nan
+    assert f(xe, 1.0, bad, b, b, 2, 0, 4, ye, np.ones(6 * (ny - 1)), np.empty(room),
+             np.empty(room), np.empty(room)) == -1
+
+
+@needs_c
+def test_where_c_declines_numpy_takes_over(monkeypatch):
+    """Where the extension declines (love_sums False, corners -1: inputs it does not
+    cover) the numpy path computes those sums and corners: roller_stresses then gives
+    numpy's worst values exactly (the same code ran)."""
+    class Declines:
+        @staticmethod
+        def love_sums(*args):
+            return False
+
+        @staticmethod
+        def corners(*args):
+            return -1
+
+    model = ProfiledRoller(5e-3, 14e-3, ESTAR, "circular:Rc=0.5")
+    sol = model.at_force(4200.0, tilt=2e-3)
+    ref = _worst(sol, model, "numpy")
+    monkeypatch.setattr(st, "_cstresses", Declines)
+    got = _worst(sol, model, "c")
+    for name in st.MEASURES:
+        assert got[name] == ref[name], name
+
+
+def test_the_stresses_c_source_compiles_where_a_c_compiler_is_present(tmp_path):
+    """setup.py declares the extension optional: where _cstresses.c fails to compile,
+    the install still succeeds, the numpy path runs and every test above skips, so an
+    error in the source would leave the suite green. Where the C compiler Python was
+    built with is present, the source must compile with setup.py's flags (the
+    target_clones dispatch included)."""
+    import shlex
+    import shutil
+    import subprocess
+    import sysconfig
+    from pathlib import Path
+
+    cc = sysconfig.get_config_var("CC")
+    if not cc or shutil.which(shlex.split(cc)[0]) is None:
+        pytest.skip(f"no C compiler here (sysconfig CC = {cc!r})")
+    src = Path(st.__file__).with_name("_cstresses.c")
+    cmd = shlex.split(cc) + shlex.split(sysconfig.get_config_var("CCSHARED") or "") + [
+        "-I", sysconfig.get_paths()["include"], "-O1", "-ffp-contract=off",
+        "-fno-fast-math", "-fno-math-errno", "-c", str(src), "-o",
+        str(tmp_path / "_cstresses.o")]
+    got = subprocess.run(cmd, capture_output=True, text=True)
+    assert got.returncode == 0, f"{' '.join(cmd)}:\n{got.stderr[-3000:]}"

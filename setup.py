@@ -7,8 +7,21 @@ build fails the install goes on without it (optional=True) and the numpy engine 
 (docs/profiled_rollers.md, "Engines"). IEEE arithmetic: no -ffast-math, and no fused
 multiply-adds (-ffp-contract=off), so that the C loops round as numpy and numba do.
 """
+import hashlib
+from pathlib import Path
+
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+
+HERE = Path(__file__).resolve().parent
+
+
+def extension(name, source):
+    """An optional Extension from one C file, which carries the SHA-256 of the source it
+    was built from (SOURCE_SHA256: linecontact/_extensions.py refuses a stale build)."""
+    digest = hashlib.sha256((HERE / source).read_bytes()).hexdigest()
+    return Extension(name, [source], optional=True,
+                     define_macros=[("LC_SOURCE_SHA256", f'"{digest}"')])
 
 
 class BuildExt(build_ext):
@@ -30,9 +43,7 @@ class BuildExt(build_ext):
 
 
 setup(
-    ext_modules=[Extension("linecontact.roller._ckernels",
-                           ["linecontact/roller/_ckernels.c"], optional=True),
-                 Extension("linecontact._cstresses", ["linecontact/_cstresses.c"],
-                           optional=True)],
+    ext_modules=[extension("linecontact.roller._ckernels", "linecontact/roller/_ckernels.c"),
+                 extension("linecontact._cstresses", "linecontact/_cstresses.c")],
     cmdclass={"build_ext": BuildExt},
 )

@@ -42,6 +42,11 @@
 #include <stdint.h>
 #include <string.h>
 
+#if defined(_MSC_VER)
+/* no fused multiply-adds (before VS2022 /fp:precise alone allowed them under /arch:AVX2) */
+#pragma fp_contract(off)
+#endif
+
 #define LANES 8
 
 /* the helpers inlined into the vectorised loop */
@@ -590,7 +595,18 @@ static struct PyModuleDef module = {
     "The corner sums of the stresses' 3D correction in C (linecontact/stresses.py "
     "wraps them).", -1, methods};
 
+/* the SHA-256 of this file as setup.py read it (linecontact/_extensions.py compares it
+ * with the file beside the built module: a stale build is not used) */
+#ifndef LC_SOURCE_SHA256
+#define LC_SOURCE_SHA256 ""
+#endif
+
 PyMODINIT_FUNC PyInit__cstresses(void)
 {
-    return PyModule_Create(&module);
+    PyObject *m = PyModule_Create(&module);
+    if (m != NULL && PyModule_AddStringConstant(m, "SOURCE_SHA256", LC_SOURCE_SHA256) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
 }

@@ -85,9 +85,11 @@ import dataclasses
 import functools
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
+from ._extensions import load_extension
 from .validity import OutOfRangeError, check_interval, check_positive
 
 __all__ = [
@@ -934,10 +936,10 @@ def _love_batches(items, only=None):
 #: elements (points x corners) per block of :func:`_love_sums`
 _BLOCK = 16384
 
-try:        # the corner sums in C (linecontact/_cstresses.c), built at install where a
-    from . import _cstresses          # C compiler exists; numpy where it is not
-except ImportError:
-    _cstresses = None
+# the corner sums in C (linecontact/_cstresses.c), built at install where a C compiler
+# exists; numpy where it is not (or where the build is stale)
+_cstresses = load_extension("linecontact._cstresses",
+                            Path(__file__).with_name("_cstresses.c"))[0]
 #: which evaluates the 3D correction's corner sums: "c" (the extension, where it is
 #: built) or "numpy" (the reference, :func:`_love_batches`); a list, so that a test
 #: can switch it

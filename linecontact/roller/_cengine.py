@@ -25,19 +25,19 @@ the package does), with ``UNAVAILABLE`` saying why; the caller,
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
+from .._extensions import load_extension
 from ._layout import table, transposed
 from .kernel import R_INF
 
-try:
-    from . import _ckernels
-except ImportError as err:           # not built (no C compiler at install)
-    _ckernels = None
-    #: why the C engine cannot run here (None where it can)
-    UNAVAILABLE = str(err) or "the extension linecontact.roller._ckernels is not built"
-else:
-    UNAVAILABLE = None
+#: the extension, or None; UNAVAILABLE: why the C engine cannot run here (None where it
+#: can: built, and from this version of _ckernels.c)
+_ckernels, UNAVAILABLE = load_extension(
+    "linecontact.roller._ckernels", Path(__file__).with_name("_ckernels.c"))
+if _ckernels is not None:
     _tmin, _tmax, _coef, _z0, _ih, _h = table()
     _ckernels.set_table(_coef, _tmin, _tmax, _z0, _ih, _h, float(R_INF))
 

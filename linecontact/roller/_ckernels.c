@@ -30,6 +30,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(_MSC_VER)
+/* no fused multiply-adds (before VS2022 /fp:precise alone allowed them under /arch:AVX2) */
+#pragma fp_contract(off)
+#endif
+
 /* the series of a near-band pair beyond the spline table stops once the next power of
  * x = (b/t)^2 is below FAR_STOP (as _compiled.FAR_STOP); the far field takes every term */
 #define FAR_STOP 1e-18
@@ -990,7 +995,18 @@ static struct PyModuleDef module = {
     "The coupled-slice kernels and linearisation in C (engine 'c'; _cengine.py wraps "
     "them).", -1, methods};
 
+/* the SHA-256 of this file as setup.py read it (linecontact/_extensions.py compares it
+ * with the file beside the built module: a stale build is not used) */
+#ifndef LC_SOURCE_SHA256
+#define LC_SOURCE_SHA256 ""
+#endif
+
 PyMODINIT_FUNC PyInit__ckernels(void)
 {
-    return PyModule_Create(&module);
+    PyObject *m = PyModule_Create(&module);
+    if (m != NULL && PyModule_AddStringConstant(m, "SOURCE_SHA256", LC_SOURCE_SHA256) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
 }

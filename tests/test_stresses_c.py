@@ -254,3 +254,30 @@ def test_the_stresses_c_source_compiles_where_a_c_compiler_is_present(tmp_path):
         str(tmp_path / "_cstresses.o")]
     got = subprocess.run(cmd, capture_output=True, text=True)
     assert got.returncode == 0, f"{' '.join(cmd)}:\n{got.stderr[-3000:]}"
+
+
+def test_the_corner_sums_cost_quoted_is_the_recorded_one():
+    """docs/stresses.md and tools/benchmarks/README.md quote the C corner sums' time per
+    corner and point against numpy's as ranges; every figure of the raw record
+    (tools/benchmarks/bench_corner_sums.py -> results/corner_sums.txt, rows n = 16-48
+    points) lies in those ranges once rounded to the ns, so the quoted figures trace to
+    a rerunnable measurement."""
+    import re
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    record = (root / "tools/benchmarks/results/corner_sums.txt").read_text()
+    rows = [tuple(float(v) for v in m.groups()) for m in re.finditer(
+        r"^\s*(\d+)\s+\d+\s+([\d.]+)\s+([\d.]+)\s+[\d.]+$", record, re.M)]
+    rows = [r for r in rows if 16 <= r[0] <= 48]
+    assert len(rows) == 3, record
+    for doc in ("docs/stresses.md", "tools/benchmarks/README.md"):
+        text = " ".join((root / doc).read_text().split())
+        m = re.search(r"about (\d+)-(\d+) ns per corner and point against numpy's "
+                      r"(\d+)-(\d+)", text, re.I)
+        assert m, f"{doc}: no quoted cost per corner and point"
+        c_lo, c_hi, n_lo, n_hi = map(int, m.groups())
+        for _, c, n in rows:
+            assert c_lo <= round(c) <= c_hi and n_lo <= round(n) <= n_hi, (
+                f"{doc}: C {c_lo}-{c_hi} ns, numpy {n_lo}-{n_hi} quoted; recorded "
+                f"C {c} ns, numpy {n} ns")

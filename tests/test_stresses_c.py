@@ -120,36 +120,38 @@ def test_c_corner_sums_refuse_what_they_do_not_cover():
         f(one, one, one, one, one, False, ro)
 
 
-def _worst(sol, model, corners):
+def _worst(sol, model, corners, mu=0.0, nu=0.3):
     saved = st._CORNERS[0]
     st._CORNERS[0] = corners
     try:
-        return st.roller_stresses(sol, 0.0, 0.3, roller=model).worst
+        return st.roller_stresses(sol, mu, nu, roller=model).worst
     finally:
         st._CORNERS[0] = saved
 
 
 @needs_c
-@pytest.mark.parametrize("profile, force, tilt", [
-    ("circular:Rc=0.5", 4200.0, 0.0),          # off the ends
-    ("lundberg:design_force=11200", 4200.0, 2e-3),  # off the ends, tilted
-    ("johns-gohar", 11.2e3, 0.0),              # edge loaded at both ends
-    ("lundberg:design_force=11200", 11.2e3, 2e-3),  # the contact at an end
+@pytest.mark.parametrize("profile, force, tilt, mu, nu", [
+    ("circular:Rc=0.5", 4200.0, 0.0, 0.0, 0.3),          # off the ends
+    ("lundberg:design_force=11200", 4200.0, 2e-3, 0.0, 0.3),  # off the ends, tilted
+    ("johns-gohar", 11.2e3, 0.0, 0.0, 0.3),              # edge loaded at both ends
+    ("lundberg:design_force=11200", 11.2e3, 2e-3, 0.0, 0.3),  # the contact at an end
+    ("lundberg:design_force=11200", 11.2e3, 2e-3, 0.4, 0.4),  # with friction
 ])
-def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt):
+def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt, mu, nu):
     """roller_stresses with the C corner sums and with numpy's: every measure's worst
-    value within 1e-12 relative (the search takes the same steps: rounding-level
-    differences of the field, ~1e-15 measured), at the same point, or at the mirror
-    slice of an untilted roller (a tie)."""
+    value within 1e-14 relative (the search takes the same steps: rounding-level
+    differences of the field; largest 1.8e-15 over 300 random rollers with friction,
+    tools/benchmarks/results/stresses_c_agreement.txt), at the same point, or at the
+    mirror slice of an untilted roller (a tie)."""
     if profile == "johns-gohar":
         from tools.studies.roller_study import make_profile
         profile = make_profile("johns-gohar", 14e-3)
     model = ProfiledRoller(5e-3, 14e-3, ESTAR, profile)
     sol = model.at_force(force, tilt=tilt)
-    c, n = _worst(sol, model, "c"), _worst(sol, model, "numpy")
+    c, n = _worst(sol, model, "c", mu, nu), _worst(sol, model, "numpy", mu, nu)
     for name in st.MEASURES:
         u, v = c[name], n[name]
-        assert abs(u["value"] - v["value"]) <= 1e-12 * abs(v["value"]), name
+        assert abs(u["value"] - v["value"]) <= 1e-14 * abs(v["value"]), name
         same = u["slice"] == v["slice"] or (tilt == 0.0
                                             and u["slice"] + v["slice"] == sol.x.size - 1)
         assert same, f"{name}: slice {u['slice']} (C) against {v['slice']} (numpy)"

@@ -757,6 +757,21 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
 _PYZ = 6
 
 
+def _pyz_factor(X, Y, z):
+    """1/(rho (Y^2 + z^2)) at every point and corner, rho = sqrt(X^2 + Y^2 + z^2): the
+    factor of d2 psi1/dydz's corner sum alone (`only` = _PYZ in :func:`_love_corner`
+    and :func:`_love_batches`; X, Y, z broadcast as there)."""
+    z2 = z * z
+    Y2 = Y * Y
+    t = Y2 + z2
+    rho = X * X + Y2
+    rho += z2
+    np.sqrt(rho, out=rho)
+    t *= rho
+    np.divide(1.0, t, out=t)
+    return t
+
+
 def _love_corner(X, Y, z, w=None, only=None):
     """The corner functions of Love's uniformly loaded rectangle at offsets (X, Y) from
     one corner, depth z > 0 (see :func:`rectangle_stresses`), stacked (10, ...).
@@ -771,15 +786,7 @@ def _love_corner(X, Y, z, w=None, only=None):
             return _love_weighted(X, Y, z, w)
         # d2 psi1/dydz alone: -z sum_c (X_c w_c)/(rho (Y^2 + z^2))
         out = np.zeros((10, Y.shape[0]))
-        z2 = z * z
-        Y2 = Y * Y
-        t = Y2 + z2
-        rho = X * X + Y2
-        rho += z2
-        np.sqrt(rho, out=rho)
-        t *= rho
-        np.divide(1.0, t, out=t)
-        out[_PYZ] = -z[:, 0] * (t @ (X[0] * w))
+        out[_PYZ] = -z[:, 0] * (_pyz_factor(X, Y, z) @ (X[0] * w))
         return out
     X2, Y2, z2 = X * X, Y * Y, z * z
     rho = np.sqrt(X2 + Y2 + z2)
@@ -920,15 +927,8 @@ def _love_batches(items, only=None):
         else:
             # d2 psi1/dydz alone (as _love_corner's)
             t = np.zeros((10, n, P))
-            z2 = z * z
-            Y2 = Y * Y
-            tt = Y2 + z2
-            rho = X * X + Y2
-            rho += z2
-            np.sqrt(rho, out=rho)
-            tt *= rho
-            np.divide(1.0, tt, out=tt)
-            t[_PYZ] = -z[..., 0] * np.matmul(tt, (X[:, 0, :] * w)[..., None])[..., 0]
+            t[_PYZ] = -z[..., 0] * np.matmul(_pyz_factor(X, Y, z),
+                                             (X[:, 0, :] * w)[..., None])[..., 0]
         out += [t[:, i, :Yi.shape[0]] for i, (_, Yi, _, _) in enumerate(grp)]
     return out
 

@@ -209,7 +209,7 @@ def check_engine(engine):
         raise UnknownNameError("engine", engine, ENGINES)
     if engine == "c" and c_engine() is None:
         raise OutOfRangeError("engine", "c", f"{_runnable_here('c')} (the C "
-                              "extension linecontact.roller._ckernels is not built "
+                              "extension linecontact.roller._ckernels does not run "
                               f"here: {_C_ENGINE[0]})", hint=C_BUILD_HINT)
     if engine == "numba":
         if not numba_installed():

@@ -35,7 +35,8 @@ import numpy as np
 
 from ..feature import Block, Field, Parameter, State
 
-__all__ = ["contact_stresses"]
+__all__ = ["contact_stresses", "case_of_contacts", "min_case_depth", "hardness_of",
+           "HARDNESS"]
 
 name = "stresses"
 group = "subsurface stresses and case-hardening check"
@@ -123,6 +124,23 @@ def resolve(values, present, fail):
         fail(P["sliding_friction"] & ~((v["sliding_friction"] >= 0)
                                         & (v["sliding_friction"] <= 1)),
              "sliding_friction", "[0, 1]", "outside the range of the strip solution")
+    hardness = hardness_of(v, P, fail, on)
+    nu = np.where(P["poisson"], v["poisson"], 0.3)
+    return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
+                 nu=nu, nu_given=P["poisson"], hardness=hardness,
+                 section=np.where(P["stress_field"], v["stress_field"], np.nan))
+
+
+#: The case-check inputs (a subcommand declares them too: ``linecontact bearing``).
+HARDNESS = tuple(p for p in parameters if p.name in _HARD + ("hardness_profile",))
+
+
+def hardness_of(v, P, fail, on):
+    """The rows' hardness profiles (:class:`linecontact.stresses.HardnessProfile`, None
+    where none is given) from the three values or the measured CSV: the three
+    together, or the file, not both; only in the rows of `on`."""
+    label = fail.label
+    n = len(on)
     three = ", ".join(label(s) for s in _HARD)
     some = P[_HARD[0]] | P[_HARD[1]] | P[_HARD[2]]
     for nm in _HARD:
@@ -144,10 +162,7 @@ def resolve(values, present, fail):
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
-    nu = np.where(P["poisson"], v["poisson"], 0.3)
-    return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
-                 nu=nu, nu_given=P["poisson"], hardness=hardness,
-                 section=np.where(P["stress_field"], v["stress_field"], np.nan))
+    return hardness
 
 
 def _read_profile(path):
@@ -233,34 +248,63 @@ def _is_raceways(sol):
     return sol is not None and hasattr(sol, "depth_inner") and hasattr(sol, "radius_outer")
 
 
-def contact_stresses(sol, contact, friction, poisson):
+def contact_stresses(sol, length, estar, profile, friction, poisson):
     """{'inner': SubsurfaceStresses, 'outer': ...} of a whole roller's two contacts
-    (linecontact.stresses): the slices' :func:`~linecontact.stresses.roller_stresses`
-    where the contacts were solved by slices, else the plane-strain strip of each
-    contact's effective radius at the roller load."""
+    (:class:`linecontact.raceway.RacewaySolution` `sol`; roller length [m], E* [Pa],
+    profile): the slices' :func:`linecontact.stresses.roller_stresses` where the
+    contacts were solved by slices (each checked against the measured range as a
+    roller of the contact's effective radius), else the plane-strain strip
+    :func:`linecontact.stresses.line_contact_stresses` of each contact's effective
+    radius at the roller load, as :class:`linecontact.bearing.RadialRollerBearing`
+    takes them for its most loaded roller."""
     from types import SimpleNamespace
 
     from ...stresses import line_contact_stresses, roller_stresses
 
     out = {}
-    L = contact.roller.length if contact is not None else None
     for side in ("inner", "outer"):
         part = getattr(sol, side)
         R = float(getattr(sol, f"radius_{side}"))
         if part is not None:
-            measured = None if contact is None else SimpleNamespace(
-                radius=R, length=L, estar=contact.estar, profile=contact.profile)
+            measured = SimpleNamespace(radius=R, length=length, estar=estar,
+                                       profile=profile)
             out[side] = roller_stresses(part, friction, poisson, roller=measured)
         else:
-            out[side] = line_contact_stresses(float(sol.force), R, L, contact.estar,
+            out[side] = line_contact_stresses(float(sol.force), R, length, estar,
                                               friction, poisson)
     return out
+
+
+def case_of_contacts(both, hardness):
+    """The case check of a whole roller's two contacts (`both`: side ->
+    SubsurfaceStresses): (checks, texts, worse) with checks side -> CaseCheck or None,
+    texts the flags to show, worse the side of the larger ratio (None if neither)."""
+    checks, texts = {}, []
+    for side, st in both.items():
+        c, text = _case(st, hardness)
+        checks[side] = c
+        if text:
+            texts.append(f"{side}: {text}")
+    done = {k: c for k, c in checks.items() if c is not None}
+    worse = max(done, key=lambda k: done[k].max_ratio) if done else None
+    return checks, texts, worse
+
+
+def min_case_depth(checks):
+    """The smallest case depth that carries both contacts: the larger of their minima
+    (None if either has none) [m]."""
+    need = [c.min_case_depth for c in checks.values() if c is not None]
+    if not need or any(d is None for d in need):
+        return None
+    return max(need)
 
 
 def _between_raceways(out, flags, j, sol, model, state, i):
     """A whole roller's row: each measure's worse contact in the main columns (its
     contact named in the flags), each contact's own maxima kept for the block."""
-    both = contact_stresses(sol, model.contact, float(state.mu[i]), float(state.nu[i]))
+    c = model.contact
+    both = contact_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
+                            float(state.nu[i]))
     worse = {}
     for m in _MEASURES:
         side = max(both, key=lambda k: both[k].worst[m]["value"])
@@ -273,20 +317,14 @@ def _between_raceways(out, flags, j, sol, model, state, i):
     row = {f"{m}_{side}": both[side].worst[m]["value"] for m in _MEASURES
            for side in both}
     if state.hardness[i] is not None:
-        checks = {side: _case(st, state.hardness[i]) for side, st in both.items()}
-        done = {k: c for k, (c, _) in checks.items() if c is not None}
-        for side, (c, text) in checks.items():
-            row[f"case_ratio_{side}"] = None if c is None else c.max_ratio
-            if text:
-                texts.append(f"{side}: {text}")
-        if done:
-            side = max(done, key=lambda k: done[k].max_ratio)
-            _put_case(out, j, done[side])
-            need = [c.min_case_depth for c in done.values()]
-            # the case must carry both contacts: the larger minimum (none if either has
-            # none)
-            out["min_case_depth"][j] = (max(need) if all(d is not None for d in need)
-                                        else np.nan)
+        checks, said, side = case_of_contacts(both, state.hardness[i])
+        for k, c in checks.items():
+            row[f"case_ratio_{k}"] = None if c is None else c.max_ratio
+        texts += said
+        if side is not None:
+            _put_case(out, j, checks[side])
+            need = min_case_depth(checks)
+            out["min_case_depth"][j] = np.nan if need is None else need
             texts.insert(1, f"case check: worse contact {side}")
     row["text"] = {"worse": _said(worse)}
     flags[j] = "; ".join(texts)

@@ -228,7 +228,7 @@ def test_cli_table_json_and_errors(capsys, tmp_path):
     assert main(base + ["--clearance", "-5um"]) == 0
     assert "K_rr" in capsys.readouterr().out
     assert main(base + ["--json"]) == 0
-    d = json.loads(capsys.readouterr().out)["solution"]
+    d = json.loads(capsys.readouterr().out)["rows"][0]["solution"]
     assert np.dot(d["roller_loads"], np.cos(d["azimuth"])) == pytest.approx(1e4, rel=1e-9)
     assert main(base + ["--rollers", "2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()

@@ -370,9 +370,12 @@ def _value_options():
     out = []
     for name, p in sub.choices.items():
         for a in p._actions:
-            if a.option_strings and a.nargs is None and not isinstance(
-                    a, (argparse._StoreTrueAction, argparse._StoreFalseAction,
-                        argparse._HelpAction)):
+            # (an option renamed, hidden from --help, is refused at once with its new
+            # name: not an option that takes a value)
+            if a.option_strings and a.nargs is None and a.help != argparse.SUPPRESS \
+                    and not isinstance(a, (argparse._StoreTrueAction,
+                                           argparse._StoreFalseAction,
+                                           argparse._HelpAction)):
                 out.append((name, a.option_strings[-1]))
     return out
 

@@ -30,8 +30,10 @@ from .feature import RAW_KINDS, Fail, option_name
 
 __all__ = ["Command", "CommandResults"]
 
-#: The text columns of a subcommand's row, after its fields (then ``error``).
-TEXT_COLUMNS = ("model", "note")
+#: The text columns of a subcommand's row, after its fields (then ``error``): the
+#: model or method the row was solved with (not ``model``: a subcommand may take a
+#: ``model`` input column, which a rerun on its output would read), and the note.
+TEXT_COLUMNS = ("model_used", "note")
 
 
 class CommandResults:
@@ -117,8 +119,8 @@ class Command:
     # -- the batch's columns and header --------------------------------------------
     def layout(self, results, cases, si):
         """Result column names and, for each, ('num' or 'text', values over the rows):
-        every field (``NAME_UNIT``, as ``calc`` names them), the model, the note, and
-        ``error`` last."""
+        every field (``NAME_UNIT``, as ``calc`` names them), the model used, the note,
+        and ``error`` last."""
         from .batch import _col_name_of
 
         cols, getters = [], []

@@ -96,7 +96,7 @@ Adding a subcommand is one module plus one line
            :mod:`linecontact.validity` or :mod:`linecontact._units`) is the row's
            error; no physics here.
        ``row(obj, state, i) -> dict``
-           Field name -> SI value (None: not defined), plus ``"model"`` (the method),
+           Field name -> SI value (None: not defined), plus ``"model_used"`` (the method),
            ``"notes"`` (list of str) and ``"note"`` (them joined, the batch's cell).
        ``model_of(obj) -> (key, label, provenance)``
            The JSON header's entry of the row's model.

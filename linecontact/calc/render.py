@@ -360,7 +360,7 @@ def command_text(command, cases, results, si):
     lines = []
     if n == 1:
         obj, row = results.objects[0], results.rows[0]
-        lines += [module.describe(obj, si), f"model: {row.get('model', '')}", ""]
+        lines += [module.describe(obj, si), f"model: {row.get('model_used', '')}", ""]
         table = []
         optional = getattr(module, "optional", ())
         for name, f in fields.items():

@@ -304,7 +304,7 @@ def row(obj, state, i):
                                            if checks[k] is not None else "-"
                                            for k in ("inner", "outer")) + ")")
         notes += [f"case check, {t}" for t in texts]
-    out["model"] = s.model
+    out["model_used"] = s.model
     out["notes"] = notes
     out["note"] = "; ".join(notes)
     return out

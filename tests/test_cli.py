@@ -538,6 +538,9 @@ def test_bad_input_message_states_the_valid_range(results, name):
 # in-process: the same main() as the command, called directly (no start-up per test)
 
 
+from doors import DOORS, IDS  # noqa: E402 - the commands whose batches keep the rules
+
+
 def _main(capsys, *argv):
     """(status, stdout, stderr) of linecontact.calc.cli.main(argv)."""
     from linecontact.calc.cli import main
@@ -707,27 +710,37 @@ def test_geometry_flags_on_every_row_of_every_model(capsys):
         assert row["half_width"] > 0.5 * 0.1e-3 and "b > 0.5 L" in row["flags"]
 
 
-def test_batch_keeps_user_columns_named_like_results(capsys, tmp_path):
-    """A user's model, note, error and depth_um columns are written as they were; the
-    result columns then carry the prefix result_ (all of them, one consistent set)."""
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_batch_keeps_user_columns_named_like_results(capsys, tmp_path, door):
+    """A user's model, note, error and result-named columns are written as they were
+    (never a second 'error' or 'note' column); the result columns then carry the
+    prefix result_ (all of them, one consistent set)."""
+    load = door.header.split(",")[-1]
+    model = "model" if door.name == "calc" else "model_used"  # the model's result column
     path = _write_csv(tmp_path / "u.csv",
-                      ["name", "model", "note", "error", "depth_um", "radius", "load"],
-                      [["a", "mine", "keep me", "E", "1.0", "5mm", "1kN"],
-                       ["b", "", "x,y", "", "", "5mm", "2kN"]])
-    status, out, err = _main(capsys, "calc", path, "--length", "10mm", "--modulus",
-                             "210GPa", "--poisson", "0.3")
+                      ["name", model, "note", "error", door.result, load],
+                      [["a", "mine", "keep me", "E", "1.0", "1kN"],
+                       ["b", "", "x,y", "", "", "2kN"]])
+    options = [o for o in door.row.split(",")[:-1]]
+    argv = [x for c, v in zip(door.header.split(",")[:-1], options)
+            for x in ("--" + c.replace("_", "-"), v)]
+    status, out, err = _main(capsys, door.name, path, *argv)
     assert status == 0, err
+    head = out.splitlines()[0].split(",")
+    assert head.count("error") == 1 and head.count("note") == 1
     rows = _csv(out)
-    assert [r["model"] for r in rows] == ["mine", ""]
+    assert [r[model] for r in rows] == ["mine", ""]
     assert [r["note"] for r in rows] == ["keep me", "x,y"]
-    assert [r["error"] for r in rows] == ["E", ""] and rows[0]["depth_um"] == "1.0"
-    assert all(r["result_error"] == "" and float(r["result_depth_um"]) > 0 for r in rows)
+    assert [r["error"] for r in rows] == ["E", ""] and rows[0][door.result] == "1.0"
+    assert all(r["result_error"] == "" and float(r["result_" + door.result]) > 0
+               for r in rows)
 
 
-def test_header_only_csv_is_a_clear_message(capsys, tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_header_only_csv_is_a_clear_message(capsys, tmp_path, door):
     """A CSV with a header and no rows: one line saying so, status 2."""
-    path = _write_csv(tmp_path / "h.csv", ["radius", "length", "load"], [])
-    status, out, err = _main(capsys, "calc", path)
+    path = _write_csv(tmp_path / "h.csv", door.header.split(","), [])
+    status, out, err = _main(capsys, door.name, path)
     assert status == 2 and "only a header row" in err and "Traceback" not in err
 
 
@@ -844,26 +857,26 @@ def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
     assert status == 0 and err == "" and plain == with_bar
 
 
-def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path, door):
     """A row with more cells than the header keeps them (under an unnamed column) and is
     an error in that row (its cells are shifted: issue 22), a shorter row is padded;
     the result columns line up under their names in both the unquoted (line-copy) and
     the quoted (csv module) paths; CRLF line ends are read."""
     for quote in ("", '"'):
         path = tmp_path / f"r{len(quote)}.csv"
-        path.write_text(f"name,load\r\n{quote}a{quote},1kN,extra\r\nb\r\nc,2kN\r\n",
-                        encoding="utf-8")
-        status, out, err = _main(capsys, "calc", str(path), "--radius", "5mm",
-                                 *STEEL_CASE[1:])
+        path.write_text(f"name,{door.load}\r\n{quote}a{quote},1kN,extra\r\nb\r\n"
+                        "c,2kN\r\n", encoding="utf-8")
+        status, out, err = _main(capsys, door.name, str(path), *door.options)
         rows = list(csv.reader(io.StringIO(out)))
         head = rows[0]
-        assert head[:3] == ["name", "load", ""] and status == 2  # row b has no load
+        assert head[:3] == ["name", door.load, ""] and status == 2  # row b has no load
         assert [r[:3] for r in rows[1:]] == [["a", "1kN", "extra"], ["b", "", ""],
                                              ["c", "2kN", ""]]
-        depth = head.index("depth_um")
+        result = head.index(door.result)
         error = head.index("error")
-        assert rows[1][depth] == "" and "3 cells under a header of 2" in rows[1][error]
-        assert rows[2][depth] == "" and float(rows[3][depth]) > 0
+        assert rows[1][result] == "" and "3 cells under a header of 2" in rows[1][error]
+        assert rows[2][result] == "" and float(rows[3][result]) > 0
         assert all(len(r) == len(head) for r in rows)
 
 

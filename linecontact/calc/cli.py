@@ -26,8 +26,11 @@ Where things are
 
 Adding options and output: a feature (see :mod:`linecontact.calc.feature`); its
 parameters become ``--options``, CSV columns and ``--help`` sections here with no
-change to this module. A flag that is not a value (like ``--linear``) or a subcommand is
-added in :func:`build_parser` below.
+change to this module. A subcommand (``linecontact bearing``) is one module of
+:mod:`linecontact.calc.subcommands` plus its line in ``SUBCOMMANDS`` (the shape:
+:class:`linecontact.calc.feature.Subcommand`): its parser, one case, sweeps, batch,
+JSON and ``--plot`` are this module's and :mod:`linecontact.calc.command`'s. A flag
+that is not a value (like ``--linear``) is added in :func:`build_parser` below.
 
 Inputs
     Values may carry ONE unit name ("5mm", "0.2 in", "210 GPa", "1kN"); bare numbers are

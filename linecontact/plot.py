@@ -138,6 +138,12 @@ def engineering_unit(values, unit):
     unit : str
         The prefixed unit (the micro sign for 1e-6).
 
+    Notes
+    -----
+    Valid for any finite values; the prefixes run from p (1e-12) to T (1e12), the
+    factors those of the unit parser (:mod:`linecontact._units`). Without a finite
+    non-zero value the unit is returned unprefixed (factor 1).
+
     Examples
     --------
     >>> engineering_unit([0.0, 1.2e-3], "N")
@@ -289,6 +295,10 @@ def save(fig, path, *, dpi=DPI):
     OutOfRangeError
         Another extension (naming it and the valid ones).
 
+    Notes
+    -----
+    Valid for 0 < dpi (matplotlib's own check); the vector formats ignore it.
+
     Examples
     --------
     >>> save(None, "figure.jpg")
@@ -324,6 +334,19 @@ def save_all(fig, stem, formats=("png", "svg"), *, dpi=DPI):
     -------
     list of pathlib.Path
         The paths written.
+
+    Notes
+    -----
+    Valid as :func:`save` (0 < dpi; the formats among :data:`FORMATS`).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from linecontact.models import get_model
+    >>> fig = force_depth([get_model("universal", 5e-3, 10e-3, 115.38e9)])
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     [p.name for p in save_all(fig, os.path.join(folder, "fd"))]
+    ['fd.png', 'fd.svg']
     """
     stem = Path(stem)
     return [save(fig, stem.with_name(stem.name + "." + f), dpi=dpi) for f in formats]
@@ -788,7 +811,8 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
     matplotlib.figure.Figure
         Lines ``"approach"`` and ``"retraction"`` (the loop's arrays, in the units of
         the axis labels; ``line.scale`` the factors from SI), the markers
-        ``"pull-off, depth control"`` and ``"pull-off, force control"``, and for a
+        ``"pull-off, depth control"`` and ``"pull-off, force control"`` (for a
+        cylinder with `` (MDR)`` appended: the rule of Hess's values), and for a
         cylinder ``"2D JKR pull-off"``, ``"finite roller (BEM), force control"`` and
         ``"finite roller (BEM), depth control"``.
 
@@ -824,9 +848,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
              f"lost per cycle {_quantity(float(loop.get('energy', np.nan)), 'J')}"]
     if adh.work > 0:
         off_d, off_f = adh.pull_off("depth"), adh.pull_off("force")
-        marks += [("pull-off, depth control", off_d["depth"], off_d["force"],
+        by = " (MDR)" if cyl is not None else ""
+        marks += [("pull-off, depth control" + by, off_d["depth"], off_d["force"],
                    {"marker": "o", "color": "C3", "ms": 8, "mfc": "none", "mew": 1.5}),
-                  ("pull-off, force control", off_f["depth"], off_f["force"],
+                  ("pull-off, force control" + by, off_f["depth"], off_f["force"],
                    {"marker": "v", "color": "C3", "ms": 8})]
     refs = []                        # (label, F, style)
     if cyl is not None:
@@ -1171,7 +1196,6 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
     ax.set_ylim(z[-1] * sl, 0.0)                                   # depth downwards
     ax.set_xlabel(f"y across the contact [{ul}]")
     ax.set_ylabel(f"depth z [{ul}]")
-    ax.set_aspect("equal", adjustable="box")
     ax.set_title(f"section at x = {_quantity(w['x'], 'm')} (slice {k}), "
                  f"b = {_quantity(b, 'm')}, mu = {result.friction:g}", fontsize=9)
     ax2 = axes[1]
@@ -1274,7 +1298,7 @@ def bearing(solution, *, fig=None):
             continue
         v = np.asarray(v, dtype=float)
         if attr != "roller_loads" and not np.any(v):
-            zero.append(name.replace("roller ", ""))
+            zero.append(name.split()[1])            # "moment", "tilt"
             continue
         shown.append((v, name, unit))
     fig, axes = _new(fig, len(shown), sharex=True)
@@ -1284,7 +1308,7 @@ def bearing(solution, *, fig=None):
         line, = ax.plot(psi[order], v[order] * s, label=name, **_style(i))
         line.order, line.scale = order, s
         ax.axvspan(-zone, zone, color="C0", alpha=0.07, lw=0,
-                   label=f"load zone +-{zone:.4g} deg")
+                   label=f"load zone \u00b1{zone:.4g} deg")
         ax.axhline(0.0, color="k", lw=0.5)
         ax.set_ylabel(f"{name} [{u}]")
         ax.grid(True, lw=0.3)

@@ -120,8 +120,9 @@ def engineering_unit(values, unit):
     """The SI prefix that fits an array's magnitude: the factor and the prefixed unit.
 
     The prefix puts the largest finite magnitude of `values` in [1, 1000): a force of
-    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus of 6.7e4 Pa in kPa. Lengths, times
-    and angles are not shown above their base unit (no km, ks, krad).
+    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus
+    of 6.7e4 Pa in kPa. Lengths, times and angles are not shown above their base unit
+    (no km, ks, krad).
 
     Parameters
     ----------
@@ -868,7 +869,8 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
             marks.append(("finite roller (BEM), depth control", bem_d["depth"],
                           bem_d["force"], {"marker": "s", "color": "C2", "ms": 7,
                                            "mfc": "none", "mew": 1.5}))
-            title.append(f"MDR pull-off {bem_f['mdr_error']:+.1%} against the BEM")
+            title.append(f"MDR pull-off (force control) {bem_f['mdr_error']:+.1%} "
+                         "against the BEM")
     sd, ud = engineering_unit(np.concatenate([da, dr]), "m")
     sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs]]), "N")
     fig, (ax,) = _new(fig, 1, ax)

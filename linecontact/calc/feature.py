@@ -104,8 +104,8 @@ Adding a subcommand is one module plus one line
            One case's first line, and its extra tables (e.g. one row per roller).
        ``to_json(obj) -> dict``
            One case's full result for ``--json`` (SI).
-       ``panels(objects) -> int``, ``draw(axes, objects)``
-           ``--plot FILE``: the number of panels, and drawing the cases into them.
+       ``figure(objects) -> matplotlib Figure``
+           ``--plot FILE``: the computed cases drawn by :mod:`linecontact.plot`.
 
     2. Add the module to the tuple :data:`linecontact.calc.subcommands.SUBCOMMANDS`.
 
@@ -379,9 +379,7 @@ class Subcommand(Protocol):
 
     def to_json(self, obj: Any) -> dict: ...
 
-    def panels(self, objects: Sequence[Any]) -> int: ...
-
-    def draw(self, axes: Any, objects: Sequence[Any]) -> None: ...
+    def figure(self, objects: Sequence[Any]) -> Any: ...
 
 
 def each(func, idx, notes, width=1, missing=""):

@@ -68,16 +68,12 @@ def draw_results(results, path):
 
 
 def draw_command(command, results, path):
-    """``linecontact SUBCOMMAND ... --plot FILE``: the subcommand's panels (its
-    module's ``panels`` and ``draw``) for the computed cases, saved to `path` (png,
-    svg or pdf). Returns the path written."""
+    """``linecontact SUBCOMMAND ... --plot FILE``: the subcommand's figure of the
+    computed cases (its module's ``figure``, drawn by :mod:`linecontact.plot`), saved
+    to `path` (png, svg or pdf). Returns the path written."""
     from .. import plot
 
     objects = [o for o in results.objects if o is not None]
     if not objects:
         raise ValueError("--plot: nothing to draw (no case computed)")
-    n = command.module.panels(objects)
-    fig, axes = plot._figure(None, n)   # MissingDependencyError without matplotlib
-    axes = np.atleast_1d(axes)
-    command.module.draw(axes, objects)
-    return plot.save(fig, path)
+    return plot.save(command.module.figure(objects), path)

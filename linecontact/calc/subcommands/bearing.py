@@ -370,31 +370,13 @@ def to_json(obj):
             "solution": obj.solution.to_dict()}
 
 
-def panels(objects):
-    """Panels of the figure: the roller loads, and the roller moments under a tilt."""
-    return 2 if any(o.solution.stiffness.shape == (2, 2) for o in objects) else 1
+def figure(objects):
+    """``--plot``: :func:`linecontact.plot.bearing` of each bearing (one below the
+    other for a sweep, :func:`linecontact.plot.panels`)."""
+    from functools import partial
 
+    from ... import plot
 
-def draw(axes, objects):
-    """The roller loads (and moments) against azimuth, one series per bearing."""
-    for k, o in enumerate(objects):
-        s = o.solution
-        order = np.argsort(s.azimuth)
-        psi = np.degrees(s.azimuth[order])
-        label = (f"F_r = {s.radial_load:.4g} N, M = {s.moment:.4g} N m, theta = "
-                 f"{s.tilt * 1e3:.4g} mrad")
-        axes[0].plot(psi, s.roller_loads[order], "o-", ms=3, label=label)
-        if len(axes) > 1 and s.roller_moments is not None:
-            axes[1].plot(psi, s.roller_moments[order], "o-", ms=3)
-    axes[0].set_ylabel("roller load Q [N]")
-    b = objects[0].bearing
-    axes[0].set_title(f"Z = {b.rollers}, d_m = {b.pitch_diameter * 1e3:.4g} mm, "
-                      f"P_d = {b.clearance * 1e6:.3g} um "
-                      f"({objects[0].solution.model.split(' (')[0]})", fontsize=8)
-    axes[0].legend(fontsize=7)
-    if len(axes) > 1:
-        axes[1].set_ylabel("roller moment M_j [N m]")
-        axes[1].axhline(0.0, color="k", lw=0.5)
-    axes[-1].set_xlabel("roller azimuth psi from the load line [deg]")
-    for ax in axes:
-        ax.grid(True, lw=0.3)
+    if len(objects) == 1:
+        return plot.bearing(objects[0].solution)
+    return plot.panels(*(partial(plot.bearing, o.solution) for o in objects))

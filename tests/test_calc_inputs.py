@@ -555,3 +555,26 @@ def test_a_model_option_twice_or_misspelt_is_refused(spec, says):
     status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
                               "--load", "1kN", "--model", spec])
     assert status == 2 and says in err and err.count("\n") == 1, err
+
+
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_plot_follows_one_rule_for_every_command(tmp_path, door):
+    """--plot FILE: the format by the extension (PNG, SVG or PDF), another one refused
+    before anything is written (the output file is not created), and not with a CSV
+    batch; a bearing's former --figure is refused naming --plot."""
+    pytest.importorskip("matplotlib")
+    case = [x for c, v in zip(door.header.split(","), door.row.format(
+        load="1kN").split(",")) for x in ("--" + c.replace("_", "-"), v)]
+    out = tmp_path / "out.txt"
+    status, _, err = _calc([*case, "--plot", str(tmp_path / "f.jpg"), "-o", str(out)],
+                           door.name)
+    assert status == 2 and ".png, .svg or .pdf" in err and not out.exists()
+    status, _, err = _calc([*case, "--plot", str(tmp_path / "f.svg")], door.name)
+    assert status == 0 and (tmp_path / "f.svg").read_text().lstrip().startswith("<")
+    path = tmp_path / "in.csv"
+    path.write_text(door.header + "\n" + door.row.format(load="1kN") + "\n")
+    status, _, err = _calc([str(path), "--plot", str(tmp_path / "g.png")], door.name)
+    assert status == 2 and "not a CSV batch" in err
+    if door.name == "bearing":
+        status, _, err = _calc([*case, "--figure", "x.png"], door.name)
+        assert status == 2 and "--figure is now --plot" in err

@@ -96,8 +96,13 @@ class Command:
             if errors[i]:
                 continue
             try:
-                obj = self.module.solve(cases.values, i, cases.state)
-                row = self.module.row(obj, cases.state, i)
+                # an intermediate that overflows (a moment of 1e300 N m) ends in the
+                # library's refusal or a NaN the row shows as none; numpy's warnings
+                # would only add lines to stderr (as in calc's evaluation)
+                with np.errstate(over="ignore", divide="ignore", invalid="ignore",
+                                 under="ignore"):
+                    obj = self.module.solve(cases.values, i, cases.state)
+                    row = self.module.row(obj, cases.state, i)
             except (InputError, OutOfRangeError, CombinationError,
                     UnknownNameError) as exc:
                 errors[i] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__

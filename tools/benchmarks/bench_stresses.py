@@ -34,7 +34,7 @@ on a shared machine, where absolute times drift with the load; and the other mod
 stresses/solve ratio on the same solves (its "before"); and whether the two modules give
 the same worst values (largest relative difference, how many on another slice).
 
-Prints a report and writes it to tools/benchmarks/results/stresses.txt.
+Prints a report and writes it to tools/benchmarks/results/stresses_accuracy.txt.
 """
 from __future__ import annotations
 
@@ -225,7 +225,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--out", type=Path, default=REPO / "tools" / "benchmarks" / "results"
-                    / "stresses.txt")
+                    / "stresses_accuracy.txt")
     ap.add_argument("--grid-case", action="append", default=[],
                     help="a study case key (e.g. A-circular_crown-q800-t2) whose 3D "
                          "reference is solved on nested grids (--grid-n-x); repeatable")

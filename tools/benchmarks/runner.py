@@ -82,7 +82,13 @@ def _machine():
     load = " ".join(f"{x:.1f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") \
         else "?"
     import numpy
-    return (f"{platform.machine()}, {os.cpu_count()} cores, {platform.system()} "
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as fh:
+            cpu = next(ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    return (f"{cpu}, {os.cpu_count()} cores, {platform.system()} "
             f"{platform.release()}; Python {platform.python_version()}, numpy "
             f"{numpy.__version__}; load average at the end {load}")
 

@@ -186,7 +186,7 @@ def batch(repeat, rows=100_000):
     return out
 
 
-def batch_profiled(repeat, rows=100, rollers=4):
+def batch_profiled(repeat, rows=200, rollers=4):
     """CPU time of a CSV of profiled rollers (4 rollers: ISO 16281, crowned, Lundberg,
     end relief; tilts 0-0.5 mrad; loads 1-40 kN) when rows that share a roller are
     solved as one load sweep (``linecontact calc``, in this process), against each row

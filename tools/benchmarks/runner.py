@@ -145,7 +145,8 @@ def _against(names, ref, repeat):
                     pairs = [x / y for x, y in zip(a, b) if x is not None and y]
                     ma = statistics.median([x for x in a if x is not None])
                     mb = [y for y in b if y is not None]
-                    print(f"| {label} [{unit}] | {_fmt(ma)} | "
+                    name = f"{label} [{unit}]" if unit else label
+                    print(f"| {name} | {_fmt(ma)} | "
                           f"{_fmt(statistics.median(mb)) if mb else '-'} | "
                           f"{_fmt(statistics.median(pairs)) if pairs else '-'} |")
                 print()

@@ -25,6 +25,7 @@ import datetime
 import json
 import os
 import platform
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -117,38 +118,46 @@ def _checkout(ref, folder):
                   "without them", file=sys.stderr)
 
 
+def _paired_rounds(name, folder, repeat):
+    """`repeat` rounds of one child on this checkout and one on `folder`, in
+    alternating order; None where the benchmark is skipped."""
+    rounds = []
+    order = (("this", REPO), ("ref", folder))
+    for i in range(repeat):
+        pair = {}
+        for side, root in (order if i % 2 == 0 else order[::-1]):
+            pair[side] = _run_child(root, name, 1)
+            if pair[side] is None:
+                return None
+        rounds.append(pair)
+    return rounds
+
+
 def _against(names, ref, repeat):
+    """Each benchmark of `names` on this checkout and on the commit `ref`, paired."""
     sha = _git("rev-parse", "--short", ref)
     with tempfile.TemporaryDirectory(prefix="lc_bench_ref_") as tmp:
         folder = Path(tmp) / "ref"
         _checkout(ref, folder)
         try:
             for name in names:
-                rounds = []
-                for i in range(repeat):
-                    pair = {}
-                    order = (("this", REPO), ("ref", folder))
-                    for side, root in (order if i % 2 == 0 else order[::-1]):
-                        pair[side] = _run_child(root, name, 1)
-                    rounds.append(pair)
-                if any(p["this"] is None or p["ref"] is None for p in rounds):
+                rounds = _paired_rounds(name, folder, repeat)
+                if rounds is None:
                     print(f"## {name}: skipped\n")
                     continue
                 print(f"## {name}: this checkout ({_commit()}) against {ref} ({sha}), "
                       f"{repeat} rounds, alternating\n")
                 print(f"| figure | this | {ref} | this / {ref} (median of rounds) |")
                 print("|---|---|---|---|")
-                import statistics
                 for label, (_, unit) in rounds[0]["this"].items():
-                    a = [p["this"].get(label, [None])[0] for p in rounds]
-                    b = [p["ref"].get(label, [None])[0] for p in rounds]
-                    pairs = [x / y for x, y in zip(a, b) if x is not None and y]
-                    ma = statistics.median([x for x in a if x is not None])
-                    mb = [y for y in b if y is not None]
-                    name = f"{label} [{unit}]" if unit else label
-                    print(f"| {name} | {_fmt(ma)} | "
-                          f"{_fmt(statistics.median(mb)) if mb else '-'} | "
-                          f"{_fmt(statistics.median(pairs)) if pairs else '-'} |")
+                    a = [p["this"][label][0] for p in rounds]
+                    b = [p["ref"][label][0] for p in rounds if label in p["ref"]]
+                    ratio = [x / p["ref"][label][0] for x, p in zip(a, rounds)
+                             if label in p["ref"] and p["ref"][label][0]]
+                    row = f"{label} [{unit}]" if unit else label
+                    print(f"| {row} | {_fmt(statistics.median(a))} | "
+                          f"{_fmt(statistics.median(b)) if b else '-'} | "
+                          f"{_fmt(statistics.median(ratio)) if ratio else '-'} |")
                 print()
         finally:
             _git("worktree", "remove", "--force", str(folder))

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import OutOfRangeError, UnknownNameError
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = ["force_depth", "line_load", "pressure_field", "pressure_map", "hysteresis",
            "creep", "save", "register", "PLOTS", "FORMATS", "MissingDependencyError"]
@@ -119,7 +119,7 @@ def save(fig, path):
     >>> save(None, "figure.jpg")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
+    linecontact.errors.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
     """
     path = Path(path)
     ext = path.suffix.lower().lstrip(".")
@@ -489,8 +489,3 @@ def creep(result, *, ax=None):
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=7, loc="lower right")
     return fig
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

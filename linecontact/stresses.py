@@ -90,7 +90,8 @@ from pathlib import Path
 import numpy as np
 
 from ._extensions import load_extension
-from .validity import OutOfRangeError, check_interval, check_positive
+from .checks import check_interval, check_positive
+from .errors import OutOfRangeError
 
 __all__ = [
     "MEASURES",
@@ -1985,8 +1986,3 @@ def case_check(stresses, hardness, depths=None, measure="von_mises"):
     name = "von Mises" if measure == "von_mises" else "Tresca"
     return CaseCheck(measure, z, sig, allow, ratio, float(ratio[k]), float(z[k]), min_chd,
                      _CONVERSION.format(f=f, m=name))
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -63,11 +63,11 @@ import re
 
 import numpy as np
 
-from ._numerics import BLOCK, UniformHermite, blockwise
+from ._numerics import BLOCK, UniformHermite, blockwise, out
+from .checks import POISSON_RATIO, Interval, check_interval, check_positive, document
 from .classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
+from .errors import OutOfRangeError, UnknownNameError
 from .tables import TableError, read_table
-from .validity import (POISSON_RATIO, Interval, OutOfRangeError, UnknownNameError,
-                       check_interval, check_positive, document, out)
 
 __all__ = [
     "shear_modulus",
@@ -1468,8 +1468,3 @@ def cylinder_stiffness_ratios(model, depth, gstar, *, table=None):
         if column in table._grid:
             res[f"slip_error_{side}"] = table.value(column, nu, d_tilde)
     return res
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -15,7 +15,7 @@ from linecontact.calc.cli import main
 from linecontact.classical import hertz_half_width
 from linecontact.raceway import effective_radii
 from linecontact.stresses import strip_maxima
-from linecontact.validity import CombinationError, OutOfRangeError
+from linecontact.errors import CombinationError, OutOfRangeError
 
 
 @pytest.fixture(scope="module")

@@ -20,7 +20,7 @@ from linecontact.classical import (ISO16281_C, JOHNSON_CONSTANTS, PALMGREN_C,
                                    puttock_thwaite_profile, puttock_thwaite_stiffness,
                                    puttock_thwaite_stiffness_at_depth)
 from linecontact.lipopov import lipopov_depth
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 R, L = 5e-3, 10e-3
 E_STEEL = 210e9 / (2 * (1 - 0.3**2))

@@ -10,7 +10,7 @@ import pytest
 from scipy.integrate import quad
 
 from linecontact.hertz import hertz_contact, hertz_contact_at_approach, hertz_eccentricity
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 ESTAR = 115.385e9          # steel on steel, E = 210 GPa, nu = 0.3
 R = 10e-3

@@ -27,7 +27,7 @@ from linecontact import OutOfRangeError
 from linecontact.roller import ProfiledRoller
 from linecontact.roller import slices as sl
 from linecontact.roller.slices import SliceEquations
-from linecontact.validity import UnknownNameError
+from linecontact.errors import UnknownNameError
 
 TOL = 1e-12
 #: the compiled engines, each checked against the numpy reference
@@ -384,7 +384,7 @@ def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
         NO_C + "import sys, pickle; sys.modules['numba'] = None\n"
         "from linecontact.roller import ProfiledRoller\n"
         "from linecontact import OutOfRangeError\n"
-        "from linecontact.validity import UnknownNameError\n"
+        "from linecontact.errors import UnknownNameError\n"
         "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
         " engine='numpy')\n"
         "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError),\n"

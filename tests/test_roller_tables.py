@@ -14,7 +14,7 @@ import pytest
 
 import linecontact.roller.laws as laws
 from linecontact.roller.laws import ISOSlicingModel
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 N = laws._TABLE_MIN
 E = 115.38e9

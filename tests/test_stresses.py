@@ -17,7 +17,7 @@ from linecontact.roller import ProfiledRoller
 from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
                                   line_contact_stresses, roller_stresses, strip_maxima,
                                   strip_stresses)
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 ESTAR = 115.385e9
 

@@ -25,7 +25,7 @@ from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
                                     equivalent_poisson, gross_slip_shift, shear_modulus,
                                     shear_ratio, tangential_force, tangential_shift,
                                     tangential_stiffness)
-from linecontact.validity import OutOfRangeError, UnknownNameError
+from linecontact.errors import OutOfRangeError, UnknownNameError
 
 from oracle_laws import FlatPunch, HertzSphere  # tests/oracle_laws.py
 

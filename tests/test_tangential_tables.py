@@ -15,7 +15,7 @@ import linecontact.tangential as tangential
 from linecontact._numerics import UniformHermite
 from linecontact.models import get_model
 from linecontact.tangential import STRAIGHT_CYLINDER_MODELS, TangentialContact
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 E = 115.38e9
 N = tangential._TABLE_MIN + 12345

@@ -13,7 +13,7 @@ from linecontact.lipopov import fit_dimensionless_profile
 from linecontact.tables import read_table
 from linecontact.models import UniversalModel
 from linecontact.universal import universal_curve
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 TABLE = read_table("universal_curve")
 CURVE = universal_curve()

@@ -9,8 +9,8 @@ import math
 import numpy as np
 
 from .._numerics import CACHE_BYTES, cache_nbytes
+from ..checks import Interval
 from ..profiles import TILT_RANGE
-from ..validity import Interval
 from .kernel import far_field_coefficients, strip_values
 
 __all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE", "SLICE_GRADING"]
@@ -204,7 +204,7 @@ def check_engine(engine):
     """`engine` checked: one of ENGINES, "numba" only where numba is installed and
     the compiled kernels import (then imported here, at the roller's construction),
     "c" only where the C extension imports."""
-    from ..validity import OutOfRangeError, UnknownNameError
+    from ..errors import OutOfRangeError, UnknownNameError
     if not isinstance(engine, str) or engine not in ENGINES:
         raise UnknownNameError("engine", engine, ENGINES)
     if engine == "c" and c_engine() is None:

@@ -89,9 +89,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ._extensions import load_extension
-from .checks import check_interval, check_positive
-from .errors import OutOfRangeError
+from .._extensions import load_extension
+from ..checks import check_interval, check_positive
+from ..errors import OutOfRangeError
 
 __all__ = [
     "MEASURES",
@@ -648,7 +648,7 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
     ----------
     K. L. Johnson, Contact Mechanics (1985), Eq. 4.45 and section 7.2.
     """
-    from .classical import hertz_half_width, hertz_peak_pressure
+    from ..classical import hertz_half_width, hertz_peak_pressure
     mu, nu = _check_material(friction, poisson)
     b = float(hertz_half_width(force, radius, length, estar))
     p0 = float(hertz_peak_pressure(force, radius, length, estar))
@@ -940,7 +940,7 @@ _BLOCK = 16384
 # the corner sums in C (linecontact/_cstresses.c), built at install where a C compiler
 # exists; numpy where it is not (or where the build is stale)
 _cstresses = load_extension("linecontact._cstresses",
-                            Path(__file__).with_name("_cstresses.c"))[0]
+                            Path(__file__).parent.parent / "_cstresses.c")[0]
 #: which evaluates the 3D correction's corner sums: "c" (the extension, where it is
 #: built) or "numpy" (the reference, :func:`_love_batches`); a list, so that a test
 #: can switch it
@@ -1574,7 +1574,7 @@ _ERROR_KEYS = {(True, False, False): "error_3d_off_ends",
 def _accuracy():
     """The covered_* and error fields of tables/stress_accuracy.csv (or None)."""
     if not _ACCURACY:
-        from .tables import read_table
+        from ..tables import read_table
         try:
             meta = read_table("stress_accuracy").meta
             errs = {}

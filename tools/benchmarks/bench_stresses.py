@@ -27,7 +27,7 @@ C where the extension linecontact._cstresses is built, else numpy (the report sa
 which).
 
 With ``--against DIR`` (another checkout) the timing also runs that checkout's
-``linecontact/stresses.py`` on the same solutions, in turn with this one's (loaded as a
+``linecontact/stresses`` on the same solutions, in turn with this one's (loaded as a
 module of this checkout's package, so only the stresses module differs), and reports
 the CPU ratio this/other per roller (median of ``--repeat`` each): a paired comparison
 on a shared machine, where absolute times drift with the load; and the other module's
@@ -92,12 +92,18 @@ def accuracy(lines):
 
 
 def _other_stresses(directory):
-    """DIR/linecontact/stresses.py as a module of this checkout's package."""
+    """DIR/linecontact/stresses (the package, or the one module stresses.py of older
+    checkouts) as a module of this checkout's package."""
     import importlib.util
-    path = Path(directory).resolve() / "linecontact" / "stresses.py"
+    pkg = Path(directory).resolve() / "linecontact" / "stresses"
+    path = pkg / "__init__.py"
+    where = [str(pkg)]
     if not path.is_file():
-        raise SystemExit(f"--against {directory}: no {path}")
-    spec = importlib.util.spec_from_file_location("linecontact._against_stresses", path)
+        path, where = pkg.with_suffix(".py"), None
+    if not path.is_file():
+        raise SystemExit(f"--against {directory}: no {pkg} package or {path}")
+    spec = importlib.util.spec_from_file_location("linecontact._against_stresses", path,
+                                                  submodule_search_locations=where)
     mod = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = mod
     spec.loader.exec_module(mod)
@@ -172,7 +178,7 @@ def timing(lines, repeat, against=None, engine="auto"):
     k = int(np.argmax(ratios))
     lines.append(f"largest ratio: {keys[k]} (solve {solves[k] * 1e3:.1f} ms, stresses "
                  f"{stresses[k] * 1e3:.1f} ms)")
-    from linecontact import stresses as _st
+    from linecontact.stresses import love as _st
     lines.append(f"engine {engine!r}: the contact solve's, as ProfiledRoller(engine=...); the "
                  f"stresses' corner sums: {_st._CORNERS[0]} (C where the extension "
                  "linecontact._cstresses is built, else numpy)")
@@ -237,7 +243,7 @@ def main(argv=None):
                     help="the contact solve's engine (ProfiledRoller(engine=...); default "
                          "auto, numpy for the few solves of this benchmark)")
     ap.add_argument("--against", default=None, metavar="DIR",
-                    help="another checkout: time its linecontact/stresses.py in turn with "
+                    help="another checkout: time its linecontact/stresses in turn with "
                          "this one's on the same solutions")
     args = ap.parse_args(argv)
     import linecontact

@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 
 import linecontact
-from linecontact import stresses as st
+from linecontact import stresses
+from linecontact.stresses import love as st
 from linecontact.roller import ProfiledRoller
 from tools.studies.roller_study import make_profile
 
@@ -54,8 +55,8 @@ def main(argv=None):
             res = {}
             for c in ("c", "numpy"):
                 st._CORNERS[0] = c
-                res[c] = st.roller_stresses(sol, mu, nu, roller=model).worst
-            for m in st.MEASURES:
+                res[c] = stresses.roller_stresses(sol, mu, nu, roller=model).worst
+            for m in stresses.MEASURES:
                 u, v = res["c"][m], res["numpy"][m]
                 checks += 1
                 r = abs(u["value"] - v["value"]) / abs(v["value"])

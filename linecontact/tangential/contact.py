@@ -63,11 +63,11 @@ import re
 
 import numpy as np
 
-from ._numerics import BLOCK, UniformHermite, blockwise, out
-from .checks import POISSON_RATIO, Interval, check_interval, check_positive, document
-from .classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
-from .errors import OutOfRangeError, UnknownNameError
-from .tables import TableError, read_table
+from .._numerics import BLOCK, UniformHermite, blockwise, out
+from ..checks import POISSON_RATIO, Interval, check_interval, check_positive, document
+from ..classical import MODULUS_OR_RIGID, effective_modulus, two_bodies
+from ..errors import OutOfRangeError, UnknownNameError
+from ..tables import TableError, read_table
 
 __all__ = [
     "shear_modulus",

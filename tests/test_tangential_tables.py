@@ -11,7 +11,7 @@ values are themselves exact to rounding (1e-15), so the difference is the table'
 import numpy as np
 import pytest
 
-import linecontact.tangential as tangential
+import linecontact.tangential.contact as tangential
 from linecontact._numerics import UniformHermite
 from linecontact.models import get_model
 from linecontact.tangential import STRAIGHT_CYLINDER_MODELS, TangentialContact

@@ -16,8 +16,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from linecontact.models import MODELS, available_models, get_model
 from linecontact.errors import UnknownNameError
+from linecontact.models import MODELS, available_models, get_model
 
 names = st.text(alphabet="abcdefghijklmnopqrstuvwxyz_", min_size=1, max_size=12)
 
@@ -171,9 +171,9 @@ def test_exactly_one_of_depth_and_force_is_a_one_line_range_error():
     """Giving both or neither of depth and force (TangentialContact, a model's evaluate)
     is a bad value of an input, so it is the project's OutOfRangeError naming the
     choice, like roller_contact, not Python's TypeError."""
+    from linecontact.errors import OutOfRangeError
     from linecontact.models import get_model
     from linecontact.tangential import TangentialContact
-    from linecontact.errors import OutOfRangeError
 
     m = get_model("universal", 5e-3, 10e-3, 115e9)
     with pytest.raises(OutOfRangeError, match="exactly one of"):

@@ -13,8 +13,8 @@ import pytest
 
 import linecontact.tangential as tg
 import linecontact.tangential.cylinder_table as tg_table
-from linecontact.classical import effective_modulus
 from linecontact.calc.cli import main
+from linecontact.classical import effective_modulus
 from linecontact.models import get_model
 from linecontact.tables import read_table, write_table
 from linecontact.viscoelastic import StandardLinearSolid, step_creep_depth

@@ -14,10 +14,10 @@ import pytest
 
 from linecontact.contact import (Concave, Contact, Convex, Elastic, Flat, Raceways,
                                  Roller, Viscoelastic)
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.profiles import CircularCrownProfile
 from linecontact.raceway import roller_between_raceways
 from linecontact.roller import ProfiledRoller
-from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.viscoelastic import PronySeries, StandardLinearSolid, effective_relaxation
 
 N = 40

@@ -15,11 +15,11 @@ from hypothesis import strategies as st
 import linecontact
 from linecontact import models as mm
 from linecontact import tables as tb
+from linecontact.errors import OutOfRangeError
 from linecontact.mdr import mdr_force
 from linecontact.models import (MODELS, ContactModel, get_model, register,
                                 standard_models)
 from linecontact.tables import read_table, write_table
-from linecontact.errors import OutOfRangeError
 
 E = 210e9 / (2 * (1 - 0.3**2))
 
@@ -483,8 +483,8 @@ def test_evaluate_many_leaves_a_subnormal_psi_to_its_model():
     returned None, sending a whole batch with one such row off its array path."""
     import numpy as np
 
-    from linecontact.models import UniversalModel
     from linecontact.errors import OutOfRangeError
+    from linecontact.models import UniversalModel
 
     R, L, E = 5e-3, 1e-2, 2e11
     F = np.array([1e-301, 1e3])

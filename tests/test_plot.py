@@ -27,9 +27,9 @@ pytest.importorskip("matplotlib")
 
 from linecontact import plot
 from linecontact.contact import Contact, Elastic, Roller, Viscoelastic
+from linecontact.errors import OutOfRangeError
 from linecontact.models import get_model, standard_models
 from linecontact.tangential import TangentialContact
-from linecontact.errors import OutOfRangeError
 from linecontact.viscoelastic import StandardLinearSolid
 
 ESTAR = 115.38e9

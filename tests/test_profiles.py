@@ -8,11 +8,11 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import OutOfRangeError
 from linecontact.profiles import (JOHNS_GOHAR_C, CircularCrownProfile, EndReliefProfile,
                                   ISO16281Profile, JohnsGoharProfile, LundbergProfile,
                                   StraightProfile, TabulatedProfile, parse_angle,
                                   parse_profile)
-from linecontact.errors import OutOfRangeError
 
 L, R, E = 10e-3, 5e-3, 115.385e9
 X = np.linspace(-L / 2 * 0.999, L / 2 * 0.999, 401)

@@ -11,12 +11,12 @@ import pytest
 from scipy.integrate import quad
 
 from linecontact.classical import iso16281_depth, iso16281_force
+from linecontact.errors import OutOfRangeError
 from linecontact.hertz import hertz_contact
 from linecontact.models import MODELS, get_model
 from linecontact.profiles import TabulatedProfile
 from linecontact.roller import (ISOSlicingModel, ProfiledRoller, ProfiledRollerModel,
                                 iso_slicing, roller_contact, strip_influence)
-from linecontact.errors import OutOfRangeError
 
 E = 115.385e9              # steel on steel
 R, LC = 10e-3, 20e-3       # the crowned roller of the Hertz check values

@@ -24,10 +24,10 @@ import numpy as np
 import pytest
 
 from linecontact import OutOfRangeError
+from linecontact.errors import UnknownNameError
 from linecontact.roller import ProfiledRoller
 from linecontact.roller import slices as sl
 from linecontact.roller.slices import SliceEquations
-from linecontact.errors import UnknownNameError
 
 TOL = 1e-12
 #: the compiled engines, each checked against the numpy reference

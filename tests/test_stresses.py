@@ -13,11 +13,11 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import minimize_scalar
 
+from linecontact.errors import OutOfRangeError
 from linecontact.roller import ProfiledRoller
 from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
                                   line_contact_stresses, roller_stresses, strip_maxima,
                                   strip_stresses)
-from linecontact.errors import OutOfRangeError
 
 ESTAR = 115.385e9
 

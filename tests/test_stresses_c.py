@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from linecontact import stresses
+from linecontact.roller import ProfiledRoller
 from linecontact.stresses import love as st
 from linecontact.stresses import search
-from linecontact.roller import ProfiledRoller
 
 needs_c = pytest.mark.skipif(
     st._cstresses is None,

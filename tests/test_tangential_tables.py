@@ -13,9 +13,9 @@ import pytest
 
 import linecontact.tangential.contact as tangential
 from linecontact._numerics import UniformHermite
+from linecontact.errors import OutOfRangeError
 from linecontact.models import get_model
 from linecontact.tangential import STRAIGHT_CYLINDER_MODELS, TangentialContact
-from linecontact.errors import OutOfRangeError
 
 E = 115.38e9
 N = tangential._TABLE_MIN + 12345

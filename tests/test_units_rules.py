@@ -20,8 +20,8 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from linecontact._units import InputError, parse_bool, parse_column, parse_quantity
-from linecontact.errors import OutOfRangeError
 from linecontact.checks import check_positive
+from linecontact.errors import OutOfRangeError
 
 #: units and their exact SI factor (definitions: 1 in = 25.4 mm, 1 lbf = 4.4482216152605 N)
 UNITS = {

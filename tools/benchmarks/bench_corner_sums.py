@@ -22,9 +22,9 @@ from pathlib import Path
 import numpy as np
 
 import linecontact
+from linecontact.roller import ProfiledRoller
 from linecontact.stresses import love as st
 from linecontact.stresses import search
-from linecontact.roller import ProfiledRoller
 from tools.benchmarks.bench_roller_speed import D, ESTAR, FORCE, L, TILT
 from tools.studies.roller_study import make_profile
 

@@ -20,8 +20,8 @@ import numpy as np
 
 import linecontact
 from linecontact import stresses
-from linecontact.stresses import love as st
 from linecontact.roller import ProfiledRoller
+from linecontact.stresses import love as st
 from tools.studies.roller_study import make_profile
 
 REPO = Path(__file__).resolve().parents[2]

@@ -136,8 +136,14 @@ def _rebuild_name(parameter, value, valid, hint):
 
 
 class UnknownKeywordError(UnknownNameError, TypeError):
-    """A keyword argument that a function, method or class does not take: the message
-    names it, the close match ("did you mean") and every keyword it does take.
+    """A keyword that a ``**options`` catch-all does not take: the message names it, the
+    close match ("did you mean") and every keyword it does take.
+
+    Raised where options are passed on rather than bound by Python: a model's
+    constructor reached through :func:`~linecontact.models.get_model`,
+    :func:`linecontact.depth` and the other one-liners or a contact's ``**options``,
+    and :func:`~linecontact.calc.frame.calc_frame`; elsewhere an unknown keyword is
+    Python's own ``TypeError``, which names it too.
 
     A :class:`UnknownNameError` (so a :class:`ValueError`, as every input error of the
     library) and a :class:`TypeError` (what Python raises for an unexpected keyword, so
@@ -146,8 +152,8 @@ class UnknownKeywordError(UnknownNameError, TypeError):
     Parameters
     ----------
     function : str
-        The callable's name as the user wrote it (``"johnson_depth"``,
-        ``"ProfiledRoller.at_force"``).
+        The callable's name as the user wrote it (``"JohnsonModel"``,
+        ``"calc_frame"``).
     keyword : str
         The keyword it does not take.
     valid : iterable of str

@@ -1,46 +1,15 @@
 r"""Tangential contact of any model: full stick, Cattaneo-Mindlin partial slip, fretting.
 
 The method of dimensionality reduction (Popov & Hess 2015, chapter 4) gives every
-normal-contact law F(d) a tangential companion. The 1D springs of the MDR profile carry
-a tangential stiffness :math:`G^*\,dx` besides the normal one :math:`E^*\,dx`, with
-
-.. math::
-
-    \frac{1}{G^*} = \frac{2-\nu_1}{4G_1} + \frac{2-\nu_2}{4G_2}, \qquad
-    G_i = \frac{E_i}{2(1+\nu_i)},
-
-and each spring sticks while :math:`G^*|u(x)| \le \mu E^*(d - g(x))`. With the shear
-ratio :math:`r = G^*/E^*` and the friction coefficient :math:`\mu` this gives, from the
-normal law alone (no profile needed):
-
-- full stick: :math:`k_t = r\,k_n(d)`;
-- monotonic shift u at constant normal depth d (Cattaneo 1938, Mindlin 1949):
-  :math:`F_t(u) = \mu\,[F(d) - F(d - r u/\mu)]` up to gross slip at
-  :math:`u^* = \mu d/r`, where :math:`F_t = \mu F(d)`; at constant normal force the
-  same law holds at :math:`d = d(F)` (the normal and tangential problems are
-  uncoupled, Goodman's approximation);
-- unloading from :math:`(u_0, F_0)` and reloading by the Masing rule
-  (Mindlin & Deresiewicz 1953): :math:`F_t = F_0 - 2 f((u_0 - u)/2)` and
-  :math:`F_t = -F_0 + 2 f((u_0 + u)/2)`, f the monotonic law;
-- energy dissipated per full cycle of amplitude :math:`u_0` (fretting):
-  :math:`W = 8\int_0^{u_0} f(s)\,ds - 4 u_0 f(u_0)`.
-
-Where these are exact, and where not
-------------------------------------
-Exact for axisymmetric contacts (a sphere gives Mindlin's and Mindlin-Deresiewicz's
-results, which the tests check) under the Cattaneo-Mindlin assumptions: the normal
-and tangential problems uncoupled (exact for elastically similar bodies, or with
-:math:`(1-2\nu_1)/G_1 = (1-2\nu_2)/G_2`; for a rigid indenter on a compressible body it
-is Goodman's approximation) and the slip parallel to the load. At :math:`\nu = 0`
-(:math:`G^* = E^*`) the tangential kernel equals the normal one and the laws hold
-exactly for *any* shape. For an elongated contact (a finite roller) the true full-stick
-stiffness depends on the direction of the shift; ``method="bem"`` reads it from the
-boundary-element table ``tables/tangential_cylinder.csv`` (across the axis, the
-rolling direction, and along it), and the partial-slip law then uses that stiffness
-ratio in place of :math:`G^*/E^*` (and the table's partial-slip correction, if the
-table carries one). See docs/tangential.md for the measured error of the plain MDR.
-
-All functions take SI units (m, N, Pa) and broadcast over numpy arrays.
+normal-contact law F(d) a tangential companion from the normal law alone: the full-stick
+stiffness :math:`k_t = (G^*/E^*)\,k_n(d)`, the Cattaneo-Mindlin partial-slip law up to
+gross slip, the Masing unloading and reloading branches and the energy dissipated per
+fretting cycle (:mod:`~linecontact.tangential.laws`, where the assumptions and the
+cases in which they are exact are stated). For the finite cylinder, whose full-stick
+stiffness depends on the direction of the shift, ``method="bem"`` takes the ratio (and
+a partial-slip correction) from the boundary-element table
+``tables/tangential_cylinder.csv``; docs/tangential.md gives the plain MDR's measured
+error. All functions take SI units (m, N, Pa) and broadcast over numpy arrays.
 
 Modules: :mod:`~linecontact.tangential.moduli` (G*, the shear ratio G*/E*),
 :mod:`~linecontact.tangential.laws` (the laws as functions of a model),

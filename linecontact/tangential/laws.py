@@ -2,14 +2,8 @@ r"""Tangential contact of any model: the Cattaneo-Mindlin laws from the normal l
 
 The method of dimensionality reduction (Popov & Hess 2015, chapter 4) gives every
 normal-contact law F(d) a tangential companion. The 1D springs of the MDR profile carry
-a tangential stiffness :math:`G^*\,dx` besides the normal one :math:`E^*\,dx`, with
-
-.. math::
-
-    \frac{1}{G^*} = \frac{2-\nu_1}{4G_1} + \frac{2-\nu_2}{4G_2}, \qquad
-    G_i = \frac{E_i}{2(1+\nu_i)},
-
-and each spring sticks while :math:`G^*|u(x)| \le \mu E^*(d - g(x))`. With the shear
+a tangential stiffness :math:`G^*\,dx` besides the normal one :math:`E^*\,dx` (G*:
+:mod:`linecontact.tangential.moduli`), and each spring sticks while :math:`G^*|u(x)| \le \mu E^*(d - g(x))`. With the shear
 ratio :math:`r = G^*/E^*` and the friction coefficient :math:`\mu` this gives, from the
 normal law alone (no profile needed):
 

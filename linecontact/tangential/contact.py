@@ -9,17 +9,10 @@ evaluated by tables of the law built once per contact (:class:`_EndTable`).
 
 References
 ----------
-.. [1] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
-   and Friction, Springer (2015), chapters 3-4.
-.. [2] C. Cattaneo, Sul contatto di due corpi elastici: distribuzione locale degli
-   sforzi, Rend. Accad. Naz. Lincei 27 (1938) 342-348, 434-436, 474-478.
-.. [3] R. D. Mindlin, Compliance of elastic bodies in contact, J. Appl. Mech. 16
-   (1949) 259-268.
-.. [4] R. D. Mindlin, H. Deresiewicz, Elastic spheres in contact under varying oblique
-   forces, J. Appl. Mech. 20 (1953) 327-344.
-.. [5] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section 7.
-.. [6] L. E. Goodman, Contact stress analysis of normally loaded rough spheres, J. Appl.
-   Mech. 29 (1962) 515-522.
+.. [1] R. D. Mindlin, H. Deresiewicz, Elastic spheres in contact under varying oblique
+   forces, J. Appl. Mech. 20 (1953) 327-344 (the Masing branches, the energy per cycle).
+.. [2] V. L. Popov, M. Hess, Method of Dimensionality Reduction in Contact Mechanics
+   and Friction, Springer (2015), chapter 4.
 """
 from __future__ import annotations
 

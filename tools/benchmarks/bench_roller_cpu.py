@@ -88,7 +88,7 @@ def main(argv=None):
     ap.add_argument("--save", default=None)
     ap.add_argument("--against", default=None)
     ap.add_argument("--count", action="store_true")
-    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba", "c"),
+    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "c"),
                     help="ProfiledRoller(engine=...) of every case (default auto)")
     a = ap.parse_args(argv)
     counts = _counting() if a.count else None

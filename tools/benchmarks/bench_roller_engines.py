@@ -2,14 +2,14 @@
 reference over the cases of tables/roller_accuracy.csv (how close their results are).
 
     OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_engines
-        [--engines c numba] [--sample N --seed S]
+        [--engines c] [--sample N --seed S]
 
 Cases: the ISO 16281 roller of tools/benchmarks/bench_roller_speed.py (4200 N) at 2
 mrad and at a free tilt, and the 104 cases of tables/roller_accuracy.csv as the
 accuracy study solves them (tools/benchmarks/bench_roller_newton.py ``_cases``: a new
 ``ProfiledRoller`` per case, ``at_force(F, tilt)``); ``--sample N`` adds N random cases
 of the covered range. Each case is solved with engine="numpy" and with each engine
-asked for (those that run here: numba installed, the C extension built). Printed per
+asked for (those that run here: the C extension built). Printed per
 engine: the largest differences from numpy over every case (slice loads over the
 largest, depth over the largest overlap, tilt times L over the largest overlap, force
 over F, moment over F L/2, p_max relative, the stiffness matrix over its diagonal
@@ -29,15 +29,12 @@ def _available(engine):
     from linecontact.roller import slices
     if engine == "c":
         return slices.c_engine() is not None
-    if engine == "numba":
-        return slices.numba_installed()
     return True
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--engines", nargs="+", default=["c", "numba"],
-                    choices=("c", "numba"))
+    ap.add_argument("--engines", nargs="+", default=["c"], choices=("c",))
     ap.add_argument("--sample", type=int, default=0)
     ap.add_argument("--seed", type=int, default=7)
     a = ap.parse_args(argv)

@@ -3,7 +3,7 @@
 (slices.newton_error, NEWTON_C).
 
     OPENBLAS_NUM_THREADS=1 python -m tools.benchmarks.bench_roller_newton
-        [--engine numpy|numba|c] [--sample N --seed S]
+        [--engine numpy|c] [--sample N --seed S]
 
 Cases: the ISO 16281 roller of tools/benchmarks/bench_roller_speed.py (D 10 mm, L 14
 mm, 4200 N) at 2 mrad and at a free tilt, then the 104 cases of
@@ -178,7 +178,7 @@ def calibration(calls, floor=5e-12, w_max=1e-6):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--engine", default="numpy", choices=("numpy", "numba", "c"))
+    ap.add_argument("--engine", default="numpy", choices=("numpy", "c"))
     ap.add_argument("--sample", type=int, default=0)
     ap.add_argument("--seed", type=int, default=7)
     a = ap.parse_args(argv)

@@ -3,7 +3,7 @@ cost inside a solve: the regrid (``ProfiledRoller._grid``), the construction
 (``ProfiledRoller.__init__``) and the post-processing (``ProfiledRoller._solution``).
 
     OPENBLAS_NUM_THREADS=1 python tools/benchmarks/bench_roller_parts.py
-        [--against DIR] [--repeat 200] [--engine numba] [--tilt 2e-3]
+        [--against DIR] [--repeat 200] [--engine c] [--tilt 2e-3]
 
 The case of ``bench_roller_speed``: the ISO 16281 profile of tables/roller_accuracy.csv
 (D = 10 mm, L = 14 mm, E* = 115.385 GPa), 4200 N, tilt 2 mrad (or ``--tilt free``), a
@@ -49,7 +49,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--against", default=None, help="a second checkout to time")
     ap.add_argument("--repeat", type=int, default=200)
-    ap.add_argument("--engine", default="numba", choices=("numpy", "numba", "c", "auto"))
+    ap.add_argument("--engine", default="c", choices=("numpy", "c", "auto"))
     ap.add_argument("--tilt", default="2e-3", help="tilt [rad] or 'free'")
     args = ap.parse_args(argv)
     here = Path(__file__).resolve().parents[2]

@@ -33,10 +33,9 @@ only for versions that have that option). ``--engine E`` passes ``engine=E`` to
 ``ProfiledRoller`` (only where given, so that the same command still times versions
 without engines; with ``--against`` the other checkout gets it too where its own
 script takes ``--engine``, else it runs its own default). ``--kernels`` instead
-prints what the compiled engines cost (importing numba, loading its cached code,
-compiling it; importing the C engine; each in a fresh process) and
+prints what the C engine costs to load (in a fresh process) and
 the per-call time of ``SliceEquations.kernels`` and ``.linearised`` with each engine
-(numpy, numba, and c where its extension is built), and whole solves with the engines
+(numpy, and c where its extension is built), and whole solves with the engines
 alternating in one process.
 ``--against DIR --interleave`` instead alternates the two checkouts' solves within one
 process (DIR's ``linecontact`` copied to a temporary directory and imported as
@@ -116,7 +115,7 @@ def main(argv=None):
     ap.add_argument("--no-refine", action="store_true")
     ap.add_argument("--against", default=None, metavar="DIR")
     ap.add_argument("--rounds", type=int, default=2)
-    ap.add_argument("--engine", default=None, choices=("auto", "numpy", "numba", "c"))
+    ap.add_argument("--engine", default=None, choices=("auto", "numpy", "c"))
     ap.add_argument("--kernels", action="store_true")
     ap.add_argument("--interleave", action="store_true")
     a = ap.parse_args(argv)
@@ -185,13 +184,11 @@ def main(argv=None):
 
 
 def _kernel_costs(a):
-    """--kernels: what the compiled engines cost and save, each in a fresh process
-    (importing numba, loading its cached code, compiling without a cache; importing
-    the C engine), per call (SliceEquations.kernels and .linearised, numpy against
-    numba and c, on the slice grid of the converged 2 mrad solve: CPU medians of
-    --repeat x 20 calls) and per solve (--repeat rounds, the engines alternating)."""
+    """--kernels: what the C engine costs and saves: loading it in a fresh process,
+    per call (SliceEquations.kernels and .linearised, numpy against c, on the slice
+    grid of the converged 2 mrad solve: CPU medians of --repeat x 20 calls) and per
+    solve (--repeat rounds, the engines alternating)."""
     import json
-    import tempfile
 
     slices = {} if a.n_slices is None else {"n_slices": a.n_slices}
 
@@ -212,35 +209,19 @@ def _kernel_costs(a):
         "    c0 = time.process_time()\n"
         "    ProfiledRoller(%r, %r, %r, prof, engine='c').at_force(%r, tilt=%r)\n"
         "    t['first c solve'] = time.process_time() - c0\n"
-        "c0 = time.process_time()\n"
-        "import numba\n"
-        "t['import numba'] = time.process_time() - c0\n"
-        "c0 = time.process_time()\n"
-        "ProfiledRoller(%r, %r, %r, prof, engine='numba').at_force(%r, tilt=%r)\n"
-        "t['first numba solve'] = time.process_time() - c0\n"
         "print(json.dumps(t))\n"
-    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 3)
-    env = dict(os.environ)
-    with tempfile.TemporaryDirectory() as cache:
-        for label, extra in (("no cache (compiles)", {"NUMBA_CACHE_DIR": cache}),
-                             ("cache written above", {"NUMBA_CACHE_DIR": cache})):
-            rows = []
-            for _ in range(3):
-                out = subprocess.run([sys.executable, "-c", probe], capture_output=True,
-                                     text=True, check=True, env=dict(env, **extra)).stdout
-                rows.append(json.loads(out))
-                if label.startswith("no cache"):
-                    break
-            med = {k: statistics.median(r[k] for r in rows) for k in rows[0]}
-            print(f"fresh process, {label}: "
-                  + ", ".join(f"{k} {v * 1e3:.0f} ms" for k, v in med.items())
-                  + f" (median of {len(rows)})")
+    ) % ((L, D / 2, ESTAR) + (D / 2, L, ESTAR, FORCE, TILT) * 2)
+    rows = [json.loads(subprocess.run([sys.executable, "-c", probe], capture_output=True,
+                                      text=True, check=True).stdout) for _ in range(3)]
+    med = {k: statistics.median(r[k] for r in rows) for k in rows[0]}
+    print("fresh process: " + ", ".join(f"{k} {v * 1e3:.0f} ms" for k, v in med.items())
+          + f" (median of {len(rows)})")
 
     from linecontact.roller import ProfiledRoller
     from linecontact.roller import slices as sl
     from tools.studies import roller_study as rs
 
-    engines = ["numpy", "numba"]
+    engines = ["numpy"]
     if getattr(sl, "c_engine", lambda: None)() is not None:
         engines.append("c")
     prof = rs.make_profile("iso16281", L, D / 2, ESTAR)
@@ -288,11 +269,6 @@ def _kernel_costs(a):
         for e in engines[1:]:
             ratios = [b / n for b, n in zip(ts[e], ts["numpy"])]
             print(f"  ratio {e}/numpy median of pairs {statistics.median(ratios):.3f} "
-                  f"(quartiles {np.percentile(ratios, 25):.3f}-"
-                  f"{np.percentile(ratios, 75):.3f})")
-        if "c" in engines:
-            ratios = [c / b for c, b in zip(ts["c"], ts["numba"])]
-            print(f"  ratio c/numba median of pairs {statistics.median(ratios):.3f} "
                   f"(quartiles {np.percentile(ratios, 25):.3f}-"
                   f"{np.percentile(ratios, 75):.3f})")
     return 0

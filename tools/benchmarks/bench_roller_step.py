@@ -4,7 +4,7 @@ system, and the rest of the step (scaling, sums, step, update, active set: the P
 and compiled glue of ``SliceEquations.bordered``).
 
     OPENBLAS_NUM_THREADS=1 python tools/benchmarks/bench_roller_step.py
-        [--against DIR] [--repeat 200] [--engine numba] [--tilt 2e-3]
+        [--against DIR] [--repeat 200] [--engine c] [--tilt 2e-3]
 
 The case of ``bench_roller_speed``: the ISO 16281 profile of tables/roller_accuracy.csv
 (D = 10 mm, L = 14 mm, E* = 115.385 GPa), 4200 N, tilt 2 mrad (or ``--tilt free``), a
@@ -15,8 +15,8 @@ timers (``time.perf_counter``); per solve, a step's remainder is the time in
 ``bordered`` runs), over its steps. The dense solve inside it is timed apart: each
 solve's last Newton system (2 ns x 2 ns, three right-hand sides; the matrix
 ``linearised`` returned, scaled as the step scales it) is solved again ``--solves``
-times after the run with the engine's solver (numpy: ``np.linalg.solve``; numba: the
-compiled ``_compiled.solve``), the median taken. Printed: medians over the solves of
+times after the run with the engine's solver (``np.linalg.solve``, under either
+engine), the median taken. Printed: medians over the solves of
 the per-call linearisation, the dense solve, the step's remainder less that solve
 ("glue"), the steps per solve and the solve itself. ``--against DIR`` times the
 checkout DIR too, the two checkouts' solves alternating in one process (DIR's
@@ -85,7 +85,7 @@ def main(argv=None):
     ap.add_argument("--against", default=None, help="a second checkout to time")
     ap.add_argument("--repeat", type=int, default=200)
     ap.add_argument("--solves", type=int, default=200)
-    ap.add_argument("--engine", default="numba", choices=("numpy", "numba"))
+    ap.add_argument("--engine", default="c", choices=("numpy", "c"))
     ap.add_argument("--tilt", default="2e-3", help="tilt [rad] or 'free'")
     args = ap.parse_args(argv)
     here = Path(__file__).resolve().parents[2]
@@ -127,8 +127,7 @@ def main(argv=None):
         # (the checkouts alternating)
         for run in runs:
             J, B, engine = run["rec"]["system"]
-            run["solver"] = (run["slices"].compiled().solve if engine == "numba"
-                             else np.linalg.solve)
+            run["solver"] = np.linalg.solve
             run["solver"](J.copy(order="F"), B)
             run["ts"] = []
             run["n2"] = J.shape[0]

@@ -125,12 +125,6 @@ def timing(lines, repeat, against=None, engine="auto"):
     strip_maxima(0.0, 0.3)   # the study's (mu, nu), cached before the timed loop
     ratios, solves, stresses, keys, others = [], [], [], [], []
     tasks = ss.study_tasks()
-    if engine == "numba":
-        # the compiled kernels' import and cache load (once per process) before timing
-        t = tasks[0]
-        ProfiledRoller(t["radius"], t["length"], t["estar"],
-                       make_profile(t["profile"], t["length"], t["radius"], t["estar"]),
-                       engine=engine).at_force(t["force"], tilt=t["tilt"])
     for task in tasks:
         prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
         ts, tt, to = [], [], []
@@ -233,7 +227,7 @@ def main(argv=None):
                     help="coarse cells along x of each nested pair (default 64,128: "
                          "64 x 32, 128 x 64 and 256 x 128 cells)")
     ap.add_argument("--skip-timing", action="store_true")
-    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba", "c"),
+    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "c"),
                     help="the contact solve's engine (ProfiledRoller(engine=...); default "
                          "auto, numpy for the few solves of this benchmark)")
     ap.add_argument("--against", default=None, metavar="DIR",

@@ -24,6 +24,8 @@ import importlib
 import warnings
 from pathlib import Path
 
+from .validity import OutOfRangeError, UnknownNameError
+
 __all__ = []
 
 #: the engines a caller may ask for (ProfiledRoller(engine=...))
@@ -88,7 +90,6 @@ def check_engine(engine):
     """`engine` checked: one of :data:`ENGINES`, and "c" only where the extension runs
     here; else an UnknownNameError or OutOfRangeError naming the engines that run and,
     where "c" does not, why."""
-    from .validity import OutOfRangeError, UnknownNameError
     runs = ENGINES if ckernels() is not None else ("auto", "numpy")
     why = "" if ckernels() is not None else f"; 'c' does not run here: {unavailable()}"
     if not isinstance(engine, str) or engine not in ENGINES:

@@ -5,8 +5,8 @@ is a signed sum over the rectangle's corners of an elementary function of the
 offsets from the corner (Love 1929; :func:`rectangle_stresses`). The 3D correction of
 the roller stresses (:mod:`linecontact.stresses.search`) sums these corner functions
 over many rectangles at once: in numpy (:func:`_love_batches`, the reference) or in
-the optional C extension ``linecontact._cstresses`` (the same arithmetic, loaded
-here; numpy where it is not built or stale).
+the optional C extension (``linecontact._cstresses.c`` in ``linecontact._ckernels``:
+the same arithmetic, loaded here; numpy where it is not built or stale).
 
 References
 ----------
@@ -17,11 +17,9 @@ References
 """
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
-from .._extensions import load_extension
+from .._engine import ckernels, resolve_engine
 from ..checks import check_interval, check_positive
 from ..errors import OutOfRangeError
 
@@ -211,14 +209,13 @@ def _love_batches(items, only=None):
 _BLOCK = 16384
 
 
-# the corner sums in C (linecontact/_cstresses.c), built at install where a C compiler
-# exists; numpy where it is not (or where the build is stale)
-_cstresses = load_extension("linecontact._cstresses",
-                            Path(__file__).parent.parent / "_cstresses.c")[0]
-#: which evaluates the 3D correction's corner sums: "c" (the extension, where it is
-#: built) or "numpy" (the reference, :func:`_love_batches`); a list, so that a test
-#: can switch it
-_CORNERS = ["c" if _cstresses is not None else "numpy"]
+# the corner sums in C (linecontact/_cstresses.c, in the extension linecontact._ckernels),
+# built at install where a C compiler exists; numpy where it is not (or is stale)
+_cstresses = ckernels()
+#: which evaluates the 3D correction's corner sums: "c" (the extension, where it runs)
+#: or "numpy" (the reference, :func:`_love_batches`), as engine "auto" chooses; a list,
+#: so that a test can switch it
+_CORNERS = [resolve_engine("auto")]
 
 
 def _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means):

@@ -6,7 +6,7 @@
 Random rollers (the study profiles, L 8-30 mm, R 3-10 mm, forces from light to edge
 loaded, tilt 0 or up to 4 mrad either way, friction 0 or 0-0.5, Poisson 0.2-0.45),
 each solved once and its stresses computed with the C corner sums and with numpy's
-(stresses._CORNERS); reports the largest relative difference of every measure's worst
+(stresses.love._CORNERS); reports the largest relative difference of every measure's worst
 value and how many worst points lie on another slice (untilted: the mirror slice, a
 tie). Writes tools/benchmarks/results/stresses_c_agreement.txt.
 """
@@ -37,7 +37,7 @@ def main(argv=None):
                     / "stresses_c_agreement.txt")
     a = ap.parse_args(argv)
     if st._cstresses is None:
-        raise SystemExit("the C extension linecontact._cstresses is not built here")
+        raise SystemExit("the C extension linecontact._ckernels is not built or current here")
     rng = np.random.default_rng(a.seed)
     worst, where, other, mirror, checks = 0.0, "", 0, 0, 0
     saved = st._CORNERS[0]

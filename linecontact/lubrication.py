@@ -570,7 +570,7 @@ def rated_viscosity(speed, pitch_diameter):
     Examples
     --------
     >>> f"{rated_viscosity(1500 * 2 * math.pi / 60, 70e-3) * 1e6:.2f} mm^2/s"
-    '13.88 mm^2/s'
+    '13.89 mm^2/s'
 
     References
     ----------

@@ -118,7 +118,7 @@ class DutyCycle:
     Examples
     --------
     >>> d = duty_cycle_life([100.0, 400.0], [0.5, 0.5])
-    >>> d.life, [round(x, 12) for x in d.damage_shares]
+    >>> d.life, [round(float(x), 12) for x in d.damage_shares]
     (160.0, [0.8, 0.2])
 
     References

@@ -236,7 +236,10 @@ def central_film_pan_hamrock(speed, radius, load_per_length, estar, viscosity,
 
     Notes
     -----
-    As :func:`minimum_film_pan_hamrock` (same source, same assumptions).
+    As :func:`minimum_film_pan_hamrock` (same source, same assumptions). The ratio of
+    the two fits, h_c/h_min = 1.705 W'^-0.038 U^-0.002 G^-0.098, falls below 1 at
+    very high loads (for steel, G = 4616 and U = 5e-11: near W' = 1.5e-3, a Hertz
+    pressure of about 3.6 GPa), beyond the range the fits were made for.
 
     Examples
     --------
@@ -582,7 +585,9 @@ def rated_viscosity(speed, pitch_diameter):
     dm = check_positive("pitch_diameter", pitch_diameter, "m")
     n = w * 60.0 / (2.0 * math.pi)
     dmm = dm * 1e3
-    nu1 = np.where(n < _NU1_BRANCH_RPM, 45000.0 * n ** -0.83, 4500.0 * n ** -0.5) \
+    # the branch point with a rounding allowance: 1000 r/min given as rad/s and
+    # converted back is 999.9999999999999
+    nu1 = np.where(n < _NU1_BRANCH_RPM * (1.0 - 1e-12), 45000.0 * n ** -0.83, 4500.0 * n ** -0.5) \
         * dmm ** -0.5
     return out(nu1 * 1e-6)
 

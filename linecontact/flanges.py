@@ -167,7 +167,7 @@ class FlangeContacts:
     Examples
     --------
     >>> c = flange_contacts([500.0], 11e-3, 11e-3, 70e-3, 60e-3, math.radians(3),
-    ...                     115.4e9, 2.5e-3, 2.5e-3)
+    ...                     115.4e9, 3.2e-3, 3.2e-3)
     >>> float(c.normal_force[0] * math.cos(math.radians(3)))
     500.0
 
@@ -272,11 +272,11 @@ def flange_contacts(axial_force, roller_diameter, roller_length, pitch_diameter,
 
     Examples
     --------
-    D = l = 11 mm, d_m = 70 mm, R_e = 60 mm, theta = 3 deg, flanges 2.5 mm high, steel,
+    D = l = 11 mm, d_m = 70 mm, R_e = 60 mm, theta = 3 deg, flanges 3.2 mm high, steel,
     500 N on one roller:
 
     >>> c = flange_contacts(500.0, 11e-3, 11e-3, 70e-3, 60e-3, math.radians(3),
-    ...                     115.4e9, 2.5e-3, 2.5e-3)
+    ...                     115.4e9, 3.2e-3, 3.2e-3)
     >>> f"h {c.height * 1e3:.3f} mm, p0 {float(c.inner_p0) / 1e6:.0f} MPa, " \
     ...     f"M {float(c.tilting_moment):.3f} N m"
     'h 2.360 mm, p0 733 MPa, M 2.856 N m'

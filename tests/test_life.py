@@ -132,3 +132,25 @@ def test_unloaded_bearing_has_infinite_reference_life():
     q = np.zeros((14, 5))
     r = modified_reference_rating_life(65e3, 70e-3, 11e-3, q, q, 1.0, 0.5, 8e3)
     assert math.isinf(r.basic) and math.isinf(r.life) and r.life_modification == 50.0
+
+
+def test_worked_example_of_the_docs_is_what_the_library_gives():
+    """docs/bearing_life.md's worked example: its code blocks run, and the numbers its
+    comments and hand checks quote are the library's (to their printed digits)."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "bearing_life.md").read_text()
+    ns = {}
+    exec("\n".join(re.findall(r"```python\n(.*?)```", text, re.S)), ns)
+    quoted = {"L10": (ns["L10"], 386.71), "C0": (ns["C0"], 62823.2),
+              "kappa": (ns["kappa"], 1.4906), "a_iso": (ns["a_iso"], 1.6480),
+              "Lnm": (ns["Lnm"], 158.3), "s0p": (ns["s0p"], 5.909),
+              "Lnmr": (ns["r"].life, 328.4), "h": (ns["h"] * 1e6, 0.1760),
+              "lambda": (ns["lam"], 0.976), "op": (ns["op"] * 1e6, 14.651),
+              "L10r fitted": (ns["s2"].life_iso16281, 947.4),
+              "spectrum": (ns["d"].life, 192.50),
+              "couple": (float(ns["c"].tilting_moment.max()), 1.9247)}
+    for name, (value, doc) in quoted.items():
+        digits = len(repr(doc).split(".")[1])
+        assert round(float(value), digits) == doc, (name, value, doc)

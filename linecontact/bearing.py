@@ -88,6 +88,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._numerics import serial_blas
+from .models import DEFAULT_SLICE_MODEL, SLICE_MODELS
 from .profiles import TILT_RANGE
 from .raceway import Raceways, effective_radii, roller_between_raceways
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
@@ -109,8 +110,6 @@ __all__ = [
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
-#: Slices of a profiled roller in a bearing (converged to 0.1 % in its outputs) [-].
-N_SLICES = 40
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
 #: ISO 16281 constants relating the ring rolling-element rating Q_c to C_r:
@@ -674,8 +673,10 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the coupled-slice model, 10 <= n <= 1000 [-] (default 40: the bearing's
-        outputs converged to 0.1 %, docs/bearings.md).
+        Slices of the slice model, 10 <= n <= 1000 (ISO slicing: n >= 30) [-]
+        (default None: the model's, as in every other door,
+        :func:`linecontact.roller.solvers.default_n_slices`: 50 coupled slices, 30 ISO
+        slicing; the laminae of the rating life of a sliced roller are as many).
     azimuth0 : float, optional
         Azimuth psi_0 of the first roller from the load line, |psi_0| <= pi [rad]
         (default 0: a roller under the load).
@@ -712,11 +713,10 @@ class RadialRollerBearing:
     """
 
     def __init__(self, rollers, pitch_diameter, roller_diameter, length, clearance=0.0,
-                 *, estar=115.38e9, model=None, profile=None, n_slices=N_SLICES,
+                 *, estar=115.38e9, model=None, profile=None, n_slices=None,
                  azimuth0=0.0, rating=None, rotating="inner", poisson=0.3):
         from .models import available_models
         from .profiles import StraightProfile, as_profile
-        from .raceway import SLICE_MODELS
 
         self.rollers = _rollers(rollers)
         self.pitch_diameter = float(check_positive("pitch_diameter", pitch_diameter, "m"))
@@ -729,7 +729,8 @@ class RadialRollerBearing:
             "clearance", clearance, -D, D, low_open=True, high_open=True, unit="m",
             hint="the clearance must be smaller than the roller diameter"))
         self.estar = float(check_positive("estar", estar, "Pa"))
-        self.n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
+        if n_slices is not None:
+            n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
         self.azimuth0 = float(check_interval("azimuth0", azimuth0, -math.pi, math.pi,
                                              unit="rad"))
         if rotating not in ("inner", "outer"):
@@ -742,7 +743,7 @@ class RadialRollerBearing:
         self.profile = as_profile(profile, R1, self.length, self.estar)
         straight = isinstance(self.profile, StraightProfile)
         if model is None:
-            model = "universal" if straight else "profiled-roller"
+            model = "universal" if straight else DEFAULT_SLICE_MODEL
         if model not in available_models():
             raise UnknownNameError("model", model, available_models())
         if not straight and model not in SLICE_MODELS:
@@ -751,6 +752,12 @@ class RadialRollerBearing:
                                    "model='profiled-roller' (coupled slices)")
         self.model = model
         self.sliced = model in SLICE_MODELS
+        # the slice count of the slice model solving the rollers (a law's tilted twin:
+        # the default slice model's)
+        from .roller.solvers import default_n_slices
+
+        self.n_slices = (default_n_slices(model if self.sliced else DEFAULT_SLICE_MODEL)
+                         if n_slices is None else n_slices)
         # raceways: the inner one at (d_m - D)/2; the outer one leaves P_d/2 per side
         self.raceways = Raceways(inner=(self.pitch_diameter - D) / 2,
                                  outer=(self.pitch_diameter + D) / 2 + self.clearance / 2,
@@ -787,23 +794,23 @@ class RadialRollerBearing:
 
     def _contacts(self):
         """(solve at depth, solve at force) of the inner and the outer contact."""
-        from .roller import ProfiledRoller, iso_slicing
+        out = []
+        for c in self._solvers():
+            out.append((lambda d, c=c: c.at_depth(d, 0.0),
+                        lambda F, c=c: c.at_force(F, 0.0)))
+        return out
+
+    def _solvers(self):
+        """The slice solvers of the inner and the outer contact of one roller (fresh:
+        each keeps its own warm start), from the factory every door uses
+        (:func:`linecontact.roller.solvers.slice_solver`), as
+        :func:`~linecontact.raceway.roller_between_raceways` builds them."""
+        from .roller.solvers import slice_solver
 
         R1 = self.roller_diameter / 2
-        out = []
-        for R in effective_radii(R1, self.raceways.inner, self.raceways.outer):
-            if self.model == "profiled-roller":
-                c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                                   n_slices=self.n_slices)
-                out.append((lambda d, c=c: c.at_depth(d, tilt=0.0),
-                            lambda F, c=c: c.at_force(F, tilt=0.0)))
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                out.append((lambda d, a=args: iso_slicing(*a, depth=d, tilt=0.0,
-                                                          n_slices=self.n_slices),
-                            lambda F, a=args: iso_slicing(*a, force=F, tilt=0.0,
-                                                          n_slices=self.n_slices)))
-        return out
+        return [slice_solver(self.model, R, self.length, self.estar, self.profile,
+                             n_slices=self.n_slices)
+                for R in effective_radii(R1, self.raceways.inner, self.raceways.outer)]
 
     @staticmethod
     def _depth_table(at_depth, d_lo, d_top, F_top):
@@ -1197,29 +1204,10 @@ class RadialRollerBearing:
         """(at_depth(d, t) -> RollerSolution, first_contact_depth(t)) factories of the
         inner and the outer contact of one roller (fresh solvers: each keeps its own
         warm start)."""
-        from .roller import ProfiledRoller, iso_slicing
-
-        R1 = self.roller_diameter / 2
-        radii = effective_radii(R1, self.raceways.inner, self.raceways.outer)
-        pair = []
-        for R in radii:
-            c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                               n_slices=self.n_slices)
-            if self.model == "profiled-roller":
-                pair.append(c.at_depth)
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                pair.append(lambda d, t, a=args: iso_slicing(
-                    *a, depth=d, tilt=t, n_slices=self.n_slices))
-        if self.model == "profiled-roller":
-            return pair, c.first_contact_depth
-        # ISO slicing: first contact on its own slice centres (x_k tan theta)
-        from .profiles import roller_drop
-
-        L, n = self.length, self.n_slices
-        x = -L / 2 + L / n * (np.arange(n) + 0.5)
-        P = roller_drop(self.profile, L, x)
-        return pair, lambda t: float(np.min(P - x * math.tan(t)))
+        inner, outer = self._solvers()
+        # the first contact: the same for both (the profile and the slices), here the
+        # outer contact's (ISO slicing: on its slice centres, x_k tan theta)
+        return [inner.at_depth, outer.at_depth], outer.first_contact_depth
 
     def _solve_tilted(self, F, M, theta):
         r"""Ring displacement and tilt (M given) or displacement at a given tilt, every

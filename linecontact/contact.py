@@ -47,9 +47,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .models import ContactModel
+from .models import DEFAULT_SLICE_MODEL, SLICE_MODELS, ContactModel
 from .profiles import FREE_TILT, TILT_RANGE, CircularCrownProfile, as_profile, is_free_tilt
-from .raceway import SLICE_MODELS, Raceways, roller_between_raceways
+from .raceway import DEFAULT_STRAIGHT_MODEL, Raceways, roller_between_raceways
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
                        check_positive, out)
 
@@ -71,9 +71,9 @@ __all__ = [
 #: The tilt value asking for moment equilibrium.
 FREE = FREE_TILT
 #: Law used for a straight, aligned roller when no model is named.
-DEFAULT_LAW = "universal"
+DEFAULT_LAW = DEFAULT_STRAIGHT_MODEL
 #: Model used for a profiled or tilted roller when no model is named.
-DEFAULT_SLICES = "profiled-roller"
+DEFAULT_SLICES = DEFAULT_SLICE_MODEL
 
 
 def _radius(name, radius, diameter):
@@ -812,17 +812,20 @@ class Contact:
         return self._law
 
     def _slice_roller(self):
-        from .roller import ProfiledRoller
-        from .roller.slices import DEFAULT_N_SLICES
-
         if self.model != "profiled-roller":
             raise CombinationError({"model": self.model}, "the tangential and creep "
                                    "laws use the coupled-slice model; use "
                                    "model='profiled-roller'")
+        return self._solver()
+
+    def _solver(self):
+        """The single contact's slice solver (kept: coupled slices start each solve
+        from the last)."""
         if self._slices is None:
-            self._slices = ProfiledRoller(self.radius, self.roller.length, self.estar,
-                                          self.profile,
-                                          n_slices=self.n_slices or DEFAULT_N_SLICES)
+            from .roller.solvers import slice_solver
+
+            self._slices = slice_solver(self.model, self.radius, self.roller.length,
+                                        self.estar, self.profile, n_slices=self.n_slices)
         return self._slices
 
     def _fixed_tilt(self, what):
@@ -906,13 +909,7 @@ class Contact:
                      "x": why, "q": why})
 
     def _solve_one(self, force, depth):
-        from .roller import iso_slicing
-
-        if self.model == "iso16281-slicing":
-            return iso_slicing(self.radius, self.roller.length, self.estar, self.profile,
-                               force=force, depth=depth, tilt=self.tilt,
-                               n_slices=self.n_slices or 30)
-        r = self._slice_roller()
+        r = self._solver()
         if force is not None:
             return r.at_force(force, self.tilt)
         return r.at_depth(depth, self.tilt)
@@ -961,13 +958,7 @@ class Contact:
             model=self.model, notes=notes, reasons=reasons, solutions=sols)
 
     def _slice_first_contact(self, tilt):
-        if self.model == "profiled-roller":
-            return self._slice_roller().first_contact_depth(tilt)
-        from .profiles import roller_drop
-
-        L, n = self.roller.length, self.n_slices or 30
-        x = -L / 2 + L / n * (np.arange(n) + 0.5)
-        return float(np.min(roller_drop(self.profile, L, x) - x * math.tan(tilt)))
+        return self._solver().first_contact_depth(tilt)
 
     def _free_stiffness(self, s):
         """dF/dd: at the held tilt, or with the tilt free (M = 0 kept)."""
@@ -1258,15 +1249,13 @@ class Contact:
                                    "changes with the load: give the tilt as a number",
                                    unit={"misalignment": "rad"})
         th = self._fixed_tilt(what)
-        from .roller import ProfiledRoller
-        from .roller.slices import DEFAULT_N_SLICES
+        from .roller.solvers import slice_solver
 
         if self.model != "profiled-roller":
             raise CombinationError({"model": self.model}, "the creep laws use the "
                                    "coupled-slice model; use model='profiled-roller'")
-        return [_ApproachLaw(ProfiledRoller(R, self.roller.length, self.estar,
-                                            self.profile,
-                                            n_slices=self.n_slices or DEFAULT_N_SLICES), t,
+        return [_ApproachLaw(slice_solver(self.model, R, self.roller.length, self.estar,
+                                          self.profile, n_slices=self.n_slices), t,
                              self.model) for R, t in zip(radii, (th, psi - th))]
 
     def creep(self, time, *, force):

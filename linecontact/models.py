@@ -63,6 +63,8 @@ __all__ = [
     "scales_are_normal",
     "MODELS",
     "DEFAULT_MODEL",
+    "SLICE_MODELS",
+    "DEFAULT_SLICE_MODEL",
     "register",
     "get_model",
     "available_models",
@@ -89,6 +91,11 @@ DEFINED_IN = {
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
+#: Models that solve a profiled, tilted roller by slices; each one's solver of a
+#: contact comes from :func:`linecontact.roller.solvers.slice_solver`.
+SLICE_MODELS = ("profiled-roller", "iso16281-slicing")
+#: Model used for a profiled or tilted roller unless told otherwise (coupled slices).
+DEFAULT_SLICE_MODEL = "profiled-roller"
 
 
 def register(cls):

@@ -63,6 +63,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .models import DEFAULT_MODEL, DEFAULT_SLICE_MODEL, SLICE_MODELS
 from .profiles import TILT_RANGE, is_free_tilt
 from .validity import (CombinationError, Interval, OutOfRangeError, UnknownNameError,
                        check_positive, out)
@@ -81,12 +82,8 @@ __all__ = [
 FIT_TOLERANCE = 0.01
 #: Fit tolerances accepted [-].
 FIT_TOLERANCE_RANGE = Interval("fit_tolerance", 0.0, 0.5, low_open=False, high_open=True)
-#: Contact models that solve a profiled, tilted roller by slices (key -> method).
-SLICE_MODELS = ("profiled-roller", "iso16281-slicing")
 #: The law used for a straight, aligned roller when no model is named.
-DEFAULT_STRAIGHT_MODEL = "universal"
-#: The law used for a profiled or tilted roller when no model is named.
-DEFAULT_SLICE_MODEL = "profiled-roller"
+DEFAULT_STRAIGHT_MODEL = DEFAULT_MODEL
 
 
 def _one_of(name, value, given):
@@ -563,27 +560,16 @@ def _force_at_deflection(mi, mo, delta):
     return res.reshape(delta.shape)
 
 
-def _slice_solver(model, R_eff, L, E, prof, n_slices):
-    """force(F, tilt) -> RollerSolution of one contact, for a slice model."""
-    from .roller import ProfiledRoller, iso_slicing
-    from .roller.slices import DEFAULT_N_SLICES
-
-    if model == "profiled-roller":
-        roller = ProfiledRoller(R_eff, L, E, prof, n_slices=DEFAULT_N_SLICES
-                                if n_slices is None else n_slices)
-        return roller.at_force
-    n = 30 if n_slices is None else n_slices
-    return lambda F, tilt: iso_slicing(R_eff, L, E, prof, force=F, tilt=tilt, n_slices=n)
-
-
 def _slice_solution(model, R_in, R_out, L, E, prof, force, deflection, th, psi,
                     n_slices, clearance):
     if np.ndim(force) or np.ndim(deflection):
         raise CombinationError({"model": model, "force": "an array"},
                                "a slice model solves one load at a time; loop over "
                                "the loads")
-    inner = _slice_solver(model, R_in, L, E, prof, n_slices)
-    outer = _slice_solver(model, R_out, L, E, prof, n_slices)
+    from .roller.solvers import slice_solver
+
+    inner = slice_solver(model, R_in, L, E, prof, n_slices=n_slices).at_force
+    outer = slice_solver(model, R_out, L, E, prof, n_slices=n_slices).at_force
     free = th is None
 
     def at(F, t):

@@ -49,7 +49,8 @@ import numpy as np
 
 from .models import DEFAULT_SLICE_MODEL, SLICE_MODELS, ContactModel
 from .profiles import FREE_TILT, TILT_RANGE, CircularCrownProfile, as_profile, is_free_tilt
-from .raceway import DEFAULT_STRAIGHT_MODEL, Raceways, roller_between_raceways
+from .raceway import (DEFAULT_STRAIGHT_MODEL, Raceways, effective_radius,
+                      roller_between_raceways)
 from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
                        check_positive, out)
 
@@ -208,7 +209,7 @@ class Convex:
 
     def effective_radius(self, roller_radius):
         """R = 1/(1/R1 + 1/R2) [m]."""
-        return 1.0 / (1.0 / roller_radius + 1.0 / self.radius)
+        return effective_radius(roller_radius, self.radius)
 
 
 @dataclass(frozen=True, init=False)
@@ -251,7 +252,7 @@ class Concave:
                                    "the roller does not fit inside the concave body "
                                    "(its radius must exceed the roller's)",
                                    unit={"radius": "m", "radius2": "m"})
-        return 1.0 / (1.0 / roller_radius - 1.0 / self.radius)
+        return effective_radius(roller_radius, -self.radius)
 
 
 @dataclass(frozen=True, init=False)

@@ -72,6 +72,7 @@ __all__ = [
     "Raceways",
     "RacewaySolution",
     "effective_radii",
+    "effective_radius",
     "check_fit",
     "roller_between_raceways",
     "FIT_TOLERANCE",
@@ -170,6 +171,43 @@ class Raceways:
         return check_fit(roller_radius, self.inner, self.outer, self.fit_tolerance)
 
 
+def effective_radius(roller_radius, counter_radius):
+    r"""Effective radius of two parallel cylinders in line contact (Hertz's reduction).
+
+    .. math:: \frac{1}{R} = \frac{1}{R_1} + \frac{1}{R_2}
+
+    with R_2 > 0 for a convex counter-body (an inner raceway), R_2 < 0 for a concave one
+    (an outer raceway, |R_2| > R_1) and R_2 = inf for a flat.
+
+    Parameters
+    ----------
+    roller_radius : float or array_like
+        Roller radius R1 [m].
+    counter_radius : float or array_like
+        Signed radius R2 of the counter-body [m] (negative: concave).
+
+    Returns
+    -------
+    float or ndarray
+        R [m], elementwise (nan where an input is nan; the inputs are not checked:
+        :func:`effective_radii` is the checked door).
+
+    Notes
+    -----
+    Valid for parallel axes and a contact half-width b << R (Hertz), 0 < R1 < |R2|.
+
+    Examples
+    --------
+    >>> f"{effective_radius(5e-3, 20e-3) * 1e3:.4f} mm"
+    '4.0000 mm'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 4.2.
+    """
+    return 1 / (1 / roller_radius + 1 / counter_radius)
+
+
 def effective_radii(roller_radius, inner_radius, outer_radius):
     r"""Effective radii of a roller's contacts with an inner and an outer raceway.
 
@@ -214,7 +252,7 @@ def effective_radii(roller_radius, inner_radius, outer_radius):
              "outer_radius": float(np.atleast_1d(Ro)[i] if np.ndim(Ro) else Ro)},
             "the roller does not fit inside the outer raceway (Ro must exceed R1)",
             unit={"roller_radius": "m", "outer_radius": "m"})
-    return out(1.0 / (1.0 / R1 + 1.0 / Ri)), out(1.0 / (1.0 / R1 - 1.0 / Ro))
+    return out(effective_radius(R1, Ri)), out(effective_radius(R1, -Ro))
 
 
 def check_fit(roller_radius, inner_radius, outer_radius, tolerance=FIT_TOLERANCE):

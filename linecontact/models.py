@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import abc
 import math
-import os
 import sys
 from importlib import import_module
 
@@ -49,10 +48,11 @@ import numpy as np
 
 from . import classical as _c
 from ._numerics import blockwise
+from .accuracy import MODEL_ACCURACY, model_accuracy
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import available_tables, read_table, table_path
+from .tables import available_tables
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
 from .validity import (OutOfRangeError, UnknownKeywordError, UnknownNameError,
                        check_flag, check_interval, check_positive, check_scaled, document,
@@ -1189,27 +1189,14 @@ class UniversalModel(ContactModel):
 
 
 # --------------------------------------------------------------------------------------
-ACCURACY_TABLE = "model_accuracy"
+ACCURACY_TABLE = MODEL_ACCURACY
 _NOT_APPLICABLE, _NO_ANSWER = 98.0, 99.0   # flags of tables/model_accuracy.csv
-_ACCURACY_CACHE: dict = {}
-
-
-def _accuracy_table():
-    """tables/model_accuracy.csv, read once per file version; None if absent."""
-    try:
-        path = table_path(ACCURACY_TABLE)
-    except FileNotFoundError:
-        return None
-    key = (str(path), os.stat(path).st_mtime_ns)
-    if key not in _ACCURACY_CACHE:
-        _ACCURACY_CACHE[key] = read_table(ACCURACY_TABLE)
-    return _ACCURACY_CACHE[key]
 
 
 def _measured_error(tag, length_over_radius):
     """Text: range of the measured F and k errors of model `tag` at the study's L/R
     rows bracketing `length_over_radius` (see :attr:`ContactModel.measured_error`)."""
-    table = _accuracy_table()
+    table = model_accuracy()
     if table is None:
         return (f"not measured: tables/{ACCURACY_TABLE}.csv is missing "
                 "(python -m tools.build_tables accuracy)")

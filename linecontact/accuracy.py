@@ -15,7 +15,7 @@ solution each:
 Each is read once per file version (a rebuilt table is read again) and parsed here; a
 missing table or field gives None, and its users say "not measured". The header fields
 are ``lo, hi`` ranges, comma-separated names, or comma-separated ``name value`` errors
-(:func:`range_field`, :func:`names_field`, :func:`errors_field`).
+(read by this module's ``_range_field``, ``_names_field``, ``_errors_field``).
 """
 from __future__ import annotations
 
@@ -28,9 +28,6 @@ __all__ = [
     "model_accuracy",
     "roller_coverage",
     "stress_coverage",
-    "range_field",
-    "names_field",
-    "errors_field",
 ]
 
 #: Table stems (tables/<stem>.csv) of the three accuracy studies.
@@ -63,35 +60,35 @@ def _read(stem, parse=None):
     return _CACHE[key]
 
 
-def range_field(meta, key):
+def _range_field(meta, key):
     """A header field ``lo, hi`` as the pair of floats (lo, hi).
 
     Examples
     --------
-    >>> range_field({"covered_l_over_d": "1.4, 3"}, "covered_l_over_d")
+    >>> _range_field({"covered_l_over_d": "1.4, 3"}, "covered_l_over_d")
     (1.4, 3.0)
     """
     lo, hi = (float(v) for v in meta[key].split(","))
     return lo, hi
 
 
-def names_field(meta, key):
+def _names_field(meta, key):
     """A header field ``a, b, c`` as the tuple of names ('a', 'b', 'c').
 
     Examples
     --------
-    >>> names_field({"covered_profiles": "circular, iso16281"}, "covered_profiles")
+    >>> _names_field({"covered_profiles": "circular, iso16281"}, "covered_profiles")
     ('circular', 'iso16281')
     """
     return tuple(k.strip() for k in meta[key].split(","))
 
 
-def errors_field(meta, key):
+def _errors_field(meta, key):
     """A header field ``name value, name value`` as {name: value} [-].
 
     Examples
     --------
-    >>> errors_field({"e": "depth 0.0003, moment 0.002"}, "e")
+    >>> _errors_field({"e": "depth 0.0003, moment 0.002"}, "e")
     {'depth': 0.0003, 'moment': 0.002}
     """
     return {k: float(v) for k, v in (item.split() for item in meta[key].split(","))}
@@ -105,23 +102,29 @@ def model_accuracy():
     linecontact.tables.Table or None
         Columns ``L_over_R``, ``d_over_R``, ``F_err_<tag>``, ``k_err_<tag>`` [-]
         (98: the law does not apply, 99: no answer); None if the table is absent.
+
+    Examples
+    --------
+    >>> t = model_accuracy()
+    >>> float(t.columns["L_over_R"].min()), float(t.columns["L_over_R"].max())
+    (0.1, 20.0)
     """
     return _read(MODEL_ACCURACY)
 
 
 def _roller(meta):
     return dict(
-        l_over_d=range_field(meta, "covered_l_over_d"),
-        line_load=range_field(meta, "covered_line_load_over_estar_d"),
-        given_tilt=range_field(meta, "covered_given_tilt_rad"),
-        free_tilt=range_field(meta, "covered_free_tilt_rad"),
-        tilt_drop=range_field(meta, "covered_tilt_drop_over_approach"),
-        profiles=names_field(meta, "covered_profiles"),
+        l_over_d=_range_field(meta, "covered_l_over_d"),
+        line_load=_range_field(meta, "covered_line_load_over_estar_d"),
+        given_tilt=_range_field(meta, "covered_given_tilt_rad"),
+        free_tilt=_range_field(meta, "covered_free_tilt_rad"),
+        tilt_drop=_range_field(meta, "covered_tilt_drop_over_approach"),
+        profiles=_names_field(meta, "covered_profiles"),
         # optional (tables before issue 20 lack it): None, not measured
-        end_gap=(range_field(meta, "covered_infinite_end_gap_over_length")
+        end_gap=(_range_field(meta, "covered_infinite_end_gap_over_length")
                  if "covered_infinite_end_gap_over_length" in meta else None),
-        off=errors_field(meta, "runtime_error_off_ends"),
-        edge=errors_field(meta, "runtime_error_edge_loaded"))
+        off=_errors_field(meta, "runtime_error_off_ends"),
+        edge=_errors_field(meta, "runtime_error_edge_loaded"))
 
 
 def roller_coverage():
@@ -135,18 +138,23 @@ def roller_coverage():
         ``tilt_drop``, ``end_gap`` (or None) as (lo, hi); ``profiles`` (names);
         ``off`` and ``edge``: {output: largest relative error} off the ends and edge
         loaded. None if the table or a field is missing.
+
+    Examples
+    --------
+    >>> roller_coverage()["l_over_d"]
+    (1.4, 3.0)
     """
     return _read(ROLLER_ACCURACY, _roller)
 
 
 def _stress(meta):
-    errs = {key: errors_field(meta, key) for key in meta
+    errs = {key: _errors_field(meta, key) for key in meta
             if key.startswith(("error_", "slice_error_"))}
-    return dict(l_over_d=range_field(meta, "covered_l_over_d"),
-                line_load=range_field(meta, "covered_line_load_over_estar_d"),
-                tilt=range_field(meta, "covered_tilt_rad"),
-                friction=range_field({"f": meta.get("covered_friction", "0, 0")}, "f"),
-                profiles=names_field(meta, "covered_profiles"),
+    return dict(l_over_d=_range_field(meta, "covered_l_over_d"),
+                line_load=_range_field(meta, "covered_line_load_over_estar_d"),
+                tilt=_range_field(meta, "covered_tilt_rad"),
+                friction=_range_field({"f": meta.get("covered_friction", "0, 0")}, "f"),
+                profiles=_names_field(meta, "covered_profiles"),
                 errors=errs)
 
 
@@ -161,5 +169,11 @@ def stress_coverage():
         (lo, hi); ``profiles`` (names); ``errors``: {field: {measure: largest relative
         error}} for each ``error_*`` and ``slice_error_*`` field. None if the table or
         a field is missing.
+
+    Examples
+    --------
+    >>> c = stress_coverage()
+    >>> c["l_over_d"], c["errors"]["error_3d_off_ends"]["tresca"]
+    ((1.4, 3.0), 0.00583)
     """
     return _read(STRESS_ACCURACY, _stress)

@@ -177,3 +177,8 @@ def stress_coverage():
     ((1.4, 3.0), 0.00583)
     """
     return _read(STRESS_ACCURACY, _stress)
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md).
+from .validity import refuse_unknown_keywords  # noqa: E402
+refuse_unknown_keywords(globals())

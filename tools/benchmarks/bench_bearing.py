@@ -4,8 +4,8 @@ Cases (issue targets: 20 straight rollers under 50 ms, 20 profiled under 1 s):
 ``straight``  Z = 20, d_m = 100 mm, D = L = 10 mm, zero clearance, F_r = 10 kN, the
               universal curve (the default law);
 ``iso``       the same with the ISO/TS 16281 spring law;
-``profiled``  the same rollers crowned (circular:Rc=0.5, 40 slices, the bearing's
-              default), the coupled-slice model;
+``profiled``  the same rollers crowned (circular:Rc=0.5, 50 slices, the coupled
+              slices' default in every door), the coupled-slice model;
 ``profiled_tilt``    the crowned rollers at a misalignment of 1 mrad (1 DOF);
 ``profiled_moment``  the crowned rollers under a tilting moment of 10 N m (2 DOF);
 ``iso_profile_tilt`` rollers of the ISO 16281 logarithmic profile at 1 mrad;

@@ -424,7 +424,7 @@ def log1p_excess_root(t, *, checked=True):
 #: Elements per block of :func:`blockwise`: 16384 float64 (128 kB) keep a dozen
 #: temporaries of an elementwise chain in the CPU's L2 cache, where whole-array
 #: temporaries of 1e6 elements each go through main memory (measured: the same
-#: operations 2-3 times faster in blocks, tools/benchmarks/bench_models.py).
+#: operations 2-3 times faster in blocks, docs/history.md, "Model evaluation").
 BLOCK = 16384
 
 

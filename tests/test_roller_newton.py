@@ -19,7 +19,7 @@ from linecontact.roller import slices as sl
 E = 115.385e9
 D, L = 10e-3, 14e-3
 ISO = "iso16281:D=10mm"
-F = 4200.0                      # tools/benchmarks/bench_roller_speed's case
+F = 4200.0                      # the `roller` benchmark's case (tools/benchmarks/suite.py)
 
 
 def _steps(monkeypatch):

@@ -191,7 +191,7 @@ def c_engine():
     """The C engine (:mod:`linecontact.roller._cengine`, over the extension
     ``_ckernels`` built at install), or None where it does not import (not built: no C
     compiler at install; built for another Python). Tried once per process; importing
-    it costs 1-3 ms (tools/benchmarks/README.md, "Round 7")."""
+    it costs a few ms (docs/profiled_rollers.md, "Engines")."""
     if not _C_ENGINE:
         from . import _cengine
         _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
@@ -320,8 +320,8 @@ def _fraction_to_boundary(qs, cs, dq, dc):
 #: largest, c R, d and the tilt's travel over the largest overlap) is at most
 #: NEWTON_C times :func:`newton_error` of the step. Measured over the 104 cases of
 #: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
-#: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
-#: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
+#: 16281 case of the `roller` benchmark (tools/benchmarks/suite.py; every full step of
+#: every solve against the converged state, docs/history.md, "Profiled-roller solve"): at
 #: most 10.7 times (either engine, the same step at the rounding floor), so 100 leaves a margin
 #: of about ten; the returned state is then within the tolerance of the converged one.
 NEWTON_C = 100.0
@@ -374,8 +374,8 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
 #: linear solve on the grid of the last: over the 104 cases of
 #: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
 #: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4; measured
-#: while the end refinement still restarted from the loads, tools/benchmarks/README.md,
-#: "Round 5"); the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt
+#: while the end refinement still restarted from the loads, docs/history.md,
+#: "Profiled-roller solve"); the ISO 16281 case of the `roller` benchmark at a free tilt
 #: takes 4 steps after 3 sweeps, 8 after 2.
 START_SWEEPS = 3
 #: The sweeps of a cold start but the last run on START_COARSE times fewer slices
@@ -384,8 +384,8 @@ START_SWEEPS = 3
 #: and dense solves cost about a quarter. Over the 104 cases of
 #: tables/roller_accuracy.csv 840 Newton steps instead of 827 and 2112 dense solves
 #: instead of 2160, CPU within 1-3 % (faster); the ISO 16281 case of
-#: tools/benchmarks/bench_roller_speed the same 6 and 4 steps, 3-7 % less CPU
-#: (tools/benchmarks/README.md, "Round 5, last step"). Results move within the
+#: the `roller` benchmark the same 6 and 4 steps, 3-7 % less CPU (docs/history.md,
+#: "Profiled-roller solve"). Results move within the
 #: Newton tolerance (2e-11 of the stiffness, 1e-12 elsewhere).
 START_COARSE = 2
 

@@ -3,7 +3,8 @@
     OPENBLAS_NUM_THREADS=1 nice -n 10 python -m tools.benchmarks.bench_corner_sums
 
 The corners are those of real slices (linecontact.stresses._corners_many of the ISO
-16281 roller of bench_roller_speed.py at 4200 N and 2 mrad tilt, its loaded slices);
+16281 roller of the `roller` benchmark, tools/benchmarks/suite.py, at 4200 N and 2 mrad
+tilt, its loaded slices);
 the points n = 3, 16, 32, 48 across each slice at depths 0.3-1.2 b (where the 3D
 correction's search evaluates them). Each evaluation is timed (time.process_time, the
 best of ``--repeat`` of a loop of calls, C and numpy in turn) for the C extension
@@ -24,7 +25,7 @@ import numpy as np
 import linecontact
 from linecontact import stresses as st
 from linecontact.roller import ProfiledRoller
-from tools.benchmarks.bench_roller_speed import D, ESTAR, FORCE, L, TILT
+from tools.benchmarks.suite import D, ESTAR, FORCE, L, TILT
 from tools.studies.roller_study import make_profile
 
 REPO = Path(__file__).resolve().parents[2]

@@ -11,7 +11,7 @@ from ..models import ContactModel, register
 from ..profiles import as_profile
 from ..validity import check_positive, out
 from .slices import TILT_RANGE
-from .solvers import default_n_slices, slice_solver
+from .solvers import DEFAULT_SLICES, slice_solver
 
 __all__ = ["ProfiledRollerModel", "ISOSlicingModel"]
 
@@ -328,8 +328,8 @@ class ProfiledRollerModel(_SolvedRoller):
     tilt : float, optional
         Tilt theta [rad], held fixed (default 0).
     n_slices : int, optional
-        Number of slices [-] (default None: 50, the coupled slices' default,
-        :func:`~linecontact.roller.solvers.default_n_slices`).
+        Number of slices [-] (default 50, the coupled slices' default,
+        :data:`~linecontact.roller.solvers.DEFAULT_SLICES`).
 
     Notes
     -----
@@ -360,7 +360,8 @@ class ProfiledRollerModel(_SolvedRoller):
     _slices = "coupled slices"
     _onset_power = 1.5          # a crowned roller starts as a point contact, F ~ d^(3/2)
 
-    def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=None):
+    def __init__(self, radius, length, estar, profile=None, tilt=0.0,
+                 n_slices=DEFAULT_SLICES["profiled-roller"]):
         super().__init__(radius, length, estar, tilt)
         self.roller = slice_solver(self.key, self.radius, self.length, self.estar,
                                    profile, n_slices=n_slices)
@@ -452,8 +453,8 @@ class ISOSlicingModel(_SolvedRoller):
     tilt : float, optional
         Tilt theta [rad] (default 0).
     n_slices : int, optional
-        n >= 30 [-] (default None: 30, ISO 16281's,
-        :func:`~linecontact.roller.solvers.default_n_slices`).
+        n >= 30 [-] (default 30, ISO 16281's,
+        :data:`~linecontact.roller.solvers.DEFAULT_SLICES`).
 
     Notes
     -----
@@ -475,9 +476,10 @@ class ISOSlicingModel(_SolvedRoller):
 
     _name = "ISO 16281 slicing"
 
-    def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=None):
+    def __init__(self, radius, length, estar, profile=None, tilt=0.0,
+                 n_slices=DEFAULT_SLICES["iso16281-slicing"]):
         super().__init__(radius, length, estar, tilt)
-        self.n_slices = default_n_slices(self.key) if n_slices is None else n_slices
+        self.n_slices = n_slices
         self.axial_profile = as_profile(profile, self.radius, self.length, self.estar)
 
     @property

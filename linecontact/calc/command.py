@@ -87,7 +87,7 @@ class Command:
         """Solve every good row (the module's ``solve``); a refusal of the library is
         the row's error (one line), any other exception too, never lost."""
         from .._units import InputError
-        from ..validity import CombinationError, OutOfRangeError, UnknownNameError
+        from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 
         n = cases.n
         res = CommandResults(n, errors, cases)

@@ -143,7 +143,7 @@ def command_frame(command, cases, **options):
 
     by_name = {m.name: m for m in SUBCOMMANDS}
     if command not in by_name:
-        from ..validity import UnknownNameError
+        from ..errors import UnknownNameError
         raise UnknownNameError("command", command, sorted(by_name))
     table = Command(by_name[command])
     _check_frame(cases, table.parameters, "command_frame", ["command", "cases"], options)
@@ -158,7 +158,7 @@ def _check_frame(cases, parameters, func, keywords, options):
     known = {p.name for p in parameters}
     unknown = sorted(set(options) - known)
     if unknown:
-        from ..validity import UnknownKeywordError
+        from ..errors import UnknownKeywordError
         raise UnknownKeywordError(func, unknown[0], [*keywords, *sorted(known)])
     if len(cases) == 0:
         raise ValueError("cases: the DataFrame has no rows; expected one case per row")

@@ -148,7 +148,7 @@ def hardness_of(v, P, fail, on):
     fail(some & P["hardness_profile"], "hardness_profile",
          f"either {label('hardness_profile')} or {three}", "conflicts")
     hardness = [None] * n
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
     from ...stresses import HardnessProfile
     for i in np.flatnonzero(on & (some | P["hardness_profile"])):
         try:
@@ -177,8 +177,8 @@ def _read_profile(path):
 
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
+    from ...errors import OutOfRangeError
     from ...stresses import line_contact_stresses, roller_stresses
-    from ...validity import OutOfRangeError
 
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
@@ -223,7 +223,7 @@ _NO_CHD = "CHD min: none, the stress exceeds the allowable of the surface hardne
 def _case(s, hardness):
     """(CaseCheck or None, flag text) of one contact's stresses."""
     from ...stresses import case_check
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
 
     try:
         c = case_check(s, hardness)

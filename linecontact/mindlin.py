@@ -340,8 +340,8 @@ def slip_shift(tangential_force, normal_force, friction, stiffness):
     q, sign, mu, P = _load_fraction(tangential_force, normal_force, friction)
     k = check_positive("stiffness", stiffness, "N/m")
     # 1 - (1 - q)^(2/3) without cancellation at small q
-    return out(sign * 1.5 * mu * P / k * -np.expm1(np.log1p(-np.minimum(q, 1.0 - 1e-300))
-                                                  * (2.0 / 3.0)))
+    with np.errstate(divide="ignore"):      # q = 1: log1p(-1) = -inf, expm1 -> -1
+        return out(sign * 1.5 * mu * P / k * -np.expm1(np.log1p(-q) * (2.0 / 3.0)))
 
 
 def slip_force(shift, normal_force, friction, stiffness, *, beyond="raise"):
@@ -398,8 +398,8 @@ def slip_force(shift, normal_force, friction, stiffness, *, beyond="raise"):
                               f"|shift| <= delta* = {float(np.max(ustar)):.6g} m", unit="m",
                               hint="beyond gross slip the contact slides at mu P; "
                                    "beyond='saturate' returns that force")
-    x = np.minimum(x, 1.0)
-    return out(np.sign(u) * mu * P * -np.expm1(1.5 * np.log1p(-np.minimum(x, 1.0))))
+    with np.errstate(divide="ignore"):      # gross slip: log1p(-1) = -inf
+        return out(np.sign(u) * mu * P * -np.expm1(1.5 * np.log1p(-np.minimum(x, 1.0))))
 
 
 def stick_fraction(tangential_force, normal_force, friction):

@@ -55,10 +55,11 @@ runs it (plus the flat-punch stiffness solve at every step).
 Run from the repository root, in an environment that has contactmechanics
 (``pip install contactmechanics`` -- only for this benchmark)::
 
-    python tools/benchmarks/bench_contactmechanics.py --n 128     # ~30 s
-    python tools/benchmarks/bench_contactmechanics.py             # 512 x 512, L/R = 5
+    python -m tools.benchmarks contactmechanics     # 128 x 128, the runner
+    python tools/benchmarks/contactmechanics.py             # 512 x 512, L/R = 5
 
-Results go to tools/benchmarks/results/contactmechanics_<n>[_lr<L/R>].txt.
+The report goes to tools/benchmarks/results/contactmechanics.txt (the current record,
+whichever grid; ``--no-save`` to keep it).
 """
 from __future__ import annotations
 
@@ -249,7 +250,7 @@ def main(argv=None):
                                             args.d_max_over_r)
     say("# finite-cylinder sweep: ContactMechanics vs tools.bem.cylinder.sweep")
     say(f"# {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; command: "
-        f"python tools/benchmarks/bench_contactmechanics.py "
+        f"python tools/benchmarks/contactmechanics.py "
         + " ".join(argv if argv is not None else sys.argv[1:]))
     say(f"# L/R = {args.l_over_r:g}, grid {nx} x {ny} (dx = {dx:.4g} R, dy = {dy:.4g} R),"
         f" {args.steps} steps to d = {args.d_max_over_r:g} R, tol = {args.tol:g},"
@@ -338,8 +339,7 @@ def main(argv=None):
 
     if not args.no_save:
         RESULTS.mkdir(exist_ok=True)
-        suffix = "" if args.l_over_r == 5.0 else f"_lr{args.l_over_r:g}"
-        name = f"contactmechanics_{nx}" + ("" if nx == ny else f"x{ny}") + suffix + ".txt"
+        name = "contactmechanics.txt"         # the one current record (grid in its header)
         (RESULTS / name).write_text(out.getvalue())
         print(f"# saved {RESULTS / name}")
 

@@ -685,7 +685,7 @@ class RadialRollerBearing:
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
     poisson : float, optional
-        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu <= 0.5 [-]
         (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
 
     Notes
@@ -735,8 +735,7 @@ class RadialRollerBearing:
         if rotating not in ("inner", "outer"):
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
-        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5,
-                                            high_open=True))
+        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5))
         self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)

@@ -123,7 +123,7 @@ def _check_material(friction, poisson):
     mu = float(check_interval("friction", friction, 0.0, _MU_MAX, unit="",
                               hint="mu is the coefficient of the sliding traction mu p "
                                    "in +y; for traction in -y mirror y"))
-    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5))
     return mu, nu
 
 
@@ -249,7 +249,7 @@ def strip_stresses(y, z, half_width, peak_pressure, friction=0.0, poisson=0.3):
     friction : float, optional
         Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio of the body, 0 <= nu < 0.5 [-] (only sigma_x depends on it).
+        Poisson's ratio of the body, 0 <= nu <= 0.5 [-] (only sigma_x depends on it).
 
     Returns
     -------
@@ -303,7 +303,7 @@ class StripMaxima:
 
     Notes
     -----
-    Valid for 0 <= mu <= 1, 0 <= nu < 0.5.
+    Valid for 0 <= mu <= 1, 0 <= nu <= 0.5.
 
     Examples
     --------
@@ -367,7 +367,7 @@ def strip_maxima(friction=0.0, poisson=0.3):
     friction : float, optional
         Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -376,7 +376,7 @@ def strip_maxima(friction=0.0, poisson=0.3):
 
     Notes
     -----
-    Valid for 0 <= mu <= 1, 0 <= nu < 0.5. Without friction the orthogonal shear has
+    Valid for 0 <= mu <= 1, 0 <= nu <= 0.5. Without friction the orthogonal shear has
     two mirror maxima (+-y); the one at y > 0 is returned.
 
     Examples
@@ -624,7 +624,7 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
     friction : float, optional
         Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -679,7 +679,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     friction : float, optional
         Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
     roller : ProfiledRoller, optional
         The model that produced `solution`: with it the note also checks L/D, the
         mean line load and the profile against the measured range.
@@ -1015,7 +1015,7 @@ def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
     dx, dy : float
         Rectangle sides [m].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -1041,7 +1041,7 @@ def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
     A. E. H. Love, Phil. Trans. R. Soc. A 228 (1929) 377-420; K. L. Johnson, Contact
     Mechanics (1985), section 3.2.
     """
-    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5))
     check_positive("dx", dx, "m")
     check_positive("dy", dy, "m")
     x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))

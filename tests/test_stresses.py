@@ -636,3 +636,42 @@ def test_3d_search_finds_the_worst_near_the_ends():
         th = float(rng.uniform(5e-4, 2.5e-3))
         sol = roller_contact(5e-3, L, ESTAR, make_profile(prof, L), force=f, tilt=th)
         _check_search(sol, f"{prof} L={L} {f:.0f} N {th:.2e} rad")
+
+
+# ---- incompressible bodies (nu = 0.5: PDMS, rubber) -----------------------------------
+@pytest.mark.parametrize("mu", [0.0, 0.2])
+def test_incompressible_strip_von_mises_is_root3_tresca(mu):
+    """At nu = 0.5 the plane-strain sigma_x = (sigma_y + sigma_z)/2 is the mean of the
+    in-plane principal stresses, so von Mises = sqrt(3) Tresca at every point and at
+    the maximum (rtol 1e-12; McEwen's strip formulas hold at nu = 0.5: no 1 - 2 nu
+    divides them); frictionless, Tresca's maximum is 0.300 p0 at z = 0.786 b whatever nu
+    (Johnson 1985, section 4.2)."""
+    s = line_contact_stresses(200.0, 5e-3, 20e-3, 3e6, friction=mu, poisson=0.5)
+    p0 = float(s.peak_pressure[0])
+    assert s.worst["von_mises"]["value"] == pytest.approx(
+        np.sqrt(3) * s.worst["tresca"]["value"], rel=1e-12)
+    y, z = np.meshgrid(np.linspace(-2, 2, 9) * 1e-4, np.linspace(0.1, 2, 7) * 1e-4)
+    f = strip_stresses(y, z, 1e-4, 1e6, mu, 0.5)
+    assert f.measure("von_mises") == pytest.approx(np.sqrt(3) * f.measure("tresca"),
+                                                    rel=1e-12)
+    if mu == 0.0:
+        assert s.worst["tresca"]["value"] / p0 == pytest.approx(0.3004, abs=2e-4)
+
+
+def test_incompressible_stresses_are_the_limit_nu_to_one_half():
+    """nu = 0.5 is accepted by the strip, Love's rectangle and the 3D-corrected roller
+    stresses, and gives their limit nu -> 0.5 (the formulas are linear in nu: a step
+    of 1e-9 moves them by O(1e-9); asserted rtol 1e-7)."""
+    from linecontact.stresses import rectangle_stresses
+
+    a = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5)
+    b = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5 - 1e-9)
+    for k in a:
+        assert float(a[k]) == pytest.approx(float(b[k]), rel=1e-7, abs=1e-12), k
+    sol = ProfiledRoller(5e-3, 20e-3, 3e6, "circular:Rc=0.5", n_slices=30).at_force(1.0)
+    r = roller_stresses(sol, poisson=0.5)
+    q = roller_stresses(sol, poisson=0.5 - 1e-9)
+    for m in MEASURES:
+        assert r.worst[m]["value"] == pytest.approx(q.worst[m]["value"], rel=1e-7), m
+    with pytest.raises(OutOfRangeError, match="poisson = 0.51"):
+        strip_maxima(0.0, 0.51)

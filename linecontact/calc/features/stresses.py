@@ -171,6 +171,10 @@ def columns(model, rows, normal, state):
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
+        if s.withheld:    # an edge-loaded roller: slice-width numbers, "-" and why
+            flags[j] = "; ".join(t for t in (flags[j], "stress maxima and case check "
+                                 "not reported: " + s.withheld[_MEASURES[0]]) if t)
+            continue
         for m in _MEASURES:
             out[f"{m}_max"][j] = s.worst[m]["value"]
             out[f"{m}_depth"][j] = s.worst[m]["z"]

@@ -1099,8 +1099,8 @@ class Contact:
         :mod:`linecontact.tangential` (exact at nu = 0 for any shape). |Q| > mu F is
         gross slip: the shift is None with the reason. A shift beyond u* is refused.
         For an elongated contact the MDR's ratio is direction-free, which it is not:
-        for a crowned roller with a/b = 12 it is 8.7 % below Mindlin's across and
-        8.6 % above along (docs/tangential.md); Mindlin's k_t here is the slices'
+        for a crowned roller with a/b = 12 it is 8.6 % below Mindlin's across and
+        8.6 % above along (its notes say so); Mindlin's k_t here is the slices'
         k_n times Mindlin's ratio, within 0.05 % of Mindlin's closed form at 20 to 80
         slices (tests/test_contact_mindlin.py). Other profiles (logarithmic, end
         relief) keep the MDR's ratio; for them its error is not measured.
@@ -1168,9 +1168,10 @@ class Contact:
         F = np.asarray(n.force, dtype=float)
         r = float(tg.SHEAR_RATIO.check(self.gstar / self.estar, name="gstar/estar"))
         shear = r
-        notes = ()
         if method == "mindlin":
             r, notes = self._mindlin_ratio(F, direction, r)
+        else:
+            notes = self._mdr_notes(law, e, r)
         kt = out(r * np.asarray(n.stiffness))
         ustar = out(mu * e / r)
         rkw = {} if method == "mdr" else {"ratio": r}
@@ -1221,6 +1222,38 @@ class Contact:
             gross_slip_force=out(mu * F), gross_slip_shift=ustar, reasons=reasons,
             method=method, stiffness_ratio=float(r) if method == "mdr" else r,
             direction=None if method == "mdr" else direction, notes=notes)
+
+    def _mdr_notes(self, law, approach, mdr_ratio):
+        """The MDR's direction-free ratio and its measured error where known: against
+        Mindlin's ellipse for a crowned roller, against the BEM table for a straight
+        cylinder's law; not measured for other profiles."""
+        from . import tangential as tg
+
+        head = f"MDR: k_t/k_n = G*/E* = {mdr_ratio:.4f} in every direction"
+        if self._crowned():
+            from . import mindlin
+
+            err = [mdr_ratio / mindlin.stiffness_ratio(
+                self.profile.crown_radius, self.radius, self.gstar, self.estar, d) - 1
+                for d in ("y", "x")]
+            return (f"{head}: {err[0]:+.1%} from Mindlin's Hertz ellipse across, "
+                    f"{err[1]:+.1%} along (the default method gives the law by "
+                    "direction)",)
+        if self.sliced:
+            return (f"{head}: its error for this elongated contact is not measured "
+                    "(for a crowned roller's ellipse of a/b = 12: -8.6 % across, +8.6 % "
+                    "along)",)
+        if self.model not in tg.STRAIGHT_CYLINDER_MODELS:
+            return (head,)
+        try:
+            r = tg.cylinder_stiffness_ratios(law, approach, self.gstar)
+        except (OutOfRangeError, FileNotFoundError, ValueError):
+            return (f"{head}: its error against the finite cylinder's BEM is not "
+                    "measured at this depth",)
+        ea = float(np.max(np.abs(r["mdr_error_across"])))
+        el = float(np.max(np.abs(r["mdr_error_along"])))
+        return (f"{head}: up to {ea:.1%} from the finite cylinder's BEM table across "
+                f"and {el:.1%} along (method='bem' gives those)",)
 
     def _crowned(self):
         """A single contact of a circular crown solved by coupled slices: Mindlin's

@@ -93,3 +93,19 @@ def test_other_contacts_keep_the_mdr_and_refuse_mindlin():
         c.tangential(0.1, force=1e3, method="mindlin")
     with pytest.raises(UnknownNameError, match="direction"):
         _issue_roller(20).tangential(0.1, force=1e3, direction="sideways")
+
+
+def test_mdr_law_says_its_measured_error_or_that_it_has_none():
+    """The MDR's direction-free ratio carries a note: for a crowned roller its
+    difference from Mindlin's ellipse (issue 32's roller: -8.6 % across, +8.6 % along),
+    for a straight cylinder's law its difference from the BEM table (where the table
+    covers the case), for another profile that it is not measured."""
+    c = _issue_roller(20)
+    (note,) = c.tangential(0.1, force=1e3, method="mdr").notes
+    assert "-8.6% from Mindlin's Hertz ellipse across, +8.6% along" in note
+    (note,) = Contact(Roller(5e-3, 10e-3, profile="iso16281"), None, STEEL, STEEL,
+                      n_slices=20).tangential(0.1, force=1e3).notes
+    assert "not measured" in note
+    (note,) = Contact(Roller(5e-3, 10e-3), None, STEEL, STEEL).tangential(
+        0.1, force=1e3).notes
+    assert "BEM" in note

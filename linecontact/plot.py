@@ -1192,7 +1192,10 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
     mk, = ax.plot([w["y"] * sl], [w["z"] * sl], ls="none", marker="X", ms=10,
                   color="C0", mec="w", label="maximum", zorder=6)
     mk.scale = (sl, sl)
-    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})",
+    held = measure in getattr(result, "withheld", {})    # edge loaded: not converged
+    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})" if not held else
+                f"max {_quantity(w['value'], 'Pa')} at this slice width\n(edge loaded: "
+                "not converged, grows as the slices are refined)",
                 (w["y"] * sl, w["z"] * sl), xytext=(8, 8), textcoords="offset points",
                 fontsize=7, color="C0")
     ax.set_ylim(z[-1] * sl, 0.0)                                   # depth downwards

@@ -70,3 +70,21 @@ def test_calc_prints_no_stress_of_an_edge_loaded_roller(capsys):
     assert main(base + ["--crown-radius", "500mm"]) == 0
     row = json.loads(capsys.readouterr().out)["models"][0]["rows"][0]
     assert all(row[f"{m}_max"] > 0 for m in MEASURES)
+
+
+@pytest.mark.parametrize("line_load", [800e3, 2000e3])
+def test_end_relief_with_a_corner_radius_converges(line_load):
+    """With an end relief (corner radius 50 mm over the last 2.1 mm, the stress study's
+    roller: D 10 mm, L 14 mm; 800 and 2000 N/mm) the contact stays off the ends, the pressure peak at the
+    relief is finite, and the stress maxima converge: at 50, 100 and 200 slices within
+    0.5 % of 400 slices (measured 0.4 % at 50, 0.05 % from 100 on), none withheld."""
+    def maxima(n):
+        sol = ProfiledRoller(5e-3, 14e-3, 115.385e9, "end-relief:r=50mm,l=2.1mm",
+                             n_slices=n).at_force(line_load * 14e-3)
+        s = roller_stresses(sol)
+        assert not sol.edge_loaded and s.withheld == {}
+        return [s.worst[m]["value"] for m in MEASURES]
+
+    ref = maxima(400)
+    for n in (50, 100, 200):
+        assert maxima(n) == pytest.approx(ref, rel=5e-3), n

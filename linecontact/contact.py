@@ -462,7 +462,7 @@ class ContactResult(_Result):
 
 @dataclass(frozen=True)
 class TangentialResult(_Result):
-    """The tangential state of a composed contact (Cattaneo-Mindlin by the MDR).
+    """The tangential state of a composed contact (Cattaneo-Mindlin: MDR, BEM or Mindlin).
 
     Built by :meth:`Contact.tangential`; not by hand.
 
@@ -475,7 +475,7 @@ class TangentialResult(_Result):
     shear_ratio : float
         G*/E* [-].
     stiffness : float or ndarray
-        Full-stick tangential stiffness k_t = (G*/E*) k_n [N/m].
+        Full-stick tangential stiffness k_t = r k_n, r = `stiffness_ratio` [N/m].
     tangential_force : float or ndarray or None
         Tangential force Q [N] (signed).
     shift : float or ndarray or None
@@ -1169,7 +1169,9 @@ class Contact:
         r = float(tg.SHEAR_RATIO.check(self.gstar / self.estar, name="gstar/estar"))
         shear = r
         if method == "mindlin":
-            r, notes = self._mindlin_ratio(F, direction, r)
+            r, notes, used = self._mindlin_ratio(F, direction, r)
+            if not used:        # no load's ellipse inside the roller: the MDR's law
+                method, r = "mdr", shear
         else:
             notes = self._mdr_notes(law, e, r)
         kt = out(r * np.asarray(n.stiffness))
@@ -1265,21 +1267,27 @@ class Contact:
         """Mindlin's k_t/k_n across or along the roller at each normal force [N] where
         the Hertz ellipse (radii Rc along the axis, the effective radius across) lies
         inside the roller, |x0| + a_x < L/2 with x0 = apex + Rc tan(tilt); the MDR's
-        ratio elsewhere, with a note. Returns (ratio [-], notes)."""
+        ratio elsewhere, with a note. Returns (ratio [-], notes, whether Mindlin's
+        ratio was used at any load)."""
         from . import mindlin
         from .hertz import hertz_contact
 
         Rc, L = self.profile.crown_radius, self.roller.length
-        ratio = mindlin.stiffness_ratio(Rc, self.radius, self.gstar, self.estar,
-                                        "y" if direction == "across" else "x")
         F = np.asarray(force, dtype=float)
+        try:
+            ratio = mindlin.stiffness_ratio(Rc, self.radius, self.gstar, self.estar,
+                                            "y" if direction == "across" else "x")
+        except OutOfRangeError as exc:     # radii beyond the ellipse's range: a line
+            return out(np.full(F.shape, mdr_ratio)), (
+                f"Mindlin's ellipse not evaluated ({exc}): the MDR's direction-free "
+                f"ratio G*/E* = {mdr_ratio:.4f}, its error not measured",), False
         h = hertz_contact(F, Rc, self.radius, self.estar)
         semi_x = np.asarray(h.b if h.swapped else h.a, dtype=float)
         tilt = self._fixed_tilt("the tangential law")
         x0 = self.profile.offset + Rc * math.tan(tilt)
         inside = np.abs(x0) + semi_x < L / 2
         if inside.all():
-            return out(np.full(F.shape, ratio)), ()
+            return out(np.full(F.shape, ratio)), (), True
         r = out(np.where(inside, ratio, mdr_ratio))
         worst = float(np.max(np.where(inside, 0.0, semi_x)))
         note = (f"at {int(np.count_nonzero(~inside))} of {inside.size} loads the Hertz "
@@ -1287,7 +1295,7 @@ class Contact:
                 f"{x0 * 1e3:.4g} mm, L/2 = {L * 500:.4g} mm): there the MDR's "
                 f"direction-free ratio G*/E* = {mdr_ratio:.4f} (Mindlin's {direction}: "
                 f"{ratio:.4f}), its error not measured")
-        return r, (note,)
+        return r, (note,), bool(inside.any())
 
     def _tangential_bem(self, mu, force, depth, Q, u, direction):
         """Contact.tangential with the BEM table's ratio and slip correction, one

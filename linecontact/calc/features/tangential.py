@@ -207,7 +207,10 @@ def _directions(contact, mu, F, Q, j, out, note):
     for direction in ("across", "along"):
         t = contact.tangential(mu, force=F, tangential_force=Q, direction=direction)
         if t.method != "mindlin":
-            note(j, "kt across/along: the BEM table is for a straight, aligned cylinder")
+            crowned = t.notes and "Mindlin" in t.notes[0]   # a crown, ellipse not inside
+            note(j, "kt across/along: " + (t.notes[0] if crowned else
+                                           "the BEM table is for a straight, aligned "
+                                           "cylinder"))
             return
         if t.notes:
             note(j, f"kt {direction}: " + "; ".join(t.notes))

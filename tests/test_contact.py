@@ -81,9 +81,10 @@ def test_cam_follower_of_the_issue_gets_its_crowned_tangential_stiffness():
 
 
 def test_crowned_partial_slip_follows_mindlin():
-    """In the Hertz range the MDR shift under Q is Mindlin's (1949),
-    u = u* [1 - (1 - Q/(mu F))^(2/3)], u* = mu E* e/G* (exact for F ~ e^3/2; 1e-3 at
-    40 slices); a negative Q gives the same shift negated (the sign is the direction)."""
+    """In the Hertz range the shift under Q has Mindlin's (1949) form,
+    u = u* [1 - (1 - Q/(mu F))^(2/3)], u* = mu e/r (exact for F ~ e^3/2 whatever the
+    ratio r: Mindlin's ellipse's by default; 1e-3 at 40 slices); a negative Q gives the
+    same shift negated (the sign is the direction)."""
     c = crowned()
     mu, F = 0.15, 200.0
     for frac in (0.2, 0.7):

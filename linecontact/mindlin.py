@@ -75,10 +75,11 @@ import math
 
 import numpy as np
 
+from ._numerics import out
+from .checks import check_interval, check_positive
+from .errors import OutOfRangeError, UnknownNameError
 from .hertz import _KE, hertz_contact, hertz_eccentricity
 from .tangential import FRICTION, SHEAR_RATIO
-from .validity import (OutOfRangeError, UnknownNameError, check_interval, check_positive,
-                       out)
 
 __all__ = [
     "DIRECTIONS",

@@ -7,8 +7,8 @@ import pytest
 
 from linecontact import mindlin
 from linecontact.contact import Contact, Convex, Elastic, Roller
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.hertz import hertz_contact
-from linecontact.validity import CombinationError, UnknownNameError
 
 STEEL = Elastic(210e9, 0.3)
 

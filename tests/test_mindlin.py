@@ -9,12 +9,12 @@ import numpy as np
 import pytest
 
 from linecontact.classical import effective_modulus
+from linecontact.errors import OutOfRangeError, UnknownNameError
 from linecontact.hertz import hertz_contact
 from linecontact.mindlin import (EllipticalTangentialContact, dissipated_energy,
                                  full_stick_stiffness, slip_force, slip_shift,
                                  stick_fraction, stiffness_factors, stiffness_ratio)
 from linecontact.tangential import TangentialContact, effective_shear_modulus
-from linecontact.validity import OutOfRangeError, UnknownNameError
 from oracle_laws import HertzSphere
 
 STEEL = (210e9, 0.3)

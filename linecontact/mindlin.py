@@ -565,6 +565,10 @@ class EllipticalTangentialContact:
         self.stiffness = float(full_stick_stiffness(sx, sy, gstar, estar, direction))
         #: Hertz's normal stiffness k_n [N/m].
         self.normal_stiffness = float(h.stiffness)
+        #: Hertz's approach delta [m] (the normal state held).
+        self.depth = float(h.approach)
+        #: The law's name, as :class:`linecontact.tangential.TangentialContact`'s.
+        self.method = "mindlin"
 
     @property
     def ratio(self):
@@ -595,38 +599,48 @@ class EllipticalTangentialContact:
         """a'/a of the stick ellipse under Q [N] (:func:`stick_fraction`)."""
         return stick_fraction(tangential_force, self.normal_force, self.friction)
 
-    def unloading(self, shift, amplitude):
+    def unloading(self, shift, amplitude, *, beyond="raise"):
         """Unloading branch from (delta0, Q*): Q = Q* - 2 f((delta0 - delta)/2) [N];
-        `shift` delta in [-delta0, delta0], `amplitude` delta0 <= delta* [m]."""
-        u0 = self._amplitude(amplitude)
+        `shift` delta in [-delta0, delta0], `amplitude` delta0 <= delta* [m] (beyond
+        with ``beyond="saturate"``: f saturates at mu P, Coulomb sliding)."""
+        u0 = self._amplitude(amplitude, beyond)
         u = check_interval("shift", shift, -u0 * (1 + 1e-12), u0 * (1 + 1e-12), unit="m")
-        return out(self.force(u0) - 2 * np.asarray(self.force((u0 - u) / 2)))
+        return out(self.force(u0, beyond=beyond)
+                   - 2 * np.asarray(self.force((u0 - u) / 2, beyond=beyond)))
 
-    def reloading(self, shift, amplitude):
+    def reloading(self, shift, amplitude, *, beyond="raise"):
         """Reloading branch from (-delta0, -Q*): Q = -Q* + 2 f((delta0 + delta)/2) [N]."""
-        u0 = self._amplitude(amplitude)
+        u0 = self._amplitude(amplitude, beyond)
         u = check_interval("shift", shift, -u0 * (1 + 1e-12), u0 * (1 + 1e-12), unit="m")
-        return out(-self.force(u0) + 2 * np.asarray(self.force((u0 + u) / 2)))
+        return out(-self.force(u0, beyond=beyond)
+                   + 2 * np.asarray(self.force((u0 + u) / 2, beyond=beyond)))
 
-    def loop(self, amplitude, n=101):
+    def loop(self, amplitude, n=101, *, beyond="raise"):
         """Closed fretting loop of amplitude delta0 [m]: (delta [m], Q [N]), 2n - 1 points."""
-        u0 = float(self._amplitude(amplitude))
+        u0 = float(self._amplitude(amplitude, beyond))
         down = np.linspace(u0, -u0, int(n))
         up = down[::-1][1:]
         return (np.concatenate([down, up]),
-                np.concatenate([self.unloading(down, u0), self.reloading(up, u0)]))
+                np.concatenate([self.unloading(down, u0, beyond=beyond),
+                                self.reloading(up, u0, beyond=beyond)]))
 
-    def dissipated_energy(self, amplitude):
+    def dissipated_energy(self, amplitude, *, beyond="raise"):
         """Energy per cycle W [J] of shift amplitude delta0 <= delta* [m]
-        (:func:`dissipated_energy` at Q* = f(delta0))."""
-        u0 = self._amplitude(amplitude)
-        return dissipated_energy(self.force(u0), self.normal_force, self.friction,
-                                 self.stiffness)
+        (:func:`dissipated_energy` at Q* = f(delta0)); beyond gross slip (``beyond=
+        "saturate"``) the sliding adds 4 mu P (delta0 - delta*)."""
+        u0 = self._amplitude(amplitude, beyond)
+        ustar = self.gross_slip_shift
+        W = dissipated_energy(self.force(np.minimum(u0, ustar)), self.normal_force,
+                              self.friction, self.stiffness)
+        return out(W + 4 * self.gross_slip_force * np.maximum(u0 - ustar, 0.0))
 
-    def _amplitude(self, amplitude):
+    def _amplitude(self, amplitude, beyond="raise"):
         u0 = check_positive("amplitude", amplitude, "m")
-        if np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
+        if beyond not in ("raise", "saturate"):
+            raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
+        if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
             raise OutOfRangeError("amplitude", float(np.max(u0)),
                                   f"(0, {self.gross_slip_shift:.6g}] m", unit="m",
-                                  hint="beyond gross slip the contact slides")
+                                  hint="beyond gross slip the contact slides; "
+                                       "beyond='saturate' adds the sliding part")
         return u0

@@ -979,9 +979,12 @@ def creep(result, *, given=None, fig=None):
 # tangential: partial slip and the fretting loop
 # --------------------------------------------------------------------------------------
 def _tangential_name(c):
-    """'across (BEM)', 'along (BEM)' or 'MDR (G*/E*)'."""
-    if getattr(c, "method", "mdr") == "bem":
+    """'across (BEM)', 'along (BEM)', 'x (Mindlin)', 'y (Mindlin)' or 'MDR (G*/E*)'."""
+    method = getattr(c, "method", "mdr")
+    if method == "bem":
         return f"{c.direction} (BEM)"
+    if method == "mindlin":
+        return f"{c.direction} (Mindlin)"
     return "MDR (G*/E*)"
 
 
@@ -999,7 +1002,9 @@ def hysteresis(contact, amplitude, *, n=101, beyond="raise", points=None, fig=No
     Parameters
     ----------
     contact : TangentialContact or sequence of TangentialContact
-        The contact(s) at their normal load, with the friction coefficient.
+        The contact(s) at their normal load, with the friction coefficient (also
+        :class:`linecontact.mindlin.EllipticalTangentialContact`, a crowned roller's
+        ellipse by direction).
     amplitude : float
         Shift amplitude u0, 0 < u0 <= u* of every contact unless ``beyond`` is
         ``"saturate"`` [m].

@@ -163,3 +163,25 @@ def test_bad_input_is_refused():
         slip_force(1.0, 1e3, MU, 1e8)
     with pytest.raises(OutOfRangeError, match="gstar/estar"):
         full_stick_stiffness(1e-3, 1e-3, 2 * ESTAR, ESTAR, "x")
+
+
+def test_fretting_beyond_gross_slip_and_the_hysteresis_figure():
+    """Beyond gross slip (beyond="saturate") the loop adds Coulomb sliding: the energy
+    grows by 4 mu P (u0 - u*) exactly; plot.hysteresis draws the ellipse's loops across
+    and along (the energy in the legend is the closed form's)."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    matplotlib.use("Agg")
+    from linecontact import plot
+
+    across = EllipticalTangentialContact(1e3, 0.5, 0.01, ESTAR, GSTAR, MU, direction="y")
+    along = EllipticalTangentialContact(1e3, 0.5, 0.01, ESTAR, GSTAR, MU, direction="x")
+    us = across.gross_slip_shift
+    W = across.dissipated_energy(1.5 * us, beyond="saturate")
+    assert W == pytest.approx(across.dissipated_energy(us) + 4 * MU * 1e3 * 0.5 * us,
+                              rel=1e-14)
+    with pytest.raises(OutOfRangeError, match="amplitude"):
+        across.loop(1.5 * us)
+    fig = plot.hysteresis([across, along], 0.5 * us)
+    labels = [ln.get_label() for ln in fig.axes[1].lines]
+    assert "y (Mindlin): loop" in labels and "x (Mindlin): loop" in labels

@@ -206,6 +206,10 @@ def columns(model, rows, normal, state):
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
+        if s.withheld:    # an edge-loaded roller: slice-width numbers, "-" and why
+            flags[j] = "; ".join(t for t in (flags[j], "stress maxima and case check "
+                                 "not reported: " + s.withheld[_MEASURES[0]]) if t)
+            continue
         for m in _MEASURES:
             out[f"{m}_max"][j] = s.worst[m]["value"]
             out[f"{m}_depth"][j] = s.worst[m]["z"]
@@ -231,6 +235,8 @@ def _case(s, hardness):
         return None, str(exc)
     if c.min_case_depth is None and hardness.case_depth is not None:
         return c, _NO_CHD
+    if c.min_case_depth == 0.0:
+        return c, "CHD min: 0, none needed (the core hardness carries the load)"
     return c, ""
 
 
@@ -278,7 +284,13 @@ def contact_stresses(sol, length, estar, profile, friction, poisson):
 def case_of_contacts(both, hardness):
     """The case check of a whole roller's two contacts (`both`: side ->
     SubsurfaceStresses): (checks, texts, worse) with checks side -> CaseCheck or None,
-    texts the flags to show, worse the side of the larger ratio (None if neither)."""
+    texts the flags to show, worse the side of the larger ratio (None if neither). A
+    contact whose maxima are withheld (edge loaded: the slice width's numbers) leaves
+    the check unreported, with the reason."""
+    held = {k: st.withheld for k, st in both.items() if st.withheld}
+    if held:
+        return {}, ["case check not reported: " + "; ".join(
+            f"{k} contact: {next(iter(h.values()))}" for k, h in held.items())], None
     checks, texts = {}, []
     for side, st in both.items():
         c, text = _case(st, hardness)
@@ -306,17 +318,26 @@ def _between_raceways(out, flags, j, sol, model, state, i):
     both = contact_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
                             float(state.nu[i]))
     worse = {}
+    # a maximum not converged in a contact (an edge-loaded one: the slice width's
+    # number) is not reported, as linecontact.bearing takes it: that measure's worse
+    # is unknown, and so is the case check
+    held = {k: st.withheld for k, st in both.items() if st.withheld}
     for m in _MEASURES:
         side = max(both, key=lambda k: both[k].worst[m]["value"])
         worse[m] = side
+        if any(m in h for h in held.values()):
+            continue
         out[f"{m}_max"][j] = both[side].worst[m]["value"]
         out[f"{m}_depth"][j] = both[side].worst[m]["z"]
-    texts = [f"stresses: worse contact {_said(worse)}"]
+    texts = [f"stresses: worse contact {_said(worse)}"] if not held else [
+        "stress maxima and case check not reported: " + "; ".join(
+            f"{k} contact: {h[_MEASURES[0]]}" for k, h in held.items())]
     for side, st in both.items():
         texts += [f"{side}: {t}" for t in st.notes]
-    row = {f"{m}_{side}": both[side].worst[m]["value"] for m in _MEASURES
-           for side in both}
-    if state.hardness[i] is not None:
+    row = {f"{m}_{side}": (None if m in both[side].withheld
+                           else both[side].worst[m]["value"])
+           for m in _MEASURES for side in both}
+    if state.hardness[i] is not None and not held:
         checks, said, side = case_of_contacts(both, state.hardness[i])
         for k, c in checks.items():
             row[f"case_ratio_{k}"] = None if c is None else c.max_ratio
@@ -326,7 +347,7 @@ def _between_raceways(out, flags, j, sol, model, state, i):
             need = min_case_depth(checks)
             out["min_case_depth"][j] = np.nan if need is None else need
             texts.insert(1, f"case check: worse contact {side}")
-    row["text"] = {"worse": _said(worse)}
+    row["text"] = {"worse": "-" if held else _said(worse)}
     flags[j] = "; ".join(texts)
     state.__dict__.setdefault("by_contact", {}).setdefault(int(i), row)
 

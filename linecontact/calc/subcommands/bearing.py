@@ -289,8 +289,9 @@ def row(obj, state, i):
     }
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         w = st.get(m)
-        out[m] = w["value"] if w else None
-        out[f"{m}_depth"] = w["depth"] if w else None
+        shown = w and "withheld" not in w     # an edge-loaded roller's: "-", see notes
+        out[m] = w["value"] if shown else None
+        out[f"{m}_depth"] = w["depth"] if shown else None
     notes = list(s.notes)
     if obj.case is not None:
         checks, texts, worse = obj.case

@@ -101,16 +101,20 @@ def _same(a, b):
         assert a == b, (a, b)
 
 
-def test_a_slice_row_is_the_librarys_solve_from_every_door(tmp_path):
-    """A straight roller under the coupled-slice law (--model profiled-roller): depth,
-    stiffness and the stresses are the library's at_force solve and roller_stresses
-    of it, the worst along the roller (near the ends, above the mean-line-load strip's
-    129 MPa Tresca that the calculator printed before), from the command, the batch and
-    the DataFrame alike."""
+@pytest.mark.parametrize("profile", ["iso16281", None], ids=["iso16281", "straight"])
+def test_a_slice_row_is_the_librarys_solve_from_every_door(tmp_path, profile):
+    """A roller under the coupled-slice law of a plain contact (--model
+    profiled-roller[:profile=...]): depth, stiffness and the stresses are the
+    library's at_force solve and roller_stresses of it, from the command, the batch
+    and the DataFrame alike. ISO-profiled: the worst along the roller (above the
+    mean-line-load strip, 129 MPa Tresca, that the calculator printed for such a row
+    before); straight: edge loaded, where the library withholds the maxima (a
+    slice-width number), the row shows none and says why."""
     from linecontact.models import get_model
     from linecontact.stresses import line_contact_stresses, roller_stresses
 
-    one, batch, frame = _doors(tmp_path, "calc", STEEL, ("--model", "profiled-roller"))
+    model = "profiled-roller" + (f":profile={profile}" if profile else "")
+    one, batch, frame = _doors(tmp_path, "calc", STEEL, ("--model", model))
     row = one["models"][0]["rows"][0]
     units = one["units"]
     for name in CALC_NUMBERS:
@@ -118,11 +122,15 @@ def test_a_slice_row_is_the_librarys_solve_from_every_door(tmp_path):
             _same(row[name], _si(batch, name, units))
             _same(row[name], _si(frame, name, units))
     E = 1 / (2 * (1 - 0.3 ** 2) / 210e9)
-    law = get_model("profiled-roller", 10e-3, 20e-3, E)
+    law = get_model("profiled-roller", 10e-3, 20e-3, E, profile=profile)
     sol = law.at_force(1e3)
     st = roller_stresses(sol, 0.0, 0.3)
     assert row["depth"] == pytest.approx(sol.depth, rel=1e-12)
     assert row["stiffness"] == pytest.approx(sol.stiffness, rel=1e-12)
+    if st.withheld:
+        assert profile is None and "not reported" in row["flags"]
+        assert all(row[f"{m}_max"] is None for m in st.withheld)
+        return
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         assert row[f"{m}_max"] == pytest.approx(st.worst[m]["value"], rel=1e-12)
         assert row[f"{m}_depth"] == pytest.approx(st.worst[m]["z"], rel=1e-12)

@@ -244,6 +244,16 @@ class State:
     ``models``
         Tuple of model keys: the default model set of the feature's rows (instead of
         the standard set of a straight cylinder), e.g. the slice models.
+    ``signed``
+        Bool array: rows where the feature gives a load or depth <= 0 a meaning (an
+        adhesive contact under a tensile load); the core refuses them elsewhere (its
+        message names the parameters of the features' module attribute ``signed``,
+        a tuple of parameter names). In such a row the core's models (no adhesion:
+        no contact) are not evaluated; the core columns show the given value only,
+        and the feature's ``columns`` is called with NaN for the rest of ``normal``.
+    ``kept``
+        Object array: each row's contact law as ``columns`` saw it (:func:`keep`),
+        for the feature's ``figure``.
     """
 
     def __init__(self, rows, **attrs):

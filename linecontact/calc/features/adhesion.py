@@ -236,6 +236,65 @@ def _on_curve(c, given, value):
                       "control)"}
 
 
+#: Adhesive figures drawn at most (a sweep of w: the first values, the rest said).
+MAX_FIGURES = 3
+
+
+def figure(state, results):
+    """``--plot``: F(d) of the adhesive contact on approach and retraction with the
+    pull-offs (:func:`linecontact.plot.adhesion`: a straight cylinder's with the 2D JKR
+    and the finite roller's BEM pull-off beside it), the rows' states marked; one
+    panel per work of adhesion of the first contact (at most :data:`MAX_FIGURES`)."""
+    from functools import partial
+
+    from ... import adhesion as ad
+    from ... import plot
+    from ...errors import OutOfRangeError
+
+    kept = getattr(state, "kept", None)
+    if kept is None:
+        return []
+    f = results.sets[0]["fields"]
+    rows = [i for i in np.flatnonzero(state.rows) if kept[i] is not None]
+    if not rows:
+        return []
+    m0 = kept[rows[0]]
+    groups = {}
+    for i in rows:
+        if kept[i] is m0:
+            groups.setdefault(float(state.work[i]), []).append(i)
+    out, said = [], []
+    for w, idx in list(groups.items())[:MAX_FIGURES]:
+        pts = []
+        for i in idx:
+            if state.given[i] == "load":
+                pts.append((f["depth_adhesive"][i], state.value[i]))
+            elif np.isfinite(f["force_adhesive"][i]):
+                pts.append((state.value[i], f["force_adhesive"][i]))
+        d = np.array([p[0] for p in pts] + list(f["zero_load_depth"][idx] * 2.0))
+        d = d[np.isfinite(d) & (d > 0)]
+        if not d.size:
+            said.append(f"--plot: adhesion (w = {w:g} J/m^2): no depth > 0 to draw "
+                        "the cycle to")
+            continue
+        try:
+            c = (ad.CylinderAdhesion(m0, w) if getattr(m0, "key", "") in ad.CYLINDER_MODELS
+                 else ad.AdhesiveContact.from_model(m0, w))
+        except (OutOfRangeError, NotImplementedError) as exc:
+            said.append(f"--plot: adhesion (w = {w:g} J/m^2): no figure: "
+                        f"{short(str(exc)) or type(exc).__name__}")
+            continue
+        out.append(partial(plot.adhesion, c, float(d.max()), points=pts))
+    if len(groups) > MAX_FIGURES:
+        said.append(f"--plot: adhesion drawn for the first {MAX_FIGURES} of "
+                    f"{len(groups)} values of w (every row is in the table)")
+    others = len(rows) - sum(len(v) for v in groups.values())
+    if others:
+        said.append(f"--plot: adhesion drawn for the first contact; {others} row(s) of "
+                    "other contacts are in the table only")
+    return out + said
+
+
 def blocks(state, results):
     """No extra table. A load beyond the pull-off (no equilibrium) is the row's error
     in one case and in a batch (its row); a sweep's row keeps it in its flags (the

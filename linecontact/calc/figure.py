@@ -108,7 +108,11 @@ def draw_results(results, path, stderr=None):
         if isinstance(line, str):
             print(line, file=stderr)
     if not draws:
-        raise ValueError("--plot: nothing to draw for this case")
+        from .._units import InputError
+
+        raise InputError("--plot", str(path), "a case with a result to draw",
+                         "nothing to draw for this case (see the lines above)" if parts
+                         else "nothing to draw for this case")
     fig = draws[0]() if len(draws) == 1 else plot.panels(*draws)
     return plot.save(fig, path)
 

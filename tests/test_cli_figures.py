@@ -317,3 +317,27 @@ def test_depth_sweep_gives_retraction_and_approach(capsys):
                 assert "retraction branch" in r["flags"]
         else:
             assert r["force_approach"] == r["force_adhesive"]
+
+
+def test_load_sweep_past_the_pull_off_keeps_its_rows(capsys, tmp_path, drawn):
+    """A load sweep from -5 mN (beyond Fc = -2.05 mN) to 1 mN: the rows beyond say so
+    in their note and are left out of the figure, said on stderr; the others are
+    drawn on the stable branch (their depth the library's)."""
+    out, err = _run(capsys, GEL + ["--load", "-5mN:1mN:4"], tmp_path)
+    assert out.count("is beyond the pull-off Fc") == 2
+    assert "2 row(s) beyond the pull-off" in err
+    d, F = _si(_lines(drawn[-1])["computed"])
+    np.testing.assert_allclose(F, [-1e-3, 1e-3], rtol=1e-12)
+    np.testing.assert_allclose(d, _gel_contact().depth_at_force(F), rtol=1e-12)
+
+
+def test_batch_rows_with_and_without_adhesion(tmp_path, capsys):
+    """In a CSV batch each row has its own rule: a tensile load with adhesion is
+    computed, without it refused in its row, beyond the pull-off refused naming Fc."""
+    csv = tmp_path / "cases.csv"
+    csv.write_text("load,work_of_adhesion\n-1mN,50mJ/m^2\n-1mN,\n-50mN,50mJ/m^2\n")
+    out = tmp_path / "out.csv"
+    main(GEL[:-2] + [str(csv), "-o", str(out)])
+    capsys.readouterr()
+    text = out.read_text()
+    assert "not positive" in text and "beyond the pull-off Fc = -2.052 mN" in text

@@ -285,6 +285,10 @@ def figure(state, results):
                         f"{short(str(exc)) or type(exc).__name__}")
             continue
         out.append(partial(plot.adhesion, c, float(d.max()), points=pts))
+        beyond = sum(1 for i in idx if state.beyond[i])
+        if beyond:
+            said.append(f"--plot: adhesion (w = {w:g} J/m^2): {beyond} row(s) beyond the "
+                        "pull-off (no equilibrium) are not drawn")
     if len(groups) > MAX_FIGURES:
         said.append(f"--plot: adhesion drawn for the first {MAX_FIGURES} of "
                     f"{len(groups)} values of w (every row is in the table)")

@@ -42,8 +42,12 @@ def _force_depth(results):
 
     sets = [s for s in results.sets
             if s.get("model") is not None and _law(s) is not None]
+    lawless = [s["model"].label for s in results.sets
+               if s.get("model") is not None and _law(s) is None and not results.whole]
+    said = [f"--plot: F(d): {label} has no single F(d) law to draw (its rows are in "
+            "the table)" for label in lawless]
     if not sets:
-        return []
+        return said
     models, laws = [], []
     for s in sets:
         law = _law(s)
@@ -68,7 +72,7 @@ def _force_depth(results):
             good = np.isfinite(d) & np.isfinite(F) & (d > 0) & (F > 0)
         if good.any():
             points.setdefault(law, []).extend(zip(d[good], F[good]))
-    out = [partial(plot.force_depth, models, points=points or None)]
+    out = [partial(plot.force_depth, models, points=points or None)] + said
     others = int(np.sum(ok & ~same))
     if others:
         out.append(f"--plot: F(d) drawn for the contact R = {m0.radius:.6g} m, "

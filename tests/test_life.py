@@ -1,4 +1,4 @@
-"""Modified rating life (linecontact.life): ISO 281:2007's a_ISO for roller bearings, the
+"""Modified rating life (linecontact.bearing.ratings): ISO 281:2007's a_ISO for roller bearings, the
 reliability factor a1, L_nm = a1 a_ISO L10 and ISO 16281's L_nmr, each against its
 published form evaluated by hand."""
 from __future__ import annotations
@@ -10,7 +10,7 @@ import pytest
 
 from linecontact.bearing import RadialRollerBearing, basic_rating_life
 from linecontact.errors import OutOfRangeError
-from linecontact.life import (
+from linecontact.bearing.ratings import (
     A_ISO_CAP, RELIABILITY_FACTORS, fatigue_load_limit, life_modification_factor,
     modified_rating_life, modified_reference_rating_life, reference_equivalent_load,
     reliability_factor)

@@ -25,8 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import check_interval
-from .errors import CombinationError
+from ..checks import check_interval
+from ..errors import CombinationError
 
 __all__ = ["SHARE_TOLERANCE", "DutyCycle", "revolution_shares", "duty_cycle_life"]
 
@@ -67,7 +67,7 @@ def revolution_shares(time_shares, speeds):
     Notes
     -----
     A case at standstill (n_i = 0) takes no revolutions and so no fatigue damage in
-    this rule (check it statically, :mod:`linecontact.static`).
+    this rule (check it statically, :func:`linecontact.bearing.ratings.static_safety_factor`).
 
     Examples
     --------

@@ -99,7 +99,8 @@ from .ratings import (A_ISO_CAP, KAPPA_RANGE, PERMISSIBLE_PRESSURE, RELIABILITY_
                       fatigue_load_limit, lamina_load_ratings, life_modification_factor,
                       modified_rating_life, modified_reference_rating_life,
                       pressure_safety_factor, reference_equivalent_load,
-                      reference_rating_life, reliability_factor, static_equivalent_load,
+                      reference_rating_life, reliability_factor, roller_damage_shares,
+                      static_equivalent_load,
                       static_load_rating, static_safety_factor)
 from .spectrum import DutyCycle, duty_cycle_life, revolution_shares
 
@@ -115,6 +116,7 @@ __all__ = [
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",
+    "roller_damage_shares",
     "static_load_rating",
     "static_equivalent_load",
     "static_safety_factor",

@@ -72,6 +72,7 @@ __all__ = [
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",
+    "roller_damage_shares",
     "ISO_RING_FACTOR",
     "PERMISSIBLE_PRESSURE",
     "static_load_rating",
@@ -319,6 +320,17 @@ def reference_rating_life(rating, pitch_diameter, roller_diameter, slice_loads_i
     .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), equations of the basic reference
        rating life of roller bearings (lamina method).
     """
+    ti, to, _, _ = _lamina_damage(rating, pitch_diameter, roller_diameter,
+                                  slice_loads_inner, slice_loads_outer, rotating)
+    total = np.sum(ti) + np.sum(to)
+    return math.inf if total == 0 else float(total ** (-8 / 9))
+
+
+def _lamina_damage(rating, pitch_diameter, roller_diameter, slice_loads_inner,
+                   slice_loads_outer, rotating):
+    """ISO 16281's damage terms of each lamina of the inner and the outer ring,
+    (q_e,k / q_c)^(9/2), and each roller's q_jk^p (the rollers' contributions to the
+    rings' equivalent lamina loads), checked inputs: (t_inner, t_outer, qi^p, qo^p)."""
     qi = np.asarray(slice_loads_inner, dtype=float)
     qo = np.asarray(slice_loads_outer, dtype=float)
     if qi.ndim != 2 or qi.shape != qo.shape:
@@ -332,10 +344,77 @@ def reference_rating_life(rating, pitch_diameter, roller_diameter, slice_loads_i
     Z, n = qi.shape
     qci, qce = lamina_load_ratings(rating, Z, pitch_diameter, roller_diameter, n)
     pi, po = (4.0, 4.5) if rotating == "inner" else (4.5, 4.0)
-    qei = np.mean(qi ** pi, axis=0) ** (1 / pi)
-    qee = np.mean(qo ** po, axis=0) ** (1 / po)
-    total = np.sum((qei / qci) ** 4.5) + np.sum((qee / qce) ** 4.5)
-    return math.inf if total == 0 else float(total ** (-8 / 9))
+    wi, wo = qi ** pi, qo ** po
+    qei = np.mean(wi, axis=0) ** (1 / pi)
+    qee = np.mean(wo, axis=0) ** (1 / po)
+    return (qei / qci) ** 4.5, (qee / qce) ** 4.5, wi, wo
+
+
+def roller_damage_shares(rating, pitch_diameter, roller_diameter, slice_loads_inner,
+                         slice_loads_outer, rotating="inner"):
+    r"""Share of the bearing's fatigue damage (ISO 16281, lamina method) taken at each
+    roller's position.
+
+    .. math::
+
+        d_j = \frac{1}{T}\sum_k\left[t_{i,k}\frac{q_{i,jk}^{p_i}}{\sum_l q_{i,lk}^{p_i}}
+        + t_{e,k}\frac{q_{e,jk}^{p_e}}{\sum_l q_{e,lk}^{p_e}}\right],\qquad
+        t_{i,k} = \left(\frac{q_{ei,k}}{q_{ci}}\right)^{9/2},\quad
+        T = \sum_k (t_{i,k} + t_{e,k}) = L_{10r}^{-9/8}
+
+    Parameters
+    ----------
+    rating : float
+        Basic dynamic load rating C_r, 0 < C_r < inf [N].
+    pitch_diameter : float
+        Pitch diameter D_pw > D_we [m].
+    roller_diameter : float
+        Roller diameter D_we > 0 [m].
+    slice_loads_inner : array_like
+        Lamina loads of the inner-ring contacts, shape (Z, n_s), >= 0 [N].
+    slice_loads_outer : array_like
+        Lamina loads of the outer-ring contacts, shape (Z, n_s), >= 0 [N].
+    rotating : str, optional
+        ``"inner"`` (default) or ``"outer"``: the ring that rotates against the load.
+
+    Returns
+    -------
+    ndarray
+        d_j [-], one per roller, summing to 1 (all 0 if no lamina is loaded).
+
+    Notes
+    -----
+    Valid as :func:`reference_rating_life`. Each lamina's damage term
+    :math:`t_k` (the summand of :math:`L_{10r}^{-9/8}`) is split over the roller
+    positions in proportion to their contributions :math:`q^p` to the lamina's
+    equivalent load (p = 4 on the rotating ring, 9/2 on the stationary one): the
+    points of a ring meet every position once a revolution, and the damage a point
+    takes there grows as :math:`q^p`. A split, not a second life: the shares say
+    where the bearing's L10r is spent.
+
+    Examples
+    --------
+    Ten of 14 rollers carrying 2 kN each: each takes a tenth of the damage.
+
+    >>> q = np.zeros((14, 10)); q[:10] = 200.0
+    >>> d = roller_damage_shares(65e3, 70e-3, 11e-3, q, q)
+    >>> f"{d.sum():.12f}", f"{d[0]:.3f}", f"{d[-1]:.0f}"
+    ('1.000000000000', '0.100', '0')
+
+    References
+    ----------
+    .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), equations of the basic reference
+       rating life of roller bearings (lamina method).
+    """
+    ti, to, wi, wo = _lamina_damage(rating, pitch_diameter, roller_diameter,
+                                    slice_loads_inner, slice_loads_outer, rotating)
+    total = np.sum(ti) + np.sum(to)
+    if total == 0:
+        return np.zeros(wi.shape[0])
+    si, so = wi.sum(axis=0), wo.sum(axis=0)
+    fi = np.divide(wi, si, out=np.zeros_like(wi), where=si > 0)
+    fo = np.divide(wo, so, out=np.zeros_like(wo), where=so > 0)
+    return (fi @ ti + fo @ to) / total
 
 
 #: Contact pressure of roller bearings at the static load rating (ISO 76) [Pa].

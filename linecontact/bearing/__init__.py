@@ -102,7 +102,8 @@ from .ratings import (A_ISO_CAP, KAPPA_RANGE, PERMISSIBLE_PRESSURE, RELIABILITY_
                       reference_rating_life, reliability_factor, roller_damage_shares,
                       static_equivalent_load,
                       static_load_rating, static_safety_factor)
-from .spectrum import DutyCycle, duty_cycle_life, revolution_shares
+from .spectrum import (LIFE_KINDS, DutyCycle, LoadCase, SpectrumSolution, duty_cycle_life,
+                       revolution_shares, solve_spectrum)
 
 __all__ = [
     # load distribution (radial.py)
@@ -146,6 +147,10 @@ __all__ = [
     "DEFAULT_FILM_FORMULA",
     "FILM_FORMULAS",
     # duty cycle (spectrum.py)
+    "solve_spectrum",
+    "LoadCase",
+    "SpectrumSolution",
+    "LIFE_KINDS",
     "duty_cycle_life",
     "revolution_shares",
     "DutyCycle",

@@ -28,10 +28,15 @@ import numpy as np
 from ..checks import check_interval
 from ..errors import CombinationError
 
-__all__ = ["SHARE_TOLERANCE", "DutyCycle", "revolution_shares", "duty_cycle_life"]
+__all__ = ["SHARE_TOLERANCE", "LIFE_KINDS", "DutyCycle", "revolution_shares", "duty_cycle_life",
+           "LoadCase", "SpectrumSolution", "solve_spectrum"]
 
 #: Relative tolerance on the sum of the shares being 1 (rounding of given fractions) [-].
 SHARE_TOLERANCE = 1e-6
+#: The lives a bearing solution carries, by name -> its attribute of
+#: :class:`linecontact.bearing.BearingSolution`, combined by :func:`solve_spectrum`.
+LIFE_KINDS = {"iso281": "life_iso281", "iso16281": "life_iso16281",
+              "modified": "life_modified", "modified_reference": "life_modified_reference"}
 
 
 def _shares(name, shares):
@@ -201,3 +206,192 @@ def duty_cycle_life(lives, shares, speeds=None):
         seconds = life * 1e6 * 2.0 * math.pi / mean
     return DutyCycle(life=life, revolution_shares=u, damage_shares=damage,
                      seconds=seconds)
+
+
+@dataclass(frozen=True)
+class LoadCase:
+    """One load case of a duty cycle: its share, loads and speed.
+
+    Parameters
+    ----------
+    share : float
+        Share of the case, of time or of revolutions (:func:`solve_spectrum`'s
+        `shares`), 0 <= share <= 1 [-].
+    radial_load : float
+        Radial load F_r, 0 < F_r < inf [N].
+    speed : float, optional
+        Speed of the inner ring against the outer ring, -inf < omega < inf [rad/s]
+        (needed for shares of time, and for a bearing with a lubricant).
+    moment : float, optional
+        Tilting moment on the inner ring, |M| < inf [N m].
+    misalignment : float, optional
+        Tilt of the inner ring against the outer ring, |theta| < 0.1 [rad].
+    axial_load : float, optional
+        Axial load on the flanges, 0 <= F_a < inf [N].
+
+    Notes
+    -----
+    Each input as in :meth:`linecontact.bearing.RadialRollerBearing.solve`, which
+    checks it.
+
+    Examples
+    --------
+    >>> LoadCase(0.8, 10e3, speed=157.08).radial_load
+    10000.0
+    """
+
+    share: float
+    radial_load: float
+    speed: float = None
+    moment: float = None
+    misalignment: float = None
+    axial_load: float = None
+
+
+@dataclass(frozen=True)
+class SpectrumSolution:
+    """A bearing over a duty cycle: each case's solution, life and damage, and the
+    combined lives (Palmgren-Miner).
+
+    Returned by :func:`solve_spectrum`.
+
+    .. math:: \\frac{1}{L} = \\sum_i \\frac{u_i}{L_i}, \\qquad d_i = \\frac{u_i L}{L_i}
+
+    Parameters
+    ----------
+    cases : tuple of LoadCase
+        The load cases as given.
+    solutions : tuple of BearingSolution
+        Each case's solution.
+    revolution_shares : ndarray
+        u_i of each case [-].
+    lives : dict
+        Life kind (:data:`LIFE_KINDS`) -> each case's life L_i [-] (10^6
+        revolutions); only the kinds every case has.
+    damage : dict
+        Life kind -> each case's share d_i of the damage, summing to 1 [-].
+    life : dict
+        Life kind -> the combined life L [-] (10^6 revolutions).
+    hours : dict or None
+        Life kind -> the combined life in hours of the cycle (shares of time with
+        speeds) [h]; None for shares of revolutions.
+
+    Notes
+    -----
+    0 < L <= inf; 0 <= u_i, d_i <= 1.
+
+    Examples
+    --------
+    >>> from linecontact.bearing import RadialRollerBearing
+    >>> r = solve_spectrum(RadialRollerBearing(14, 70e-3, 11e-3, 11e-3),
+    ...                    [LoadCase(0.5, 10e3), LoadCase(0.5, 20e3)],
+    ...                    shares="revolutions")
+    >>> f"{r.life['iso281']:.1f}", [round(float(d), 3) for d in r.damage["iso281"]]
+    ('69.8', [0.09, 0.91])
+
+    References
+    ----------
+    M. A. Miner (1945); A. Palmgren (1924).
+    """
+
+    cases: tuple
+    solutions: tuple
+    revolution_shares: np.ndarray
+    lives: dict
+    damage: dict
+    life: dict
+    hours: dict = None
+
+
+def solve_spectrum(bearing, cases, shares="time"):
+    r"""A bearing over a load spectrum: each case solved, its lives and damage, and the
+    combined lives by the Palmgren-Miner rule.
+
+    .. math::
+
+        L = \left(\sum_i \frac{u_i}{L_i}\right)^{-1}, \qquad
+        u_i = \frac{t_i n_i}{\sum_j t_j n_j}\ (\text{shares of time})
+
+    Parameters
+    ----------
+    bearing : RadialRollerBearing
+        The bearing (:class:`linecontact.bearing.RadialRollerBearing`), its
+        lubricant, fits and flanges included.
+    cases : sequence of LoadCase or dict
+        The load cases (a dict: :class:`LoadCase`'s fields by name), at least one.
+    shares : str, optional
+        ``"time"`` (default: every case needs its speed) or ``"revolutions"``: what
+        the cases' shares are.
+
+    Returns
+    -------
+    SpectrumSolution
+        Per case: the solution, the shares of revolutions, each life kind's life and
+        damage; the combined life of each kind every case has (ISO 281 L10, ISO 16281
+        L10r, and with a lubricant and e_C the modified L_nm and L_nmr), in hours too
+        for shares of time.
+
+    Raises
+    ------
+    CombinationError
+        Shares of time without a speed in every case, or shares that do not sum to 1.
+
+    Notes
+    -----
+    Each case solved as if it acted alone (:meth:`RadialRollerBearing.solve`), linear
+    damage accumulation (:func:`duty_cycle_life`), independent of the cases' order.
+    Speeds only convert shares of time and give the film and kappa; a case's
+    direction of rotation does not matter to the lives.
+
+    Examples
+    --------
+    Two cases at equal revolutions: L = 2 / (1/L1 + 1/L2).
+
+    >>> from linecontact.bearing import RadialRollerBearing
+    >>> b = RadialRollerBearing(14, 70e-3, 11e-3, 11e-3)
+    >>> r = solve_spectrum(b, [dict(share=0.5, radial_load=10e3),
+    ...                        dict(share=0.5, radial_load=20e3)], shares="revolutions")
+    >>> L1, L2 = r.lives["iso16281"]
+    >>> f"{r.life['iso16281'] / (2 / (1 / L1 + 1 / L2)):.12f}"
+    '1.000000000000'
+
+    References
+    ----------
+    .. [1] A. Palmgren, Z. VDI 68 (1924) 339-341; M. A. Miner, J. Applied Mechanics
+       12 (1945) A159-A164.
+    .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
+       Essential Concepts, chapter 11.
+    """
+    from ..errors import UnknownNameError
+
+    if shares not in ("time", "revolutions"):
+        raise UnknownNameError("shares", shares, ["time", "revolutions"])
+    cases = tuple(c if isinstance(c, LoadCase) else LoadCase(**c) for c in cases)
+    if not cases:
+        raise CombinationError({"cases": 0}, "give at least one load case")
+    share = np.array([c.share for c in cases], dtype=float)
+    speeds = None
+    if shares == "time":
+        missing = [i for i, c in enumerate(cases) if c.speed is None]
+        if missing:
+            raise CombinationError({"shares": "time", "speed": f"missing in cases "
+                                    f"{missing}"}, "shares of time need each case's "
+                                   "speed (or give shares='revolutions')")
+        speeds = np.abs(np.array([c.speed for c in cases], dtype=float))
+    sols = tuple(bearing.solve(c.radial_load, c.moment, c.misalignment, speed=c.speed,
+                               axial_load=c.axial_load) for c in cases)
+    lives, damage, life, hours = {}, {}, {}, ({} if speeds is not None else None)
+    u = None
+    for kind, attr in LIFE_KINDS.items():
+        Li = [getattr(s, attr) for s in sols]
+        if any(v is None for v in Li):
+            continue
+        d = duty_cycle_life(Li, share, speeds)
+        u = d.revolution_shares
+        lives[kind] = np.array(Li, dtype=float)
+        damage[kind] = d.damage_shares
+        life[kind] = d.life
+        if hours is not None:
+            hours[kind] = d.seconds / 3600.0
+    return SpectrumSolution(cases=cases, solutions=sols, revolution_shares=u,
+                            lives=lives, damage=damage, life=life, hours=hours)

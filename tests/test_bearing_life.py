@@ -44,6 +44,9 @@ def test_press_fit_shrinks_the_clearance_by_the_hand_ring_expansion():
     assert ch["inner_fit"] + ch["outer_fit"] + ch["thermal"] + 40e-6 == \
         pytest.approx(s.clearance, rel=1e-12)
     assert s.clearance == pytest.approx(14.651e-6, rel=1e-4)     # docs' hand value
+    # ring and housing of one material: the massive housing's I D_r/D_o whatever E
+    al = _bearing(housing_interference=15e-6, outside_diameter=100e-3, ring_modulus=70e9)
+    assert al.clearance == pytest.approx(h.clearance, rel=1e-12)
 
 
 def test_press_fit_widens_the_load_zone_and_lengthens_L10r_a_preload_shortens_it():

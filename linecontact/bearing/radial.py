@@ -450,6 +450,10 @@ class RadialRollerBearing:
         inf [m].
     housing_diameter : float, optional
         Outside diameter of the housing, D_o < D_h <= inf (default inf: massive) [m].
+    ring_modulus : float, optional
+        Young's modulus of the rings, the shaft and the housing for the fits,
+        0 < E < inf (default 2 E* (1 - nu^2) from `estar` and `poisson`: rollers and
+        rings of one material) [Pa].
     temperature_difference : float, optional
         Temperature of the inner ring above the outer ring's, the rollers at their
         mean, -inf < dT < inf [K]: the clearance changes by -12e-6/K dT d_m (steel).
@@ -479,7 +483,8 @@ class RadialRollerBearing:
     depth and L/R ranges; the universal curve to d <= 0.15 R). Centrifugal forces,
     ring deformation and roller skew are not modelled. The fits take the rings, the
     shaft and the housing of one material, E = 2 E* (1 - nu^2) from `estar` and
-    `poisson` (210 GPa for the defaults), each ring a cylinder from bore to raceway;
+    `poisson` (210 GPa for the defaults) unless `ring_modulus` is given, Poisson's
+    ratio `poisson`, each ring a cylinder from bore to raceway;
     the load distribution uses the operating clearance (:attr:`clearance`; the given
     one is :attr:`internal_clearance`). Each input group is all or nothing: an input
     that a missing partner would leave unused is refused (docs/bearing_life.md).
@@ -509,7 +514,7 @@ class RadialRollerBearing:
                  film_formula=DEFAULT_FILM_FORMULA, contamination=None, reliability=None,
                  fatigue_load_limit=None, static_rating=None, shaft_interference=None,
                  bore=None, shaft_bore=None, housing_interference=None,
-                 outside_diameter=None, housing_diameter=None,
+                 outside_diameter=None, housing_diameter=None, ring_modulus=None,
                  temperature_difference=None, end_radius=None, flange_angle=None,
                  inner_flange_height=None, outer_flange_height=None,
                  overall_length=None, end_chamfer=None, axial_share="proportional"):
@@ -539,7 +544,7 @@ class RadialRollerBearing:
         self.internal_clearance = self.clearance
         self.clearance_changes = self._mounting(
             shaft_interference, bore, shaft_bore, housing_interference,
-            outside_diameter, housing_diameter, temperature_difference)
+            outside_diameter, housing_diameter, temperature_difference, ring_modulus)
         self.lubricant = self._lubricant(viscosity, density, pressure_viscosity,
                                          roughness_roller, roughness_raceway,
                                          film_formula, contamination, reliability,
@@ -602,7 +607,8 @@ class RadialRollerBearing:
             raise CombinationError({**named, **{k: None for k in missing}}, reason)
 
     def _mounting(self, shaft_interference, bore, shaft_bore, housing_interference,
-                  outside_diameter, housing_diameter, temperature_difference):
+                  outside_diameter, housing_diameter, temperature_difference,
+                  ring_modulus=None):
         """The operating clearance from the fits (Lame) and the rings' temperature
         difference, set as self.clearance; returns the changes (None: none given)."""
         from .fits import (inner_raceway_expansion, operating_clearance,
@@ -618,11 +624,18 @@ class RadialRollerBearing:
         self._needs(housing, ("housing_interference", "outside_diameter"), "an "
                     "outer-ring fit needs the interference and the ring's outside "
                     "diameter")
+        if ring_modulus is not None and shaft_interference is None \
+                and housing_interference is None:
+            raise CombinationError({"ring_modulus": ring_modulus,
+                                    "shaft_interference": None,
+                                    "housing_interference": None},
+                                   "the rings' modulus is used by a fit only")
         if (shaft_interference is None and housing_interference is None
                 and temperature_difference is None):
             return None
         dm, D, Pd = self.pitch_diameter, self.roller_diameter, self.clearance
-        E = 2.0 * self.estar * (1.0 - self.poisson ** 2)
+        E = (2.0 * self.estar * (1.0 - self.poisson ** 2) if ring_modulus is None
+             else float(check_positive("ring_modulus", ring_modulus, "Pa")))
         nu = self.poisson
         d_in, d_out = dm - D, dm + D + Pd          # raceway diameters
         grow = shrink = heat = 0.0

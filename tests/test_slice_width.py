@@ -16,7 +16,9 @@ BEARING = ["bearing", "--rollers", "20", "--pitch-diameter", "100mm", "--roller-
 
 
 def _stress_lines(text):
-    return [ln for ln in text.splitlines()
+    """The stress lines, each as its words: the table's column width follows the widest
+    value of the other lines, which may differ between slice counts."""
+    return [ln.split() for ln in text.splitlines()
             if ln.strip().startswith(("max Tresca", "max von Mises", "max orthogonal",
                                       "at depth"))]
 

@@ -37,7 +37,7 @@ def test_misaligned_bearing_prints_the_same_at_20_40_80_slices(capsys):
         assert "stress maxima not reported" in out and "corner radius" in out
     assert len(printed[0]) == 6
     assert printed[0] == printed[1] == printed[2]
-    assert all(ln.split()[-2] == "-" for ln in printed[0])
+    assert all(words[-2] == "-" for words in printed[0])
     assert main(BEARING + ["--n-slices", "20", "--json"]) == 0
     summary = json.loads(capsys.readouterr().out)["solution"]["summary"]
     assert all(summary[m] is None for m in MEASURES)

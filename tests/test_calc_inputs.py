@@ -69,39 +69,51 @@ def test_an_option_and_a_filled_cell_that_differ_are_refused_in_that_row(
         assert repr(cell) in row["error"]
 
 
-_UNIT_CASES = [(d, name) for d in DOORS for name in d.parameters]
+#: Header forms that say a parameter with a unit: each is not read as the parameter.
+_UNIT_FORMS = ("{} [mm]", "{} (GPa)", "{}_kN", "{} in mm")
 
 
-@pytest.mark.parametrize("door,name", _UNIT_CASES,
-                         ids=[f"{d.name}-{n}" for d, n in _UNIT_CASES])
-@pytest.mark.parametrize("form", ["{} [mm]", "{} (GPa)", "{}_kN", "{} in mm"])
-def test_a_column_named_with_a_unit_is_refused_naming_the_parameter(
-        tmp_path, door, name, form):
-    """Every parameter's name written with a unit in the header ('radius [mm]') is
-    not read: the file is refused and the message names the parameter it matches."""
-    path = tmp_path / "units.csv"
-    path.write_text(f"{form.format(name)},other\n5,x\n")
-    status, out, err = _calc([str(path)], door.name)
-    assert status == 2 and f"did you mean {name!r}" in err, err
+def _header_table():
+    """The CSV-header boundary as a table, one row per (door, refused column): every
+    parameter of every door in every unit form, and each door's close spellings. Each
+    row: (door, parameter, refused header, the file's text, the words the message
+    must hold)."""
+    rows = []
+    for door in DOORS:
+        for name in door.parameters:
+            for form in _UNIT_FORMS:
+                header = form.format(name)
+                rows.append((door, name, header, f"{header},other\n5,x\n",
+                             f"did you mean {name!r}"))
+        cols = door.header.split(",")
+        for typo, name in door.typos:
+            if name in cols:
+                header = ",".join(typo if c == name else c for c in cols)
+                text = header + "\n" + door.row.format(load="1kN") + "\n"
+            else:
+                text = (door.header + f",{typo}\n" + door.row.format(load="1kN")
+                        + ",1\n")
+            rows.append((door, name, typo, text, f"did you mean {name!r}"))
+    return rows
 
 
-_TYPOS = [(d, typo, name) for d in DOORS for typo, name in d.typos]
+HEADER_TABLE = _header_table()
 
 
-@pytest.mark.parametrize("door,typo,name", _TYPOS,
-                         ids=[f"{d.name}-{t}" for d, t, _ in _TYPOS])
-def test_a_misspelt_column_is_refused_naming_its_close_match(tmp_path, door, typo,
-                                                             name):
-    """A close spelling of a parameter (difflib ratio >= 0.75) is not silently a user
-    column: the file is refused naming the parameter."""
-    path = tmp_path / "typo.csv"
-    cols = door.header.split(",")
-    header = (",".join(typo if c == name else c for c in cols) if name in cols
-              else door.header + f",{typo}")
-    path.write_text(header + "\n" + door.row.format(load="1kN")
-                    + (",1" if name not in cols else "") + "\n")
-    status, out, err = _calc([str(path)], door.name)
-    assert status == 2 and f"did you mean {name!r}" in err, err
+def test_every_column_that_looks_like_an_input_but_is_not_read_is_refused(tmp_path):
+    """The CSV-header boundary, one table: every parameter's name written with a unit
+    ('radius [mm]', 'modulus (GPa)', 'load_kN', 'length in mm') and every close
+    spelling of a parameter (difflib ratio >= 0.75: 'raduis', 'radial_lode') is not
+    silently a user column: the file is refused (status 2) and the message names the
+    parameter it matches. Every door's every parameter is a row."""
+    path = tmp_path / "header.csv"
+    failed = []
+    for door, _, header, text, words in HEADER_TABLE:
+        path.write_text(text)
+        status, out, err = _calc([str(path)], door.name)
+        if not (status == 2 and words in err):
+            failed.append((door.name, header, status, err))
+    assert not failed, failed
 
 
 @pytest.mark.parametrize("door", DOORS, ids=IDS)
@@ -429,19 +441,23 @@ def _value_options():
 VALUE_OPTIONS = _value_options()
 
 
-@pytest.mark.parametrize("command,option", VALUE_OPTIONS,
-                         ids=[f"{c}{o}" for c, o in VALUE_OPTIONS])
-def test_an_option_given_twice_is_refused_naming_both_values(command, option, capsys):
-    """argparse keeps the last of two occurrences silently (`--load 1kN ... --load 2kN`
-    computed 2 kN): every option that takes a value, of every subcommand, refuses a
-    second occurrence on one line naming the option and both values (status 2)."""
-    try:
-        status = main([command, option, "aa1", option, "bb2"])
-    except SystemExit as exc:
-        status = exc.code
-    err = capsys.readouterr().err
-    assert status == 2
-    assert f"{option} is given twice ('aa1' and 'bb2')" in err and err.count("\n") == 1, err
+def test_an_option_given_twice_is_refused_naming_both_values(capsys):
+    """The command-line boundary for repeats, one table (every option that takes a
+    value, of every subcommand): argparse keeps the last of two occurrences silently
+    (`--load 1kN ... --load 2kN` computed 2 kN); each refuses a second occurrence on
+    one line naming the option and both values (status 2)."""
+    assert {c for c, _ in VALUE_OPTIONS} >= {d.name for d in DOORS}
+    failed = []
+    for command, option in VALUE_OPTIONS:
+        try:
+            status = main([command, option, "aa1", option, "bb2"])
+        except SystemExit as exc:
+            status = exc.code
+        err = capsys.readouterr().err
+        if not (status == 2 and f"{option} is given twice ('aa1' and 'bb2')" in err
+                and err.count("\n") == 1):
+            failed.append((command, option, status, err))
+    assert not failed, failed
 
 
 # ---- an audit over the options and CSV columns (the issue's 138 inputs, as a class) ----

@@ -41,20 +41,45 @@ def test_an_unknown_model_keyword_lists_the_valid_ones(key, keyword):
     assert all(repr(n) in msg for n in valid), msg
 
 
-@pytest.mark.parametrize("key", available_models())
-def test_a_keyword_named_self_is_unknown(key):
-    """self is positional-only in every model's constructor, so self= is an unknown
-    keyword like any other (UnknownNameError naming it), not Python's TypeError
-    'got multiple values for argument self' (hypothesis drew it once; this case is
-    checked for every model on every run)."""
-    with pytest.raises(UnknownNameError, match="'self'"):
-        get_model(key, 5e-3, 10e-3, 115e9, self=1.0)
+def _keyword_table():
+    """The library's keyword boundary, one table. Each row: (the door, the keyword, a
+    call passing it, the error it must raise, the words its message must hold)."""
+    from linecontact import depth
+    from linecontact.errors import UnknownKeywordError
+
+    # self is positional-only in every model's constructor, so self= is an unknown
+    # keyword like any other, not Python's TypeError 'got multiple values for argument
+    # self' (hypothesis drew it once; here it is checked for every model on every run)
+    rows = [(f"get_model({key!r})", "self",
+             lambda key=key: get_model(key, 5e-3, 10e-3, 115e9, self=1.0),
+             UnknownNameError, "'self'")
+            for key in available_models()]
+    # the case of issue 22: Johnson's constant is c, and cc= says so, also through the
+    # functions taking **options (linecontact.depth, get_model), which pass them on
+    rows += [("get_model('johnson')", "cc",
+              lambda: get_model("johnson", 5e-3, 10e-3, 115e9, cc=0.72),
+              UnknownKeywordError, "did you mean 'c'"),
+             ("linecontact.depth", "cc",
+              lambda: depth(1e3, _R, _L, _E, model="johnson", cc=0.7),
+              UnknownKeywordError, "did you mean 'c'")]
+    return rows
 
 
-def test_johnson_cc_names_c():
-    """The case of the issue: Johnson's constant is c; cc= says so."""
-    with pytest.raises(UnknownNameError, match="'c'"):
-        get_model("johnson", 5e-3, 10e-3, 115e9, cc=0.72)
+def test_an_unknown_keyword_is_refused_naming_it():
+    """The keyword boundary, one table (every registered model, and the catch-alls
+    that pass **options on): an unknown keyword raises UnknownNameError (a
+    ValueError; UnknownKeywordError through a **options catch-all) naming it or its
+    close match."""
+    failed = []
+    for door, keyword, call, error, words in _keyword_table():
+        try:
+            call()
+        except UnknownNameError as exc:
+            if not isinstance(exc, error) or words not in str(exc):
+                failed.append((door, keyword, str(exc)))
+        else:
+            failed.append((door, keyword, "not refused"))
+    assert not failed, failed
 
 
 #: (module, function, keyword arguments) of the public functions taking a force or a
@@ -123,21 +148,6 @@ def test_profiled_roller_takes_arrays_of_forces_and_depths(method, values):
         one = solve(v)
         assert s.force == pytest.approx(one.force, rel=1e-9, abs=0)
         assert s.depth == pytest.approx(one.depth, rel=1e-9, abs=0)
-
-
-# ---- catch-alls: **options are checked by the model they reach ---------------------
-
-@pytest.mark.parametrize("call", [
-    lambda: __import__("linecontact").depth(1e3, _R, _L, _E, model="johnson", cc=0.7),
-    lambda: get_model("johnson", _R, _L, _E, cc=0.7),
-])
-def test_keyword_catch_alls_name_the_keyword_too(call):
-    """Functions taking **options (linecontact.depth, get_model) pass them to a model
-    constructor, which names the unknown one the same way."""
-    from linecontact.errors import UnknownKeywordError
-
-    with pytest.raises(UnknownKeywordError, match="did you mean 'c'"):
-        call()
 
 
 # ---- a geometry outside a table's or formula's range is named as the cause ----------

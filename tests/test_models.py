@@ -147,29 +147,65 @@ def test_slice_models_say_why_they_have_no_profile(key, reason):
 
 
 # ---- validity -----------------------------------------------------------------------------
-@pytest.mark.parametrize("arg, value", [("radius", -0.005), ("length", 0.0), ("estar", np.nan),
-                                        ("radius", np.inf)])
-def test_construction_refuses_bad_cylinder(arg, value):
-    """Non-positive or non-finite R, L, E* raise OutOfRangeError at construction, with
-    a message like 'radius = -0.005 m is outside the valid range (0, inf) m'."""
-    kw = dict(radius=R5, length=L5, estar=E)
-    kw[arg] = value
-    for key in MODELS:
-        with pytest.raises(OutOfRangeError) as err:
-            get_model(key, **kw)
-        assert err.value.parameter == arg and err.value.valid.startswith("(0, inf)")
-    if arg == "radius" and value == -0.005:
-        assert str(err.value) == "radius = -0.005 m is outside the valid range (0, inf) m"
+def _range_table():
+    """The library's range boundary for the models, one table. Each row: (model key,
+    what is called, the bad value, a call that must raise OutOfRangeError, the words
+    its message must hold, the parameter it must name or None)."""
+    rows = []
+    # non-positive or non-finite R, L, E* at construction: named, valid range (0, inf)
+    for arg, value in (("radius", -0.005), ("length", 0.0), ("estar", np.nan),
+                       ("radius", np.inf)):
+        kw = {**dict(radius=R5, length=L5, estar=E), arg: value}
+        words = ("radius = -0.005 m is outside the valid range (0, inf) m"
+                 if (arg, value) == ("radius", -0.005) else "(0, inf)")
+        for key in MODELS:
+            rows.append((key, f"get_model({arg}=)", value,
+                         lambda key=key, kw=kw: get_model(key, **kw), words, arg))
+    # non-positive or non-finite depth/force in every model: no NaN returned silently
+    for method, value in (("force", 0.0), ("force", -1e-6), ("depth", np.nan),
+                          ("depth", -1.0), ("stiffness", np.inf)):
+        for key, opts in ALL:
+            rows.append((key, method, value,
+                         lambda key=key, opts=opts, method=method, value=value:
+                         getattr(_model(key, opts), method)(value), "", None))
+    # a finite L whose self-similar scales (L^2, L^3, L^2/R, E* L^3/R) overflow or
+    # underflow (before: an OverflowError from one, depth 0 or NaN from others)
+    for key in ("universal", "kunz", "puttock-thwaite", "johnson", "li-popov"):
+        for length in (1e300, 1e-110):
+            rows.append((key, "get_model(length=)", length,
+                         lambda key=key, length=length: get_model(key, R5, length, E),
+                         f"length = {length:g}", None))
+    # bool('no') is True in Python: a yes/no option given anything but a boolean
+    for key in ("li-popov", "universal"):
+        for word in ("no", "false", 0, None):
+            rows.append((key, "extrapolate=", word,
+                         lambda key=key, word=word: get_model(key, R5, L5, E,
+                                                              extrapolate=word),
+                         "extrapolate", None))
+    return rows
 
 
-@pytest.mark.parametrize("method, value", [("force", 0.0), ("force", -1e-6), ("depth", np.nan),
-                                           ("depth", -1.0), ("stiffness", np.inf)])
-def test_evaluations_refuse_bad_input(method, value):
-    """Non-positive or non-finite depth/force raise OutOfRangeError in every model: no NaN
-    is returned silently."""
-    for key, opts in ALL:
-        with pytest.raises(OutOfRangeError):
-            getattr(_model(key, opts), method)(value)
+RANGE_TABLE = _range_table()
+
+
+def test_every_model_refuses_out_of_range_input_naming_it():
+    """The models' range boundary, one table (every registered model at construction
+    and in every evaluation): a non-positive or non-finite R, L, E*, depth or force, a
+    length whose scales overflow, a yes/no option given a word raise OutOfRangeError
+    whose message names the input (at construction the parameter and its valid range:
+    'radius = -0.005 m is outside the valid range (0, inf) m'), never a NaN or a
+    silently truthy 'no'."""
+    failed = []
+    for key, what, value, call, words, parameter in RANGE_TABLE:
+        try:
+            call()
+        except OutOfRangeError as exc:
+            if words not in str(exc) or (parameter is not None and not (
+                    exc.parameter == parameter and exc.valid.startswith("(0, inf)"))):
+                failed.append((key, what, value, str(exc)))
+        else:
+            failed.append((key, what, value, "not refused"))
+    assert not failed, failed
 
 
 def test_out_of_range_models_are_built_but_refuse_to_evaluate():
@@ -422,15 +458,6 @@ def test_accuracy_table_rows_are_reproduced_by_the_code(row):
                 f"{q}_err_{tag} at L/R = {lr:g}, d/R = {dr:.3g}"
 
 
-@pytest.mark.parametrize("key", ["li-popov", "universal"])
-@pytest.mark.parametrize("word", ["no", "false", 0, None])
-def test_extrapolate_takes_a_boolean_not_a_truthy_word(key, word):
-    """bool('no') is True in Python: a yes/no option given anything but a boolean is
-    refused with the parameter's name, never read as 'on'."""
-    with pytest.raises(OutOfRangeError, match="extrapolate"):
-        get_model(key, R5, L5, E, extrapolate=word)
-
-
 @pytest.mark.parametrize("key", ["palmgren", "iso16281", "johnson", "universal"])
 def test_stiffness_of_a_pint_depth_equals_the_si_value(key):
     """A pint Quantity is converted to SI before any arithmetic: k(3 um) is the same
@@ -442,16 +469,6 @@ def test_stiffness_of_a_pint_depth_equals_the_si_value(key):
     assert m.stiffness(3 * u.um) == pytest.approx(m.stiffness(3e-6), rel=1e-12)
     F = m.force(3e-6)
     assert m.stiffness_at_force(F * u.N) == pytest.approx(m.stiffness_at_force(F), rel=1e-12)
-
-
-@pytest.mark.parametrize("key", ["universal", "kunz", "puttock-thwaite", "johnson", "li-popov"])
-@pytest.mark.parametrize("length", [1e300, 1e-110])
-def test_cylinders_whose_scales_overflow_are_refused_by_every_model(key, length):
-    """A finite L whose self-similar scales (L^2, L^3, L^2/R, E* L^3/R) overflow or
-    underflow is refused at construction, naming the length, for every model alike
-    (before: an OverflowError from one, depth 0 or NaN from others)."""
-    with pytest.raises(OutOfRangeError, match="length = 1e[+-]"):
-        get_model(key, R5, length, E)
 
 
 def test_universal_table_end_that_rounds_above_d_max_is_accepted():

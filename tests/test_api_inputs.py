@@ -192,3 +192,39 @@ def test_exactly_one_of_depth_and_force_is_a_one_line_range_error():
         TangentialContact(m, 0.1, 80e9, depth=1e-6, force=1e3)
     with pytest.raises(OutOfRangeError, match="neither"):
         m.evaluate()
+
+
+# ---- the range check's fast path for one number refuses what the array path refuses ----
+
+def test_scalar_check_matches_the_array_path():
+    """check_interval's fast path for one Python number returns the 0-d float array of
+    the general path (the value checked as a 1-element array, then reshaped), and
+    refuses exactly what it refuses (NaN, out of range, subnormal; 2^60 below an open
+    end of 2^53 + 1, which rounds to 2^53 as a float: refused there, as 2^53 is).
+    One table: every value below against every kind of interval."""
+    from linecontact.checks import check_interval
+    from linecontact.errors import OutOfRangeError
+
+    values = [0.005, 50, -0.0, 0.0, 1e308, 2.3e-308, -0.05, 0.1, float("nan"),
+              float("inf"), 5e-320, -5e-320, 2 ** 60, 2 ** 53]
+    intervals = [(0.0, np.inf, True, True), (-0.1, 0.1, True, True),
+                 (0.0, 0.5, False, False), (10, 4000, False, False),
+                 (0, 2 ** 53 + 1, False, True)]
+    failed = []
+    for lo, hi, lo_open, hi_open in intervals:
+        kw = dict(low_open=lo_open, high_open=hi_open)
+        for value in values:
+            try:
+                ref = check_interval("v", np.array([float(value)]), lo, hi, **kw)[0]
+            except OutOfRangeError:
+                try:
+                    check_interval("v", value, lo, hi, **kw)
+                except OutOfRangeError:
+                    continue
+                failed.append((value, (lo, hi, lo_open, hi_open), "not refused"))
+                continue
+            got = check_interval("v", value, lo, hi, **kw)
+            if not (got.shape == () and got.dtype == np.float64 and got.item() == ref
+                    and math.copysign(1, got.item()) == math.copysign(1, ref)):
+                failed.append((value, (lo, hi, lo_open, hi_open), repr(got)))
+    assert not failed, failed

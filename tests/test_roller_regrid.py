@@ -169,32 +169,6 @@ def test_closed_form_slope(prof):
     assert lp.drop_slope_inside(PROFILES[-1]) is None      # table: differences
 
 
-@pytest.mark.parametrize("value", [0.005, 50, -0.0, 0.0, 1e308, 2.3e-308, -0.05, 0.1,
-                                   float("nan"), float("inf"), 5e-320, -5e-320, 2 ** 60,
-                                   2 ** 53])
-@pytest.mark.parametrize("ends", [(0.0, np.inf, True, True), (-0.1, 0.1, True, True),
-                                  (0.0, 0.5, False, False), (10, 4000, False, False),
-                                  (0, 2 ** 53 + 1, False, True)])
-def test_scalar_check_matches_the_array_path(value, ends):
-    """check_interval's fast path for one Python number returns the 0-d float array of
-    the general path (the value checked as a 1-element array, then reshaped), and
-    refuses exactly what it refuses (NaN, out of range, subnormal; 2^60 below an open
-    end of 2^53 + 1, which rounds to 2^53 as a float: refused there, as 2^53 is)."""
-    from linecontact.checks import check_interval
-    from linecontact.errors import OutOfRangeError
-    lo, hi, lo_open, hi_open = ends
-    kw = dict(low_open=lo_open, high_open=hi_open)
-    try:
-        ref = check_interval("v", np.array([float(value)]), lo, hi, **kw)[0]
-    except OutOfRangeError:
-        with pytest.raises(OutOfRangeError):
-            check_interval("v", value, lo, hi, **kw)
-        return
-    got = check_interval("v", value, lo, hi, **kw)
-    assert got.shape == () and got.dtype == np.float64
-    assert got.item() == ref and math.copysign(1, got.item()) == math.copysign(1, ref)
-
-
 def test_solution_built_as_the_constructor_builds_it():
     """RollerSolution._built (the solver's fast path) holds the same attributes, in the
     same order (to_dict and JSON follow it), as the dataclass constructor given the

@@ -362,11 +362,30 @@ def test_a_barely_touching_roller_still_gets_its_contact():
     assert res.force == pytest.approx(force * (d / approach) ** 1.5, rel=0.1)
 
 
+def test_an_empty_figure_option_is_no_figure_on_the_parser():
+    """`build_tables roller --figure ''` means no figure: the option was a Path, and
+    Path('') is '.', so the study saved a file '.png' in the working folder. On the
+    study's own parser '' stays the empty (false) string the study tests before
+    drawing (`if args.figure:`), and the default is the docs figure; the whole command
+    on tiny grids is the slow test below."""
+    import argparse
+
+    import tools.studies.roller_study as rs
+    parser = argparse.ArgumentParser()
+    rs.add_arguments(parser)
+    assert parser.parse_args(["--figure", ""]).figure == ""
+    assert parser.parse_args(["--figure", "x.png"]).figure == "x.png"
+    default = parser.parse_args([]).figure
+    assert isinstance(default, str) and default.endswith("roller_accuracy.png")
+
+
+@pytest.mark.slow
 def test_study_command_writes_its_table_and_no_figure_with_an_empty_name(tmp_path,
                                                                          monkeypatch):
     """`build_tables roller --figure ''` writes the table and no figure: the option was
     a Path, and Path('') is '.', so the study saved a file '.png' in the working folder.
-    A smoke run of the command on tiny grids (its numbers are not checked here)."""
+    A smoke run of the command on tiny grids (its numbers are not checked here). Slow:
+    the 28-case study takes minutes (the parser's side is the test above)."""
     from linecontact.tables import read_table
     from tools.build_tables import main as build_tables
     monkeypatch.chdir(tmp_path)

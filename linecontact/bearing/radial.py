@@ -847,7 +847,9 @@ class RadialRollerBearing:
     def _solve_sliced(self, F):
         """Profiled rollers: each contact's coupled-slice solution tabulated over the
         depths the bearing needs (the load range first estimated with the universal
-        curve), the two in series at equal load, inverted like a law."""
+        curve), the two in series at equal load, inverted like a law; the ring
+        equilibrium on that table polished with exact solves of the loaded rollers
+        (:meth:`_polish_rollers`), whose solves give every per-roller output."""
         est, law0, dr0, s0 = self._universal_start(F)
         Qmax0 = float(np.max(law0.force(est._approach(dr0))[0]))
         lo, hi = 1e-3 * Qmax0, 1.6 * Qmax0

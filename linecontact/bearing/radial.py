@@ -711,8 +711,9 @@ class RadialRollerBearing:
         si, so = sols[inverse[jm]]
         R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
                                       self.raceways.outer)
-        roller = _contacts_solution(self.model, si, so, R_in, R_out, float(th * c[jm]),
-                                    True, self.raceways.check_fit(self.roller_diameter / 2))
+        roller = _contacts_solution(self.model, si, so, R_in, R_out,
+                                    float(th * c[jm]), True,
+                                    self.raceways.check_fit(self.roller_diameter / 2))
         fields = self._roller_stresses(roller)
         stress = _worst_of(fields)
         notes.extend(stress["notes"])
@@ -880,7 +881,7 @@ class RadialRollerBearing:
         # every roller's load, approach, tilt, moment and contacts are those of
         # roller_between_raceways at its load
         dr, Qg, kg, sols, residual, inverse, cg, w = self._polish_rollers(law, dr, F)
-        Z, L, n_lam = self.rollers, self.length, self.n_slices
+        L, n_lam = self.length, self.n_slices
         x = (np.arange(n_lam) + 0.5) / n_lam * L - L / 2
         qi = np.zeros((len(cg), n_lam))
         qo = np.zeros_like(qi)
@@ -899,13 +900,14 @@ class RadialRollerBearing:
             K += w[g] * cg[g] ** 2 * (Ki @ np.linalg.solve(Ki + Ko, Ko))
         Q = Qg[inverse]
         roller = sols[inverse[int(np.argmax(Q))]]
-        pi, po = roller.peak_pressure_inner, roller.peak_pressure_outer
-        pp = math.nan if pi is None or po is None else max(float(pi), float(po))
+        p_in, p_out = roller.peak_pressure_inner, roller.peak_pressure_outer
+        pp = (math.nan if p_in is None or p_out is None      # edge loaded: not reported
+              else max(float(p_in), float(p_out)))
         notes = []
         if residual > 1e-9:
             notes.append(f"the exact polish of the roller loads stopped at a relative "
                          f"residual of {residual:.2g} (30 Newton steps)")
-        label = f"{self.model} ({sol.inner.method}, {sol.inner.n_slices} slices)"
+        label = f"{self.model} ({roller.inner.method}, {roller.inner.n_slices} slices)"
         return (dr, Q, kg[inverse], self._approach(dr), x, qi[inverse], qo[inverse],
                 pp, residual, label, K, roller, Mg[inverse], tg[inverse], notes)
 

@@ -1262,6 +1262,12 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
 BEARING_FIELDS = (("roller_loads", "roller load Q", "N"),
                   ("roller_moments", "roller moment M", "N m"),
                   ("roller_tilts", "roller tilt", "rad"))
+#: The life panels of a bearing solved at a speed (``solve(..., speed=)``): each roller's
+#: film ratio, the smaller of its two contacts' (where the film inputs are given;
+#: unloaded rollers, Lambda = inf, are left out), and its share of the L10r damage.
+BEARING_LIFE_FIELDS = ((("film_ratio_inner", "film_ratio_outer"), "film ratio Lambda",
+                        "-"),
+                       ("roller_damage", "damage share", "-"))
 
 
 @register("bearing")
@@ -1270,7 +1276,8 @@ def bearing(solution, *, fig=None):
 
     One panel per per-roller quantity the solution holds (:data:`BEARING_FIELDS`;
     moments and tilts that are all zero to round-off, as with aligned rings, are left
-    out and the title says so), against the roller's azimuth from the load
+    out and the title says so; for a solution at a speed, the film ratio and the damage
+    share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from the load
     line, the load zone shaded.
 
     Parameters
@@ -1304,17 +1311,26 @@ def bearing(solution, *, fig=None):
     shown, zero = [], []
     # round-off: 1e-12 of the largest roller load times the laminae's span (about the
     # roller length) for a moment, 1e-12 rad for a tilt (a symmetric roller between
-    # aligned rings, solved exactly, has moments of 1e-17 Q L)
+    # aligned rings, solved exactly, has moments of 1e-17 Q L); exact zeros elsewhere
     span = 2 * float(np.max(np.abs(solution.slice_x))) if getattr(
         solution, "slice_x", None) is not None and np.size(solution.slice_x) else 0.0
     tiny = {"roller_moments": 1e-12 * float(np.max(solution.roller_loads)) * span,
             "roller_tilts": 1e-12}
-    for attr, name, unit in BEARING_FIELDS:
-        v = getattr(solution, attr, None)
+    fields = BEARING_FIELDS
+    if getattr(solution, "speed", None) is not None:
+        fields = fields + BEARING_LIFE_FIELDS
+    for attr, name, unit in fields:
+        if isinstance(attr, tuple):          # the smaller of two contacts' values
+            parts = [getattr(solution, a, None) for a in attr]
+            v = None if any(p is None for p in parts) else np.minimum(*parts)
+        else:
+            v = getattr(solution, attr, None)
         if v is None:
             continue
         v = np.asarray(v, dtype=float)
-        if attr != "roller_loads" and not np.any(np.abs(v) > tiny.get(attr, 0.0)):
+        v = np.where(np.isfinite(v), v, np.nan)     # Lambda = inf: no film to show
+        small = np.abs(v) <= tiny[attr] if attr in tiny else v == 0
+        if attr != "roller_loads" and np.all(small):
             zero.append(name.split()[1])            # "moment", "tilt"
             continue
         shown.append((v, name, unit))

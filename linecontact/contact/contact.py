@@ -632,7 +632,7 @@ class Contact:
         elif method == "ellipse":
             r, notes = self._ellipse_ratio(n, direction, r)
         else:
-            notes = self._mdr_notes(law, e, r)
+            notes = self._mdr_notes(law, e, r, n)
         kt = out(r * np.asarray(n.stiffness))
         ustar = out(mu * e / r)
         rkw = {} if method == "mdr" else {"ratio": r}
@@ -684,10 +684,11 @@ class Contact:
             method=method, stiffness_ratio=float(r) if method == "mdr" else r,
             direction=None if method == "mdr" else direction, notes=notes)
 
-    def _mdr_notes(self, law, approach, mdr_ratio):
-        """The MDR's direction-free ratio and its measured error where known: against
-        Mindlin's ellipse for a crowned roller, against the BEM table for a straight
-        cylinder's law; not measured for other profiles."""
+    def _mdr_notes(self, law, approach, mdr_ratio, normal=None):
+        """The MDR's direction-free ratio and its error: against Mindlin's ellipse for a
+        crowned roller, against the equivalent ellipse (itself measured against the 3D
+        tangential BEM) for another profile solved by slices, against the BEM table for
+        a straight cylinder's law."""
         from .. import tangential as tg
 
         head = f"MDR: k_t/k_n = G*/E* = {mdr_ratio:.4f} in every direction"
@@ -701,9 +702,16 @@ class Contact:
                     f"{err[1]:+.1%} along (the default method gives the law by "
                     "direction)",)
         if self.sliced:
-            return (f"{head}: for an elongated footprint the tangential stiffness "
-                    "depends on the direction (the default method='ellipse' gives it, "
-                    "with its measured error)",)
+            err = []
+            for direction in ("across", "along"):
+                ell = np.atleast_1d(self._ellipse_ratio(normal, direction,
+                                                        mdr_ratio)[0])
+                err.append(float(np.max(mdr_ratio / ell - 1)) if direction == "along"
+                           else float(np.min(mdr_ratio / ell - 1)))
+            return (f"{head}: {err[0]:+.1%} from the equivalent ellipse of the "
+                    f"footprint across, {err[1]:+.1%} along (the default "
+                    "method='ellipse' gives the law by direction, with its error "
+                    "measured against the 3D tangential BEM)",)
         if self.model not in tg.STRAIGHT_CYLINDER_MODELS:
             return (head,)
         try:
@@ -759,7 +767,8 @@ class Contact:
         cov = tangential_coverage()
         where = "the 3D tangential BEM (tables/tangential_profiles.csv)"
         if cov is None:
-            return f"equivalent ellipse: its error against {where} is not known here"
+            return (f"equivalent ellipse {direction}: its error against {where} is not "
+                    "known here")
         D = 2 * self.roller.radius
         L = self.roller.length
         F = np.asarray(n.force, dtype=float)

@@ -201,24 +201,26 @@ def _composed(contact, rows, sel, F, state, out, note):
 
 def _directions(contact, mu, F, Q, j, out, note):
     """k_t (and the shift under Q) across and along the axis of a composed contact where
-    the library has a law by direction (a crowned roller: Mindlin's ellipse, the
-    default of :meth:`linecontact.contact.Contact.tangential`); "-" with the reason
-    elsewhere."""
+    the library has a law by direction (the default of
+    :meth:`linecontact.contact.Contact.tangential`: a crowned roller's Mindlin ellipse,
+    any other sliced profile's equivalent ellipse), with the library's notes; "-" with
+    the reason elsewhere."""
+    methods = set()
     for direction in ("across", "along"):
         t = contact.tangential(mu, force=F, tangential_force=Q, direction=direction)
-        if t.method != "mindlin":
-            crowned = t.notes and "Mindlin" in t.notes[0]   # a crown, ellipse not inside
-            note(j, "kt across/along: " + (t.notes[0] if crowned else
-                                           "the BEM table is for a straight, aligned "
-                                           "cylinder"))
+        if t.method not in ("mindlin", "ellipse"):
+            note(j, "kt across/along: the law by direction is for a roller solved by "
+                    "slices (a straight cylinder's law: method='bem')")
             return
+        methods.add(t.method)
         if t.notes:
             note(j, f"kt {direction}: " + "; ".join(t.notes))
-            continue
         out[f"kt_{direction}"][j] = t.stiffness
         if Q is not None and t.shift is not None:
             out[f"shift_{direction}"][j] = t.shift
-    note(j, "kt/u across/along: Mindlin's Hertz ellipse (crowned roller)")
+    note(j, "kt/u across/along: " + ("Mindlin's Hertz ellipse (crowned roller)"
+                                     if methods == {"mindlin"} else
+                                     "the equivalent ellipse of the footprint"))
 
 
 def _slip_correction(model, direction, depth, gstar, q):

@@ -173,8 +173,8 @@ class TangentialResult(_Result):
         equivalent ellipse's in the direction asked [-].
     direction : str or None
         ``"across"`` or ``"along"`` the roller's axis for a direction-dependent law
-        (``method="bem"``, ``"mindlin"`` or ``"ellipse"``); None for the MDR's, the same in every
-        direction.
+        (``method="bem"``, ``"mindlin"`` or ``"ellipse"``); None for the MDR's, the
+        same in every direction.
     notes : tuple of str
         Validity notes (e.g. loads at which a crowned roller's ellipse reaches its ends).
 

@@ -243,7 +243,8 @@ def assemble(results):
         for i, nu in enumerate(r["nu"]):
             mdr = mdr_stiffness_ratio(nu)
             row = dict(
-                profile=PROFILES.index(r["profile"]), l_over_d=r["l_over_d"], load=r["load"], nu=nu,
+                profile=PROFILES.index(r["profile"]), l_over_d=r["l_over_d"],
+                load=r["load"], nu=nu,
                 edge_loaded=int(r["edge_loaded"]), kprime=r["kprime"],
                 kt_kn_across=r["across"][i], kt_kn_along=r["along"][i], kt_kn_mdr=mdr,
                 grid_change_across=r["across"][i] / r["across_N"][i] - 1,
@@ -295,12 +296,14 @@ def run(args):
               "the MDR; partial slip of the scaled law",
         source="computed by the linecontact boundary-element solver (tools/bem/roller.py "
                "for the normal contact, tools/bem/tangential.py: flat-punch problems on its "
-               "contact set with Cerruti's rectangle coefficients, uncoupled (Goodman 1962), "
+               "contact set with Cerruti's rectangle coefficients, uncoupled (Goodman "
+               "1962), "
                "one traction component parallel to the shift; "
                "tools/studies/tangential_profile_study.py)",
         profiles=" ".join(f"{i}={n}" for i, n in enumerate(PROFILES)),
-        units="profile = index in the 'profiles' line (linecontact.profiles: circular crown Rc = 50 L, iso16281 (L, D), lundberg "
-              "and johns-gohar designed for the middle load, end-relief:corner a corner radius 0.1 D, "
+        units="profile = index in the 'profiles' line (linecontact.profiles: circular "
+              "crown Rc = 50 L, iso16281 (L, D), lundberg and johns-gohar designed for "
+              "the middle load, end-relief:corner a corner radius 0.1 D, "
               "end-relief:linear 0.1 L long and 2.5e-4 D deep, straight with sharp ends), "
               "l_over_d = L/(2R) [-], load = q/(E* 2R), q = F/L [-], nu [-], edge_loaded "
               "(0/1: the contact reaches a roller end), kprime = b/a of the equivalent "

@@ -30,7 +30,7 @@ a force F given as q/(E* D), D = 2R, q = F/L; one task of tools.studies.runner):
    per fretting cycle (Masing) at half the law's gross-slip shift, BEM over law.
 
 The curves scale exactly with mu, so mu = 1. Budget: the default run (42 cases, 3
-values of nu) took 401 s with one worker process on the 2-core reference machine under
+values of nu) took 401-474 s with one worker process on the 2-core reference machine under
 load (load average 14); the table's wall_time line records each run's own figure.
 """
 from __future__ import annotations

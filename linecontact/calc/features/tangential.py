@@ -8,9 +8,11 @@
     the table is not installed or the case is outside it). G* needs the moduli and
     Poisson's ratios (not ``--estar``).
     For a crowned roller (``--crown-radius``) whose Hertz ellipse lies inside it, the
-    values across and along are Mindlin's for the ellipse
-    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`): the
-    calculator prints both directions, so it takes no direction option.
+    values across and along are Mindlin's for the ellipse, and for any other roller
+    solved by slices those of the equivalent ellipse of its footprint
+    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`), with
+    the error measured in tables/tangential_profiles.csv in the notes: the calculator
+    prints both directions, so it takes no direction option.
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's
@@ -62,7 +64,9 @@ notes = {
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
                   "tangential_cylinder.csv) times k, or for a crowned roller whose Hertz "
                   "ellipse lies inside it Mindlin's ratio of the ellipse (Mindlin 1949) "
-                  "times k; u: tangential shift under Q at "
+                  "times k, or for another roller solved by slices Mindlin's ratio of the "
+                  "equivalent ellipse (the footprint's half-length and k) times k; u: "
+                  "tangential shift under Q at "
                   "constant normal force or depth, u = (mu/r) [d - d(F - |Q|/mu)] sign(Q) "
                   "with r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
                   "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "

@@ -995,6 +995,8 @@ def _tangential_name(c):
         return f"{c.direction} (BEM)"
     if method == "mindlin":
         return f"{c.direction} (Mindlin)"
+    if method == "ellipse":
+        return f"{c.direction} (equivalent ellipse)"
     return "MDR (G*/E*)"
 
 

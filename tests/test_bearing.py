@@ -320,3 +320,24 @@ def test_tilted_roller_is_roller_between_raceways():
     assert r.deflection == pytest.approx(s.approach[j], rel=1e-9)
     assert r.tilt == pytest.approx(s.roller_tilts[j], rel=1e-9)
     assert r.moment_inner == pytest.approx(s.roller_moments[j], abs=1e-9 * Q * L)
+
+
+def test_law_bearing_roller_is_roller_between_raceways():
+    """A straight roller under a law (the universal curve): the solution's most loaded
+    roller (BearingSolution.roller, taken from the exact polish's own solve of the
+    loaded rollers) is roller_between_raceways at Q_max, equal to the last bit (the
+    law's elementwise evaluation), its approach meets the deflection to round-off
+    (the polish stops at 1e-13), and the stresses are the Hertz strips of that roller
+    (the case check's input, roller_stresses)."""
+    from linecontact.raceway import roller_between_raceways
+
+    b = RadialRollerBearing(20, 100e-3, 10e-3, 10e-3, 20e-6)
+    s = b.solve(10e3)
+    r = roller_between_raceways(5e-3, 10e-3, b.estar, b.raceways, force=s.max_roller_load)
+    for name in ("force", "deflection", "stiffness", "peak_pressure_inner",
+                 "peak_pressure_outer", "depth_inner", "depth_outer"):
+        assert getattr(s.roller, name) == getattr(r, name), name
+    j = int(np.argmax(s.roller_loads))
+    assert s.approach[j] == pytest.approx(r.deflection, rel=1e-12)
+    worst = max(st.worst["tresca"]["value"] for st in s.roller_stresses.values())
+    assert s.stress["tresca"]["value"] == worst

@@ -137,6 +137,16 @@ def _worst_of(fields):
     return {"worst": worst, "notes": notes}
 
 
+def _one_roller(sol, i):
+    """Roller i of a :class:`~linecontact.raceway.RacewaySolution` solved for several
+    loads under a law (its per-load entries taken at i): that roller's own solve."""
+    from dataclasses import fields, replace
+
+    per_load = {f.name: getattr(sol, f.name) for f in fields(sol)}
+    return replace(sol, **{k: float(v[i]) for k, v in per_load.items()
+                           if isinstance(v, np.ndarray) and v.ndim == 1})
+
+
 def _ring_step(c, w, k, r, e):
     """One Newton step of the ring equilibrium on (Q_j, delta_r), the rollers' law
     linearised: delta(Q_j + dQ_j) = (delta_r + d delta_r) c_j - P_d/2 and
@@ -1103,7 +1113,7 @@ class RadialRollerBearing:
             label = sol.model if sol is not None else self.model
             c = np.cos(self.azimuth)
             K = np.array([[float(np.sum(k * c * c))]])
-            roller = self._roller(float(np.max(Q)))
+            roller = _one_roller(sol, int(np.argmax(np.asarray(sol.force))))
             Mj, tj = np.zeros(self.rollers), np.zeros(self.rollers)
         else:
             (dr, Q, k, approach, x, qi, qo, pp, law_error, label, K, roller, Mj, tj,

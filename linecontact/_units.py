@@ -9,8 +9,16 @@ a unit, and nothing more*:
   exponent (``5``, ``0.2``, ``.5``, ``2.1e11``); a decimal comma (``1,5mm``), thousands
   separators, ``inf``, ``nan``, hexadecimal and non-ASCII digits are refused;
 - the unit is ONE unit name, letters only, with or without a space before it (``mm``,
-  ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``); products, quotients,
-  powers, sums and any other expression are refused, never evaluated. The common
+  ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``, ``°``), or one of the
+  compound names of :data:`BUILTIN_UNITS` as people write them (a moment ``N m``,
+  ``N·m``, ``N*m``, ``Nm``; a surface energy ``mJ/m^2``, ``mJ/m2``, ``mJ/m²``); any
+  other product, quotient, power, sum or expression is refused, never evaluated;
+- typography is read as what it means (:func:`normalize`): the Unicode minus sign
+  (U+2212) as ``-``, the no-break and thin spaces (U+00A0, U+2009, U+202F, U+2007) as
+  a space, the middle dots (U+00B7, U+22C5) as ``*``, the superscript two as ``^2``;
+- unit names are case-sensitive (``MM`` is not ``mm``): a name that matches a unit
+  of the right kind apart from letter case is refused with a "did you mean", never
+  read as some other unit (pint would read ``MM`` as megamolar). The common
   names (:data:`BUILTIN_UNITS`: SI prefixes of m, N, Pa, and inch-pound units) have
   their exact factors here; for any other name pint (https://pint.readthedocs.io) is
   asked only for the size of that one unit in SI, once per distinct unit, so a wrong
@@ -52,23 +60,45 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
-    "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
+    "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.03°, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
     "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
-    "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12Nm, 1.5kNm, 12"),
+    "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12 N m, 1.5kNm, 12"),
 }
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
+_NAME = r"[A-Za-z\u00b5\u03bc\u039c\u00b0]+"
 QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
-    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
+    rf"\s*(?P<unit>{_NAME}(?:(?:\s*\*\s*|\s+){_NAME})*(?:/[A-Za-z]+(?:\^?[0-9])?)?)?\s*$",
     re.ASCII,
 )
 # re.ASCII: \s and the class above never match other scripts' digits or spaces; the
 # micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm"), and the
 # capital \u039c so that "5 ΜM" (µm typed in capitals) gets its "did you mean".
-# A compound name (``mJ/m^2``) is matched as ONE name and converted only if it is a
-# built-in unit (the surface energies of BUILTIN_UNITS); it is never handed to pint.
+# the degree sign \u00b0 too ("0.05°"). A compound name (``mJ/m^2``, ``N m``, ``N*m``) is
+# matched as ONE name and converted only if its canonical spelling (:func:`_canonical`)
+# is a built-in unit (the moments and surface energies of BUILTIN_UNITS); it is never
+# handed to pint.
+
+#: Typography read as what it means (:func:`normalize`): minus sign, no-break, thin
+#: and figure spaces, middle dots as a product, superscript two.
+_TYPOGRAPHY = str.maketrans({"\u2212": "-", "\u00a0": " ", "\u2009": " ", "\u202f": " ",
+                             "\u2007": " ", "\u00b7": "*", "\u22c5": "*", "\u00b2": "^2"})
+
+
+def normalize(text):
+    """`text` with its typography read as ASCII: the Unicode minus (U+2212) as ``-``,
+    the no-break, thin, narrow and figure spaces as a space, the middle dots (U+00B7,
+    U+22C5) as ``*``, ``²`` as ``^2``; anything else unchanged (other scripts' digits
+    and spaces stay refused).
+
+    Examples
+    --------
+    >>> normalize("\u22125\u00a0mm"), normalize("20 N\u00b7m"), normalize("50 mJ/m\u00b2")
+    ('-5 mm', '20 N*m', '50 mJ/m^2')
+    """
+    return text.translate(_TYPOGRAPHY)
 
 #: Smallest positive normal float: below it a value has lost precision (subnormal).
 _TINY = sys.float_info.min
@@ -142,7 +172,8 @@ BUILTIN_UNITS = {
               "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
     "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
-    "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180},
+    "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180,
+              "\u00b0": 3.141592653589793 / 180},
     "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
     "surface_energy": {"J/m^2": 1.0, "mJ/m^2": 1e-3, "uJ/m^2": 1e-6, "N/m": 1.0,
                        "mN/m": 1e-3},
@@ -151,6 +182,28 @@ BUILTIN_UNITS = {
 #: Built-in names that pint spells otherwise (pint reads 'Nm' as number-metre): the
 #: expression pint gives the same factor for (held by a test).
 PINT_SPELLING = {"Nm": "N*m", "kNm": "kN*m", "Nmm": "N*mm", "MNm": "MN*m"}
+#: The products of unit names people write for the built-in compound names ("N m",
+#: "N*m", "N·m" for "Nm"): factors -> built-in name (:func:`_canonical`).
+_PRODUCTS = {tuple(v.split("*")): k for k, v in PINT_SPELLING.items()}
+
+
+def _canonical(unit):
+    """The built-in spelling of a unit name as typed, or the name itself: a product
+    of names (``N m``, ``N*m``) -> ``Nm`` when it is a built-in moment, else the
+    factors joined by ``*``; a power of the denominator without its caret (``m2``) ->
+    ``m^2``.
+
+    Examples
+    --------
+    >>> _canonical("N m"), _canonical("kN * m"), _canonical("mJ/m2"), _canonical("m m")
+    ('Nm', 'kNm', 'mJ/m^2', 'm*m')
+    """
+    num, slash, den = unit.partition("/")
+    factors = tuple(re.split(r"\s*\*\s*|\s+", num.strip()))
+    num = _PRODUCTS.get(factors, "*".join(factors))
+    if slash:
+        den = re.sub(r"\^?([0-9])$", r"^\1", den)
+    return num + slash + den
 
 
 def _a(kind):
@@ -170,12 +223,22 @@ def _unit_factor(unit, kind):
     if key in _FACTORS:
         return _FACTORS[key]
     dim, si, _ = DIMENSIONS[kind]
+    name = _canonical(unit)
+    other = next((k for k, units in BUILTIN_UNITS.items() if name in units), None)
     if kind == "dimensionless":
         result = f"expected a pure number, got the unit {unit!r}"
-    elif unit in BUILTIN_UNITS.get(kind, ()):
-        result = BUILTIN_UNITS[kind][unit]
-    elif "/" in unit:
-        names = [n for units in BUILTIN_UNITS.values() for n in units if "/" in n]
+    elif name in BUILTIN_UNITS.get(kind, ()):
+        result = BUILTIN_UNITS[kind][name]
+    elif other is not None:  # a built-in unit of another kind: say which, without pint
+        result = f"expected {_a(kind)}, got {_a(other)} ({unit})"
+    elif any(n.casefold() == name.casefold() for n in BUILTIN_UNITS.get(kind, ())):
+        # 'MM', 'KN': a unit of this kind in the wrong case, never read as another
+        # unit (pint reads 'MM' as megamolar): unit names are case-sensitive
+        result = (f"unknown unit {unit!r} (unit names are case-sensitive: "
+                  + _did_you_mean(unit, kind)[2:])
+    elif "/" in name or "*" in name:
+        names = [n for units in BUILTIN_UNITS.values() for n in units
+                 if "/" in n or n in PINT_SPELLING]
         result = (f"unknown unit {unit!r} (the compound names understood are "
                   f"{', '.join(names)})")
     else:
@@ -189,7 +252,7 @@ def _unit_factor(unit, kind):
                 result = f"expected {_a(kind)}, got {_describe_unit(u)}"
             else:
                 result = float(ureg.Quantity(1.0, u).to(si).magnitude)
-    if isinstance(result, str):
+    if isinstance(result, str) and "did you mean" not in result:
         result += _did_you_mean(unit, kind)
     _FACTORS[key] = result
     return result
@@ -231,7 +294,7 @@ def _describe_unit(u):
 
 def _format_reason(text):
     """Why a string is not 'a number with a unit': the commonest mistakes by name."""
-    s = text.strip()
+    s = normalize(text).strip()
     if not s:
         return "empty value"
     if "," in s:
@@ -313,6 +376,7 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
 
 def _parse_one(text, kind):
     """(SI value, None) or (None, reason) for one string: the rule of the module."""
+    text = normalize(text)
     m = QUANTITY.match(text)
     if m is None:
         return None, _format_reason(text)
@@ -527,7 +591,9 @@ def _match_column(parameter, cells, valid, errors):
     import numpy as np
 
     n = len(cells)
-    matches = list(map(QUANTITY.match, cells))      # one C-level pass
+    # one C-level pass (typography read as ASCII first, as parse_quantity does)
+    matches = [QUANTITY.match(normalize(c)) if isinstance(c, str) else QUANTITY.match(c)
+               for c in cells]
     if None in matches:
         numbers = [""] * n
         units = [None] * n

@@ -41,6 +41,7 @@ it as one line and exits with status 2.
 
 from __future__ import annotations
 
+import math
 import re
 import sys
 
@@ -52,6 +53,9 @@ __all__ = [
     "parse_column",
     "parse_sweep",
     "parse_bool",
+    "engineering_unit",
+    "display_unit",
+    "format_numbers",
 ]
 
 #: Physical kinds the CLI understands: pint dimensionality, SI unit, examples for messages.
@@ -160,6 +164,164 @@ _PREFIXES = {"p": 1e-12, "n": 1e-9, "u": 1e-6, "\u00b5": 1e-6, "\u03bc": 1e-6, "
              "c": 1e-2, "d": 1e-1, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12}
 _INCH = 0.0254  # m, exact by definition (1959)
 _LBF = 4.4482216152605  # N, exact: 0.45359237 kg x 9.80665 m/s^2
+
+#: Prefixes offered, largest first (their factors are :data:`_PREFIXES`, the one home
+#: of the SI prefixes); shown with the micro sign.
+_ENGINEERING = ("T", "G", "M", "k", "", "m", "u", "n", "p")
+_SHOWN = {"u": "\u00b5"}
+#: Units that take a prefix (the first symbol of a compound such as N/m or N m).
+_SI_SYMBOLS = ("m", "N", "Pa", "J", "s", "rad")
+#: Units shown without the prefixes above 1 (no km, ks, krad).
+_NOT_LARGER = ("m", "s", "rad")
+
+
+def engineering_unit(values, unit):
+    """The SI prefix that fits an array's magnitude: the factor and the prefixed unit.
+
+    The prefix puts the largest finite magnitude of `values` in [1, 1000): a force of
+    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus
+    of 6.7e4 Pa in kPa. Lengths, times and angles are not shown above their base unit
+    (no km, ks, krad).
+
+    Parameters
+    ----------
+    values : float or array_like
+        Values in the SI unit `unit` (NaN and zeros ignored) [`unit`].
+    unit : str
+        The SI unit: m, N, Pa, J, s, rad, or a compound whose first symbol is one
+        (``"N/m"``, ``"N m"``); any other unit (``"-"``, ``"HV"``) is returned as is.
+
+    Returns
+    -------
+    factor : float
+        Multiply the SI values by it [-].
+    unit : str
+        The prefixed unit (the micro sign for 1e-6).
+
+    Notes
+    -----
+    Valid for any finite values; the prefixes run from p (1e-12) to T (1e12), the
+    factors :data:`_PREFIXES` of the unit parser (one table). Without a finite
+    non-zero value the unit is returned unprefixed (factor 1).
+
+    Examples
+    --------
+    >>> engineering_unit([0.0, 1.2e-3], "N")
+    (1000.0, 'mN')
+    >>> engineering_unit(6.7e4, "Pa"), engineering_unit(2e3, "N/m")
+    ((0.001, 'kPa'), (0.001, 'kN/m'))
+    >>> engineering_unit(7e-6, "m"), engineering_unit(3.0, "m")
+    ((1000000.0, 'µm'), (1.0, 'm'))
+    """
+    import numpy as np
+
+    first = unit.replace("/", " ").split(" ")[0]
+    if first not in _SI_SYMBOLS:
+        return 1.0, unit
+    v = np.abs(np.asarray(values, dtype=float)).ravel()
+    v = v[np.isfinite(v) & (v > 0)]
+    if v.size == 0:
+        return 1.0, unit
+    top = float(v.max())
+    for p in _ENGINEERING:
+        f = _PREFIXES[p]
+        if f > 1 and first in _NOT_LARGER:
+            continue
+        if top >= f * (1 - 1e-12) or p == _ENGINEERING[-1]:
+            return 1.0 / f, _SHOWN.get(p, p) + unit
+    raise AssertionError("unreachable: the last prefix is always taken")
+
+
+def display_unit(values, si_unit, unit=None, factor=1.0):
+    """The unit a column of values is shown in: the usual one where it reads well,
+    else the SI prefix that fits (a soft contact's force in mN, not 0.0001 kN).
+
+    Parameters
+    ----------
+    values : float or array_like
+        The column in SI [`si_unit`] (NaN ignored).
+    si_unit : str
+        Its SI unit (``"N"``, ``"Pa"``, ``"N/m"``).
+    unit, factor : str, float, optional
+        The usual engineering unit of the column and its factor from SI (``"kN"``,
+        1e-3); default the SI unit.
+
+    Returns
+    -------
+    factor : float
+        Multiply the SI values by it [-].
+    unit : str
+        The unit shown.
+
+    Notes
+    -----
+    The usual unit is kept when the column's largest finite magnitude in it lies in
+    [0.1, 10 000) (read with 4 significant digits without an exponent) or the column
+    has no finite non-zero value; otherwise :func:`engineering_unit` picks the prefix
+    of the SI unit that puts it in [1, 1000).
+
+    Examples
+    --------
+    >>> display_unit([1.2e-3, 3e-4], "N", "kN", 1e-3)
+    (1000.0, 'mN')
+    >>> display_unit([1500.0], "N", "kN", 1e-3), display_unit(2.667e6, "Pa", "GPa", 1e-9)
+    ((0.001, 'kN'), (1e-06, 'MPa'))
+    """
+    import numpy as np
+
+    unit = si_unit if unit is None else unit
+    v = np.abs(np.asarray(values, dtype=float)).ravel()
+    v = v[np.isfinite(v) & (v > 0)]
+    if v.size == 0 or 0.1 <= float(v.max()) * factor < 1e4:
+        return factor, unit
+    if si_unit.replace("/", " ").split(" ")[0] not in _SI_SYMBOLS:
+        return factor, unit  # a unit without prefixes (-, %, HV)
+    return engineering_unit(v, si_unit)
+
+
+#: Round-off: a value below this fraction of its quantity's scale (the largest entry of
+#: its column or matrix) is shown as 0. About 500 units in the last place of a double
+#: (2.2e-16): the error of sums over a few hundred terms, far below 4 significant digits
+#: of any value shown beside it (a sweep spans at most a few decades).
+NOISE = 1e-13
+
+
+def format_numbers(values, digits=4, scale=None):
+    """Values as table cells: `digits` significant digits, '-' for none (NaN, None),
+    and '0' for round-off (below :data:`NOISE` times `scale`).
+
+    Parameters
+    ----------
+    values : array_like
+        The numbers, already in the unit shown.
+    digits : int
+        Significant digits.
+    scale : float, optional
+        The magnitude of the quantity they are parts of (a stiffness matrix's largest
+        entry for its off-diagonal terms); default the largest finite magnitude of
+        `values`, in their unit.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> format_numbers([759.55, -2.96e-17, float("nan")])
+    ['759.5', '0', '-']
+    >>> format_numbers([-2.96e-14], scale=7.6e5), format_numbers([1e-3, 5.0])
+    (['0'], ['0.001', '5'])
+    """
+    import numpy as np
+
+    v = np.array([np.nan if x is None else x for x in np.ravel(values).tolist()], float)
+    if scale is None:
+        finite = np.abs(v[np.isfinite(v)])
+        scale = float(finite.max()) if finite.size else 0.0
+    tiny = NOISE * abs(scale)
+    return ["-" if x != x else "0" if abs(x) <= tiny and x != 0 and math.isfinite(x)
+            else format(x + 0.0, f".{digits}g") for x in v.tolist()]
+
 
 #: Unit names converted without pint: the SI prefixes of m, N and Pa, and the inch-pound
 #: units of engineering drawings, with their exact definitions. Each factor equals

@@ -46,7 +46,7 @@ D, L, ESTAR, FORCE, TILT = 10e-3, 14e-3, 115.385e9, 4200.0, 2e-3
 
 #: engine names tried on ProfiledRoller(engine=...); those the checkout refuses are
 #: skipped with their reason
-ENGINES = ("numpy", "c", "numba")
+ENGINES = ("numpy", "c")
 
 
 def _median(xs):

@@ -64,6 +64,7 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
+    "count": ("", "", "3, 14, 40"),
     "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.03°, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
     "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
@@ -154,7 +155,7 @@ def _valid_text(kind, positive, bounds):
     dim, si, examples = DIMENSIONS[kind]
     what = _a(kind)
     if bounds:
-        return bounds[1]
+        return f"an integer in {bounds[1]}" if kind == "count" else bounds[1]
     if positive:
         return f"{what} > 0 (e.g. {examples})"
     return f"{what} (e.g. {examples})"
@@ -369,9 +370,12 @@ def _canonical(unit):
 
 
 def _a(kind):
-    """'a length', 'an angle', 'a number' (for 'dimensionless')."""
+    """'a length', 'an angle', 'a number' (for 'dimensionless'), 'an integer' (for
+    'count': rollers, slices)."""
     if kind == "dimensionless":
         return "a number"
+    if kind == "count":
+        return "an integer"
     return f"{'an' if kind[0] in 'aeiou' else 'a'} {kind.replace('_', ' ')}"
 
 
@@ -387,7 +391,7 @@ def _unit_factor(unit, kind):
     dim, si, _ = DIMENSIONS[kind]
     name = _canonical(unit)
     other = next((k for k, units in BUILTIN_UNITS.items() if name in units), None)
-    if kind == "dimensionless":
+    if kind in ("dimensionless", "count"):
         result = f"expected a pure number, got the unit {unit!r}"
     elif name in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][name]
@@ -493,7 +497,9 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
     text : str or float
         ``"5mm"``, ``"0.2 in"``, ``"210 GPa"``, or a bare number (SI).
     kind : str
-        One of :data:`DIMENSIONS`: ``length``, ``force``, ``pressure``, ``dimensionless``.
+        One of :data:`DIMENSIONS`: ``length``, ``force``, ``pressure``, ``dimensionless``,
+        ``count`` (a whole number: rollers, slices; a fraction is refused, never
+        truncated), ...
     positive : bool
         Require a value > 0 (all lengths, forces and moduli of this problem).
     bounds : tuple of (callable, str), optional
@@ -562,6 +568,8 @@ def _parse_one(text, kind):
 def _range_reason(value, kind, positive, bounds):
     si = DIMENSIONS[kind][1]
     unit = f" {si}" if si else ""
+    if kind == "count" and value != int(value):
+        return f"{value:g} is not an integer (a count is never rounded)"
     if bounds is not None:
         inside, _ = bounds
         if not inside(value):
@@ -640,6 +648,9 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
         ok &= np.asarray(bounds[0](values), dtype=bool)
     elif positive:
         ok &= values > 0
+    if kind == "count":  # a fraction gets its reason from the slow path below
+        with np.errstate(invalid="ignore"):
+            ok &= values == np.round(values)
     for i in np.flatnonzero(~ok):
         if errors[i]:
             continue

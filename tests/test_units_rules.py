@@ -413,3 +413,20 @@ def test_a_unit_in_the_wrong_case_is_a_case_error_with_the_unit_of_that_kind(tex
 def test_a_built_in_unit_of_another_kind_is_named_by_its_kind(text, kind, other):
     """A compound name of the wrong kind says what kind it is (without pint)."""
     assert f"got {other}" in _refused(text, kind)
+
+
+@given(st.lists(st.one_of(st.integers(-5, 5000).map(str), st.floats(-10, 5000).map(repr),
+                          st.sampled_from(["3mm", "1e1", "40.5", "14.0", " 7 ", "x"])),
+                min_size=1, max_size=12))
+def test_a_count_is_a_whole_number_never_rounded(cells):
+    """A count (rollers, slices) is a whole number: a fraction is refused naming
+    'integer' (40.5 slices were truncated to 40), a unit is refused, 14.0 and 1e1 are
+    the integers they write; a column gives each cell's result."""
+    _assert_parses_like_its_cells(cells, "count")
+    for cell in cells:
+        try:
+            v = parse_quantity("--n", cell, "count")
+        except InputError as exc:
+            assert "valid: an integer" in str(exc)
+        else:
+            assert v == int(v) and v > 0

@@ -277,7 +277,10 @@ def display_unit(values, si_unit, unit=None, factor=1.0):
         return factor, unit
     if si_unit.replace("/", " ").split(" ")[0] not in _SI_SYMBOLS:
         return factor, unit  # a unit without prefixes (-, %, HV)
-    return engineering_unit(v, si_unit)
+    f, u = engineering_unit(v, si_unit)
+    if float(v.max()) * f < 1:  # below the smallest prefix (round-off): as usual
+        return factor, unit
+    return f, u
 
 
 #: Round-off: a value below this fraction of its quantity's scale (the largest entry of

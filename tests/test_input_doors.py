@@ -1,0 +1,59 @@
+"""Input rules at every door (issue 36): what the calculator does with inputs that a
+bearing or the library treats otherwise is the same, or said in the row's note; never
+a refusal in a Python keyword, never a silent default of its own."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+
+import pytest
+
+from linecontact.calc.cli import main
+
+RACEWAYS = ["--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson",
+            "0.3", "--load", "1kN", "--inner-raceway-diameter", "40mm",
+            "--outer-raceway-diameter", "60mm"]
+
+
+def _json(argv):
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["calc", *argv, "--json"]) in (0, None)
+    return json.loads(out.getvalue())
+
+
+@pytest.mark.parametrize("extra,tilt,note", [
+    (["--misalignment", "1mrad"], 0.0, "coupled slices"),     # straight, misaligned
+    (["--crown-radius", "1m"], "free", "tilt is free"),      # crowned, no --tilt
+    (["--crown-radius", "1m", "--misalignment", "1mrad"], "free", "tilt is free"),
+    (["--crown-radius", "1m", "--tilt", "0"], 0.0, None),    # held where asked
+])
+def test_a_roller_between_raceways_is_solved_as_the_bearing_and_the_library_solve_it(
+        extra, tilt, note):
+    """Between raceways the calculator takes the bearing's defaults: a straight roller
+    between misaligned rings is solved by coupled slices (not refused with
+    "use model='profiled-roller'"), a profiled roller tilts freely unless --tilt is
+    given; each row's note says so. The roller deflection equals the library's
+    Contact with the same parts (same solver: equal to 1e-12)."""
+    from linecontact.contact import Contact, Roller
+    from linecontact.raceway import Raceways
+
+    doc = _json(RACEWAYS + extra)
+    first = doc["models"][0]
+    row = first["rows"][0]
+    assert first["key"] == "profiled-roller" and row["roller_deflection"] is not None, row
+    said = f"{row['flags']}; {row['note']}"  # the table's note column: both
+    assert "model=" not in said
+    if note is None:
+        assert "free" not in said
+    else:
+        assert note in said, said
+    psi = 1e-3 if "--misalignment" in extra else 0.0
+    crown = {"crown_radius": 1.0} if "--crown-radius" in extra else {}
+    c = Contact(Roller(5e-3, 10e-3, tilt=tilt, **crown),
+                counterbody=Raceways(20e-3, 30e-3, misalignment=psi),
+                estar=210e9 / (1 - 0.3**2), model="profiled-roller")
+    expected = float(c.normal(force=1e3).get("depth"))
+    assert row["roller_deflection"] == pytest.approx(expected, rel=1e-12)

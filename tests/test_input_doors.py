@@ -57,3 +57,36 @@ def test_a_roller_between_raceways_is_solved_as_the_bearing_and_the_library_solv
                 estar=210e9 / (1 - 0.3**2), model="profiled-roller")
     expected = float(c.normal(force=1e3).get("depth"))
     assert row["roller_deflection"] == pytest.approx(expected, rel=1e-12)
+
+
+SOFT = ["--radius", "5mm", "--length", "10mm", "--modulus", "3MPa", "--poisson", "0.45",
+        "--load", "0.1N", "--model", "universal"]
+STEEL = ["--radius", "5mm", "--length", "10mm", "--modulus", "210GPa", "--poisson", "0.3",
+         "--load", "1kN", "--model", "universal"]
+
+#: Inputs that a part of the result does not use: each row must say so (the option as
+#: typed, and what was computed instead), never drop it silently.
+UNUSED = [
+    (STEEL + ["--friction", "0.3", "--stresses", "yes"], "the stresses are frictionless"),
+    (SOFT + ["--work-of-adhesion", "50mJ/m2", "--friction", "0.3"],
+     "--friction: computed without adhesion"),
+    (SOFT + ["--work-of-adhesion", "50mJ/m2", "--stresses", "yes"],
+     "--stresses: computed without adhesion"),
+]
+
+
+@pytest.mark.parametrize("argv,said", UNUSED)
+def test_an_input_a_result_does_not_use_is_said_in_the_row(argv, said):
+    """--friction is the partial-slip coefficient, not the stresses' sliding friction
+    (which is --sliding-friction: not applied, as a stick zone is not full sliding);
+    friction and stresses are computed without adhesion. The row's note names the option
+    as typed."""
+    row = _json(argv)["models"][0]["rows"][0]
+    assert said in f"{row['flags']}; {row['note']}", row
+
+
+def test_sliding_friction_given_needs_no_such_note():
+    """With --sliding-friction the stresses use it: no note."""
+    row = _json(STEEL + ["--friction", "0.3", "--stresses", "yes", "--sliding-friction",
+                         "0.1"])["models"][0]["rows"][0]
+    assert "frictionless" not in f"{row['flags']}; {row['note']}"

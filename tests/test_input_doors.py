@@ -90,3 +90,21 @@ def test_sliding_friction_given_needs_no_such_note():
     row = _json(STEEL + ["--friction", "0.3", "--stresses", "yes", "--sliding-friction",
                          "0.1"])["models"][0]["rows"][0]
     assert "frictionless" not in f"{row['flags']}; {row['note']}"
+
+
+ONE_CASE = {"calc": ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+                     "--load", "1kN"]}
+
+
+@pytest.mark.parametrize("command", sorted(ONE_CASE))
+@pytest.mark.parametrize("plot,output", [("same.png", "same.png"),
+                                         ("same.png", "./same.png")])
+def test_plot_and_output_naming_one_file_is_refused_before_anything_is_written(
+        command, plot, output, tmp_path, monkeypatch, capsys):
+    """-o and --plot naming one file: status 2, one line naming both, no file written
+    (the figure overwrote the table, exit 0)."""
+    monkeypatch.chdir(tmp_path)
+    status = main(ONE_CASE[command] + ["--plot", plot, "-o", output])
+    err = capsys.readouterr().err
+    assert status == 2 and "--plot" in err and "-o" in err and len(err.splitlines()) == 1
+    assert not any(tmp_path.iterdir())

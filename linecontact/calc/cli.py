@@ -300,6 +300,7 @@ def main(argv=None):
 
         render.refuse_input_as_output(args.output, [args.csv] + [
             getattr(args, p.name) for p in PARAMETERS if p.kind == "path"])
+        render.refuse_same_output(args.output, getattr(args, "plot", None))
         if args.csv is not None:
             from .batch import run_batch
 

@@ -23,7 +23,8 @@ from .compute import CONTACT_COLUMNS, P0_NOTE, all_fields, model_id
 from .features import FEATURES
 
 __all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
-           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write"]
+           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write",
+           "refuse_same_output"]
 
 #: Every output column (the core's and the features').
 FIELDS = all_fields()
@@ -428,6 +429,26 @@ def refuse_input_as_output(output, inputs):
             raise OutputError(output, ValueError(
                 f"-o names the input file {str(name)!r}, which would be overwritten; "
                 "give another output file"))
+
+
+def refuse_same_output(output, plot):
+    """Raise :class:`OutputError` if ``-o`` and ``--plot`` name the same file (the
+    figure would overwrite the table, or the table the figure): compared as files (same
+    inode where it exists, else the same absolute path), before anything is written."""
+    import os
+
+    if output is None or plot is None:
+        return
+    try:
+        same = (os.path.samefile(output, plot) if os.path.exists(output)
+                and os.path.exists(plot) else
+                os.path.abspath(output) == os.path.abspath(plot))
+    except (OSError, ValueError):
+        return
+    if same:
+        raise OutputError(plot, ValueError(
+            f"--plot names the -o file {str(output)!r}; the figure would overwrite the "
+            "table: give two different files"))
 
 
 class OutputError(OSError):

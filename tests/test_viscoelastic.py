@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 from linecontact.viscoelastic import (PronySeries, StandardLinearSolid, creep_depth,
                                       force_history, read_prony_series,
                                       step_creep_depth)

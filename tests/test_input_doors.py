@@ -108,3 +108,33 @@ def test_plot_and_output_naming_one_file_is_refused_before_anything_is_written(
     err = capsys.readouterr().err
     assert status == 2 and "--plot" in err and "-o" in err and len(err.splitlines()) == 1
     assert not any(tmp_path.iterdir())
+
+
+#: Impossible geometry at the calculator's door: (options, the option named, the
+#: valid range's words). Each is refused in one line by the library's own check.
+IMPOSSIBLE = [
+    (STEEL[:-2] + ["--stresses", "yes", "--surface-hardness", "700", "--case-depth",
+                   "6mm", "--core-hardness", "350"], "--case-depth", "roller's radius"),
+]
+
+
+@pytest.mark.parametrize("argv,option,valid", IMPOSSIBLE)
+def test_impossible_geometry_is_refused_naming_the_option_and_the_range(argv, option,
+                                                                        valid, capsys):
+    """Status 2, one line: the option as typed, the reason and the valid range."""
+    status = main(["calc", *argv])
+    err = capsys.readouterr().err
+    assert status == 2 and len(err.splitlines()) == 1, err
+    assert err.split(": error: ")[1].startswith(option) and valid in err.split("valid:")[1]
+
+
+def test_a_case_deeper_than_the_roller_radius_is_refused_by_the_library():
+    """HardnessProfile.check_fits: CHD < R passes, CHD >= R is refused (a case past
+    the axis leaves no core)."""
+    from linecontact.errors import OutOfRangeError
+    from linecontact.stresses import HardnessProfile
+
+    HardnessProfile(700.0, 4.9e-3, 350.0).check_fits(5e-3)
+    for chd in (5e-3, 6e-3):
+        with pytest.raises(OutOfRangeError, match="case_depth"):
+            HardnessProfile(700.0, chd, 350.0).check_fits(5e-3)

@@ -125,9 +125,12 @@ def resolve(values, present, fail):
                 hardness[i] = _read_profile(v["hardness_profile"][i].strip())
             else:
                 hardness[i] = HardnessProfile(*(float(v[nm][i]) for nm in _HARD))
+                if np.isfinite(v["radius"][i]) and v["radius"][i] > 0:
+                    hardness[i].check_fits(float(v["radius"][i]))
         except OutOfRangeError as exc:
             nm = exc.parameter if exc.parameter in _HARD else "hardness_profile"
-            fail(np.arange(n) == i, nm, exc.valid, str(exc))
+            fail(np.arange(n) == i, nm, exc.valid,
+                 exc.hint if nm == "case_depth" and exc.hint else str(exc))
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)

@@ -136,8 +136,8 @@ def columns(model, rows, normal, state):
         note(j, "MDR: " + short(sub[0]) if sub[0] else "")
         out["pull_off_mdr"][j], out["zero_load_depth"][j] = v[0], v[1]
         out["force_adhesive"][j], out["depth_adhesive"][j] = v[2], v[3]
-        out["zero_load_half_width"][j] = np.cbrt(32 * model.radius ** 2 * w /
-                                                 (np.pi * model.estar))
+        out["zero_load_half_width"][j] = ad.jkr_cylinder_zero_load_half_width(
+            model.radius, model.estar, w)
         if getattr(model, "key", "") not in ad.CYLINDER_MODELS:
             continue
         sub = [""]

@@ -97,6 +97,8 @@ def resolve(values, present, fail):
     with np.errstate(invalid="ignore"):
         fail(P["misalignment"] & ~(np.abs(v["misalignment"]) < 0.1), "misalignment",
              "(-0.1, 0.1) rad", "the roller models linearise the tilt (small angles)")
+    from ...raceway import effective_radius
+
     R1 = v["radius"]
     for i in np.flatnonzero(given["inner"] & given["outer"]):
         try:
@@ -109,7 +111,7 @@ def resolve(values, present, fail):
         except ValueError:
             pass  # a value out of range: its own message comes from the core
     with np.errstate(invalid="ignore", divide="ignore"):
-        r_in = 1 / (1 / R1 + 1 / radii["inner"])
+        r_in = effective_radius(R1, radii["inner"])
     psi = np.where(P["misalignment"], v["misalignment"], 0.0)
     shaped = P["crown_radius"] | P["profile"]
     # as linecontact bearing: a straight roller between misaligned rings is solved by

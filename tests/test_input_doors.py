@@ -7,6 +7,9 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import math
+
+import numpy as np
 
 import pytest
 
@@ -138,3 +141,71 @@ def test_a_case_deeper_than_the_roller_radius_is_refused_by_the_library():
     for chd in (5e-3, 6e-3):
         with pytest.raises(OutOfRangeError, match="case_depth"):
             HardnessProfile(700.0, chd, 350.0).check_fits(5e-3)
+
+
+# ---- the library's geometry and counts (RadialRollerBearing, the ratings) ----
+
+@pytest.mark.parametrize("dm,D", [(65e-3, 11e-3), (70e-3, 11e-3), (200e-3, 10e-3),
+                                  (23e-3, 10e-3), (1.0, 1e-3)])
+def test_max_rollers_is_the_last_count_whose_neighbours_do_not_overlap(dm, D):
+    """Z rollers of diameter D fit on the pitch circle d_m iff neighbouring centres, a
+    chord d_m sin(pi/Z) apart, are more than D apart: max_rollers is that Z exactly
+    (checked against every Z from 3)."""
+    from linecontact.bearing import max_rollers
+
+    fits = [z for z in range(3, 5000) if dm * math.sin(math.pi / z) > D]
+    assert max_rollers(dm, D) == max(fits)
+
+
+#: Library calls that must be refused in one line naming the parameter and its range.
+REFUSED = [
+    (lambda B: B(40, 65e-3, 11e-3, 12e-3), "rollers", "[3, 18]"),
+    (lambda B: B(19, 65e-3, 11e-3, 12e-3), "rollers", "[3, 18]"),
+    (lambda B: B(14, 65e-3, 11e-3, 12e-3, profile="iso16281", n_slices=40.7),
+     "n_slices", "an integer"),
+    (lambda B: B(14, 65e-3, 11e-3, 12e-3, profile="iso16281", n_slices=1000),
+     "n_slices", "[10, 200]"),
+    (lambda B: B(14, 65e-3, 11e-3, 12e-3, clearance=-5e-3).solve(10e3), "clearance",
+     "at F_r"),
+    (lambda B: B(14, 65e-3, 11e-3, 12e-3, clearance=-5e-3, profile="iso16281")
+     .solve(10e3), "clearance", "at F_r"),
+]
+
+
+@pytest.mark.parametrize("call,parameter,valid", REFUSED)
+def test_the_bearing_refuses_impossible_geometry_and_counts(call, parameter, valid):
+    """Overlapping rollers (40 of 11 mm on 65 mm computed a rating and a life), a
+    fractional or a too large slice count (truncated; 1000 ran past 5 min), a preload
+    pressing the rollers beyond the law's range (reported as an internal 'roller
+    approach'): refused naming the parameter the user gave, its value and range."""
+    from linecontact.bearing import RadialRollerBearing
+    from linecontact.errors import OutOfRangeError
+
+    with pytest.raises(OutOfRangeError) as info:
+        call(RadialRollerBearing)
+    assert info.value.parameter == parameter and valid in str(info.value), info.value
+    assert "\n" not in str(info.value)
+
+
+def test_the_ratings_refuse_overlapping_rollers():
+    """ISO 281's rating of an impossible bearing is refused, not computed."""
+    from linecontact.bearing import dynamic_load_rating
+    from linecontact.errors import OutOfRangeError
+
+    with pytest.raises(OutOfRangeError, match="overlap"):
+        dynamic_load_rating(40, 65e-3, 11e-3, 12e-3)
+
+
+def test_solve_takes_an_array_of_loads():
+    """docs/inputs.md: functions of a force take arrays. solve(array) is an object
+    array of solutions, each the scalar call's (identical numbers)."""
+    from linecontact.bearing import RadialRollerBearing
+
+    b = RadialRollerBearing(14, 65e-3, 11e-3, 12e-3)
+    loads = np.array([[1e3, 2e3], [5e3, 1e4]])
+    out = b.solve(loads)
+    assert out.shape == loads.shape and out.dtype == object
+    for idx, F in np.ndenumerate(loads):
+        one = b.solve(float(F))
+        assert out[idx].max_roller_load == one.max_roller_load
+        assert out[idx].displacement == one.displacement

@@ -85,13 +85,14 @@ from __future__ import annotations
 from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
                      load_zone_integral)
 from .ratings import (basic_rating_life, dynamic_load_rating, lamina_load_ratings,
-                      reference_rating_life)
+                      max_rollers, reference_rating_life)
 
 __all__ = [
     "RadialRollerBearing",
     "BearingSolution",
     "load_zone_integral",
     "dynamic_load_rating",
+    "max_rollers",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",

@@ -120,7 +120,8 @@ def _laminae(sol, length, n):
 def _worst_of(fields):
     """The largest value of each stress measure over named contacts' stress results
     (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
-    "notes": [...]}."""
+    "notes": [...]}; a measure whose maximum is not converged in some contact (an
+    edge-loaded one) carries "withheld": the reason (its value is the slice width's)."""
     from ..stresses import MEASURES
 
     worst = {}
@@ -129,9 +130,17 @@ def _worst_of(fields):
         w = st.worst[m]
         worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
                     "x": float(w["x"]), "contact": name}
+        held = [n for n, f in fields.items() if m in getattr(f, "withheld", {})]
+        if held:
+            worst[m]["withheld"] = (" and ".join(held) + " contact: "
+                                    + fields[held[0]].withheld[m])
     notes = []
     for name, st in fields.items():
         notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
+    held = sorted(m for m in MEASURES if "withheld" in worst[m])
+    if held:
+        notes.append("stress maxima not reported (" + ", ".join(held) + "): "
+                     + worst[held[0]]["withheld"])
     return {"worst": worst, "notes": notes}
 
 
@@ -212,7 +221,8 @@ class BearingSolution:
         Subsurface stress maxima at the most loaded roller, worst of its two contacts,
         per measure (``"tresca"``, ``"von_mises"``, ``"orthogonal_shear"``): value [Pa],
         depth [m], x along the roller [m], contact (:mod:`linecontact.stresses`, no
-        traction).
+        traction); and ``withheld``, the reason, where an edge-loaded contact makes the
+        maximum a slice-width number (not converged: report "-").
 
     Notes
     -----
@@ -306,7 +316,7 @@ class RadialRollerBearing:
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
     poisson : float, optional
-        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu <= 0.5 [-]
         (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
 
     Notes
@@ -363,8 +373,7 @@ class RadialRollerBearing:
         if rotating not in ("inner", "outer"):
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
-        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5,
-                                            high_open=True))
+        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5))
         self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)

@@ -136,7 +136,7 @@ class ContactResult(_Result):
 
 @dataclass(frozen=True)
 class TangentialResult(_Result):
-    """The tangential state of a composed contact (Cattaneo-Mindlin by the MDR).
+    """The tangential state of a composed contact (Cattaneo-Mindlin: MDR, BEM or Mindlin).
 
     Built by :meth:`Contact.tangential`; not by hand.
 
@@ -149,7 +149,7 @@ class TangentialResult(_Result):
     shear_ratio : float
         G*/E* [-].
     stiffness : float or ndarray
-        Full-stick tangential stiffness k_t = (G*/E*) k_n [N/m].
+        Full-stick tangential stiffness k_t = r k_n, r = `stiffness_ratio` [N/m].
     tangential_force : float or ndarray or None
         Tangential force Q [N] (signed).
     shift : float or ndarray or None
@@ -166,9 +166,16 @@ class TangentialResult(_Result):
     reasons : dict
         Output name -> (parameters, reason) for each None field.
     method : str
-        ``"mdr"`` or ``"bem"``.
+        ``"mdr"``, ``"bem"`` or ``"mindlin"``.
     stiffness_ratio : float or ndarray
-        k_t/k_n used: G*/E*, or the BEM table's ratio in the direction asked [-].
+        k_t/k_n used: G*/E*, the BEM table's ratio or Mindlin's elliptical ratio in the
+        direction asked [-].
+    direction : str or None
+        ``"across"`` or ``"along"`` the roller's axis for a direction-dependent law
+        (``method="bem"`` or ``"mindlin"``); None for the MDR's, the same in every
+        direction.
+    notes : tuple of str
+        Validity notes (e.g. loads at which a crowned roller's ellipse reaches its ends).
 
     Notes
     -----
@@ -182,7 +189,7 @@ class TangentialResult(_Result):
     ...             material2=Elastic(210e9, 0.3), n_slices=40)
     >>> t = c.tangential(0.15, force=1e3, tangential_force=-50.0)
     >>> t.state, f"{t.shift * 1e9:.1f} nm"
-    ('partial slip', '-320.5 nm')
+    ('partial slip', '-290.2 nm')
     """
 
     normal: object
@@ -198,6 +205,8 @@ class TangentialResult(_Result):
     reasons: dict = field(default_factory=dict)
     method: str = "mdr"
     stiffness_ratio: object = None
+    direction: object = None
+    notes: tuple = ()
 
 
 @dataclass(frozen=True)

@@ -174,6 +174,10 @@ def columns(model, rows, normal, state):
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
+        if s.withheld:    # an edge-loaded roller: slice-width numbers, "-" and why
+            flags[j] = "; ".join(t for t in (flags[j], "stress maxima and case check "
+                                 "not reported: " + s.withheld[_MEASURES[0]]) if t)
+            continue
         for m in _MEASURES:
             out[f"{m}_max"][j] = s.worst[m]["value"]
             out[f"{m}_depth"][j] = s.worst[m]["z"]
@@ -184,6 +188,10 @@ def columns(model, rows, normal, state):
                 out["case_ratio_depth"][j] = c.depth_at_max
                 if c.min_case_depth is not None:
                     out["min_case_depth"][j] = c.min_case_depth
+                    if c.min_case_depth == 0.0:
+                        flags[j] = "; ".join(t for t in (flags[j], (
+                            "CHD min: 0, none needed (the core hardness carries the "
+                            "load)")) if t)
                 elif state.hardness[i].case_depth is not None:
                     flags[j] = "; ".join(t for t in (flags[j], (
                         "CHD min: none, the stress exceeds the allowable of the surface "

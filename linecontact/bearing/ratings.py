@@ -286,7 +286,24 @@ def _rollers(rollers):
 def max_rollers(pitch_diameter, roller_diameter):
     """The most rollers of diameter D that fit on the pitch circle d_m without
     overlapping: the largest Z with d_m sin(pi/Z) > D (the chord between neighbouring
-    centres longer than a roller's diameter) [-].
+    centres longer than a roller's diameter).
+
+    Parameters
+    ----------
+    pitch_diameter : float
+        Pitch diameter d_m > D [m].
+    roller_diameter : float
+        Roller diameter D > 0 [m].
+
+    Returns
+    -------
+    int
+        The largest Z that fits [-] (below 3: no bearing of these sizes).
+
+    Notes
+    -----
+    Valid for 0 < D < d_m; geometry only (a cage needs more room: a real bearing
+    holds fewer).
 
     Examples
     --------

@@ -231,7 +231,7 @@ def test_cli_table_json_and_errors(capsys, tmp_path):
     assert main(base + ["--clearance", "-5um"]) == 0
     assert "K_rr" in capsys.readouterr().out
     assert main(base + ["--json"]) == 0
-    d = json.loads(capsys.readouterr().out)["solution"]
+    d = json.loads(capsys.readouterr().out)["rows"][0]["solution"]
     assert np.dot(d["roller_loads"], np.cos(d["azimuth"])) == pytest.approx(1e4, rel=1e-9)
     assert main(base + ["--rollers", "2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -242,6 +242,28 @@ def test_cli_table_json_and_errors(capsys, tmp_path):
     assert main(["bearing", str(csv)]) == 2  # the second row fails, the first is written
     out = capsys.readouterr().out.splitlines()
     assert len(out) == 3 and out[1].split(",")[-1] == "" and "pitch_diameter" in out[2]
+
+
+@pytest.mark.parametrize("extra,says", [
+    (["--estar", "115GPa", "--modulus", "210GPa"], "--modulus"),
+    (["--modulus2", "200GPa"], "--modulus"),
+    (["--modulus", "210GPa"], "--poisson"),
+    (["--tilting-moment", "5Nm", "--misalignment", "1mrad"], "--misalignment"),
+    (["--rollers", "14.5"], "--rollers"),
+    (["--n-slices", "40.5"], "--n-slices"),
+    (["--surface-hardness", "700"], "--case-depth"),
+])
+def test_cli_rules_refuse_with_one_line_naming_the_option(capsys, extra, says):
+    """The bearing's input rules (E* or the moduli, a moment or a misalignment, whole
+    counts, the case-check inputs together): one line naming the option, status 2,
+    nothing silently taken (--n-slices 40.5 was truncated to 40 slices before)."""
+    base = {"--rollers": "14", "--pitch-diameter": "70mm", "--roller-diameter": "11mm",
+            "--length": "11mm", "--radial-load": "10kN"}
+    for k, v in zip(extra[::2], extra[1::2]):
+        base[k] = v
+    assert main(["bearing", *[x for kv in base.items() for x in kv]]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and says in err[0], err
 
 
 def test_tabulated_roller_is_roller_between_raceways():

@@ -174,9 +174,10 @@ def test_cli_tilt(capsys):
             "--roller-diameter", "8mm", "--length", "10mm", "--radial-load", "5kN",
             "--profile", "circular:Rc=300mm", "--n-slices", "20"]
     assert main(base + ["--misalignment", "3.4377468arcmin", "--json"]) == 0
-    d = json.loads(capsys.readouterr().out)["solution"]
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    d = row["solution"]
     assert d["tilt"] == pytest.approx(1e-3, rel=1e-6)
-    assert d["summary"]["stiffness_tt"] == d["stiffness"][1][1] > 0
+    assert row["stiffness_tt"] == d["stiffness"][1][1] > 0
     assert main(base + ["--tilting-moment", f"{d['moment']!r}Nm"]) == 0
     out = capsys.readouterr().out
     assert "K_tt" in out and "M_j [N m]" in out

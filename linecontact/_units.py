@@ -155,7 +155,7 @@ def _valid_text(kind, positive, bounds):
     dim, si, examples = DIMENSIONS[kind]
     what = _a(kind)
     if bounds:
-        return f"an integer in {bounds[1]}" if kind == "count" else bounds[1]
+        return f"an integer, {bounds[1]}" if kind == "count" else bounds[1]
     if positive:
         return f"{what} > 0 (e.g. {examples})"
     return f"{what} (e.g. {examples})"

@@ -82,10 +82,10 @@ References
 """
 from __future__ import annotations
 
-from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
-                     load_zone_integral)
-from .ratings import (basic_rating_life, dynamic_load_rating, lamina_load_ratings,
-                      max_rollers, reference_rating_life)
+from .radial import (GRID_POINTS, MAX_SLICES, PROFILED_POINTS, SLICE_COUNT,
+                     BearingSolution, RadialRollerBearing, load_zone_integral)
+from .ratings import (ROLLER_COUNT, basic_rating_life, dynamic_load_rating,
+                      lamina_load_ratings, max_rollers, reference_rating_life)
 
 __all__ = [
     "RadialRollerBearing",
@@ -93,6 +93,9 @@ __all__ = [
     "load_zone_integral",
     "dynamic_load_rating",
     "max_rollers",
+    "ROLLER_COUNT",
+    "SLICE_COUNT",
+    "MAX_SLICES",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",

@@ -15,7 +15,7 @@ from ..models import DEFAULT_SLICE_MODEL, SLICE_MODELS
 from ..profiles import TILT_RANGE
 from ..raceway import Raceways, effective_radii, roller_between_raceways
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
                       reference_rating_life)
@@ -27,6 +27,7 @@ __all__ = [
     "GRID_POINTS",
     "PROFILED_POINTS",
     "MAX_SLICES",
+    "SLICE_COUNT",
 ]
 
 #: Points of the roller-law grid of a straight roller under a law [-].
@@ -41,6 +42,8 @@ PROFILED_POINTS = 14
 #: at 200 the displacement is within 5e-7 and the most loaded roller within 1.3e-6 of
 #: 400 slices' (50: 6.5e-5 and 1.4e-5), so more slices buy nothing measurable.
 MAX_SLICES = 200
+#: The slice counts a bearing accepts (an integer in it) [-].
+SLICE_COUNT = Interval("n_slices", 10, MAX_SLICES, False, False, "")
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
 #: Upper bound of any roller load in units of F_r for Z >= 3: one roller at

@@ -16,11 +16,12 @@ import math
 import numpy as np
 
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 
 __all__ = [
     "dynamic_load_rating",
     "max_rollers",
+    "ROLLER_COUNT",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",
@@ -274,6 +275,11 @@ def reference_rating_life(rating, pitch_diameter, roller_diameter, slice_loads_i
     qee = np.mean(qo ** po, axis=0) ** (1 / po)
     total = np.sum((qei / qci) ** 4.5) + np.sum((qee / qce) ** 4.5)
     return math.inf if total == 0 else float(total ** (-8 / 9))
+
+
+#: The roller counts of a bearing: an integer from 3 (the most that fit on a pitch
+#: circle: :func:`max_rollers`) [-].
+ROLLER_COUNT = Interval("rollers", 3, math.inf, False, True, "")
 
 
 def _rollers(rollers):

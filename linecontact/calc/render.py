@@ -379,7 +379,7 @@ def command_text(command, cases, results, si):
     case as its description, its fields one per line and the module's tables (its
     blocks); a sweep as one row per case (the swept inputs, then the fields); then the
     command's notes and each case's own."""
-    from .._units import DIMENSIONS
+    from .._units import DIMENSIONS, format_numbers
 
     module, fields = command.module, command.fields
     n = cases.n
@@ -389,12 +389,17 @@ def command_text(command, cases, results, si):
         lines += [module.describe(obj, si), f"model: {row.get('model_used', '')}", ""]
         table = []
         optional = getattr(module, "optional", ())
+        # round-off (an aligned bearing's K_rt) as 0 against its quantity's scale
+        sizes = module.scales(obj) if hasattr(module, "scales") else {}
         for name, f in fields.items():
             v = row.get(name)
             if v is None and name in optional:
                 continue  # an output asked for by its options only (the case check)
+            k = 1.0 if si else f.factor
+            size = sizes.get(name)
             table.append([f"  {f.heading}",
-                          fmt(None if v is None else (v if si else v * f.factor)),
+                          "-" if v is None else format_numbers(
+                              [v * k], scale=None if size is None else size * k)[0],
                           f.si if si else f.eng])
         lines += aligned(table)
         text = blocks_text(module.blocks(obj), "load", si)
@@ -418,10 +423,15 @@ def command_text(command, cases, results, si):
             cells = [str(i + 1)]
             cells += [fmt(float(col[i]) if si else float(col[i]) * _INPUT_UNITS[p.kind][1])
                       for p, col in swept]
+            obj = results.objects[i]
+            sizes = (module.scales(obj) if obj is not None and hasattr(module, "scales")
+                     else {})
             for k in shown:
                 v = row.get(k)
-                cells.append(fmt(None if v is None else
-                                 (v if si else v * fields[k].factor)))
+                f = 1.0 if si else fields[k].factor
+                size = sizes.get(k)
+                cells.append("-" if v is None else format_numbers(
+                    [v * f], scale=None if size is None else size * f)[0])
             table.append(cells + [row.get("note", "")])
         lines += aligned(table)
     lines += [""] + [f"Note: {t}" for t in command.notes.values()]

@@ -96,7 +96,10 @@ def test_sliding_friction_given_needs_no_such_note():
 
 
 ONE_CASE = {"calc": ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
-                     "--load", "1kN"]}
+                     "--load", "1kN"],
+            "bearing": ["bearing", "--rollers", "14", "--pitch-diameter", "70mm",
+                        "--roller-diameter", "11mm", "--length", "11mm", "--radial-load",
+                        "10kN"]}
 
 
 @pytest.mark.parametrize("command", sorted(ONE_CASE))
@@ -118,6 +121,9 @@ def test_plot_and_output_naming_one_file_is_refused_before_anything_is_written(
 IMPOSSIBLE = [
     (STEEL[:-2] + ["--stresses", "yes", "--surface-hardness", "700", "--case-depth",
                    "6mm", "--core-hardness", "350"], "--case-depth", "roller's radius"),
+    # not geometry, but an input that did nothing: the field is JSON output only
+    (STEEL + ["--stresses", "yes", "--stress-field", "0mm"], "--stress-field",
+     "with --json"),
 ]
 
 
@@ -209,3 +215,45 @@ def test_solve_takes_an_array_of_loads():
         one = b.solve(float(F))
         assert out[idx].max_roller_load == one.max_roller_load
         assert out[idx].displacement == one.displacement
+
+
+#: The bearing command's refusals in the user's words: (options, the option named
+#: first, words of the reason, words of the valid range).
+BEARING_WORDS = [
+    (["--rollers", "0"], "--rollers = '0'", "out of range", "an integer, 3 <= rollers"),
+    (["--rollers", "40.5"], "--rollers = '40.5'", "not an integer", "an integer"),
+    (["--rollers", "40"], "--rollers = '40'", "40 rollers overlap", "[3, 18]"),
+    (["--rollers", "14", "--clearance", "-5mm"], "--clearance = '-5mm'", "preload",
+     "at F_r"),
+    (["--rollers", "14", "--n-slices", "40.5", "--profile", "iso16281"],
+     "--n-slices = '40.5'", "not an integer", "10 <= n_slices <= 200"),
+    (["--rollers", "14", "--n-slices", "1000", "--profile", "iso16281"],
+     "--n-slices = '1000'", "out of range", "10 <= n_slices <= 200"),
+]
+
+
+@pytest.mark.parametrize("extra,head,reason,valid", BEARING_WORDS)
+def test_the_bearing_command_refuses_in_the_users_words(extra, head, reason, valid, capsys):
+    """One line: the option as typed (never the library's 'roller approach' or a
+    message about 'a number > 0 (e.g. 0.3)' for a count), the reason, the range."""
+    status = main(["bearing", "--pitch-diameter", "65mm", "--roller-diameter", "11mm",
+                   "--length", "12mm", "--radial-load", "10kN", *extra])
+    err = capsys.readouterr().err
+    assert status == 2 and len(err.splitlines()) == 1, err
+    message = err.split(": error: ")[1]
+    assert message.startswith(head) and reason in message.split("; valid:")[0], err
+    assert valid in message.split("; valid:")[1], err
+
+
+@pytest.mark.parametrize("si", [False, True])
+def test_an_aligned_bearing_prints_round_off_as_zero_and_si_headers(si, capsys):
+    """K_rt, K_tr, M and theta of an aligned bearing are round-off (1e-14 N/mrad): shown
+    as 0 against their scale (sqrt(K_rr K_tt), F_r L, delta_r/L); with --si the first
+    line is in SI too (no mm)."""
+    status = main(ONE_CASE["bearing"] + ["--tilting-moment", "0"] + (["--si"] if si else []))
+    out = capsys.readouterr().out.splitlines()
+    assert status == 0
+    assert ("mm" not in out[0]) if si else ("mm" in out[0])
+    for line in out:
+        if line.strip().startswith(("K_rt", "K_tr", "moment M", "ring tilt")):
+            assert " 0  " in line, line  # the value column, then the unit

@@ -229,6 +229,8 @@ BEARING_WORDS = [
      "--n-slices = '40.5'", "not an integer", "10 <= n_slices <= 200"),
     (["--rollers", "14", "--n-slices", "1000", "--profile", "iso16281"],
      "--n-slices = '1000'", "out of range", "10 <= n_slices <= 200"),
+    (["--rollers", "14", "--surface-hardness", "700", "--case-depth", "6mm",
+      "--core-hardness", "350"], "--case-depth = '6mm'", "no core", "roller's radius"),
 ]
 
 

@@ -187,7 +187,7 @@ def resolve(values, present, fail):
         with np.errstate(invalid="ignore"):
             fail(P[nm] & (v[nm] != np.round(v[nm])), nm, "a whole number",
                  "not a whole number")
-    hardness = hardness_of(v, P, fail, np.ones(n, bool))
+    hardness = hardness_of(v, P, fail, np.ones(n, bool), v["roller_diameter"] / 2)
     return State(np.ones(n, bool), estar=estar, hardness=hardness)
 
 

@@ -122,7 +122,9 @@ def resolve(values, present, fail):
         sliced = rows & (psi != 0) & ~shaped & ~P["tilt"]
     state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
                   compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],
-                  psi=psi, models=SLICE_DEFAULTS,
+                  # the slice models' columns only where a row needs them (the
+                  # default set of every row otherwise: the standard laws)
+                  psi=psi, models=SLICE_DEFAULTS if sliced.any() else None,
                   said=[SLICED_NOTE if sliced[i] else FREE_NOTE.format(tilt=label("tilt"))
                         if shaped[i] and not P["tilt"][i] else "" for i in range(len(rows))])
     state.parts = lambda i: _parts(state, i)

@@ -713,7 +713,8 @@ def pressure_map(result, *, ny=81, fig=None, ax=None):
 # adhesion
 # --------------------------------------------------------------------------------------
 @register("adhesion")
-def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
+def adhesion(contact, depth_max=None, *, n=201, loop=None, points=None, fig=None,
+             ax=None):
     r"""F(d) of an adhesive contact on approach and retraction, the pull-off marked.
 
     The curves are :meth:`linecontact.adhesion.AdhesiveContact.hysteresis` (the rule
@@ -738,6 +739,9 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         Points per branch [-].
     loop : dict, optional
         The cycle already computed (what ``hysteresis`` returned): drawn as given.
+    points : sequence of (depth, force), optional
+        Computed states to mark, d [m] and F [N] (NaN pairs are skipped), e.g. the
+        calculator's rows: black circles, line ``"computed"``.
     fig : matplotlib.figure.Figure or SubFigure, optional
         Where to draw (default a new figure).
     ax : matplotlib.axes.Axes, optional
@@ -807,8 +811,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
                                            "mfc": "none", "mew": 1.5}))
             title.append(f"MDR pull-off (force control) {bem_f['mdr_error']:+.1%} "
                          "against the BEM")
-    sd, ud = engineering_unit(np.concatenate([da, dr]), "m")
-    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs]]), "N")
+    pts = _points(points) if points is not None else np.zeros((0, 2))
+    sd, ud = engineering_unit(np.concatenate([da, dr, pts[:, 0]]), "m")
+    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs], pts[:, 1]]),
+                              "N")
     fig, (ax,) = _new(fig, 1, ax)
     for d, F, label, st in ((da, Fa, "approach", _style(0)), (dr, Fr, "retraction",
                                                               _style(1))):
@@ -819,6 +825,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         ax.axhline(F * sf, label=label, **st)
     for label, d, F, st in marks:
         line, = ax.plot([d * sd], [F * sf], ls="none", label=label, zorder=6, **st)
+        line.scale = (sd, sf)
+    if pts.size:
+        line, = ax.plot(pts[:, 0] * sd, pts[:, 1] * sf, ls="none", marker="o", color="k",
+                        mfc="none", ms=7, label="computed", zorder=7)
         line.scale = (sd, sf)
     ax.axhline(0.0, color="k", lw=0.5)
     ax.axvline(0.0, color="k", lw=0.5)

@@ -878,8 +878,15 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         for i in g:
             notes[i] = _user_note(obj.exc, given[0], cases, i)
     else:
+        # a load or depth <= 0 (a feature's signed row: adhesion) has no contact without
+        # the feature: the core's law is not asked, the given value stands
+        with np.errstate(invalid="ignore"):
+            unloaded = ~(values > 0)
+        for which, name in (("load", "force"), ("depth", "depth")):
+            sel = unloaded & (given == which)
+            r[name][sel] = values[sel]
         for which in ("load", "depth"):
-            sel = np.flatnonzero(given == which)
+            sel = np.flatnonzero((given == which) & ~unloaded)
             if sel.size:
                 rr = _safe_evaluate(evaluate, label, which, values[sel], notes, errors,
                                     g[sel], lambda exc, i, w=which: _user_note(
@@ -899,8 +906,14 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
     if refused:
         return r, flags, label, obj
+    with np.errstate(invalid="ignore"):
+        unloaded = ~(values > 0)
     for f, st in active:
-        sel = np.flatnonzero(st.rows[g] & np.isfinite(r["force"]) & np.isfinite(r["depth"]))
+        signed = getattr(st, "signed", None)
+        here = np.isfinite(r["force"]) & np.isfinite(r["depth"])
+        if signed is not None:
+            here = here | (signed[g] & unloaded)
+        sel = np.flatnonzero(st.rows[g] & here)
         if not sel.size:
             continue
         normal = {k: r[k][sel] for k in r}

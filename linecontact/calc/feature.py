@@ -63,6 +63,19 @@ How to add a feature (one module + one registration line)
            Extra tables printed after the main one (``[]`` for none), e.g. the profiled
            roller's rows. ``results.errors`` is the list of row errors: a one-case
            failure is written there (it ends the command with that line).
+       ``figure(state, results) -> list`` (optional)
+           ``--plot FILE``: what the feature computed, drawn by :mod:`linecontact.plot`
+           (no physics: the library's result objects, asked of the library as in
+           ``columns``). A list of items, each either a callable ``draw(fig=None)`` (a
+           figure function of :mod:`linecontact.plot` with its result bound, e.g.
+           ``functools.partial(plot.creep, result)``: one band of panels) or a str
+           (one line on stderr: a result that has no figure, or what was left out of
+           it); ``[]`` when the feature adds nothing. ``columns`` may remember each
+           row's contact law for it with :func:`keep` (``state.kept[i]``: the first
+           model set's, as ``columns`` saw it). :mod:`linecontact.calc.figure` puts
+           the core's F(d) and every feature's items into one figure
+           (:func:`linecontact.plot.panels` when there are several). A feature
+           without ``figure`` is said on stderr as having none.
 
     2. Add the module to the tuple :data:`linecontact.calc.features.FEATURES`.
 
@@ -128,7 +141,7 @@ import re
 import numpy as np
 
 __all__ = ["Parameter", "Field", "State", "Block", "Feature", "Subcommand", "Fail",
-           "option_name",
+           "option_name", "keep",
            "bounds_of", "RAW_KINDS", "each", "short", "flag_text",
            "DEPTH_OVER_RADIUS_MAX", "HALF_WIDTH_OVER_LENGTH_MAX"]
 
@@ -231,6 +244,16 @@ class State:
     ``models``
         Tuple of model keys: the default model set of the feature's rows (instead of
         the standard set of a straight cylinder), e.g. the slice models.
+    ``signed``
+        Bool array: rows where the feature gives a load or depth <= 0 a meaning (an
+        adhesive contact under a tensile load); the core refuses them elsewhere (its
+        message names the parameters of the features' module attribute ``signed``,
+        a tuple of parameter names). In such a row the core's models (no adhesion:
+        no contact) are not evaluated; the core columns show the given value only,
+        and the feature's ``columns`` is called with NaN for the rest of ``normal``.
+    ``kept``
+        Object array: each row's contact law as ``columns`` saw it (:func:`keep`),
+        for the feature's ``figure``.
     """
 
     def __init__(self, rows, **attrs):
@@ -320,6 +343,18 @@ class Fail:
                 self.errors[i] = str(InputError(self.label(name), typed, valid, reason))
 
 
+def keep(state, rows, model):
+    """Remember the contact law `model` of `rows` (the first one given per row: the
+    first model set's) in ``state.kept`` (object array over the cases) for the
+    feature's ``figure``: a reference per row, no copy."""
+    kept = state.__dict__.get("kept")
+    if kept is None:
+        kept = state.kept = np.full(len(state.rows), None, dtype=object)
+    rows = np.asarray(rows, dtype=np.intp)
+    free = rows[np.equal(kept[rows], None)]
+    kept[free] = model
+
+
 def option_name(name):
     """``inner_raceway`` -> ``--inner-raceway``."""
     return "--" + name.replace("_", "-")
@@ -353,6 +388,8 @@ class Feature(Protocol):
                 state: State) -> dict: ...
 
     def blocks(self, state: State, results: Any) -> list: ...
+
+    # optional: def figure(self, state: State, results: Any) -> list: ...
 
 
 class Subcommand(Protocol):

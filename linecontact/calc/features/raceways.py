@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State
+from ..feature import Field, Parameter, State, keep
 
 __all__: list = []
 
@@ -140,6 +140,7 @@ def _parts(state, i):
 
 def columns(model, rows, normal, state):
     """The whole roller's columns from its solution (linecontact.raceway.RacewaySolution)."""
+    keep(state, rows, model)
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
     out["roller_deflection"] = normal["depth"]
@@ -168,6 +169,49 @@ def columns(model, rows, normal, state):
             flags[j] = "; ".join(t for t in (flags[j], geometry) if t)
     out["flags"] = flags
     return out
+
+
+#: Loads drawn at most in one q(x) band (a longer sweep: evenly chosen, said).
+MAX_CURVES = 8
+
+
+def figure(state, results):
+    """``--plot``: a roller between raceways solved by slices: q(x) of its inner and of
+    its outer contact (:func:`linecontact.plot.line_load` of the solution's ``inner``
+    and ``outer``, the roller's ends marked), the first roller's rows; under a law
+    (no slices) there is no q(x): said."""
+    from functools import partial
+
+    from ... import plot
+
+    sols = results.sets[0]["solution"] if results.sets else []
+    kept = getattr(state, "kept", None)
+    rows = [i for i in np.flatnonzero(state.rows) if i < len(sols) and sols[i] is not None
+            and kept is not None and kept[i] is not None]
+    if not rows:
+        return []
+    sliced = [i for i in rows if getattr(sols[i], "inner", None) is not None]
+    if not sliced:
+        return ["--plot: a roller between raceways under a law has no q(x) (no slices); "
+                "its deflection and each contact's depth and pressure are in the table"]
+    c0 = kept[sliced[0]].contact
+    mine = [i for i in sliced if kept[i].contact is c0]
+    said = ["--plot: a roller between raceways: q(x) of the inner contact, then of the "
+            "outer"]
+    if len(rows) > len(mine):
+        said.append(f"--plot: q(x) drawn for the roller of the first row; "
+                    f"{len(rows) - len(mine)} row(s) of other rollers are in the table")
+    if len(mine) > MAX_CURVES:
+        pick = np.unique(np.round(np.linspace(0, len(mine) - 1, MAX_CURVES)).astype(int))
+        said.append(f"--plot: q(x) of {len(pick)} of the {len(mine)} rows (evenly chosen)")
+        mine = [mine[k] for k in pick]
+    def draw(side, fig=None):
+        made = plot.line_load([getattr(sols[i], side) for i in mine], c0, fig=fig)
+        ax = (fig if fig is not None else made).axes[0]
+        ax.set_title(f"{side} contact: {ax.get_title()}", fontsize=9)
+        return made
+
+    return [partial(draw, side) for side in ("inner", "outer")] + said[1:]
 
 
 def _geometry_flags(contact, sol, force):

@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from ..feature import Block, Field, Parameter, State
+from ..feature import Block, Field, Parameter, State, keep
 
 __all__ = ["contact_stresses", "case_of_contacts", "min_case_depth", "hardness_of",
            "HARDNESS"]
@@ -182,7 +182,6 @@ def _read_profile(path):
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
     from ...errors import OutOfRangeError
-    from ...stresses import line_contact_stresses, roller_stresses
 
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
@@ -196,17 +195,10 @@ def columns(model, rows, normal, state):
             if _is_raceways(sol):  # a whole roller: each contact's, the worse flagged
                 _between_raceways(out, flags, j, sol, model, state, i)
                 continue
-            if sol is None and _slice_law(model):
-                # a slice model named as the law of a plain contact (--model
-                # profiled-roller): the row's own solve, as the library's at this force
-                sol = model.at_force(float(F[j]))
-            if _is_slices(sol):   # a profiled roller: the worst along its slices
-                s = roller_stresses(sol, state.mu[i], state.nu[i],
-                                    roller=_measured_as(model))
+            keep(state, [i], model)
+            s = _stresses_of(model, sol, float(F[j]), state, i)
+            if _is_slices(sol) or (sol is None and _slice_law(model)):
                 flags[j] = "; ".join(s.notes)
-            else:
-                s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
-                                          state.mu[i], state.nu[i])
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
@@ -222,6 +214,57 @@ def columns(model, rows, normal, state):
             _put_case(out, j, c)
             flags[j] = "; ".join(t for t in (flags[j], text) if t)
     out["flags"] = flags
+    return out
+
+
+def _stresses_of(model, sol, force, state, i):
+    """The SubsurfaceStresses of one contact of row i: the worst along a profiled
+    roller's slices (:func:`linecontact.stresses.roller_stresses`), else the
+    plane-strain strip at F/L (:func:`~linecontact.stresses.line_contact_stresses`)."""
+    from ...stresses import line_contact_stresses, roller_stresses
+
+    if sol is None and _slice_law(model):
+        # a slice model named as the law of a plain contact (--model profiled-roller):
+        # the row's own solve, as the library's at this force
+        sol = model.at_force(force)
+    if _is_slices(sol):
+        return roller_stresses(sol, state.mu[i], state.nu[i], roller=_measured_as(model))
+    return line_contact_stresses(force, model.radius, model.length, model.estar,
+                                 state.mu[i], state.nu[i])
+
+
+def figure(state, results):
+    """``--plot``: the stresses of the worst row (the largest von Mises maximum of the
+    first model set): the field of its worst section with the maximum marked, the
+    maxima along the roller and, with a hardness profile, the allowable at each depth
+    of maximum and the case check (:func:`linecontact.plot.stresses`, von Mises, the
+    measure of the check)."""
+    from functools import partial
+
+    from ... import plot
+    from ...errors import OutOfRangeError
+
+    kept = getattr(state, "kept", None)
+    f = results.sets[0]["fields"]
+    if kept is None or "von_mises_max" not in f:
+        return (["--plot: stresses of a roller between raceways: no figure (each "
+                 "contact's maxima are in the table)"]
+                if getattr(state, "by_contact", None) else [])
+    value = np.where(np.equal(kept, None), np.nan, f["von_mises_max"])
+    if not np.isfinite(value).any():
+        return ["--plot: stresses: no maximum computed (the rows' notes say why)"]
+    i = int(np.nanargmax(value))
+    model = kept[i]
+    try:
+        s = _stresses_of(model, results.sets[0]["solution"][i], float(f["force"][i]),
+                         state, i)
+    except OutOfRangeError as exc:
+        return [f"--plot: stresses: no figure: {exc}"]
+    case = _case(s, state.hardness[i])[0] if state.hardness[i] is not None else None
+    out = [partial(plot.stresses, s, measure="von_mises", case=case)]
+    if np.sum(np.isfinite(value)) > 1:
+        out.append(f"--plot: stresses drawn for the worst row (row {i + 1}, von Mises "
+                   f"{value[i] * 1e-6:.4g} MPa) of {int(np.sum(np.isfinite(value)))}")
     return out
 
 

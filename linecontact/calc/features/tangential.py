@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State, each, short
+from ..feature import Field, Parameter, State, each, keep, short
 
 __all__: list = []
 
@@ -119,6 +119,7 @@ def columns(model, rows, normal, state):
         LOAD_COLUMNS if state.any_load else ())}
     flags = [""] * n
     out["flags"] = flags
+    keep(state, rows, model)
     F, d, k = normal["force"], normal["depth"], normal["stiffness"]
     ok = np.isfinite(d) & (d > 0) & np.isfinite(F)
 
@@ -244,6 +245,85 @@ def _slip_correction(model, direction, depth, gstar, q):
     nu = tg.equivalent_poisson(gstar, model.estar)
     return np.atleast_1d(table.shift_factor(direction, nu,
                                             depth * model.radius / model.length ** 2, q))
+
+
+#: Normal states drawn at most (a sweep of the normal load: the first, the rest said).
+MAX_FIGURES = 3
+
+
+def _laws(model, mu, gstar, force):
+    """The tangential laws drawn for one normal state: the finite cylinder's BEM law
+    across and along (:class:`linecontact.tangential.TangentialContact`,
+    ``method="bem"``), or the MDR's where the table does not answer (its reason)."""
+    from ... import tangential as tg
+    from ...errors import OutOfRangeError
+
+    try:
+        return [tg.TangentialContact(model, mu, gstar, force=force, method="bem",
+                                     direction=direction)
+                for direction in ("across", "along")], ""
+    except (OutOfRangeError, FileNotFoundError) as exc:
+        why = short(str(exc)) if isinstance(exc, OutOfRangeError) else _MISSING
+        return [tg.TangentialContact(model, mu, gstar, force=force)], why
+
+
+def figure(state, results):
+    """``--plot``: F_t(u) from stick to gross slip and the fretting loop
+    (:func:`linecontact.plot.hysteresis`) across and along the axis (the BEM table's
+    law; the MDR's where the table does not answer), the rows' (u, Q) marked, at the
+    amplitude of the largest computed shift (else half the smallest gross-slip shift);
+    one panel per normal state of the first contact (at most :data:`MAX_FIGURES`). A
+    composed contact (a profiled roller) is said, not drawn."""
+    from functools import partial
+
+    from ... import plot
+    from ... import tangential as tg
+
+    kept = getattr(state, "kept", None)
+    if kept is None:
+        return []
+    f = results.sets[0]["fields"]
+    rows = [i for i in np.flatnonzero(state.friction_given) if kept[i] is not None
+            and np.isfinite(f["force"][i]) and f["force"][i] > 0]
+    if not rows:
+        return []
+    m0 = kept[rows[0]]
+    if m0.contact is not None:
+        return ["--plot: tangential: no figure for a composed contact's law (a profiled "
+                "or tilted roller): its k_t and shifts are in the table"]
+    groups = {}
+    for i in rows:
+        if kept[i] is m0:
+            groups.setdefault((float(f["force"][i]), float(state.friction[i])),
+                              []).append(i)
+    out, said = [], []
+    for (F, mu), idx in list(groups.items())[:MAX_FIGURES]:
+        i0 = idx[0]
+        gstar = float(tg.effective_shear_modulus(state.e1[i0], state.nu1[i0],
+                                                 state.e2[i0], state.nu2[i0]))
+        laws, why = _laws(m0, mu, gstar, F)
+        if why:
+            said.append(f"--plot: tangential: the MDR's law (G*/E*), the BEM's across "
+                        f"and along not available: {why}")
+        name = "across" if len(laws) == 2 else "mdr"
+        u = np.array([f[f"shift_{name}"][i] if f"shift_{name}" in f else np.nan
+                      for i in idx])
+        Q = np.array([state.tangential_load[i] for i in idx])
+        ustar = min(float(c.gross_slip_shift) for c in laws)
+        good = np.isfinite(u)
+        amp = min(float(np.max(np.abs(u[good]))), ustar) if good.any() else 0.5 * ustar
+        if not amp > 0:
+            amp = 0.5 * ustar
+        pts = list(zip(u[good], Q[good])) or None
+        out.append(partial(plot.hysteresis, laws, amp, points=pts))
+    if len(groups) > MAX_FIGURES:
+        said.append(f"--plot: tangential drawn for the first {MAX_FIGURES} of "
+                    f"{len(groups)} normal states (every row is in the table)")
+    others = len(rows) - sum(len(v) for v in groups.values())
+    if others:
+        said.append(f"--plot: tangential drawn for the first contact; {others} row(s) of "
+                    "other contacts are in the table only")
+    return out + said
 
 
 def blocks(state, results):

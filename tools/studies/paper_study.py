@@ -169,7 +169,8 @@ def run(args):
         results = run_sweeps(args.l_over_r, args.n, args.steps, args.d_max, args.tol,
                              backend=args.backend, scheduler=args.scheduler,
                              workers=args.workers, checkpoint=checkpoint,
-                             resume=args.resume, progress=not args.no_progress)
+                             resume=args.resume, progress=not args.no_progress,
+                             connect_timeout=args.connect_timeout)
         wall = time.perf_counter() - t0
         cols = curves = curves_from_results(results)
         command, meta_run = args.command_line, _run_meta(args, results, wall)

@@ -134,12 +134,19 @@ def _run_meta(args, results, wall):
     per = "; ".join(f"L/R {r['l_over_r']:g}: {r['wall_time']:.1f} s wall, "
                     f"{r['cpu_time']:.1f} s CPU, {int(r['iterations'].sum())} op"
                     for r in results)
-    n = None if args.scheduler else (args.workers or DEFAULT_WORKERS)
+    n = None if args.scheduler is not None else (args.workers or DEFAULT_WORKERS)
+    # one backend in every row (the runner refuses workers with another), but results
+    # resumed from an earlier run may come from another: then each is named
+    by_backend = {}
+    for r in results:
+        by_backend.setdefault(r["backend"], []).append(f"{r['l_over_r']:g}")
+    backend = (next(iter(by_backend)) if len(by_backend) == 1 else
+               "; ".join(f"{b} at L/R = {', '.join(q)}" for b, q in by_backend.items()))
     idle = (f" (on an idle machine about CPU / {n} = {cpu / n:.0f} s)" if n else "")
     return dict(
         grid=f"{nx} x {ny} cells over |x| <= L/2, |y| <= sqrt(2 R d_max) "
              f"({results[0]['grid']} at L/R = {results[0]['l_over_r']:g}); FFT "
-             f"backend {results[0]['backend']}",
+             f"backend {backend}",
         steps=f"{args.steps} equal depth steps to d_max",
         d_max_over_R=f"{args.d_max:g}",
         tolerance=f"contact solver: largest gap error <= {args.tol:g} d; punch: "

@@ -15,7 +15,20 @@ Facts checked:
   they have the installed linecontact but cannot import tools/ or this test module: the
   runner ships the study code with the tasks;
 - a worker whose linecontact differs from this checkout's is refused, naming both;
-- table_meta gives every table the same generated_by/date/version lines.
+- table_meta gives every table the same generated_by/date/version lines;
+- the default local cluster listens on loopback only and its workers lack dask's
+  MALLOC_TRIM_THRESHOLD_.
+
+Faults on a cluster of separate processes (issue 35), each through the command line of
+a toy study (`python -m tools.build_tables squares`, this module's add_arguments/run)
+with the scheduler and workers started by DaskProcesses; each checks the one error
+line (no traceback), the exit status and the tables/checkpoints:
+- the scheduler killed mid-study: the line names --resume and says to restart the
+  scheduler and the workers; after the restart --resume completes the same table;
+- a worker that joins later with other linecontact code or without pyFFTW: its first
+  task refuses, the study stops; the same for such a worker present at the start;
+- bad --scheduler values (empty, malformed, dead port, an HTTP server, a web address):
+  exit 2 within the connect timeout.
 """
 from __future__ import annotations
 
@@ -69,6 +82,31 @@ def test_local_cluster_results_in_task_order(tmp_path):
     assert all(r["pid"] != os.getpid() for r in out)      # ran in worker processes
 
 
+def listening(task):
+    """A study task: the environment variable MALLOC_TRIM_THRESHOLD_ of the worker and
+    the addresses on which the worker and its parent (the study's process: scheduler,
+    nannies) listen for TCP connections."""
+    import psutil
+    addresses = set()
+    for proc in (psutil.Process(), psutil.Process().parent()):
+        addresses |= {c.laddr.ip for c in proc.net_connections(kind="tcp")
+                      if c.status == psutil.CONN_LISTEN}
+    return {"malloc_trim": os.environ.get("MALLOC_TRIM_THRESHOLD_"),
+            "listen": sorted(addresses)}
+
+
+def test_local_cluster_on_loopback_without_malloc_trim(monkeypatch):
+    """The default local cluster listens on 127.0.0.1 only (scheduler, workers and their
+    HTTP servers: nothing reachable from another machine), and its workers do not get
+    dask's MALLOC_TRIM_THRESHOLD_=65536 (which turns off glibc's dynamic mmap threshold:
+    a page fault storm on every large array; tools/benchmarks/results/paper_study.txt)."""
+    monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
+    out = run_study(listening, [dict(key="a")], workers=1, progress=False)[0]
+    assert out["malloc_trim"] is None
+    assert out["listen"] == ["127.0.0.1"], out["listen"]
+    assert "MALLOC_TRIM_THRESHOLD_" not in os.environ      # not leaked to this process
+
+
 def test_resume_skips_finished_keys(tmp_path, scheduler_and_worker):
     calls = tmp_path / "calls"
     calls.mkdir()
@@ -111,9 +149,9 @@ def test_failing_task_raises_and_keeps_finished(tmp_path, scheduler_and_worker):
 def test_options_and_table_meta():
     p = add_runner_arguments(argparse.ArgumentParser())
     a = p.parse_args(["--scheduler", "tcp://h:8786", "--workers", "3", "--resume",
-                      "--no-progress", "--checkpoint", "/tmp/x"])
-    assert (a.scheduler, a.workers, a.resume, a.no_progress, a.checkpoint) == \
-        ("tcp://h:8786", 3, True, True, Path("/tmp/x"))
+                      "--no-progress", "--checkpoint", "/tmp/x", "--connect-timeout", "7"])
+    assert (a.scheduler, a.workers, a.resume, a.no_progress, a.checkpoint,
+            a.connect_timeout) == ("tcp://h:8786", 3, True, True, Path("/tmp/x"), 7.0)
     m = table_meta("python -m tools.build_tables demo", title="T", version="1",
                    source="S")
     assert list(m) == ["title", "source", "generated_by", "date", "version"]
@@ -235,8 +273,8 @@ def scheduler_and_worker(tmp_path_factory):
     dask = DaskProcesses(tmp_path_factory.mktemp("dask"))
     # the premise: from there, linecontact imports but tools/ does not
     probe = subprocess.run(
-        [sys.executable, "-c", "import importlib.util as u, linecontact; "
-                               "print(u.find_spec('tools') is None, linecontact.__file__)"],
+        [sys.executable, "-c", "import importlib.util as u, linecontact; print("
+                               "u.find_spec('tools') is None, linecontact.__file__)"],
         cwd=dask.cwd, env=dask.env(), capture_output=True, text=True, timeout=60)
     assert probe.stdout.split()[0] == "True", \
         f"the dask processes would see the checkout: {probe.stdout} {probe.stderr}"

@@ -6,15 +6,24 @@ Tasks go to a ``dask.distributed`` client:
 
 - by default a ``LocalCluster`` on this machine, ``--workers`` worker processes (default
   2) with one thread each, so that one task = one core (the BEM tasks ask their FFT
-  backend for one thread too);
+  backend for one thread too); it listens on 127.0.0.1 only, and its workers run
+  without dask's ``MALLOC_TRIM_THRESHOLD_`` (see :func:`_client`);
 - with ``--scheduler ADDRESS`` (e.g. ``tcp://host:8786``) an existing cluster started
   with ``dask scheduler`` and ``dask worker ADDRESS --nthreads 1`` on each machine
   (docs/cluster.md). The scheduler and the workers need linecontact installed (the
-  same code as this checkout: checked before any task runs), not the repository: the
-  study code travels with the tasks (:func:`ship_study_code`). The ``tools`` package
-  is uploaded to the cluster as a zip (``Client.upload_file``, which also reaches
-  workers that join later), and a task function defined elsewhere in the checkout
-  (a test, a script) is pickled by value with cloudpickle.
+  same code as this checkout, and the same FFT backend: checked before any task runs
+  and again by every task, so a worker that joins later is refused too), not the
+  repository: the study code travels with the tasks (:func:`ship_study_code`). The
+  ``tools`` package is uploaded to the cluster as a zip (``Client.upload_file``, which
+  also reaches workers that join later), and a task function defined elsewhere in the
+  checkout (a test, a script) is pickled by value with cloudpickle.
+
+Faults the user must act on (a bad ``--scheduler``: empty, malformed, nothing
+listening, not a dask scheduler, each found within ``--connect-timeout``; the
+scheduler lost during the study; a worker with other code or FFT backend) raise
+:class:`StudyError`, whose message is one line saying what to do;
+``python -m tools.build_tables`` prints it without a traceback and exits with its
+``exit_code`` (2 for a bad address, else 1).
 
 Each task is a picklable dict with a unique ``"key"`` (str). As results arrive, the
 client (this process, never a worker) saves each one in the checkpoint folder as
@@ -44,7 +53,8 @@ from pathlib import Path
 __all__ = ["add_runner_arguments", "run_study", "run_study_from_args", "table_meta",
            "wall_time_line", "code_version", "ship_study_code", "check_same_linecontact",
            "linecontact_fingerprint", "worker_environment", "check_workers",
-           "StudyError", "WorkerMismatch", "check_scheduler_address", "DEFAULT_WORKERS", "DEFAULT_CONNECT_TIMEOUT"]
+           "StudyError", "WorkerMismatch", "check_scheduler_address",
+           "DEFAULT_WORKERS", "DEFAULT_CONNECT_TIMEOUT"]
 
 #: Worker processes of the default LocalCluster (the 2 cores of the reference machine).
 DEFAULT_WORKERS = 2
@@ -103,7 +113,8 @@ def table_meta(command_line, **fields):
 
 def add_runner_arguments(parser):
     """Add ``--scheduler``, ``--workers``, ``--checkpoint``, ``--resume``,
-    ``--connect-timeout``, ``--no-progress`` to an argparse parser (read back by :func:`run_study_from_args`)."""
+    ``--connect-timeout``, ``--no-progress`` to an argparse parser (read back by
+    :func:`run_study_from_args`)."""
     g = parser.add_argument_group("study runner (dask.distributed)")
     g.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="address of a running dask scheduler, e.g. tcp://host:8786 "
@@ -304,7 +315,8 @@ def _mismatch(worker, found, expected):
     remedy; None when they agree."""
     if found.get("linecontact") != expected.get("linecontact"):
         return (f"dask worker {worker} runs other linecontact code than this checkout "
-                f"(there: {found.get('linecontact')}; here: {expected.get('linecontact')}):"
+                f"(there: {found.get('linecontact')}; here: "
+                f"{expected.get('linecontact')}):"
                 f" install this checkout on it (pip install {_REPO}) and restart it, or "
                 f"stop it")
     if found.get("fft") != expected.get("fft"):
@@ -327,7 +339,8 @@ def check_workers(client, expected=None):
            if (line := _mismatch(w, env, expected)) is not None}
     if bad:
         worker = sorted(bad)[0]
-        raise StudyError(f"{len(bad)} of {len(found)} dask workers refused: {bad[worker]}")
+        raise StudyError(f"{len(bad)} of {len(found)} dask workers refused: "
+                         f"{bad[worker]}")
 
 
 def check_same_linecontact(client, expected=None):

@@ -492,13 +492,17 @@ def test_worker_there_at_the_start_without_pyfftw_is_refused(tmp_path):
         dask.close()
 
 
-def test_bad_scheduler_values_one_line_exit_2(tmp_path):
+def test_bad_scheduler_values_one_line_exit_2(tmp_path, scheduler_and_worker):
     """Each bad --scheduler gets one line and exit status 2 within the connect timeout
     (5 s here): empty (no silent local cluster), malformed, a port where nothing
     listens, a port of a server that is not dask (an HTTP server, which once held the
-    client for minutes), a web address. All run at once, each its own process."""
+    client for minutes), a web address, a dask worker's address. All run at once, each
+    its own process."""
     import http.server
     import threading
+    from dask.distributed import Client
+    with Client(scheduler_and_worker, timeout="60s") as client:
+        worker = sorted(client.scheduler_info(n_workers=-1)["workers"])[0]
     web = http.server.ThreadingHTTPServer(("127.0.0.1", 0),
                                           http.server.BaseHTTPRequestHandler)
     threading.Thread(target=web.serve_forever, daemon=True).start()
@@ -510,6 +514,7 @@ def test_bad_scheduler_values_one_line_exit_2(tmp_path):
         "http://127.0.0.1:8787": "the scheme 'http' is not one of dask's",
         f"tcp://127.0.0.1:{dead}": f"nothing listens on port {dead} of 127.0.0.1",
         f"tcp://127.0.0.1:{http_port}": "does not answer as a dask scheduler",
+        worker: "is a dask Worker, not the scheduler",
     }
     try:
         t0 = time.monotonic()

@@ -1,11 +1,13 @@
-"""The optional C extensions: the profiled-roller solver's (engine "c",
-linecontact/roller/_ckernels.c) and the subsurface stresses' corner sums
-(linecontact/_cstresses.c); the metadata is in pyproject.toml.
+"""The optional C extension linecontact._ckernels, the compiled engine: the
+profiled-roller solver's kernels (engine "c", linecontact/roller/_ckernels.c) and the
+subsurface stresses' corner sums (linecontact/_cstresses.c), two sources of one module;
+the metadata is in pyproject.toml.
 
 Built where a C compiler exists (pip install ., or pip install -e . in place); where the
-build fails the install goes on without it (optional=True) and the numpy engine solves
-(docs/profiled_rollers.md, "Engines"). IEEE arithmetic: no -ffast-math, and no fused
-multiply-adds (-ffp-contract=off), so that the C loops round as numpy and numba do.
+build fails the install goes on without it (optional=True) and the numpy code, the
+reference, runs instead (docs/profiled_rollers.md, "Engines"). IEEE arithmetic: no
+-ffast-math, and no fused multiply-adds (-ffp-contract=off), so that the C loops round
+as numpy does.
 """
 import hashlib
 from pathlib import Path
@@ -15,13 +17,17 @@ from setuptools.command.build_ext import build_ext
 
 HERE = Path(__file__).resolve().parent
 
+#: the extension's sources, in the order linecontact/_engine.py hashes them
+SOURCES = ["linecontact/roller/_ckernels.c", "linecontact/_cstresses.c"]
 
-def extension(name, source):
-    """An optional Extension from one C file, which carries the SHA-256 of the source it
-    was built from (SOURCE_SHA256: linecontact/_extensions.py refuses a stale build)."""
-    digest = hashlib.sha256((HERE / source).read_bytes()).hexdigest()
-    return Extension(name, [source], optional=True,
-                     define_macros=[("LC_SOURCE_SHA256", f'"{digest}"')])
+
+def sources_digest(paths):
+    """The SHA-256 (hex) of the sources' bytes one after another: the build carries it
+    (SOURCE_SHA256) and linecontact/_engine.py refuses a build whose sources differ."""
+    h = hashlib.sha256()
+    for path in paths:
+        h.update(Path(path).read_bytes())
+    return h.hexdigest()
 
 
 class BuildExt(build_ext):
@@ -31,19 +37,20 @@ class BuildExt(build_ext):
         if self.compiler.compiler_type == "msvc":
             flags = ["/fp:precise"]
         else:
-            flags = ["-ffp-contract=off", "-fno-fast-math"]
+            # IEEE arithmetic kept; -O3 (Python's own default) and -fno-math-errno let
+            # the corner loop vectorise (sqrt without errno's branch). Neither changes a
+            # value: without -ffast-math no operation is reassociated or approximated,
+            # and math-errno only decides whether sqrt and log also set errno
+            flags = ["-ffp-contract=off", "-fno-fast-math", "-O3", "-fno-math-errno"]
         for ext in self.extensions:
-            more = []
-            if ext.name == "linecontact._cstresses" and self.compiler.compiler_type != "msvc":
-                # the corner loop vectorised: -O3, and sqrt without errno's branch
-                # (the same values; IEEE arithmetic kept)
-                more = ["-O3", "-fno-math-errno"]
-            ext.extra_compile_args = list(ext.extra_compile_args or []) + flags + more
+            ext.extra_compile_args = list(ext.extra_compile_args or []) + flags
         super().build_extensions()
 
 
 setup(
-    ext_modules=[extension("linecontact.roller._ckernels", "linecontact/roller/_ckernels.c"),
-                 extension("linecontact._cstresses", "linecontact/_cstresses.c")],
+    ext_modules=[Extension(
+        "linecontact._ckernels", SOURCES, optional=True,
+        define_macros=[("LC_SOURCE_SHA256",
+                        f'"{sources_digest(HERE / s for s in SOURCES)}"')])],
     cmdclass={"build_ext": BuildExt},
 )

@@ -34,6 +34,10 @@
  * where an input is not finite, a depth is outside (1e-60, 1e60) or an offset's size
  * not below 1e60 (metres: far outside any contact; there an intermediate could
  * leave the normal numbers): the caller then takes the numpy path.
+ *
+ * One of the two sources of the extension linecontact._ckernels (setup.py; the other,
+ * linecontact/roller/_ckernels.c, holds the module's PyInit, which adds this file's
+ * functions, lc_stress_methods).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -448,14 +452,14 @@ static double *take(Buffers *bs, PyObject *obj, const char *name, Py_ssize_t len
                     int writable, Py_ssize_t *got)
 {
     if (bs->count >= MAXBUF) {
-        PyErr_SetString(PyExc_RuntimeError, "_cstresses: too many buffers");
+        PyErr_SetString(PyExc_RuntimeError, "_ckernels: too many buffers");
         return NULL;
     }
     Py_buffer *v = &bs->v[bs->count];
     int flags = PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | (writable ? PyBUF_WRITABLE : 0);
     if (PyObject_GetBuffer(obj, v, flags) < 0) {
         PyErr_Clear();
-        PyErr_Format(PyExc_ValueError, "_cstresses: %s must be a C-contiguous%s array "
+        PyErr_Format(PyExc_ValueError, "_ckernels: %s must be a C-contiguous%s array "
                      "of float64", name, writable ? " writable" : "");
         return NULL;
     }
@@ -464,14 +468,14 @@ static double *take(Buffers *bs, PyObject *obj, const char *name, Py_ssize_t len
     if (*f == '@' || *f == '=' || *f == '<')
         f++;
     if (v->itemsize != 8 || strcmp(f, "d") != 0) {
-        PyErr_Format(PyExc_ValueError, "_cstresses: %s must hold float64 (got format "
+        PyErr_Format(PyExc_ValueError, "_ckernels: %s must hold float64 (got format "
                      "'%s', item size %zd)", name, v->format == NULL ? "B" : v->format,
                      v->itemsize);
         return NULL;
     }
     Py_ssize_t n = v->len / 8;
     if (len >= 0 && n != len) {
-        PyErr_Format(PyExc_ValueError, "_cstresses: %s has %zd items, %zd expected",
+        PyErr_Format(PyExc_ValueError, "_ckernels: %s has %zd items, %zd expected",
                      name, n, len);
         return NULL;
     }
@@ -504,7 +508,7 @@ static PyObject *love_sums(PyObject *self, PyObject *args)
         || !(pz_ = take(&bs, pz, "pz", npt, 0, NULL)))
         goto done;
     if (npt > PY_SSIZE_T_MAX / 10) {
-        PyErr_SetString(PyExc_ValueError, "_cstresses: too many points");
+        PyErr_SetString(PyExc_ValueError, "_ckernels: too many points");
         goto done;
     }
     if (!(o_ = take(&bs, out, "out", 10 * npt, 1, NULL)))
@@ -549,7 +553,7 @@ static PyObject *corners(PyObject *self, PyObject *args)
         goto done;
     if (n < 1 || ny < 2 || !(0 <= i0 && i0 <= k0 && k0 <= i1 && i1 < n)
         || n > (PY_SSIZE_T_MAX / 8 - 16) / ny) {
-        PyErr_Format(PyExc_ValueError, "_cstresses: slices %zd, grid edges %zd and "
+        PyErr_Format(PyExc_ValueError, "_ckernels: slices %zd, grid edges %zd and "
                      "0 <= i0 %zd <= k0 %zd <= i1 %zd < n out of range", n, ny, i0, k0, i1);
         goto done;
     }
@@ -576,7 +580,9 @@ done:
     return ret;
 }
 
-static PyMethodDef methods[] = {
+/* this file's functions, added to the one extension module linecontact._ckernels by its
+ * PyInit (linecontact/roller/_ckernels.c): one module, two translation units */
+PyMethodDef lc_stress_methods[] = {
     {"love_sums", love_sums, METH_VARARGS,
      "love_sums(X, cy, w, py, pz, only, out) -> bool: the weighted corner sums of "
      "Love's rectangles into out (10, len(py)) for corners at (X, cy) with weights w "
@@ -589,24 +595,3 @@ static PyMethodDef methods[] = {
      "(each (n + 3) len(ye) + 4 (n + 2) long), the first `count` kept; -1 where numpy "
      "is to build them (an input not finite, the grid not increasing)."},
     {NULL, NULL, 0, NULL}};
-
-static struct PyModuleDef module = {
-    PyModuleDef_HEAD_INIT, "_cstresses",
-    "The corner sums of the stresses' 3D correction in C (linecontact/stresses.py "
-    "wraps them).", -1, methods};
-
-/* the SHA-256 of this file as setup.py read it (linecontact/_extensions.py compares it
- * with the file beside the built module: a stale build is not used) */
-#ifndef LC_SOURCE_SHA256
-#define LC_SOURCE_SHA256 ""
-#endif
-
-PyMODINIT_FUNC PyInit__cstresses(void)
-{
-    PyObject *m = PyModule_Create(&module);
-    if (m != NULL && PyModule_AddStringConstant(m, "SOURCE_SHA256", LC_SOURCE_SHA256) < 0) {
-        Py_DECREF(m);
-        return NULL;
-    }
-    return m;
-}

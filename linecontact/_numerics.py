@@ -424,7 +424,7 @@ def log1p_excess_root(t, *, checked=True):
 #: Elements per block of :func:`blockwise`: 16384 float64 (128 kB) keep a dozen
 #: temporaries of an elementwise chain in the CPU's L2 cache, where whole-array
 #: temporaries of 1e6 elements each go through main memory (measured: the same
-#: operations 2-3 times faster in blocks, tools/benchmarks/bench_models.py).
+#: operations 2-3 times faster in blocks, docs/history.md, "Model evaluation").
 BLOCK = 16384
 
 
@@ -685,14 +685,6 @@ class _SerialBlas:
             self._depth += 1
         return self
 
-    def rescan(self):
-        """Find the BLAS libraries again at the next outermost entry: one loaded after
-        the controller was built (scipy's, which numba's LAPACK calls use) is limited
-        too."""
-        with self._lock:
-            if self._controller is not False:
-                self._controller = None
-
     def __exit__(self, *exc):
         with self._lock:
             self._depth -= 1
@@ -703,12 +695,6 @@ class _SerialBlas:
 
 
 _SERIAL_BLAS = _SerialBlas()
-
-
-def rescan_blas():
-    """After loading another BLAS library (the compiled roller engine loads scipy's
-    for numba's dense solves): :func:`serial_blas` limits it too from the next solve."""
-    _SERIAL_BLAS.rescan()
 
 
 def serial_blas(fn):

@@ -85,11 +85,10 @@ import dataclasses
 import functools
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
-from ._extensions import load_extension
+from ._engine import ckernels, resolve_engine
 from .validity import OutOfRangeError, check_interval, check_positive
 
 __all__ = [
@@ -936,14 +935,13 @@ def _love_batches(items, only=None):
 #: elements (points x corners) per block of :func:`_love_sums`
 _BLOCK = 16384
 
-# the corner sums in C (linecontact/_cstresses.c), built at install where a C compiler
-# exists; numpy where it is not (or where the build is stale)
-_cstresses = load_extension("linecontact._cstresses",
-                            Path(__file__).with_name("_cstresses.c"))[0]
-#: which evaluates the 3D correction's corner sums: "c" (the extension, where it is
-#: built) or "numpy" (the reference, :func:`_love_batches`); a list, so that a test
-#: can switch it
-_CORNERS = ["c" if _cstresses is not None else "numpy"]
+# the corner sums in C (linecontact/_cstresses.c, in the extension linecontact._ckernels),
+# built at install where a C compiler exists; numpy where it is not (or is stale)
+_cstresses = ckernels()
+#: which evaluates the 3D correction's corner sums: "c" (the extension, where it runs)
+#: or "numpy" (the reference, :func:`_love_batches`), as engine "auto" chooses; a list,
+#: so that a test can switch it
+_CORNERS = [resolve_engine("auto")]
 
 
 def _corners_c(xe, L, b, p0, q, k0, i0, i1, ye, means):

@@ -290,7 +290,7 @@ def refuse_unknown_keywords(namespace):
     The wrapper keeps the signature, docstring, name and module of what it wraps
     (:func:`functools.wraps`, so :func:`inspect.signature` and doctests see the
     original) and costs one extra Python call per call (about 0.2 us; a vectorised
-    call's time is unchanged; tools/benchmarks/bench_keywords.py). Callables taking
+    call's time is unchanged; docs/history.md, "The unknown-keyword guard"). Callables taking
     ``**kwargs`` check their own keywords and are left alone; a callable wrapped once
     is not wrapped again (a re-export). Valid input: any module namespace with an
     ``__all__`` list of names it defines.

@@ -6,8 +6,10 @@ Facts checked:
 - every `$ linecontact ...` example prints the lines the README shows (spaces
   collapsed; `...` stands for lines left out);
 - every Python example prints exactly the text block that follows it;
-- a number on a line that cites a benchmark record (tools/benchmarks/...) appears in
-  that record, so a claimed figure cannot drift from the measurement;
+- a number on a line, or in a sentence, that cites a benchmark record
+  (tools/benchmarks/...) appears in that record, so a claimed figure cannot drift
+  from the measurement; the same for every page of docs/ (and every record a page
+  cites exists);
 - every docs/ page the README names exists, and every page in docs/ is named (the map
   is complete);
 - no figure that goes stale lives in the README (test counts, machine loads).
@@ -82,12 +84,53 @@ def test_python_examples_print_what_the_readme_shows(code, shown):
     assert out.getvalue().strip() == shown.strip()
 
 
+RECORD = re.compile(r"tools/benchmarks/results/[\w.-]+\.txt")
+FIGURE = re.compile(r"(?<![\w.])\d+\.\d+(?![\d.]*\d)")
+
+
+def _sentences(text):
+    """The sentences of a Markdown text: its paragraphs, list items and table rows, each
+    split at full stops (code blocks left out)."""
+    text = re.sub(r"```.*?```", "", text, flags=re.S)
+    for paragraph in re.split(r"\n\s*\n|\n(?=\s*(?:[-*|]|\d+\.) )", text):
+        yield from re.split(r"(?<=[.!?])\s+(?=[A-Z(`])", " ".join(paragraph.split()))
+
+
+def _unrecorded_figures(text):
+    """(record, figure) for every decimal figure of a sentence that cites a benchmark
+    record (tools/benchmarks/results/NAME.txt) and appears in none of the records it
+    cites."""
+    for sentence in _sentences(text):
+        records = RECORD.findall(sentence)
+        if not records:
+            continue
+        texts = [(ROOT / r.rstrip(".")).read_text() for r in records]
+        for number in FIGURE.findall(sentence):
+            if not any(number in t for t in texts):
+                yield records, number
+
+
 def test_benchmark_figures_are_the_records():
+    """A figure quoted in the README in a sentence that cites a benchmark record is in
+    that record (the record is the measurement; the README may not drift from it)."""
     for line in README.splitlines():
         for rec in re.findall(r"tools/benchmarks/[\w./-]+\.(?:txt|md)", line):
             text = (ROOT / rec).read_text()
             for number in re.findall(r"\d+\.\d+", line):
                 assert number in text, f"README's {number} is not in {rec}"
+    bad = list(_unrecorded_figures(README))
+    assert not bad, f"README quotes figures its cited records do not hold: {bad}"
+
+
+@pytest.mark.parametrize("page", sorted(p.name for p in (ROOT / "docs").glob("*.md")))
+def test_docs_figures_are_the_records(page):
+    """The same for every docs page: a figure in a sentence that cites a benchmark
+    record appears in that record, and every cited record exists."""
+    text = (ROOT / "docs" / page).read_text()
+    for rec in RECORD.findall(text):
+        assert (ROOT / rec.rstrip(".")).is_file(), f"docs/{page} cites a missing {rec}"
+    bad = list(_unrecorded_figures(text))
+    assert not bad, f"docs/{page} quotes figures its cited records do not hold: {bad}"
 
 
 def test_docs_map_is_complete():

@@ -1,59 +1,39 @@
-"""The engines of the coupled-slice equations: the compiled kernels and linearisation
-(linecontact/roller/_compiled.py, numba; linecontact/roller/_cengine.py over the C
-extension _ckernels, the same loops in C) against the numpy reference
-(SliceEquations.kernels, linearised), whole solves with every engine, and the choice of
-engine (docs/profiled_rollers.md, "Engines").
+"""The C engine of the coupled-slice equations (linecontact/roller/_cengine.py over the
+extension linecontact._ckernels) agrees with the numpy reference (SliceEquations.kernels,
+linearised, the bordered Newton step's lines) at rounding, whole solves with both agree,
+and the engine is chosen as documented (docs/profiled_rollers.md, "Engines").
 
-Each agreement test runs for both compiled engines; one is skipped, with its reason,
-where numba is not installed or the C extension is not built (pip install -e . builds
-it where a C compiler is present; so does CI).
+The agreement tests skip, with the reason, where the extension does not run here (pip
+install -e . builds it where a C compiler is present; so does CI; test_extensions.py
+checks that the source compiles there).
 
-The compiled code evaluates the same series coefficients, the same spline table and the
-same cached geometry with the same split into far field, near band and diagonal; it
-differs only in the order of sums. So every entry agrees to a few units of rounding of
-the matrix's largest entry: 1e-12 of it leaves three orders of margin and still catches
-any term, pair or index taken wrongly (those are >= 1e-10 of the scale: the spline's
-own error against the series).
+The C code evaluates the same series coefficients, the same spline table and the same
+cached geometry with the same split into far field, near band and diagonal; it differs
+only in the order of sums. So every entry agrees to a few units of rounding of the
+matrix's largest entry: 1e-12 of it leaves three orders of margin and still catches any
+term, pair or index taken wrongly (those are >= 1e-10 of the scale: the spline's own
+error against the series).
 """
 from __future__ import annotations
 
+import pickle
 import subprocess
 import sys
 
 import numpy as np
 import pytest
 
-from linecontact import OutOfRangeError
+from linecontact import OutOfRangeError, _engine
 from linecontact.roller import ProfiledRoller
 from linecontact.roller import slices as sl
 from linecontact.roller.slices import SliceEquations
 from linecontact.validity import UnknownNameError
 
 TOL = 1e-12
-#: the compiled engines, each checked against the numpy reference
-COMPILED = ["numba", "c"]
-
-
-def _need(engine):
-    """Skip unless `engine` can run here (numba installed; the C extension built)."""
-    if engine == "numba":
-        pytest.importorskip("numba")
-    elif sl.c_engine() is None:
-        pytest.skip("the C extension linecontact.roller._ckernels is not built here "
-                    f"({sl._C_ENGINE[0]}): pip install -e . with a C compiler builds it")
-
-
-def _module(engine):
-    """The module of a compiled engine's kernels() and linearised()."""
-    if engine == "numba":
-        from linecontact.roller import _compiled
-        return _compiled
-    return sl.c_engine()
-
-
-#: Python lines that make the C extension unimportable in a fresh interpreter (as
-#: where it was not built): the engine 'auto' then keeps the numpy / numba policy
-NO_C = "import sys; sys.modules['linecontact.roller._ckernels'] = None\n"
+needs_c = pytest.mark.skipif(
+    sl.c_engine() is None,
+    reason=f"the C engine does not run here ({_engine.unavailable()}): pip install -e . "
+           "with a C compiler builds it")
 
 
 def _equations(n, grading, refine, engine):
@@ -93,13 +73,12 @@ def _states(N, rng):
         yield S, q, c
 
 
-@pytest.mark.parametrize("engine", COMPILED)
+@needs_c
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_kernels_equal_numpy(grid, engine):
-    """A, D, EA, ED (and A alone) from the compiled loops equal the numpy kernels within
+def test_c_kernels_equal_numpy(grid):
+    """A, D, EA, ED (and A alone) from the C loops equal the numpy kernels within
     1e-12 of each matrix's largest entry, for every loaded set and target set."""
-    _need(engine)
-    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, "c")
     N = a.n
     rng = np.random.default_rng(1)
     for S, q, c in _states(N, rng):
@@ -112,15 +91,14 @@ def test_compiled_kernels_equal_numpy(grid, engine):
                     _close(x, y, f"{grid} {name} ns={len(S)} a_only={a_only}")
 
 
-@pytest.mark.parametrize("engine", COMPILED)
+@needs_c
 @pytest.mark.parametrize("grid", GRIDS[:3])
-def test_compiled_far_field_takes_every_term(grid, engine):
-    """The compiled far field sums all 14 terms of the series over every target, as
+def test_c_far_field_takes_every_term(grid):
+    """The C far field sums all 14 terms of the series over every target, as
     the numpy code does: the kernels agree within 1e-14 of each matrix's largest entry
     (rounding: 1.5e-15 observed). That is tight enough to see one term missing: the
     last (14th) term at the near band's edge, t/b = 3, is 4.6e-14 of ED's scale."""
-    _need(engine)
-    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, "c")
     rng = np.random.default_rng(1)
     for S, q, c in _states(a.n, rng):
         bS = np.sqrt(q[S] / c[S])
@@ -134,14 +112,13 @@ def test_compiled_far_field_takes_every_term(grid, engine):
                 assert err <= 1e-14, f"{grid} {name} ns={len(S)}: {err:.2e} of the scale"
 
 
-@pytest.mark.parametrize("engine", COMPILED)
+@needs_c
 @pytest.mark.parametrize("grid", GRIDS)
-def test_compiled_linearised_equals_numpy(grid, engine):
+def test_c_linearised_equals_numpy(grid):
     """Residual, Jacobian, grid columns, gaps and the 2x2 grid terms of linearised()
-    from the compiled loops equal the numpy ones within 1e-12 of each one's largest
+    from the C loops equal the numpy ones within 1e-12 of each one's largest
     entry (all slices or a subset as targets)."""
-    _need(engine)
-    a, b = _equations(*grid, "numpy"), _equations(*grid, engine)
+    a, b = _equations(*grid, "numpy"), _equations(*grid, "c")
     N = a.n
     rng = np.random.default_rng(2)
     slope = 4e-6 * a.x ** 3 / 6e-3 ** 4
@@ -153,22 +130,21 @@ def test_compiled_linearised_equals_numpy(grid, engine):
                 _close(x, y, f"{grid} {name} ns={len(S)} nt={len(T)}")
 
 
-@pytest.mark.parametrize("engine", COMPILED)
-def test_compiled_outside_the_spline_table(engine):
+@needs_c
+def test_c_outside_the_spline_table():
     """Beyond the spline table, t/b >= 1e4 (a slice about to leave, its strip
-    nanometres wide: b = 1e-12 m here), the compiled code takes the series itself and
+    nanometres wide: b = 1e-12 m here), the C code takes the series itself and
     agrees with the numpy code (which does the same); below it, t/b < 1e-4 (a strip
     far wider than the slices, b = 20 m), the call goes to the numpy code (series and
     quadrature) under either engine. Both: 1e-12 of each matrix's largest entry."""
-    _need(engine)
-    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, engine)
+    a, b = _equations(60, 0.0, 0, "numpy"), _equations(60, 0.0, 0, "c")
     S = np.arange(60)
     tiny = np.full(60, 1e-4)
     tiny[[0, 7, 59]] = 1e-12                 # w/2b ~ 1e8 on those diagonals
-    got = _module(engine).kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
+    got = sl.c_engine().kernels(S, S, tiny, b.span, b.dg, b._tnear, b._tfar, b._logratio,
                             sl._far_geometry(*b._geometry), sl._FAR_COEF, False)
-    assert got is not None, "the compiled code fell back to numpy beyond the table"
-    assert _module(engine).kernels(S, S, np.full(60, 20.0), b.span, b.dg, b._tnear,
+    assert got is not None, "the C code fell back to numpy beyond the table"
+    assert sl.c_engine().kernels(S, S, np.full(60, 20.0), b.span, b.dg, b._tnear,
                                    b._tfar, b._logratio, sl._far_geometry(*b._geometry),
                                    sl._FAR_COEF, False) is None, "below the table: None"
     for bS in (tiny, np.full(60, 20.0)):
@@ -187,16 +163,15 @@ CASES = [
 ]
 
 
-@pytest.mark.parametrize("engine", COMPILED)
+@needs_c
 @pytest.mark.parametrize("case", CASES)
-def test_whole_solves_agree_between_engines(case, engine):
-    """A solve at a force with a compiled engine and with numpy: depth, tilt, moment,
+def test_whole_solves_agree_between_engines(case):
+    """A solve at a force with the C engine and with numpy: depth, tilt, moment,
     peak pressure and stiffness agree within 1e-10 (the Newton tolerance is 1e-11; the
     engines differ by rounding only, so both reach the same converged state)."""
-    _need(engine)
     profile, force, tilt = case
     sols = [ProfiledRoller(5e-3, 14e-3, 115.385e9, profile, engine=e).at_force(
-        force, tilt=tilt) for e in ("numpy", engine)]
+        force, tilt=tilt) for e in ("numpy", "c")]
     a, b = sols
     assert a.depth == pytest.approx(b.depth, rel=1e-10)
     assert a.p_max == pytest.approx(b.p_max, rel=1e-10)
@@ -204,260 +179,6 @@ def test_whole_solves_agree_between_engines(case, engine):
     assert abs(a.moment - b.moment) <= 1e-10 * force * 14e-3
     np.testing.assert_allclose(a.stiffness_matrix, b.stiffness_matrix, rtol=1e-10,
                                atol=1e-10 * np.max(np.abs(a.stiffness_matrix)))
-
-
-def test_engine_names_are_checked():
-    """engine takes 'auto', 'numpy', 'numba' or 'c'; anything else is refused by
-    name."""
-    with pytest.raises(UnknownNameError, match="engine"):
-        ProfiledRoller(5e-3, 14e-3, 1e11, engine="fortran")
-
-
-def test_numpy_engine_without_numba():
-    """Without numba and without the C extension (both imports blocked in a fresh
-    interpreter) the numpy engine is used: 'auto' and 'numpy' solve, 'auto' stays
-    numpy past the switching point, and 'numba' is refused with a message naming the
-    parameter, the value and what to install."""
-    code = (
-        NO_C + "import sys; sys.modules['numba'] = None\n"
-        "from linecontact.roller import ProfiledRoller, slices\n"
-        "from linecontact import OutOfRangeError\n"
-        "for e in ('auto', 'numpy'):\n"
-        "    s = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
-        " engine=e).at_force(500.0)\n"
-        "slices._NUMPY_STEPS[0] = slices.AUTO_SWITCH_STEPS\n"
-        "assert slices.resolve_engine('auto') == 'numpy'\n"
-        "try:\n"
-        "    ProfiledRoller(5e-3, 14e-3, 1e11, engine='numba')\n"
-        "except OutOfRangeError as err:\n"
-        "    print(err)\n"
-        "assert 'linecontact.roller._compiled' not in sys.modules\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout
-    assert "engine" in out and "numba" in out and "pip install" in out, out
-
-
-def test_auto_switches_after_the_numpy_steps(monkeypatch):
-    """Where the C extension is not built (its import failed: monkeypatched here),
-    engine='auto' resolves to numpy for a fresh process and to numba (where it is
-    installed) once the process has taken AUTO_SWITCH_STEPS numpy steps."""
-    monkeypatch.setattr(sl, "_C_ENGINE", ["No module named '_ckernels' (test)"])
-    kept = sl._NUMPY_STEPS[0]
-    try:
-        sl._NUMPY_STEPS[0] = 0
-        assert sl.resolve_engine("auto") == "numpy"
-        sl._NUMPY_STEPS[0] = sl.AUTO_SWITCH_STEPS
-        assert sl.resolve_engine("auto") == ("numba" if sl.numba_installed() else "numpy")
-        assert sl.resolve_engine("numpy") == "numpy"
-    finally:
-        sl._NUMPY_STEPS[0] = kept
-
-
-def test_auto_stays_numpy_where_numba_does_not_import():
-    """engine='auto' with a numba that is installed but does not import (say, built for
-    another numpy): past the switching point it warns once and keeps solving with
-    numpy; engine='numba' is refused at construction, naming the parameter."""
-    code = (
-        NO_C + "import sys, warnings, importlib.util\n"
-        "from linecontact.roller import ProfiledRoller, slices\n"
-        "from linecontact import OutOfRangeError\n"
-        "class Broken:\n"
-        "    def find_spec(self, name, path=None, target=None):\n"
-        "        if name == 'numba':\n"
-        "            raise ImportError('numba built for another numpy')\n"
-        "sys.modules.pop('numba', None)\n"
-        "sys.meta_path.insert(0, Broken())\n"
-        "slices._HAVE_NUMBA[:] = [True]\n"
-        "slices._NUMPY_STEPS[0] = slices.AUTO_SWITCH_STEPS\n"
-        "with warnings.catch_warnings(record=True) as w:\n"
-        "    warnings.simplefilter('always')\n"
-        "    s = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20)"
-        ".at_force(500.0)\n"
-        "print(sum('do not import' in str(x.message) for x in w))\n"
-        "try:\n"
-        "    ProfiledRoller(5e-3, 14e-3, 1e11, engine='numba')\n"
-        "except OutOfRangeError as err:\n"
-        "    print('refused:', err)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout
-    assert out.splitlines()[0] == "1", out
-    assert "refused: engine" in out and "does not import" in out, out
-
-
-def test_a_single_solve_does_not_import_numba():
-    """Cold start: one profiled-roller solve with the default engine ('auto') in a
-    fresh interpreter never imports numba (its import and code loading cost about
-    0.5 s, some 40 solves)."""
-    code = ("import sys\n"
-            "from linecontact.roller import ProfiledRoller\n"
-            "ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281').at_force(4000.0, tilt=1e-3)\n"
-            "print('numba' in sys.modules)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout
-    assert out.strip() == "False"
-
-
-def _twice(x):
-    return 2.0 * x
-
-
-def test_jit_falls_back_to_no_cache(monkeypatch):
-    """Where numba finds no writable cache directory (every cache location refusing,
-    as in a read-only install and home) the kernels' decorator compiles without a
-    cache instead of failing, and warns (once per process)."""
-    pytest.importorskip("numba")
-    import numba.core.caching as caching
-
-    from linecontact.roller import _compiled
-
-    def refuse(self):
-        raise OSError("read-only")
-
-    monkeypatch.setattr(caching._CacheLocator, "ensure_cache_path", refuse)
-    monkeypatch.setattr(_compiled, "_UNCACHED", [])
-    with pytest.warns(RuntimeWarning, match="cannot be cached"):
-        f = _compiled._jit(_twice)
-    assert f(3.0) == 6.0
-    assert _compiled._UNCACHED == ["_twice"]
-
-
-@pytest.mark.slow
-def test_compiled_engine_without_a_writable_cache():
-    """Where numba finds no writable cache directory (a read-only install and home:
-    simulated by making every cache location refuse), the compiled engine still
-    works: it compiles in the process (about 5 s, hence slow), says so once with a
-    RuntimeWarning, and solves as the numpy engine does (1e-10)."""
-    pytest.importorskip("numba")
-    code = (
-        "import warnings\n"
-        "import numba.core.caching as c\n"
-        "def refuse(self):\n"
-        "    raise OSError('read-only')\n"
-        "c._CacheLocator.ensure_cache_path = refuse\n"
-        "with warnings.catch_warnings(record=True) as w:\n"
-        "    warnings.simplefilter('always')\n"
-        "    from linecontact.roller import ProfiledRoller\n"
-        "    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
-        " engine=e).at_force(500.0, tilt=1e-3) for e in ('numpy', 'numba'))\n"
-        "print(sum('cannot be cached' in str(x.message) for x in w))\n"
-        "print(abs(a.depth / b.depth - 1) < 1e-10, abs(a.p_max / b.p_max - 1) < 1e-10)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.split()
-    assert out[0] == "1", f"{out[0]} warnings that the compiled code is not cached"
-    assert out[1:] == ["True", "True"], out
-
-
-def test_auto_switches_within_a_sweep():
-    """A load sweep on one roller with engine='auto' (the switching point lowered to
-    30 numpy steps, a few solves, in a fresh interpreter): the compiled kernels are
-    imported part-way, and every row equals the numpy engine's sweep within 1e-10.
-    (The C extension blocked: where it is built, 'auto' takes it from the start.)"""
-    pytest.importorskip("numba")
-    code = (
-        NO_C + "import sys, numpy as np\n"
-        "from linecontact.roller import ProfiledRoller, slices\n"
-        "slices.AUTO_SWITCH_STEPS = 30\n"
-        "F = np.linspace(500.0, 8000.0, 12)\n"
-        "auto = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281').at_force(F, tilt=1e-3)\n"
-        "print('linecontact.roller._compiled' in sys.modules)\n"
-        "ref = ProfiledRoller(5e-3, 14e-3, 115.385e9, 'iso16281', engine='numpy')"
-        ".at_force(F, tilt=1e-3)\n"
-        "print(max(max(abs(a.depth / r.depth - 1), abs(a.p_max / r.p_max - 1))"
-        " for a, r in zip(auto, ref)))\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.split()
-    assert out[0] == "True", "engine='auto' never switched to the compiled kernels"
-    assert float(out[1]) <= 1e-10, out
-
-
-def test_an_engine_set_after_construction_is_checked_at_once_and_at_the_solve():
-    """`engine` set on a built roller is checked at once, as at construction (the
-    roller is built anew): an unknown name is refused by name (it was silently solved
-    with numpy), and 'numba' where numba does not import is an OutOfRangeError naming
-    engine and what to install. A roller pickled with engine='numba' to a process
-    without numba (a Dask worker; unpickling sets the attribute without a check) is
-    refused the same way when it solves (it was a bare ImportError from deep in the
-    solve). Likewise 'c' where the C extension is not built (a roller pickled with
-    engine='c' to a process without it). Numba's and the extension's imports are
-    blocked in a fresh interpreter."""
-    code = (
-        NO_C + "import sys, pickle; sys.modules['numba'] = None\n"
-        "from linecontact.roller import ProfiledRoller\n"
-        "from linecontact import OutOfRangeError\n"
-        "from linecontact.validity import UnknownNameError\n"
-        "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'circular:Rc=0.5', n_slices=20,"
-        " engine='numpy')\n"
-        "for e, err in (('fortran', UnknownNameError), ('numba', OutOfRangeError),\n"
-        "               ('c', OutOfRangeError)):\n"
-        "    try:\n"
-        "        r.engine = e\n"
-        "        print('set', e)\n"
-        "    except err as exc:\n"
-        "        print('refused:', exc)\n"
-        "    assert r.engine == 'numpy'\n"
-        "    w = pickle.loads(pickle.dumps(r))\n"
-        "    w.__dict__['engine'] = e          # as unpickled from a numba process\n"
-        "    try:\n"
-        "        w.at_force(500.0)\n"
-        "        print('solved with', e)\n"
-        "    except err as exc:\n"
-        "        print('refused:', exc)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.splitlines()
-    assert len(out) == 6 and all(o.startswith("refused: engine") for o in out), out
-    assert "fortran" in out[0] and "fortran" in out[1], out
-    assert "pip install" in out[2] and "pip install" in out[3], out
-    assert all("'c'" in o and "C compiler" in o for o in out[4:]), out
-
-
-def test_each_test_starts_on_the_numpy_reference():
-    """Which engine a test's default-engine solves use must not depend on the tests run
-    before it in the process: the step counter of engine='auto' is zero at the start of
-    every test (tests/conftest.py), so 'auto' is the C engine where its extension is
-    built (from the first solve, whatever came before) and else the numpy reference
-    until a test itself takes AUTO_SWITCH_STEPS steps. (Run after the rest of the
-    suite, which takes far more than 1500 numpy steps, this failed.)"""
-    assert sl._NUMPY_STEPS[0] == 0
-    assert sl.resolve_engine("auto") == ("c" if sl.c_engine() is not None else "numpy")
-
-
-def test_without_the_c_extension_auto_falls_back_and_c_is_refused(monkeypatch):
-    """Where the C extension was not built (its import made to fail here, as without a
-    C compiler at install), engine='auto' solves with numpy, and the same answer as
-    engine='numpy' to the last bit (the same code); engine='c' is refused at
-    construction by an OutOfRangeError naming engine, the value and how to build it."""
-    import linecontact.roller as package
-    for name in ("_ckernels", "_cengine"):        # (as in a process that never had them)
-        monkeypatch.delattr(package, name, raising=False)
-        monkeypatch.delitem(sys.modules, f"linecontact.roller.{name}", raising=False)
-    monkeypatch.setitem(sys.modules, "linecontact.roller._ckernels", None)
-    monkeypatch.setattr(sl, "_C_ENGINE", [])
-    assert sl.c_engine() is None, "the blocked extension imported"
-    assert sl.resolve_engine("auto") == "numpy"
-    a, b = (ProfiledRoller(5e-3, 14e-3, 1e11, "circular:Rc=0.5", n_slices=20,
-                           engine=e).at_force(500.0, tilt=1e-3) for e in ("auto", "numpy"))
-    assert a.depth == b.depth and a.p_max == b.p_max
-    with pytest.raises(OutOfRangeError, match="engine") as err:
-        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
-    assert "'c'" in str(err.value) and "C compiler" in str(err.value), str(err.value)
-
-
-def test_auto_takes_the_c_engine_from_the_first_solve():
-    """Where the C extension is built, one solve with the default engine in a fresh
-    interpreter runs on it (the module _cengine imported) and imports neither numba nor
-    scipy: a single solve takes the compiled loops at no start-up cost."""
-    _need("c")
-    code = ("import sys\n"
-            "from linecontact.roller import ProfiledRoller, slices\n"
-            "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281')\n"
-            "r.at_force(4000.0, tilt=1e-3)\n"
-            "print(slices.resolve_engine(r.engine), slices._NUMPY_STEPS[0],"
-            " 'linecontact.roller._cengine' in sys.modules, 'numba' in sys.modules,"
-            " 'scipy' in sys.modules)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.split()
-    assert out == ["c", "0", "True", "False", "False"], (
-        f"engine, numpy steps, C engine / numba / scipy imported: {out}")
 
 
 def _random_step_system(seed):
@@ -472,9 +193,9 @@ def _random_step_system(seed):
     return rng, n, ns, R, qsc, S, w, x, J
 
 
-@pytest.mark.parametrize("engine", COMPILED)
-def test_compiled_step_helpers_equal_their_numpy_lines(engine):
-    """The four compiled helpers of the bordered Newton step (_compiled.scaled_system,
+@needs_c
+def test_c_step_helpers_equal_their_numpy_lines():
+    """The four C helpers of the bordered Newton step (_cengine.scaled_system,
     bordered_sums, step_out, step_update) give what the numpy code they replace in
     SliceEquations.bordered gives (slices.scaled_system; the other lines written out
     here): the scaled system bit for bit (the same products), the sums to 1e-13 of
@@ -482,8 +203,7 @@ def test_compiled_step_helpers_equal_their_numpy_lines(engine):
     the loads, the curvatures and the overlap, at a given tilt and with a tilt step),
     the slices that limited it and the largest changes. A whole solve cannot check the damping and the mask: a wrong alpha or
     hit_q changes the Newton path, not the converged answer."""
-    _need(engine)
-    jit = _module(engine)
+    jit = sl.c_engine()
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(3)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -547,8 +267,8 @@ def test_compiled_step_helpers_equal_their_numpy_lines(engine):
 
 def _step_by_helpers(jit, J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode,
                      q, c, over):
-    """SliceEquations.bordered's step before _compiled.newton_step fused it: the
-    compiled helpers and the Python lines between them, written out."""
+    """SliceEquations.bordered's step as the C helpers and the Python lines between
+    them, written out (what _cengine.newton_step fuses)."""
     B = jit.scaled_system(J, res, rhs, ns, qsc, R)
     z, wq, wxq, Wz = jit.solve_sums(J, B, ns, qsc, R, w, x, S, qs)
     K = Wz[:, 1:] + grid
@@ -571,9 +291,9 @@ def _step_by_helpers(jit, J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target
     return 0, B, z, K, step, dz, out, upd
 
 
-@pytest.mark.parametrize("engine", COMPILED)
-def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
-    """_compiled.newton_step, the bordered step after the linearisation in one compiled
+@needs_c
+def test_c_newton_step_equals_the_helpers_it_fuses():
+    """_cengine.newton_step, the bordered step after the linearisation in one C
     call, gives bit for bit what the helpers it replaces give with the Python lines
     between them (_step_by_helpers: scaled_system, solve_sums, K = Wz[:, 1:] + grid,
     the step of each mode, step_out, step_update): the same operations in the same
@@ -581,8 +301,7 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
     enough that the update is done (status 0) and with slices the step drives below
     zero (status 1); Cramer's rule on a K that is not finite hands the 2 x 2 system back
     (status 2), and a singular Jacobian the scaled system (None: numpy's solve)."""
-    _need(engine)
-    jit = _module(engine)
+    jit = sl.c_engine()
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(7)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -633,7 +352,8 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
     want = _step_by_helpers(jit, J0.copy(order="F"), res, rhs, bad, ns, qsc, R, w, x, S,
                             qs, cs, 3e-7, 3, np.zeros(n), np.zeros(n), over)
     assert got[0] == want[0] == 2 and tuple(got[4][2:]) == tuple(want[4]), "status 2"
-    # a singular Jacobian: numba refuses it; J and B come back scaled for numpy's solve
+    # a singular Jacobian: numpy's solve refuses it; J and B come back scaled for the
+    # caller's numpy solve, which raises as the numpy engine's would
     Js = np.zeros((2 * ns, 2 * ns), order="F")
     got = jit.newton_step(Js, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, 3e-7, 1,
                           np.zeros(n), np.zeros(n), over)
@@ -641,62 +361,11 @@ def test_compiled_newton_step_equals_the_helpers_it_fuses(engine):
     assert np.array_equal(got[1], sl.scaled_system(np.zeros_like(Js), res, rhs, ns, qsc, R))
 
 
-@pytest.mark.parametrize("engine", COMPILED)
-def test_compiled_dense_solves_equal_the_numpy_loops(engine):
-    """The compiled engine's dense solves give what the numpy lines they replace give:
-    _compiled.solve_sums the solution of np.linalg.solve (the same LAPACK routine;
-    1e-12 of its scale allows another BLAS build) and bordered_sums' sums;
-    _compiled.start_solve the cold start's active-set loop of
-    SliceEquations.start_at_force (written out here: solve, remove the slices whose
-    load is not positive, solve again), the same kept slices and solution, on a
-    bordered system where slices leave in two rounds; a singular system falls back to
-    numpy's solve, which raises numpy's LinAlgError. (The C engine's solve_sums is
-    numpy's solve and the C sums; the cold start is numpy's under it: numba only.)"""
-    _need(engine)
-    jit = _module(engine)
-
-    rng, n, ns, R, qsc, S, w, x, J = _random_step_system(5)
-    B, qs = rng.normal(size=(2 * ns, 3)), rng.random(ns)
-    z, wq, wxq, Wz = jit.solve_sums(J.copy(), B, ns, qsc, R, w, x, S, qs)
-    zn = np.linalg.solve(J, B)
-    want = jit.bordered_sums(zn, ns, qsc, R, w, x, S, qs)
-    np.testing.assert_allclose(z, zn, rtol=0, atol=1e-12 * np.abs(zn).max())
-    assert wq == pytest.approx(want[0], rel=1e-13)
-    assert wxq == pytest.approx(want[1], rel=1e-13)
-    np.testing.assert_allclose(Wz, want[2], rtol=1e-12, atol=1e-13 * np.abs(want[2]).max())
-    if engine != "numba":
-        return
-    # the start's loop: loads of a diagonal-dominant system with some negative targets
-    m, nb = 16, 2
-    M = np.zeros((m + nb, m + nb))
-    M[:m, :m] = np.eye(m) * 4 + rng.random((m, m)) * 0.3
-    M[:m, m] = -1.0
-    M[:m, m + 1] = -np.linspace(-1, 1, m)
-    M[m, :m] = 1.0
-    M[m + 1, :m] = np.linspace(-1, 1, m)
-    rhs = np.concatenate([np.sin(np.arange(m)) * 3 - 1.0, [5.0, 0.0]])
-    keep, Mk, rk, rounds = np.arange(m), M, rhs, 0
-    while True:                                   # the numpy loop, as in slices.py
-        zk = np.linalg.solve(Mk, rk)
-        on = zk[:len(keep)] > 0
-        if on.all():
-            break
-        rounds += 1
-        rows = np.concatenate([np.flatnonzero(on), np.arange(len(keep), len(keep) + nb)])
-        keep, Mk, rk = keep[on], Mk.take(rows, 0).take(rows, 1), rk[rows]
-    assert rounds >= 2 and 0 < len(keep) < m, "the system should shed slices twice"
-    zc, kept, k = jit.start_solve(M, rhs, m, nb)
-    assert k == len(keep) and (kept == keep).all()
-    np.testing.assert_allclose(zc, zk, rtol=0, atol=1e-12 * np.abs(zk).max())
-    with pytest.raises(np.linalg.LinAlgError, match="Singular matrix"):
-        jit.solve(np.zeros((3, 3)), np.ones(3))
-
-
+@needs_c
 def test_c_engine_solves_in_threads():
     """The C loops run without the GIL, with their scratch memory per call: rollers
     solved by four threads at once (one roller per solve, as ProfiledRoller asks) give
     the same bits as the same solves one after another."""
-    _need("c")
     from concurrent.futures import ThreadPoolExecutor
 
     cases = [(F, tilt) for F in (1000.0, 3000.0, 6000.0) for tilt in (1e-3, "free")]
@@ -712,13 +381,14 @@ def test_c_engine_solves_in_threads():
         assert a.depth == b.depth and np.array_equal(a.q, b.q), "a threaded solve differs"
 
 
+@needs_c
 def test_the_c_extension_checks_its_arrays():
     """The C extension reads its arrays through the buffer protocol without numpy's
     help, so it checks them itself: an array of the wrong length, of the wrong type
     (int64 for float64), not contiguous, or a slice index outside the grid raises a
     ValueError naming the array, instead of reading or writing out of bounds."""
-    _need("c")
-    from linecontact.roller import _ckernels, _layout
+    from linecontact import _ckernels
+    from linecontact.roller import _layout
 
     e = _equations(60, 0.0, 0, "c")
     S = np.arange(10, 20)
@@ -741,14 +411,14 @@ def test_the_c_extension_checks_its_arrays():
             call(**kwargs)
 
 
+@needs_c
 def test_the_c_extension_refuses_a_negative_slice_count():
     """The Newton step's C functions take the loaded-slice count ns as a number and
     size their arrays by it (z: 2 ns x 3, qs: ns, ...); a length below zero means "any
     length" to the extension's checks, so a negative ns passed every check and the
     call returned a made-up answer (step_out: 0 slices leaving; bordered_sums: zero
     sums) instead of refusing it. Each now raises a ValueError naming ns."""
-    _need("c")
-    from linecontact.roller import _ckernels
+    from linecontact import _ckernels
 
     z, qs, dz, out = np.zeros(6), np.ones(1), np.zeros(2), np.zeros(1, dtype=bool)
     w, x, S = np.ones(3), np.ones(3), np.zeros(1, dtype=np.int64)
@@ -769,31 +439,15 @@ def test_the_c_extension_refuses_a_negative_slice_count():
                 pytest.fail(f"{name} accepted ns = {ns}")
 
 
-def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
-    """The module-wide caches of slice geometry (n x n arrays, five of them per
-    geometry in the compiled engine) were bounded only in count: sixteen geometries at
-    n = 4000 would hold gigabytes. With the bound set to 1 MB, after building four
-    geometries of 0.9-2 MB each the cache holds at most the bound plus the newest."""
-    from linecontact._numerics import cache_nbytes
-    monkeypatch.setattr(sl, "CACHE_BYTES", 2**20)
-    monkeypatch.setattr(sl, "_GEOMETRY", {})
-    newest = 0
-    for n in (200, 230, 260, 290):
-        got = sl._unit_geometry(n, 0.8, 0)
-        newest = sum(a.nbytes for a in got)
-    assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest
-
-
-@pytest.mark.parametrize("engine", COMPILED)
+@needs_c
 @pytest.mark.parametrize("mode", [1, 2])
-def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode, engine):
+def test_c_newton_step_divides_as_numpy_by_a_zero_stiffness(mode):
     """The step of a force row (mode 1) or a moment row (mode 2) is its residual over
-    K[0, 0] or K[1, 1]; where that entry is exactly zero the lines _compiled.newton_step
-    replaced divided numpy floats (IEEE: +-inf, NaN for 0/0) and went on, where numba's
-    compiled division raises ZeroDivisionError. The fused step must hand back what the
-    helpers give (the same step, dz, mask, update; NaN compared as NaN), not raise."""
-    _need(engine)
-    jit = _module(engine)
+    K[0, 0] or K[1, 1]; where that entry is exactly zero the numpy lines divide numpy
+    floats (IEEE: +-inf, NaN for 0/0) and go on. The fused C step must hand back what
+    the helpers give (the same step, dz, mask, update; NaN compared as NaN), IEEE
+    division included, not stop."""
+    jit = sl.c_engine()
 
     rng, n, ns, R, qsc, S, w, x, J0 = _random_step_system(11)
     res, rhs = rng.normal(size=2 * ns), rng.normal(size=(2 * ns, 2))
@@ -819,19 +473,90 @@ def test_compiled_newton_step_divides_as_numpy_by_a_zero_stiffness(mode, engine)
         assert np.array_equal(q1, q2, equal_nan=True) and np.array_equal(c1, c2, equal_nan=True)
 
 
-def test_a_refused_engine_names_the_engines_that_run_here(monkeypatch):
-    """The error that refuses an engine not available here gives as its valid range the
-    engines that are: where numba is not installed but the C extension is built,
-    engine='numba' was refused with "'auto' or 'numpy'", leaving out the C engine; where
-    neither is, engine='c' was refused with "'auto', 'numpy' or 'numba'", naming an
-    engine that is refused too."""
-    _need("c")
-    monkeypatch.setattr(sl, "_HAVE_NUMBA", [False])          # (as without numba)
-    with pytest.raises(OutOfRangeError, match="engine") as err:
-        ProfiledRoller(5e-3, 14e-3, 1e11, engine="numba")
-    assert "'auto', 'numpy' or 'c' (numba is not installed)" in str(err.value), (
-        str(err.value))
-    monkeypatch.setattr(sl, "_C_ENGINE", ["not built (blocked by the test)"])
-    with pytest.raises(OutOfRangeError, match="engine") as err:
-        ProfiledRoller(5e-3, 14e-3, 1e11, engine="c")
-    assert "range 'auto' or 'numpy' (the C extension" in str(err.value), str(err.value)
+# -- the choice of engine (linecontact/_engine.py) --------------------------------------
+
+def _without_c(monkeypatch, why="not built (blocked by the test)"):
+    """As in a process where the extension does not run (not built, or stale: `why`)."""
+    monkeypatch.setattr(_engine, "_LOADED", [(None, why)])
+    monkeypatch.setattr(sl, "_C_ENGINE", [None])
+
+
+def _roller(engine):
+    return ProfiledRoller(5e-3, 14e-3, 1e11, "circular:Rc=0.5", n_slices=20, engine=engine)
+
+
+def test_auto_is_c_where_the_extension_runs_else_numpy_whatever_ran_before(monkeypatch):
+    """engine='auto' resolves to 'c' exactly where the extension runs here, else to
+    'numpy', whatever the process solved before (nothing is counted): a solve repeated
+    after a sweep of 30 gives the same bits. Without the extension 'auto' runs the
+    numpy code: the same bits as engine='numpy'."""
+    want = "c" if sl.c_engine() is not None else "numpy"
+    assert _engine.resolve_engine("auto") == want
+    first = _roller("auto").at_force(500.0, tilt=1e-3)
+    _roller("auto").at_force(np.linspace(400.0, 8000.0, 30), tilt=1e-3)
+    again = _roller("auto").at_force(500.0, tilt=1e-3)
+    assert _engine.resolve_engine("auto") == want
+    assert first.depth == again.depth and np.array_equal(first.q, again.q)
+    _without_c(monkeypatch)
+    assert _engine.resolve_engine("auto") == "numpy"
+    a, b = (_roller(e).at_force(500.0, tilt=1e-3) for e in ("auto", "numpy"))
+    assert a.depth == b.depth and np.array_equal(a.q, b.q)
+
+
+def test_an_unknown_engine_or_c_where_it_does_not_run_is_refused_in_one_line(monkeypatch):
+    """An unknown engine (a typo; 'numba', which is gone) is an UnknownNameError
+    naming the engines that run here; 'c' where the extension does not run is an
+    OutOfRangeError naming 'auto' and 'numpy', why 'c' does not run (the loader's
+    reason) and how to build it. One line each."""
+    for bad in ("fortran", "numba", None):
+        with pytest.raises(UnknownNameError, match="engine") as err:
+            _roller(bad)
+        valid = "'auto', 'numpy', 'c'" if sl.c_engine() is not None else "'auto', 'numpy';"
+        assert f"valid: {valid}" in str(err.value), str(err.value)
+    why = "the extension linecontact._ckernels was built from other versions (test)"
+    _without_c(monkeypatch, why)
+    with pytest.raises(UnknownNameError, match="engine") as err:
+        _roller("numba")
+    assert str(err.value).endswith(f"valid: 'auto', 'numpy'; 'c' does not run here: {why}")
+    with pytest.raises(OutOfRangeError, match="engine = 'c'") as err:
+        _roller("c")
+    msg = str(err.value)
+    assert f"'auto' or 'numpy' ('c' does not run here: {why})" in msg, msg
+    assert "C compiler" in msg and "\n" not in msg, msg
+
+
+def test_an_engine_set_later_or_unpickled_where_c_does_not_run_is_refused(monkeypatch):
+    """`engine` set on a built roller is checked at once, as at construction (the
+    roller is built anew; a refused value leaves it as it was). A roller pickled with
+    engine='c' to a process where the extension does not run (a Dask worker:
+    unpickling sets the attribute without a check) is refused by name when it solves,
+    never solved with numpy instead."""
+    r = _roller("numpy")
+    with pytest.raises(UnknownNameError, match="fortran"):
+        r.engine = "fortran"
+    assert r.engine == "numpy"
+    _without_c(monkeypatch)
+    with pytest.raises(OutOfRangeError, match="engine = 'c'"):
+        r.engine = "c"
+    assert r.engine == "numpy"
+    w = pickle.loads(pickle.dumps(r))
+    w.__dict__["engine"] = "c"                 # as unpickled from a process with C
+    with pytest.raises(OutOfRangeError, match="engine = 'c'"):
+        w.at_force(500.0)
+
+
+@needs_c
+def test_auto_takes_the_c_engine_from_the_first_solve():
+    """Where the extension is built, one solve with the default engine in a fresh
+    interpreter runs on it (the module _cengine imported) without importing scipy: a
+    single solve takes the C loops at no start-up cost."""
+    code = ("import sys\n"
+            "from linecontact.roller import ProfiledRoller\n"
+            "from linecontact._engine import resolve_engine\n"
+            "r = ProfiledRoller(5e-3, 14e-3, 1e11, 'iso16281')\n"
+            "r.at_force(4000.0, tilt=1e-3)\n"
+            "print(resolve_engine(r.engine), 'linecontact.roller._cengine' in sys.modules,"
+            " 'scipy' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == ["c", "True", "False"], f"engine, C engine / scipy imported: {out}"

@@ -119,6 +119,21 @@ def test_geometry_caches_survive_a_concurrent_clear(monkeypatch):
     assert np.array_equal(sl._far_geometry(37, 0.8, 1), ref_far)
 
 
+def test_the_geometry_caches_are_bounded_in_bytes(monkeypatch):
+    """The module-wide caches of slice geometry (n x n arrays, five of them per
+    geometry with the C engine's layout) were bounded only in count: sixteen geometries at
+    n = 4000 would hold gigabytes. With the bound set to 1 MB, after building four
+    geometries of 0.9-2 MB each the cache holds at most the bound plus the newest."""
+    from linecontact._numerics import cache_nbytes
+    monkeypatch.setattr(sl, "CACHE_BYTES", 2**20)
+    monkeypatch.setattr(sl, "_GEOMETRY", {})
+    newest = 0
+    for n in (200, 230, 260, 290):
+        got = sl._unit_geometry(n, 0.8, 0)
+        newest = sum(a.nbytes for a in got)
+    assert cache_nbytes(sl._GEOMETRY) <= 2**20 + newest
+
+
 def test_unloading_slices_equals_a_fresh_linearisation():
     """Slices leaving within a Newton step (slices._unloaded): the linear system with
     their loads set to zero through their Jacobian columns equals the one a fresh

@@ -19,7 +19,7 @@ from linecontact.roller import slices as sl
 E = 115.385e9
 D, L = 10e-3, 14e-3
 ISO = "iso16281:D=10mm"
-F = 4200.0                      # tools/benchmarks/bench_roller_speed's case
+F = 4200.0                      # the `roller` benchmark's case (tools/benchmarks/suite.py)
 
 
 def _steps(monkeypatch):
@@ -45,7 +45,7 @@ def test_benchmark_case_steps(monkeypatch, tilt, steps):
     assert s.force == pytest.approx(F, rel=1e-10)
 
 
-@pytest.mark.parametrize("engine", ["numpy", "numba", "c"])
+@pytest.mark.parametrize("engine", ["numpy", "c"])
 @pytest.mark.parametrize("profile, length, force, tilt", [
     (ISO, L, F, 2e-3), (ISO, L, F, "free"), ("lundberg:F0=11200", L, 28000.0, 5e-4),
     ("circular:Rc=0.5,x0=2mm", L, 1400.0, "free"), ("circular:Rc=0.5", L, 2800.0, 1e-3),
@@ -65,10 +65,8 @@ def test_estimate_ended_solve_is_the_converged_state(monkeypatch, engine, profil
     sqrt(1e-11 / NEWTON_C) = 3.2e-7 in the scaled unknowns, and K (smooth in them) moves
     by about as much relative: bound 3.2e-7 of its diagonal scale (measured up to 5.2e-8,
     the last case)."""
-    if engine == "numba":
-        pytest.importorskip("numba")
     if engine == "c" and sl.c_engine() is None:
-        pytest.skip("the C extension linecontact.roller._ckernels is not built here")
+        pytest.skip("the C extension linecontact._ckernels does not run here")
     count = _steps(monkeypatch)
     r = ProfiledRoller(D / 2, length, E, profile, engine=engine)
     s = r.at_force(force, tilt=tilt)
@@ -125,7 +123,7 @@ def test_a_singular_cold_start_falls_back_to_the_nested_iteration(monkeypatch):
     assert abs(s.depth - ref.depth) < 1e-9 * max(ref.depth, 1e-12), (s.depth, ref.depth)
 
 
-@pytest.mark.parametrize("engine", ["numpy", "numba", "c"])
+@pytest.mark.parametrize("engine", ["numpy", "c"])
 def test_a_sweeps_warm_start_is_not_ended_on_its_first_grid(monkeypatch, engine):
     """A sweep on one roller (a random case of the covered range: offset crown x0 = 2
     mm, Rc = 500 mm, R 5 mm, L 21.87 mm, free tilt, forces falling from 9098 N; its
@@ -138,10 +136,8 @@ def test_a_sweeps_warm_start_is_not_ended_on_its_first_grid(monkeypatch, engine)
     iteration is never called) and give the fully converged state (NEWTON_C = inf) to
     the Newton tolerance: slice loads to 1e-11 of the largest, depth to 1e-11 of the
     largest overlap."""
-    if engine == "numba":
-        pytest.importorskip("numba")
     if engine == "c" and sl.c_engine() is None:
-        pytest.skip("the C extension linecontact.roller._ckernels is not built here")
+        pytest.skip("the C extension linecontact._ckernels does not run here")
     length = 0.021866754588096327
     forces = [9098.286556022298, 7396.789627452749, 6013.494569104063,
               4888.8935273257575]

@@ -1,20 +1,23 @@
-"""The C corner sums of the stresses' 3D correction (linecontact/_cstresses.c) against
-the numpy reference (linecontact.stresses._love_weighted / _love_corner), and the
-stresses computed with each: the same sums to rounding, the same worst values.
+"""The C corner sums of the stresses' 3D correction (linecontact/_cstresses.c, in the
+extension linecontact._ckernels) against the numpy reference
+(linecontact.stresses._love_weighted / _love_corner), and the stresses computed with
+each: the same sums to rounding, the same worst values.
 
-Skipped where the optional extension is not built (no C compiler at install), but
-for the check that its source compiles where a C compiler is present."""
+Skipped where the optional extension does not run here (no C compiler at install; a
+stale build); tests/test_extensions.py checks that its sources compile where a C
+compiler is present."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from linecontact import _engine
 from linecontact import stresses as st
 from linecontact.roller import ProfiledRoller
 
 needs_c = pytest.mark.skipif(
     st._cstresses is None,
-    reason="the optional C extension linecontact._cstresses is not built here")
+    reason=f"the C extension does not run here ({_engine.unavailable()})")
 
 ESTAR = 115.385e9
 

@@ -91,11 +91,11 @@ Modules
 -------
 ``kernel``     the strip influence functions (:func:`strip_influence`)
 ``slices``     the slice equations, their Newton / active-set solver, the stiffness matrix
-``_compiled``  the same kernels and linearisation as compiled loops (numba, optional;
-               ``ProfiledRoller(engine=...)``, docs/profiled_rollers.md, "Engines")
-``_cengine``   the same loops in C (the extension ``_ckernels``, built at install
-               where a C compiler exists; ``engine="c"``, the default's choice there)
-``_layout``    the geometry and spline table as both compiled engines read them
+``_cengine``   the same kernels, linearisation and Newton-step arithmetic in C (the
+               extension ``linecontact._ckernels``, built at install where a C compiler
+               exists; ``ProfiledRoller(engine=...)``: ``"c"``, the default's choice
+               there; :mod:`linecontact._engine`, docs/profiled_rollers.md, "Engines")
+``_layout``    the geometry and spline table as the C engine reads them
 ``coverage``   the note on where a case lies against tables/roller_accuracy.csv
 ``solution``   :class:`RollerSolution`, contact extent and peak pressure off the slices
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)

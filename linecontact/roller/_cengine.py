@@ -1,42 +1,34 @@
-"""The C engine of the coupled-slice equations (optional; ``engine="c"``).
+"""The C engine of the coupled-slice equations (``engine="c"``).
 
 :meth:`SliceEquations.kernels <linecontact.roller.slices.SliceEquations.kernels>` and
 :meth:`~linecontact.roller.slices.SliceEquations.linearised` evaluated by the C
-extension ``linecontact.roller._ckernels`` (linecontact/roller/_ckernels.c, built at
-install where a C compiler exists): a port to C99 of the numba engine's loops
-(:mod:`linecontact.roller._compiled`, ``kernels`` and ``linearised``) with the same
-arithmetic in the same order, the same cached geometry and spline table
-(:mod:`linecontact.roller._layout`), so it agrees with the numba and numpy engines to
-rounding. The functions here have the signatures and return values of
-``_compiled.kernels`` and ``_compiled.linearised``: they make the inputs contiguous
-float64 / int64 and allocate the outputs (the Fortran-order matrices as the transposes
-of C-order arrays, which the extension fills). Like the numba engine, a call returns
-None where a spline argument falls below the table (tau < 1e-4) and the caller takes
-the numpy path. The bordered Newton step's arithmetic around its dense solve (the
-scaled system; the sums, the step, its mask and the damped update) is C too, with the
-numba helpers' names, signatures and order of operations (``newton_step``,
-``scaled_system``, ``solve_sums``, ``step_out``, ``step_update``); the dense solves
-themselves are numpy's (``np.linalg.solve``: no LAPACK is linked into the extension),
-and so is the cold start.
+extension ``linecontact._ckernels`` (linecontact/roller/_ckernels.c, built at install
+where a C compiler exists; loaded by :mod:`linecontact._engine`), with the cached
+geometry and spline table of :mod:`linecontact.roller._layout`: the numpy code's
+arithmetic, its sums in another order, so results agree with it to rounding. The
+functions here make the inputs contiguous float64 / int64 and allocate the outputs
+(the Fortran-order matrices as the transposes of C-order arrays, which the extension
+fills). A call returns None where a spline argument falls below the table (tau <
+1e-4) and the caller takes the numpy path. The bordered Newton step's arithmetic
+around its dense solve (the scaled system; the sums, the step, its mask and the damped
+update) is C too (``newton_step``, ``scaled_system``, ``solve_sums``, ``step_out``,
+``step_update``: the lines of ``SliceEquations.bordered`` in their order); the dense
+solves themselves are numpy's (``np.linalg.solve``: no LAPACK is linked into the
+extension), and so is the cold start.
 
-Where the extension was not built this module still imports (so that every module of
-the package does), with ``UNAVAILABLE`` saying why; the caller,
-:func:`linecontact.roller.slices.c_engine`, then keeps to numpy or numba.
+Used only where the extension runs (:func:`linecontact.roller.slices.c_engine`); it
+imports anywhere (so that every module of the package does).
 """
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
-from .._extensions import load_extension
+from .._engine import ckernels
 from ._layout import table, transposed
 from .kernel import R_INF
 
-#: the extension, or None; UNAVAILABLE: why the C engine cannot run here (None where it
-#: can: built, and from this version of _ckernels.c)
-_ckernels, UNAVAILABLE = load_extension(
-    "linecontact.roller._ckernels", Path(__file__).with_name("_ckernels.c"))
+#: the extension, or None where it does not run here
+_ckernels = ckernels()
 if _ckernels is not None:
     _tmin, _tmax, _coef, _z0, _ih, _h = table()
     _ckernels.set_table(_coef, _tmin, _tmax, _z0, _ih, _h, float(R_INF))
@@ -64,7 +56,7 @@ def _floats(a):
 def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
     """A, D, EA, ED (the others None with a_only) for targets T and sources S, each
     (len(T), len(S)) in Fortran order, or None where a spline argument falls below the
-    table. G None: every pair from the table (as _compiled.kernels)."""
+    table. G None: every pair from the table."""
     S, T = _ints(S), _ints(T)
     nt, ns = len(T), len(S)
     tn, tf, lr, ltn, ltf, Gt = transposed(tn, tf, lr, G)
@@ -84,7 +76,7 @@ def kernels(S, T, b, span, dg, tn, tf, lr, G, fc, a_only):
 def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi,
                tn, tf, lr, G, fc):
     """(res, J, rhs, gap, grid) of SliceEquations.linearised (J in Fortran order), or
-    None where a spline argument falls below the table (as _compiled.linearised)."""
+    None where a spline argument falls below the table."""
     S, T = _ints(S), _ints(T)
     ns, nt = len(S), len(T)
     res = np.empty(2 * ns)
@@ -104,8 +96,8 @@ def linearised(S, T, spos, q, c, over, R, span, x, m, dg, slope, theta, dlo, dhi
 
 
 # -- the bordered Newton step's small arithmetic (SliceEquations.bordered) ------------
-# as the numba engine's helpers of the same names (_compiled), in C; the dense solve
-# between them is numpy's (np.linalg.solve: the numpy engine's LAPACK call)
+# its numpy lines in C; the dense solve between them is numpy's (np.linalg.solve: the
+# numpy engine's LAPACK call)
 
 def _jacobian(J):
     """(array whose C-order buffer holds J, whether it is J's transpose): J itself in
@@ -173,9 +165,9 @@ def step_update(q, c, S, qs, cs, dq, dc, over, x, s0, s1):
 
 def newton_step(J, res, rhs, grid, ns, qsc, R, w, x, S, qs, cs, target, mode, q, c,
                 over):
-    """One step of SliceEquations.bordered after the linearisation, as the numba
-    engine's _compiled.newton_step returns it: (status, B, z, K, step, dz, out, hit_q,
-    upd), the scaled system and the arithmetic after numpy's dense solve in C. (None,
+    """One step of SliceEquations.bordered after the linearisation: (status, B, z, K,
+    step, dz, out, hit_q, upd), the scaled system and the arithmetic after numpy's
+    dense solve in C. (None,
     B) where numpy's solve refuses the system (singular): J and B are scaled, and the
     caller's own solve raises as the numpy engine's would."""
     B = scaled_system(J, res, rhs, ns, qsc, R)

@@ -1,19 +1,20 @@
 /*
  * The two hot loops of the coupled-slice equations in C99 (engine "c"): the kernels
  * A, EA, D, ED of SliceEquations.kernels and the residual, Jacobian and grid terms of
- * SliceEquations.linearised (linecontact/roller/slices.py, the numpy reference), as
- * the numba engine computes them (linecontact/roller/_compiled.py: _far_powers,
- * _column, _kernels, _linearised), with the same arithmetic in the same order:
- * the far-field series (all its terms, every target), the near band from the cubic
+ * SliceEquations.linearised (linecontact/roller/slices.py, the numpy reference), with
+ * the same series coefficients, spline table and cached geometry
+ * (linecontact/roller/_layout.py), one source slice at a time: the far-field series (all its terms, every target), the near band from the cubic
  * spline table of the strip functions (kernel.spline_table), the diagonal; beyond the
  * table (tau >= tau_max) the series in (b/t)^2, below it (tau < tau_min) a call
  * returns False and the caller takes the numpy path. Also the bordered Newton step's
- * small arithmetic around numpy's dense solve (the numba engine's _scaled_system,
- * _bordered_sums, _step_out, _step_update and _newton_step less its solve), which
- * numpy's many small array operations made cost more than the loops above.
+ * small arithmetic around numpy's dense solve (SliceEquations.bordered's lines: the
+ * scaled system, the force and moment sums, the step, its mask and the damped
+ * update), which numpy's many small array operations made cost more than the loops
+ * above. Results agree with numpy's to rounding (the order of sums differs;
+ * tests/test_roller_engine.py).
  *
  * IEEE double arithmetic: built without -ffast-math and with -ffp-contract=off (no
- * fused multiply-adds), so that every operation rounds as numba's and numpy's do.
+ * fused multiply-adds), so that every operation rounds as numpy's does.
  *
  * Arrays come through the buffer protocol (no numpy headers at build time): each is
  * checked to be C-contiguous, of item size 8 and of the right kind (float64 'd' or
@@ -21,6 +22,10 @@
  * read; a mismatch raises ValueError. The Python wrapper (_cengine.py) allocates the
  * outputs (matrices in Fortran order: passed here as their C-order transposes). The
  * loops run without the GIL, with their scratch memory per call (thread-safe).
+ *
+ * This file and linecontact/_cstresses.c (the stresses' corner sums) are the two
+ * sources of the one extension module linecontact._ckernels (setup.py); its PyInit is
+ * here, at the end.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -36,7 +41,9 @@
 #endif
 
 /* the series of a near-band pair beyond the spline table stops once the next power of
- * x = (b/t)^2 is below FAR_STOP (as _compiled.FAR_STOP); the far field takes every term */
+ * x = (b/t)^2 is below FAR_STOP (numpy sums a fixed number of terms: the same to
+ * rounding of the matrix, docs/profiled_rollers.md, "Engines"); the far field takes
+ * every term */
 #define FAR_STOP 1e-18
 
 /* the spline table (set once per process by set_table): coef[(segment * 4 + power) * 4 + function] */
@@ -56,7 +63,7 @@ typedef struct {
     int far;
 } Geometry;
 
-/* C[i, j, f] = beta_i^(j+1) fc[j, f], beta = (b/span)^2 (_compiled._far_powers) */
+/* C[i, j, f] = beta_i^(j+1) fc[j, f], beta = (b/span)^2 */
 static void far_powers(const double *b, Py_ssize_t ns, double span, const double *fc,
                        Py_ssize_t K, double *C)
 {
@@ -74,7 +81,7 @@ static void far_powers(const double *b, Py_ssize_t ns, double span, const double
 
 /* the four kernels of source slice si (half-width bi, far-field coefficients Cs) at
  * every slice k: W[f * n + k], f = A, EA, D, ED (W[1:] undefined off the near band
- * unless full); 0 where a spline argument falls below the table (_compiled._column) */
+ * unless full); 0 where a spline argument falls below the table */
 static int column(const Geometry *g, Py_ssize_t si, double bi, const double *Cs,
                   int full, double *W)
 {
@@ -203,7 +210,7 @@ static int column(const Geometry *g, Py_ssize_t si, double bi, const double *Cs,
     return 1;
 }
 
-/* _compiled._kernels; At, EAt, Dt, EDt are (ns, nt) C order (the transposes of the
+/* SliceEquations.kernels; At, EAt, Dt, EDt are (ns, nt) C order (the transposes of the
  * Fortran-order (nt, ns) matrices); EAt NULL: A alone. Returns 1, 0 (below the table)
  * or -1 (out of memory). */
 static int kernels_loop(const Geometry *g, const int64_t *S, Py_ssize_t ns,
@@ -247,7 +254,7 @@ typedef struct {
     double R, theta, dlo[2], dhi[2];
 } State;
 
-/* _compiled._linearised: res (2 ns), Jt (the C-order transpose of the Fortran-order
+/* SliceEquations.linearised: res (2 ns), Jt (the C-order transpose of the Fortran-order
  * J, 2 ns x 2 ns), rhs (2 ns x 2), gap (nt), grid (2 x 2). Returns 1, 0 or -1. */
 static int linearised_loop(const Geometry *g, const State *st, double *res, double *Jt,
                            double *rhs, double *gap, double *grid)
@@ -339,8 +346,7 @@ static int linearised_loop(const Geometry *g, const State *st, double *res, doub
 
 /* ---------------------------------------------------------------------------------- */
 /* the bordered Newton step's small arithmetic around numpy's dense solve
- * (SliceEquations.bordered; the numba engine's _compiled._scaled_system,
- * _bordered_sums, _step_out, _step_update and _newton_step, the same order)          */
+ * (SliceEquations.bordered's lines, in the same order)                              */
 
 /* J's off-diagonal blocks scaled in place, J[i, j] at J[i * si + j * sj], and the
  * right-hand sides B (2 ns x 3, C order) */
@@ -414,7 +420,7 @@ static Py_ssize_t step_out_loop(const double *z, double s0, double s1, Py_ssize_
     return k;
 }
 
-/* the damped update (_compiled._step_update): q[S], c[S] in place; res = (alpha,
+/* the damped update: q[S], c[S] in place; res = (alpha,
  * largest overlap, largest |dq|, largest |dc|) */
 static void step_update_loop(double *q, double *c, const int64_t *S, Py_ssize_t ns,
                              const double *qs, const double *cs, const double *dq,
@@ -480,7 +486,7 @@ static void step_update_loop(double *q, double *c, const int64_t *S, Py_ssize_t 
     res[3] = dcmax;
 }
 
-/* num / k as numpy's float division answers it, k = 0 included (_compiled._quotient) */
+/* num / k as numpy's float division answers it, k = 0 included */
 static double quotient(double num, double k)
 {
     if (k == 0.0)
@@ -499,7 +505,7 @@ typedef struct {
     int mode;
 } Step;
 
-/* _compiled._newton_step after its dense solve: the sums, K = Wz[:, 1:] + grid, the
+/* the bordered Newton step after its dense solve: the sums, K = Wz[:, 1:] + grid, the
  * step in (d, theta) of each mode, its mask and, where no slice leaves, the damped
  * update. Returns the status: 0 updated, 1 slices leave, 2 Cramer's determinant zero
  * or not finite (st[2:4] the 2 x 2 system's right-hand side). */
@@ -990,13 +996,17 @@ static PyMethodDef methods[] = {
      "st, dz, out, hit_q, upd) -> status: the Newton step after its dense solve."},
     {NULL, NULL, 0, NULL}};
 
+/* the stresses' corner sums (linecontact/_cstresses.c, the other source of this module) */
+extern PyMethodDef lc_stress_methods[];
+
 static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT, "_ckernels",
-    "The coupled-slice kernels and linearisation in C (engine 'c'; _cengine.py wraps "
-    "them).", -1, methods};
+    "The compiled engine: the coupled-slice kernels and linearisation (engine 'c'; "
+    "linecontact/roller/_cengine.py wraps them) and the stresses' corner sums "
+    "(love_sums, corners; linecontact/stresses.py wraps them), in C.", -1, methods};
 
-/* the SHA-256 of this file as setup.py read it (linecontact/_extensions.py compares it
- * with the file beside the built module: a stale build is not used) */
+/* the SHA-256 of both sources as setup.py read them (linecontact/_engine.py compares it
+ * with the files beside the built module: a stale build is not used) */
 #ifndef LC_SOURCE_SHA256
 #define LC_SOURCE_SHA256 ""
 #endif
@@ -1004,7 +1014,9 @@ static struct PyModuleDef module = {
 PyMODINIT_FUNC PyInit__ckernels(void)
 {
     PyObject *m = PyModule_Create(&module);
-    if (m != NULL && PyModule_AddStringConstant(m, "SOURCE_SHA256", LC_SOURCE_SHA256) < 0) {
+    if (m != NULL && (PyModule_AddFunctions(m, lc_stress_methods) < 0
+                      || PyModule_AddStringConstant(m, "SOURCE_SHA256",
+                                                    LC_SOURCE_SHA256) < 0)) {
         Py_DECREF(m);
         return NULL;
     }

@@ -1,10 +1,10 @@
-"""The data of the slice equations in the layout the compiled engines read (numba,
-:mod:`linecontact.roller._compiled`; C, :mod:`linecontact.roller._cengine`): the
-spline table of the strip functions with a point's sixteen coefficients together, and
-the cached unit geometry transposed so that each source slice's column is contiguous.
+"""The data of the slice equations in the layout the C engine reads
+(:mod:`linecontact.roller._cengine`): the spline table of the strip functions with a
+point's sixteen coefficients together, and the cached unit geometry transposed so that
+each source slice's column is contiguous.
 
-Imports neither numba nor the C extension (both engines share it; the numpy code in
-:mod:`linecontact.roller.slices` keeps the originals).
+Does not import the C extension (the numpy code in :mod:`linecontact.roller.slices`
+keeps the originals).
 """
 from __future__ import annotations
 

@@ -149,7 +149,7 @@ SplineTable = collections.namedtuple("SplineTable", "tau_min tau_max z0 h coef")
 def spline_table():
     """The cubic spline of the four strip functions in z = ln(tau) that
     :func:`strip_values` evaluates, as data for other implementations of the same
-    evaluation (the compiled kernels, :mod:`linecontact.roller._compiled`): valid for
+    evaluation (the C engine, :mod:`linecontact.roller._cengine`): valid for
     tau_min <= tau < tau_max; with u = (z - z0)(1/h), segment i = min(floor(u),
     nseg - 1) and t = (u - i) h, function f (r, tau a', p, tau p') is
     ((c3 t + c2) t + c1) t + c0 with c_k = coef[k, f, i] (coef: (4, 4, nseg))."""

@@ -12,11 +12,11 @@ import numpy as np
 from ..profiles import (as_profile, drop_inside, drop_slope_inside, is_free_tilt,
                         profile_identity, roller_drop)
 from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
+from .._engine import check_engine, resolve_engine
 from .._numerics import CACHE_BYTES, cache_nbytes, serial_blas
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
-                     ConvergenceError, SliceEquations, check_engine, coarse_slices,
-                     resolve_engine)
+                     ConvergenceError, SliceEquations, coarse_slices)
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["ProfiledRoller", "roller_contact"]
@@ -79,17 +79,13 @@ class ProfiledRoller:
         (default True; False:
         report the unrefined solution, flagged). Solutions whose peak is resolved
         are not affected.
-    engine : {"auto", "numpy", "numba", "c"}, optional
-        Who evaluates the slice equations' kernels and linearisation: "numpy" (the
-        reference), "c" (the C extension built at install where a C compiler exists:
-        compiled loops, the same arithmetic, results equal within 1e-10; refused
-        where it is not built), "numba" (the same loops compiled by numba; needs
-        numba, ``pip install linecontact[fast]``) or "auto" (default): "c" where the
-        extension is built (it loads in 1-3 ms), else numpy until the process
-        has taken 1500 Newton steps (some 150-200 solves), then numba where it is
-        installed: importing numba and loading its cached code cost 0.4-0.5 s once,
-        which the compiled engine repays at 0.2-0.35 ms a step
-        (docs/profiled_rollers.md, "Engines").
+    engine : {"auto", "numpy", "c"}, optional
+        Who evaluates the slice equations' kernels, linearisation and Newton-step
+        arithmetic: "numpy" (the reference), "c" (the C extension built at install
+        where a C compiler exists: the same arithmetic, results equal to numpy's
+        within 1e-10; refused where it does not run) or "auto" (default): "c" where
+        the extension is built and current, else "numpy" (docs/profiled_rollers.md,
+        "Engines").
 
     Notes
     -----

@@ -157,136 +157,30 @@ def _far_geometry(n, grading, refine=0):
     return G
 
 
-#: the engines that evaluate the slice equations: ProfiledRoller(engine=...) takes
-#: one of these; SliceEquations.engine is "numpy", "numba" or "c" (resolve_engine)
-ENGINES = ("auto", "numpy", "numba", "c")
-#: with engine "auto", the numpy steps (kernels() and linearised() calls) a process
-#: takes before it switches to the compiled engine, where numba is installed: a numpy
-#: step costs 0.2-0.35 ms more than a compiled one at 50-100 slices, so by then numpy
-#: has cost about as much more than numba would have as switching costs once
-#: (importing numba and loading its cached code, 0.4-0.5 s): the break-even rule of
-#: renting against buying, never worse than twice the best choice in hindsight
-#: (docs/profiled_rollers.md, "Engines")
-AUTO_SWITCH_STEPS = 1500
-_NUMPY_STEPS = [0]
-_HAVE_NUMBA = []
-_IMPORT_ERROR = []          # why the compiled kernels did not import, once they failed
-_COMPILED = []              # the module _compiled, once imported
-_C_ENGINE = []              # the module _cengine, or the ImportError's text, once tried
-#: how to build the C engine, said where it is asked for and not built
-C_BUILD_HINT = ("install a C compiler (gcc, clang, MSVC) and reinstall linecontact "
-                "from its source (pip install . or pip install -e . in a checkout), or "
-                "use engine='auto'")
-
-
-def numba_installed():
-    """Whether numba can be imported (looked up once, without importing it)."""
-    if not _HAVE_NUMBA:
-        import importlib.util
-        _HAVE_NUMBA.append(importlib.util.find_spec("numba") is not None)
-    return _HAVE_NUMBA[0]
+_C_ENGINE = []              # the module _cengine where the C engine runs, else None; once
 
 
 def c_engine():
     """The C engine (:mod:`linecontact.roller._cengine`, over the extension
-    ``_ckernels`` built at install), or None where it does not import (not built: no C
-    compiler at install; built for another Python). Tried once per process; importing
-    it costs 1-3 ms (tools/benchmarks/README.md, "Round 7")."""
+    ``linecontact._ckernels``), or None where it does not run here (not built: no C
+    compiler at install; a stale build: :func:`linecontact._engine.unavailable` says
+    why). Tried once per process; loading it costs a few ms (docs/profiled_rollers.md,
+    "Engines")."""
     if not _C_ENGINE:
-        from . import _cengine
-        _C_ENGINE.append(_cengine if _cengine.UNAVAILABLE is None else
-                         _cengine.UNAVAILABLE)
-    got = _C_ENGINE[0]
-    return None if isinstance(got, str) else got
-
-
-def check_engine(engine):
-    """`engine` checked: one of ENGINES, "numba" only where numba is installed and
-    the compiled kernels import (then imported here, at the roller's construction),
-    "c" only where the C extension imports."""
-    from ..validity import OutOfRangeError, UnknownNameError
-    if not isinstance(engine, str) or engine not in ENGINES:
-        raise UnknownNameError("engine", engine, ENGINES)
-    if engine == "c" and c_engine() is None:
-        raise OutOfRangeError("engine", "c", f"{_runnable_here('c')} (the C "
-                              "extension linecontact.roller._ckernels does not run "
-                              f"here: {_C_ENGINE[0]})", hint=C_BUILD_HINT)
-    if engine == "numba":
-        if not numba_installed():
-            raise OutOfRangeError("engine", "numba", f"{_runnable_here('numba')} (numba "
-                                  "is not installed)", hint="install numba (pip install "
-                                  "numba, or linecontact[fast]) or use engine='auto'")
-        try:
-            if _IMPORT_ERROR:
-                raise ImportError(_IMPORT_ERROR[0])
-            compiled()
-        except Exception as err:     # e.g. a numba built for another numpy
-            raise OutOfRangeError("engine", "numba", f"{_runnable_here('numba')} (numba "
-                                  f"does not import here: {err})") from err
-    return engine
-
-
-def _runnable_here(refused):
-    """The engines other than `refused` that can be asked for in this process, as a
-    valid range for the error that refuses it: 'auto' and 'numpy' always, 'c' where
-    the C extension imports, 'numba' where numba is installed."""
-    names = ["auto", "numpy"] + [e for e, ok in (
-        ("c", refused != "c" and c_engine() is not None),
-        ("numba", refused != "numba" and numba_installed())) if ok]
-    quoted = [f"'{e}'" for e in names]
-    return ", ".join(quoted[:-1]) + " or " + quoted[-1]
-
-
-def resolve_engine(engine):
-    """"numpy", "numba" or "c" for a new SliceEquations: "auto" is "c" where the C
-    extension imports (from the first solve: it loads in 1-3 ms); else numpy
-    until this process has taken AUTO_SWITCH_STEPS numpy steps, then numba where it
-    is installed and imports (a single solve never imports numba; a sweep, a batch or
-    a bearing repays it); where that import fails, numpy for the rest of the process,
-    said once by a RuntimeWarning. Any other value is checked as at construction
-    (check_engine): a roller whose `engine` was set afterwards, or that was pickled to
-    a process without numba or without the C extension (a Dask worker), is refused by
-    name, never solved with another engine or failed by a bare ImportError. Every
-    engine is thread-safe as the numpy one is (the compiled loops keep their scratch
-    per call; a roller is still one thread's, ProfiledRoller)."""
-    if engine == "auto":
-        if c_engine() is not None:
-            return "c"
-        if (_NUMPY_STEPS[0] < AUTO_SWITCH_STEPS or not numba_installed()
-                or _IMPORT_ERROR):
-            return "numpy"
-        try:
-            compiled()
-        except Exception as err:
-            import warnings
-            _IMPORT_ERROR.append(str(err))
-            warnings.warn(f"linecontact: the compiled roller kernels do not import "
-                          f"({err}); engine='auto' stays with numpy", RuntimeWarning,
-                          stacklevel=2)
-            return "numpy"
-        return "numba"
-    if (engine == "numpy" or (engine == "numba" and _COMPILED)
-            or (engine == "c" and c_engine() is not None)):
-        return engine      # (every regrid asks: once the compiled module imported,
-        #                     check_engine("numba") can only pass)
-    return check_engine(engine)
-
-
-def compiled():
-    """The compiled kernels (:mod:`linecontact.roller._compiled`), imported on first
-    use: importing numba costs a few hundred ms, which only repeated solves repay
-    (kept once imported: the import statement costs microseconds, at every step)."""
-    if not _COMPILED:
-        from . import _compiled
-        _COMPILED.append(_compiled)
-    return _COMPILED[0]
+        from .._engine import ckernels
+        if ckernels() is None:
+            _C_ENGINE.append(None)
+        else:
+            from . import _cengine
+            _C_ENGINE.append(_cengine)
+    return _C_ENGINE[0]
 
 
 def scaled_system(J, res, rhs, ns, qsc, R):
     """The bordered Newton step's system in scaled unknowns (q/qsc, c R) and rows
     (gap/qsc, curvature R): J's off-diagonal blocks scaled in place, and the
     right-hand sides B = (-res, rhs) scaled likewise (2 ns x 3). The numpy reference
-    of _compiled.scaled_system."""
+    of _cengine.scaled_system."""
     J[:ns, ns:] *= 1.0 / (qsc * R)
     J[ns:, :ns] *= qsc * R
     B = np.empty((2 * ns, 3))
@@ -320,8 +214,8 @@ def _fraction_to_boundary(qs, cs, dq, dc):
 #: largest, c R, d and the tilt's travel over the largest overlap) is at most
 #: NEWTON_C times :func:`newton_error` of the step. Measured over the 104 cases of
 #: tables/roller_accuracy.csv, 200 random cases of the range they cover and the ISO
-#: 16281 case of tools/benchmarks/bench_roller_speed (every full step of every solve
-#: against the converged state, python -m tools.benchmarks.bench_roller_newton): at
+#: 16281 case of the `roller` benchmark (tools/benchmarks/suite.py; every full step of
+#: every solve against the converged state, docs/history.md, "Profiled-roller solve"): at
 #: most 10.7 times (either engine, the same step at the rounding floor), so 100 leaves a margin
 #: of about ten; the returned state is then within the tolerance of the converged one.
 NEWTON_C = 100.0
@@ -374,8 +268,8 @@ def _drop_blocked(S, q, blocked, hit_q, qsc):
 #: linear solve on the grid of the last: over the 104 cases of
 #: tables/roller_accuracy.csv 2 sweeps took 1109 Newton steps, 3 took 996, 4 957, 5 913
 #: (a sweep costs about half a step: table CPU 2.11, 2.02, 2.09 s for 2, 3, 4; measured
-#: while the end refinement still restarted from the loads, tools/benchmarks/README.md,
-#: "Round 5"); the ISO 16281 case of tools/benchmarks/bench_roller_speed at a free tilt
+#: while the end refinement still restarted from the loads, docs/history.md,
+#: "Profiled-roller solve"); the ISO 16281 case of the `roller` benchmark at a free tilt
 #: takes 4 steps after 3 sweeps, 8 after 2.
 START_SWEEPS = 3
 #: The sweeps of a cold start but the last run on START_COARSE times fewer slices
@@ -384,8 +278,8 @@ START_SWEEPS = 3
 #: and dense solves cost about a quarter. Over the 104 cases of
 #: tables/roller_accuracy.csv 840 Newton steps instead of 827 and 2112 dense solves
 #: instead of 2160, CPU within 1-3 % (faster); the ISO 16281 case of
-#: tools/benchmarks/bench_roller_speed the same 6 and 4 steps, 3-7 % less CPU
-#: (tools/benchmarks/README.md, "Round 5, last step"). Results move within the
+#: the `roller` benchmark the same 6 and 4 steps, 3-7 % less CPU (docs/history.md,
+#: "Profiled-roller solve"). Results move within the
 #: Newton tolerance (2e-11 of the stiffness, 1e-12 elsewhere).
 START_COARSE = 2
 
@@ -450,10 +344,9 @@ class SliceEquations:
     def __init__(self, radius, estar, x_lo, x_hi, n, drop, grading=0.0, refine=0,
                  engine="numpy"):
         self.R = radius
-        # "numpy", "numba" or "c" (resolved by the owner, ProfiledRoller): who
-        # evaluates kernels() and linearised(); the numpy code is the reference and the
-        # fallback (the Newton step's arithmetic is compiled under both compiled
-        # engines, its dense solves and the cold start's under "numba" only)
+        # "numpy" or "c" (resolved by the owner, ProfiledRoller): who evaluates
+        # kernels(), linearised() and the Newton step's arithmetic around its dense
+        # solves; the numpy code is the reference and the fallback
         self.engine = engine
         self.E = estar
         self.lo, self.hi = x_lo, x_hi
@@ -495,8 +388,8 @@ class SliceEquations:
         """
         T = S if targets is None else targets
         if self.engine != "numpy":
-            # the compiled loops (numba: _compiled; C: _cengine), the same arithmetic
-            jit = compiled() if self.engine == "numba" else c_engine()
+            # the C loops (_cengine), the same arithmetic
+            jit = c_engine()
             far = self.n <= _N_FAR
             out = jit.kernels(S, T, b, self.span, self.dg, self._tnear, self._tfar,
                               self._logratio,
@@ -504,7 +397,6 @@ class SliceEquations:
                               _FAR_COEF, a_only)
             if out is not None:
                 return out
-        _NUMPY_STEPS[0] += 1
         if self.n > _N_FAR:
             out = self._kernels_table(S, b, T)
             return (out[0], None, None, None) if a_only else out
@@ -768,10 +660,6 @@ class SliceEquations:
         nb = 2 if zero_moment else 1
         target = force / (math.pi * self.E)
         sweeps = START_SWEEPS if width is None else 1
-        # the dense solves: compiled under the numba engine (_compiled.solve, the same
-        # LAPACK routine without numpy's call overhead)
-        jit = compiled() if s.engine == "numba" else None
-        solve = np.linalg.solve if jit is None else jit.solve
         n_full = s._geometry[0] if last_n is None else last_n
         n_coarse = coarse_slices(n_full)
         coarse = width is None and sweeps > 1 and n_coarse < n_full
@@ -810,18 +698,8 @@ class SliceEquations:
             else:
                 rhs[:ns] = theta * xs - s.P[S]
             keep = None
-            got = jit.start_solve(M, rhs, ns, nb) if jit is not None else None
-            if got is not None:
-                # the loop below in one compiled call (_compiled.start_solve: the same
-                # submatrices and solves)
-                z, kept, k = got
-                if k == 0:
-                    return None
-                if k < ns:
-                    S, b0, keep, ns = S[kept], b0[kept], kept, k
-                qs = z[:ns]
-            for _ in range(0 if got is not None else s.n):
-                z = solve(M, rhs)
+            for _ in range(s.n):
+                z = np.linalg.solve(M, rhs)
                 qs = z[:ns]
                 if (qs > 0).all():
                     break
@@ -851,7 +729,7 @@ class SliceEquations:
         c = np.full(s.n, 1.0 / (4 * R))
         if Dk is not None:
             # the curvature equations D c = -1/R with the same frozen widths
-            cs = solve(Dk, np.full(len(S), -1.0 / R))
+            cs = np.linalg.solve(Dk, np.full(len(S), -1.0 / R))
             if (cs > 0).all():
                 c[S] = cs
         return s, S, q, c, d_new, th_new
@@ -869,8 +747,7 @@ class SliceEquations:
         if self.engine != "numpy":
             spos = S if len(targets) == self.n else np.searchsorted(targets, S)
             far = self.n <= _N_FAR
-            jit = compiled() if self.engine == "numba" else c_engine()
-            out = jit.linearised(
+            out = c_engine().linearised(
                 S, targets, spos, q, c, self._over, self.R, self.span, self.x, self.m,
                 self.dg, slope, theta, self.dlo, self.dhi, self._tnear, self._tfar,
                 self._logratio, _far_geometry(*self._geometry) if far else None,
@@ -973,21 +850,20 @@ class SliceEquations:
             qsc = float(qs.max())
             # scaled unknowns (q/qsc, c R) and rows (gap/qsc, curvature R): only the
             # off-diagonal blocks change
-            # (the C engine: the same helpers in C, numpy's dense solve between them)
-            jit = (compiled() if s.engine == "numba" else
-                   c_engine() if s.engine == "c" else None)
+            # (the C engine: the same lines in C, numpy's dense solve between them)
+            jit = c_engine() if s.engine == "c" else None
             fused = status = None
             if jit is not None:
                 # the scaling, dense solve, sums, step, mask and damped update below in
-                # one compiled call (_compiled.newton_step: the same arithmetic); it
-                # stops where slices leave (status 1) or Cramer's rule fails (2), and
-                # the lines below go on from there
+                # one call (_cengine.newton_step: the same arithmetic); it stops where
+                # slices leave (status 1) or Cramer's rule fails (2), and the lines
+                # below go on from there
                 fused = jit.newton_step(
                     J, res, rhs, grid, ns, qsc, R, s.w, s.x, S, qs, cs,
                     0.0 if force is None else force / piE,
                     (force is not None) + 2 * bool(zero_moment), q, c, over)
                 B = fused[1]
-                if fused[0] is None:         # numba refused the system: numpy's solve
+                if fused[0] is None:         # a singular system: numpy's solve raises
                     fused = None
             else:
                 B = scaled_system(J, res, rhs, ns, qsc, R)
@@ -1004,7 +880,7 @@ class SliceEquations:
                 else:
                     status = None
                     if jit is not None:
-                        # the dense solve and the sums in one compiled call
+                        # the dense solve, then the sums in one C call
                         z, wq, wxq, Wz = jit.solve_sums(J, B, ns, qsc, R, s.w, s.x, S, qs)
                     else:
                         z = np.linalg.solve(J, B)
@@ -1020,7 +896,7 @@ class SliceEquations:
                     lin = Wz[:, 0]
                     if force is not None and zero_moment:
                         r = (force / piE - wq - lin[0], -wxq - lin[1])
-                        # (the compiled engine: the 2 x 2 system by Cramer's rule,
+                        # (the C engine: the 2 x 2 system by Cramer's rule,
                         # np.linalg.solve's call costs more than its arithmetic)
                         step = _cramer(K, r) if jit is not None else None
                         if step is None:
@@ -1060,10 +936,10 @@ class SliceEquations:
                 ns = len(S)
                 qs, cs = q[S], c[S]
             if status == 0:
-                # (done in the compiled step)
+                # (done in the fused step)
                 alpha, dmax, dqmax, dcmax = (float(v) for v in upd)
             elif jit is not None:
-                # the same update in one compiled call (_compiled.step_update)
+                # the same update in one C call (_cengine.step_update)
                 alpha, hit_q, dmax, dqmax, dcmax = jit.step_update(
                     q, c, S, qs, cs, dq, dc, over, s.x, step[0], step[1])
             else:

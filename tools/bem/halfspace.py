@@ -36,7 +36,7 @@ def default_workers(backend="scipy"):
 
     FFTW's multi-threaded plans were measured far slower on this 2-core machine
     whenever anything else ran (128 x 128 quarter: plan 38 s and 8 ms per call with
-    two threads against 0.5 s and 0.9 ms with one; tools/benchmarks/README.md), and
+    two threads against 0.5 s and 0.9 ms with one; docs/history.md, "3D BEM"), and
     the studies run one process per core anyway.
     """
     if backend == "pyfftw":
@@ -227,7 +227,7 @@ class SymmetricOperator:
         conjugate-gradient preconditioner (tools.bem.solver.bounded_cg). Divisors are
         kept at least 1e-3 of the largest. (The padded embedding, the operator's own
         transforms with the spectrum inverted, needed about 7 % fewer iterations at
-        4 times the cost per application: tools/benchmarks/README.md.)"""
+        4 times the cost per application: docs/history.md, "3D BEM".)"""
         if self.backend == "pyfftw":
             self._q_in[...] = g
             self._q_dct2()
@@ -243,7 +243,7 @@ class SymmetricOperator:
         """Most cells for which :meth:`add_columns` costs less than one operator
         application: a column is about five passes over the quarter, a transform pair
         grows like its log (19-23 times a column on 256 x 64 to 256 x 256 quarters,
-        tools/benchmarks/bench_add_columns.py); half that, for margin."""
+        docs/history.md, "3D BEM"); half that, for margin."""
         mx, my = self.shape
         return max(2, int(np.log2(mx * my)) // 2)
 

@@ -3,11 +3,12 @@
     OPENBLAS_NUM_THREADS=1 nice -n 10 python -m tools.benchmarks.bench_corner_sums
 
 The corners are those of real slices (linecontact.stresses._corners_many of the ISO
-16281 roller of bench_roller_speed.py at 4200 N and 2 mrad tilt, its loaded slices);
+16281 roller of the `roller` benchmark, tools/benchmarks/suite.py, at 4200 N and 2 mrad
+tilt, its loaded slices);
 the points n = 3, 16, 32, 48 across each slice at depths 0.3-1.2 b (where the 3D
 correction's search evaluates them). Each evaluation is timed (time.process_time, the
 best of ``--repeat`` of a loop of calls, C and numpy in turn) for the C extension
-(linecontact._cstresses.love_sums, through stresses._love_c) and numpy's
+(linecontact._ckernels.love_sums, through stresses._love_c) and numpy's
 stresses._love_weighted on the same corners and points, and reported in ns per corner
 and point (CPU / (corners x points)). Writes tools/benchmarks/results/corner_sums.txt.
 """
@@ -24,7 +25,7 @@ import numpy as np
 import linecontact
 from linecontact import stresses as st
 from linecontact.roller import ProfiledRoller
-from tools.benchmarks.bench_roller_speed import D, ESTAR, FORCE, L, TILT
+from tools.benchmarks.suite import D, ESTAR, FORCE, L, TILT
 from tools.studies.roller_study import make_profile
 
 REPO = Path(__file__).resolve().parents[2]
@@ -47,7 +48,7 @@ def main(argv=None):
                     default=REPO / "tools" / "benchmarks" / "results" / "corner_sums.txt")
     a = ap.parse_args(argv)
     if st._cstresses is None:
-        raise SystemExit("the C extension linecontact._cstresses is not built here")
+        raise SystemExit("the C extension linecontact._ckernels is not built or current here")
     model = ProfiledRoller(D / 2, L, ESTAR, make_profile("iso16281", L, D / 2, ESTAR))
     sol = model.at_force(FORCE, tilt=TILT)
     x, b, q = (np.asarray(v) for v in (sol.x, sol.half_width, sol.q))

@@ -17,7 +17,7 @@ What it measures:
    study's two grids (``--bem-cases`` cases, one FFT thread, force control with Newton on
    the approach).
 
-Prints a report and writes it to tools/benchmarks/results/roller.txt.
+Prints a report and writes it to tools/benchmarks/results/roller_accuracy.txt.
 """
 from __future__ import annotations
 
@@ -186,7 +186,7 @@ def main(argv=None):
     parser.add_argument("--bem-cases", type=int, default=4,
                         help="cases whose BEM solve is timed (default 4)")
     parser.add_argument("--out", type=Path,
-                        default=REPO / "tools" / "benchmarks" / "results" / "roller.txt")
+                        default=REPO / "tools" / "benchmarks" / "results" / "roller_accuracy.txt")
     args = parser.parse_args(argv)
     from linecontact.tables import read_table
     table = read_table(args.table.stem, directory=args.table.parent)

@@ -24,7 +24,7 @@ given tilt != 0, moment at tilt 0 or free over F L/2, zero-moment tilt) and edge
 edge loaded (the runtime's "not converged"); the median and total CPU of a solve, the
 median Newton steps of the last solve (``iterations``) and the median and largest
 slice count used (refined solves use more); and, on the table's speed case (ISO 16281,
-L 14 mm, 4200 N, 2 mrad: tools/benchmarks/bench_roller_speed.py), its CPU.
+L 14 mm, 4200 N, 2 mrad: the `roller` benchmark of tools/benchmarks/suite.py), its CPU.
 
 ``--exact`` adds, per variant (n and grading), a circular crown against exact Hertz
 and a straight roller against the universal curve (``exact_checks``).
@@ -254,7 +254,7 @@ def main(argv=None):
 
     from linecontact.tables import read_table
     from tools.benchmarks.bench_roller import _tasks_from_table
-    from tools.benchmarks.bench_roller_speed import FORCE, L, TILT
+    from tools.benchmarks.suite import FORCE, L, TILT
 
     table = read_table("roller_accuracy")
     tasks = _tasks_from_table(table)

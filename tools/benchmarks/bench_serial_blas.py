@@ -7,7 +7,7 @@ with the load average of the machine printed beside them.
     python -m tools.benchmarks.bench_serial_blas [--repeat 15]
 
 Run it WITHOUT ``OPENBLAS_NUM_THREADS=1`` (that would make both the same). The case is
-bench_roller_speed's: the ISO 16281 profile, D 10 mm, L 14 mm, 4200 N, tilt 2 mrad.
+the `roller` benchmark's (tools/benchmarks/suite.py): the ISO 16281 profile, D 10 mm, L 14 mm, 4200 N, tilt 2 mrad.
 The gap is a matter of the machine's load: a multithreaded BLAS waits for its threads
 to be scheduled, which on busy cores costs milliseconds per solve.
 """

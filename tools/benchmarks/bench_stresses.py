@@ -1,46 +1,26 @@
-"""Issue 17 targets: the runtime slice stresses against the 3D field, and their cost.
+"""Issue 17's accuracy target: the runtime slice stresses against the 3D field.
 
-    python -m tools.benchmarks.bench_stresses            # a few minutes on 2 cores
+    python -m tools.benchmarks.bench_stresses            # seconds: it reads the table
     python -m tools.benchmarks.bench_stresses --grid-case A-circular_crown-q800-t2 \
-        --grid-case A-lundberg-q100-t2                   # adds the 3D grid check
+        --grid-case A-lundberg-q100-t2                   # adds the 3D grid check (minutes)
 
-What it measures:
+What it measures, from tables/stress_accuracy.csv (tools/studies/stress_study.py: the
+3D field of tools/bem/stress.py below the 3D BEM pressure and traction, finer of two
+nested grids, against linecontact.stresses.roller_stresses): the largest |rt/3D - 1|
+of each measure where the contact stays off the roller ends (target 1 %), without
+and with friction, and where it is edge loaded (stated), for the 3D-corrected runtime
+(the default) and the strips alone, with the 3D field's own grid change;
+``--grid-case``: the 3D reference of a study case on three nested grids.
 
-1. accuracy, from tables/stress_accuracy.csv (tools/studies/stress_study.py: the 3D
-   field of tools/bem/stress.py below the 3D BEM pressure and traction, finer of two
-   nested grids, against linecontact.stresses.roller_stresses): the largest
-   |rt/3D - 1| of each measure where the contact stays off the roller ends (target
-   1 %), without and with friction, and where it is edge loaded (stated), for the
-   3D-corrected runtime (the default) and the strips alone, with the 3D field's own
-   grid change;
-2. time: per study roller (each profile, three loads, two tilts), the CPU time
-   (time.process_time) of the runtime contact solve (ProfiledRoller.at_force at its
-   default slices, a fresh model built beforehand: no warm start from a previous solve) and
-   of its stresses (roller_stresses with the 3D correction, the default), median of
-   ``--repeat``; the stresses' first call (the cached strip maxima for a new (mu, nu),
-   a grid search and ten zooms) is timed apart. Target: the stresses within
-   twice the contact solve's time.
+The stresses' cost against the contact solve is the ``stresses`` benchmark of the
+runner (``python -m tools.benchmarks stresses``, tools/benchmarks/results/stresses.txt).
 
-``--engine`` picks the contact solve's engine (``ProfiledRoller(engine=...)``, default
-"auto": "c" where the C extension is built, else numpy); the stresses' corner sums are
-C where the extension linecontact._cstresses is built, else numpy (the report says
-which).
-
-With ``--against DIR`` (another checkout) the timing also runs that checkout's
-``linecontact/stresses.py`` on the same solutions, in turn with this one's (loaded as a
-module of this checkout's package, so only the stresses module differs), and reports
-the CPU ratio this/other per roller (median of ``--repeat`` each): a paired comparison
-on a shared machine, where absolute times drift with the load; and the other module's
-stresses/solve ratio on the same solves (its "before"); and whether the two modules give
-the same worst values (largest relative difference, how many on another slice).
-
-Prints a report and writes it to tools/benchmarks/results/stresses.txt.
+Prints a report and writes it to tools/benchmarks/results/stresses_accuracy.txt.
 """
 from __future__ import annotations
 
 import argparse
 import platform
-import statistics
 import sys
 import time
 from pathlib import Path
@@ -91,115 +71,6 @@ def accuracy(lines):
                     for m in MEASURES))
 
 
-def _other_stresses(directory):
-    """DIR/linecontact/stresses.py as a module of this checkout's package."""
-    import importlib.util
-    path = Path(directory).resolve() / "linecontact" / "stresses.py"
-    if not path.is_file():
-        raise SystemExit(f"--against {directory}: no {path}")
-    spec = importlib.util.spec_from_file_location("linecontact._against_stresses", path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def timing(lines, repeat, against=None, engine="auto"):
-    from linecontact.roller import ProfiledRoller
-    from linecontact.stresses import roller_stresses, strip_maxima
-    other = _other_stresses(against) if against else None
-    if other is not None:
-        other.strip_maxima(0.0, 0.3)
-    paired = []
-    # largest relative difference of a worst value, checks, on another slice, largest
-    # shift of (y, z) on the same slice [m]
-    agree = [0.0, 0, 0, 0.0, 0]     # and of those the mirror slice, untilted
-    from tools.studies import stress_study as ss
-    from tools.studies.roller_study import make_profile
-
-    t0 = time.process_time()
-    # the first call for a (mu, nu) not asked before: the strip maxima are computed
-    c0 = time.process_time()
-    strip_maxima(0.05, 0.31)
-    first = time.process_time() - c0
-    strip_maxima(0.0, 0.3)   # the study's (mu, nu), cached before the timed loop
-    ratios, solves, stresses, keys, others = [], [], [], [], []
-    tasks = ss.study_tasks()
-    if engine == "numba":
-        # the compiled kernels' import and cache load (once per process) before timing
-        t = tasks[0]
-        ProfiledRoller(t["radius"], t["length"], t["estar"],
-                       make_profile(t["profile"], t["length"], t["radius"], t["estar"]),
-                       engine=engine).at_force(t["force"], tilt=t["tilt"])
-    for task in tasks:
-        prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
-        ts, tt, to = [], [], []
-        for _ in range(repeat):
-            # a fresh model each time: a model keeps its last solution as the next
-            # solve's warm start, which makes a repeated solve of the same case a
-            # fraction of a user's one solve
-            model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
-                                   engine=engine)
-            c0 = time.process_time()
-            sol = model.at_force(task["force"], tilt=task["tilt"])
-            c1 = time.process_time()
-            mine = roller_stresses(sol, 0.0, 0.3, roller=model)   # 3D-corrected (default)
-            c2 = time.process_time()
-            ts.append(c1 - c0)
-            tt.append(c2 - c1)
-            if other is not None:
-                c3 = time.process_time()
-                theirs = other.roller_stresses(sol, 0.0, 0.3, roller=model)
-                to.append(time.process_time() - c3)
-                for name in MEASURES:               # the same worst values, where
-                    u, v = mine.worst[name], theirs.worst[name]
-                    agree[0] = max(agree[0], abs(u["value"] - v["value"]) / abs(v["value"]))
-                    agree[1] += 1
-                    agree[2] += u["slice"] != v["slice"]
-                    agree[4] += (u["slice"] != v["slice"] and not task["tilt"]
-                                 and u["slice"] + v["slice"] == len(sol.x) - 1)
-                    if u["slice"] == v["slice"]:
-                        agree[3] = max(agree[3], abs(u["y"] - v["y"]), abs(u["z"] - v["z"]))
-        if to:
-            paired.append(statistics.median(tt) / statistics.median(to))
-            others.append(statistics.median(to) / statistics.median(ts))
-            to.clear()
-        if ts:
-            solves.append(statistics.median(ts))
-            stresses.append(statistics.median(tt))
-            ratios.append(stresses[-1] / solves[-1])
-            keys.append(task["key"])
-    k = int(np.argmax(ratios))
-    lines.append(f"largest ratio: {keys[k]} (solve {solves[k] * 1e3:.1f} ms, stresses "
-                 f"{stresses[k] * 1e3:.1f} ms)")
-    from linecontact import stresses as _st
-    lines.append(f"engine {engine!r}: the contact solve's, as ProfiledRoller(engine=...); the "
-                 f"stresses' corner sums: {_st._CORNERS[0]} (C where the extension "
-                 "linecontact._cstresses is built, else numpy)")
-    lines.append(f"time (CPU, median of {repeat} per case, {len(ratios)} cases): contact "
-                 f"solve median {statistics.median(solves) * 1e3:.1f} ms; stresses median "
-                 f"{statistics.median(stresses) * 1e3:.3f} ms; ratio stresses/solve median "
-                 f"{statistics.median(ratios):.4f}, largest {max(ratios):.4f} (target <= 2: "
-                 f"{'met' if max(ratios) <= 2 else 'NOT met'})")
-    if paired:
-        lines.append(f"paired against the stresses module of {Path(against).resolve().name}/ "
-                     f"(the same solutions, "
-                     f"in turn): CPU of the stresses this/other, median {statistics.median(paired):.3f}, "
-                     f"range {min(paired):.3f}-{max(paired):.3f} over {len(paired)} rollers; "
-                     f"its stresses/solve ratio median {statistics.median(others):.4f}, largest "
-                     f"{max(others):.4f} ({keys[int(np.argmax(others))]})")
-        lines.append(f"worst values against {Path(against).resolve().name}/ (mu 0, nu 0.3, "
-                     f"{agree[1]} checks: 3 measures x {repeat} solves x {len(paired)} "
-                     f"rollers): largest relative difference {agree[0]:.2g}; "
-                     f"{agree[2]} on another slice ({agree[4]} of them the mirror slice of "
-                     f"an untilted roller: a tie decided by rounding), (y, z) on the same "
-                     f"slice within "
-                     f"{agree[3]:.2g} m")
-    lines.append(f"first call of a new (mu, nu) (strip maxima computed and cached): "
-                 f"{first * 1e3:.0f} ms CPU, once per process")
-    lines.append(f"(timing section: {time.process_time() - t0:.0f} s CPU)")
-
-
 def grid_convergence(lines, keys, n_xs):
     """The 3D reference of the study's cases `keys` on the nested grids n_x x n_x/2 and
     2 n_x x n_x (tools.studies.stress_study.bem_case) for each n_x: the maxima of the
@@ -223,22 +94,14 @@ def grid_convergence(lines, keys, n_xs):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--out", type=Path, default=REPO / "tools" / "benchmarks" / "results"
-                    / "stresses.txt")
+                    / "stresses_accuracy.txt")
     ap.add_argument("--grid-case", action="append", default=[],
                     help="a study case key (e.g. A-circular_crown-q800-t2) whose 3D "
                          "reference is solved on nested grids (--grid-n-x); repeatable")
     ap.add_argument("--grid-n-x", default="64,128",
                     help="coarse cells along x of each nested pair (default 64,128: "
                          "64 x 32, 128 x 64 and 256 x 128 cells)")
-    ap.add_argument("--skip-timing", action="store_true")
-    ap.add_argument("--engine", default="auto", choices=("auto", "numpy", "numba", "c"),
-                    help="the contact solve's engine (ProfiledRoller(engine=...); default "
-                         "auto, numpy for the few solves of this benchmark)")
-    ap.add_argument("--against", default=None, metavar="DIR",
-                    help="another checkout: time its linecontact/stresses.py in turn with "
-                         "this one's on the same solutions")
     args = ap.parse_args(argv)
     import linecontact
     lines = [f"bench_stresses: linecontact {linecontact.__version__}, Python "
@@ -249,9 +112,6 @@ def main(argv=None):
         lines.append("")
         grid_convergence(lines, args.grid_case,
                          [int(v) for v in args.grid_n_x.split(",")])
-    if not args.skip_timing:
-        lines.append("")
-        timing(lines, args.repeat, args.against, args.engine)
     text = "\n".join(lines) + "\n"
     print(text)
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -36,7 +36,7 @@ def main(argv=None):
                     / "stresses_c_agreement.txt")
     a = ap.parse_args(argv)
     if st._cstresses is None:
-        raise SystemExit("the C extension linecontact._cstresses is not built here")
+        raise SystemExit("the C extension linecontact._ckernels is not built or current here")
     rng = np.random.default_rng(a.seed)
     worst, where, other, mirror, checks = 0.0, "", 0, 0, 0
     saved = st._CORNERS[0]

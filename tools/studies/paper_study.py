@@ -39,8 +39,8 @@ Writes into ``--out`` (default ``tables/``):
 Run time: the full 512 x 512 study is 29 sweeps of 100 contact + 100 punch solves,
 14 000 - 23 000 operator applications per L/R: 222 s of CPU in all and 3.6 min wall
 with 2 worker processes on the shared 2-core machine under a load of 2-5
-(tools/benchmarks/results/paper_study.txt, ``python -m
-tools.benchmarks.bench_paper_study``; the shipped tables' own run, with older code,
+(tools/benchmarks/results/paper_study.txt, ``python -m tools.build_tables paper
+--out TMP``; the shipped tables' own run, with older code,
 took 25.6 min: tables/README.md; each run's timings are in its table header). Each
 finished L/R is saved in the checkpoint folder (default OUT/partial_paper/) until the
 tables are written; ``--resume`` picks them up after an interruption. One L/R on a

@@ -152,6 +152,13 @@ def test_options_and_table_meta():
                       "--no-progress", "--checkpoint", "/tmp/x", "--connect-timeout", "7"])
     assert (a.scheduler, a.workers, a.resume, a.no_progress, a.checkpoint,
             a.connect_timeout) == ("tcp://h:8786", 3, True, True, Path("/tmp/x"), 7.0)
+    # a zero or negative connect timeout is refused, not replaced by the default
+    from tools.studies.runner import StudyError
+    for bad in (0, -1.0):
+        with pytest.raises(StudyError, match="--connect-timeout .*> 0") as err:
+            run_study(square, [dict(key="a", x=1)], scheduler="tcp://127.0.0.1:1",
+                      connect_timeout=bad, progress=False)
+        assert err.value.exit_code == 2
     m = table_meta("python -m tools.build_tables demo", title="T", version="1",
                    source="S")
     assert list(m) == ["title", "source", "generated_by", "date", "version"]

@@ -429,29 +429,32 @@ def _probe_scheduler(scheduler, timeout):
                                           f"and the port open?") from None
     if scheme != "tcp":
         return                      # the handshake needs the client's TLS/UCX setup
-    address = f"tcp://{host}:{port}"
+    address = "tcp://" + scheduler.strip().rpartition("://")[2]   # [::1]:P kept as is
     pool = ThreadPoolExecutor(1)    # its own event loop: safe under a running one
     try:
         reply = pool.submit(asyncio.run, asyncio.wait_for(
             _identify(address, timeout), timeout)).result(timeout + 5)
+        why = ""
     except (FutureTimeout, asyncio.TimeoutError, TimeoutError):
-        reply = None
-    except Exception:               # noqa: BLE001 - a non-dask peer breaks the
-        reply = None                # handshake in many ways; all mean the same here
+        reply, why = None, f"no reply to dask's handshake within {timeout:g} s"
+    except Exception as exc:        # noqa: BLE001 - a non-dask peer breaks the
+        reply = None                # handshake in many ways; each is named
+        why = f"dask's handshake failed: {type(exc).__name__}: {exc}"
     finally:
         pool.shutdown(wait=False)
     kind = reply.get("type") if isinstance(reply, dict) else None
     if kind != "Scheduler":
         what = (f"is a dask {kind}, not the scheduler" if kind else
-                f"does not answer as a dask scheduler (no reply to dask's handshake "
-                f"within {timeout:g} s: another kind of server, a web port?)")
+                f"does not answer as a dask scheduler ({why or 'an unknown reply'}: "
+                f"another kind of server, a web port?)")
         raise _bad_address(scheduler, f"{host}:{port} {what}; give the address that "
                                       f"'dask scheduler' prints as 'Scheduler at:'")
 
 
 def _client(scheduler, workers, connect_timeout=None):
     from dask.distributed import Client, LocalCluster
-    timeout = float(connect_timeout or DEFAULT_CONNECT_TIMEOUT)
+    timeout = float(DEFAULT_CONNECT_TIMEOUT if connect_timeout is None
+                    else connect_timeout)
     if scheduler is not None:
         _probe_scheduler(scheduler, timeout)
         try:
@@ -463,8 +466,9 @@ def _client(scheduler, workers, connect_timeout=None):
     # dask's nannies set MALLOC_TRIM_THRESHOLD_=65536 in the workers' environment
     # (config distributed.nanny.pre-spawn-environ). Setting it switches off glibc's
     # dynamic mmap threshold, so every array above 128 KiB (a 512 x 512 grid is
-    # 2 MiB) is mmap'ed and unmapped again: 1.7 million page faults and ~3.5 s of
-    # system time per sweep of the paper study. None leaves glibc's default (a
+    # 2 MiB) is mmap'ed and unmapped again: 1.76 million against 64 000 page faults,
+    # 13 % more CPU, for one L/R of the paper study at 512 x 512
+    # (tools/benchmarks/results/paper_study.txt). None leaves glibc's default (a
     # value the user exported is still passed on: dask prefers os.environ).
     with dask.config.set({"distributed.nanny.pre-spawn-environ."
                           "MALLOC_TRIM_THRESHOLD_": None}):
@@ -539,6 +543,9 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
                          "(--checkpoint DIR); none was given")
     if scheduler is not None:
         check_scheduler_address(scheduler)        # a typo fails before any work
+    if connect_timeout is not None and not connect_timeout > 0:
+        raise StudyError(f"--connect-timeout {connect_timeout!r}: give a time in "
+                         f"seconds > 0", exit_code=2)
     done = {}
     if checkpoint is not None:
         Path(checkpoint).mkdir(parents=True, exist_ok=True)

@@ -595,8 +595,9 @@ _CLIENT_LOGGERS = ("distributed.client", "distributed.comm", "distributed.core",
 
 class _Quiet:
     """Drop every record of the loggers `names` inside the block (a filter: distributed
-    resets their levels when a client starts); the filter goes after the block,
-    unless the block ends in a StudyError."""
+    resets their levels when a client starts). After a lost scheduler the client's
+    reconnection task logs its traceback when ``client.close()`` cancels it, which
+    the runner does inside the block."""
 
     def __init__(self, names, active=True):
         import logging
@@ -612,11 +613,8 @@ class _Quiet:
         return self
 
     def __exit__(self, exc_type, exc, tb):
-        # after a lost scheduler, the client's reconnection task is cancelled later
-        # and logs its traceback then: stay quiet for the rest of this process
-        if exc_type is None or not issubclass(exc_type, StudyError):
-            for lg in self.loggers:
-                lg.removeFilter(self.filter)
+        for lg in self.loggers:
+            lg.removeFilter(self.filter)
         return False
 
 

@@ -96,11 +96,12 @@ from .lubrication import (DEFAULT_FILM_FORMULA, FILM_FORMULAS, cage_speed,
                           film_ratio, minimum_film_dowson_higginson,
                           minimum_film_pan_hamrock, minimum_film_thickness,
                           rated_viscosity, viscosity_ratio)
-from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
-                     load_zone_integral)
+from .radial import (GRID_POINTS, MAX_SLICES, PROFILED_POINTS, SLICE_COUNT,
+                     BearingSolution, RadialRollerBearing, load_zone_integral)
 from .ratings import (A_ISO_CAP, KAPPA_RANGE, PERMISSIBLE_PRESSURE, RELIABILITY_FACTORS,
-                      ReferenceLife, basic_rating_life, dynamic_load_rating,
+                      ROLLER_COUNT, ReferenceLife, basic_rating_life, dynamic_load_rating,
                       fatigue_load_limit, lamina_load_ratings, life_modification_factor,
+                      max_rollers,
                       modified_rating_life, modified_reference_rating_life,
                       pressure_safety_factor, reference_equivalent_load,
                       reference_rating_life, reliability_factor, roller_damage_shares,
@@ -118,6 +119,10 @@ __all__ = [
     "PROFILED_POINTS",
     # ratings (ratings.py): ISO 281, ISO 16281, ISO 76, life modification
     "dynamic_load_rating",
+    "max_rollers",
+    "ROLLER_COUNT",
+    "SLICE_COUNT",
+    "MAX_SLICES",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",

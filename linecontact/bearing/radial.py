@@ -16,7 +16,7 @@ from ..profiles import TILT_RANGE
 from ..raceway import (Raceways, _contacts_solution, effective_radii,
                        roller_between_raceways)
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
 from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
@@ -28,12 +28,24 @@ __all__ = [
     "load_zone_integral",
     "GRID_POINTS",
     "PROFILED_POINTS",
+    "MAX_SLICES",
+    "SLICE_COUNT",
 ]
 
 #: Points of the roller-law grid of a straight roller under a law [-].
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
+#: Most slices per roller of a bearing [-]. The bearing solves each contact at
+#: PROFILED_POINTS depths, so its cost grows with the slice solver's (about n^3):
+#: measured for a 14-roller ISO-profiled bearing (d_m 65 mm, D 11 mm, L 12 mm) at
+#: 10 kN on 2 shared CPU cores: 50 slices 0.3-0.5 s, 100 0.4-0.6 s, 200 2-3.5 s, 400
+#: 24-44 s (and numpy's overflow warning from the solver's matmul), 1000 beyond 5 min;
+#: at 200 the displacement is within 5e-7 and the most loaded roller within 1.3e-6 of
+#: 400 slices' (50: 6.5e-5 and 1.4e-5), so more slices buy nothing measurable.
+MAX_SLICES = 200
+#: The slice counts a bearing accepts (an integer in it) [-].
+SLICE_COUNT = Interval("n_slices", 10, MAX_SLICES, False, False, "")
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
 #: Upper bound of any roller load in units of F_r for Z >= 3: one roller at
@@ -409,7 +421,8 @@ class RadialRollerBearing:
     Parameters
     ----------
     rollers : int
-        Number of rollers Z, 3 <= Z [-].
+        Number of rollers Z, 3 <= Z, that fit on the pitch circle without overlapping
+        (d_m sin(pi/Z) > D; :func:`~linecontact.bearing.ratings.max_rollers`) [-].
     pitch_diameter : float
         Pitch diameter d_m > D [m].
     roller_diameter : float
@@ -430,7 +443,8 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the slice model, 10 <= n <= 1000 (ISO slicing: n >= 30) [-]
+        Slices of the slice model, an integer 10 <= n <= MAX_SLICES = 200 (ISO
+        slicing: n >= 30; converged long before, see MAX_SLICES) [-]
         (default None: the model's, as in every other door,
         :func:`linecontact.roller.solvers.default_n_slices`: 50 coupled slices, 30 ISO
         slicing; the laminae of the rating life of a sliced roller are as many).
@@ -518,7 +532,8 @@ class RadialRollerBearing:
 
     Notes
     -----
-    Valid for Z >= 3, 0 < D < d_m, |P_d| < D, within the contact law's range (its
+    Valid for 3 <= Z <= max_rollers(d_m, D), 0 < D < d_m, |P_d| < D, within the
+    contact law's range (its
     depth and L/R ranges; the universal curve to d <= 0.15 R). Centrifugal forces,
     ring deformation and roller skew are not modelled. The fits take the rings, the
     shaft and the housing of one material, E = 2 E* (1 - nu^2) from `estar` and
@@ -564,7 +579,7 @@ class RadialRollerBearing:
         self.pitch_diameter = float(check_positive("pitch_diameter", pitch_diameter, "m"))
         self.roller_diameter = float(check_positive("roller_diameter", roller_diameter,
                                                     "m"))
-        _fits(self.pitch_diameter, self.roller_diameter)
+        _fits(self.pitch_diameter, self.roller_diameter, self.rollers)
         self.length = float(check_positive("length", length, "m"))
         D = self.roller_diameter
         self.clearance = float(check_interval(
@@ -572,7 +587,13 @@ class RadialRollerBearing:
             hint="the clearance must be smaller than the roller diameter"))
         self.estar = float(check_positive("estar", estar, "Pa"))
         if n_slices is not None:
-            n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
+            n = check_interval("n_slices", n_slices, 10, MAX_SLICES,
+                               hint="more slices change no result measurably and cost "
+                                    "minutes (MAX_SLICES)").item()
+            if n != int(n):
+                raise OutOfRangeError("n_slices", n, f"[10, {MAX_SLICES}], an integer",
+                                      hint="a slice count is never rounded")
+            n_slices = int(n)
         self.azimuth0 = float(check_interval("azimuth0", azimuth0, -math.pi, math.pi,
                                              unit="rad"))
         if rotating not in ("inner", "outer"):
@@ -1017,8 +1038,9 @@ class RadialRollerBearing:
 
         Parameters
         ----------
-        radial_load : float
-            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller).
+        radial_load : float or array_like
+            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller); an
+            array gives an object array of solutions of its shape, one per load.
         moment : float, optional
             Tilting moment M on the inner ring about the axis normal to the load plane,
             |M| < inf [N m]: the ring tilt theta is solved with delta_r (2 DOF).
@@ -1038,7 +1060,7 @@ class RadialRollerBearing:
 
         Returns
         -------
-        BearingSolution
+        BearingSolution or ndarray of BearingSolution
 
         Raises
         ------
@@ -1046,7 +1068,9 @@ class RadialRollerBearing:
             Both `moment` and `misalignment`; either with a straight-cylinder law named
             as the model (a law has no tilt: use ``model="profiled-roller"``).
         OutOfRangeError
-            A load that lifts every roller, or one beyond the contact law's range.
+            A load that lifts every roller, or one beyond the contact law's range; a
+            preload (clearance < 0) that alone presses the rollers beyond it, named as
+            the clearance.
 
         Notes
         -----
@@ -1065,6 +1089,35 @@ class RadialRollerBearing:
         >>> f"{s.roller_loads @ np.cos(s.azimuth) / 10e3:.12f}"
         '1.000000000000'
         """
+        if not isinstance(radial_load, str) and np.ndim(radial_load) > 0:
+            loads = check_interval(
+                "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
+                unit="N", hint="a radial load of zero or less lifts every roller")
+            out = np.empty(np.shape(loads), dtype=object)
+            for idx, f in np.ndenumerate(loads):
+                out[idx] = self.solve(float(f), moment, misalignment, speed=speed,
+                                      axial_load=axial_load)
+            return out
+        try:
+            return self._solve(radial_load, moment, misalignment, speed, axial_load)
+        except OutOfRangeError as exc:
+            top = getattr(exc, "top", None)
+            if top is None or not -self.clearance / 2 >= top:
+                raise
+            given = getattr(self, "internal_clearance", self.clearance)
+            fitted = ("" if given == self.clearance else
+                      f" (the operating clearance after the fits: {self.clearance:.3g} m)")
+            raise OutOfRangeError(
+                "clearance", given,
+                f"(-{2 * top:.3g}, {self.roller_diameter:.3g}) m at F_r = "
+                f"{float(radial_load):.6g} N{fitted}", unit="m",
+                hint=f"a preload presses every roller by -P_d/2 = "
+                     f"{-self.clearance / 2 * 1e6:.4g} um before any load, beyond the "
+                     f"roller's range at this load ({top * 1e6:.4g} um); preloads are "
+                     "a few micrometres") from None
+
+    def _solve(self, radial_load, moment, misalignment, speed, axial_load):
+        """:meth:`solve` of one radial load."""
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))

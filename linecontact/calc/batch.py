@@ -342,11 +342,12 @@ def run_batch(args, argv, specs, options, table=CALC):
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
-    # a row longer than the header keeps its extra cells under unnamed columns, so the
-    # result columns stay aligned; a shorter row is padded with empty cells
+    # a row longer than the header keeps its extra cells under columns named by their
+    # place (extra_5: the 5th cell; no column without a name), so the result columns
+    # stay aligned; a shorter row is padded with empty cells
     flat = isinstance(body, _FlatRows)  # rectangular: every row as wide as the header
     width = len(header) if flat else max(len(header), max(map(len, body)))
-    header = list(header) + [""] * (width - len(header))
+    header = list(header) + _extra_names(header, width)
     full = flat or min(map(len, body)) >= width  # no short row (the usual case)
     transposed = None
     cells = {}
@@ -698,6 +699,19 @@ def _result_cells_by_row(getters):
 
     return [template % row if ok else slow(i)
             for i, (row, ok) in enumerate(zip(zip(*cols), finite.tolist()))]
+
+
+def _extra_names(header, width):
+    """Names of the columns of the cells beyond the header (a row longer than it):
+    ``extra_K`` for the K-th cell of a row, ``_`` prepended while the name is taken."""
+    taken = {h.strip().lower() for h in header}
+    names = []
+    for k in range(len(header) + 1, width + 1):
+        name = f"extra_{k}"
+        while name in taken:
+            name = "_" + name
+        names.append(name)
+    return names
 
 
 def _quote(text):

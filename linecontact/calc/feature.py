@@ -364,9 +364,11 @@ def bounds_of(p):
     """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
-    from .. import checks
+    from importlib import import_module
 
-    iv = getattr(checks, p.bounds)
+    # 'POISSON_RATIO' (linecontact.checks) or 'bearing.ROLLER_COUNT' (its module's)
+    where, _, name = p.bounds.rpartition(".")
+    iv = getattr(import_module(f"linecontact.{where or 'checks'}"), name)
     return (iv.contains, iv.describe())
 
 

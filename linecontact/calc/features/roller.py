@@ -49,7 +49,7 @@ parameters = (
               group),
     Parameter("tilt", "angle", "tilt of the roller axis, e.g. 1mrad, 0.05deg (bare: rad), "
               "positive loads the +x end; 'free': moment equilibrium; default 0 "
-              "(aligned)", group, positive=False, words=("free",)),
+              "(aligned), free between raceways", group, positive=False, words=("free",)),
 )
 
 NAMES = tuple(p.name for p in parameters)
@@ -98,6 +98,11 @@ def resolve(values, present, fail):
          f"conflicts with {label('profile')}")
     free = np.array([bool(P["tilt"][i]) and fail.cell("tilt", i).strip().lower() == "free"
                      for i in range(len(rows))], dtype=bool)
+    # between raceways the roller tilts freely unless --tilt is given, as in
+    # linecontact bearing (the raceways feature's row note says so)
+    free |= ~P["tilt"] & np.any([P[k] for k in ("inner_raceway", "outer_raceway",
+                                                 "inner_raceway_diameter",
+                                                 "outer_raceway_diameter")], axis=0)
     with np.errstate(invalid="ignore"):
         fail(P["tilt"] & ~free & ~(np.abs(v["tilt"]) < 0.1), "tilt", "(-0.1, 0.1) rad, "
              "or free", "the roller models linearise the tilt (small angles)")

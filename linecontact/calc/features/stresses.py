@@ -124,7 +124,7 @@ def resolve(values, present, fail):
         fail(P["sliding_friction"] & ~((v["sliding_friction"] >= 0)
                                         & (v["sliding_friction"] <= 1)),
              "sliding_friction", "[0, 1]", "outside the range of the strip solution")
-    hardness = hardness_of(v, P, fail, on)
+    hardness = hardness_of(v, P, fail, on, v["radius"])
     nu = np.where(P["poisson"], v["poisson"], 0.3)
     return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
                  nu=nu, nu_given=P["poisson"], hardness=hardness,
@@ -135,10 +135,11 @@ def resolve(values, present, fail):
 HARDNESS = tuple(p for p in parameters if p.name in _HARD + ("hardness_profile",))
 
 
-def hardness_of(v, P, fail, on):
+def hardness_of(v, P, fail, on, radius):
     """The rows' hardness profiles (:class:`linecontact.stresses.HardnessProfile`, None
     where none is given) from the three values or the measured CSV: the three
-    together, or the file, not both; only in the rows of `on`."""
+    together, or the file, not both; only in the rows of `on`; a case depth within
+    the roller's `radius` (array over the rows [m]: HardnessProfile.check_fits)."""
     label = fail.label
     n = len(on)
     three = ", ".join(label(s) for s in _HARD)
@@ -156,9 +157,12 @@ def hardness_of(v, P, fail, on):
                 hardness[i] = _read_profile(v["hardness_profile"][i].strip())
             else:
                 hardness[i] = HardnessProfile(*(float(v[nm][i]) for nm in _HARD))
+                if np.isfinite(radius[i]) and radius[i] > 0:
+                    hardness[i].check_fits(float(radius[i]))
         except OutOfRangeError as exc:
             nm = exc.parameter if exc.parameter in _HARD else "hardness_profile"
-            fail(np.arange(n) == i, nm, exc.valid, str(exc))
+            fail(np.arange(n) == i, nm, exc.valid,
+                 exc.hint if nm == "case_depth" and exc.hint else str(exc))
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)

@@ -93,7 +93,19 @@ def resolve(values, present, fail):
     fail(P["tangential_load"] & ~P["friction"], "tangential_load",
          f"with {label('friction')}", "no friction coefficient given")
     v = values
+    # --friction (Coulomb, for the partial slip above) is not the sliding friction of
+    # the stresses (full sliding, q = mu p): a row with both --friction and the
+    # stresses but no --sliding-friction says which coefficient its stresses used
+    stresses = np.array([bool(P["stresses"][i]) and fail.cell("stresses", i).strip()
+                         .lower() not in ("no", "false", "0") for i in range(len(rows))],
+                        dtype=bool) if "stresses" in P else np.zeros_like(rows)
+    unslid = P["friction"] & stresses & ~P.get("sliding_friction", np.zeros_like(rows))
     return State(rows, friction=v["friction"], tangential_load=v["tangential_load"],
+                 unslid=unslid, unslid_note=(
+                     f"the stresses are frictionless: {label('friction')} is the Coulomb "
+                     "coefficient of the partial slip (stick zone, Cattaneo-Mindlin), not "
+                     f"the full sliding of the stresses; give {label('sliding_friction')} "
+                     "for them"),
                  loaded=P["tangential_load"], friction_given=P["friction"],
                  e1=v["modulus"], nu1=v["poisson"],
                  e2=np.where(P["modulus2"], v["modulus2"], np.inf),
@@ -119,6 +131,8 @@ def columns(model, rows, normal, state):
         if text and text not in flags[j]:
             flags[j] = "; ".join(t for t in (flags[j], text) if t)
 
+    for j in np.flatnonzero(state.unslid[rows]):
+        note(j, state.unslid_note)
     sel = np.flatnonzero(state.friction_given[rows] & ok)
     if not sel.size:
         return out

@@ -60,7 +60,8 @@ _SPECTRUM = "duty cycle"
 
 #: The bearing's inputs: option ``--NAME`` = CSV column ``NAME``.
 parameters = (
-    Parameter("rollers", "dimensionless", "number of rollers Z (>= 3)", _GEOM),
+    Parameter("rollers", "count", "number of rollers Z (>= 3, as many as fit on the "
+              "pitch circle)", _GEOM, bounds="bearing.ROLLER_COUNT"),
     Parameter("pitch_diameter", "length", "pitch diameter d_m", _GEOM),
     Parameter("roller_diameter", "length", "roller diameter D", _GEOM),
     _CALC["length"],
@@ -88,8 +89,9 @@ parameters = (
     Parameter("model", "text", "contact law of each contact: universal (default for a "
               "straight roller), iso16281 (the ISO spring), profiled-roller (default "
               "for a profile), iso16281-slicing, any key of linecontact calc", _MODEL),
-    Parameter("n_slices", "dimensionless", "slices of a slice model (default: the "
-              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL),
+    Parameter("n_slices", "count", "slices of a slice model (default: the "
+              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL,
+              bounds="bearing.SLICE_COUNT"),
     Parameter("rating", "force", "basic dynamic load rating C_r (default: ISO 281 "
               "from the geometry)", _MODEL),
     Parameter("static_rating", "force", "basic static load rating C0r (default: ISO 76 "
@@ -300,7 +302,7 @@ def resolve(values, present, fail):
         with np.errstate(invalid="ignore"):
             fail(P[nm] & (v[nm] != np.round(v[nm])), nm, "a whole number",
                  "not a whole number")
-    hardness = hardness_of(v, P, fail, np.ones(n, bool))
+    hardness = hardness_of(v, P, fail, np.ones(n, bool), v["roller_diameter"] / 2)
     spectra = [None] * n
     read = {}
     for i in np.flatnonzero(P["spectrum"]):
@@ -525,14 +527,39 @@ def model_of(obj):
                                                      "RadialRollerBearing"}
 
 
-def describe(obj, si):
-    """The bearing in one line."""
+def scales(obj):
+    """The size of the quantities that may be round-off in an aligned bearing [SI]:
+    the ring tilt against delta_r/L, the moment against F_r L, the stiffness matrix's
+    coupling terms against sqrt(K_rr K_tt) (the matrix's own scale); a value below
+    :data:`linecontact._units.NOISE` of its scale is shown as 0."""
     b, s = obj.bearing, obj.solution
+    K = s.stiffness
+    out = {"tilt": (abs(s.displacement) + abs(b.clearance)) / b.length,
+           "moment": s.radial_load * b.length}
+    if K.shape == (2, 2):
+        out["stiffness_rt"] = out["stiffness_tr"] = math.sqrt(abs(K[0, 0] * K[1, 1]))
+    return out
+
+
+def describe(obj, si):
+    """The bearing in one line (SI with `si`), round-off shown as 0."""
+    from ..._units import format_numbers
+
+    b, s = obj.bearing, obj.solution
+    sc = scales(obj)
+    M = format_numbers([s.moment], 6, sc["moment"])[0]
+    if si:
+        th = format_numbers([s.tilt], 6, sc["tilt"])[0]
+        return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter:.6g} m, "
+                f"D = {b.roller_diameter:.6g} m, L = {b.length:.6g} m, P_d = "
+                f"{b.clearance:.6g} m, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
+                f"F_r = {s.radial_load:.6g} N, M = {M} N m, theta = {th} rad")
+    th = format_numbers([s.tilt * 1e3], 6, sc["tilt"] * 1e3)[0]
     return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter * 1e3:.6g} "
             f"mm, D = {b.roller_diameter * 1e3:.6g} mm, L = {b.length * 1e3:.6g} mm, "
             f"P_d = {b.clearance * 1e6:.6g} um, E* = {b.estar / 1e9:.5g} GPa, profile "
-            f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {s.moment:.6g} N m, "
-            f"theta = {s.tilt * (1 if si else 1e3):.6g} " + ("rad" if si else "mrad"))
+            f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {M} N m, "
+            f"theta = {th} mrad")
 
 
 _ROLLER_FIELDS = {

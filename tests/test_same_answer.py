@@ -142,7 +142,7 @@ def test_a_roller_between_raceways_is_the_librarys_from_every_door(tmp_path):
     roller's deflection and contacts are roller_between_raceways', each measure's
     stresses the worse contact's roller_stresses and the case ratio the worse
     contact's case_check, from every door."""
-    from linecontact.calc.features.stresses import contact_stresses
+    from linecontact.stresses import raceway_stresses
     from linecontact.profiles import as_profile
     from linecontact.raceway import Raceways, roller_between_raceways
     from linecontact.stresses import HardnessProfile, case_check
@@ -159,7 +159,7 @@ def test_a_roller_between_raceways_is_the_librarys_from_every_door(tmp_path):
                                   profile="iso16281")
     assert row["roller_deflection"] == pytest.approx(sol.deflection, rel=1e-12)
     assert row["peak_pressure_inner"] == pytest.approx(sol.peak_pressure_inner, rel=1e-12)
-    both = contact_stresses(sol, L, E, as_profile("iso16281", R1, L, E), 0.0, 0.3)
+    both = raceway_stresses(sol, L, E, as_profile("iso16281", R1, L, E), 0.0, 0.3)
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         worst = max(s.worst[m]["value"] for s in both.values())
         assert row[f"{m}_max"] == pytest.approx(worst, rel=1e-12)
@@ -174,7 +174,7 @@ def test_a_bearing_is_the_librarys_from_every_door(tmp_path):
     solve field by field, and its case check is its most loaded roller's between the
     same raceways (roller_between_raceways + roller_stresses + case_check)."""
     from linecontact.bearing import RadialRollerBearing
-    from linecontact.calc.features.stresses import contact_stresses
+    from linecontact.stresses import raceway_stresses
     from linecontact.calc.subcommands import bearing as door
     from linecontact.raceway import roller_between_raceways
     from linecontact.stresses import HardnessProfile, case_check
@@ -198,7 +198,7 @@ def test_a_bearing_is_the_librarys_from_every_door(tmp_path):
     roller = roller_between_raceways(b.roller_diameter / 2, b.length, b.estar,
                                      b.raceways, force=s.max_roller_load,
                                      profile=b.profile, n_slices=b.n_slices)
-    both = contact_stresses(roller, b.length, b.estar, b.profile, 0.0, 0.3)
+    both = raceway_stresses(roller, b.length, b.estar, b.profile, 0.0, 0.3)
     hard = HardnessProfile(700, 0.5e-3, 350)
     ratio = max(case_check(st, hard).max_ratio for st in both.values())
     assert row["case_ratio"] == pytest.approx(ratio, rel=1e-12)

@@ -122,33 +122,6 @@ def _laminae(sol, length, n):
     return np.diff(np.interp(np.linspace(-length / 2, length / 2, n + 1), edges, cum))
 
 
-def _worst_of(fields):
-    """The largest value of each stress measure over named contacts' stress results
-    (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
-    "notes": [...]}; a measure whose maximum is not converged in some contact (an
-    edge-loaded one) carries "withheld": the reason (its value is the slice width's)."""
-    from ..stresses import MEASURES
-
-    worst = {}
-    for m in MEASURES:
-        name, st = max(fields.items(), key=lambda kv: kv[1].worst[m]["value"])
-        w = st.worst[m]
-        worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
-                    "x": float(w["x"]), "contact": name}
-        held = [n for n, f in fields.items() if m in getattr(f, "withheld", {})]
-        if held:
-            worst[m]["withheld"] = (" and ".join(held) + " contact: "
-                                    + fields[held[0]].withheld[m])
-    notes = []
-    for name, st in fields.items():
-        notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
-    held = sorted(m for m in MEASURES if "withheld" in worst[m])
-    if held:
-        notes.append("stress maxima not reported (" + ", ".join(held) + "): "
-                     + worst[held[0]]["withheld"])
-    return {"worst": worst, "notes": notes}
-
-
 def _one_roller(sol, i):
     """Roller i of a :class:`~linecontact.raceway.RacewaySolution` solved for several
     loads under a law (its per-load entries taken at i): that roller's own solve."""
@@ -321,10 +294,12 @@ class BearingSolution:
         :func:`~linecontact.raceway.roller_between_raceways` at Q_max (free to tilt,
         the rings misaligned by theta cos psi_j at its azimuth). Not in
         :meth:`to_dict`.
-    roller_stresses : dict
+    roller_stresses : RacewayStresses
         The subsurface stresses of that roller's two contacts, ``"inner"`` and
-        ``"outer"`` (:class:`~linecontact.stresses.SubsurfaceStresses`, no traction):
-        the fields `stress` summarises, for a case check. Not in :meth:`to_dict`.
+        ``"outer"`` (:class:`~linecontact.stresses.RacewayStresses`, a mapping to each
+        one's :class:`~linecontact.stresses.SubsurfaceStresses`, no traction): the
+        fields `stress` summarises; its ``case_check`` is the case check over both.
+        Not in :meth:`to_dict`.
 
     Notes
     -----
@@ -398,7 +373,7 @@ class BearingSolution:
     flange_couple: np.ndarray = None
     flange_load_offset: np.ndarray = None
     roller: object = None
-    roller_stresses: dict = None
+    roller_stresses: object = None
 
     def to_dict(self):
         """The solution as plain Python (lists for arrays), SI units (the solve objects
@@ -1176,7 +1151,6 @@ class RadialRollerBearing:
                 notes.append("peak pressure not reported: the most loaded roller is "
                              "edge loaded (a singular pressure on a half-space)")
         fields = self._roller_stresses(roller)
-        stress = _worst_of(fields)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
         zone = math.acos(max(-1.0, min(1.0, self.clearance / (2 * dr)))) if dr > 0 \
             else math.pi
@@ -1184,7 +1158,7 @@ class RadialRollerBearing:
             zone = math.pi
         life16281 = reference_rating_life(self.rating, self.pitch_diameter,
                                           self.roller_diameter, qi, qo, self.rotating)
-        notes.extend(stress["notes"])
+        notes.extend(fields.notes)
         Z = self.rollers
         return BearingSolution(
             radial_load=F, displacement=float(dr), azimuth=self.azimuth.copy(),
@@ -1196,7 +1170,7 @@ class RadialRollerBearing:
             life_iso16281=life16281, law_error=float(law_error), model=label,
             notes=tuple(notes), moment=0.0, tilt=0.0, roller_moments=Mj,
             roller_tilts=tj, roller_misalignment=np.zeros(Z),
-            stress=stress["worst"], roller=roller, roller_stresses=fields)
+            stress=fields.worst, roller=roller, roller_stresses=fields)
 
     def _tilt_model(self, moment, misalignment):
         """This bearing if its model solves tilted rollers by slices; else, with no
@@ -1216,34 +1190,15 @@ class RadialRollerBearing:
             profile=self.profile, n_slices=self.n_slices, azimuth0=self.azimuth0,
             rating=self.rating, rotating=self.rotating, poisson=self.poisson)
 
-    def _stress_rollers(self):
-        """The inner and the outer contact as equivalent rollers on a flat (effective
-        radius, length, E*, profile) for the stress table's range check."""
-        from types import SimpleNamespace
-
-        radii = effective_radii(self.roller_diameter / 2, self.raceways.inner,
-                                self.raceways.outer)
-        return tuple(SimpleNamespace(radius=R, length=self.length, estar=self.estar,
-                                     profile=self.profile) for R in radii)
-
     def _roller_stresses(self, roller):
         """Subsurface stresses of one roller's two contacts (`roller`: its
-        :class:`~linecontact.raceway.RacewaySolution`), ``{"inner": ..., "outer":
-        ...}``, no traction: :func:`linecontact.stresses.roller_stresses` of a contact
-        solved by slices (its error quoted only inside the measured range, as a
-        roller of the contact's effective radius), else the plane-strain Hertz strip
-        at the mean line load Q/L (:func:`linecontact.stresses.line_contact_stresses`)."""
-        from ..stresses import line_contact_stresses, roller_stresses
+        :class:`~linecontact.raceway.RacewaySolution`), no traction, with the rings'
+        Poisson's ratio: :func:`linecontact.stresses.raceway_stresses` (each contact's,
+        the worse per measure and the case check over both)."""
+        from ..stresses import raceway_stresses
 
-        out = {}
-        for side, measured in zip(("inner", "outer"), self._stress_rollers()):
-            part = getattr(roller, side)
-            out[side] = (roller_stresses(part, poisson=self.poisson, roller=measured)
-                         if part is not None else
-                         line_contact_stresses(float(roller.force), measured.radius,
-                                               self.length, self.estar,
-                                               poisson=self.poisson))
-        return out
+        return raceway_stresses(roller, self.length, self.estar, self.profile,
+                                poisson=self.poisson)
 
     def _tilted_load_zone(self, dr, th, first, points=721):
         """Half the azimuth range where a roller would be loaded,
@@ -1298,8 +1253,7 @@ class RadialRollerBearing:
                                     float(th * c[jm]), True,
                                     self.raceways.check_fit(self.roller_diameter / 2))
         fields = self._roller_stresses(roller)
-        stress = _worst_of(fields)
-        notes.extend(stress["notes"])
+        notes.extend(fields.notes)
         approach = dr * c - self.clearance / 2
         zone = self._tilted_load_zone(dr, th, first)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
@@ -1316,7 +1270,7 @@ class RadialRollerBearing:
             life_iso281=basic_rating_life(self.rating, F), life_iso16281=life,
             law_error=0.0, model=label, notes=tuple(notes),
             moment=float(Mj @ c), tilt=float(th), roller_moments=Mj, roller_tilts=tj,
-            roller_misalignment=th * c, stress=stress["worst"], roller=roller,
+            roller_misalignment=th * c, stress=fields.worst, roller=roller,
             roller_stresses=fields)
 
     def _polish(self, law, dr, F):

@@ -29,8 +29,7 @@ import numpy as np
 
 from ..cases import BY_NAME as _CALC
 from ..feature import Block, Field, Parameter, State
-from ..features.stresses import HARDNESS, case_of_contacts, hardness_of
-from ..features.stresses import min_case_depth as _min_case_depth
+from ..features.stresses import HARDNESS, hardness_of
 
 __all__: list = []
 
@@ -400,8 +399,8 @@ def _given(v, name, i):
 def solve(values, i, state):
     """Row i: :class:`linecontact.bearing.RadialRollerBearing` and its solve, and the
     case check of its most loaded roller (library refusals propagate: the row's
-    error): (checks, texts, worse) of
-    :func:`linecontact.calc.features.stresses.case_of_contacts`."""
+    error): a :class:`linecontact.stresses.RacewayCaseCheck` (the solution's
+    ``roller_stresses.case_check``)."""
     from ...bearing import RadialRollerBearing
 
     g = {p.name: _given(values, p.name, i) for p in parameters}
@@ -428,7 +427,7 @@ def solve(values, i, state):
     # stresses of its own solve of that roller (BearingSolution.roller_stresses)
     case = None
     if state.hardness[i] is not None:
-        case = case_of_contacts(s.roller_stresses, state.hardness[i])
+        case = s.roller_stresses.case_check(state.hardness[i])
     spectrum = None
     if state.spectra[i] is not None:
         from ...bearing import solve_spectrum
@@ -502,12 +501,12 @@ def row(obj, state, i):
         out[f"{m}_depth"] = w["depth"] if shown else None
     notes = list(s.notes)
     if obj.case is not None:
-        checks, texts, worse = obj.case
+        checks, texts, worse = obj.case.checks, obj.case.notes, obj.case.worse
         if worse is not None:
             c = checks[worse]
             out["case_ratio"] = c.max_ratio
             out["case_ratio_depth"] = c.depth_at_max
-            out["min_case_depth"] = _min_case_depth(checks)
+            out["min_case_depth"] = obj.case.min_case_depth
             notes.append(f"case check: worse contact {worse} (vM/allow inner "
                          + ", outer ".join(f"{checks[k].max_ratio:.4g}"
                                            if checks[k] is not None else "-"

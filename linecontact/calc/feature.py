@@ -191,6 +191,11 @@ class Parameter:
     words : tuple of str
         Words accepted besides a number (e.g. ``("free",)`` for the tilt): such a cell
         is given (``present``) with the value NaN; ``fail.cell(name, i)`` has the word.
+    json_only : str
+        Non-empty for an input whose result is written to the ``--json`` output only
+        (a block with no table): what it writes. Given without ``--json`` (option or
+        CSV column) it is refused up front (:func:`linecontact.calc.render.refuse_json_only`),
+        not computed and dropped.
     """
 
     name: str
@@ -202,6 +207,7 @@ class Parameter:
     sweep: bool = True
     plausible: tuple | None = None
     words: tuple = ()
+    json_only: str = ""
 
 
 @dataclass(frozen=True)

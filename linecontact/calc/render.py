@@ -538,6 +538,26 @@ def refuse_same_output(output, plot):
             "table: give two different files"))
 
 
+def refuse_json_only(parameters, given, json, label=None):
+    """Raise :class:`~linecontact._units.InputError` if an input whose result goes to
+    the ``--json`` output only (:attr:`Parameter.json_only`) is given without
+    ``--json``: it would be computed and written nowhere. `given`: parameter name ->
+    what was given (the option's text, or for a CSV batch its first filled cell), None
+    where not given; `label`: name -> the input as the user named it (default: the
+    option)."""
+    if json:
+        return
+    from .._units import InputError
+    from .feature import option_name
+
+    for p in parameters:
+        if p.json_only and given.get(p.name) is not None:
+            raise InputError((label or option_name)(p.name), given[p.name],
+                             f"with --json ({p.json_only} is written to the JSON "
+                             "output only)",
+                             "no --json: it would not be written anywhere")
+
+
 class OutputError(OSError):
     """The output file cannot be written: names the file and the reason."""
 

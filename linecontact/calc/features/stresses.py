@@ -48,7 +48,8 @@ parameters = (
     Parameter("sliding_friction", "dimensionless", "coefficient mu of the sliding "
               "traction mu p for the stresses, 0 to 1", group, positive=False),
     Parameter("stress_field", "length", "with --json: the stress field on the section "
-              "across the roller at this x", group, positive=False),
+              "across the roller at this x", group, positive=False,
+              json_only="the field on the section"),
     Parameter("surface_hardness", "dimensionless", "surface hardness HV (> 550) for the "
               "case-hardening check", group),
     Parameter("case_depth", "length", "effective case depth CHD (to 550 HV, ISO 2639)",

@@ -296,6 +296,11 @@ class Block:
         Prefix of the block's columns in a CSV batch (``KEY_FIELD_UNIT``).
     units : Mapping[str, str]
         SI unit of each JSON row entry.
+    scales : Mapping[str, float]
+        Field name -> the magnitude of its quantity [SI] where it may be round-off (a
+        moment that symmetry makes zero): a value below
+        :data:`linecontact._units.NOISE` of it is printed as 0 (the JSON keeps it).
+        Default: the column's largest value.
     """
 
     name: str
@@ -307,6 +312,7 @@ class Block:
     note: str = ""
     key: str = ""
     units: Mapping[str, str] = field(default_factory=dict)
+    scales: Mapping[str, float] = field(default_factory=dict)
 
 
 class Fail:

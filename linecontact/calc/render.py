@@ -268,7 +268,7 @@ def _block_note(results, text):
 def blocks_text(blocks, given, si):
     """The features' extra tables (e.g. the profiled roller's rows), each after its
     rows' note; blocks of one name share one table."""
-    from .._units import display_unit, format_numbers
+    from .._units import NOISE, display_unit, format_numbers
 
     out = ""
     names = []
@@ -282,13 +282,16 @@ def blocks_text(blocks, given, si):
         cols = ([first] if first in fields else []) + [c for c in fields if c != first]
         rows = [(b, row) for b in group for row in b.rows if row is not None]
         shown = {}  # each column's unit fits its values
+        values = {}
         for c in cols:
             vals = [np.nan if row.get(c) is None else float(row[c]) for _, row in rows]
+            size = group[0].scales.get(c)
+            if size is not None:  # round-off of its quantity's scale: 0 (the unit too)
+                vals = [0.0 if abs(v) <= NOISE * abs(size) else v for v in vals]
+            values[c] = vals
             shown[c] = ((1.0, fields[c].si) if si else
                         display_unit(vals, fields[c].si, fields[c].eng, fields[c].factor))
-        cells_of = {c: format_numbers([np.nan if row.get(c) is None else
-                                       float(row[c]) * shown[c][0] for _, row in rows])
-                    for c in cols}
+        cells_of = {c: format_numbers([v * shown[c][0] for v in values[c]]) for c in cols}
         header = [group[0].label] + [
             f"{fields[c].heading} [{shown[c][1]}]" for c in cols
         ] + list(group[0].text_columns) + ["note"]

@@ -598,7 +598,12 @@ def blocks(obj):
         if flange:
             r["flange_force"] = float(s.flange_forces[j])
         rows.append(r)
-    out = [Block(name="rollers", label="roller", fields=flds, rows=rows,
+    # round-off (an aligned profiled bearing's moments, 1e-16 N m) printed as 0 against
+    # the quantity's scale: a roller's moment against Q_max L, its tilt against the
+    # bearing's (scales)
+    sizes = {"moment": s.max_roller_load * obj.bearing.length,
+             "tilt": scales(obj)["tilt"]} if tilted else {}
+    out = [Block(name="rollers", label="roller", fields=flds, rows=rows, scales=sizes,
                  note="roller j at azimuth psi_j from the load line; approach: "
                       "delta_r cos psi_j - P_d/2 (negative: a gap); Q: its load"
                       + ("; M_j: its inner contact's moment, tilt: its own against "

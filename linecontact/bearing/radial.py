@@ -1091,20 +1091,32 @@ class RadialRollerBearing:
                      f"roller's range at this load ({top * 1e6:.4g} um); preloads are "
                      "a few micrometres") from None
 
-    def _solve(self, radial_load, moment, misalignment, speed, axial_load):
-        """:meth:`solve` of one radial load."""
+    def _solve(self, radial_load, moment, misalignment, speed, axial_load,
+               at_rest=False):
+        """:meth:`solve` of one radial load; `at_rest`: a duty cycle's case at
+        standstill (:func:`linecontact.bearing.spectrum.solve_spectrum`), solved
+        without the film, kappa and the modified lives, which need the rings to turn
+        (it takes no revolutions, so no fatigue damage)."""
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
-        if speed is not None:
+        if at_rest:
+            speed = None
+        elif speed is not None:
             speed = float(check_interval("speed", speed, -np.inf, np.inf, low_open=True,
                                          high_open=True, unit="rad/s"))
         elif self.lubricant is not None:
             raise CombinationError({"speed": None, "viscosity": self.lubricant[
                 "viscosity"]}, "the lubricant's film and kappa need the inner ring's "
                 "speed: give solve(..., speed=)")
-        return self._extras(self._solve_load(F, moment, misalignment), speed,
-                            axial_load)
+        sol = self._extras(self._solve_load(F, moment, misalignment), speed, axial_load)
+        if at_rest:
+            from dataclasses import replace
+
+            sol = replace(sol, speed=0.0, entrainment_speed=0.0, notes=sol.notes + (
+                "at standstill: no film, kappa or modified life (they need the rings "
+                "to turn); no revolutions, so no fatigue damage in the duty cycle",))
+        return sol
 
     def _solve_load(self, F, moment, misalignment):
         """The load distribution under F_r and a moment or misalignment."""

@@ -39,7 +39,8 @@ References
    Lubrication, 2nd ed., Marcel Dekker, New York (2004), chapter 21 (rectangular
    conjunctions).
 .. [4] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007):
-   Essential Concepts, chapter 8 (bearing kinematics).
+   Essential Concepts, the chapter on kinematic speeds (cage and rolling
+   element speeds).
 .. [5] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, the rated
    viscosity nu1 as published in bearing catalogues, e.g. SKF, Rolling bearings
    (catalogue PUB BU/P1 17000, 2018), section "Viscosity ratio kappa", or Schaeffler,
@@ -481,7 +482,8 @@ def entrainment_speed(inner_ring_speed, pitch_diameter, roller_diameter,
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 8 (cage and rolling element speeds).
+       Essential Concepts, the chapter on kinematic speeds (cage and rolling
+       element speeds).
     """
     wi = check_interval("inner_ring_speed", inner_ring_speed, -np.inf, np.inf,
                         low_open=True, high_open=True, unit="rad/s")
@@ -530,7 +532,7 @@ def cage_speed(inner_ring_speed, pitch_diameter, roller_diameter, outer_ring_spe
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 8.
+       Essential Concepts, the chapter on kinematic speeds.
     """
     wi = check_interval("inner_ring_speed", inner_ring_speed, -np.inf, np.inf,
                         low_open=True, high_open=True, unit="rad/s")

@@ -161,9 +161,10 @@ def test_rated_viscosity_catalogue_branches_by_hand():
     rpm = math.pi / 30
     # 1500 r/min, 70 mm: 4500 / sqrt(1500 * 70) = 13.887 mm^2/s
     assert rated_viscosity(1500 * rpm, 70e-3) == pytest.approx(13.8873e-6, rel=1e-4)
-    # 500 r/min, 70 mm: 45000 * 500^-0.83 / sqrt(70) = 30.76 mm^2/s
+    # 500 r/min, 70 mm: 45000 * 500^-0.83 / sqrt(70) = 258.86 / 8.3666 = 30.940 mm^2/s
     assert rated_viscosity(500 * rpm, 70e-3) == pytest.approx(
         45000 * 500 ** -0.83 / math.sqrt(70) * 1e-6, rel=1e-12)
+    assert rated_viscosity(500 * rpm, 70e-3) == pytest.approx(30.940e-6, rel=1e-4)
     # the second branch from 1000 r/min on
     assert rated_viscosity(1000 * rpm, 70e-3) == pytest.approx(
         4500 / math.sqrt(1000 * 70) * 1e-6, rel=1e-12)

@@ -571,8 +571,11 @@ def rated_viscosity(speed, pitch_diameter):
     The two-branch power law is the published fit of ISO 281's nu1 diagram (the
     viscosity needed for adequate lubrication at the operating temperature; mineral
     oils); at 1000 r/min (104.72 rad/s), where the second branch takes over, the
-    first gives 2.3 % more (the published fit's own step). Catalogue diagrams span roughly 2 to 100000 r/min and d_m of
-    10 to 2000 mm; no range is enforced beyond positivity.
+    first gives 2.3 % more (the published fit's own step). Catalogue diagrams span
+    roughly 2 to 100000 r/min and d_m of 10 to 2000 mm; no range is enforced beyond
+    positivity. The catalogues' d_m is the bearing's mean diameter (d + D)/2; the
+    bearing passes its pitch diameter, within a few percent of it for a cylindrical
+    roller bearing (nu1 ~ d_m^-0.5: half that in nu1).
 
     Examples
     --------

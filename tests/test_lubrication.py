@@ -129,6 +129,22 @@ def test_bad_inputs_are_refused():
         minimum_film_pan_hamrock(**dict(CASE, load_per_length=-1.0))
 
 
+def test_pressure_viscosity_in_gpa_given_as_a_bare_number_is_refused():
+    """alpha is taken in 1/Pa: oils lie near 1e-8 to 4e-8 1/Pa (10 to 40 GPa^-1). The
+    tables' 20 GPa^-1 typed as 20 would make G = alpha E' 1e9 times too large and the
+    film (h ~ G^0.568) about 1.3e5 times too thick, tens of millimetres: refused with
+    the unit named, at the film formula and at the bearing."""
+    from linecontact.bearing import RadialRollerBearing
+
+    with pytest.raises(OutOfRangeError, match="GPa"):
+        minimum_film_pan_hamrock(**dict(CASE, pressure_viscosity=20.0))
+    with pytest.raises(OutOfRangeError, match="pressure_viscosity"):
+        RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, viscosity=20.7e-6, density=860.0,
+                            pressure_viscosity=20.0)
+    # the top of the accepted range still computes
+    assert minimum_film_pan_hamrock(**dict(CASE, pressure_viscosity=1e-7)) > 0
+
+
 def test_film_ratio_by_hand():
     """Lambda = h / sqrt(Rq1^2 + Rq2^2): 0.3 um over sqrt(0.1^2 + 0.2^2) um = 1.3416."""
     assert film_ratio(0.3e-6, 0.1e-6, 0.2e-6) == pytest.approx(0.3 / math.sqrt(0.05),

@@ -53,12 +53,13 @@ import math
 import numpy as np
 
 from .._numerics import out
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from ..errors import UnknownNameError
 
 __all__ = [
     "DEFAULT_FILM_FORMULA",
     "FILM_FORMULAS",
+    "PRESSURE_VISCOSITY",
     "ehl_parameters",
     "minimum_film_pan_hamrock",
     "central_film_pan_hamrock",
@@ -79,6 +80,14 @@ FILM_FORMULAS = {
     "pan-hamrock": ("Pan & Hamrock (1989)", (1.714, -0.128, 0.694, 0.568)),
     "dowson-higginson": ("Dowson & Higginson (1977)", (2.65, -0.13, 0.70, 0.54)),
 }
+#: Accepted pressure-viscosity coefficients alpha [1/Pa]: lubricating oils lie near
+#: 1e-8 to 4e-8 1/Pa (10 to 40 GPa^-1; Hamrock, Schmid & Jacobson 2004, the chapter on
+#: lubricant viscosity); a value above 1e-7 is a unit slip (20 GPa^-1 given as the bare
+#: number 20 makes the film thousands of times too thick), refused.
+PRESSURE_VISCOSITY = Interval("pressure_viscosity", 0.0, 1e-7, low_open=True,
+                              unit="1/Pa")
+_ALPHA_HINT = ("alpha in 1/Pa: 20 GPa^-1 is 2e-8 1/Pa (lubricating oils lie near 1e-8 "
+               "to 4e-8)")
 #: Pan & Hamrock's (1989) central film h_c/R = c W'^w U^u G^g as (c, w, u, g).
 _PAN_HAMROCK_CENTRAL = (2.922, -0.166, 0.692, 0.470)
 
@@ -108,7 +117,8 @@ def ehl_parameters(speed, radius, load_per_length, estar, viscosity, pressure_vi
         Dynamic viscosity eta0 at the operating (inlet) temperature and ambient
         pressure, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -140,7 +150,7 @@ def ehl_parameters(speed, radius, load_per_length, estar, viscosity, pressure_vi
                        unit="N/m")
     E = 2.0 * check_positive("estar", estar, "Pa")
     eta = check_positive("viscosity", viscosity, "Pa s")
-    alpha = check_positive("pressure_viscosity", pressure_viscosity, "1/Pa")
+    alpha = PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT)
     U, G, W = np.broadcast_arrays(eta * u / (E * R), alpha * E, w / (E * R))
     return out(U), out(G), out(W)
 
@@ -178,7 +188,8 @@ def minimum_film_pan_hamrock(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -230,7 +241,8 @@ def central_film_pan_hamrock(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -279,7 +291,8 @@ def minimum_film_dowson_higginson(speed, radius, load_per_length, estar, viscosi
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -331,7 +344,8 @@ def minimum_film_thickness(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
     formula : str, optional
         ``"pan-hamrock"`` (default) or ``"dowson-higginson"``.
 

@@ -17,7 +17,8 @@ from ..raceway import Raceways, effective_radii, roller_between_raceways
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
-from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
+from .lubrication import (_ALPHA_HINT, DEFAULT_FILM_FORMULA, FILM_FORMULAS,
+                          PRESSURE_VISCOSITY)
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
                       reference_rating_life, static_load_rating)
 
@@ -437,7 +438,7 @@ class RadialRollerBearing:
         Density rho of the lubricant, 0 < rho < inf [kg/m^3]: the film's dynamic
         viscosity eta0 = rho nu (with `pressure_viscosity`).
     pressure_viscosity : float, optional
-        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha < inf [1/Pa]:
+        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha <= 1e-7 [1/Pa]:
         with `viscosity`, `density` and a speed, the EHL film of every contact.
     roughness_roller, roughness_raceway : float, optional
         RMS roughness Rq of the rollers and of the raceways, 0 <= Rq < inf [m]: the
@@ -732,10 +733,11 @@ class RadialRollerBearing:
         if all(v is None for v in given.values()):
             return None
         lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
-        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3"),
-                           ("pressure_viscosity", "1/Pa")):
+        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3")):
             v = given[name]
             lub[name] = None if v is None else float(check_positive(name, v, unit))
+        lub["pressure_viscosity"] = None if pressure_viscosity is None else float(
+            PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT))
         for name in ("roughness_roller", "roughness_raceway"):
             v = given[name]
             lub[name] = None if v is None else float(check_interval(

@@ -145,6 +145,25 @@ def test_pressure_viscosity_in_gpa_given_as_a_bare_number_is_refused():
     assert minimum_film_pan_hamrock(**dict(CASE, pressure_viscosity=1e-7)) > 0
 
 
+@pytest.mark.parametrize("inputs, words", [
+    (dict(density=0.86), "g/cm^3"),          # 0.86 g/cm^3 typed as a bare number
+    (dict(density=1e5), "kg/m^3"),
+    (dict(viscosity=68.0), "mm^2/s"),        # 68 cSt typed as a bare number
+    (dict(viscosity=1e-9), "m^2/s"),
+])
+def test_density_and_viscosity_unit_slips_are_refused(inputs, words):
+    """The bearing's lubricant: oils lie near 800-1000 kg/m^3 and 1e-6 to 1e-3 m^2/s. A
+    density in g/cm^3 or a viscosity in mm^2/s given as a bare SI number would change
+    eta0 = rho nu by a factor 1e3 or 1e6 and the film by 1e2 or more (h ~ U^0.694):
+    refused, the message naming the unit, rather than a silently wrong film."""
+    from linecontact.bearing import RadialRollerBearing
+
+    oil = dict(viscosity=20.7e-6, density=860.0, pressure_viscosity=2e-8)
+    oil.update(inputs)
+    with pytest.raises(OutOfRangeError, match=words.replace("^", r"\^")):
+        RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, **oil)
+
+
 def test_film_ratio_by_hand():
     """Lambda = h / sqrt(Rq1^2 + Rq2^2): 0.3 um over sqrt(0.1^2 + 0.2^2) um = 1.3416."""
     assert film_ratio(0.3e-6, 0.1e-6, 0.2e-6) == pytest.approx(0.3 / math.sqrt(0.05),

@@ -59,6 +59,8 @@ from ..errors import UnknownNameError
 __all__ = [
     "DEFAULT_FILM_FORMULA",
     "FILM_FORMULAS",
+    "DENSITY",
+    "KINEMATIC_VISCOSITY",
     "PRESSURE_VISCOSITY",
     "ehl_parameters",
     "minimum_film_pan_hamrock",
@@ -88,6 +90,17 @@ PRESSURE_VISCOSITY = Interval("pressure_viscosity", 0.0, 1e-7, low_open=True,
                               unit="1/Pa")
 _ALPHA_HINT = ("alpha in 1/Pa: 20 GPa^-1 is 2e-8 1/Pa (lubricating oils lie near 1e-8 "
                "to 4e-8)")
+#: Accepted lubricant densities [kg/m^3]: mineral and synthetic oils and greases' base
+#: oils lie near 800 to 1000 kg/m^3 (perfluorinated ones near 1900); outside 500-2500 is
+#: a unit slip (0.86 g/cm^3 given as the bare number 0.86 makes eta0 = rho nu a thousand
+#: times too small and the film some hundred times too thin), refused.
+DENSITY = Interval("density", 500.0, 2500.0, unit="kg/m^3")
+_DENSITY_HINT = "density in kg/m^3: 0.86 g/cm^3 is 860 kg/m^3"
+#: Accepted kinematic viscosities [m^2/s]: 1e-7 to 1e-1 m^2/s (0.1 to 1e5 mm^2/s, from
+#: a thin spindle oil to a heavy gear oil near its pour point); above that is a unit slip
+#: (68 mm^2/s given as the bare number 68 is 68 m^2/s), refused.
+KINEMATIC_VISCOSITY = Interval("viscosity", 1e-7, 1e-1, unit="m^2/s")
+_VISCOSITY_HINT = "kinematic viscosity in m^2/s: 68 mm^2/s (cSt) is 6.8e-5 m^2/s"
 #: Pan & Hamrock's (1989) central film h_c/R = c W'^w U^u G^g as (c, w, u, g).
 _PAN_HAMROCK_CENTRAL = (2.922, -0.166, 0.692, 0.470)
 

@@ -18,8 +18,8 @@ from ..raceway import (Raceways, _contacts_solution, effective_radii,
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
-from .lubrication import (_ALPHA_HINT, DEFAULT_FILM_FORMULA, FILM_FORMULAS,
-                          PRESSURE_VISCOSITY)
+from .lubrication import (_ALPHA_HINT, _DENSITY_HINT, _VISCOSITY_HINT, DEFAULT_FILM_FORMULA,
+                          DENSITY, FILM_FORMULAS, KINEMATIC_VISCOSITY, PRESSURE_VISCOSITY)
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
                       reference_rating_life, static_load_rating)
 
@@ -762,9 +762,10 @@ class RadialRollerBearing:
         if all(v is None for v in given.values()):
             return None
         lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
-        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3")):
+        for name, interval, hint in (("viscosity", KINEMATIC_VISCOSITY, _VISCOSITY_HINT),
+                                     ("density", DENSITY, _DENSITY_HINT)):
             v = given[name]
-            lub[name] = None if v is None else float(check_positive(name, v, unit))
+            lub[name] = None if v is None else float(interval.check(v, hint=hint))
         lub["pressure_viscosity"] = None if pressure_viscosity is None else float(
             PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT))
         for name in ("roughness_roller", "roughness_raceway"):

@@ -18,7 +18,8 @@ from ..raceway import (Raceways, _contacts_solution, effective_radii,
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
-from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
+from .lubrication import (_ALPHA_HINT, _DENSITY_HINT, _VISCOSITY_HINT, DEFAULT_FILM_FORMULA,
+                          DENSITY, FILM_FORMULAS, KINEMATIC_VISCOSITY, PRESSURE_VISCOSITY)
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
                       reference_rating_life, static_load_rating)
 
@@ -441,7 +442,7 @@ class RadialRollerBearing:
         Density rho of the lubricant, 0 < rho < inf [kg/m^3]: the film's dynamic
         viscosity eta0 = rho nu (with `pressure_viscosity`).
     pressure_viscosity : float, optional
-        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha < inf [1/Pa]:
+        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha <= 1e-7 [1/Pa]:
         with `viscosity`, `density` and a speed, the EHL film of every contact.
     roughness_roller, roughness_raceway : float, optional
         RMS roughness Rq of the rollers and of the raceways, 0 <= Rq < inf [m]: the
@@ -736,10 +737,12 @@ class RadialRollerBearing:
         if all(v is None for v in given.values()):
             return None
         lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
-        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3"),
-                           ("pressure_viscosity", "1/Pa")):
+        for name, interval, hint in (("viscosity", KINEMATIC_VISCOSITY, _VISCOSITY_HINT),
+                                     ("density", DENSITY, _DENSITY_HINT)):
             v = given[name]
-            lub[name] = None if v is None else float(check_positive(name, v, unit))
+            lub[name] = None if v is None else float(interval.check(v, hint=hint))
+        lub["pressure_viscosity"] = None if pressure_viscosity is None else float(
+            PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT))
         for name in ("roughness_roller", "roughness_raceway"):
             v = given[name]
             lub[name] = None if v is None else float(check_interval(
@@ -1091,20 +1094,32 @@ class RadialRollerBearing:
                      f"roller's range at this load ({top * 1e6:.4g} um); preloads are "
                      "a few micrometres") from None
 
-    def _solve(self, radial_load, moment, misalignment, speed, axial_load):
-        """:meth:`solve` of one radial load."""
+    def _solve(self, radial_load, moment, misalignment, speed, axial_load,
+               at_rest=False):
+        """:meth:`solve` of one radial load; `at_rest`: a duty cycle's case at
+        standstill (:func:`linecontact.bearing.spectrum.solve_spectrum`), solved
+        without the film, kappa and the modified lives, which need the rings to turn
+        (it takes no revolutions, so no fatigue damage)."""
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
-        if speed is not None:
+        if at_rest:
+            speed = None
+        elif speed is not None:
             speed = float(check_interval("speed", speed, -np.inf, np.inf, low_open=True,
                                          high_open=True, unit="rad/s"))
         elif self.lubricant is not None:
             raise CombinationError({"speed": None, "viscosity": self.lubricant[
                 "viscosity"]}, "the lubricant's film and kappa need the inner ring's "
                 "speed: give solve(..., speed=)")
-        return self._extras(self._solve_load(F, moment, misalignment), speed,
-                            axial_load)
+        sol = self._extras(self._solve_load(F, moment, misalignment), speed, axial_load)
+        if at_rest:
+            from dataclasses import replace
+
+            sol = replace(sol, speed=0.0, entrainment_speed=0.0, notes=sol.notes + (
+                "at standstill: no film, kappa or modified life (they need the rings "
+                "to turn); no revolutions, so no fatigue damage in the duty cycle",))
+        return sol
 
     def _solve_load(self, F, moment, misalignment):
         """The load distribution under F_r and a moment or misalignment."""

@@ -193,13 +193,15 @@ def _option_value(name, text, default, kind="dimensionless"):
     if isinstance(default, bool):
         return parse_bool(name, text)
     if isinstance(default, (int, float)):
+        if isinstance(default, int) and kind == "dimensionless":
+            kind = "count"  # an integer option (n_slices): a fraction is refused here
         try:
             value = parse_quantity(name, text, kind, positive=False)
         except InputError:
             if QUANTITY.match(text) or text[:1] in "+-.0123456789":
                 raise  # a number with a wrong unit (tilt=1mm), not a name
             return text  # a named constant (e.g. johnson c=johnson1985); the model checks
-        # an integer option (n_slices=40) stays an int; 40.5 goes to the model to refuse
+        # an integer option (n_slices=40) stays an int
         return int(value) if isinstance(default, int) and value.is_integer() else value
     return text
 

@@ -105,8 +105,15 @@ def resolve(values, present, fail):
          f"{label('instantaneous_modulus')}, {label('prony')}, ...)",
          "a viscoelastic pull-off depends on the speed of the receding contact edge, "
          "which the correspondence principle does not give")
+    # friction and the stresses are computed without adhesion (their laws are the
+    # non-adhesive Hertz/Cattaneo ones): each such row says so
+    names = [nm for nm in ("friction", "tangential_load", "stresses", "sliding_friction")
+             if nm in P]
+    without = ["" if not rows[i] or not any(P[nm][i] for nm in names) else
+               ", ".join(label(nm) for nm in names if P[nm][i]) + ": computed without "
+               "adhesion (the non-adhesive contact at this load)" for i in range(len(rows))]
     return State(rows, work=values["work_of_adhesion"], given=values["given"],
-                 value=values["value"], signed=rows.copy(),
+                 value=values["value"], without=without, signed=rows.copy(),
                  beyond=np.full(len(rows), "", dtype=object))
 
 
@@ -129,6 +136,7 @@ def columns(model, rows, normal, state):
     sel = np.flatnonzero(state.rows[rows])
     for j in sel:
         r = rows[j]
+        note(j, state.without[r])
         w = float(state.work[r])
         mu = float(ad.tabor_parameter(model.radius, w, model.estar))
         out["tabor"][j] = mu

@@ -55,6 +55,17 @@ notes = {
 }
 
 
+#: The default models where the library solves the roller by slices (misaligned
+#: rings): the roller feature's (linecontact.raceway.SLICE_MODELS).
+SLICE_DEFAULTS = ("profiled-roller", "iso16281-slicing")
+#: The row's note of a straight roller between misaligned rings.
+SLICED_NOTE = ("straight roller between misaligned raceways: solved by coupled slices "
+               "(a straight-cylinder law has no tilt), as linecontact bearing does")
+#: The row's note of a profiled roller between raceways without a tilt given.
+FREE_NOTE = ("roller between raceways: its tilt is free (moment equilibrium), as in "
+             "linecontact bearing; give {tilt} to hold it")
+
+
 def resolve(values, present, fail):
     """Each raceway as a radius or a diameter, both or neither; not with --radius2; the
     pair must fit the roller (linecontact.raceway.check_fit)."""
@@ -102,9 +113,20 @@ def resolve(values, present, fail):
     with np.errstate(invalid="ignore", divide="ignore"):
         r_in = effective_radius(R1, radii["inner"])
     psi = np.where(P["misalignment"], v["misalignment"], 0.0)
+    shaped = P["crown_radius"] | P["profile"]
+    # as linecontact bearing: a straight roller between misaligned rings is solved by
+    # coupled slices (the library's default there; a straight-cylinder law has no
+    # tilt), and a profiled roller tilts freely unless --tilt is given (the roller
+    # feature's default between raceways); each row says so in its note
+    with np.errstate(invalid="ignore"):
+        sliced = rows & (psi != 0) & ~shaped & ~P["tilt"]
     state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
                   compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],
-                  psi=psi)
+                  # the slice models' columns only where a row needs them (the
+                  # default set of every row otherwise: the standard laws)
+                  psi=psi, models=SLICE_DEFAULTS if sliced.any() else None,
+                  said=[SLICED_NOTE if sliced[i] else FREE_NOTE.format(tilt=label("tilt"))
+                        if shaped[i] and not P["tilt"][i] else "" for i in range(len(rows))])
     state.parts = lambda i: _parts(state, i)
     return state
 
@@ -127,6 +149,7 @@ def columns(model, rows, normal, state):
     for j, sol in enumerate(normal["solution"]):
         if sol is None:
             continue
+        flags[j] = state.said[rows[j]]
         out["depth_inner"][j] = sol.depth_inner
         out["depth_outer"][j] = sol.depth_outer
         for side in ("inner", "outer"):

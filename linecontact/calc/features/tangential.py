@@ -8,9 +8,11 @@
     the table is not installed or the case is outside it). G* needs the moduli and
     Poisson's ratios (not ``--estar``).
     For a crowned roller (``--crown-radius``) whose Hertz ellipse lies inside it, the
-    values across and along are Mindlin's for the ellipse
-    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`): the
-    calculator prints both directions, so it takes no direction option.
+    values across and along are Mindlin's for the ellipse, and for any other roller
+    solved by slices those of the equivalent ellipse of its footprint
+    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`), with
+    the error measured in tables/tangential_profiles.csv in the notes: the calculator
+    prints both directions, so it takes no direction option.
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's
@@ -62,7 +64,9 @@ notes = {
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
                   "tangential_cylinder.csv) times k, or for a crowned roller whose Hertz "
                   "ellipse lies inside it Mindlin's ratio of the ellipse (Mindlin 1949) "
-                  "times k; u: tangential shift under Q at "
+                  "times k, or for another roller solved by slices Mindlin's ratio of the "
+                  "equivalent ellipse (the footprint's half-length and k) times k; u: "
+                  "tangential shift under Q at "
                   "constant normal force or depth, u = (mu/r) [d - d(F - |Q|/mu)] sign(Q) "
                   "with r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
                   "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "
@@ -89,7 +93,19 @@ def resolve(values, present, fail):
     fail(P["tangential_load"] & ~P["friction"], "tangential_load",
          f"with {label('friction')}", "no friction coefficient given")
     v = values
+    # --friction (Coulomb, for the partial slip above) is not the sliding friction of
+    # the stresses (full sliding, q = mu p): a row with both --friction and the
+    # stresses but no --sliding-friction says which coefficient its stresses used
+    stresses = np.array([bool(P["stresses"][i]) and fail.cell("stresses", i).strip()
+                         .lower() not in ("no", "false", "0") for i in range(len(rows))],
+                        dtype=bool) if "stresses" in P else np.zeros_like(rows)
+    unslid = P["friction"] & stresses & ~P.get("sliding_friction", np.zeros_like(rows))
     return State(rows, friction=v["friction"], tangential_load=v["tangential_load"],
+                 unslid=unslid, unslid_note=(
+                     f"the stresses are frictionless: {label('friction')} is the Coulomb "
+                     "coefficient of the partial slip (stick zone, Cattaneo-Mindlin), not "
+                     f"the full sliding of the stresses; give {label('sliding_friction')} "
+                     "for them"),
                  loaded=P["tangential_load"], friction_given=P["friction"],
                  e1=v["modulus"], nu1=v["poisson"],
                  e2=np.where(P["modulus2"], v["modulus2"], np.inf),
@@ -115,6 +131,8 @@ def columns(model, rows, normal, state):
         if text and text not in flags[j]:
             flags[j] = "; ".join(t for t in (flags[j], text) if t)
 
+    for j in np.flatnonzero(state.unslid[rows]):
+        note(j, state.unslid_note)
     sel = np.flatnonzero(state.friction_given[rows] & ok)
     if not sel.size:
         return out
@@ -202,24 +220,26 @@ def _composed(contact, rows, sel, F, state, out, note):
 
 def _directions(contact, mu, F, Q, j, out, note):
     """k_t (and the shift under Q) across and along the axis of a composed contact where
-    the library has a law by direction (a crowned roller: Mindlin's ellipse, the
-    default of :meth:`linecontact.contact.Contact.tangential`); "-" with the reason
-    elsewhere."""
+    the library has a law by direction (the default of
+    :meth:`linecontact.contact.Contact.tangential`: a crowned roller's Mindlin ellipse,
+    any other sliced profile's equivalent ellipse), with the library's notes; "-" with
+    the reason elsewhere."""
+    methods = set()
     for direction in ("across", "along"):
         t = contact.tangential(mu, force=F, tangential_force=Q, direction=direction)
-        if t.method != "mindlin":
-            crowned = t.notes and "Mindlin" in t.notes[0]   # a crown, ellipse not inside
-            note(j, "kt across/along: " + (t.notes[0] if crowned else
-                                           "the BEM table is for a straight, aligned "
-                                           "cylinder"))
+        if t.method not in ("mindlin", "ellipse"):
+            note(j, "kt across/along: the law by direction is for a roller solved by "
+                    "slices (a straight cylinder's law: method='bem')")
             return
+        methods.add(t.method)
         if t.notes:
             note(j, f"kt {direction}: " + "; ".join(t.notes))
-            continue
         out[f"kt_{direction}"][j] = t.stiffness
         if Q is not None and t.shift is not None:
             out[f"shift_{direction}"][j] = t.shift
-    note(j, "kt/u across/along: Mindlin's Hertz ellipse (crowned roller)")
+    note(j, "kt/u across/along: " + ("Mindlin's Hertz ellipse (crowned roller)"
+                                     if methods == {"mindlin"} else
+                                     "the equivalent ellipse of the footprint"))
 
 
 def _slip_correction(model, direction, depth, gstar, q):

@@ -1,0 +1,245 @@
+"""Pull-off of long rollers, s = b_c/L below the BEM table: tables/adhesion_long_roller.csv.
+
+The adhesive BEM table (tables/adhesion_cylinder.csv, tools.studies.adhesion_study)
+stops at s = b_c/L = 0.025; most rollers lie below (a PDMS roller R 5 mm, L 20 mm:
+s = 0.003). There the roller pulls off below the 2D JKR value times L because its ends
+peel first. This study gives the pull-off down to s = 1e-3 by an end model whose one
+constant is calibrated on the BEM at s = 0.025 .. 0.05 and checked against BEM runs
+below the table on the same grids.
+
+The end model (a slender-body energy balance). Far from its ends the contact of a long
+roller is a 2D JKR section of half-width b with line force (Barquins 1988)
+
+    f(b) = pi E* b^2/(4R) - sqrt(2 pi E* w b),    b = beta b_c,
+    rho_2D(beta) = f/f_c = (4/3) (sqrt(beta) - beta^2/4),
+
+rho_2D the section's tension over the 2D pull-off tension f_c = (3 pi/4) E* b_c^2/R
+(rho_2D = 1 at beta = 1, 0 at the zero-load width beta = 16^(1/3)). The 3D surface displacement of a long strip loaded by a line force f is
+logarithmic in its length, u = f (2 ln(L/b) + O(1))/(pi E*) (Boussinesq's 1/r kernel,
+Johnson 1985, chapter 3, integrated along a slender strip), so the elastic energy it stores per unit length is
+f^2 (ln(L/b) + O(1))/(pi E*). When an end of the contact peels back by da at fixed
+depth this energy is released over the contact area 2 b da: the end's energy release
+rate G_e = f^2 (ln(L/b) + c)/(2 pi E* b), c the O(1) terms (the Hertz part of the
+section, the end's shape). With the section law this reads
+
+    G_e / w = (beta^2/4 - sqrt(beta))^2 / beta * (ln(1/(s beta)) + c),
+
+and an end that starts to peel under force control does not stop (the shorter contact
+carries the same force: its line force, and G_e, grow), so the pull-off is the first
+state of the stable branch (beta falling from 16^(1/3) at zero load) with G_e = w, or
+the 2D pull-off (beta = 1) where G_e < w there. At the end-peeling pull-off
+
+    rho(s) = (4/3) sqrt(beta / (ln(1/(s beta)) + c)),
+
+so rho -> 0 as s -> 0, like (4/3) 16^(1/6) / sqrt(ln(1/s)): slowly (1/rho grows with
+the square root of ln(L/b_c)), and it never tends to the 2D value: the 2D law holds
+per unit length in the middle, but a longer roller stores more energy per unit length
+(ln(L/b)) to drive its ends.
+
+Calibration and check. c is found per BEM grid n (cells across b_c) from the force-
+controlled BEM pull-offs rho_n(s) at s = 0.025, 0.035, 0.05 (tables/adhesion_cylinder.csv,
+columns ratio_force_n8, ratio_force_n16; the same deterministic solver, runs at
+s = 0.025 reproduce them bit for bit): invert rho_2D for beta, then c = 1/((beta^2/4 -
+sqrt(beta))^2/beta) - ln(1/(s beta)); c_n the mean. The grid converges at first order
+(the criterion's error falls as 1/n, tools.bem.adhesion), c = 2 c_16 - c_8, its
+error taken as |c_16 - c_8| (twice the extrapolation's own step). The check: BEM
+retractions below the table (tools.bem.adhesion.cylinder_retraction, the table's
+solver and settings) at the --check-s values on the --check-n grids, against the model
+with the same grid's c_n: the largest relative difference is the model's own error
+(model_error in the header).
+
+Error of the table's ratio: |rho(s; c +- dc) - rho(s; c)| (the larger) plus the model's
+own error times rho, plus the BEM table's error at its smallest rows (the calibration's
+data; the extrapolated values there against the finest grid's). Depth control: at these
+s the end-peeling instability ends the retraction under depth control too (the BEM's
+force at the jump-off equals the force minimum within the difference recorded per check
+run); the depth-controlled ratio is the force-controlled one with that largest measured
+difference added to its error.
+
+Budget: ``nice -n 10 python -m tools.build_tables adhesion-long --workers 1``; the
+table's ``wall_time`` records the run's own figure (the check retractions, grid n = 8:
+s = 0.0125 about 1 min, s = 0.00625 several minutes on one core).
+"""
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[2]
+
+#: Calibration rows of tables/adhesion_cylinder.csv (its smallest s).
+CALIBRATION_S = (0.025, 0.035, 0.05)
+#: Grids of the calibration (the table's columns ratio_force_nN).
+GRIDS = (8, 16)
+#: BEM check runs below the table: (s, n).
+CHECK_RUNS = ((0.0125, 8), (0.00625, 8), (0.0125, 16), (0.003125, 8))
+#: Rows of the written table: s from S_MIN to the BEM table's start, log-spaced.
+S_MIN, S_ROWS = 1e-3, 25
+#: Zero-load width of the 2D JKR section over b_c: 16^(1/3).
+BETA_ZERO = 16 ** (1 / 3)
+
+
+def rho_2d(beta):
+    """The 2D JKR section's tension over its pull-off value at half-width beta b_c."""
+    beta = np.asarray(beta, dtype=float)
+    return 4 / 3 * (np.sqrt(beta) - beta ** 2 / 4)
+
+
+def end_release(beta, s, c):
+    """G_e/w, the end's energy release rate over w (module doc)."""
+    return (beta ** 2 / 4 - np.sqrt(beta)) ** 2 / beta * (np.log(1 / (s * beta)) + c)
+
+
+def pull_off_beta(s, c):
+    """The middle section's half-width over b_c at pull-off: the largest beta in
+    [1, 16^(1/3)] with G_e = w, or 1 (the 2D pull-off) where G_e < w at beta = 1."""
+    from scipy.optimize import brentq
+
+    if end_release(1.0, s, c) <= 1.0:
+        return 1.0
+    return float(brentq(lambda b: end_release(b, s, c) - 1.0, 1.0, BETA_ZERO * (1 - 1e-12),
+                        xtol=1e-14, rtol=1e-14))
+
+
+def ratio(s, c):
+    """The end model's pull-off over the 2D JKR value times L (force control)."""
+    return float(rho_2d(pull_off_beta(s, c)))
+
+
+def calibrate(s, rho):
+    """The constant c that makes the model give `rho` at s (rho < 1)."""
+    from scipy.optimize import brentq
+
+    beta = brentq(lambda b: rho_2d(b) - rho, 1.0, BETA_ZERO, xtol=1e-14, rtol=1e-14)
+    return float(1 / ((beta ** 2 / 4 - np.sqrt(beta)) ** 2 / beta) - np.log(1 / (s * beta)))
+
+
+def add_arguments(parser):
+    parser.add_argument("--check", type=str, nargs="+",
+                        default=[f"{s:g}:{n}" for s, n in CHECK_RUNS],
+                        help="BEM check runs below the table, S:N (default "
+                             f"{' '.join(f'{s:g}:{n}' for s, n in CHECK_RUNS)})")
+    parser.add_argument("--steps", type=int, default=40,
+                        help="depth steps of each retraction (default 40, the BEM "
+                             "table's)")
+    parser.add_argument("--out", type=Path, default=REPO / "tables",
+                        help="folder for adhesion_long_roller.csv (default tables/)")
+    parser.add_argument("--bem-table", type=Path, default=REPO / "tables",
+                        help="folder of adhesion_cylinder.csv, the calibration's data "
+                             "(default tables/)")
+    from .runner import add_runner_arguments
+    add_runner_arguments(parser)
+
+
+def run(args):
+    from linecontact.tables import read_table, write_table
+    from .adhesion_study import solve_task
+    from .runner import run_study_from_args, table_meta, wall_time_line
+
+    t0 = time.perf_counter()
+    bem = read_table("adhesion_cylinder", directory=args.bem_table)
+    cols = bem.columns
+    c_by_grid, cal_lines = {}, []
+    for n in GRIDS:
+        cs = []
+        for s in CALIBRATION_S:
+            i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])
+            cs.append(calibrate(s, float(cols[f"ratio_force_n{n}"][i])))
+        c_by_grid[n] = float(np.mean(cs))
+        cal_lines.append(f"n = {n}: c = {', '.join(f'{v:.4f}' for v in cs)} at s = "
+                         f"{', '.join(f'{v:g}' for v in CALIBRATION_S)}, mean "
+                         f"{c_by_grid[n]:.4f}")
+    c8, c16 = c_by_grid[GRIDS[0]], c_by_grid[GRIDS[1]]
+    c_inf, dc = 2 * c16 - c8, abs(c16 - c8)
+    # the BEM table's own error at its calibration rows (extrapolated vs finest grid)
+    tab_err = max(abs(float(cols["ratio_force"][i]) / float(cols[f"ratio_force_n{GRIDS[1]}"][i])
+                      - 1) for i in range(len(cols["s"])) if cols["s"][i] <= max(CALIBRATION_S))
+
+    runs = [tuple(float(v) if k == 0 else int(v) for k, v in enumerate(x.split(":")))
+            for x in args.check]
+    tasks = [{"key": f"s{s:g}_n{n}", "s": s, "n": n, "steps": args.steps}
+             for s, n in sorted(runs, key=lambda r: r[1] * r[1] / r[0])]
+    own_checkpoint = getattr(args, "checkpoint", None) is None
+    if own_checkpoint:
+        args.checkpoint = REPO / "out" / "partial_adhesion_long"
+    results = run_study_from_args(solve_task, tasks, args, desc="adhesion-long study")
+
+    from .adhesion_study import f2d
+    check_lines, model_err, depth_err = [], 0.0, 0.0
+    for r in sorted(results, key=lambda r: (r["n"], -r["s"])):
+        rf, rd = r["force"] / f2d(r["s"]), r["force_depth"] / f2d(r["s"])
+        m = ratio(r["s"], c_by_grid[r["n"]])
+        model_err = max(model_err, abs(m / rf - 1))
+        depth_err = max(depth_err, abs(rd / rf - 1))
+        check_lines.append(f"s = {r['s']:g}, n = {r['n']}: BEM {rf:.4f} (depth control "
+                           f"{rd:.4f}), model with c_{r['n']} {m:.4f} ({100 * (m / rf - 1):+.2f} %)")
+    for n in GRIDS:                    # the calibration rows' own fit residual
+        for s in CALIBRATION_S:
+            i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])
+            rf = float(cols[f"ratio_force_n{n}"][i])
+            model_err = max(model_err, abs(ratio(s, c_by_grid[n]) / rf - 1))
+
+    s_rows = np.geomspace(S_MIN, float(cols["s"][0]), S_ROWS)
+    out = {k: [] for k in ("s", "ratio_force", "error_force", "ratio_depth", "error_depth",
+                           "beta", "ratio_force_n8", "ratio_force_n16")}
+    for s in s_rows:
+        r0 = ratio(s, c_inf)
+        e_c = max(abs(ratio(s, c_inf + dc) - r0), abs(ratio(s, c_inf - dc) - r0))
+        err = e_c + (model_err + tab_err) * r0
+        out["s"].append(s)
+        out["ratio_force"].append(r0)
+        out["error_force"].append(err)
+        out["ratio_depth"].append(r0)
+        out["error_depth"].append(err + depth_err * r0)
+        out["beta"].append(pull_off_beta(s, c_inf))
+        out["ratio_force_n8"].append(ratio(s, c8))
+        out["ratio_force_n16"].append(ratio(s, c16))
+    out = {k: np.array(v, dtype=float) for k, v in out.items()}
+    wall = time.perf_counter() - t0
+    meta = table_meta(
+        args.command_line,
+        title="Pull-off force of a long rigid parabolic cylinder on an elastic half-space "
+              "with JKR adhesion, over the 2D JKR value times L, against s = b_c/L below "
+              "the adhesive BEM table: end model calibrated on the BEM",
+        source="end model (tools/studies/adhesion_long_study.py): the middle a 2D JKR "
+               "section (Barquins 1988), the ends peel when G_e = f^2 (ln(L/b) + c)/(2 pi "
+               "E* b) reaches w (the energy a long line-loaded strip stores per unit "
+               "length); c calibrated on the adhesive BEM (tools/bem/adhesion.py; "
+               "tables/adhesion_cylinder.csv at s = "
+               f"{', '.join(f'{v:g}' for v in CALIBRATION_S)}) and checked by BEM "
+               "retractions below that table",
+        units="s = b_c/L = (2 w R^2/(pi E* L^3))^(1/3) [-], ratio_force = pull-off under "
+              "force control over the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L [-], "
+              "error_force = its stated error (absolute, in the ratio) [-], ratio_depth, "
+              "error_depth = the same under depth control [-], beta = the middle's "
+              "half-width at pull-off over b_c [-], ratio_force_nN = the model with the "
+              "constant of BEM grid n = N (the grid convergence) [-]",
+        model="pull-off at the first state of the stable branch with G_e/w = (beta^2/4 - "
+              "sqrt(beta))^2/beta (ln(1/(s beta)) + c) = 1; ratio = (4/3)(sqrt(beta) - "
+              f"beta^2/4); c = {c_inf:.4f} +- {dc:.4f}",
+        calibration="; ".join(cal_lines) + f"; first-order extrapolation c = 2 c_16 - c_8 "
+                    f"= {c_inf:.4f}, error |c_16 - c_8| = {dc:.4f}",
+        check="; ".join(check_lines),
+        accuracy=f"error = |ratio(c +- dc) - ratio(c)| + (model error {model_err:.2e} + "
+                 f"BEM table error {tab_err:.2e}) x ratio; model error = the largest "
+                 "|model/BEM - 1| on the same grid over the calibration rows and the check "
+                 f"runs; depth control adds {depth_err:.2e} x ratio (the largest measured "
+                 "|depth/force control - 1| of the check runs)",
+        asymptote="ratio -> (4/3) 16^(1/6)/sqrt(ln(1/s)) -> 0 as s -> 0 (the end's "
+                  "energy release grows as ln(L/b_c)); never the 2D value",
+        s_range=f"[{s_rows[0]:g}, {s_rows[-1]:g}]",
+        wall_time=wall_time_line(wall, results, "BEM check retractions", args.scheduler,
+                                 args.workers),
+    )
+    args.out.mkdir(parents=True, exist_ok=True)
+    path = args.out / "adhesion_long_roller.csv"
+    write_table(path, meta, out)
+    if own_checkpoint:
+        import shutil
+        shutil.rmtree(args.checkpoint, ignore_errors=True)
+    print(f"wrote {path}: {out['s'].size} rows in {wall:.0f} s")
+    for key in ("model", "calibration", "check", "accuracy"):
+        print(f"  {key}: {meta[key]}")
+    return 0

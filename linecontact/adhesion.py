@@ -74,9 +74,10 @@ import functools
 
 import numpy as np
 
+from ._numerics import out
+from .checks import Interval, check_positive, document
+from .errors import OutOfRangeError, UnknownNameError
 from .tables import TableError, read_table
-from .validity import (Interval, OutOfRangeError, UnknownNameError, check_positive,
-                       document, out)
 
 __all__ = [
     "AdhesiveContact",
@@ -250,7 +251,7 @@ class AdhesiveContact:
     and the finite cylinder's). The extrema (pull-off under both controls) are found
     on a log-spaced scan of a over 12 decades around `x_scale` and refined by Brent's
     method to a relative 1e-12 in a; one lying on the scan's end raises
-    :class:`~linecontact.validity.OutOfRangeError` (e.g. beyond `x_max`). Exact for
+    :class:`~linecontact.errors.OutOfRangeError` (e.g. beyond `x_max`). Exact for
     axisymmetric bodies; for elongated contacts see :class:`CylinderAdhesion`.
 
     Examples
@@ -471,7 +472,7 @@ class AdhesiveContact:
         """MDR half-length a at depth d on the stable (a > a_d) or unstable branch [m].
 
         Depths below the depth-controlled pull-off have no contact and raise
-        :class:`~linecontact.validity.OutOfRangeError` naming the range.
+        :class:`~linecontact.errors.OutOfRangeError` naming the range.
         """
         from scipy.optimize import brentq
 
@@ -520,7 +521,7 @@ class AdhesiveContact:
         """Depth d [m] at force F [N] on the force-controlled stable branch (a > a_F).
 
         Forces below the force-controlled pull-off have no contact and raise
-        :class:`~linecontact.validity.OutOfRangeError` naming the range.
+        :class:`~linecontact.errors.OutOfRangeError` naming the range.
         """
         from scipy.optimize import brentq
 
@@ -967,8 +968,3 @@ class CylinderAdhesion:
         z = self.mdr.zero_load()
         return {"half_width_2d": float(np.cbrt(32 * R ** 2 * self.work / (np.pi * E))),
                 "mdr_half_length": z["contact_radius"], "mdr_depth": z["depth"]}
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -88,10 +88,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._numerics import serial_blas
+from .checks import check_interval, check_positive
+from .errors import CombinationError, OutOfRangeError, UnknownNameError
 from .profiles import TILT_RANGE
 from .raceway import Raceways, effective_radii, roller_between_raceways
-from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
-                       check_interval, check_positive)
 
 __all__ = [
     "RadialRollerBearing",
@@ -1355,8 +1355,3 @@ class RadialRollerBearing:
         Fm = math.sqrt(Fi[i] * Fi[i + 1])
         si, so = solvers[0](Fm), solvers[1](Fm)
         return abs(float(law.delta_of(Fm)) / (si.depth + so.depth) - 1.0)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

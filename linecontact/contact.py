@@ -25,7 +25,7 @@ contact from its own normal law F(d) by the method of dimensionality reduction
 law by Lee & Radok's correspondence (:mod:`linecontact.viscoelastic`); the whole roller
 between raceways from its two contacts (:mod:`linecontact.raceway`). An output the
 physics or the methods here do not define for a combination is refused: a result field
-is None and :meth:`ContactResult.get` raises :class:`~linecontact.validity.CombinationError`
+is None and :meth:`ContactResult.get` raises :class:`~linecontact.errors.CombinationError`
 with the reason, and a combination that defines nothing is refused when the
 :class:`Contact` is built or the method called. The depth of a contact is its approach
 at the roller's centre (x = 0); ``approach`` is measured from first contact (they differ
@@ -47,11 +47,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numerics import out
+from .checks import check_positive
+from .errors import CombinationError, OutOfRangeError, UnknownNameError
 from .models import ContactModel
 from .profiles import FREE_TILT, TILT_RANGE, CircularCrownProfile, as_profile, is_free_tilt
 from .raceway import SLICE_MODELS, Raceways, roller_between_raceways
-from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
-                       check_positive, out)
 
 __all__ = [
     "Roller",
@@ -282,8 +283,8 @@ class Elastic:
     poisson: object
 
     def __init__(self, modulus, poisson=None):
+        from .checks import POISSON_RATIO
         from .classical import MODULUS_OR_RIGID
-        from .validity import POISSON_RATIO
 
         E = MODULUS_OR_RIGID.check(modulus).item()
         nu = None if poisson is None else POISSON_RATIO.check(poisson).item()
@@ -362,7 +363,7 @@ class _Result:
         >>> c.normal(force=1e3).get("q")
         Traceback (most recent call last):
         ...
-        linecontact.validity.CombinationError: model = 'universal', output = 'q': a straight-cylinder law gives F(d), not the load along the roller; use model='profiled-roller' (coupled slices)
+        linecontact.errors.CombinationError: model = 'universal', output = 'q': a straight-cylinder law gives F(d), not the load along the roller; use model='profiled-roller' (coupled slices)
         """
         if name not in self.__dataclass_fields__:
             raise UnknownNameError("output", name, list(self.__dataclass_fields__))
@@ -1379,8 +1380,3 @@ class Contact:
         why = ({"depth": "given"}, "the depth is prescribed: no long-term creep depth")
         return CreepResult(time=t, force=out(F), depth=d, long_term_depth=None,
                            model=self.model, reasons={"long_term_depth": why})
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -51,7 +51,7 @@ from pathlib import Path
 import numpy as np
 
 from ._units import _PREFIXES
-from .validity import OutOfRangeError, UnknownNameError
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = ["force_depth", "line_load", "profiled_roller", "pressure_field",
            "pressure_map", "adhesion", "creep", "hysteresis", "stresses", "bearing",
@@ -305,7 +305,7 @@ def save(fig, path, *, dpi=DPI):
     >>> save(None, "figure.jpg")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
+    linecontact.errors.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
     """
     path = Path(path)
     ext = path.suffix.lower().lstrip(".")
@@ -1325,8 +1325,3 @@ def bearing(solution, *, fig=None):
         title += f"; {' and '.join(zero)} zero"
     axes[0].set_title(title, fontsize=8)
     return fig
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

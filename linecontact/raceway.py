@@ -63,9 +63,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._numerics import out
+from .checks import Interval, check_positive
+from .errors import CombinationError, OutOfRangeError, UnknownNameError
 from .profiles import TILT_RANGE, is_free_tilt
-from .validity import (CombinationError, Interval, OutOfRangeError, UnknownNameError,
-                       check_positive, out)
 
 __all__ = [
     "Raceways",
@@ -260,7 +261,7 @@ def check_fit(roller_radius, inner_radius, outer_radius, tolerance=FIT_TOLERANCE
     >>> check_fit(5e-3, 40e-3, 60e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.CombinationError: roller_radius = 0.005 m, inner_radius = 0.04 m, outer_radius = 0.06 m: the raceways do not fit the roller: Ro - Ri = 0.02 m, not the roller diameter 2 R1 = 0.01 m within 1 % (the difference 0.01 m exceeds 0.0001 m); Ro - Ri = 4 R1: diameters given as radii?
+    linecontact.errors.CombinationError: roller_radius = 0.005 m, inner_radius = 0.04 m, outer_radius = 0.06 m: the raceways do not fit the roller: Ro - Ri = 0.02 m, not the roller diameter 2 R1 = 0.01 m within 1 % (the difference 0.01 m exceeds 0.0001 m); Ro - Ri = 4 R1: diameters given as radii?
 
     References
     ----------
@@ -657,8 +658,3 @@ def _series_stiffness(si, so, free):
                   [Ki[1, 0], -Ko[1, 0], Ki[1, 1] + Ko[1, 1]]])
     dd_in, dd_out, _ = np.linalg.solve(A, [1.0, 1.0, 0.0])
     return 1.0 / (dd_in + dd_out)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -18,8 +18,8 @@ import pytest
 from linecontact.adhesion import (AdhesiveContact, CylinderAdhesion,
                                   jkr_cylinder_force_per_length, jkr_cylinder_pull_off,
                                   tabor_note, tabor_parameter)
+from linecontact.errors import OutOfRangeError
 from linecontact.models import get_model
-from linecontact.validity import OutOfRangeError
 
 R, E, W = 10e-3, 1.5e6, 0.04
 
@@ -232,8 +232,8 @@ def test_unknown_control_or_method_is_an_unknown_name():
     """A control or method that is not one of the names is an UnknownNameError listing
     the names (a name has no range), the project's rule for every named option."""
     from linecontact.adhesion import CylinderAdhesion
+    from linecontact.errors import UnknownNameError
     from linecontact.models import get_model
-    from linecontact.validity import UnknownNameError
 
     c = CylinderAdhesion(get_model("universal", 1e-3, 2e-3, 6.7e4), 0.05)
     with pytest.raises(UnknownNameError, match="'bem', 'mdr'"):

@@ -14,7 +14,7 @@ from linecontact.bearing import (RadialRollerBearing, basic_rating_life,
                                  dynamic_load_rating, lamina_load_ratings,
                                  load_zone_integral, reference_rating_life)
 from linecontact.calc.cli import main
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 N = 10 / 9
 

@@ -13,9 +13,9 @@ import pytest
 from linecontact.bearing import RadialRollerBearing
 from linecontact.calc.cli import main
 from linecontact.classical import hertz_half_width
+from linecontact.errors import CombinationError, OutOfRangeError
 from linecontact.raceway import effective_radii
 from linecontact.stresses import strip_maxima
-from linecontact.validity import CombinationError, OutOfRangeError
 
 
 @pytest.fixture(scope="module")

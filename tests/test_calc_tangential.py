@@ -12,8 +12,9 @@ import numpy as np
 import pytest
 
 import linecontact.tangential as tg
-from linecontact.classical import effective_modulus
+import linecontact.tangential.cylinder_table as tg_table
 from linecontact.calc.cli import main
+from linecontact.classical import effective_modulus
 from linecontact.models import get_model
 from linecontact.tables import read_table, write_table
 from linecontact.viscoelastic import StandardLinearSolid, step_creep_depth
@@ -41,7 +42,7 @@ def table(tmp_path, monkeypatch):
         nu=nu, d_tilde=dt, kt_kn_across=np.where(nu == 0, 1.0, 0.9),
         kt_kn_along=np.where(nu == 0, 1.0, 0.75)))
     t = tg.CylinderTangentialTable(read_table("t", directory=tmp_path))
-    monkeypatch.setattr(tg, "_cached_table", lambda name: t)
+    monkeypatch.setattr(tg_table, "_cached_table", lambda name: t)
     return t
 
 
@@ -93,7 +94,7 @@ def test_shift_with_the_tables_slip_correction_is_the_runtimes(capsys, tmp_path,
         cols[f"shift_ratio_{side}_q1"] = np.full(nu.shape, c)
     write_table(tmp_path / "t.csv", META, cols)
     t = tg.CylinderTangentialTable(read_table("t", directory=tmp_path))
-    monkeypatch.setattr(tg, "_cached_table", lambda name: t)
+    monkeypatch.setattr(tg_table, "_cached_table", lambda name: t)
     rows = _json(capsys, CASE + ELASTIC + ["--friction", "0.1", "--tangential-load",
                                            "30N:90N:2", "--linear"])
     m = get_model("universal", 5e-3, 10e-3, effective_modulus(210e9, 0.3))

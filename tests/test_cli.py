@@ -227,7 +227,7 @@ def test_json_results_equal_the_library_called_with_si_inputs(results):
     """The command converts units and hands SI to the library: its depth, stiffness and
     MDR radius at F = 1 kN equal those of the models built in-process (R = 5 mm,
     L = 10 mm, E* = 210 GPa / (1 - 0.3^2) by Eq. 3 with a rigid cylinder)."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     doc = _json(results, "one_json")
     assert math.isclose(doc["inputs"]["estar"], 210e9 / (1 - 0.09), rel_tol=1e-12)
@@ -315,7 +315,7 @@ def test_second_body_follows_eq3(results):
 def test_depth_input_gives_force_and_depth_column_first(results):
     """With --depth each model returns the force at that depth (its force(d)), and the
     table's first value column is d."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     doc = _json(results, "depth_json")
     compared = 0

@@ -14,10 +14,10 @@ import pytest
 
 from linecontact.contact import (Concave, Contact, Convex, Elastic, Flat, Raceways,
                                  Roller, Viscoelastic)
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.profiles import CircularCrownProfile
 from linecontact.raceway import roller_between_raceways
 from linecontact.roller import ProfiledRoller
-from linecontact.validity import CombinationError, UnknownNameError
 from linecontact.viscoelastic import PronySeries, StandardLinearSolid, effective_relaxation
 
 N = 40
@@ -278,7 +278,7 @@ def test_undefined_combinations_are_refused_with_one_line(build, match):
 def test_unknown_names_are_unknown_name_errors_listing_the_valid_ones():
     """An unknown model key or tilt word raises UnknownNameError (a ValueError, not an
     OutOfRangeError) listing what is accepted."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     with pytest.raises(UnknownNameError, match="'universal'") as err:
         Contact(Roller(5e-3, 10e-3), estar=1e11, model="hertz")
@@ -369,7 +369,7 @@ def test_creep_returns_the_history_where_only_the_long_term_depth_is_out_of_rang
     viscoelastic.creep_depth, the same integral), long_term_depth is None and its
     reason names the force and the range; a later time whose d(t) leaves the range is
     refused naming that time."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
     from linecontact.viscoelastic import StandardLinearSolid, creep_depth
 
     c = Contact(Roller(5e-3, 10e-3), material1=Elastic(math.inf),

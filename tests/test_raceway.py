@@ -14,10 +14,10 @@ import sys
 import numpy as np
 import pytest
 
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.raceway import (FIT_TOLERANCE, Raceways, check_fit, effective_radii,
                                  roller_between_raceways)
 from linecontact.roller import ProfiledRoller
-from linecontact.validity import CombinationError, UnknownNameError
 
 R1, L = 5e-3, 10e-3
 E_STEEL = 210e9 / (2 * (1 - 0.3 ** 2))          # E* of steel on steel [Pa]

@@ -13,11 +13,11 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import minimize_scalar
 
+from linecontact.errors import OutOfRangeError
 from linecontact.roller import ProfiledRoller
 from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
                                   line_contact_stresses, roller_stresses, strip_maxima,
                                   strip_stresses)
-from linecontact.validity import OutOfRangeError
 
 ESTAR = 115.385e9
 
@@ -258,14 +258,15 @@ def test_3d_correction_of_a_long_even_strip_is_its_end_effect():
     2e-4; the depth stays the strip's to 1 % of b. The middle's field: the search
     around p0's largest (the strip's worst as a whole lies at its loaded ends, 4.5 %
     above McEwen's, which roller_stresses' search over the whole strip finds)."""
-    import linecontact.stresses as ls
+    from linecontact.stresses import measures, strip
+    from linecontact.stresses import search as ls
     b, p0 = 1e-4, 1e9
     m = strip_maxima(0.1, 0.3)
     excess = []
     for half, n in ((200, 401), (2000, 801)):
         x = np.linspace(-half * b, half * b, n)
         p = p0 * (1 + 1e-7 * (1 - (x / x[-1]) ** 2))
-        w = ls._worst_3d(x, np.full(n, b), p, 0.1, 0.3, ls._maxima(0.1, 0.3),
+        w = ls._worst_3d(x, np.full(n, b), p, 0.1, 0.3, strip._maxima(0.1, 0.3),
                          wide=False)["tresca"]
         assert abs(w["slice"] - n // 2) <= 2
         assert w["z"] / b == pytest.approx(m.z["tresca"], abs=1e-2)
@@ -335,7 +336,7 @@ def test_corner_sums_equal_the_direct_corner_functions():
     functions (rectangle_stresses' path) to 1e-10 of the sums of magnitudes, for
     offsets 1e-3 to 1e4 times the depth, and the single-function path (the orthogonal
     shear's) equals its row."""
-    from linecontact.stresses import _PYZ, _love_corner
+    from linecontact.stresses.love import _PYZ, _love_corner
     rng = np.random.default_rng(7)
     for scale in (1e-3, 1.0, 1e4):
         X = (rng.random((1, 300)) - 0.5) * scale
@@ -358,7 +359,7 @@ def test_corner_sums_on_the_edges_extensions_and_near_the_surface():
     where d psi1/dz -> -pi/2 sign(XY) and d2H1/dx2 + d2H1/dy2 -> the same with its sign
     reversed). Each corner alone (unit weight) against the stacked direct functions, to
     1e-12 of max(1, |value|)."""
-    from linecontact.stresses import _love_corner
+    from linecontact.stresses.love import _love_corner
     v = np.array([0.0, -0.0, 1e-12, -1e-12, 0.3, -0.3, 7.0, -7.0, 1e4, -1e4])
     X = np.repeat(v, v.size)[None, :]
     Y = np.tile(v, v.size)[None, :]
@@ -390,7 +391,7 @@ def test_3d_correction_corners_rebuild_the_pressure_difference():
     max(b_i, b_k0); beyond the roller's ends -q_k0/(2 b_k0) (k0's strip extended). So
     the far cells' corners merged on common edges (adjacent cells of one half-width)
     lose nothing; and no two corners share a position."""
-    from linecontact.stresses import _N_Y, _NEAR, _corners_3d, _hertz_cell_means
+    from linecontact.stresses.search import _N_Y, _NEAR, _corners_3d, _hertz_cell_means
     for shape, force, tilt in (("circular:Rc=0.5", 4200.0, 0.0), ("iso16281", 11200.0, 2e-3),
                                ("end-relief:r=2mm,l=1.5mm", 4200.0, 0.0)):
         r = ProfiledRoller(5e-3, 14e-3, ESTAR, shape)
@@ -467,7 +468,7 @@ def test_roller_stresses_with_every_maximum_at_the_surface_keep_the_strips():
     rule): the search must not fail for lack of a measure below the surface, and the
     solution says what it is, a plane-strain strip result (no 3D correction made)."""
     from linecontact.roller import roller_contact
-    from linecontact.stresses import _maxima
+    from linecontact.stresses.strip import _maxima
     sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     for mu in (0.4, 0.5, 1.0):
         assert all(_maxima(mu, 0.3).z[n] < 0.1 for n in MEASURES), mu
@@ -481,14 +482,15 @@ def _brute_worst(sol, mu=0.0, nu=0.3, n=15):
     """Each subsurface measure's worst by brute force: below EVERY loaded slice an n x n
     grid over the search's window (+-0.4 b, +-0.3 b around the strip optimum, z >=
     0.05 b), the library's own 3D field. Returns name -> (value [Pa], slice)."""
-    import linecontact.stresses as ls
+    from linecontact.stresses import measures, strip
+    from linecontact.stresses import search as ls
     x = np.asarray(sol.x, float)
     b = np.asarray(sol.half_width, float)
     q = np.asarray(sol.q, float)
     loaded = (b > 0) & (q > 0)
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
-    m = ls._maxima(mu, nu)
+    m = strip._maxima(mu, nu)
     xe = ls._slice_edges(x)
     cache = {}
 
@@ -508,7 +510,7 @@ def _brute_worst(sol, mu=0.0, nu=0.3, n=15):
             pz = np.maximum((m.z[name] + 0.3 * V) * b[k], 0.05 * b[k])
             shear = name == "orthogonal_shear"
             r = ls._field_3d(x, b, p0, mu, nu, [(k, py, pz, shear)], corners)[0]
-            v = np.abs(r) if shear else ls._measure_3d(name, *r)
+            v = np.abs(r) if shear else measures._measure_3d(name, *r)
             if v.max() > best[0]:
                 best = (float(v.max()), int(k))
         out[name] = best

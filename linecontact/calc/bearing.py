@@ -145,7 +145,7 @@ def _value(name, text, label):
 
 def _estar(v, label):
     from ..classical import effective_modulus
-    from ..validity import CombinationError
+    from ..errors import CombinationError
 
     if v["estar"] is not None:
         if any(v[k] is not None for k in ("modulus", "poisson", "modulus2", "poisson2")):
@@ -169,7 +169,7 @@ def _estar(v, label):
 def solve_one(cells, label=option_name):
     """(bearing, solution) from the typed cells of one bearing (name -> text)."""
     from ..bearing import RadialRollerBearing
-    from ..validity import OutOfRangeError
+    from ..errors import OutOfRangeError
 
     v = {p.name: _value(p.name, cells.get(p.name), label) for p in PARAMETERS}
     for need in ("rollers", "pitch_diameter", "roller_diameter", "length", "radial_load"):
@@ -185,7 +185,7 @@ def solve_one(cells, label=option_name):
                             model=v["model"], profile=v["profile"], rating=v["rating"],
                             **kw)
     if v["tilting_moment"] is not None and v["misalignment"] is not None:
-        from ..validity import CombinationError
+        from ..errors import CombinationError
 
         raise CombinationError({label("tilting_moment"): v["tilting_moment"],
                                 label("misalignment"): v["misalignment"]},

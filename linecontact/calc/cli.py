@@ -251,8 +251,8 @@ def _calc_one(args, argv, specs):
     if bad:  # an unexpected failure of a model, or a feature's one-case refusal
         raise _Failed(bad)
     if args.plot is not None:  # refuse a bad file name before anything is written
+        from ..errors import OutOfRangeError
         from ..plot import FORMATS
-        from ..validity import OutOfRangeError
         if args.plot.rsplit(".", 1)[-1].lower() not in FORMATS:
             raise OutOfRangeError("--plot", args.plot, "a name ending in .png, .svg "
                                   "or .pdf")
@@ -316,7 +316,7 @@ def main(argv=None):
     except ValueError as exc:
         # InputError, BatchError (ours) or the library's OutOfRangeError
         from .._units import InputError
-        from ..validity import CombinationError, OutOfRangeError, UnknownNameError
+        from ..errors import CombinationError, OutOfRangeError, UnknownNameError
         from .batch import BatchError
 
         if not isinstance(exc, (InputError, OutOfRangeError, BatchError, CombinationError,

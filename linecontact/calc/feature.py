@@ -37,7 +37,7 @@ How to add a feature (one module + one registration line)
            parameter as written (``--tilt`` or the column ``tilt``), ``fail.cell(name,
            i)`` its text in row i, ``fail.batch`` True for a CSV batch,
            ``fail.message(mask, text)`` refuses with a library's own one-line message
-           (a :class:`~linecontact.validity.CombinationError`). Return None
+           (a :class:`~linecontact.errors.CombinationError`). Return None
            when none of the feature's inputs is given (the feature is then inactive and
            costs nothing: import heavy modules inside ``columns``/``blocks``), else a
            :class:`State` whose ``rows`` marks where it is active.
@@ -122,7 +122,7 @@ class Parameter:
     positive : bool
         Values must be > 0 (otherwise any finite number, e.g. a concave radius < 0).
     bounds : str, optional
-        Name of a :mod:`linecontact.validity` Interval the value must lie in.
+        Name of a :mod:`linecontact.checks` Interval the value must lie in.
     sweep : bool
         May be a sweep ``START:STOP:N`` on the command line (every numeric parameter
         may: two sweeps give the grid).
@@ -285,9 +285,9 @@ def bounds_of(p):
     """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
-    from .. import validity
+    from .. import checks
 
-    iv = getattr(validity, p.bounds)
+    iv = getattr(checks, p.bounds)
     return (iv.contains, iv.describe())
 
 
@@ -314,7 +314,7 @@ def each(func, idx, notes, width=1, missing=""):
     element where a call is refused (its reason in ``notes[k]``); returns shape (n,) or
     (n, width), NaN where refused. A missing file (a table not installed) is said in
     every note: `missing`, or the file name."""
-    from ..validity import OutOfRangeError
+    from ..errors import OutOfRangeError
 
     shape = (idx.size,) if width == 1 else (idx.size, width)
     try:

@@ -102,7 +102,7 @@ def calc_frame(cases, *, model=None, **options):
     known = {p.name for p in PARAMETERS}
     unknown = sorted(set(options) - known)
     if unknown:
-        from ..validity import UnknownKeywordError
+        from ..errors import UnknownKeywordError
         raise UnknownKeywordError("calc_frame", unknown[0],
                                   ["cases", "model", *sorted(known)])
     if len(cases) == 0:

@@ -139,8 +139,3 @@ __all__ = [
     "ISO_MIN_SLICES",
     "TILT_RANGE",
 ]
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from ..validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -12,8 +12,9 @@ import math
 
 import numpy as np
 
+from ..checks import check_interval, check_positive
+from ..errors import OutOfRangeError
 from ..profiles import as_profile, is_free_tilt, roller_drop
-from ..validity import OutOfRangeError, check_interval, check_positive
 from .slices import N_SLICES, TILT_RANGE
 from .solution import RollerSolution, contact_extent, peak_pressure
 

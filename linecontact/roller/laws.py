@@ -6,10 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._numerics import BLOCK, UniformHermite
+from .._numerics import BLOCK, UniformHermite, out
+from ..checks import check_positive
 from ..models import ContactModel, register
 from ..profiles import as_profile
-from ..validity import check_positive, out
 from .iso import iso_slicing
 from .model import ProfiledRoller
 from .slices import DEFAULT_N_SLICES, TILT_RANGE

@@ -90,7 +90,7 @@ def columns(model, rows, normal, state):
     """Pull-off (BEM-corrected and MDR), zero load, the force or depth with adhesion and
     the Tabor parameter, for the rows of one contact and one model."""
     from ... import adhesion as ad
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
 
     n = len(rows)
     out = {c: np.full(n, np.nan) for c in fields}

@@ -58,8 +58,8 @@ notes = {
 def resolve(values, present, fail):
     """Each raceway as a radius or a diameter, both or neither; not with --radius2; the
     pair must fit the roller (linecontact.raceway.check_fit)."""
+    from ...errors import CombinationError
     from ...raceway import check_fit
-    from ...validity import CombinationError
 
     P, v, label = present, values, fail.label
     given = {s: P[f"{s}_raceway"] | P[f"{s}_raceway_diameter"] for s in ("inner", "outer")}

@@ -117,7 +117,7 @@ def resolve(values, present, fail):
     fail(some & P["hardness_profile"], "hardness_profile",
          f"either {label('hardness_profile')} or {three}", "conflicts")
     hardness = [None] * n
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
     from ...stresses import HardnessProfile
     for i in np.flatnonzero(on & (some | P["hardness_profile"])):
         try:
@@ -149,8 +149,8 @@ def _read_profile(path):
 
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
+    from ...errors import OutOfRangeError
     from ...stresses import case_check, line_contact_stresses, roller_stresses
-    from ...validity import OutOfRangeError
 
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}

@@ -169,7 +169,7 @@ def _composed(contact, rows, sel, F, state, out, note):
     """k_t, Q/(mu F) and the shift of a composed contact (a profiled or tilted roller):
     :meth:`linecontact.contact.Contact.tangential`, the MDR on the contact's own F(d);
     the BEM table's across/along values are for a straight, aligned cylinder only."""
-    from ...validity import CombinationError, OutOfRangeError
+    from ...errors import CombinationError, OutOfRangeError
 
     for j in sel:
         i = rows[j]

@@ -44,17 +44,24 @@ def test_bem_columns_are_the_library_values(capsys):
 
 
 def test_columns_are_the_library_values(capsys):
-    """Below the BEM table (s = 0.0067) the corrected pull-off is not given (NaN, the
-    row's note says why) and the MDR's error is not measured; the MDR pull-off, zero
-    load, the depth at the load with adhesion and the Tabor parameter equal the
-    library's."""
+    """Below the BEM table (s = 0.0067) the pull-off is the long roller's end model
+    (the row's note says so) with its stated error, beside the 2D JKR value times L, and
+    the MDR's error is measured against it; the MDR pull-off, zero load, the depth at
+    the load with adhesion and the Tabor parameter equal the library's."""
     row = _row(capsys, CASE + ["--load", "10mN", "--work-of-adhesion", "40mJ/m^2"])
     E = effective_modulus(2e6, 0.5)
     m = get_model("universal", 0.5e-3, 2e-3, E)
     mdr = AdhesiveContact.from_model(m, 0.04)
-    assert row["pull_off_force"] is None or np.isnan(row["pull_off_force"])
-    assert row["pull_off_mdr_error"] is None or np.isnan(row["pull_off_mdr_error"])
+    c = CylinderAdhesion(m, 0.04)
+    f, d = c.pull_off("force"), c.pull_off("depth")
+    assert f["method"] == "end-model"
+    assert row["pull_off_force"] == pytest.approx(f["force"], rel=1e-12)
+    assert row["pull_off_depth_ctrl"] == pytest.approx(d["force"], rel=1e-12)
+    assert row["pull_off_error"] == pytest.approx(max(f["error"], d["error"]), rel=1e-12)
+    assert row["pull_off_2d"] == pytest.approx(c.pull_off_2d, rel=1e-12)
+    assert row["pull_off_mdr_error"] == pytest.approx(f["mdr_error"], rel=1e-12)
     assert "below the BEM table" in json.dumps(row)
+    assert "end model" in json.dumps(row)
     assert row["pull_off_mdr"] == pytest.approx(mdr.pull_off("force")["force"], rel=1e-12)
     assert row["zero_load_depth"] == pytest.approx(mdr.zero_load()["depth"], rel=1e-12)
     assert row["depth_adhesive"] == pytest.approx(mdr.depth_at_force(0.01), rel=1e-12)

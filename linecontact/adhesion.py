@@ -800,7 +800,10 @@ class CylinderAdhesion:
     table : str, optional
         Table stem (default :data:`ADHESION_TABLE`).
     directory : path-like, optional
-        Read the table from this folder instead of tables/.
+        Read the tables from this folder instead of tables/.
+    long_table : str, optional
+        Stem of the long roller's table below the BEM table (default
+        :data:`LONG_ROLLER_TABLE`).
 
     Notes
     -----

@@ -174,7 +174,10 @@ def run(args):
         model_err = max(model_err, abs(m / rf - 1))
         depth_err = max(depth_err, abs(rd / rf - 1))
         check_lines.append(f"s = {r['s']:g}, n = {r['n']}: BEM {rf:.4f} (depth control "
-                           f"{rd:.4f}), model with c_{r['n']} {m:.4f} ({100 * (m / rf - 1):+.2f} %)")
+                           f"{rd:.4f}), model with c_{r['n']} {m:.4f} ({100 * (m / rf - 1):+.2f} "
+                           f"%); the middle's half-width at pull-off BEM "
+                           f"{r['width_min'] / r['s']:.2f} b_c, model "
+                           f"{pull_off_beta(r['s'], c_by_grid[r['n']]):.2f} b_c")
     for n in GRIDS:                    # the calibration rows' own fit residual
         for s in CALIBRATION_S:
             i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])

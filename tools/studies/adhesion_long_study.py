@@ -235,6 +235,10 @@ def run(args):
         s_range=f"[{s_rows[0]:g}, {s_rows[-1]:g}]",
         wall_time=wall_time_line(wall, results, "BEM check retractions", args.scheduler,
                                  args.workers),
+        cpu_time=f"{sum(r.get('cpu', 0.0) for r in results):.0f} s in the check "
+                 "retractions (" + ", ".join(f"s = {r['s']:g}, n = {r['n']}: "
+                                             f"{r.get('cpu', 0.0):.0f} s"
+                                             for r in results) + ")",
     )
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "adhesion_long_roller.csv"

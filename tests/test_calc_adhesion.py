@@ -69,6 +69,24 @@ def test_columns_are_the_library_values(capsys):
     assert row["depth_adhesive"] > row["depth"], "adhesion pulls the roller in deeper"
 
 
+def test_below_the_long_roller_table_no_pull_off_and_no_bare_mdr(capsys):
+    """s = b_c/L below 1e-3 (R 5 mm, L 200 mm, w 1 mJ/m^2: s = 9e-5): neither the pull-off
+    nor the rule of Hess is printed (its error is measured nowhere there: it is never
+    the only pull-off shown without one); the 2D JKR value times L is, and the note
+    says why."""
+    argv = ["calc", "--radius", "5mm", "--length", "200mm", "--modulus", "2MPa",
+            "--poisson", "0.5", "--model", "universal", "--load", "10mN",
+            "--work-of-adhesion", "1mJ/m^2"]
+    row = _row(capsys, argv)
+    for key in ("pull_off_force", "pull_off_mdr", "pull_off_error"):
+        assert row[key] is None or np.isnan(row[key])
+    m = get_model("universal", 5e-3, 0.2, effective_modulus(2e6, 0.5))
+    c = CylinderAdhesion(m, 1e-3)
+    assert c.s < 1e-3
+    assert row["pull_off_2d"] == pytest.approx(c.pull_off_2d, rel=1e-12)
+    assert "below the long roller's table" in json.dumps(row)
+
+
 def test_depth_given_gives_the_adhesive_force(capsys):
     """With --depth the row has the force at that depth with adhesion (rule of Hess),
     smaller than without: adhesion adds tension at the contact edge."""

@@ -140,6 +140,10 @@ def columns(model, rows, normal, state):
         out["zero_load_half_width"][j] = np.cbrt(32 * model.radius ** 2 * w /
                                                  (np.pi * model.estar))
         if getattr(model, "key", "") not in ad.CYLINDER_MODELS:
+            if np.isfinite(out["pull_off_mdr"][j]):
+                out["pull_off_mdr"][j] = np.nan
+                note(j, "Fc MDR not printed: the rule of Hess's error is measured for a "
+                        "straight cylinder only (adhesive BEM), not for this model")
             continue
         sub = [""]
 

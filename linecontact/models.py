@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import abc
 import math
-import os
 import sys
 from importlib import import_module
 
@@ -49,19 +48,22 @@ import numpy as np
 
 from . import classical as _c
 from ._numerics import blockwise, out
-from .checks import check_flag, check_interval, check_positive, check_scaled, document
-from .errors import OutOfRangeError, UnknownKeywordError, UnknownNameError
+from .accuracy import MODEL_ACCURACY, model_accuracy
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import available_tables, read_table, table_path
+from .tables import available_tables
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
+from .errors import OutOfRangeError, UnknownKeywordError, UnknownNameError
+from .checks import check_flag, check_interval, check_positive, check_scaled, document
 
 __all__ = [
     "ContactModel",
     "scales_are_normal",
     "MODELS",
     "DEFAULT_MODEL",
+    "SLICE_MODELS",
+    "DEFAULT_SLICE_MODEL",
     "register",
     "get_model",
     "available_models",
@@ -88,6 +90,11 @@ DEFINED_IN = {
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
+#: Models that solve a profiled, tilted roller by slices; each one's solver of a
+#: contact comes from :func:`linecontact.roller.solvers.slice_solver`.
+SLICE_MODELS = ("profiled-roller", "iso16281-slicing")
+#: Model used for a profiled or tilted roller unless told otherwise (coupled slices).
+DEFAULT_SLICE_MODEL = "profiled-roller"
 
 
 def register(cls):
@@ -1181,27 +1188,14 @@ class UniversalModel(ContactModel):
 
 
 # --------------------------------------------------------------------------------------
-ACCURACY_TABLE = "model_accuracy"
+ACCURACY_TABLE = MODEL_ACCURACY
 _NOT_APPLICABLE, _NO_ANSWER = 98.0, 99.0   # flags of tables/model_accuracy.csv
-_ACCURACY_CACHE: dict = {}
-
-
-def _accuracy_table():
-    """tables/model_accuracy.csv, read once per file version; None if absent."""
-    try:
-        path = table_path(ACCURACY_TABLE)
-    except FileNotFoundError:
-        return None
-    key = (str(path), os.stat(path).st_mtime_ns)
-    if key not in _ACCURACY_CACHE:
-        _ACCURACY_CACHE[key] = read_table(ACCURACY_TABLE)
-    return _ACCURACY_CACHE[key]
 
 
 def _measured_error(tag, length_over_radius):
     """Text: range of the measured F and k errors of model `tag` at the study's L/R
     rows bracketing `length_over_radius` (see :attr:`ContactModel.measured_error`)."""
-    table = _accuracy_table()
+    table = model_accuracy()
     if table is None:
         return (f"not measured: tables/{ACCURACY_TABLE}.csv is missing "
                 "(python -m tools.build_tables accuracy)")

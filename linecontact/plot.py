@@ -28,7 +28,8 @@ Several results in one figure: :func:`panels`. Every function takes ``fig=`` (a
 ``Figure`` or ``SubFigure`` to draw into; the single-panel ones also ``ax=``), so
 :func:`panels` stacks any of them. Readable by default: each curve its own colour,
 marker and dash, the legend outside the data (right of the axes), units on every axis
-with the SI prefix that fits the data's magnitude (:func:`engineering_unit`: a soft
+with the SI prefix that fits the data's magnitude
+(:func:`linecontact._units.engineering_unit`: a soft
 contact's force in mN, a steel roller's in kN). :data:`PLOTS` lists the figures by
 name (:func:`register` adds one).
 
@@ -50,7 +51,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._units import _PREFIXES
+from ._units import engineering_unit
 from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = ["force_depth", "line_load", "profiled_roller", "pressure_field",
@@ -106,71 +107,6 @@ def register(name):
 # --------------------------------------------------------------------------------------
 # units, styles, layout
 # --------------------------------------------------------------------------------------
-#: Prefixes offered, largest first (their factors are _units' table, the one home of
-#: the SI prefixes); shown with the micro sign.
-_ENGINEERING = ("T", "G", "M", "k", "", "m", "u", "n", "p")
-_SHOWN = {"u": "\u00b5"}
-#: Units that take a prefix (the first symbol of a compound such as N/m or N m).
-_SI_SYMBOLS = ("m", "N", "Pa", "J", "s", "rad")
-#: Units shown without the prefixes above 1 (no km, ks, krad).
-_NOT_LARGER = ("m", "s", "rad")
-
-
-def engineering_unit(values, unit):
-    """The SI prefix that fits an array's magnitude: the factor and the prefixed unit.
-
-    The prefix puts the largest finite magnitude of `values` in [1, 1000): a force of
-    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus
-    of 6.7e4 Pa in kPa. Lengths, times and angles are not shown above their base unit
-    (no km, ks, krad).
-
-    Parameters
-    ----------
-    values : float or array_like
-        Values in the SI unit `unit` (NaN and zeros ignored) [`unit`].
-    unit : str
-        The SI unit: m, N, Pa, J, s, rad, or a compound whose first symbol is one
-        (``"N/m"``, ``"N m"``); any other unit (``"-"``, ``"HV"``) is returned as is.
-
-    Returns
-    -------
-    factor : float
-        Multiply the SI values by it [-].
-    unit : str
-        The prefixed unit (the micro sign for 1e-6).
-
-    Notes
-    -----
-    Valid for any finite values; the prefixes run from p (1e-12) to T (1e12), the
-    factors those of the unit parser (:mod:`linecontact._units`). Without a finite
-    non-zero value the unit is returned unprefixed (factor 1).
-
-    Examples
-    --------
-    >>> engineering_unit([0.0, 1.2e-3], "N")
-    (1000.0, 'mN')
-    >>> engineering_unit(6.7e4, "Pa"), engineering_unit(2e3, "N/m")
-    ((0.001, 'kPa'), (0.001, 'kN/m'))
-    >>> engineering_unit(7e-6, "m"), engineering_unit(3.0, "m")
-    ((1000000.0, 'µm'), (1.0, 'm'))
-    """
-    first = unit.replace("/", " ").split(" ")[0]
-    if first not in _SI_SYMBOLS:
-        return 1.0, unit
-    v = np.abs(np.asarray(values, dtype=float)).ravel()
-    v = v[np.isfinite(v) & (v > 0)]
-    if v.size == 0:
-        return 1.0, unit
-    top = float(v.max())
-    for p in _ENGINEERING:
-        f = _PREFIXES[p]
-        if f > 1 and first in _NOT_LARGER:
-            continue
-        if top >= f * (1 - 1e-12) or p == _ENGINEERING[-1]:
-            return 1.0 / f, _SHOWN.get(p, p) + unit
-    raise AssertionError("unreachable: the last prefix is always taken")
-
-
 def _quantity(value, unit, digits=4):
     """'67 kPa': a value with the prefix that fits it."""
     f, u = engineering_unit(value, unit)
@@ -777,7 +713,8 @@ def pressure_map(result, *, ny=81, fig=None, ax=None):
 # adhesion
 # --------------------------------------------------------------------------------------
 @register("adhesion")
-def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
+def adhesion(contact, depth_max=None, *, n=201, loop=None, points=None, fig=None,
+             ax=None):
     r"""F(d) of an adhesive contact on approach and retraction, the pull-off marked.
 
     The curves are :meth:`linecontact.adhesion.AdhesiveContact.hysteresis` (the rule
@@ -802,6 +739,9 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         Points per branch [-].
     loop : dict, optional
         The cycle already computed (what ``hysteresis`` returned): drawn as given.
+    points : sequence of (depth, force), optional
+        Computed states to mark, d [m] and F [N] (NaN pairs are skipped), e.g. the
+        calculator's rows: black circles, line ``"computed"``.
     fig : matplotlib.figure.Figure or SubFigure, optional
         Where to draw (default a new figure).
     ax : matplotlib.axes.Axes, optional
@@ -871,8 +811,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
                                            "mfc": "none", "mew": 1.5}))
             title.append(f"MDR pull-off (force control) {bem_f['mdr_error']:+.1%} "
                          "against the BEM")
-    sd, ud = engineering_unit(np.concatenate([da, dr]), "m")
-    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs]]), "N")
+    pts = _points(points) if points is not None else np.zeros((0, 2))
+    sd, ud = engineering_unit(np.concatenate([da, dr, pts[:, 0]]), "m")
+    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs], pts[:, 1]]),
+                              "N")
     fig, (ax,) = _new(fig, 1, ax)
     for d, F, label, st in ((da, Fa, "approach", _style(0)), (dr, Fr, "retraction",
                                                               _style(1))):
@@ -883,6 +825,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         ax.axhline(F * sf, label=label, **st)
     for label, d, F, st in marks:
         line, = ax.plot([d * sd], [F * sf], ls="none", label=label, zorder=6, **st)
+        line.scale = (sd, sf)
+    if pts.size:
+        line, = ax.plot(pts[:, 0] * sd, pts[:, 1] * sf, ls="none", marker="o", color="k",
+                        mfc="none", ms=7, label="computed", zorder=7)
         line.scale = (sd, sf)
     ax.axhline(0.0, color="k", lw=0.5)
     ax.axvline(0.0, color="k", lw=0.5)
@@ -979,9 +925,14 @@ def creep(result, *, given=None, fig=None):
 # tangential: partial slip and the fretting loop
 # --------------------------------------------------------------------------------------
 def _tangential_name(c):
-    """'across (BEM)', 'along (BEM)' or 'MDR (G*/E*)'."""
-    if getattr(c, "method", "mdr") == "bem":
+    """'across (BEM)', 'along (BEM)', 'x (Mindlin)', 'y (Mindlin)' or 'MDR (G*/E*)'."""
+    method = getattr(c, "method", "mdr")
+    if method == "bem":
         return f"{c.direction} (BEM)"
+    if method == "mindlin":
+        return f"{c.direction} (Mindlin)"
+    if method == "ellipse":
+        return f"{c.direction} (equivalent ellipse)"
     return "MDR (G*/E*)"
 
 
@@ -999,7 +950,9 @@ def hysteresis(contact, amplitude, *, n=101, beyond="raise", points=None, fig=No
     Parameters
     ----------
     contact : TangentialContact or sequence of TangentialContact
-        The contact(s) at their normal load, with the friction coefficient.
+        The contact(s) at their normal load, with the friction coefficient (also
+        :class:`linecontact.mindlin.EllipticalTangentialContact`, a crowned roller's
+        ellipse by direction).
     amplitude : float
         Shift amplitude u0, 0 < u0 <= u* of every contact unless ``beyond`` is
         ``"saturate"`` [m].
@@ -1192,7 +1145,10 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
     mk, = ax.plot([w["y"] * sl], [w["z"] * sl], ls="none", marker="X", ms=10,
                   color="C0", mec="w", label="maximum", zorder=6)
     mk.scale = (sl, sl)
-    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})",
+    held = measure in getattr(result, "withheld", {})    # edge loaded: not converged
+    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})" if not held else
+                f"max {_quantity(w['value'], 'Pa')} at this slice width\n(edge loaded: "
+                "not converged, grows as the slices are refined)",
                 (w["y"] * sl, w["z"] * sl), xytext=(8, 8), textcoords="offset points",
                 fontsize=7, color="C0")
     ax.set_ylim(z[-1] * sl, 0.0)                                   # depth downwards
@@ -1254,6 +1210,12 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
 BEARING_FIELDS = (("roller_loads", "roller load Q", "N"),
                   ("roller_moments", "roller moment M", "N m"),
                   ("roller_tilts", "roller tilt", "rad"))
+#: The life panels of a bearing solved at a speed (``solve(..., speed=)``): each roller's
+#: film ratio, the smaller of its two contacts' (where the film inputs are given;
+#: unloaded rollers, Lambda = inf, are left out), and its share of the L10r damage.
+BEARING_LIFE_FIELDS = ((("film_ratio_inner", "film_ratio_outer"), "film ratio Lambda",
+                        "-"),
+                       ("roller_damage", "damage share", "-"))
 
 
 @register("bearing")
@@ -1262,8 +1224,9 @@ def bearing(solution, *, fig=None):
 
     One panel per per-roller quantity the solution holds (:data:`BEARING_FIELDS`;
     moments and tilts that are all zero, as under a contact law with aligned rings,
-    are left out and the title says so), against the roller's azimuth from the load
-    line, the load zone shaded.
+    are left out and the title says so; for a solution at a speed, the film ratio and
+    the damage share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from
+    the load line, the load zone shaded.
 
     Parameters
     ----------
@@ -1294,11 +1257,19 @@ def bearing(solution, *, fig=None):
     psi = np.where(psi <= -180.0, psi + 360.0, psi)
     order = np.argsort(psi, kind="stable")
     shown, zero = [], []
-    for attr, name, unit in BEARING_FIELDS:
-        v = getattr(solution, attr, None)
+    fields = BEARING_FIELDS
+    if getattr(solution, "speed", None) is not None:
+        fields = fields + BEARING_LIFE_FIELDS
+    for attr, name, unit in fields:
+        if isinstance(attr, tuple):          # the smaller of two contacts' values
+            parts = [getattr(solution, a, None) for a in attr]
+            v = None if any(p is None for p in parts) else np.minimum(*parts)
+        else:
+            v = getattr(solution, attr, None)
         if v is None:
             continue
         v = np.asarray(v, dtype=float)
+        v = np.where(np.isfinite(v), v, np.nan)     # Lambda = inf: no film to show
         if attr != "roller_loads" and not np.any(v):
             zero.append(name.split()[1])            # "moment", "tilt"
             continue

@@ -17,7 +17,7 @@ from linecontact.errors import OutOfRangeError
 from linecontact.roller import ProfiledRoller
 from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
                                   line_contact_stresses, roller_stresses, strip_maxima,
-                                  strip_stresses)
+                                  strip_stresses, yield_strength_from_hardness)
 
 ESTAR = 115.385e9
 
@@ -193,6 +193,35 @@ def test_minimum_case_depth_is_where_the_ratio_reaches_one():
     assert case_check(s, h.with_case_depth(0.9 * c.min_case_depth), depths=c.depths,
                       measure="tresca").max_ratio > 1.0
     assert "Pavlina" in c.conversion
+
+
+def test_no_case_needed_where_the_core_carries_the_load():
+    """A light load (400 N on R 5 mm, L 10 mm) whose stress stays below the core's
+    allowable at every depth needs no case: the minimum case depth is 0, not a fraction
+    of the case depth given (issue 32)."""
+    s = line_contact_stresses(400.0, 5e-3, 10e-3, ESTAR)
+    for chd in (0.1e-3, 1e-3):
+        c = case_check(s, HardnessProfile(700.0, chd, 350.0))
+        assert c.min_case_depth == 0.0
+    core = yield_strength_from_hardness(350.0)
+    assert np.max(c.stress) < core, "the core's allowable (von Mises: f = 1) suffices"
+
+
+@pytest.mark.parametrize("measure", ["tresca", "von_mises"])
+def test_minimum_case_depth_does_not_depend_on_the_case_depth_given(measure, monkeypatch):
+    """The minimum case depth is a property of the load and the hardness levels: given
+    case depths from 0.03 to 3 mm give the same minimum to 0.5 % (issue 32; measured
+    3e-5, the bisection's 1e-4 tolerance), and an 8 times finer search grid changes it
+    by less than 0.5 % (measured 0)."""
+    import linecontact.stresses.hardening as st
+
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    mins = [case_check(s, HardnessProfile(700.0, chd, 350.0), measure=measure)
+            .min_case_depth for chd in (0.03e-3, 0.3e-3, 3e-3)]
+    assert mins == pytest.approx([mins[1]] * 3, rel=5e-3)
+    monkeypatch.setattr(st, "_CHD_POINTS", 8 * st._CHD_POINTS)
+    fine = case_check(s, HardnessProfile(700.0, 3e-3, 350.0), measure=measure)
+    assert fine.min_case_depth == pytest.approx(mins[1], rel=5e-3)
 
 
 def test_measured_hardness_table():
@@ -609,3 +638,42 @@ def test_3d_search_finds_the_worst_near_the_ends():
         th = float(rng.uniform(5e-4, 2.5e-3))
         sol = roller_contact(5e-3, L, ESTAR, make_profile(prof, L), force=f, tilt=th)
         _check_search(sol, f"{prof} L={L} {f:.0f} N {th:.2e} rad")
+
+
+# ---- incompressible bodies (nu = 0.5: PDMS, rubber) -----------------------------------
+@pytest.mark.parametrize("mu", [0.0, 0.2])
+def test_incompressible_strip_von_mises_is_root3_tresca(mu):
+    """At nu = 0.5 the plane-strain sigma_x = (sigma_y + sigma_z)/2 is the mean of the
+    in-plane principal stresses, so von Mises = sqrt(3) Tresca at every point and at
+    the maximum (rtol 1e-12; McEwen's strip formulas hold at nu = 0.5: no 1 - 2 nu
+    divides them); frictionless, Tresca's maximum is 0.300 p0 at z = 0.786 b whatever nu
+    (Johnson 1985, section 4.2)."""
+    s = line_contact_stresses(200.0, 5e-3, 20e-3, 3e6, friction=mu, poisson=0.5)
+    p0 = float(s.peak_pressure[0])
+    assert s.worst["von_mises"]["value"] == pytest.approx(
+        np.sqrt(3) * s.worst["tresca"]["value"], rel=1e-12)
+    y, z = np.meshgrid(np.linspace(-2, 2, 9) * 1e-4, np.linspace(0.1, 2, 7) * 1e-4)
+    f = strip_stresses(y, z, 1e-4, 1e6, mu, 0.5)
+    assert f.measure("von_mises") == pytest.approx(np.sqrt(3) * f.measure("tresca"),
+                                                    rel=1e-12)
+    if mu == 0.0:
+        assert s.worst["tresca"]["value"] / p0 == pytest.approx(0.3004, abs=2e-4)
+
+
+def test_incompressible_stresses_are_the_limit_nu_to_one_half():
+    """nu = 0.5 is accepted by the strip, Love's rectangle and the 3D-corrected roller
+    stresses, and gives their limit nu -> 0.5 (the formulas are linear in nu: a step
+    of 1e-9 moves them by O(1e-9); asserted rtol 1e-7)."""
+    from linecontact.stresses import rectangle_stresses
+
+    a = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5)
+    b = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5 - 1e-9)
+    for k in a:
+        assert float(a[k]) == pytest.approx(float(b[k]), rel=1e-7, abs=1e-12), k
+    sol = ProfiledRoller(5e-3, 20e-3, 3e6, "circular:Rc=0.5", n_slices=30).at_force(1.0)
+    r = roller_stresses(sol, poisson=0.5)
+    q = roller_stresses(sol, poisson=0.5 - 1e-9)
+    for m in MEASURES:
+        assert r.worst[m]["value"] == pytest.approx(q.worst[m]["value"], rel=1e-7), m
+    with pytest.raises(OutOfRangeError, match="poisson = 0.51"):
+        strip_maxima(0.0, 0.51)

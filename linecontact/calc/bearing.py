@@ -197,7 +197,8 @@ def solve_one(cells, label=option_name):
 
 def summary(s):
     """The one-bearing outputs (FIELDS order), SI; the tilt stiffnesses None under a
-    law (no tilt), the stresses None where not computed."""
+    law (no tilt), the stresses None where not computed or not converged (an
+    edge-loaded roller: the notes say why)."""
     K = s.stiffness
     two = K.shape == (2, 2)
     st = s.stress or {}
@@ -219,8 +220,9 @@ def summary(s):
     }
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         w = st.get(m)
-        out[m] = w["value"] if w else None
-        out[f"{m}_depth"] = w["depth"] if w else None
+        shown = w and "withheld" not in w     # an edge-loaded roller's: "-", see notes
+        out[m] = w["value"] if shown else None
+        out[f"{m}_depth"] = w["depth"] if shown else None
     return out
 
 

@@ -31,7 +31,8 @@ from .._units import parse_column
 from .feature import RAW_KINDS, Fail, Parameter, bounds_of, option_name
 from .features import FEATURES
 
-__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases", "likely_cause"]
+__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases", "parse_columns",
+           "likely_cause"]
 
 _CYL = "cylinder (roller)"
 _BODY = "second body and materials"
@@ -61,11 +62,18 @@ CORE = (
               bounds="POISSON_RATIO"),
     Parameter("estar", "pressure", "effective modulus E* of Eq. 3 (instead of the moduli)",
               _BODY, plausible=_MODULUS),
-    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N", _LOAD,
-              plausible=_FORCE),
+    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N "
+              "(> 0; zero or tensile only where a feature gives it a meaning: adhesion)",
+              _LOAD, positive=False, plausible=_FORCE),
     Parameter("depth", "length", "indentation depth d of one contact (rigid-body "
-              "approach), or a sweep START:STOP:N", _LOAD, plausible=_DEPTH),
+              "approach), or a sweep START:STOP:N (> 0; zero or negative only with "
+              "adhesion)", _LOAD, positive=False, plausible=_DEPTH),
 )
+
+#: The load parameters: signed in the declaration above (a sweep through 0 is spaced
+#: linearly), positive by the core's rule (:func:`_resolve`) except in the rows a
+#: feature marks ``signed`` (:class:`~linecontact.calc.feature.State`).
+_SIGNED_LOADS = ("load", "depth")
 
 #: Every input, in ``--help`` order: the core, then each feature's.
 PARAMETERS = CORE + tuple(p for f in FEATURES for p in f.parameters)
@@ -148,9 +156,26 @@ def parse_cases(cells, n, label=option_name):
         ``""`` for a good row, else the first problem of that row (one line: the
         parameter, the value as typed, the valid range).
     """
+    values, present, raw, errors = parse_columns(PARAMETERS, cells, n, label)
+    cases = Cases(n, values, present, raw)
+    cases.label = label
+    _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
+    return cases, present, errors
+
+
+def parse_columns(parameters, cells, n, label=option_name):
+    """The cells of each of `parameters` as SI arrays (the unit rules of
+    :mod:`linecontact._units` and the per-unit factors applied once per column).
+
+    Returns (values, present, raw, errors): name -> SI float array (NaN where not
+    given or refused) or the cells as typed (:data:`RAW_KINDS`); name -> bool array
+    (given); name -> the cells as given; the first problem of each row (``""``: none).
+    The rules between parameters are the caller's (:func:`parse_cases`, a
+    subcommand's ``resolve``).
+    """
     errors = [""] * n
     values, present, raw = {}, {}, {}
-    for p in PARAMETERS:
+    for p in parameters:
         col = cells.get(p.name)
         if col is None:
             values[p.name] = [""] * n if p.kind in RAW_KINDS else np.full(n, np.nan)
@@ -209,10 +234,7 @@ def parse_cases(cells, n, label=option_name):
             for j in rows:
                 if not errors[j]:
                     errors[j] = u_errors[j if inv is None else inv[j]]
-    cases = Cases(n, values, present, raw)
-    cases.label = label
-    _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
-    return cases, present, errors
+    return values, present, raw, errors
 
 
 def _resolve(cases, errors, fail):
@@ -256,6 +278,7 @@ def _resolve(cases, errors, fail):
         state = f.resolve(v, P, fail)
         if state is not None:
             cases.states[f.name] = state
+    _positive_loads(cases, fail)
     radius_eff_f = np.full(n, np.nan)
     modulus_f = np.full(n, np.nan)
     for _, st in cases.active():
@@ -309,6 +332,32 @@ def _resolve(cases, errors, fail):
     cases.length = v["length"]
     cases.given, cases.value = given, value
     v.update(radius_eff=radius_eff, estar=estar)
+
+
+def _positive_loads(cases, fail):
+    """The core's rule: a load or depth > 0, except in the rows a feature's State marks
+    ``signed`` (it gives F <= 0 or d <= 0 a meaning: an adhesive contact under a tensile
+    load); the refusal names the options that would allow it (the features' ``signed``
+    module attribute)."""
+    from .._units import _range_reason, _valid_text
+
+    v, P, label = cases.values, cases.present, fail.label
+    signed = np.zeros(cases.n, bool)
+    for _, st in cases.active():
+        s = getattr(st, "signed", None)
+        if s is not None:
+            signed |= np.asarray(s, dtype=bool)
+    allow = [label(nm) for f in FEATURES for nm in getattr(f, "signed", ())]
+    for name in _SIGNED_LOADS:
+        kind = BY_NAME[name].kind
+        with np.errstate(invalid="ignore"):
+            bad = np.flatnonzero(P[name] & ~(v[name] > 0) & ~np.isnan(v[name]) & ~signed)
+        valid = _valid_text(kind, True, None) + (
+            f"; zero or negative only with {' or '.join(allow)}" if allow else "")
+        for i in bad:
+            mask = np.zeros(cases.n, bool)
+            mask[i] = True
+            fail(mask, name, valid, _range_reason(float(v[name][i]), kind, True, None))
 
 
 #: Units tried, in order, to bring an implausible bare number into its range.

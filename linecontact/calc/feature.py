@@ -63,6 +63,19 @@ How to add a feature (one module + one registration line)
            Extra tables printed after the main one (``[]`` for none), e.g. the profiled
            roller's rows. ``results.errors`` is the list of row errors: a one-case
            failure is written there (it ends the command with that line).
+       ``figure(state, results) -> list`` (optional)
+           ``--plot FILE``: what the feature computed, drawn by :mod:`linecontact.plot`
+           (no physics: the library's result objects, asked of the library as in
+           ``columns``). A list of items, each either a callable ``draw(fig=None)`` (a
+           figure function of :mod:`linecontact.plot` with its result bound, e.g.
+           ``functools.partial(plot.creep, result)``: one band of panels) or a str
+           (one line on stderr: a result that has no figure, or what was left out of
+           it); ``[]`` when the feature adds nothing. ``columns`` may remember each
+           row's contact law for it with :func:`keep` (``state.kept[i]``: the first
+           model set's, as ``columns`` saw it). :mod:`linecontact.calc.figure` puts
+           the core's F(d) and every feature's items into one figure
+           (:func:`linecontact.plot.panels` when there are several). A feature
+           without ``figure`` is said on stderr as having none.
 
     2. Add the module to the tuple :data:`linecontact.calc.features.FEATURES`.
 
@@ -70,9 +83,52 @@ How to add a feature (one module + one registration line)
     JSON renderers pick it up. A test: ``tests/test_cli.py`` runs every option in a
     batch and on the command line.
 
-A subcommand (e.g. ``linecontact bearing``) is not a feature: add it in
-:func:`linecontact.calc.cli.build_parser` (a sub-parser and a function); reuse
-:func:`linecontact.calc.cases.parse_cases` and the renderers where they fit.
+Adding a subcommand is one module plus one line
+    A subcommand (``linecontact bearing``) is a question of its own, with its own
+    inputs and results, on the same machinery (:mod:`linecontact.calc.command`).
+    1. Write ``linecontact/calc/subcommands/NAME.py`` with these module-level names
+       (the :class:`Subcommand` protocol):
+
+       ``name``, ``help``, ``description``, ``epilog``
+           ``linecontact NAME``, its line in ``linecontact --help``, its ``--help``.
+       ``parameters``
+           A tuple of :class:`Parameter`, as a feature's: each is an option
+           ``--NAME``, a CSV column ``NAME`` and a ``--help`` entry (under its
+           ``group``), parsed to SI by the unit rules; sweeps come for free.
+       ``fields``
+           Mapping output name -> :class:`Field`: the batch's columns (``NAME_UNIT``),
+           the JSON's units, the one-case list.
+       ``notes``
+           Mapping key -> one paragraph (the JSON header's notes, printed under the
+           table).
+       ``resolve(values, present, fail) -> State``
+           The input rules over all rows, as a feature's (``fail`` refuses rows with
+           one line); the State is handed to ``solve``.
+       ``solve(values, i, state) -> object``
+           Row i: ask the library. A library refusal (a ``ValueError`` of
+           :mod:`linecontact.errors` or :mod:`linecontact._units`) is the row's
+           error; no physics here.
+       ``row(obj, state, i) -> dict``
+           Field name -> SI value (None: not defined), plus ``"model_used"`` (the method),
+           ``"notes"`` (list of str) and ``"note"`` (them joined, the batch's cell).
+       ``model_of(obj) -> (key, label, provenance)``
+           The JSON header's entry of the row's model.
+       ``describe(obj, si) -> str``, ``blocks(obj) -> list[Block]``
+           One case's first line, and its extra tables (e.g. one row per roller).
+       ``to_json(obj) -> dict``
+           One case's full result for ``--json`` (SI).
+       ``figure(objects) -> matplotlib Figure``
+           ``--plot FILE``: the computed cases drawn by :mod:`linecontact.plot`.
+
+    2. Add the module to the tuple :data:`linecontact.calc.subcommands.SUBCOMMANDS`.
+
+    That is all: the parser (``--si``, ``--json``, ``-o``, ``--plot``, ``--linear``,
+    each option once), the one-case text and JSON (the calculator's header), the CSV
+    batch with every rule of ``calc`` (:func:`linecontact.calc.batch.run_batch`:
+    docs/batch.md, docs/inputs.md) and the DataFrame
+    (:func:`linecontact.calc.frame.command_frame`) pick it up; its batch is held to
+    the calculator's input-rule tests (tests/test_calc_inputs.py, parametrised over
+    the commands).
 """
 
 from __future__ import annotations
@@ -84,7 +140,8 @@ import re
 
 import numpy as np
 
-__all__ = ["Parameter", "Field", "State", "Block", "Feature", "Fail", "option_name",
+__all__ = ["Parameter", "Field", "State", "Block", "Feature", "Subcommand", "Fail",
+           "option_name", "keep",
            "bounds_of", "RAW_KINDS", "each", "short", "flag_text",
            "DEPTH_OVER_RADIUS_MAX", "HALF_WIDTH_OVER_LENGTH_MAX"]
 
@@ -187,6 +244,16 @@ class State:
     ``models``
         Tuple of model keys: the default model set of the feature's rows (instead of
         the standard set of a straight cylinder), e.g. the slice models.
+    ``signed``
+        Bool array: rows where the feature gives a load or depth <= 0 a meaning (an
+        adhesive contact under a tensile load); the core refuses them elsewhere (its
+        message names the parameters of the features' module attribute ``signed``,
+        a tuple of parameter names). In such a row the core's models (no adhesion:
+        no contact) are not evaluated; the core columns show the given value only,
+        and the feature's ``columns`` is called with NaN for the rest of ``normal``.
+    ``kept``
+        Object array: each row's contact law as ``columns`` saw it (:func:`keep`),
+        for the feature's ``figure``.
     """
 
     def __init__(self, rows, **attrs):
@@ -276,6 +343,18 @@ class Fail:
                 self.errors[i] = str(InputError(self.label(name), typed, valid, reason))
 
 
+def keep(state, rows, model):
+    """Remember the contact law `model` of `rows` (the first one given per row: the
+    first model set's) in ``state.kept`` (object array over the cases) for the
+    feature's ``figure``: a reference per row, no copy."""
+    kept = state.__dict__.get("kept")
+    if kept is None:
+        kept = state.kept = np.full(len(state.rows), None, dtype=object)
+    rows = np.asarray(rows, dtype=np.intp)
+    free = rows[np.equal(kept[rows], None)]
+    kept[free] = model
+
+
 def option_name(name):
     """``inner_raceway`` -> ``--inner-raceway``."""
     return "--" + name.replace("_", "-")
@@ -285,9 +364,11 @@ def bounds_of(p):
     """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
-    from .. import checks
+    from importlib import import_module
 
-    iv = getattr(checks, p.bounds)
+    # 'POISSON_RATIO' (linecontact.checks) or 'bearing.ROLLER_COUNT' (its module's)
+    where, _, name = p.bounds.rpartition(".")
+    iv = getattr(import_module(f"linecontact.{where or 'checks'}"), name)
     return (iv.contains, iv.describe())
 
 
@@ -307,6 +388,37 @@ class Feature(Protocol):
                 state: State) -> dict: ...
 
     def blocks(self, state: State, results: Any) -> list: ...
+
+    # optional: def figure(self, state: State, results: Any) -> list: ...
+
+
+class Subcommand(Protocol):
+    """What a subcommand module provides (see the module docstring)."""
+
+    name: str
+    help: str
+    description: str
+    epilog: str
+    parameters: Sequence[Parameter]
+    fields: Mapping[str, Field]
+    notes: Mapping[str, str]
+
+    def resolve(self, values: Mapping[str, Any], present: Mapping[str, np.ndarray],
+                fail: Fail) -> State: ...
+
+    def solve(self, values: Mapping[str, Any], i: int, state: State) -> Any: ...
+
+    def row(self, obj: Any, state: State, i: int) -> dict: ...
+
+    def model_of(self, obj: Any) -> tuple: ...
+
+    def describe(self, obj: Any, si: bool) -> str: ...
+
+    def blocks(self, obj: Any) -> list: ...
+
+    def to_json(self, obj: Any) -> dict: ...
+
+    def figure(self, objects: Sequence[Any]) -> Any: ...
 
 
 def each(func, idx, notes, width=1, missing=""):

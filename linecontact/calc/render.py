@@ -23,7 +23,8 @@ from .compute import CONTACT_COLUMNS, P0_NOTE, all_fields, model_id
 from .features import FEATURES
 
 __all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
-           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write"]
+           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write",
+           "clean_json", "command_text", "refuse_same_output"]
 
 #: Every output column (the core's and the features').
 FIELDS = all_fields()
@@ -51,14 +52,30 @@ def fmt(value, digits=4):
 
 
 def _fmt_column(values):
-    """:func:`fmt` of every element of a float array (a list of str)."""
-    return [format(v, ".4g") if v == v else "-" for v in np.asarray(values, float).tolist()]
+    """:func:`fmt` of every element of a float array (a list of str), round-off shown
+    as 0 (:func:`linecontact._units.format_numbers`)."""
+    from .._units import format_numbers
+
+    return format_numbers(values)
 
 
 def unit(field, si):
     """Unit of a field's column: SI or engineering."""
     f = FIELDS[field]
     return f.si if si else f.eng
+
+
+def column_unit(field, values, si):
+    """(factor from SI, unit) of a field's column holding the SI `values`: SI with
+    `si`, else the field's engineering unit where the values read well in it, or the
+    SI prefix that fits them (:func:`linecontact._units.display_unit`: a soft
+    contact's force in mN, not 0.0001 kN)."""
+    from .._units import display_unit
+
+    f = FIELDS[field]
+    if si:
+        return 1.0, f.si
+    return display_unit(values, f.si, f.eng, f.factor)
 
 
 def scale(field, value, si):
@@ -113,13 +130,14 @@ def _jsonable(obj):
         return str(obj)
 
 
-def json_header(argv, results):
-    """The one JSON header of every command (see the module docstring)."""
+def json_header(argv, results, fields=None, notes=None):
+    """The one JSON header of every command (see the module docstring); `fields` and
+    `notes`: a subcommand's own (default: the calculator's)."""
     return {
         "linecontact_version": _version(),
         "command": [PROG] + list(argv),
-        "units": {name: f.si for name, f in FIELDS.items()},
-        "notes": dict(NOTES),
+        "units": {name: f.si for name, f in (FIELDS if fields is None else fields).items()},
+        "notes": dict(NOTES if notes is None else notes),
         "models": [
             {
                 "key": m.key,
@@ -137,7 +155,9 @@ def _case_line(cases, present, si):
     inputs of the active features as typed."""
 
     def q(field, key):
-        return f"{fmt(scale(field, float(cases[key][0]), si))} {unit(field, si)}"
+        value = float(cases[key][0])
+        factor, u = column_unit(field, value, si)
+        return f"{fmt(value * factor)} {u}"
 
     line = f"R = {q('radius', 'radius')}"
     if present["radius2"][0]:
@@ -182,8 +202,12 @@ def _typed(cases, name):
 
 #: Units of a swept input in the table: kind -> (engineering unit, factor from SI).
 _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
+                "moment": ("N m", 1.0),
                 "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0),
-                "surface_energy": ("mJ/m^2", 1e3)}
+                "surface_energy": ("mJ/m^2", 1e3), "angular_speed": ("rpm", 30 / math.pi),
+                "kinematic_viscosity": ("cSt", 1e6), "density": ("kg/m^3", 1.0),
+                "inverse_pressure": ("1/Pa", 1.0), "temperature_difference": ("K", 1.0),
+                "count": ("-", 1.0)}
 
 
 def swept_inputs(cases):
@@ -213,7 +237,11 @@ def table_text(cases, present, results, si):
     for p, _ in swept:
         u = DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]
         heads.append(f"{p.name.replace('_', ' ')} [{u or '-'}]")
-    header = (["model"] + heads + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols]
+    # each column's unit fits its values (over every model's rows)
+    shown = {c: column_unit(c, np.concatenate([np.ravel(s["fields"][c]).astype(float)
+                                               for s in results.sets]), si)
+             for c in cols} if results.sets else {c: (1.0, unit(c, si)) for c in cols}
+    header = (["model"] + heads + [f"{FIELDS[c].heading} [{shown[c][1]}]" for c in cols]
               + ["note"])
     n = cases.n
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
@@ -223,7 +251,7 @@ def table_text(cases, present, results, si):
         for k, (p, col) in enumerate(swept, start=1):
             columns[k] += _fmt_column(col if si else col * _INPUT_UNITS[p.kind][1])
         for k, c in enumerate(cols, start=1 + len(swept)):
-            columns[k] += _fmt_column(scale(c, f[c], si))
+            columns[k] += _fmt_column(np.asarray(f[c], float) * shown[c][0])
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
     lines = [_case_line(cases, present, si), ""]
     lines += aligned([header] + [list(r) for r in zip(*columns)])
@@ -240,6 +268,8 @@ def _block_note(results, text):
 def blocks_text(blocks, given, si):
     """The features' extra tables (e.g. the profiled roller's rows), each after its
     rows' note; blocks of one name share one table."""
+    from .._units import display_unit, format_numbers
+
     out = ""
     names = []
     for b in blocks:
@@ -250,21 +280,23 @@ def blocks_text(blocks, given, si):
         fields = group[0].fields
         first = "force" if given == "load" else "depth"
         cols = ([first] if first in fields else []) + [c for c in fields if c != first]
+        rows = [(b, row) for b in group for row in b.rows if row is not None]
+        shown = {}  # each column's unit fits its values
+        for c in cols:
+            vals = [np.nan if row.get(c) is None else float(row[c]) for _, row in rows]
+            shown[c] = ((1.0, fields[c].si) if si else
+                        display_unit(vals, fields[c].si, fields[c].eng, fields[c].factor))
+        cells_of = {c: format_numbers([np.nan if row.get(c) is None else
+                                       float(row[c]) * shown[c][0] for _, row in rows])
+                    for c in cols}
         header = [group[0].label] + [
-            f"{fields[c].heading} [{fields[c].si if si else fields[c].eng}]" for c in cols
+            f"{fields[c].heading} [{shown[c][1]}]" for c in cols
         ] + list(group[0].text_columns) + ["note"]
         table = []
-        for b in group:
-            for row in b.rows:
-                if row is None:
-                    continue
-                cells = [row.get("label", "")]
-                for c in cols:
-                    val = row.get(c)
-                    cells.append("-" if val is None else
-                                 f"{val if si else val * fields[c].factor:.4g}")
-                cells += [row.get("text", {}).get(t, "-") for t in b.text_columns]
-                table.append(cells + [row.get("note", "")])
+        for i, (b, row) in enumerate(rows):
+            cells = [row.get("label", "")] + [cells_of[c][i] for c in cols]
+            cells += [row.get("text", {}).get(t, "-") for t in b.text_columns]
+            table.append(cells + [row.get("note", "")])
         if not table:
             continue
         out += "\n".join([""] + aligned([header] + table) + ["", "Note: " + group[0].note])
@@ -327,6 +359,88 @@ def one_json(argv, cases, present, results):
         doc.setdefault(b.name, []).append({"label": label, "rows": b.json_rows,
                                            "units": dict(b.units)})
     return json.dumps(doc, indent=2) + "\n"
+
+
+def clean_json(x):
+    """JSON-safe: NaN and infinities (an edge-loaded roller's peak pressure, an
+    infinite life) become null, numpy scalars and arrays plain numbers and lists."""
+    if isinstance(x, dict):
+        return {str(k): clean_json(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [clean_json(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return clean_json(x.tolist())
+    if hasattr(x, "item") and not isinstance(x, (str, bytes)):
+        x = x.item()
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
+
+
+def command_text(command, cases, results, si):
+    """Plain text of a subcommand (:class:`linecontact.calc.command.Command`): one
+    case as its description, its fields one per line and the module's tables (its
+    blocks); a sweep as one row per case (the swept inputs, then the fields); then the
+    command's notes and each case's own."""
+    from .._units import DIMENSIONS, format_numbers
+
+    module, fields = command.module, command.fields
+    n = cases.n
+    lines = []
+    if n == 1:
+        obj, row = results.objects[0], results.rows[0]
+        lines += [module.describe(obj, si), f"model: {row.get('model_used', '')}", ""]
+        table = []
+        optional = getattr(module, "optional", ())
+        # round-off (an aligned bearing's K_rt) as 0 against its quantity's scale
+        sizes = module.scales(obj) if hasattr(module, "scales") else {}
+        for name, f in fields.items():
+            v = row.get(name)
+            if v is None and name in optional:
+                continue  # an output asked for by its options only (the case check)
+            k = 1.0 if si else f.factor
+            size = sizes.get(name)
+            table.append([f"  {f.heading}",
+                          "-" if v is None else format_numbers(
+                              [v * k], scale=None if size is None else size * k)[0],
+                          f.si if si else f.eng])
+        lines += aligned(table)
+        text = blocks_text(module.blocks(obj), "load", si)
+        lines += text.rstrip("\n").split("\n") if text else []
+    else:
+        swept = []
+        for p in command.parameters:
+            col = cases.cells.get(p.name)
+            if isinstance(col, np.ndarray) and len(col) > 1 and np.any(col != col[0]):
+                swept.append((p, col))
+        shown = [k for k in fields if any(r is not None and r.get(k) is not None
+                                          for r in results.rows)]
+        header = (["case"] + [f"{p.name.replace('_', ' ')} ["
+                              f"{(DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]) or '-'}]"
+                              for p, _ in swept]
+                  + [f"{fields[k].heading} [{fields[k].si if si else fields[k].eng}]"
+                     for k in shown] + ["note"])
+        table = [header]
+        for i in range(n):
+            row = results.rows[i] or {}
+            cells = [str(i + 1)]
+            cells += [fmt(float(col[i]) if si else float(col[i]) * _INPUT_UNITS[p.kind][1])
+                      for p, col in swept]
+            obj = results.objects[i]
+            sizes = (module.scales(obj) if obj is not None and hasattr(module, "scales")
+                     else {})
+            for k in shown:
+                v = row.get(k)
+                f = 1.0 if si else fields[k].factor
+                size = sizes.get(k)
+                cells.append("-" if v is None else format_numbers(
+                    [v * f], scale=None if size is None else size * f)[0])
+            table.append(cells + [row.get("note", "")])
+        lines += aligned(table)
+    lines += [""] + [f"Note: {t}" for t in command.notes.values()]
+    if n == 1:
+        lines += [f"Note: {t}" for t in results.rows[0].get("notes", ())]
+    return "\n".join(lines) + "\n"
 
 
 def _entries(model_docs, results):
@@ -402,6 +516,26 @@ def refuse_input_as_output(output, inputs):
             raise OutputError(output, ValueError(
                 f"-o names the input file {str(name)!r}, which would be overwritten; "
                 "give another output file"))
+
+
+def refuse_same_output(output, plot):
+    """Raise :class:`OutputError` if ``-o`` and ``--plot`` name the same file (the
+    figure would overwrite the table, or the table the figure): compared as files (same
+    inode where it exists, else the same absolute path), before anything is written."""
+    import os
+
+    if output is None or plot is None:
+        return
+    try:
+        same = (os.path.samefile(output, plot) if os.path.exists(output)
+                and os.path.exists(plot) else
+                os.path.abspath(output) == os.path.abspath(plot))
+    except (OSError, ValueError):
+        return
+    if same:
+        raise OutputError(plot, ValueError(
+            f"--plot names the -o file {str(output)!r}; the figure would overwrite the "
+            "table: give two different files"))
 
 
 class OutputError(OSError):

@@ -101,6 +101,8 @@ Modules
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)
 ``iso``        :func:`iso_slicing` (ISO 16281, uncoupled slices)
 ``laws``       :class:`ProfiledRollerModel`, :class:`ISOSlicingModel` (registered laws)
+``solvers``    :func:`~linecontact.roller.solvers.slice_solver`: the one factory from a
+               slice model's name to a contact's solver, with the default slice counts
 
 References
 ----------

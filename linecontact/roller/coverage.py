@@ -11,54 +11,35 @@ from .slices import DEFAULT_N_SLICES
 __all__ = []
 
 
-_COVERAGE = []
-_ACCURACY_TABLE = "roller_accuracy"
+_COVERAGE = {}
 #: relative slack on the covered bounds (the header prints 6 significant digits)
 _COVER_SLACK = 1e-5
 
 
 def _coverage():
-    """The covered_* and runtime_error_* fields of tables/roller_accuracy.csv, parsed
-    once on first use (None if the table or the fields are missing)."""
-    if not _COVERAGE:
-        from ..tables import read_table
+    """tables/roller_accuracy.csv's covered range and largest errors
+    (:func:`linecontact.accuracy.roller_coverage`) with those errors as the note states
+    them, written once per table version (None if the table or the fields are
+    missing)."""
+    from ..accuracy import roller_coverage
+
+    raw = roller_coverage()
+    if _COVERAGE.get("raw", _COVERAGE) is not raw:     # first use, or a new table
+        cov = None
         try:
-            meta = read_table(_ACCURACY_TABLE).meta
-
-            def pair(key):
-                lo, hi = (float(v) for v in meta[key].split(","))
-                return lo, hi
-
-            def errors(key):
-                return {k: float(v) for k, v in
-                        (item.split() for item in meta[key].split(","))}
-
-            cov = dict(
-                l_over_d=pair("covered_l_over_d"),
-                line_load=pair("covered_line_load_over_estar_d"),
-                given_tilt=pair("covered_given_tilt_rad"),
-                free_tilt=pair("covered_free_tilt_rad"),
-                tilt_drop=pair("covered_tilt_drop_over_approach"),
-                profiles=tuple(k.strip() for k in meta["covered_profiles"].split(",")),
-                # optional (tables before issue 20 lack it): None, not measured
-                end_gap=(pair("covered_infinite_end_gap_over_length")
-                         if "covered_infinite_end_gap_over_length" in meta else None),
-                off=errors("runtime_error_off_ends"),
-                edge=errors("runtime_error_edge_loaded"))
-            # the largest errors as coverage_note states them, written once
-            off, edge = cov["off"], cov["edge"]
-            cov["errors_edge_loaded"] = (
-                f"edge loaded: deflection {_pct(edge['depth'])}, moment "
-                f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} (peak "
-                "pressure singular, not reported)")
-            cov["errors_off_ends"] = (
-                f"contact off the ends: deflection {_pct(off['depth'])}, moment "
-                f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
-                f"zero-moment tilt {_pct(off['tilt'])}")
-        except (FileNotFoundError, KeyError, ValueError):
+            if raw is not None:
+                off, edge = raw["off"], raw["edge"]
+                cov = dict(raw, errors_edge_loaded=(
+                    f"edge loaded: deflection {_pct(edge['depth'])}, moment "
+                    f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} "
+                    "(peak pressure singular, not reported)"), errors_off_ends=(
+                    f"contact off the ends: deflection {_pct(off['depth'])}, moment "
+                    f"{_pct(off['moment'])} (tilted), peak pressure "
+                    f"{_pct(off['p_max'])}, zero-moment tilt {_pct(off['tilt'])}"))
+        except KeyError:                   # an error the note states is not measured
             cov = None
-        _COVERAGE.append(cov)
-    return _COVERAGE[0]
+        _COVERAGE.update(raw=raw, cov=cov)
+    return _COVERAGE["cov"]
 
 
 def geometry_cause(radius, length, estar, force=None):

@@ -45,7 +45,7 @@ References
 from __future__ import annotations
 
 from .accuracy import reaches_end, stress_accuracy  # noqa: F401 (stress_accuracy: the calculator's)
-from .along_roller import line_contact_stresses, roller_stresses
+from .along_roller import EDGE_LOADED_STRESS, line_contact_stresses, roller_stresses
 from .hardening import CaseCheck, HardnessProfile, case_check, yield_strength_from_hardness
 from .love import rectangle_stresses
 from .measures import MEASURES, stress_measures
@@ -68,4 +68,5 @@ __all__ = [
     "yield_strength_from_hardness",
     "CaseCheck",
     "case_check",
+    "EDGE_LOADED_STRESS",
 ]

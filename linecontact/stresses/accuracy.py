@@ -14,7 +14,6 @@ import numpy as np
 __all__ = ["reaches_end"]
 
 #: the table's fields, read once (:func:`_accuracy`)
-_ACCURACY = []
 #: the table's error fields: (3D-corrected?, friction?, edge loaded?) -> header key
 _ERROR_KEYS = {(True, False, False): "error_3d_off_ends",
                (True, False, True): "error_3d_edge_loaded",
@@ -27,30 +26,11 @@ _ERROR_KEYS = {(True, False, False): "error_3d_off_ends",
 
 
 def _accuracy():
-    """The covered_* and error fields of tables/stress_accuracy.csv (or None)."""
-    if not _ACCURACY:
-        from ..tables import read_table
-        try:
-            meta = read_table("stress_accuracy").meta
-            errs = {}
-            for key in _ERROR_KEYS.values():
-                if key in meta:
-                    errs[key] = {k: float(v) for k, v in
-                                 (item.split() for item in meta[key].split(","))}
-            cov = dict(l_over_d=tuple(float(v) for v in
-                                      meta["covered_l_over_d"].split(",")),
-                       line_load=tuple(float(v) for v in
-                                       meta["covered_line_load_over_estar_d"].split(",")),
-                       tilt=tuple(float(v) for v in meta["covered_tilt_rad"].split(",")),
-                       friction=tuple(float(v) for v in
-                                      meta.get("covered_friction", "0, 0").split(",")),
-                       profiles=tuple(k.strip() for k in
-                                      meta["covered_profiles"].split(",")),
-                       errors=errs)
-        except (FileNotFoundError, KeyError, ValueError):
-            cov = None
-        _ACCURACY.append(cov)
-    return _ACCURACY[0]
+    """The covered_* and error fields of tables/stress_accuracy.csv (or None):
+    :func:`linecontact.accuracy.stress_coverage`."""
+    from ..accuracy import stress_coverage
+
+    return stress_coverage()
 
 
 def reaches_end(solution):

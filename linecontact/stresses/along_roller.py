@@ -38,7 +38,17 @@ from .results import _assemble
 from .search import _worst_3d
 from .strip import _check_material, _maxima
 
-__all__ = ["line_contact_stresses", "roller_stresses"]
+__all__ = ["line_contact_stresses", "roller_stresses", "EDGE_LOADED_STRESS"]
+
+#: Why the stress maxima of an edge-loaded roller are not reported: the reason, and
+#: what converges instead. Measured: a misaligned 20-roller bearing (D = L = 10 mm,
+#: straight, 10 kN, 1 mrad) Tresca 955, 1283, 1705 MPa at 20, 40, 80 slices; an aligned
+#: straight roller R 5 mm, L 14 mm at 100 N/mm 420 to 1325 MPa from 25 to 400 slices.
+EDGE_LOADED_STRESS = ("edge loaded: the contact reaches a roller end, where the pressure "
+                      "on a half-space is singular, so the stress maxima grow as the "
+                      "slices are refined (a slice-width number, not reported); a crown, "
+                      "a logarithmic profile or an end relief with a corner radius that "
+                      "keeps the contact off the ends gives converged stresses")
 
 #: where roller_stresses' 3D search looks (its ``search``)
 _SEARCHES = ("candidates", "every slice")
@@ -65,7 +75,7 @@ def line_contact_stresses(force, radius, length, estar, friction=0.0, poisson=0.
     friction : float, optional
         Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -120,7 +130,7 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
     friction : float, optional
         Coefficient mu of the sliding traction, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
     roller : ProfiledRoller, optional
         The model that produced `solution`: with it the note also checks L/D, the
         mean line load and the profile against the measured range.
@@ -175,6 +185,8 @@ def roller_stresses(solution, friction=0.0, poisson=0.3, roller=None, three_d=Tr
                         "half-space, so the stresses below it are resolved only to the "
                         "slice width (a grid-dependent number, like the peak pressure)")
     s = _assemble(x, b, p0, mu, nu, notes, edge)
+    if edge:
+        s = dataclasses.replace(s, withheld={m: EDGE_LOADED_STRESS for m in MEASURES})
     if not three_d or x.size < 2 or not loaded.any():
         return dataclasses.replace(s, error=error)
     # the contact at or near an end: the worst may lie anywhere along the roller, and

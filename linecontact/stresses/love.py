@@ -289,7 +289,7 @@ def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
     dx, dy : float
         Rectangle sides [m].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -315,7 +315,7 @@ def rectangle_stresses(x, y, z, dx, dy, poisson=0.3):
     A. E. H. Love, Phil. Trans. R. Soc. A 228 (1929) 377-420; K. L. Johnson, Contact
     Mechanics (1985), section 3.2.
     """
-    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5))
     check_positive("dx", dx, "m")
     check_positive("dy", dy, "m")
     x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))

@@ -59,6 +59,12 @@ class SubsurfaceStresses:
         range (the notes say why).
     method : str
         "plane-strain strip" or "strip + 3D correction".
+    withheld : dict
+        Measure -> why its maximum is not a converged number (empty where every one
+        is): an edge-loaded roller, whose singular end pressure makes the maxima grow
+        without limit as the slices are refined. ``worst`` still holds the slice
+        solution's values (the slice width's numbers), as diagnostics; a report prints
+        "-" with the reason, as for the peak pressure.
 
     Notes
     -----
@@ -87,6 +93,7 @@ class SubsurfaceStresses:
     strip_worst: dict = None
     error: dict = None
     method: str = "plane-strain strip"
+    withheld: dict = field(default_factory=dict)
 
     def _slice(self, x):
         x = float(x)
@@ -193,8 +200,8 @@ class SubsurfaceStresses:
         -------
         dict
             Keys worst, notes, edge_loaded, friction, poisson, method, error
-            (strip_worst with the 3D correction; and x, half_width,
-            peak_pressure, value, depth, y), units.
+            (strip_worst with the 3D correction; withheld where a maximum is not
+            converged; and x, half_width, peak_pressure, value, depth, y), units.
         """
         d = {"worst": {k: dict(v) for k, v in self.worst.items()},
              "friction": self.friction, "poisson": self.poisson,
@@ -202,6 +209,8 @@ class SubsurfaceStresses:
              "method": self.method, "error": self.error}
         if self.strip_worst is not None:
             d["strip_worst"] = {k: dict(v) for k, v in self.strip_worst.items()}
+        if self.withheld:
+            d["withheld"] = dict(self.withheld)
         if arrays:
             d.update(x=self.x.tolist(), half_width=self.half_width.tolist(),
                      peak_pressure=self.peak_pressure.tolist(),

@@ -60,7 +60,7 @@ def _check_material(friction, poisson):
     mu = float(check_interval("friction", friction, 0.0, _MU_MAX, unit="",
                               hint="mu is the coefficient of the sliding traction mu p "
                                    "in +y; for traction in -y mirror y"))
-    nu = float(check_interval("poisson", poisson, 0.0, 0.5, high_open=True))
+    nu = float(check_interval("poisson", poisson, 0.0, 0.5))
     return mu, nu
 
 
@@ -186,7 +186,7 @@ def strip_stresses(y, z, half_width, peak_pressure, friction=0.0, poisson=0.3):
     friction : float, optional
         Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio of the body, 0 <= nu < 0.5 [-] (only sigma_x depends on it).
+        Poisson's ratio of the body, 0 <= nu <= 0.5 [-] (only sigma_x depends on it).
 
     Returns
     -------
@@ -240,7 +240,7 @@ class StripMaxima:
 
     Notes
     -----
-    Valid for 0 <= mu <= 1, 0 <= nu < 0.5.
+    Valid for 0 <= mu <= 1, 0 <= nu <= 0.5.
 
     Examples
     --------
@@ -304,7 +304,7 @@ def strip_maxima(friction=0.0, poisson=0.3):
     friction : float, optional
         Coefficient mu of the traction mu p in +y, 0 <= mu <= 1 [-].
     poisson : float, optional
-        Poisson's ratio, 0 <= nu < 0.5 [-].
+        Poisson's ratio, 0 <= nu <= 0.5 [-].
 
     Returns
     -------
@@ -313,7 +313,7 @@ def strip_maxima(friction=0.0, poisson=0.3):
 
     Notes
     -----
-    Valid for 0 <= mu <= 1, 0 <= nu < 0.5. Without friction the orthogonal shear has
+    Valid for 0 <= mu <= 1, 0 <= nu <= 0.5. Without friction the orthogonal shear has
     two mirror maxima (+-y); the one at y > 0 is returned.
 
     Examples

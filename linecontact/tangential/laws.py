@@ -197,7 +197,7 @@ def _stiffness_ratio(model, depth, gstar, method, direction):
     return cylinder_stiffness_ratios(model, depth, gstar)[direction]
 
 
-def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
+def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise", ratio=None):
     r"""Cattaneo-Mindlin tangential force of any model at constant normal depth.
 
     .. math::
@@ -221,6 +221,9 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     beyond : {"raise", "saturate"}, optional
         Beyond gross slip (|u| > u*): ``"raise"`` (default) refuses with
         :class:`OutOfRangeError`; ``"saturate"`` returns the sliding force mu F(d).
+    ratio : float or array_like, optional
+        Stiffness ratio k_t/k_n to use instead of G*/E* (e.g. Mindlin's for an
+        elliptical contact, :func:`linecontact.mindlin.stiffness_ratio`) [-].
 
     Returns
     -------
@@ -247,7 +250,7 @@ def tangential_force(model, depth, shift, friction, gstar, *, beyond="raise"):
     C. Cattaneo (1938); R. D. Mindlin (1949); Popov & Hess (2015), chapter 4.
     """
     d = check_positive("depth", depth, "m")
-    r = _ratio(gstar, model.estar)
+    r = _ratio(gstar, model.estar) if ratio is None else check_positive("ratio", ratio)
     return out(_ft(model, d, shift, _friction(friction), r, beyond))
 
 

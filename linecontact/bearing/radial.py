@@ -1,84 +1,7 @@
-r"""Radial cylindrical and needle roller bearings: load distribution, stiffness, rating life.
-
-Z rollers (diameter D, effective length L, any axial profile) sit at the azimuths
-:math:`\psi_j = \psi_0 + 2\pi j/Z` on the pitch diameter :math:`d_m`, between an inner
-raceway of radius :math:`(d_m - D)/2` (convex) and an outer raceway (concave) that
-leaves the radial internal clearance :math:`P_d` (ISO 5753-1's radial internal
-clearance; Harris' diametral clearance :math:`P_d = d_o - d_i - 2D`, negative for
-preload). A radial displacement :math:`\delta_r` of the inner ring towards the roller at
-:math:`\psi = 0` gives roller j the ring approach
-
-.. math:: \delta_j = \delta_r\cos\psi_j - P_d/2,
-
-and the roller carries :math:`Q_j = Q(\delta_j)` for :math:`\delta_j > 0`, 0 otherwise.
-:math:`Q(\delta)` is the whole roller between its two raceways (the two contacts in
-series with the same load, :func:`linecontact.raceway.roller_between_raceways`) under
-any contact law of :mod:`linecontact.models` (the universal curve by default, the
-ISO/TS 16281 spring ``"iso16281"`` for comparison), or the coupled-slice model of
-:mod:`linecontact.roller` for a profiled roller. Equilibrium of the ring:
-
-.. math:: F_r = \sum_j Q_j\cos\psi_j, \qquad
-          K_{rr} = \frac{dF_r}{d\delta_r} = \sum_{j\,\text{loaded}} k_j\cos^2\psi_j,
-
-with :math:`k_j = dQ/d\delta` of roller j: the radial stiffness is the exact derivative
-of the equilibrium (no finite differences).
-
-How it is solved
-----------------
-The roller law is evaluated once, vectorised, on a geometric grid of loads
-(:data:`GRID_POINTS` points from :math:`10^{-9}F_r` to :math:`2.05F_r`, which bounds
-every roller load for :math:`Z \ge 3`), giving :math:`\delta(Q)` and its slope; its
-inverse :math:`Q(\delta)` is the cubic Hermite interpolant of :math:`\ln Q` against
-:math:`\ln\delta` with the exact slopes :math:`d\ln Q/d\ln\delta = k\delta/Q`. Newton's
-method on :math:`\delta_r`, bracketed, solves the ring equilibrium on that inverse; then
-(laws) a Newton polish on the loaded rollers' loads and :math:`\delta_r` with the exact
-law, :math:`\delta(Q_j) = \delta_r\cos\psi_j - P_d/2`, :math:`\sum Q_j\cos\psi_j = F_r`,
-removes the interpolation error: the loads then sum to :math:`F_r` to round-off.
-
-A profiled roller under the slice model is tabulated the same way, at
-:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve); its slice loads
-for the rating life are interpolated between the tabulated load distributions (in
-:math:`\ln Q`), and the table's interpolation error is reported
-(:attr:`BearingSolution.law_error`).
-
-Tilting moment and misalignment
--------------------------------
-A tilt theta of the inner ring in the load plane adds :math:`\theta x\cos\psi_j` to
-roller j's approach along its axis x: the rings are misaligned by
-:math:`\phi_j = \theta\cos\psi_j` at roller j, which is free to tilt between its two
-slice contacts (force and moment balance, :mod:`linecontact.raceway`) and carries
-:math:`Q_j, M_j`; the ring carries :math:`F_r = \sum Q_j\cos\psi_j`,
-:math:`M = \sum M_j\cos\psi_j`. Given M, (delta_r, theta) are solved (2 DOF); given
-theta, delta_r (1 DOF). One Newton iteration on all unknowns (each distinct roller's
-inner depth and tilt, and the ring's) with the slice model's exact 2x2 contact
-matrices; the bearing's stiffness matrix is
-:math:`K = \sum_j \cos^2\psi_j\,(K_{in}^{-1} + K_{out}^{-1})^{-1}`
-= d(F_r, M)/d(delta_r, theta), exact for the discrete equations (docs/bearings.md).
-
-Stribeck's result
------------------
-For :math:`Q = K\delta^n` and the load-zone parameter
-:math:`\varepsilon = \tfrac12(1 - P_d/(2\delta_r))`, the continuous load zone gives
-:math:`Q_{max} = F_r/(Z J_r(\varepsilon))` (:func:`load_zone_integral`);
-:math:`J_r(0.5) = 0.2448` for n = 10/9: :math:`Z Q_{max}/F_r \to 4.08` for many rollers.
-
-Rating life
------------
-ISO 281:2007's basic dynamic load rating :math:`C_r` (:func:`dynamic_load_rating`) and
-basic rating life :math:`L_{10} = (C_r/P_r)^{10/3}` (:func:`basic_rating_life`), and the
-basic reference rating life of ISO 16281:2025 (which replaced ISO/TS 16281:2008; the
-lamina method for roller bearings, :func:`reference_rating_life`), both in
-:math:`10^6` revolutions.
-
-References
-----------
-.. [1] R. Stribeck, "Kugellager fuer beliebige Belastungen", Z. VDI 45 (1901) 73-125.
-.. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007),
-   load distribution in radially loaded bearings (the integral J_r(epsilon)).
-.. [3] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life.
-.. [4] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for
-   calculating the modified reference rating life for universally loaded rolling
-   bearings.
+r"""The radial bearing's solvers: :class:`RadialRollerBearing` (the load distribution
+over the rollers, the ring's equilibrium and stiffness: under a law, tabulated slices, or
+tilted rollers) and :class:`BearingSolution`; the method is the package docstring's,
+:mod:`linecontact.bearing`.
 """
 from __future__ import annotations
 
@@ -87,37 +10,43 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._numerics import serial_blas
-from .checks import check_interval, check_positive
-from .errors import CombinationError, OutOfRangeError, UnknownNameError
-from .profiles import TILT_RANGE
-from .raceway import Raceways, effective_radii, roller_between_raceways
+from .._numerics import serial_blas
+from ..models import DEFAULT_SLICE_MODEL, SLICE_MODELS
+from ..profiles import TILT_RANGE
+from ..raceway import Raceways, effective_radii, roller_between_raceways
+from ..errors import CombinationError, OutOfRangeError, UnknownNameError
+from ..checks import Interval, check_interval, check_positive
+from .interpolant import _Law
+from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
+from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
+                      reference_rating_life, static_load_rating)
 
 __all__ = [
     "RadialRollerBearing",
     "BearingSolution",
     "load_zone_integral",
-    "dynamic_load_rating",
-    "basic_rating_life",
-    "reference_rating_life",
-    "lamina_load_ratings",
     "GRID_POINTS",
     "PROFILED_POINTS",
+    "MAX_SLICES",
+    "SLICE_COUNT",
 ]
 
 #: Points of the roller-law grid of a straight roller under a law [-].
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
-#: Slices of a profiled roller in a bearing (converged to 0.1 % in its outputs) [-].
-N_SLICES = 40
+#: Most slices per roller of a bearing [-]. The bearing solves each contact at
+#: PROFILED_POINTS depths, so its cost grows with the slice solver's (about n^3):
+#: measured for a 14-roller ISO-profiled bearing (d_m 65 mm, D 11 mm, L 12 mm) at
+#: 10 kN on 2 shared CPU cores: 50 slices 0.3-0.5 s, 100 0.4-0.6 s, 200 2-3.5 s, 400
+#: 24-44 s (and numpy's overflow warning from the solver's matmul), 1000 beyond 5 min;
+#: at 200 the displacement is within 5e-7 and the most loaded roller within 1.3e-6 of
+#: 400 slices' (50: 6.5e-5 and 1.4e-5), so more slices buy nothing measurable.
+MAX_SLICES = 200
+#: The slice counts a bearing accepts (an integer in it) [-].
+SLICE_COUNT = Interval("n_slices", 10, MAX_SLICES, False, False, "")
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
-#: ISO 16281 constants relating the ring rolling-element rating Q_c to C_r:
-#: Q_ci = C_i / (0.378 Z), Q_ce = C_e / (0.364 Z) (i = 1, alpha = 0). They are the
-#: Lundberg-Palmgren ratios J_r/J_1 and J_r/J_2 of the zero-clearance load zone
-#: (this module's integrals give 0.3764 and 0.3630, see the tests).
-ISO_RING_FACTOR = {"inner": 0.378, "outer": 0.364}
 #: Upper bound of any roller load in units of F_r for Z >= 3: one roller at
 #: |psi| <= pi/Z alone carries at most F_r/cos(pi/Z) <= 2 F_r.
 _TOP = 2.05
@@ -177,260 +106,6 @@ def load_zone_integral(epsilon, exponent=10 / 9):
     return float(2.0 * np.sum(w * integrand) / (2.0 * math.pi))
 
 
-def dynamic_load_rating(rollers, pitch_diameter, roller_diameter, length, b_m=1.1):
-    r"""Basic dynamic radial load rating C_r of a radial roller bearing (ISO 281:2007).
-
-    .. math::
-
-        C_r = b_m f_c\,(L_{we})^{7/9} Z^{3/4} D_{we}^{29/27}\ [\mathrm{N,\ mm}],\quad
-        f_c = 207.9\,\lambda\nu\,\gamma^{2/9}\frac{(1-\gamma)^{29/27}}{(1+\gamma)^{1/4}}
-        \left[1 + \left(1.04\left(\frac{1-\gamma}{1+\gamma}\right)^{143/108}
-        \right)^{9/2}\right]^{-2/9}
-
-    with :math:`\gamma = D_{we}/D_{pw}` (contact angle 0, one row) and
-    :math:`\lambda\nu = 0.83`.
-
-    Parameters
-    ----------
-    rollers : int
-        Number of rollers Z >= 3 [-].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    length : float
-        Effective roller length L_we > 0 [m].
-    b_m : float, optional
-        Rating factor for contemporary material and manufacturing, 0 < b_m <= 2 [-]
-        (ISO 281 Table: 1.1 for cylindrical and machined-ring needle roller
-        bearings, default; 1.0 for drawn-cup needle roller bearings).
-
-    Returns
-    -------
-    float
-        C_r [N].
-
-    Notes
-    -----
-    Valid for Z >= 3, 0 < D_we < D_pw < inf, 0 < L_we < inf. The formula reproduces
-    ISO 281's Table of f_c (84.2 at gamma = 0.10, 74.1 at 0.05); a catalogue's C_r
-    may differ (manufacturers' own b_m, profile and material).
-
-    Examples
-    --------
-    >>> f"{dynamic_load_rating(14, 70e-3, 11e-3, 11e-3) / 1e3:.1f} kN"
-    '59.7 kN'
-
-    References
-    ----------
-    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life,
-       clause 7 (radial roller bearings) and its table of f_c.
-    """
-    Z = _rollers(rollers)
-    Dpw = float(check_positive("pitch_diameter", pitch_diameter, "m"))
-    Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
-    Lwe = float(check_positive("length", length, "m"))
-    bm = float(check_interval("b_m", b_m, 0.0, 2.0, low_open=True))
-    _fits(Dpw, Dwe)
-    g = Dwe / Dpw
-    fc = (207.9 * 0.83 * g ** (2 / 9) * (1 - g) ** (29 / 27) / (1 + g) ** 0.25
-          * (1 + (1.04 * ((1 - g) / (1 + g)) ** (143 / 108)) ** 4.5) ** (-2 / 9))
-    return bm * fc * (Lwe * 1e3) ** (7 / 9) * Z ** 0.75 * (Dwe * 1e3) ** (29 / 27)
-
-
-def basic_rating_life(rating, load, exponent=10 / 3):
-    r"""Basic rating life L10 = (C/P)^p of ISO 281 [10^6 revolutions].
-
-    .. math:: L_{10} = \left(\frac{C_r}{P_r}\right)^{10/3}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r > 0 [N].
-    load : float or array_like
-        Dynamic equivalent load P_r > 0 (the radial load of a purely radially loaded
-        bearing) [N].
-    exponent : float, optional
-        Life exponent p, 0 < p < inf [-] (10/3 for roller bearings, default).
-
-    Returns
-    -------
-    float or ndarray
-        L10 [-] in millions of revolutions.
-
-    Notes
-    -----
-    Valid for 0 < C, P < inf (ISO 281 limits P to below about C/2 for its life
-    factors; the formula itself is what is computed here).
-
-    Examples
-    --------
-    >>> f"{basic_rating_life(65e3, 10e3):.1f}"
-    '512.5'
-
-    References
-    ----------
-    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life.
-    """
-    C = check_positive("rating", rating, "N")
-    P = check_positive("load", load, "N")
-    p = check_positive("exponent", exponent, "")
-    r = (C / P) ** p
-    return float(r) if np.ndim(r) == 0 else r
-
-
-def lamina_load_ratings(rating, rollers, pitch_diameter, roller_diameter, laminae):
-    r"""Rolling-element load ratings of one lamina, inner and outer ring (ISO 16281).
-
-    .. math::
-
-        q_{ci} = \frac{C_i}{0.378\,Z}\,n_s^{-7/9}, \quad
-        q_{ce} = \frac{C_e}{0.364\,Z}\,n_s^{-7/9}, \quad
-        C_i = C_r\left[1 + \left(\frac{C_i}{C_e}\right)^{9/2}\right]^{2/9},\
-        \frac{C_i}{C_e} = 1.038\left(\frac{1-\gamma}{1+\gamma}\right)^{143/108}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r of the bearing, 0 < C_r < inf [N].
-    rollers : int
-        Number of rollers Z >= 3 [-].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    laminae : int
-        Number of laminae n_s >= 1 the roller length is divided into [-].
-
-    Returns
-    -------
-    tuple of float
-        (q_ci, q_ce) [N].
-
-    Notes
-    -----
-    Valid for 0 < C_r < inf, Z >= 3, 0 < D_we < D_pw, n_s >= 1 (contact angle 0, one
-    row). The ring split C_i/C_e and the factors 0.378, 0.364 are those of ISO/TS
-    16281:2008 as reconstructed from the Lundberg-Palmgren theory (the factors are the
-    ratios J_r/J_1, J_r/J_2 of the zero-clearance load zone, 0.3764 and 0.3630 by
-    :func:`load_zone_integral` and its analogues); ISO 16281:2025 keeps the method
-    (not checked against the 2025 text, which is not public).
-
-    Examples
-    --------
-    >>> qi, qe = lamina_load_ratings(65e3, 14, 70e-3, 11e-3, 1)
-    >>> f"{qi / 1e3:.1f} kN, {qe / 1e3:.1f} kN"
-    '12.7 kN, 19.4 kN'
-
-    References
-    ----------
-    .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), section on roller bearings (lamina
-       method).
-    .. [2] G. Lundberg, A. Palmgren, "Dynamic capacity of roller bearings", Acta
-       Polytechnica Mech. Eng. Series 2(4) (1952).
-    """
-    C = float(check_positive("rating", rating, "N"))
-    Z = _rollers(rollers)
-    Dpw = float(check_positive("pitch_diameter", pitch_diameter, "m"))
-    Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
-    n = int(check_interval("laminae", laminae, 1, 1e6))
-    _fits(Dpw, Dwe)
-    g = Dwe / Dpw
-    ratio = 1.038 * ((1 - g) / (1 + g)) ** (143 / 108)  # C_i / C_e
-    Ci = C * (1 + ratio ** 4.5) ** (2 / 9)
-    Ce = C * (1 + ratio ** -4.5) ** (2 / 9)
-    scale = n ** (-7 / 9)
-    return (Ci / (ISO_RING_FACTOR["inner"] * Z) * scale,
-            Ce / (ISO_RING_FACTOR["outer"] * Z) * scale)
-
-
-def reference_rating_life(rating, pitch_diameter, roller_diameter, slice_loads_inner,
-                          slice_loads_outer, rotating="inner"):
-    r"""Basic reference rating life L10r of ISO 16281 from the rollers' lamina loads.
-
-    .. math::
-
-        q_{e,k} = \left(\frac1Z\sum_j q_{jk}^{\,p}\right)^{1/p}\ (p = 4\
-        \text{rotating ring},\ 9/2\ \text{stationary}),\qquad
-        L_{10r} = \left(\sum_k\left[\left(\frac{q_{ci}}{q_{ei,k}}\right)^{-9/2} +
-        \left(\frac{q_{ce}}{q_{ee,k}}\right)^{-9/2}\right]\right)^{-8/9}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r, 0 < C_r < inf [N].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    slice_loads_inner : array_like
-        Lamina loads of the inner-ring contacts, shape (Z, n_s), >= 0 [N].
-    slice_loads_outer : array_like
-        Lamina loads of the outer-ring contacts, shape (Z, n_s), >= 0 [N].
-    rotating : str, optional
-        ``"inner"`` (default) or ``"outer"``: the ring that rotates against the load.
-
-    Returns
-    -------
-    float
-        L10r [-] in millions of revolutions (inf if no lamina is loaded).
-
-    Notes
-    -----
-    Valid for loads >= 0, 0 < D_we < D_pw, Z >= 3 rollers (the rows), n_s >= 1 laminae
-    (the columns). For an aligned bearing of zero clearance with
-    uniform lamina loads the Stribeck load zone gives L10r = (C_r/F_r)^4: the line-
-    contact exponent of Lundberg and Palmgren, equal to ISO 281's (C_r/P_r)^(10/3) at
-    P = C_r only (ISO 281 rounds the exponent to 10/3 for all roller bearings). No
-    edge-stress or life-modification factor (a_ISO) is applied: this is the basic
-    reference rating life.
-
-    Examples
-    --------
-    Ten of 14 rollers carrying 2 kN each, uniformly over 10 laminae:
-
-    >>> q = np.zeros((14, 10)); q[:10] = 200.0
-    >>> f"{reference_rating_life(65e3, 70e-3, 11e-3, q, q):.0f}"
-    '2024'
-
-    References
-    ----------
-    .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), equations of the basic reference
-       rating life of roller bearings (lamina method).
-    """
-    qi = np.asarray(slice_loads_inner, dtype=float)
-    qo = np.asarray(slice_loads_outer, dtype=float)
-    if qi.ndim != 2 or qi.shape != qo.shape:
-        raise CombinationError({"slice_loads_inner": f"shape {qi.shape}",
-                                "slice_loads_outer": f"shape {qo.shape}"},
-                               "give two arrays of the same shape (rollers, laminae)")
-    for name, q in (("slice_loads_inner", qi), ("slice_loads_outer", qo)):
-        check_interval(name, q, 0.0, np.inf, high_open=True, unit="N")
-    if rotating not in ("inner", "outer"):
-        raise UnknownNameError("rotating", rotating, ["inner", "outer"])
-    Z, n = qi.shape
-    qci, qce = lamina_load_ratings(rating, Z, pitch_diameter, roller_diameter, n)
-    pi, po = (4.0, 4.5) if rotating == "inner" else (4.5, 4.0)
-    qei = np.mean(qi ** pi, axis=0) ** (1 / pi)
-    qee = np.mean(qo ** po, axis=0) ** (1 / po)
-    total = np.sum((qei / qci) ** 4.5) + np.sum((qee / qce) ** 4.5)
-    return math.inf if total == 0 else float(total ** (-8 / 9))
-
-
-def _rollers(rollers):
-    z = check_interval("rollers", rollers, 3, 100000)
-    if float(z) != int(z):
-        raise OutOfRangeError("rollers", float(z), "a whole number >= 3")
-    return int(z)
-
-
-def _fits(Dpw, Dwe):
-    if not Dpw > Dwe:
-        raise OutOfRangeError("pitch_diameter", Dpw, f"({Dwe:.6g}, inf) m", unit="m",
-                              hint="the pitch diameter must exceed the roller diameter "
-                                   "(the inner raceway diameter d_m - D is positive)")
-
-
 def _laminae(sol, length, n):
     """Lamina loads [N] of a slice solution on n equal laminae over the roller length:
     the slices' cumulative load (each slice's q_k w spread evenly over its width)
@@ -449,8 +124,9 @@ def _laminae(sol, length, n):
 def _worst_of(fields):
     """The largest value of each stress measure over named contacts' stress results
     (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
-    "notes": [...]}."""
-    from .stresses import MEASURES
+    "notes": [...]}; a measure whose maximum is not converged in some contact (an
+    edge-loaded one) carries "withheld": the reason (its value is the slice width's)."""
+    from ..stresses import MEASURES
 
     worst = {}
     for m in MEASURES:
@@ -458,9 +134,17 @@ def _worst_of(fields):
         w = st.worst[m]
         worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
                     "x": float(w["x"]), "contact": name}
+        held = [n for n, f in fields.items() if m in getattr(f, "withheld", {})]
+        if held:
+            worst[m]["withheld"] = (" and ".join(held) + " contact: "
+                                    + fields[held[0]].withheld[m])
     notes = []
     for name, st in fields.items():
         notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
+    held = sorted(m for m in MEASURES if "withheld" in worst[m])
+    if held:
+        notes.append("stress maxima not reported (" + ", ".join(held) + "): "
+                     + worst[held[0]]["withheld"])
     return {"worst": worst, "notes": notes}
 
 
@@ -469,7 +153,7 @@ def _contact_stresses(si, so, poisson, rollers=(None, None)):
     (:func:`linecontact.stresses.roller_stresses`, no traction); `rollers`: each
     contact's (radius, length, estar, profile), so that the measured error is quoted
     only inside the measured range."""
-    from .stresses import roller_stresses
+    from ..stresses import roller_stresses
 
     return _worst_of({"inner": roller_stresses(si, poisson=poisson, roller=rollers[0]),
                       "outer": roller_stresses(so, poisson=poisson, roller=rollers[1])})
@@ -541,7 +225,82 @@ class BearingSolution:
         Subsurface stress maxima at the most loaded roller, worst of its two contacts,
         per measure (``"tresca"``, ``"von_mises"``, ``"orthogonal_shear"``): value [Pa],
         depth [m], x along the roller [m], contact (:mod:`linecontact.stresses`, no
-        traction).
+        traction); and ``withheld``, the reason, where an edge-loaded contact makes the
+        maximum a slice-width number (not converged: report "-").
+    clearance : float
+        Operating radial clearance the load distribution used: the given one after the
+        fits and the ring temperature difference (:mod:`linecontact.bearing.fits`) [m].
+    clearance_changes : dict or None
+        With fits or a temperature difference: the clearance before mounting
+        (``"unmounted"``) and its changes ``"inner_fit"``, ``"outer_fit"``,
+        ``"thermal"`` (negative: the clearance shrinks) [m].
+    static_rating : float
+        Basic static load rating C0r (ISO 76, or the one given) [N].
+    static_load : float
+        Static equivalent load P0r = F_r (ISO 76, contact angle 0) [N].
+    static_safety : float
+        s0 = C0r/P0r [-].
+    pressure_safety : float
+        Stress-based static safety (4000 MPa/p_max)^2 from :attr:`peak_pressure`,
+        edge stresses included (nan where the peak is not reported) [-].
+    roller_damage : ndarray
+        Share of the bearing's ISO 16281 damage taken at each roller's position,
+        summing to 1 (:func:`linecontact.bearing.ratings.roller_damage_shares`) [-].
+    speed : float or None
+        Speed of the inner ring against the outer ring [rad/s] (None: not given).
+    entrainment_speed : float or None
+        Mean rolling speed u of both contacts in pure rolling [m/s].
+    film_minimum_inner, film_minimum_outer : ndarray or None
+        Minimum EHL film h_min of each roller's inner and outer contact on each lamina
+        (:attr:`slice_x`), shape (Z, n_s), by :attr:`film_formula`; inf where the
+        lamina carries no load [m].
+    film_central_inner, film_central_outer : ndarray or None
+        Central EHL film h_c, Pan & Hamrock (1989), shape (Z, n_s); inf where unloaded
+        [m].
+    film_ratio_inner, film_ratio_outer : ndarray or None
+        Film ratio Lambda of each roller's inner and outer contact, its smallest over
+        the laminae (inf: unloaded) [-].
+    film_ratio : float or None
+        The smallest Lambda of the bearing [-].
+    film_formula : str or None
+        The minimum-film formula used (:data:`linecontact.bearing.lubrication.FILM_FORMULAS`).
+    rated_viscosity : float or None
+        nu1 of ISO 281 at the speed and pitch diameter [m^2/s].
+    kappa : float or None
+        Viscosity ratio nu/nu1 [-].
+    fatigue_load_limit : float or None
+        C_u used for a_ISO [N].
+    reliability_factor : float or None
+        a1 [-].
+    life_modification : float or None
+        a_ISO at P = F_r [-].
+    life_modified : float or None
+        L_nm = a1 a_ISO L10 (ISO 281) [-] (10^6 revolutions).
+    reference_load : float or None
+        Dynamic equivalent reference load P_ref = C_r L10r^(-3/10) [N].
+    life_modification_reference : float or None
+        a_ISO at P_ref [-].
+    life_modified_reference : float or None
+        ISO 16281's modified reference rating life L_nmr = a1 a_ISO(P_ref) L10r [-]
+        (10^6 revolutions).
+    axial_load : float or None
+        Axial load F_a on the flanges [N].
+    flange_forces : ndarray or None
+        Axial force F_a,j each roller passes between its flanges, summing to F_a [N].
+    flange_normal_forces : ndarray or None
+        Normal force F_a,j / cos(theta) of each of the roller's two flange contacts [N].
+    flange_pressure_inner, flange_pressure_outer : ndarray or None
+        Hertz peak pressure of each roller's inner-ring and outer-ring flange contact
+        [Pa].
+    flange_rim_margin : ndarray or None
+        Smaller distance of the two contact ellipses to their flange rims (negative:
+        over the rim) [m].
+    flange_couple : ndarray or None
+        Couple F_a,j tan(theta)(2 R_e - l) of each roller's two flange forces [N m].
+    flange_load_offset : ndarray or None
+        Shift M/(2 Q_j) of each raceway contact's load centre along the roller that
+        balances the couple (0 where unloaded); beyond L/6 a rigid roller's line load
+        would lift at one end [m].
 
     Notes
     -----
@@ -580,6 +339,40 @@ class BearingSolution:
     roller_tilts: np.ndarray = None
     roller_misalignment: np.ndarray = None
     stress: dict = None
+    clearance: float = None
+    clearance_changes: dict = None
+    static_rating: float = None
+    static_load: float = None
+    static_safety: float = None
+    pressure_safety: float = None
+    roller_damage: np.ndarray = None
+    speed: float = None
+    entrainment_speed: float = None
+    film_minimum_inner: np.ndarray = None
+    film_minimum_outer: np.ndarray = None
+    film_central_inner: np.ndarray = None
+    film_central_outer: np.ndarray = None
+    film_ratio_inner: np.ndarray = None
+    film_ratio_outer: np.ndarray = None
+    film_ratio: float = None
+    film_formula: str = None
+    rated_viscosity: float = None
+    kappa: float = None
+    fatigue_load_limit: float = None
+    reliability_factor: float = None
+    life_modification: float = None
+    life_modified: float = None
+    reference_load: float = None
+    life_modification_reference: float = None
+    life_modified_reference: float = None
+    axial_load: float = None
+    flange_forces: np.ndarray = None
+    flange_normal_forces: np.ndarray = None
+    flange_pressure_inner: np.ndarray = None
+    flange_pressure_outer: np.ndarray = None
+    flange_rim_margin: np.ndarray = None
+    flange_couple: np.ndarray = None
+    flange_load_offset: np.ndarray = None
 
     def to_dict(self):
         """The solution as plain Python (lists for arrays), SI units."""
@@ -593,67 +386,14 @@ class BearingSolution:
         return out
 
 
-class _Law:
-    """delta(Q) of one roller on a grid and its monotone inverse Q(delta)."""
-
-    def __init__(self, Q, delta, k):
-        self.lnQ = np.log(Q)
-        self.lnd = np.log(delta)
-        self.s = k * delta / Q  # d ln Q / d ln delta
-        self.Qtop = float(Q[-1])
-        self.dtop = float(delta[-1])
-        if not np.all(np.diff(self.lnd) > 0):
-            raise OutOfRangeError("roller law", "not increasing", "a deflection that "
-                                  "grows with the load")
-
-    def delta_of(self, Q):
-        """delta(Q) by the Hermite interpolant of ln delta against ln Q."""
-        lnQ = np.log(np.asarray(Q, dtype=float))
-        return np.exp(self._hermite(lnQ, self.lnQ, self.lnd, 1.0 / self.s)[0])
-
-    def force(self, delta):
-        """(Q, dQ/d delta) at ring approaches delta (0 where delta <= 0)."""
-        d = np.asarray(delta, dtype=float)
-        Q = np.zeros_like(d)
-        k = np.zeros_like(d)
-        on = d > 0
-        if np.any(d[on] > self.dtop * (1 + 1e-12)):
-            raise OutOfRangeError("roller approach", float(d.max()),
-                                  f"(0, {self.dtop:.6g}] m (the tabulated roller law)",
-                                  unit="m", hint="a roller load beyond the law's range")
-        if np.any(on):
-            v, dv = self._hermite(np.log(d[on]), self.lnd, self.lnQ, self.s)
-            Q[on] = np.exp(v)
-            k[on] = Q[on] * dv / d[on]
-        return Q, k
-
-    @staticmethod
-    def _hermite(x, xs, ys, ss):
-        """Cubic Hermite interpolation (value, slope); linear extension below xs[0]."""
-        i = np.clip(np.searchsorted(xs, x) - 1, 0, len(xs) - 2)
-        h = xs[i + 1] - xs[i]
-        t = (x - xs[i]) / h
-        below = x < xs[0]
-        t = np.where(below, 0.0, t)
-        h00 = 2 * t**3 - 3 * t**2 + 1
-        h10 = t**3 - 2 * t**2 + t
-        h01 = -2 * t**3 + 3 * t**2
-        h11 = t**3 - t**2
-        y = h00 * ys[i] + h10 * h * ss[i] + h01 * ys[i + 1] + h11 * h * ss[i + 1]
-        dy = ((6 * t**2 - 6 * t) * ys[i] + (3 * t**2 - 4 * t + 1) * h * ss[i]
-              + (-6 * t**2 + 6 * t) * ys[i + 1] + (3 * t**2 - 2 * t) * h * ss[i + 1]) / h
-        y = np.where(below, ys[0] + ss[0] * (x - xs[0]), y)
-        dy = np.where(below, ss[0], dy)
-        return y, dy
-
-
 class RadialRollerBearing:
     r"""A radial cylindrical or needle roller bearing: geometry, material, contact law.
 
     Parameters
     ----------
     rollers : int
-        Number of rollers Z, 3 <= Z [-].
+        Number of rollers Z, 3 <= Z, that fit on the pitch circle without overlapping
+        (d_m sin(pi/Z) > D; :func:`~linecontact.bearing.ratings.max_rollers`) [-].
     pitch_diameter : float
         Pitch diameter d_m > D [m].
     roller_diameter : float
@@ -674,8 +414,11 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the coupled-slice model, 10 <= n <= 1000 [-] (default 40: the bearing's
-        outputs converged to 0.1 %, docs/bearings.md).
+        Slices of the slice model, an integer 10 <= n <= MAX_SLICES = 200 (ISO
+        slicing: n >= 30; converged long before, see MAX_SLICES) [-]
+        (default None: the model's, as in every other door,
+        :func:`linecontact.roller.solvers.default_n_slices`: 50 coupled slices, 30 ISO
+        slicing; the laminae of the rating life of a sliced roller are as many).
     azimuth0 : float, optional
         Azimuth psi_0 of the first roller from the load line, |psi_0| <= pi [rad]
         (default 0: a roller under the load).
@@ -685,14 +428,91 @@ class RadialRollerBearing:
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
     poisson : float, optional
-        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu <= 0.5 [-]
         (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
+    viscosity : float, optional
+        Kinematic viscosity nu of the lubricant at the operating temperature,
+        0 < nu < inf [m^2/s]: with a speed (:meth:`solve`), kappa = nu/nu1.
+    density : float, optional
+        Density rho of the lubricant, 0 < rho < inf [kg/m^3]: the film's dynamic
+        viscosity eta0 = rho nu (with `pressure_viscosity`).
+    pressure_viscosity : float, optional
+        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha < inf [1/Pa]:
+        with `viscosity`, `density` and a speed, the EHL film of every contact.
+    roughness_roller, roughness_raceway : float, optional
+        RMS roughness Rq of the rollers and of the raceways, 0 <= Rq < inf [m]: the
+        film ratio Lambda (both, with the film inputs).
+    film_formula : str, optional
+        Minimum-film formula, ``"pan-hamrock"`` (default) or ``"dowson-higginson"``
+        (:data:`linecontact.bearing.lubrication.FILM_FORMULAS`); the central film is
+        Pan & Hamrock's.
+    contamination : float, optional
+        Contamination factor e_C, 0 <= e_C <= 1 [-]: with `viscosity`, the modified
+        lives L_nm (ISO 281) and L_nmr (ISO 16281).
+    reliability : float, optional
+        Reliability of the modified lives, 0.9 <= R <= 0.9995 [-] (default 0.9,
+        a1 = 1; with `contamination`).
+    fatigue_load_limit : float, optional
+        Fatigue load limit C_u, 0 < C_u < inf [N] (default: ISO 281's estimate from
+        C0r, :func:`linecontact.bearing.ratings.fatigue_load_limit`; with
+        `contamination`).
+    static_rating : float, optional
+        Basic static load rating C0r, 0 < C0r < inf [N] (default: ISO 76 from the
+        geometry, :func:`linecontact.bearing.ratings.static_load_rating`).
+    shaft_interference : float, optional
+        Effective diametral interference of the inner ring on the shaft,
+        0 <= I < inf [m] (with `bore`): the inner raceway grows (Lame).
+    bore : float, optional
+        Bore d of the inner ring (the shaft seat), 0 < d < d_m - D [m].
+    shaft_bore : float, optional
+        Bore of a hollow shaft, 0 <= d_s < d (default 0: solid) [m].
+    housing_interference : float, optional
+        Effective diametral interference of the outer ring in the housing,
+        0 <= I < inf [m] (with `outside_diameter`): the outer raceway shrinks.
+    outside_diameter : float, optional
+        Outside diameter of the outer ring (the housing seat), d_m + D + P_d < D_o <
+        inf [m].
+    housing_diameter : float, optional
+        Outside diameter of the housing, D_o < D_h <= inf (default inf: massive) [m].
+    ring_modulus : float, optional
+        Young's modulus of the rings, the shaft and the housing for the fits,
+        0 < E < inf (default 2 E* (1 - nu^2) from `estar` and `poisson`: rollers and
+        rings of one material) [Pa].
+    temperature_difference : float, optional
+        Temperature of the inner ring above the outer ring's, the rollers at their
+        mean, -inf < dT < inf [K]: the clearance changes by -12e-6/K dT d_m (steel).
+    end_radius : float, optional
+        Radius R_e of the rollers' spherical ends, 0 < R_e < inf [m]; with
+        `flange_angle` and the flange heights, the flanges of an NJ / NUP bearing that
+        carry an axial load (:meth:`solve`'s `axial_load`).
+    flange_angle : float, optional
+        Inclination theta of the flange faces to the radial plane, 0 < theta < pi/4
+        [rad].
+    inner_flange_height, outer_flange_height : float, optional
+        Heights of the inner and the outer ring's flanges above their raceways,
+        0 < h < D/2 [m].
+    overall_length : float, optional
+        The rollers' overall length l between their end vertices, 0 < l < inf
+        (default: `length`) [m].
+    end_chamfer : float, optional
+        Radial extent of the roller's corner beyond which its end is not spherical,
+        0 <= c < D/2 (default 0) [m].
+    axial_share : str, optional
+        How the rollers share the axial load: ``"proportional"`` to their radial loads
+        (default) or ``"equal"`` (:func:`linecontact.bearing.flanges.axial_load_shares`).
 
     Notes
     -----
-    Valid for Z >= 3, 0 < D < d_m, |P_d| < D, within the contact law's range (its
+    Valid for 3 <= Z <= max_rollers(d_m, D), 0 < D < d_m, |P_d| < D, within the
+    contact law's range (its
     depth and L/R ranges; the universal curve to d <= 0.15 R). Centrifugal forces,
-    ring deformation and roller skew are not modelled.
+    ring deformation and roller skew are not modelled. The fits take the rings, the
+    shaft and the housing of one material, E = 2 E* (1 - nu^2) from `estar` and
+    `poisson` (210 GPa for the defaults) unless `ring_modulus` is given, Poisson's
+    ratio `poisson`, each ring a cylinder from bore to raceway;
+    the load distribution uses the operating clearance (:attr:`clearance`; the given
+    one is :attr:`internal_clearance`). Each input group is all or nothing: an input
+    that a missing partner would leave unused is refused (docs/bearing_life.md).
 
     Examples
     --------
@@ -712,37 +532,62 @@ class RadialRollerBearing:
     """
 
     def __init__(self, rollers, pitch_diameter, roller_diameter, length, clearance=0.0,
-                 *, estar=115.38e9, model=None, profile=None, n_slices=N_SLICES,
-                 azimuth0=0.0, rating=None, rotating="inner", poisson=0.3):
-        from .models import available_models
-        from .profiles import StraightProfile, as_profile
-        from .raceway import SLICE_MODELS
+                 *, estar=115.38e9, model=None, profile=None, n_slices=None,
+                 azimuth0=0.0, rating=None, rotating="inner", poisson=0.3,
+                 viscosity=None, density=None, pressure_viscosity=None,
+                 roughness_roller=None, roughness_raceway=None,
+                 film_formula=DEFAULT_FILM_FORMULA, contamination=None, reliability=None,
+                 fatigue_load_limit=None, static_rating=None, shaft_interference=None,
+                 bore=None, shaft_bore=None, housing_interference=None,
+                 outside_diameter=None, housing_diameter=None, ring_modulus=None,
+                 temperature_difference=None, end_radius=None, flange_angle=None,
+                 inner_flange_height=None, outer_flange_height=None,
+                 overall_length=None, end_chamfer=None, axial_share="proportional"):
+        from ..models import available_models
+        from ..profiles import StraightProfile, as_profile
 
         self.rollers = _rollers(rollers)
         self.pitch_diameter = float(check_positive("pitch_diameter", pitch_diameter, "m"))
         self.roller_diameter = float(check_positive("roller_diameter", roller_diameter,
                                                     "m"))
-        _fits(self.pitch_diameter, self.roller_diameter)
+        _fits(self.pitch_diameter, self.roller_diameter, self.rollers)
         self.length = float(check_positive("length", length, "m"))
         D = self.roller_diameter
         self.clearance = float(check_interval(
             "clearance", clearance, -D, D, low_open=True, high_open=True, unit="m",
             hint="the clearance must be smaller than the roller diameter"))
         self.estar = float(check_positive("estar", estar, "Pa"))
-        self.n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
+        if n_slices is not None:
+            n = check_interval("n_slices", n_slices, 10, MAX_SLICES,
+                               hint="more slices change no result measurably and cost "
+                                    "minutes (MAX_SLICES)").item()
+            if n != int(n):
+                raise OutOfRangeError("n_slices", n, f"[10, {MAX_SLICES}], an integer",
+                                      hint="a slice count is never rounded")
+            n_slices = int(n)
         self.azimuth0 = float(check_interval("azimuth0", azimuth0, -math.pi, math.pi,
                                              unit="rad"))
         if rotating not in ("inner", "outer"):
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
-        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5,
-                                            high_open=True))
+        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5))
+        self.internal_clearance = self.clearance
+        self.clearance_changes = self._mounting(
+            shaft_interference, bore, shaft_bore, housing_interference,
+            outside_diameter, housing_diameter, temperature_difference, ring_modulus)
+        self.lubricant = self._lubricant(viscosity, density, pressure_viscosity,
+                                         roughness_roller, roughness_raceway,
+                                         film_formula, contamination, reliability,
+                                         fatigue_load_limit)
+        self.flanges = self._flange_geometry(end_radius, flange_angle,
+                                             inner_flange_height, outer_flange_height,
+                                             overall_length, end_chamfer, axial_share)
         self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)
         straight = isinstance(self.profile, StraightProfile)
         if model is None:
-            model = "universal" if straight else "profiled-roller"
+            model = "universal" if straight else DEFAULT_SLICE_MODEL
         if model not in available_models():
             raise UnknownNameError("model", model, available_models())
         if not straight and model not in SLICE_MODELS:
@@ -751,6 +596,12 @@ class RadialRollerBearing:
                                    "model='profiled-roller' (coupled slices)")
         self.model = model
         self.sliced = model in SLICE_MODELS
+        # the slice count of the slice model solving the rollers (a law's tilted twin:
+        # the default slice model's)
+        from ..roller.solvers import default_n_slices
+
+        self.n_slices = (default_n_slices(model if self.sliced else DEFAULT_SLICE_MODEL)
+                         if n_slices is None else n_slices)
         # raceways: the inner one at (d_m - D)/2; the outer one leaves P_d/2 per side
         self.raceways = Raceways(inner=(self.pitch_diameter - D) / 2,
                                  outer=(self.pitch_diameter + D) / 2 + self.clearance / 2,
@@ -761,6 +612,295 @@ class RadialRollerBearing:
         self.azimuth = (self.azimuth0 + 2 * math.pi * np.arange(self.rollers)
                         / self.rollers)
         self.azimuth = (self.azimuth + math.pi) % (2 * math.pi) - math.pi
+        self.static_rating = (
+            static_load_rating(self.rollers, self.pitch_diameter, D, self.length)
+            if static_rating is None
+            else float(check_positive("static_rating", static_rating, "N")))
+        if self.lubricant and self.lubricant["contamination"] is not None:
+            from .ratings import fatigue_load_limit as _cu
+
+            given = self.lubricant["fatigue_load_limit"]
+            self.lubricant["fatigue_load_limit"] = (
+                float(_cu(self.static_rating, self.pitch_diameter)) if given is None
+                else float(check_positive("fatigue_load_limit", given, "N")))
+
+    # -- mounting, lubricant, flanges (the inputs beyond the load distribution) -----
+    @staticmethod
+    def _needs(given, partners, reason, values=None):
+        """Refuse an input group given in part: when any input of `given` (name ->
+        value) is not None, every name of `partners` must be given in `values`
+        (default `given`)."""
+        values = given if values is None else values
+        named = {k: v for k, v in given.items() if v is not None}
+        missing = [k for k in partners if values.get(k) is None]
+        if named and missing:
+            raise CombinationError({**named, **{k: None for k in missing}}, reason)
+
+    def _mounting(self, shaft_interference, bore, shaft_bore, housing_interference,
+                  outside_diameter, housing_diameter, temperature_difference,
+                  ring_modulus=None):
+        """The operating clearance from the fits (Lame) and the rings' temperature
+        difference, set as self.clearance; returns the changes (None: none given)."""
+        from .fits import (inner_raceway_expansion, operating_clearance,
+                           outer_raceway_contraction, thermal_clearance_change)
+
+        shaft = {"shaft_interference": shaft_interference, "bore": bore,
+                 "shaft_bore": shaft_bore}
+        housing = {"housing_interference": housing_interference,
+                   "outside_diameter": outside_diameter,
+                   "housing_diameter": housing_diameter}
+        self._needs(shaft, ("shaft_interference", "bore"), "an inner-ring fit needs "
+                    "the interference and the ring's bore")
+        self._needs(housing, ("housing_interference", "outside_diameter"), "an "
+                    "outer-ring fit needs the interference and the ring's outside "
+                    "diameter")
+        if ring_modulus is not None and shaft_interference is None \
+                and housing_interference is None:
+            raise CombinationError({"ring_modulus": ring_modulus,
+                                    "shaft_interference": None,
+                                    "housing_interference": None},
+                                   "the rings' modulus is used by a fit only")
+        if (shaft_interference is None and housing_interference is None
+                and temperature_difference is None):
+            return None
+        dm, D, Pd = self.pitch_diameter, self.roller_diameter, self.clearance
+        E = (2.0 * self.estar * (1.0 - self.poisson ** 2) if ring_modulus is None
+             else float(check_positive("ring_modulus", ring_modulus, "Pa")))
+        nu = self.poisson
+        d_in, d_out = dm - D, dm + D + Pd          # raceway diameters
+        grow = shrink = heat = 0.0
+        if shaft_interference is not None:
+            d = float(check_interval("bore", bore, 0.0, d_in, low_open=True,
+                                     high_open=True, unit="m",
+                                     hint="the bore lies inside the inner raceway "
+                                          "(d_m - D)"))
+            ds = 0.0 if shaft_bore is None else float(check_interval(
+                "shaft_bore", shaft_bore, 0.0, d, high_open=True, unit="m",
+                hint="a hollow shaft's bore is smaller than the ring's bore"))
+            grow = float(inner_raceway_expansion(shaft_interference, d, d_in, E, nu,
+                                                 shaft_bore=ds))
+        if housing_interference is not None:
+            Do = float(check_interval("outside_diameter", outside_diameter, d_out,
+                                      np.inf, low_open=True, high_open=True, unit="m",
+                                      hint="the outer ring's outside lies beyond its "
+                                           "raceway (d_m + D + P_d)"))
+            Dh = np.inf if housing_diameter is None else float(check_interval(
+                "housing_diameter", housing_diameter, Do, np.inf, low_open=True,
+                unit="m", hint="the housing's outside lies beyond the ring's"))
+            shrink = float(outer_raceway_contraction(housing_interference, Do, d_out,
+                                                     E, nu, housing_diameter=Dh))
+        if temperature_difference is not None:
+            heat = float(thermal_clearance_change(d_in, d_out, D,
+                                                  temperature_difference, 0.0))
+        op = float(operating_clearance(Pd, grow, shrink, heat))
+        self.clearance = float(check_interval(
+            "operating clearance", op, -D, D, low_open=True, high_open=True, unit="m",
+            hint="the fits and temperatures leave a clearance beyond the roller "
+                 "diameter"))
+        return {"unmounted": Pd, "inner_fit": 0.0 - grow, "outer_fit": 0.0 - shrink,
+                "thermal": heat}
+
+    def _lubricant(self, viscosity, density, pressure_viscosity, roughness_roller,
+                   roughness_raceway, film_formula, contamination, reliability,
+                   fatigue_load_limit):
+        """The lubricant, surfaces and life-modification inputs, checked (None: none
+        given)."""
+        given = {"viscosity": viscosity, "density": density,
+                 "pressure_viscosity": pressure_viscosity,
+                 "roughness_roller": roughness_roller,
+                 "roughness_raceway": roughness_raceway,
+                 "contamination": contamination, "reliability": reliability,
+                 "fatigue_load_limit": fatigue_load_limit}
+        if film_formula not in FILM_FORMULAS:
+            raise UnknownNameError("film_formula", film_formula, list(FILM_FORMULAS))
+        film = ("viscosity", "density", "pressure_viscosity")
+        self._needs({k: given[k] for k in film[1:]}, film, "the EHL film needs the "
+                    "viscosity, the density (eta0 = rho nu) and the pressure-viscosity "
+                    "coefficient", given)
+        self._needs({k: given[k] for k in ("roughness_roller", "roughness_raceway")},
+                    film + ("roughness_roller", "roughness_raceway"), "the film ratio "
+                    "needs both roughnesses and the film inputs", given)
+        self._needs({"contamination": contamination}, ("viscosity",), "the modified "
+                    "life needs the viscosity ratio kappa: give the viscosity", given)
+        self._needs({"reliability": reliability,
+                     "fatigue_load_limit": fatigue_load_limit}, ("contamination",),
+                    "the modified life (a1, C_u) needs the contamination factor", given)
+        if film_formula != DEFAULT_FILM_FORMULA and pressure_viscosity is None:
+            raise CombinationError({"film_formula": film_formula,
+                                    "pressure_viscosity": None},
+                                   "a film formula needs the film inputs")
+        if all(v is None for v in given.values()):
+            return None
+        lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
+        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3"),
+                           ("pressure_viscosity", "1/Pa")):
+            v = given[name]
+            lub[name] = None if v is None else float(check_positive(name, v, unit))
+        for name in ("roughness_roller", "roughness_raceway"):
+            v = given[name]
+            lub[name] = None if v is None else float(check_interval(
+                name, v, 0.0, np.inf, high_open=True, unit="m"))
+        lub["contamination"] = None if contamination is None else float(
+            check_interval("contamination", contamination, 0.0, 1.0))
+        lub["reliability"] = 0.9 if reliability is None else float(
+            check_interval("reliability", reliability, 0.9, 0.9995))
+        return lub
+
+    def _flange_geometry(self, end_radius, flange_angle, inner_flange_height,
+                         outer_flange_height, overall_length, end_chamfer, axial_share):
+        """The flanges of an NJ / NUP bearing, checked once by a zero-force flange
+        contact (the contact point on both flange faces); None: none given."""
+        from .flanges import SHARE_RULES, flange_contacts
+
+        geo = {"end_radius": end_radius, "flange_angle": flange_angle,
+               "inner_flange_height": inner_flange_height,
+               "outer_flange_height": outer_flange_height}
+        extra = {"overall_length": overall_length, "end_chamfer": end_chamfer}
+        self._needs({**geo, **extra}, tuple(geo), "the flanges need the roller end "
+                    "radius, the flange angle and both flange heights")
+        if axial_share not in SHARE_RULES:
+            raise UnknownNameError("axial_share", axial_share, SHARE_RULES)
+        if end_radius is None:
+            return None
+        geo["roller_length"] = self.length if overall_length is None else overall_length
+        geo["end_chamfer"] = 0.0 if end_chamfer is None else end_chamfer
+        flange_contacts(0.0, self.roller_diameter, geo["roller_length"],
+                        self.pitch_diameter, geo["end_radius"], geo["flange_angle"],
+                        self.estar, geo["inner_flange_height"],
+                        geo["outer_flange_height"], geo["end_chamfer"])
+        geo["rule"] = axial_share
+        return geo
+
+    def _extras(self, sol, speed, axial_load):
+        """The solution with what the load distribution implies: static safety, the
+        damage per roller, and, where their inputs are given, the operating clearance's
+        origin, the film, kappa, the modified lives and the flange contacts."""
+        from dataclasses import replace
+
+        from .ratings import (life_modification_factor, modified_rating_life,
+                              modified_reference_rating_life, pressure_safety_factor,
+                              reliability_factor, roller_damage_shares,
+                              static_equivalent_load, static_safety_factor)
+
+        F = sol.radial_load
+        P0 = float(static_equivalent_load(F))
+        pp = sol.peak_pressure
+        f = dict(clearance=self.clearance, clearance_changes=self.clearance_changes,
+                 static_rating=self.static_rating, static_load=P0,
+                 static_safety=float(static_safety_factor(self.static_rating, P0)),
+                 pressure_safety=(float(pressure_safety_factor(pp))
+                                  if math.isfinite(pp) else math.nan),
+                 roller_damage=roller_damage_shares(
+                     self.rating, self.pitch_diameter, self.roller_diameter,
+                     sol.slice_loads_inner, sol.slice_loads_outer, self.rotating))
+        notes = list(sol.notes)
+        lub = self.lubricant
+        if speed is not None:
+            f.update(self._film(sol, speed))
+            if lub is not None and lub["contamination"] is not None:
+                ec, cu = lub["contamination"], lub["fatigue_load_limit"]
+                a1 = float(reliability_factor(lub["reliability"]))
+                a = float(life_modification_factor(f["kappa"], ec, cu, F))
+                ref = modified_reference_rating_life(
+                    self.rating, self.pitch_diameter, self.roller_diameter,
+                    sol.slice_loads_inner, sol.slice_loads_outer, f["kappa"], ec, cu,
+                    lub["reliability"], self.rotating)
+                f.update(fatigue_load_limit=cu, reliability_factor=a1,
+                         life_modification=a,
+                         life_modified=float(modified_rating_life(sol.life_iso281, a,
+                                                                  a1)),
+                         reference_load=ref.reference_load,
+                         life_modification_reference=ref.life_modification,
+                         life_modified_reference=ref.life)
+        if axial_load is not None:
+            f.update(self._flange_solution(sol, axial_load, notes))
+        f["notes"] = tuple(notes)
+        return replace(sol, **f)
+
+    def _film(self, sol, speed):
+        """Entrainment speed; with the lubricant, nu1 and kappa; with the film inputs,
+        each lamina's minimum and central film and each contact's Lambda."""
+        from .lubrication import (central_film_pan_hamrock, entrainment_speed,
+                                  film_ratio, minimum_film_thickness, rated_viscosity)
+
+        w = abs(speed)
+        f = dict(speed=float(speed),
+                 entrainment_speed=float(entrainment_speed(speed, self.pitch_diameter,
+                                                           self.roller_diameter)))
+        lub = self.lubricant
+        if lub is None or lub["viscosity"] is None:
+            return f
+        if not w > 0:
+            raise OutOfRangeError("speed", speed, "a nonzero speed [rad/s]", unit="rad/s",
+                                  hint="the film and kappa need the rings to turn")
+        nu1 = float(rated_viscosity(w, self.pitch_diameter))
+        f.update(rated_viscosity=nu1, kappa=lub["viscosity"] / nu1)
+        if lub["pressure_viscosity"] is None:
+            return f
+        eta = lub["density"] * lub["viscosity"]
+        alpha = lub["pressure_viscosity"]
+        width = self.length / sol.slice_loads_inner.shape[1]
+        u = f["entrainment_speed"]
+        radii = effective_radii(self.roller_diameter / 2, self.raceways.inner,
+                                self.raceways.outer)
+        for name, R, q in (("inner", radii[0], sol.slice_loads_inner),
+                           ("outer", radii[1], sol.slice_loads_outer)):
+            line = np.asarray(q, dtype=float) / width
+            hmin = np.asarray(minimum_film_thickness(u, R, line, self.estar, eta, alpha,
+                                                     formula=lub["film_formula"]))
+            f[f"film_minimum_{name}"] = hmin
+            f[f"film_central_{name}"] = np.asarray(central_film_pan_hamrock(
+                u, R, line, self.estar, eta, alpha))
+            if lub["roughness_roller"] is not None:
+                lam = np.asarray(film_ratio(hmin, lub["roughness_roller"],
+                                            lub["roughness_raceway"]))
+                f[f"film_ratio_{name}"] = lam.min(axis=1)
+        f["film_formula"] = lub["film_formula"]
+        if "film_ratio_inner" in f:
+            f["film_ratio"] = float(min(f["film_ratio_inner"].min(),
+                                        f["film_ratio_outer"].min()))
+        return f
+
+    def _flange_solution(self, sol, axial_load, notes):
+        """Each roller's share of the axial load and its two flange contacts
+        (uncoupled: from the radial load distribution, which the flange couple does not
+        change)."""
+        from .flanges import axial_load_shares, flange_contacts
+
+        g = self.flanges
+        Fa = float(check_interval("axial_load", axial_load, 0.0, np.inf,
+                                  high_open=True, unit="N"))
+        if g is None:
+            raise CombinationError({"axial_load": Fa, "end_radius": None},
+                                   "an axial load needs the flanges (end_radius, "
+                                   "flange_angle, inner_flange_height, "
+                                   "outer_flange_height)")
+        Q = sol.roller_loads
+        Faj = axial_load_shares(Fa, Q, g["rule"])
+        c = flange_contacts(Faj, self.roller_diameter, g["roller_length"],
+                            self.pitch_diameter, g["end_radius"], g["flange_angle"],
+                            self.estar, g["inner_flange_height"],
+                            g["outer_flange_height"], g["end_chamfer"])
+        M = np.asarray(c.tilting_moment, dtype=float)
+        offset = np.divide(np.abs(M), 2.0 * Q, out=np.zeros_like(M), where=Q > 0)
+        margin = np.minimum(c.inner_rim_margin, c.outer_rim_margin)
+        if np.any(offset > self.length / 6):
+            notes.append("flange couple: rollers "
+                         f"{np.flatnonzero(offset > self.length / 6).tolist()} need "
+                         "their raceway loads shifted beyond L/6: their line loads "
+                         "lift at one end")
+        if np.any(margin < 0):
+            notes.append("flange contact ellipses run over the flange rim at rollers "
+                         f"{np.flatnonzero(margin < 0).tolist()} (Hertz does not hold)")
+        notes.append("flanges: the couple of the flange forces is not fed back into "
+                     "the rollers' tilt (the radial load distribution is the "
+                     "flange-free one)")
+        return dict(axial_load=Fa, flange_forces=np.asarray(Faj, dtype=float),
+                    flange_normal_forces=np.asarray(c.normal_force, dtype=float),
+                    flange_pressure_inner=np.asarray(c.inner_p0, dtype=float),
+                    flange_pressure_outer=np.asarray(c.outer_p0, dtype=float),
+                    flange_rim_margin=np.asarray(margin, dtype=float),
+                    flange_couple=M, flange_load_offset=offset)
 
     # -- the roller law -----------------------------------------------------------
     def _law_grid(self, F):
@@ -787,23 +927,23 @@ class RadialRollerBearing:
 
     def _contacts(self):
         """(solve at depth, solve at force) of the inner and the outer contact."""
-        from .roller import ProfiledRoller, iso_slicing
+        out = []
+        for c in self._solvers():
+            out.append((lambda d, c=c: c.at_depth(d, 0.0),
+                        lambda F, c=c: c.at_force(F, 0.0)))
+        return out
+
+    def _solvers(self):
+        """The slice solvers of the inner and the outer contact of one roller (fresh:
+        each keeps its own warm start), from the factory every door uses
+        (:func:`linecontact.roller.solvers.slice_solver`), as
+        :func:`~linecontact.raceway.roller_between_raceways` builds them."""
+        from ..roller.solvers import slice_solver
 
         R1 = self.roller_diameter / 2
-        out = []
-        for R in effective_radii(R1, self.raceways.inner, self.raceways.outer):
-            if self.model == "profiled-roller":
-                c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                                   n_slices=self.n_slices)
-                out.append((lambda d, c=c: c.at_depth(d, tilt=0.0),
-                            lambda F, c=c: c.at_force(F, tilt=0.0)))
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                out.append((lambda d, a=args: iso_slicing(*a, depth=d, tilt=0.0,
-                                                          n_slices=self.n_slices),
-                            lambda F, a=args: iso_slicing(*a, force=F, tilt=0.0,
-                                                          n_slices=self.n_slices)))
-        return out
+        return [slice_solver(self.model, R, self.length, self.estar, self.profile,
+                             n_slices=self.n_slices)
+                for R in effective_radii(R1, self.raceways.inner, self.raceways.outer)]
 
     @staticmethod
     def _depth_table(at_depth, d_lo, d_top, F_top):
@@ -860,9 +1000,11 @@ class RadialRollerBearing:
         return dr
 
     @serial_blas
-    def solve(self, radial_load, moment=None, misalignment=None):
+    def solve(self, radial_load, moment=None, misalignment=None, *, speed=None,
+              axial_load=None):
         r"""Solve the bearing under a radial load F_r, and a tilting moment M or a given
-        misalignment theta (:class:`BearingSolution`).
+        misalignment theta (:class:`BearingSolution`); at a speed, and with an axial
+        load on the flanges.
 
         .. math::
 
@@ -871,8 +1013,9 @@ class RadialRollerBearing:
 
         Parameters
         ----------
-        radial_load : float
-            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller).
+        radial_load : float or array_like
+            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller); an
+            array gives an object array of solutions of its shape, one per load.
         moment : float, optional
             Tilting moment M on the inner ring about the axis normal to the load plane,
             |M| < inf [N m]: the ring tilt theta is solved with delta_r (2 DOF).
@@ -881,10 +1024,18 @@ class RadialRollerBearing:
             plane, |theta| < 0.1 [rad] (positive: the rings close at +x on the loaded
             side): delta_r is solved at this tilt (1 DOF) and the moment it needs is
             reported. At most one of `moment` and `misalignment`.
+        speed : float, optional
+            Speed of the inner ring against the outer ring, -inf < omega < inf [rad/s]
+            (nonzero with a lubricant): the entrainment speed, and with the bearing's
+            lubricant kappa, the film and the modified lives.
+        axial_load : float, optional
+            Axial load F_a carried by the flanges, 0 <= F_a < inf [N] (needs the
+            bearing's flange geometry): each roller's flange forces, their Hertz
+            stresses and couple.
 
         Returns
         -------
-        BearingSolution
+        BearingSolution or ndarray of BearingSolution
 
         Raises
         ------
@@ -892,14 +1043,20 @@ class RadialRollerBearing:
             Both `moment` and `misalignment`; either with a straight-cylinder law named
             as the model (a law has no tilt: use ``model="profiled-roller"``).
         OutOfRangeError
-            A load that lifts every roller, or one beyond the contact law's range.
+            A load that lifts every roller, or one beyond the contact law's range; a
+            preload (clearance < 0) that alone presses the rollers beyond it, named as
+            the clearance.
 
         Notes
         -----
         Valid for 0 < F_r < inf within the contact law's range. With a moment or a
         misalignment each roller is solved by slices (the bearing's slice model; for a
         straight roller with no model named, ``"profiled-roller"``) and is free to
-        tilt between its rings, docs/bearings.md.
+        tilt between its rings, docs/bearings.md. The film, lives, static safety and
+        flange contacts follow from the load distribution (docs/bearing_life.md);
+        the flange couple is not fed back into it (the rollers' radial loads and tilts
+        are the flange-free ones; the solution reports the load shift that would
+        balance the couple).
 
         Examples
         --------
@@ -907,9 +1064,50 @@ class RadialRollerBearing:
         >>> f"{s.roller_loads @ np.cos(s.azimuth) / 10e3:.12f}"
         '1.000000000000'
         """
+        if not isinstance(radial_load, str) and np.ndim(radial_load) > 0:
+            loads = check_interval(
+                "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
+                unit="N", hint="a radial load of zero or less lifts every roller")
+            out = np.empty(np.shape(loads), dtype=object)
+            for idx, f in np.ndenumerate(loads):
+                out[idx] = self.solve(float(f), moment, misalignment, speed=speed,
+                                      axial_load=axial_load)
+            return out
+        try:
+            return self._solve(radial_load, moment, misalignment, speed, axial_load)
+        except OutOfRangeError as exc:
+            top = getattr(exc, "top", None)
+            if top is None or not -self.clearance / 2 >= top:
+                raise
+            given = getattr(self, "internal_clearance", self.clearance)
+            fitted = ("" if given == self.clearance else
+                      f" (the operating clearance after the fits: {self.clearance:.3g} m)")
+            raise OutOfRangeError(
+                "clearance", given,
+                f"(-{2 * top:.3g}, {self.roller_diameter:.3g}) m at F_r = "
+                f"{float(radial_load):.6g} N{fitted}", unit="m",
+                hint=f"a preload presses every roller by -P_d/2 = "
+                     f"{-self.clearance / 2 * 1e6:.4g} um before any load, beyond the "
+                     f"roller's range at this load ({top * 1e6:.4g} um); preloads are "
+                     "a few micrometres") from None
+
+    def _solve(self, radial_load, moment, misalignment, speed, axial_load):
+        """:meth:`solve` of one radial load."""
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
+        if speed is not None:
+            speed = float(check_interval("speed", speed, -np.inf, np.inf, low_open=True,
+                                         high_open=True, unit="rad/s"))
+        elif self.lubricant is not None:
+            raise CombinationError({"speed": None, "viscosity": self.lubricant[
+                "viscosity"]}, "the lubricant's film and kappa need the inner ring's "
+                "speed: give solve(..., speed=)")
+        return self._extras(self._solve_load(F, moment, misalignment), speed,
+                            axial_load)
+
+    def _solve_load(self, F, moment, misalignment):
+        """The load distribution under F_r and a moment or misalignment."""
         if moment is not None and misalignment is not None:
             raise CombinationError({"moment": moment, "misalignment": misalignment},
                                    "give a tilting moment or a misalignment, not both "
@@ -1003,7 +1201,7 @@ class RadialRollerBearing:
     def _law_stresses(self, Q):
         """Subsurface stresses of the most loaded roller under a law: the plane-strain
         Hertz strip of each contact at the mean line load Q/L."""
-        from .stresses import line_contact_stresses
+        from ..stresses import line_contact_stresses
 
         R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
                                       self.raceways.outer)
@@ -1197,29 +1395,10 @@ class RadialRollerBearing:
         """(at_depth(d, t) -> RollerSolution, first_contact_depth(t)) factories of the
         inner and the outer contact of one roller (fresh solvers: each keeps its own
         warm start)."""
-        from .roller import ProfiledRoller, iso_slicing
-
-        R1 = self.roller_diameter / 2
-        radii = effective_radii(R1, self.raceways.inner, self.raceways.outer)
-        pair = []
-        for R in radii:
-            c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                               n_slices=self.n_slices)
-            if self.model == "profiled-roller":
-                pair.append(c.at_depth)
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                pair.append(lambda d, t, a=args: iso_slicing(
-                    *a, depth=d, tilt=t, n_slices=self.n_slices))
-        if self.model == "profiled-roller":
-            return pair, c.first_contact_depth
-        # ISO slicing: first contact on its own slice centres (x_k tan theta)
-        from .profiles import roller_drop
-
-        L, n = self.length, self.n_slices
-        x = -L / 2 + L / n * (np.arange(n) + 0.5)
-        P = roller_drop(self.profile, L, x)
-        return pair, lambda t: float(np.min(P - x * math.tan(t)))
+        inner, outer = self._solvers()
+        # the first contact: the same for both (the profile and the slices), here the
+        # outer contact's (ISO slicing: on its slice centres, x_k tan theta)
+        return [inner.at_depth, outer.at_depth], outer.first_contact_depth
 
     def _solve_tilted(self, F, M, theta):
         r"""Ring displacement and tilt (M given) or displacement at a given tilt, every

@@ -87,33 +87,43 @@ def rho_2d(beta):
     return 4 / 3 * (np.sqrt(beta) - beta ** 2 / 4)
 
 
-def end_release(beta, s, c):
-    """G_e/w, the end's energy release rate over w (module doc)."""
-    return (beta ** 2 / 4 - np.sqrt(beta)) ** 2 / beta * (np.log(1 / (s * beta)) + c)
+def end_release(beta, s, c, k=1.0):
+    """G_e/w, the end's energy release rate over w (module doc): (beta^2/4 -
+    sqrt(beta))^2/beta (k ln(1/(s beta)) + c)."""
+    return (beta ** 2 / 4 - np.sqrt(beta)) ** 2 / beta * (k * np.log(1 / (s * beta)) + c)
 
 
-def pull_off_beta(s, c):
+def pull_off_beta(s, c, k=1.0):
     """The middle section's half-width over b_c at pull-off: the largest beta in
     [1, 16^(1/3)] with G_e = w, or 1 (the 2D pull-off) where G_e < w at beta = 1."""
     from scipy.optimize import brentq
 
-    if end_release(1.0, s, c) <= 1.0:
+    if end_release(1.0, s, c, k) <= 1.0:
         return 1.0
-    return float(brentq(lambda b: end_release(b, s, c) - 1.0, 1.0, BETA_ZERO * (1 - 1e-12),
-                        xtol=1e-14, rtol=1e-14))
+    return float(brentq(lambda b: end_release(b, s, c, k) - 1.0, 1.0,
+                        BETA_ZERO * (1 - 1e-12), xtol=1e-14, rtol=1e-14))
 
 
-def ratio(s, c):
+def ratio(s, c, k=1.0):
     """The end model's pull-off over the 2D JKR value times L (force control)."""
-    return float(rho_2d(pull_off_beta(s, c)))
+    return float(rho_2d(pull_off_beta(s, c, k)))
 
 
-def calibrate(s, rho):
-    """The constant c that makes the model give `rho` at s (rho < 1)."""
-    from scipy.optimize import brentq
+def fit(data, k=None):
+    """Least squares in the relative residual: (k, c) for data {s: rho}, or c alone with
+    k given. Returns (k, c, residuals model/BEM - 1 in the order of data)."""
+    from scipy.optimize import least_squares
 
-    beta = brentq(lambda b: rho_2d(b) - rho, 1.0, BETA_ZERO, xtol=1e-14, rtol=1e-14)
-    return float(1 / ((beta ** 2 / 4 - np.sqrt(beta)) ** 2 / beta) - np.log(1 / (s * beta)))
+    ss = list(data)
+    if k is None:
+        res = least_squares(lambda p: [ratio(s, p[1], p[0]) / data[s] - 1 for s in ss],
+                            [1.0, -0.4], xtol=1e-14, ftol=1e-14, gtol=1e-14)
+        k_, c_ = map(float, res.x)
+    else:
+        res = least_squares(lambda p: [ratio(s, p[0], k) / data[s] - 1 for s in ss],
+                            [-0.4], xtol=1e-14, ftol=1e-14, gtol=1e-14)
+        k_, c_ = float(k), float(res.x[0])
+    return k_, c_, [ratio(s, c_, k_) / data[s] - 1 for s in ss]
 
 
 def add_arguments(parser):
@@ -141,24 +151,16 @@ def run(args):
     t0 = time.perf_counter()
     bem = read_table("adhesion_cylinder", directory=args.bem_table)
     cols = bem.columns
-    c_by_grid, cal_lines = {}, []
-    for n in GRIDS:
-        cs = []
-        for s in CALIBRATION_S:
-            i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])
-            cs.append(calibrate(s, float(cols[f"ratio_force_n{n}"][i])))
-        c_by_grid[n] = float(np.mean(cs))
-        cal_lines.append(f"n = {n}: c = {', '.join(f'{v:.4f}' for v in cs)} at s = "
-                         f"{', '.join(f'{v:g}' for v in CALIBRATION_S)}, mean "
-                         f"{c_by_grid[n]:.4f}")
-    c8, c16 = c_by_grid[GRIDS[0]], c_by_grid[GRIDS[1]]
-    c_inf, dc = 2 * c16 - c8, abs(c16 - c8)
     # the BEM table's own error at its calibration rows (extrapolated vs finest grid)
     tab_err = max(abs(float(cols["ratio_force"][i]) / float(cols[f"ratio_force_n{GRIDS[1]}"][i])
                       - 1) for i in range(len(cols["s"])) if cols["s"][i] <= max(CALIBRATION_S))
 
     runs = [tuple(float(v) if k == 0 else int(v) for k, v in enumerate(x.split(":")))
             for x in args.check]
+    for s, n in runs:
+        if n not in GRIDS or not 0 < s < float(cols["s"][0]):
+            raise SystemExit(f"--check {s:g}:{n}: N must be one of the BEM table's grids "
+                             f"{', '.join(map(str, GRIDS))} and 0 < S < {cols['s'][0]:g}")
     tasks = [{"key": f"s{s:g}_n{n}", "s": s, "n": n, "steps": args.steps}
              for s, n in sorted(runs, key=lambda r: r[1] * r[1] / r[0])]
     own_checkpoint = getattr(args, "checkpoint", None) is None
@@ -167,38 +169,65 @@ def run(args):
     results = run_study_from_args(solve_task, tasks, args, desc="adhesion-long study")
 
     from .adhesion_study import f2d
-    check_lines, model_err, depth_err = [], 0.0, 0.0
+
+    # per grid: the BEM table's rows s <= 0.05 and the runs below it
+    data = {n: {} for n in GRIDS}
+    for n in GRIDS:
+        for s in CALIBRATION_S:
+            i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])
+            data[n][float(s)] = float(cols[f"ratio_force_n{n}"][i])
+    depth_err = 0.0
+    for r in results:
+        rf, rd = r["force"] / f2d(r["s"]), r["force_depth"] / f2d(r["s"])
+        data[r["n"]][r["s"]] = rf
+        depth_err = max(depth_err, abs(rd / rf - 1))
+    # k from the longest series (the coarse grid's: the far field's log coefficient, not
+    # the criterion's), c per grid with that k, then c extrapolated in the grid
+    n1, n2 = GRIDS
+    k, c1, res1 = fit(data[n1])
+    _, c2, res2 = fit(data[n2], k)
+    c_inf, dc = 2 * c2 - c1, abs(c2 - c1)
+    # the prediction test: refit without the smallest s of the long series, predict it
+    s_last = min(data[n1])
+    k_l, c_l, _ = fit({s: v for s, v in data[n1].items() if s != s_last})
+    loo = ratio(s_last, c_l, k_l) / data[n1][s_last] - 1
+    fit_err = max(abs(v) for v in res1 + res2)
+    # below the data the model is a prediction: its error grows by |loo| per halving
+    # of s below the smallest fitted s (the prediction test's distance: one halving)
+    s_data = min(min(d) for d in data.values())
+
+    def model_err(s):
+        return max(fit_err, abs(loo)) + abs(loo) * max(0.0, np.log2(s_data / s))
+    c_grid = {n1: c1, n2: c2}
+    check_lines = []
     for r in sorted(results, key=lambda r: (r["n"], -r["s"])):
         rf, rd = r["force"] / f2d(r["s"]), r["force_depth"] / f2d(r["s"])
-        m = ratio(r["s"], c_by_grid[r["n"]])
-        model_err = max(model_err, abs(m / rf - 1))
-        depth_err = max(depth_err, abs(rd / rf - 1))
+        m = ratio(r["s"], c_grid[r["n"]], k)
         check_lines.append(f"s = {r['s']:g}, n = {r['n']}: BEM {rf:.4f} (depth control "
                            f"{rd:.4f}), model with c_{r['n']} {m:.4f} ({100 * (m / rf - 1):+.2f} "
                            f"%); the middle's half-width at pull-off BEM "
                            f"{r['width_min'] / r['s']:.2f} b_c, model "
-                           f"{pull_off_beta(r['s'], c_by_grid[r['n']]):.2f} b_c")
-    for n in GRIDS:                    # the calibration rows' own fit residual
-        for s in CALIBRATION_S:
-            i = int(np.flatnonzero(np.isclose(cols["s"], s))[0])
-            rf = float(cols[f"ratio_force_n{n}"][i])
-            model_err = max(model_err, abs(ratio(s, c_by_grid[n]) / rf - 1))
+                           f"{pull_off_beta(r['s'], c_grid[r['n']], k):.2f} b_c")
+    cal_lines = [f"n = {n}: {len(data[n])} BEM values at s = "
+                 f"{', '.join(f'{s:g}' for s in sorted(data[n]))}, residuals "
+                 f"{', '.join(f'{100 * v:+.2f} %' for _, v in sorted(zip(data[n], res)))}"
+                 for n, res in ((n1, res1), (n2, res2))]
 
     s_rows = np.geomspace(S_MIN, float(cols["s"][0]), S_ROWS)
     out = {k: [] for k in ("s", "ratio_force", "error_force", "ratio_depth", "error_depth",
                            "beta", "ratio_force_n8", "ratio_force_n16")}
     for s in s_rows:
-        r0 = ratio(s, c_inf)
-        e_c = max(abs(ratio(s, c_inf + dc) - r0), abs(ratio(s, c_inf - dc) - r0))
-        err = e_c + (model_err + tab_err) * r0
+        r0 = ratio(s, c_inf, k)
+        e_c = max(abs(ratio(s, c_inf + dc, k) - r0), abs(ratio(s, c_inf - dc, k) - r0))
+        err = e_c + (model_err(s) + tab_err) * r0
         out["s"].append(s)
         out["ratio_force"].append(r0)
         out["error_force"].append(err)
         out["ratio_depth"].append(r0)
         out["error_depth"].append(err + depth_err * r0)
-        out["beta"].append(pull_off_beta(s, c_inf))
-        out["ratio_force_n8"].append(ratio(s, c8))
-        out["ratio_force_n16"].append(ratio(s, c16))
+        out["beta"].append(pull_off_beta(s, c_inf, k))
+        out["ratio_force_n8"].append(ratio(s, c1, k))
+        out["ratio_force_n16"].append(ratio(s, c2, k))
     out = {k: np.array(v, dtype=float) for k, v in out.items()}
     wall = time.perf_counter() - t0
     meta = table_meta(
@@ -207,12 +236,12 @@ def run(args):
               "with JKR adhesion, over the 2D JKR value times L, against s = b_c/L below "
               "the adhesive BEM table: end model calibrated on the BEM",
         source="end model (tools/studies/adhesion_long_study.py): the middle a 2D JKR "
-               "section (Barquins 1988), the ends peel when G_e = f^2 (ln(L/b) + c)/(2 pi "
-               "E* b) reaches w (the energy a long line-loaded strip stores per unit "
-               "length); c calibrated on the adhesive BEM (tools/bem/adhesion.py; "
+               "section (Barquins 1988), the ends peel when G_e = f^2 (k ln(L/b) + c)/(2 "
+               "pi E* b) reaches w (the energy a long line-loaded strip stores per unit "
+               "length); k and c fitted to the adhesive BEM (tools/bem/adhesion.py; "
                "tables/adhesion_cylinder.csv at s = "
-               f"{', '.join(f'{v:g}' for v in CALIBRATION_S)}) and checked by BEM "
-               "retractions below that table",
+               f"{', '.join(f'{v:g}' for v in CALIBRATION_S)} and BEM retractions below "
+               "that table)",
         units="s = b_c/L = (2 w R^2/(pi E* L^3))^(1/3) [-], ratio_force = pull-off under "
               "force control over the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L [-], "
               "error_force = its stated error (absolute, in the ratio) [-], ratio_depth, "
@@ -220,17 +249,22 @@ def run(args):
               "half-width at pull-off over b_c [-], ratio_force_nN = the model with the "
               "constant of BEM grid n = N (the grid convergence) [-]",
         model="pull-off at the first state of the stable branch with G_e/w = (beta^2/4 - "
-              "sqrt(beta))^2/beta (ln(1/(s beta)) + c) = 1; ratio = (4/3)(sqrt(beta) - "
-              f"beta^2/4); c = {c_inf:.4f} +- {dc:.4f}",
-        calibration="; ".join(cal_lines) + f"; first-order extrapolation c = 2 c_16 - c_8 "
-                    f"= {c_inf:.4f}, error |c_16 - c_8| = {dc:.4f}",
+              "sqrt(beta))^2/beta (k ln(1/(s beta)) + c) = 1; ratio = (4/3)(sqrt(beta) - "
+              f"beta^2/4); k = {k!r}, c = {c_inf!r} +- {dc!r}",
+        calibration=f"k = {k!r} and c_{n1} = {c1!r} fitted on grid n = {n1}, c_{n2} = "
+                    f"{c2!r} on n = {n2} with that k; " + "; ".join(cal_lines)
+                    + f"; first-order extrapolation c = 2 c_{n2} - c_{n1}, error "
+                      f"|c_{n2} - c_{n1}|; prediction test: fitted without s = "
+                      f"{s_last:g} (n = {n1}) the model gives it within {100 * loo:+.2f} %",
         check="; ".join(check_lines),
-        accuracy=f"error = |ratio(c +- dc) - ratio(c)| + (model error {model_err:.2e} + "
-                 f"BEM table error {tab_err:.2e}) x ratio; model error = the largest "
-                 "|model/BEM - 1| on the same grid over the calibration rows and the check "
-                 f"runs; depth control adds {depth_err:.2e} x ratio (the largest measured "
-                 "|depth/force control - 1| of the check runs)",
-        asymptote="ratio -> (4/3) 16^(1/6)/sqrt(ln(1/s)) -> 0 as s -> 0 (the end's "
+        accuracy=f"error = |ratio(c +- dc) - ratio(c)| + (model error + BEM table error "
+                 f"{tab_err:.2e}) x ratio; model error = {max(fit_err, abs(loo)):.2e} (the "
+                 "largest |model/BEM - 1| of the fits on either grid and of the prediction "
+                 f"test) + {abs(loo):.2e} per halving of s below s = {s_data:g} (the "
+                 "prediction test's error per halving); depth control adds "
+                 f"{depth_err:.2e} x ratio (the largest measured |depth/force control - 1| "
+                 "of the check runs)",
+        asymptote="ratio -> (4/3) 16^(1/6)/sqrt(k ln(1/s)) -> 0 as s -> 0 (the end's "
                   "energy release grows as ln(L/b_c)); never the 2D value",
         s_range=f"[{s_rows[0]:g}, {s_rows[-1]:g}]",
         wall_time=wall_time_line(wall, results, "BEM check retractions", args.scheduler,

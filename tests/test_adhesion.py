@@ -138,7 +138,7 @@ def test_long_roller_below_the_table_gets_the_end_model_and_the_mdr_its_error():
     c = CylinderAdhesion(get_model("universal", Rr, L, Ee, extrapolate=True), w)
     assert c.s == pytest.approx(1e-3, rel=1e-9)
     r = c.pull_off("force")
-    assert r["method"] == "end-model" and 0 < r["error"] < 0.05
+    assert r["method"] == "end-model" and 0 < r["error"] < 0.06   # stated 5.6 % at 1e-3
     assert 0.5 < r["ratio"] < 1 and r["pull_off_2d"] == c.pull_off_2d
     res = c.pull_off("force", method="mdr")
     assert res["method"] == "mdr"

@@ -42,10 +42,10 @@ unzips from its ends before its middle reaches b_c, and the ratio falls with s. 
 the BEM table (s < 0.025, most real rollers) the pull-off comes from
 ``tables/adhesion_long_roller.csv`` (``python -m tools.build_tables adhesion-long``),
 down to s = 1e-3, with its stated error: an end model, the ends peeling when the energy
-release rate :math:`G_e = f^2(\ln(L/b) + c)/(2\pi E^* b)` of the line-loaded strip
-(f the middle's tension per unit length, b its half-width) reaches w, its one constant
-c calibrated on the BEM and checked by BEM runs below the table; the ratio falls as
-:math:`(4/3)\,16^{1/6}/\sqrt{\ln(1/s)}` as s -> 0, never to the 2D value
+release rate :math:`G_e = f^2(k\ln(L/b) + c)/(2\pi E^* b)` of the line-loaded strip
+(f the middle's tension per unit length, b its half-width) reaches w, k and c fitted
+on the BEM, including BEM runs below the table; the ratio falls as
+:math:`(4/3)\,16^{1/6}/\sqrt{k\ln(1/s)}` as s -> 0, never to the 2D value
 (docs/adhesion.md). The plain MDR value is given beside it, by name
 (``method='mdr'``), with its error measured against the same BEM or end model.
 

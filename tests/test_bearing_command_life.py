@@ -110,3 +110,17 @@ def test_a_bad_spectrum_file_names_the_row_and_column(capsys, tmp_path):
     path.write_text("time_share,radial_load\n0.5,10kN\n0.5,20kN\n", encoding="utf-8")
     assert main(BASE + ["--spectrum", str(path)]) == 2       # shares of time, no speed
     assert "speed" in capsys.readouterr().err
+
+
+def test_header_keeps_the_clearance_as_given_beside_the_operating_one(capsys):
+    """P_d in the header line is the clearance the user gave (40 um); the operating
+    clearance after a 20 um shaft fit and 10 K (40 - 16.949 - 8.4 = 14.651 um,
+    docs/bearing_life.md) is named as such beside it, never in its place."""
+    fits = ["--shaft-interference", "20um", "--bore", "50mm", "--temperature-difference",
+            "10K"]
+    assert main(BASE + fits) == 0
+    head = capsys.readouterr().out.splitlines()[0]
+    assert "P_d = 40 um (operating 14.65" in head, head
+    assert main(BASE) == 0
+    head = capsys.readouterr().out.splitlines()[0]
+    assert "P_d = 40 um," in head and "operating" not in head, head

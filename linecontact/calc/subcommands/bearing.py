@@ -577,16 +577,23 @@ def describe(obj, si):
     b, s = obj.bearing, obj.solution
     sc = scales(obj)
     M = format_numbers([s.moment], 6, sc["moment"])[0]
+    # P_d as given; the operating clearance after fits and warming beside it (the load
+    # distribution's), never in its place
+    given = getattr(b, "internal_clearance", b.clearance)
+    factor, unit = (1.0, "m") if si else (1e6, "um")
+    pd = f"{given * factor:.6g} {unit}"
+    if given != b.clearance:
+        pd += f" (operating {b.clearance * factor:.6g} {unit})"
     if si:
         th = format_numbers([s.tilt], 6, sc["tilt"])[0]
         return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter:.6g} m, "
                 f"D = {b.roller_diameter:.6g} m, L = {b.length:.6g} m, P_d = "
-                f"{b.clearance:.6g} m, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
+                f"{pd}, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
                 f"F_r = {s.radial_load:.6g} N, M = {M} N m, theta = {th} rad")
     th = format_numbers([s.tilt * 1e3], 6, sc["tilt"] * 1e3)[0]
     return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter * 1e3:.6g} "
             f"mm, D = {b.roller_diameter * 1e3:.6g} mm, L = {b.length * 1e3:.6g} mm, "
-            f"P_d = {b.clearance * 1e6:.6g} um, E* = {b.estar / 1e9:.5g} GPa, profile "
+            f"P_d = {pd}, E* = {b.estar / 1e9:.5g} GPa, profile "
             f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {M} N m, "
             f"theta = {th} mrad")
 

@@ -323,3 +323,17 @@ def test_batch_rows_sharing_a_roller_are_one_sweep_equal_to_one_by_one(capsys, t
                 scale = {"moment_N_m": 1e-9 * together[k]["force_N"] * 0.014,
                          "tilt_rad": 1e-12}.get(name, 0.0)
                 assert a == pytest.approx(b, rel=1e-8, abs=scale), (k, name)
+
+
+def test_tilted_roller_table_says_what_its_negative_depth_is(capsys):
+    """A roller tilted by 1 deg (L = 10 mm) is pressed in at its loaded end, with its
+    centre lifted off: d < 0 at x = 0. The table's notes say that d is the centre's
+    approach and how far the loaded end goes in (the profiled roller's note was held
+    back for a --json-only block and never printed)."""
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--length", "10mm",
+                             "--estar", "115GPa", "--load", "1kN", "--tilt", "1deg")
+    assert status == 0, err
+    row = next(line for line in out.splitlines() if line.startswith("Profiled roller"))
+    assert float(row.split(")")[-1].split()[1]) < 0, row      # F [kN], d [um]
+    note = next(line for line in out.splitlines() if line.startswith("Note: profiled"))
+    assert "approach at the roller's centre" in note and "d + |theta| L/2" in note

@@ -262,7 +262,10 @@ def table_text(cases, present, results, si):
 
 
 def _block_note(results, text):
-    return any(b.note == text for b in results.blocks)
+    """Whether a block prints `text` under its own table (a block without rows, e.g.
+    the profiled roller's q(x) for --json only, prints no table and no note)."""
+    return any(b.note == text and any(r is not None for r in b.rows)
+               for b in results.blocks)
 
 
 def blocks_text(blocks, given, si):

@@ -130,3 +130,16 @@ def test_a_frame_without_rows_gives_an_empty_frame_with_the_result_columns(door)
     one = door.frame(pd.DataFrame({first: [None]}))
     assert len(empty) == 0 and list(empty.columns) == list(one.columns)
     assert "error" in empty.columns and empty.attrs["linecontact"]
+
+
+def test_result_columns_do_not_depend_on_which_rows_fail():
+    """The result columns are those of the computed contacts: a row refused for its
+    radius (NaN there) adds no `radius_eff` column (NaN != NaN made it look like a
+    counter-body), and an empty frame has the columns of a one-row frame."""
+    good = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "estar": ["115GPa"],
+                         "load": ["1kN"]})
+    bad = pd.concat([good, good.assign(radius=["-5mm"])], ignore_index=True)
+    cols = list(calc_frame(good).columns)
+    assert list(calc_frame(bad).columns) == cols
+    assert list(calc_frame(good.iloc[:0]).columns) == cols
+    assert "radius_eff_m" in calc_frame(good.assign(radius2=["20mm"])).columns

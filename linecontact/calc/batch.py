@@ -450,7 +450,10 @@ def _result_layout(results, cases, si, multi):
     estar = render.scale("estar", cases.estar, si)
     cols.append(_col_name("estar", si))
     getters.append(("num", estar))
-    if np.any(cases.radius_eff != cases.radius):
+    # a column only where some row's contact radius differs from its roller's (a
+    # counter-body or raceways); a row that failed (NaN radius) is not such a row
+    reff_, r_ = np.asarray(cases.radius_eff, float), np.asarray(cases.radius, float)
+    if np.any((reff_ != r_) & ~(np.isnan(reff_) & np.isnan(r_))):
         cols.append(_col_name("radius_eff", si))
         reff = np.where(cases.whole(), np.nan, cases.radius_eff)  # per contact there
         getters.append(("num", render.scale("radius_eff", reff, si)))

@@ -124,3 +124,20 @@ def test_header_keeps_the_clearance_as_given_beside_the_operating_one(capsys):
     assert main(BASE) == 0
     head = capsys.readouterr().out.splitlines()[0]
     assert "P_d = 40 um," in head and "operating" not in head, head
+
+
+def test_text_notes_explain_only_what_was_computed(capsys, tmp_path):
+    """A plain bearing's text says nothing of flanges, films, duty cycles or a case
+    check it did not compute (each of those notes came with every bearing); with
+    their inputs, each note is there; the JSON header keeps every note."""
+    words = {"flanges": "Note: axial load:", "film": "Note: EHL film",
+             "spectrum": "Note: duty cycle:", "modified": "Note: L_nm ="}
+    assert main(BASE) == 0
+    out = capsys.readouterr().out
+    assert not [w for w in words.values() if w in out], out
+    path = _spectrum(tmp_path)
+    assert main(BASE + LIFE + FLANGES + ["--spectrum", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert all(w in out for w in words.values()), out
+    assert main(BASE + ["--json"]) == 0
+    assert set(words) <= set(json.loads(capsys.readouterr().out)["notes"])

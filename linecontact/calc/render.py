@@ -440,7 +440,12 @@ def command_text(command, cases, results, si):
                     [v * f], scale=None if size is None else size * f)[0])
             table.append(cells + [row.get("note", "")])
         lines += aligned(table)
-    lines += [""] + [f"Note: {t}" for t in command.notes.values()]
+    # a note on an output no row computed (the flanges' without an axial load) is
+    # left out of the text; the JSON header keeps them all
+    needs = getattr(module, "note_fields", {})
+    lines += [""] + [f"Note: {t}" for k, t in command.notes.items()
+                     if k not in needs or any(r and r.get(needs[k]) is not None
+                                              for r in results.rows)]
     if n == 1:
         lines += [f"Note: {t}" for t in results.rows[0].get("notes", ())]
     return "\n".join(lines) + "\n"

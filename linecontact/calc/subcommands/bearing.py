@@ -217,6 +217,11 @@ optional = ("case_ratio", "case_ratio_depth", "min_case_depth", "operating_clear
             "spectrum_life_modified", "spectrum_life_modified_reference",
             "spectrum_hours_iso281")
 
+#: The output each optional note explains: left out of the text when no row has it.
+note_fields = {"film": "film_minimum_inner", "modified": "life_modified",
+               "flanges": "max_flange_force", "spectrum": "spectrum_life_iso281",
+               "case": "case_ratio"}
+
 notes = {
     "clearance": "P_d is the radial internal clearance (ISO 5753-1), Harris' diametral "
                  "clearance d_o - d_i - 2D; roller j's approach is delta_r cos psi_j - "

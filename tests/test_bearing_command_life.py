@@ -141,3 +141,18 @@ def test_text_notes_explain_only_what_was_computed(capsys, tmp_path):
     assert all(w in out for w in words.values()), out
     assert main(BASE + ["--json"]) == 0
     assert set(words) <= set(json.loads(capsys.readouterr().out)["notes"])
+
+
+def test_help_names_the_default_slice_counts_and_the_life_outputs(capsys):
+    """`linecontact bearing --help` gives the slice counts the factory uses when none
+    is given (it sent the reader to RadialRollerBearing, whose default moved to the
+    factory's), and its description names the life outputs the options add."""
+    from linecontact.roller.solvers import DEFAULT_SLICES
+
+    with pytest.raises(SystemExit):
+        main(["bearing", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    for model, n in DEFAULT_SLICES.items():
+        assert f"{n} for {model}" in text, (model, n)
+    for word in ("EHL film", "L_nm", "static safety", "operating clearance", "duty cycle"):
+        assert word in text, word

@@ -38,8 +38,11 @@ help = "load distribution, stiffness and rating life of a radial roller bearing"
 description = ("Load distribution over the rollers, ring displacement, radial stiffness, "
                "load zone, peak pressure, subsurface stresses and rating lives (ISO 281, "
                "ISO 16281) of a radial cylindrical or needle roller bearing under a "
-               "radial load (and a tilting moment or a misalignment), with the "
-               "case-hardening check of the most loaded roller. A value is a number "
+               "radial load (and a tilting moment or a misalignment); given their "
+               "inputs, the EHL film, modified lives L_nm and L_nmr, static safety, "
+               "operating clearance after fits and warming, flange contacts under an "
+               "axial load, a duty cycle's life and the case-hardening check of the "
+               "most loaded roller. A value is a number "
                "with one unit name ('70mm', '10kN'); bare numbers are SI.")
 epilog = ("Sweeps: --NAME START:STOP:N (any numeric option) gives N bearings, spaced "
           "geometrically (--linear: evenly); two sweeps give the grid. Batch: FILE.csv "
@@ -88,8 +91,9 @@ parameters = (
     Parameter("model", "text", "contact law of each contact: universal (default for a "
               "straight roller), iso16281 (the ISO spring), profiled-roller (default "
               "for a profile), iso16281-slicing, any key of linecontact calc", _MODEL),
-    Parameter("n_slices", "count", "slices of a slice model (default: the "
-              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL,
+    Parameter("n_slices", "count", "slices of a slice model (default: "
+              "50 for profiled-roller, 30 for iso16281-slicing; "
+              "linecontact.roller.solvers.DEFAULT_SLICES)", _MODEL,
               bounds="bearing.SLICE_COUNT"),
     Parameter("rating", "force", "basic dynamic load rating C_r (default: ISO 281 "
               "from the geometry)", _MODEL),

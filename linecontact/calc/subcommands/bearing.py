@@ -550,7 +550,8 @@ def row(obj, state, i):
                          + ", outer ".join(f"{checks[k].max_ratio:.4g}"
                                            if checks[k] is not None else "-"
                                            for k in ("inner", "outer")) + ")")
-        notes += [f"case check, {t}" for t in texts]
+        notes += [t if t.startswith("case check") else f"case check, {t}"
+                  for t in texts]
     out["model_used"] = s.model
     out["notes"] = notes
     out["note"] = "; ".join(notes)

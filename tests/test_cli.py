@@ -973,6 +973,10 @@ def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, co
     status, out, err = _main(capsys, command, src, option_name(name),
                              _sample(name, tmp_path, sample))
     assert status in (0, 2), err
+    if name == "stress_field":  # a JSON block of one case: refused for a batch, which
+        # has no place for it (it was dropped without a word), before anything is read
+        assert status == 2 and "--stress-field" in err and not out, err
+        return
     rows = list(csv.DictReader(io.StringIO(out)))
     assert [r["name"] for r in rows] == ["a", "b"], err
     if status == 2:  # a row refused: it says so in its own cell, the file is written

@@ -143,3 +143,14 @@ def test_result_columns_do_not_depend_on_which_rows_fail():
     assert list(calc_frame(bad).columns) == cols
     assert list(calc_frame(good.iloc[:0]).columns) == cols
     assert "radius_eff_m" in calc_frame(good.assign(radius2=["20mm"])).columns
+
+
+def test_a_conflict_with_a_keyword_is_said_as_a_keyword():
+    """calc_frame(cases, load=...) against a filled, different cell: the row's error
+    names the keyword the caller gave (load='...'), not a command-line option
+    '--load ... on the command line' the caller never typed."""
+    cases = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "estar": ["115GPa"],
+                          "load": ["2kN"]})
+    err = calc_frame(cases, load="1kN")["error"][0]
+    assert "the keyword load='1kN'" in err and "command line" not in err, err
+    assert "--load" not in err, err

@@ -578,3 +578,31 @@ def test_plot_follows_one_rule_for_every_command(tmp_path, door):
     if door.name == "bearing":
         status, _, err = _calc([*case, "--figure", "x.png"], door.name)
         assert status == 2 and "--figure is now --plot" in err
+
+
+@pytest.mark.parametrize("door,name", _UNIT_CASES,
+                         ids=[f"{d.name}-{n}" for d, n in _UNIT_CASES])
+def test_a_unit_header_is_answered_with_a_cell_of_that_parameters_kind(tmp_path, door,
+                                                                       name):
+    """The advice for 'NAME [mm]' shows a cell of NAME's own kind (1kN under
+    'radial_load'), never '5mm under radius' whatever the column (a length for a force),
+    and none for a pure number or a word, which have no unit to move."""
+    from linecontact._units import DIMENSIONS
+
+    path = tmp_path / "units.csv"
+    path.write_text(f"{name} [mm],other\n5,x\n")
+    status, out, err = _calc([str(path)], door.name)
+    kind = next(p.kind for p in _parameters(door) if p.name == name)
+    example = DIMENSIONS.get(kind, ("", "", ""))[2].split(",")[0]
+    if example and not example.replace(".", "").isdigit():
+        assert f"e.g. {example} under {name!r}" in err, err
+    else:
+        assert "write the unit" not in err, err
+
+
+def _parameters(door):
+    if door.name == "calc":
+        from linecontact.calc.cases import PARAMETERS
+        return PARAMETERS
+    from linecontact.calc.subcommands import SUBCOMMANDS
+    return next(m for m in SUBCOMMANDS if m.name == door.name).parameters

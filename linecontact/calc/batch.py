@@ -102,10 +102,17 @@ def _unread_lookalikes(path, header, names, known, table=None):
             close = difflib.get_close_matches(h, list(BY_NAME), n=1, cutoff=0.75)
             match = close[0] if close and close[0] not in known else None
         if match is not None:
+            from .._units import DIMENSIONS
+
+            # the example in the matched input's own kind (10kN under radial_load)
+            kind = BY_NAME[match].kind
+            example = DIMENSIONS[kind][2].split(",")[0] if kind in DIMENSIONS else ""
+            unit = (f"write the unit in each cell, e.g. {example} under {match!r}; "
+                    if example and not example.replace(".", "").isdigit() else "")
             raise BatchError(
                 f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
-                f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
-                "under 'radius'; rename the column if it is your own)")
+                f"read; did you mean {match!r}? ({unit}rename the column if it is your "
+                "own)")
     return earlier
 
 

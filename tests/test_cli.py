@@ -1147,3 +1147,19 @@ def test_model_options_take_the_unit_their_docstring_gives():
     n = parse_model_option("iso16281-slicing:n_slices=40")[0][2]["n_slices"]
     assert n == 40 and type(n) is int
     assert parse_model_option("johnson:c=johnson1985")[0][2]["c"] == "johnson1985"
+
+
+@pytest.mark.parametrize("spec,again", [("universal,universal", "'universal'"),
+                                        ("johnson,johnson:c=1", "'johnson:c=1'")])
+def test_a_model_named_twice_is_refused(capsys, tmp_path, spec, again):
+    """The same model twice in --model ('johnson:c=1' is johnson at its default) gave
+    two result sets under one id: a batch wrote each column name twice, so a reader
+    (csv.DictReader, pandas, the JSON rows) kept one and lost the other without a word.
+    It is refused in one line naming the repeat; distinct options are not."""
+    src = _write_csv(tmp_path / "c.csv", ["radius", "length", "estar", "load"],
+                     [["5mm", "10mm", "115GPa", "1kN"]])
+    status, out, err = _main(capsys, "calc", src, "--model", spec)
+    assert status == 2 and f"{again} is the same model as" in err and not out, err
+    status, out, err = _main(capsys, "calc", src, "--model", "johnson,johnson:c=0.72")
+    header = out.splitlines()[0].split(",")
+    assert status == 0 and len(header) == len(set(header)), err

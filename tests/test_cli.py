@@ -1163,3 +1163,22 @@ def test_a_model_named_twice_is_refused(capsys, tmp_path, spec, again):
     status, out, err = _main(capsys, "calc", src, "--model", "johnson,johnson:c=0.72")
     header = out.splitlines()[0].split(",")
     assert status == 0 and len(header) == len(set(header)), err
+
+
+def test_a_swept_radius_or_length_has_its_column(capsys):
+    """A sweep over the radius (or the length), alone or in a grid with the load, gives
+    each row its value in a column: the rows of R = 5 and 10 mm at the same load were
+    printed without it (radius and length are fields the text table does not print),
+    so they could not be told apart."""
+    status, out, err = _main(capsys, "calc", "--radius", "5mm:10mm:2", "--length", "10mm",
+                             "--estar", "115GPa", "--load", "1kN:2kN:2", "--model",
+                             "universal")
+    assert status == 0, err
+    lines = out.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("model"))
+    assert "radius [mm]" in lines[head]
+    assert [line.split()[3] for line in lines[head + 1:head + 5]] == ["5", "5", "10", "10"]
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--length",
+                             "10mm:20mm:2", "--estar", "115GPa", "--load", "1kN",
+                             "--model", "universal")
+    assert status == 0 and "length [mm]" in out, err

@@ -1223,10 +1223,10 @@ def bearing(solution, *, fig=None):
     """Roller loads, moments and tilts around the ring of a radial roller bearing.
 
     One panel per per-roller quantity the solution holds (:data:`BEARING_FIELDS`;
-    moments and tilts that are all zero, as under a contact law with aligned rings,
-    are left out and the title says so; for a solution at a speed, the film ratio and
-    the damage share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from
-    the load line, the load zone shaded.
+    moments and tilts that are all zero to round-off, as with aligned rings, are left
+    out and the title says so; for a solution at a speed, the film ratio and the damage
+    share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from the load
+    line, the load zone shaded.
 
     Parameters
     ----------
@@ -1257,6 +1257,13 @@ def bearing(solution, *, fig=None):
     psi = np.where(psi <= -180.0, psi + 360.0, psi)
     order = np.argsort(psi, kind="stable")
     shown, zero = [], []
+    # round-off: 1e-12 of the largest roller load times the laminae's span (about the
+    # roller length) for a moment, 1e-12 rad for a tilt (a symmetric roller between
+    # aligned rings, solved exactly, has moments of 1e-17 Q L); exact zeros elsewhere
+    span = 2 * float(np.max(np.abs(solution.slice_x))) if getattr(
+        solution, "slice_x", None) is not None and np.size(solution.slice_x) else 0.0
+    tiny = {"roller_moments": 1e-12 * float(np.max(solution.roller_loads)) * span,
+            "roller_tilts": 1e-12}
     fields = BEARING_FIELDS
     if getattr(solution, "speed", None) is not None:
         fields = fields + BEARING_LIFE_FIELDS
@@ -1270,7 +1277,8 @@ def bearing(solution, *, fig=None):
             continue
         v = np.asarray(v, dtype=float)
         v = np.where(np.isfinite(v), v, np.nan)     # Lambda = inf: no film to show
-        if attr != "roller_loads" and not np.any(v):
+        small = np.abs(v) <= tiny[attr] if attr in tiny else v == 0
+        if attr != "roller_loads" and np.all(small):
             zero.append(name.split()[1])            # "moment", "tilt"
             continue
         shown.append((v, name, unit))

@@ -108,6 +108,46 @@ def test_round_off_is_shown_as_zero_relative_to_its_scale(values, scale, expecte
     assert NOISE < 1e-12
 
 
+def _rollers(argv):
+    """The bearing's rollers table: {roller: (M_j cell, tilt cell)} and the JSON's."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["bearing", *argv]) == 0
+    lines = out.getvalue().splitlines()
+    k = next(i for i, ln in enumerate(lines) if ln.startswith("roller "))
+    head = re.split(r"\s{2,}", lines[k])
+    jm, jt = head.index("M_j [N m]"), head.index("tilt [mrad]")
+    cells = {}
+    for ln in lines[k + 1:]:
+        if not ln.strip():
+            break
+        c = ln.split()
+        cells[int(c[0])] = (c[jm], c[jt])
+    return cells
+
+
+def test_the_bearing_rollers_moments_and_tilts_show_round_off_as_zero():
+    """An aligned ISO-profiled bearing: symmetry makes each roller's moment zero, and
+    the solve leaves round-off (|M_j| ~ 1e-16 N m, below NOISE of Q_max L ~ 34 N m):
+    the rollers table prints 0, as the summary's K_rt. A misaligned one keeps its real
+    moments (about 1e-1 N m) to 4 digits."""
+    from linecontact.bearing import RadialRollerBearing
+
+    base = ["--rollers", "14", "--pitch-diameter", "70mm", "--roller-diameter", "11mm",
+            "--length", "11mm", "--radial-load", "10kN", "--profile", "iso16281"]
+    s = RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, profile="iso16281").solve(10e3)
+    scale = s.max_roller_load * 11e-3
+    assert np.any(s.roller_moments != 0)          # the round-off is there ...
+    assert np.all(np.abs(s.roller_moments) <= NOISE * scale)
+    assert all(m == "0" and t == "0" for m, t in _rollers(base).values())  # ... not shown
+    tilted = _rollers(base + ["--misalignment", "0.5mrad"])
+    sm = RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, profile="iso16281").solve(
+        10e3, misalignment=0.5e-3)
+    for j, (m, _) in tilted.items():
+        assert m == format_numbers([sm.roller_moments[j]], scale=scale)[0]
+    assert any(m != "0" for m, _ in tilted.values())
+
+
 def test_plot_uses_the_one_engineering_unit():
     """The figures' prefixes and the table's come from one function."""
     import linecontact.plot as plot

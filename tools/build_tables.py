@@ -69,7 +69,12 @@ def main(argv=None):
     module.add_arguments(parser)
     args = parser.parse_args(argv[1:])
     args.command_line = "python -m tools.build_tables " + " ".join(argv)
-    return module.run(args) or 0
+    from tools.studies.runner import StudyError
+    try:
+        return module.run(args) or 0
+    except StudyError as exc:          # one line that says what to do, no traceback
+        print(f"error: {exc}", file=sys.stderr)
+        return exc.exit_code
 
 
 if __name__ == "__main__":

@@ -36,9 +36,13 @@ law, :math:`\delta(Q_j) = \delta_r\cos\psi_j - P_d/2`, :math:`\sum Q_j\cos\psi_j
 removes the interpolation error: the loads then sum to :math:`F_r` to round-off.
 
 A profiled roller under the slice model is tabulated the same way, at
-:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve); its slice loads
-for the rating life are interpolated between the tabulated load distributions (in
-:math:`\ln Q`), and the table's interpolation error is reported
+:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve), and the ring
+equilibrium on that table is polished the same way with every loaded roller solved
+exactly between its raceways at its load
+(:func:`linecontact.raceway.roller_between_raceways`, free to tilt): each roller's load,
+approach, tilt, moment and lamina loads, and the most loaded roller's peak pressure and
+stresses, are those of its own exact solve (kept as :attr:`BearingSolution.roller`);
+the polish's remaining residual, below 1e-9, is reported
 (:attr:`BearingSolution.law_error`).
 
 Tilting moment and misalignment

@@ -336,6 +336,11 @@ def run_batch(args, argv, specs, options, table=CALC):
     and result columns; the reading, the checks of the file and of the options
     against the cells, and the writing are the same for every command."""
     PARAMETERS, BY_NAME = table.parameters, table.by_name
+    if getattr(args, "linear", False):
+        # a batch has one value per cell, no sweep to space: --linear would do nothing
+        raise BatchError("--linear spaces the values of a sweep, and a CSV batch has "
+                         "none (one value per row): drop --linear, or give the sweep "
+                         "without the CSV")
     header, body, lines = read_table(args.csv)
     n = len(body)
     names = [h.strip().lower() for h in header]
@@ -392,6 +397,13 @@ def run_batch(args, argv, specs, options, table=CALC):
                 conflicts[p.name] = (opt, si, [bool(c.strip()) for c in col])
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
+    # an input written to the JSON output only, given without --json (as an option or
+    # in any cell of its column): refused once, before any row is computed
+    render.refuse_json_only(
+        PARAMETERS, {p.name: next((c for c in cells[p.name] if c.strip()), None)
+                     for p in PARAMETERS if p.json_only and p.name in cells},
+        args.json, lambda name: (option_name(name) if options.get(name) is not None
+                                 else f"column {header[known[name]]!r}"))
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})

@@ -393,15 +393,9 @@ def main(argv=None):
         render.refuse_input_as_output(args.output, [args.csv] + [
             getattr(args, p.name) for p in parameters if p.kind == "path"])
         render.refuse_same_output(args.output, getattr(args, "plot", None))
-        if (getattr(args, "stress_field", None) is not None and not args.json
-                and args.csv is None):
-            from .._units import InputError
-
-            # the field is a block of the JSON output only: without --json it was
-            # computed and dropped without a word
-            raise InputError("--stress-field", args.stress_field,
-                             "with --json (the field is written to the JSON output only)",
-                             "no --json: the field would not be written anywhere")
+        if args.csv is None:  # a batch checks its columns too (batch.run_batch)
+            render.refuse_json_only(parameters, {p.name: getattr(args, p.name)
+                                                 for p in parameters}, args.json)
         if args.csv is not None:
             from .batch import CALC, run_batch
 

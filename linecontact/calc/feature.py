@@ -194,6 +194,11 @@ class Parameter:
     words : tuple of str
         Words accepted besides a number (e.g. ``("free",)`` for the tilt): such a cell
         is given (``present``) with the value NaN; ``fail.cell(name, i)`` has the word.
+    json_only : str
+        Non-empty for an input whose result is written to the ``--json`` output only
+        (a block with no table): what it writes. Given without ``--json`` (option or
+        CSV column) it is refused up front (:func:`linecontact.calc.render.refuse_json_only`),
+        not computed and dropped.
     """
 
     name: str
@@ -205,6 +210,7 @@ class Parameter:
     sweep: bool = True
     plausible: tuple | None = None
     words: tuple = ()
+    json_only: str = ""
 
 
 @dataclass(frozen=True)
@@ -293,6 +299,11 @@ class Block:
         Prefix of the block's columns in a CSV batch (``KEY_FIELD_UNIT``).
     units : Mapping[str, str]
         SI unit of each JSON row entry.
+    scales : Mapping[str, float]
+        Field name -> the magnitude of its quantity [SI] where it may be round-off (a
+        moment that symmetry makes zero): a value below
+        :data:`linecontact._units.NOISE` of it is printed as 0 (the JSON keeps it).
+        Default: the column's largest value.
     """
 
     name: str
@@ -304,6 +315,7 @@ class Block:
     note: str = ""
     key: str = ""
     units: Mapping[str, str] = field(default_factory=dict)
+    scales: Mapping[str, float] = field(default_factory=dict)
 
 
 class Fail:

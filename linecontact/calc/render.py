@@ -275,7 +275,7 @@ def _block_note(results, text):
 def blocks_text(blocks, given, si):
     """The features' extra tables (e.g. the profiled roller's rows), each after its
     rows' note; blocks of one name share one table."""
-    from .._units import display_unit, format_numbers
+    from .._units import NOISE, display_unit, format_numbers
 
     out = ""
     names = []
@@ -289,13 +289,16 @@ def blocks_text(blocks, given, si):
         cols = ([first] if first in fields else []) + [c for c in fields if c != first]
         rows = [(b, row) for b in group for row in b.rows if row is not None]
         shown = {}  # each column's unit fits its values
+        values = {}
         for c in cols:
             vals = [np.nan if row.get(c) is None else float(row[c]) for _, row in rows]
+            size = group[0].scales.get(c)
+            if size is not None:  # round-off of its quantity's scale: 0 (the unit too)
+                vals = [0.0 if abs(v) <= NOISE * abs(size) else v for v in vals]
+            values[c] = vals
             shown[c] = ((1.0, fields[c].si) if si else
                         display_unit(vals, fields[c].si, fields[c].eng, fields[c].factor))
-        cells_of = {c: format_numbers([np.nan if row.get(c) is None else
-                                       float(row[c]) * shown[c][0] for _, row in rows])
-                    for c in cols}
+        cells_of = {c: format_numbers([v * shown[c][0] for v in values[c]]) for c in cols}
         header = [group[0].label] + [
             f"{fields[c].heading} [{shown[c][1]}]" for c in cols
         ] + list(group[0].text_columns) + ["note"]
@@ -548,6 +551,26 @@ def refuse_same_output(output, plot):
         raise OutputError(plot, ValueError(
             f"--plot names the -o file {str(output)!r}; the figure would overwrite the "
             "table: give two different files"))
+
+
+def refuse_json_only(parameters, given, json, label=None):
+    """Raise :class:`~linecontact._units.InputError` if an input whose result goes to
+    the ``--json`` output only (:attr:`Parameter.json_only`) is given without
+    ``--json``: it would be computed and written nowhere. `given`: parameter name ->
+    what was given (the option's text, or for a CSV batch its first filled cell), None
+    where not given; `label`: name -> the input as the user named it (default: the
+    option)."""
+    if json:
+        return
+    from .._units import InputError
+    from .feature import option_name
+
+    for p in parameters:
+        if p.json_only and given.get(p.name) is not None:
+            raise InputError((label or option_name)(p.name), given[p.name],
+                             f"with --json ({p.json_only} is written to the JSON "
+                             "output only)",
+                             "no --json: it would not be written anywhere")
 
 
 class OutputError(OSError):

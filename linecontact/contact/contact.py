@@ -417,6 +417,38 @@ class Contact:
     def _slice_first_contact(self, tilt):
         return self._solver().first_contact_depth(tilt)
 
+    def first_contact_depth(self, tilt=0.0):
+        """Depth d0 of the roller's centre (x = 0) at first contact, at tilt `tilt`
+        [rad]: nothing touches for d <= d0, and a solution's approach from first
+        contact is d - d0 (:attr:`ContactResult.approach`). 0 for an aligned roller
+        whose drop is least at its centre; negative where a tilt brings an end closer
+        (the depth at the centre of a contact at one end is then negative).
+
+        Parameters
+        ----------
+        tilt : float, optional
+            Tilt theta of the roller axis [rad], within (-0.1, 0.1).
+
+        Returns
+        -------
+        float
+            d0 [m], on the slice model's own grid (the coupled slices' or ISO 16281's).
+
+        Examples
+        --------
+        >>> c = Contact(Roller(5e-3, 10e-3, profile="straight", tilt=1e-3),
+        ...             estar=115.38e9)
+        >>> f"{c.first_contact_depth(1e-3) * 1e6:.2f} um"
+        '-5.00 um'
+        """
+        if self.raceways or not self.sliced:
+            raise CombinationError({"model": self.model},
+                                   "the first-contact depth is a single roller contact "
+                                   "solved by slices (a profile or a tilt)")
+        from ..profiles import TILT_RANGE
+
+        return self._slice_first_contact(TILT_RANGE.check(tilt).item())
+
     def _free_stiffness(self, s):
         """dF/dd: at the held tilt, or with the tilt free (M = 0 kept)."""
         K = s.stiffness_matrix

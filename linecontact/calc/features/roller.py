@@ -56,9 +56,9 @@ NAMES = tuple(p.name for p in parameters)
 
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
         "coupling along the axis; linecontact.roller), 50 slices graded towards the "
-        "contact's ends; d: the approach at the roller's centre x = 0 (negative "
-        "where a tilt lifts the centre off: the loaded end then goes in by "
-        "d + |theta| L/2); M: moment about the roller centre; p max: peak pressure "
+        "contact's ends; d: the depth at the roller's centre x = 0 (negative "
+        "where a tilt lifts the centre off; the row's note then gives the approach "
+        "from first contact); M: moment about the roller centre; p max: peak pressure "
         "(not printed where the contact reaches a roller end: singular there on a "
         "half-space; the row's note names the end); ISO 16281 slicing: uncoupled "
         "slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
@@ -193,7 +193,7 @@ def columns(model, rows, normal, state):
             out["p_max"][j] = sol.p_max
         out["x_at_p_max"][j] = _clean(sol.x_at_p_max, sol)
         out["contact_length"][j] = sol.contact_length
-        text = []
+        text = _depth_text(model, sol)
         if sol.edge_loaded:
             text.append(f"edge loaded ({_edge_text(sol)}): p max singular there")
         elif not sol.p_max_resolved:
@@ -204,6 +204,21 @@ def columns(model, rows, normal, state):
         s, "peak_pressure_inner") else m for m, s in zip(out["moment"], normal["solution"])])
     out["flags"] = flags
     return out
+
+
+def _depth_text(model, sol):
+    """[what d means] where the depth at the roller's centre is not the approach from
+    first contact (a tilt brings an end closer: d0 = Contact.first_contact_depth < 0,
+    and d < 0 when the contact lies at one end), with that approach d - d0."""
+    contact = getattr(model, "contact", None)
+    if contact is None or not callable(getattr(contact, "first_contact_depth", None)):
+        return []
+    d0 = contact.first_contact_depth(sol.tilt)
+    if not d0 < -1e-9 * abs(sol.depth):   # first contact at the centre: d is the approach
+        return []
+    return [f"d: the depth at the roller's centre x = 0 (tilted: first contact nearer "
+            f"an end, at d0 = {d0 * 1e6:.4g} um); the approach from first contact d - d0 "
+            f"= {(sol.depth - d0) * 1e6:.4g} um"]
 
 
 def _clean(value, sol):

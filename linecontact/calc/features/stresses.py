@@ -23,9 +23,10 @@
 
 Poisson's ratio of the stressed body: ``--poisson`` where given, else 0.3 (said in the
 notes). A whole roller between raceways (``--inner-raceway``, ``--outer-raceway``): the
-stresses of each contact (:func:`contact_stresses`), each measure's worse contact in the
-main columns and named in the note, both contacts' maxima and case ratios in a table
-of their own; the case check takes the worse contact (CHD min: the larger minimum).
+stresses of each contact (:func:`linecontact.stresses.raceway_stresses`), each
+measure's worse contact in the main columns and named in the note, both contacts'
+maxima and case ratios in a table of their own; the case check takes the worse
+contact (CHD min: the larger minimum).
 """
 from __future__ import annotations
 
@@ -35,8 +36,7 @@ import numpy as np
 
 from ..feature import Block, Field, Parameter, State, keep
 
-__all__ = ["contact_stresses", "case_of_contacts", "min_case_depth", "hardness_of",
-           "HARDNESS"]
+__all__ = ["hardness_of", "HARDNESS"]
 
 name = "stresses"
 group = "subsurface stresses and case-hardening check"
@@ -48,7 +48,8 @@ parameters = (
     Parameter("sliding_friction", "dimensionless", "coefficient mu of the sliding "
               "traction mu p for the stresses, 0 to 1", group, positive=False),
     Parameter("stress_field", "length", "with --json: the stress field on the section "
-              "across the roller at this x", group, positive=False),
+              "across the roller at this x", group, positive=False,
+              json_only="the field on the section"),
     Parameter("surface_hardness", "dimensionless", "surface hardness HV (> 550) for the "
               "case-hardening check", group),
     Parameter("case_depth", "length", "effective case depth CHD (to 550 HV, ISO 2639)",
@@ -268,23 +269,12 @@ def figure(state, results):
     return out
 
 
-_NO_CHD = "CHD min: none, the stress exceeds the allowable of the surface hardness itself"
-
-
 def _case(s, hardness):
-    """(CaseCheck or None, flag text) of one contact's stresses."""
-    from ...stresses import case_check
-    from ...errors import OutOfRangeError
+    """(CaseCheck or None, flag text) of one contact's stresses
+    (:func:`linecontact.stresses.noted_case_check`)."""
+    from ...stresses import noted_case_check
 
-    try:
-        c = case_check(s, hardness)
-    except OutOfRangeError as exc:
-        return None, str(exc)
-    if c.min_case_depth is None and hardness.case_depth is not None:
-        return c, _NO_CHD
-    if c.min_case_depth == 0.0:
-        return c, "CHD min: 0, none needed (the core hardness carries the load)"
-    return c, ""
+    return noted_case_check(s, hardness)
 
 
 def _put_case(out, j, c):
@@ -301,81 +291,25 @@ def _is_raceways(sol):
     return sol is not None and hasattr(sol, "depth_inner") and hasattr(sol, "radius_outer")
 
 
-def contact_stresses(sol, length, estar, profile, friction, poisson):
-    """{'inner': SubsurfaceStresses, 'outer': ...} of a whole roller's two contacts
-    (:class:`linecontact.raceway.RacewaySolution` `sol`; roller length [m], E* [Pa],
-    profile): the slices' :func:`linecontact.stresses.roller_stresses` where the
-    contacts were solved by slices (each checked against the measured range as a
-    roller of the contact's effective radius), else the plane-strain strip
-    :func:`linecontact.stresses.line_contact_stresses` of each contact's effective
-    radius at the roller load, as :class:`linecontact.bearing.RadialRollerBearing`
-    takes them for its most loaded roller."""
-    from types import SimpleNamespace
-
-    from ...stresses import line_contact_stresses, roller_stresses
-
-    out = {}
-    for side in ("inner", "outer"):
-        part = getattr(sol, side)
-        R = float(getattr(sol, f"radius_{side}"))
-        if part is not None:
-            measured = SimpleNamespace(radius=R, length=length, estar=estar,
-                                       profile=profile)
-            out[side] = roller_stresses(part, friction, poisson, roller=measured)
-        else:
-            out[side] = line_contact_stresses(float(sol.force), R, length, estar,
-                                              friction, poisson)
-    return out
-
-
-def case_of_contacts(both, hardness):
-    """The case check of a whole roller's two contacts (`both`: side ->
-    SubsurfaceStresses): (checks, texts, worse) with checks side -> CaseCheck or None,
-    texts the flags to show, worse the side of the larger ratio (None if neither). A
-    contact whose maxima are withheld (edge loaded: the slice width's numbers) leaves
-    the check unreported, with the reason."""
-    held = {k: st.withheld for k, st in both.items() if st.withheld}
-    if held:
-        return {}, ["case check not reported: " + "; ".join(
-            f"{k} contact: {next(iter(h.values()))}" for k, h in held.items())], None
-    checks, texts = {}, []
-    for side, st in both.items():
-        c, text = _case(st, hardness)
-        checks[side] = c
-        if text:
-            texts.append(f"{side}: {text}")
-    done = {k: c for k, c in checks.items() if c is not None}
-    worse = max(done, key=lambda k: done[k].max_ratio) if done else None
-    return checks, texts, worse
-
-
-def min_case_depth(checks):
-    """The smallest case depth that carries both contacts: the larger of their minima
-    (None if either has none) [m]."""
-    need = [c.min_case_depth for c in checks.values() if c is not None]
-    if not need or any(d is None for d in need):
-        return None
-    return max(need)
-
-
 def _between_raceways(out, flags, j, sol, model, state, i):
-    """A whole roller's row: each measure's worse contact in the main columns (its
-    contact named in the flags), each contact's own maxima kept for the block."""
+    """A whole roller's row (:func:`linecontact.stresses.raceway_stresses`): each
+    measure's worse contact in the main columns (its contact named in the flags),
+    each contact's own maxima kept for the block, the case check over both."""
+    from ...stresses import raceway_stresses
+
     c = model.contact
-    both = contact_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
+    both = raceway_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
                             float(state.nu[i]))
-    worse = {}
+    worst = both.worst
+    worse = {m: worst[m]["contact"] for m in _MEASURES}
     # a maximum not converged in a contact (an edge-loaded one: the slice width's
-    # number) is not reported, as linecontact.bearing takes it: that measure's worse
-    # is unknown, and so is the case check
-    held = {k: st.withheld for k, st in both.items() if st.withheld}
+    # number) is not reported: that measure's worse is unknown, and so is the case check
+    held = both.withheld
     for m in _MEASURES:
-        side = max(both, key=lambda k: both[k].worst[m]["value"])
-        worse[m] = side
-        if any(m in h for h in held.values()):
+        if "withheld" in worst[m]:
             continue
-        out[f"{m}_max"][j] = both[side].worst[m]["value"]
-        out[f"{m}_depth"][j] = both[side].worst[m]["z"]
+        out[f"{m}_max"][j] = worst[m]["value"]
+        out[f"{m}_depth"][j] = worst[m]["depth"]
     texts = [f"stresses: worse contact {_said(worse)}"] if not held else [
         "stress maxima and case check not reported: " + "; ".join(
             f"{k} contact: {h[_MEASURES[0]]}" for k, h in held.items())]
@@ -385,15 +319,15 @@ def _between_raceways(out, flags, j, sol, model, state, i):
                            else both[side].worst[m]["value"])
            for m in _MEASURES for side in both}
     if state.hardness[i] is not None and not held:
-        checks, said, side = case_of_contacts(both, state.hardness[i])
-        for k, c in checks.items():
-            row[f"case_ratio_{k}"] = None if c is None else c.max_ratio
-        texts += said
-        if side is not None:
-            _put_case(out, j, checks[side])
-            need = min_case_depth(checks)
+        case = both.case_check(state.hardness[i])
+        for k, ck in case.checks.items():
+            row[f"case_ratio_{k}"] = None if ck is None else ck.max_ratio
+        texts += list(case.notes)
+        if case.worse is not None:
+            _put_case(out, j, case.checks[case.worse])
+            need = case.min_case_depth
             out["min_case_depth"][j] = np.nan if need is None else need
-            texts.insert(1, f"case check: worse contact {side}")
+            texts.insert(1, f"case check: worse contact {case.worse}")
     row["text"] = {"worse": "-" if held else _said(worse)}
     flags[j] = "; ".join(texts)
     state.__dict__.setdefault("by_contact", {}).setdefault(int(i), row)

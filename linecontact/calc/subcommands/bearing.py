@@ -10,14 +10,15 @@ roller takes the options of ``calc --stresses`` (``--surface-hardness``,
 ``--case-depth``, ``--core-hardness`` or ``--hardness-profile``).
 
 All physics is the library's: :class:`linecontact.bearing.RadialRollerBearing` for the
-bearing, and for the case check its most loaded roller between the same raceways at
-its load (:func:`linecontact.raceway.roller_between_raceways`, the per-roller
-reference, with the bearing's model, profile and slices; the roller free to tilt
-under the rings' misalignment at its azimuth), each contact's stresses
-(:func:`linecontact.stresses.roller_stresses`, or the strip under a law) and
+bearing, and for the case check the solution's own most loaded roller
+(:attr:`~linecontact.bearing.BearingSolution.roller`, the same solve as
+:func:`linecontact.raceway.roller_between_raceways` at its load with the bearing's
+model, profile and slices, free to tilt under the rings' misalignment at its azimuth)
+and its contacts' stresses (:attr:`~linecontact.bearing.BearingSolution.roller_stresses`:
+:func:`linecontact.stresses.roller_stresses`, or the strip under a law) through
 :func:`linecontact.stresses.case_check`: the same solve ``linecontact calc
---inner-raceway ... --outer-raceway ... --load Q_max --stresses yes`` makes. This module
-reads, asks and names.
+--inner-raceway ... --outer-raceway ... --load Q_max --tilt free --stresses yes``
+makes. This module reads, asks and names.
 """
 from __future__ import annotations
 
@@ -28,8 +29,7 @@ import numpy as np
 
 from ..cases import BY_NAME as _CALC
 from ..feature import Block, Field, Parameter, State
-from ..features.stresses import HARDNESS, case_of_contacts, contact_stresses, hardness_of
-from ..features.stresses import min_case_depth as _min_case_depth
+from ..features.stresses import HARDNESS, hardness_of
 
 __all__: list = []
 
@@ -261,9 +261,10 @@ notes = {
                 "1/L = sum u_i/L_i with u_i the shares of revolutions (from shares of "
                 "time: t_i n_i / sum t_j n_j).",
     "case": "case check (--surface-hardness, --case-depth, --core-hardness or "
-            "--hardness-profile): the most loaded roller between the same raceways at "
-            "Q_max (linecontact.raceway.roller_between_raceways, free to tilt under the "
-            "rings' misalignment at its azimuth), each contact's von Mises over the "
+            "--hardness-profile): the bearing's most loaded roller, solved exactly "
+            "between the same raceways at Q_max (as linecontact.raceway."
+            "roller_between_raceways, free to tilt under the rings' misalignment at its "
+            "azimuth), each contact's von Mises over the "
             "yield strength 2.876 HV - 90.7 MPa (Pavlina & Van Tyne 2008, "
             "linecontact.stresses.case_check), the worse contact named; CHD min: the "
             "smallest effective case depth that carries both contacts.",
@@ -407,7 +408,8 @@ def _given(v, name, i):
 def solve(values, i, state):
     """Row i: :class:`linecontact.bearing.RadialRollerBearing` and its solve, and the
     case check of its most loaded roller (library refusals propagate: the row's
-    error)."""
+    error): a :class:`linecontact.stresses.RacewayCaseCheck` (the solution's
+    ``roller_stresses.case_check``)."""
     from ...bearing import RadialRollerBearing
 
     g = {p.name: _given(values, p.name, i) for p in parameters}
@@ -430,9 +432,11 @@ def solve(values, i, state):
     s = b.solve(g["radial_load"], moment=g["tilting_moment"],
                 misalignment=g["misalignment"], speed=g["speed"],
                 axial_load=g["axial_load"])
+    # the case check of the most loaded roller's two contacts: the solution's own
+    # stresses of its own solve of that roller (BearingSolution.roller_stresses)
     case = None
     if state.hardness[i] is not None:
-        case = case_check(b, s, state.hardness[i])
+        case = s.roller_stresses.case_check(state.hardness[i])
     spectrum = None
     if state.spectra[i] is not None:
         from ...bearing import solve_spectrum
@@ -452,40 +456,6 @@ _LIBRARY = ("static_rating", "viscosity", "density", "pressure_viscosity",
             "housing_diameter", "ring_modulus", "temperature_difference", "end_radius",
             "flange_angle", "inner_flange_height", "outer_flange_height",
             "overall_length", "end_chamfer", "axial_share")
-
-
-def most_loaded_roller(bearing, solution):
-    """The bearing's most loaded roller between its raceways at its load Q_max, as
-    :func:`linecontact.raceway.roller_between_raceways` solves it (the bearing's model,
-    profile and slices; under a tilt, free to tilt with the rings' misalignment
-    theta cos psi_j at its azimuth): a :class:`~linecontact.raceway.RacewaySolution`."""
-    from ...raceway import Raceways, roller_between_raceways
-
-    s = solution
-    j = int(np.argmax(s.roller_loads))
-    race = bearing.raceways
-    psi = float(s.roller_misalignment[j]) if s.roller_misalignment is not None else 0.0
-    tilted = psi != 0.0 or s.tilt != 0.0 or s.moment != 0.0
-    model = bearing.model
-    if tilted and not bearing.sliced:
-        model = "profiled-roller"  # as the bearing solves a tilt with no model named
-    if psi:
-        race = Raceways(race.inner, race.outer, misalignment=psi,
-                        fit_tolerance=race.fit_tolerance)
-    sliced = tilted or bearing.sliced
-    return roller_between_raceways(
-        bearing.roller_diameter / 2, bearing.length, bearing.estar, race,
-        force=float(s.roller_loads[j]), model=model, profile=bearing.profile,
-        tilt="free" if tilted else 0.0, n_slices=bearing.n_slices if sliced else None)
-
-
-def case_check(bearing, solution, hardness):
-    """The case check of the most loaded roller's two contacts: (checks, texts, worse)
-    of :func:`linecontact.calc.features.stresses.case_of_contacts`."""
-    roller = most_loaded_roller(bearing, solution)
-    both = contact_stresses(roller, bearing.length, bearing.estar, bearing.profile, 0.0,
-                            bearing.poisson)
-    return case_of_contacts(both, hardness)
 
 
 def row(obj, state, i):
@@ -540,12 +510,12 @@ def row(obj, state, i):
         out[f"{m}_depth"] = w["depth"] if shown else None
     notes = list(s.notes)
     if obj.case is not None:
-        checks, texts, worse = obj.case
+        checks, texts, worse = obj.case.checks, obj.case.notes, obj.case.worse
         if worse is not None:
             c = checks[worse]
             out["case_ratio"] = c.max_ratio
             out["case_ratio_depth"] = c.depth_at_max
-            out["min_case_depth"] = _min_case_depth(checks)
+            out["min_case_depth"] = obj.case.min_case_depth
             notes.append(f"case check: worse contact {worse} (vM/allow inner "
                          + ", outer ".join(f"{checks[k].max_ratio:.4g}"
                                            if checks[k] is not None else "-"
@@ -645,7 +615,12 @@ def blocks(obj):
         if flange:
             r["flange_force"] = float(s.flange_forces[j])
         rows.append(r)
-    out = [Block(name="rollers", label="roller", fields=flds, rows=rows,
+    # round-off (an aligned profiled bearing's moments, 1e-16 N m) printed as 0 against
+    # the quantity's scale: a roller's moment against Q_max L, its tilt against the
+    # bearing's (scales)
+    sizes = {"moment": s.max_roller_load * obj.bearing.length,
+             "tilt": scales(obj)["tilt"]} if tilted else {}
+    out = [Block(name="rollers", label="roller", fields=flds, rows=rows, scales=sizes,
                  note="roller j at azimuth psi_j from the load line; approach: "
                       "delta_r cos psi_j - P_d/2 (negative: a gap); Q: its load"
                       + ("; M_j: its inner contact's moment, tilt: its own against "

@@ -175,7 +175,7 @@ def test_a_json_only_input_in_a_batch_without_json_is_refused_once(tmp_path, how
     """--stress-field writes a block of the --json output only: a CSV batch without
     --json (the option, or a filled cell of its column) is refused once up front, as
     the one case is (one line naming the input and 'with --json', status 2, nothing
-    written); with --json the batch runs. The rule is the parameter's declaration
+    written); with --json too, as the batch's JSON has no place for it. The rule is the parameter's declaration
     (Parameter.json_only), the same for every door."""
     case = "radius,length,estar,load,profile,stresses"
     cells = "5mm,10mm,115GPa,1kN,iso16281,yes"
@@ -190,8 +190,11 @@ def test_a_json_only_input_in_a_batch_without_json_is_refused_once(tmp_path, how
     assert status == 2 and out == "" and len(err.splitlines()) == 1, err
     named = "--stress-field" if how == "option" else "column 'stress_field'"
     assert err.split(": error: ")[1].startswith(named) and "with --json" in err
+    # with --json too: the batch's JSON has one flat row per case and no blocks, so
+    # the field would be computed and written nowhere (it ran with status 0)
     status, out, err = _calc([str(path), *extra, "--json"])
-    assert status == 0, err
+    assert status == 2 and out == "" and len(err.splitlines()) == 1, err
+    assert err.split(": error: ")[1].startswith(named) and "no blocks" in err
 
 
 @pytest.mark.parametrize("spelled", ["same", "dot", "absolute"])

@@ -399,11 +399,19 @@ def run_batch(args, argv, specs, options, table=CALC):
         cells[p.name] = col
     # an input written to the JSON output only, given without --json (as an option or
     # in any cell of its column): refused once, before any row is computed
-    render.refuse_json_only(
-        PARAMETERS, {p.name: next((c for c in cells[p.name] if c.strip()), None)
-                     for p in PARAMETERS if p.json_only and p.name in cells},
-        args.json, lambda name: (option_name(name) if options.get(name) is not None
-                                 else f"column {header[known[name]]!r}"))
+    json_only = {p.name: next((c for c in cells[p.name] if c.strip()), None)
+                 for p in PARAMETERS if p.json_only and p.name in cells}
+    named = (lambda name: option_name(name) if options.get(name) is not None
+             else f"column {header[known[name]]!r}")
+    render.refuse_json_only(PARAMETERS, json_only, args.json, named)
+    # with --json too: a batch's JSON is one flat row per case, without the blocks of
+    # one case's JSON where such an input's result goes (it ran and dropped the field)
+    for p in PARAMETERS:
+        if p.json_only and json_only.get(p.name) is not None:
+            raise InputError(named(p.name), json_only[p.name],
+                             f"one case or a sweep with --json ({p.json_only} is a block "
+                             "of its JSON)", "a batch's JSON has one flat row per case "
+                             "and no blocks: it would not be written anywhere")
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})

@@ -402,15 +402,6 @@ def main(argv=None):
             if getattr(args, "plot", None) is not None:
                 raise _Failed("--plot draws one case or a sweep, not a CSV batch (read "
                               "the batch's output into linecontact.plot instead)")
-            if getattr(args, "stress_field", None) is not None:
-                raise _Failed("--stress-field writes a section's field into the JSON of "
-                              "one case or a sweep; a CSV batch has one row per case "
-                              "and no field: run the case alone with --json")
-            if getattr(args, "linear", False):
-                # a batch has no sweep to space (a sweep cell is refused): the option
-                # would be dropped without a word
-                raise _Failed("--linear spaces a sweep's values; a CSV batch has no "
-                              "sweep (one value per cell): drop --linear")
 
             options = {p.name: getattr(args, p.name) for p in parameters}
             return run_batch(args, argv, specs, options,

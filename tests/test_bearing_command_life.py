@@ -158,3 +158,23 @@ def test_help_names_the_default_slice_counts_and_the_life_outputs(capsys):
         assert f"{n} for {model}" in text, (model, n)
     for word in ("EHL film", "L_nm", "static safety", "operating clearance", "duty cycle"):
         assert word in text, word
+
+
+def test_a_spectrum_file_is_refused_in_its_own_words(capsys, tmp_path):
+    """A duty-cycle file whose time shares lack a speed, or do not sum to 1, is refused
+    naming --spectrum, the file's column and the remedy (a speed column or --speed,
+    fractions summing to 1), not the library's keyword shares='revolutions' or its
+    argument time_shares; a --speed fills the cases without one."""
+    path = tmp_path / "cases.csv"
+    path.write_text("time_share,radial_load\n0.8,10kN\n0.2,20kN\n", encoding="utf-8")
+    assert main(BASE + ["--spectrum", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--spectrum" in err and "--speed" in err, err
+    assert "shares=" not in err and "rows [1, 2] have none" in err, err
+    assert main(BASE + ["--spectrum", str(path), "--speed", "1500rpm"]) == 0
+    capsys.readouterr()
+    path.write_text("time_share,radial_load,speed\n80,10kN,1500rpm\n20,20kN,750rpm\n",
+                    encoding="utf-8")
+    assert main(BASE + ["--spectrum", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "time_share column sums to 100" in err and "time_shares" not in err, err

@@ -323,8 +323,27 @@ def resolve(values, present, fail):
         if isinstance(read[path], str):
             fail(np.arange(n) == i, "spectrum", "a CSV of load cases (time_share or "
                  "revolution_share, radial_load, ...)", read[path])
-        else:
-            spectra[i] = read[path]
+            continue
+        cases, shares = read[path]
+        from ...bearing.spectrum import SHARE_TOLERANCE
+
+        column = "time_share" if shares == "time" else "revolution_share"
+        total = sum(c["share"] for c in cases)
+        if abs(total - 1.0) > SHARE_TOLERANCE:   # the library's rule, in file terms
+            fail(np.arange(n) == i, "spectrum", f"a {column} column summing to 1 "
+                 "(fractions, not percent)", f"its {column} column sums to {total:.6g}")
+            continue
+        # shares of time count revolutions at each case's speed: the file's speed
+        # column or the bearing's speed; said here in the user's words (the library
+        # would name its keyword shares='revolutions')
+        slow = [k + 1 for k, c in enumerate(cases) if c["speed"] is None]
+        if shares == "time" and slow and not P["speed"][i]:
+            fail(np.arange(n) == i, "spectrum", f"a speed for every case: a speed "
+                 f"column in the file, or {fail.label('speed')} for the bearing; or "
+                 "revolution_share instead of time_share", f"time_share needs each case's speed to count its "
+                 f"revolutions; rows {slow} have none")
+            continue
+        spectra[i] = read[path]
     return State(np.ones(n, bool), estar=estar, hardness=hardness, spectra=spectra)
 
 

@@ -80,6 +80,7 @@ from .checks import check_interval, check_positive
 from .errors import OutOfRangeError, UnknownNameError
 from .hertz import _KE, hertz_contact, hertz_eccentricity
 from .tangential import FRICTION, SHEAR_RATIO
+from .tangential.laws import _check_beyond
 
 __all__ = [
     "DIRECTIONS",
@@ -519,8 +520,7 @@ def slip_force(shift, normal_force, friction, stiffness, *, beyond="raise"):
     C. Cattaneo (1938); R. D. Mindlin (1949); K. L. Johnson, Contact Mechanics (1985),
     section 7.2.
     """
-    if beyond not in ("raise", "saturate"):
-        raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
+    _check_beyond(beyond)
     P = check_positive("normal_force", normal_force, "N")
     mu = FRICTION.check(friction, name="friction")
     k = check_positive("stiffness", stiffness, "N/m")
@@ -771,8 +771,7 @@ class EllipticalTangentialContact:
 
     def _amplitude(self, amplitude, beyond="raise"):
         u0 = check_positive("amplitude", amplitude, "m")
-        if beyond not in ("raise", "saturate"):
-            raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
+        _check_beyond(beyond)
         if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
             raise OutOfRangeError("amplitude", float(np.max(u0)),
                                   f"(0, {self.gross_slip_shift:.6g}] m", unit="m",

@@ -52,8 +52,6 @@ parameters = (
               "(aligned), free between raceways", group, positive=False, words=("free",)),
 )
 
-NAMES = tuple(p.name for p in parameters)
-
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
         "coupling along the axis; linecontact.roller), 50 slices graded towards the "
         "contact's ends; d: the depth at the roller's centre x = 0 (negative "

@@ -1673,10 +1673,16 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
     outside = []
     if roller is not None:
         D = 2 * roller.radius
-        checks = [("L/D", roller.length / D, cov["l_over_d"]),
-                  ("mean line load q/(E* D)",
+        # L/(2R) in the user's terms: R is the contact's effective radius (the
+        # roller's on a flat; with a raceway's curvature added otherwise)
+        ld = (f"L/(2R) = {roller.length / D:.2g} (roller length L = "
+              f"{roller.length * 1e3:.4g} mm, the contact's effective radius R = "
+              f"{roller.radius * 1e3:.4g} mm: the roller's L/D on a flat)")
+        checks = [(ld, roller.length / D, cov["l_over_d"]),
+                  ("mean line load q/(E* 2R) = "
+                   f"{solution.force / (roller.length * roller.estar * D):.2g}",
                    solution.force / (roller.length * roller.estar * D), cov["line_load"])]
-        outside += [f"{n} = {v:.2g} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
+        outside += [f"{n} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
                     in checks if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5)]
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:

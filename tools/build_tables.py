@@ -22,6 +22,10 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``adhesion``
     Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
     MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
+``population``
+    Drawn rollers of cylindrical, needle and cam-follower bearings at 2-50 % of their
+    ISO 281 ratings: does each stated error of the runtime bound its difference to the
+    3D BEM? tables/population_check.csv (tools.studies.population_study).
 ``bearing``
     Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
     spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
@@ -47,6 +51,7 @@ SUBCOMMANDS = {
     "accuracy": "tools.studies.accuracy",
     "adhesion": "tools.studies.adhesion_study",
     "bearing": "tools.studies.bearing_study",
+    "population": "tools.studies.population_study",
 }
 
 

@@ -59,6 +59,7 @@ cases (about 2 min).
 """
 from __future__ import annotations
 
+import math
 import re
 import time
 from pathlib import Path
@@ -84,6 +85,24 @@ RELIEF = dict(relief_fraction=0.15, corner_radius=0.05)  #: relief length / L, a
 #: contact comes within two cells of a roller end (module docstring, item 1)
 END_GRIDS = ((4096, 16), (8192, 32))
 
+#: the wide set (issue 32: the rollers users bring): L/D of cylindrical roller bearings
+#: (0.8-1.5), needles (3-10) and cam-follower rings (0.5-0.8), mean line loads
+#: q/(E* D) from light to heavy, tilts to 3 mrad; D = DIAMETER throughout
+WIDE_L_OVER_D = (0.5, 0.8, 1.0, 1.5, 3.0, 6.0, 10.0)
+WIDE_LINE_LOADS_OVER_ESTAR_D = (1e-5, 1e-4, 1e-3, 3e-3)
+WIDE_TILTS = (0.0, 1e-3, 3e-3)        #: [rad]
+#: the wide set's crown radius: CROWN_RADIUS (L / 14 mm)^2 within these bounds [m]
+#: (the 14 mm roller's end drop of 49 um at 8-37 mm; a shallower crown on the short
+#: rollers, a deeper drop on the needles)
+WIDE_CROWN_RADII = (0.1, 5.0)
+#: the profiles of the wide set (codes 1-5) and the set's code in the case_set column
+WIDE_PROFILES = (1, 2, 3, 4, 5)
+CASE_SETS = {0: "dense (L = 14, 30 mm)", 1: "wide (issue 32)"}
+#: the wide set's order (wide_tasks) and its third-grid cases ((i + 2j + 3k) mod this
+#: = 0 over the L/D, load and profile indices: one in seven)
+WIDE_STRIDE = 37
+WIDE_CHECK_EVERY = 7
+
 #: profile codes of the table (numeric columns only)
 PROFILES = {1: "circular crown", 2: "iso16281", 3: "lundberg", 4: "johns-gohar",
             5: "straight with end relief", 6: "offset circular crown",
@@ -93,11 +112,12 @@ FREE_TILT = ("offset circular crown", "asymmetric crown")
 CODES = {v: k for k, v in PROFILES.items()}
 
 
-def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR):
-    """The profile object (linecontact.profiles) of a study case, by name."""
+def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR, crown_radius=CROWN_RADIUS):
+    """The profile object (linecontact.profiles) of a study case, by name
+    (`crown_radius` [m]: the circular crown's)."""
     from linecontact import profiles as lp
     if name == "circular crown":
-        return lp.CircularCrownProfile(length, crown_radius=CROWN_RADIUS)
+        return lp.CircularCrownProfile(length, crown_radius=crown_radius)
     if name == "iso16281":
         return lp.ISO16281Profile(length, diameter=2 * radius)
     if name == "lundberg":
@@ -120,9 +140,54 @@ def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR):
     raise ValueError(f"profile {name!r} is not one of {sorted(CODES)}")
 
 
-def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=7, quick=False):
-    """The list of cases (picklable dicts with a unique 'key'); every `check_every`-th
-    case is also solved on a third grid (4 n_x x 4 n_y) to measure the order."""
+def wide_crown_radius(length):
+    """The wide set's crown radius for a roller of length `length` [m]
+    (WIDE_CROWN_RADII)."""
+    lo, hi = WIDE_CROWN_RADII
+    return float(min(max(CROWN_RADIUS * (length / ROLLERS["A"]) ** 2, lo), hi))
+
+
+def task_profile(task):
+    """The profile object of a task dict (its crown radius where it carries one)."""
+    return make_profile(task["profile"], task["length"], task["radius"], task["estar"],
+                        task.get("crown_radius", CROWN_RADIUS))
+
+
+def wide_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
+    """The wide set (WIDE_*): every L/D and line load with each of the five profiles,
+    the tilt cycling through WIDE_TILTS with the L/D, load and profile indices (so
+    each L/D and each profile meets every tilt): 140 cases (``quick``: the first and
+    last L/D and load, 20)."""
+    lds = WIDE_L_OVER_D[::len(WIDE_L_OVER_D) - 1] if quick else WIDE_L_OVER_D
+    # the order: a stride permutation (WIDE_STRIDE, prime to the count), so that any
+    # first n cases spread over L/D, load and profile (``--wide-limit``); the third-grid
+    # check by the case itself, not its place
+    qs = (WIDE_LINE_LOADS_OVER_ESTAR_D[::len(WIDE_LINE_LOADS_OVER_ESTAR_D) - 1] if quick
+          else WIDE_LINE_LOADS_OVER_ESTAR_D)
+    tasks = []
+    for i, ld in enumerate(lds):
+        L = ld * DIAMETER
+        for j, qn in enumerate(qs):
+            q = qn * ESTAR * DIAMETER
+            for k, code in enumerate(WIDE_PROFILES):
+                prof = PROFILES[code]
+                th = WIDE_TILTS[(i + j + k) % len(WIDE_TILTS)]
+                tasks.append(dict(
+                    key=f"W-ld{ld:g}-{prof.replace(' ', '_')}-qn{qn:g}-t{th * 1e3:g}",
+                    roller="W", profile=prof, radius=DIAMETER / 2, length=L,
+                    estar=ESTAR, force=q * L, tilt=th, n_x=n_x, n_y=n_y, tol=tol,
+                    crown_radius=wide_crown_radius(L), case_set=1,
+                    check=(i + 2 * j + 3 * k) % WIDE_CHECK_EVERY == 0))
+    n = len(tasks)
+    stride = next(s for s in range(WIDE_STRIDE, n + WIDE_STRIDE) if math.gcd(s, n) == 1)
+    return [tasks[(m * stride) % n] for m in range(n)]
+
+
+def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=7, quick=False, wide=True,
+                wide_limit=None):
+    """The list of cases (picklable dicts with a unique 'key'): the dense set and, with
+    `wide`, the wide set (wide_tasks); every `check_every`-th case is also solved on a
+    third grid (4 n_x x 4 n_y) to measure the order."""
     tasks = []
     combos = ([("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
               + [("A", p) for p in FREE_TILT])
@@ -138,9 +203,13 @@ def study_tasks(n_x=128, n_y=32, tol=1e-7, check_every=7, quick=False):
                 tasks.append(dict(
                     key=f"{roller}-{prof.replace(' ', '_')}-q{q / 1e3:g}-t{tag}",
                     roller=roller, profile=prof, radius=DIAMETER / 2, length=L,
-                    estar=ESTAR, force=q * L, tilt=th, n_x=n_x, n_y=n_y, tol=tol))
+                    estar=ESTAR, force=q * L, tilt=th, n_x=n_x, n_y=n_y, tol=tol,
+                    crown_radius=CROWN_RADIUS, case_set=0))
     for i, t in enumerate(tasks):
         t["check"] = bool(check_every) and i % check_every == 0
+    if wide:
+        w = wide_tasks(n_x, n_y, tol, quick)
+        tasks += w[:wide_limit] if wide_limit is not None else w
     return tasks
 
 
@@ -153,7 +222,7 @@ def _largest_approach(depth, tilt, profile, length):
 def bem_case(task):
     """The BEM reference of one case on two nested grids (module docstring, item 1)."""
     t0 = time.perf_counter()
-    prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
+    prof = task_profile(task)
     g = grid_convergence(solve_roller_force, task["radius"], task["length"], task["estar"],
                          task["force"], tilt=task["tilt"], profile=prof,
                          n_x=task["n_x"], n_y=task["n_y"], tol=task["tol"], workers=1)
@@ -249,7 +318,7 @@ def runtime_case(task, n_slices=None):
     the solve (the model built once beforehand; CPU time is what a shared machine's
     load does not inflate); `n_slices` None: the model's default."""
     from linecontact.roller import ProfiledRoller
-    prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
+    prof = task_profile(task)
     model = ProfiledRoller(task["radius"], task["length"], task["estar"], prof,
                            **({} if n_slices is None else {"n_slices": n_slices}))
     t0, c0 = time.perf_counter(), time.process_time()
@@ -264,7 +333,7 @@ def iso_case(task, n_slices=30):
     """ISO 16281 slicing (linecontact.roller.iso_slicing, with its misalignment
     term) at the case's F and theta."""
     from linecontact.roller import iso_slicing
-    prof = make_profile(task["profile"], task["length"], task["radius"], task["estar"])
+    prof = task_profile(task)
     r = iso_slicing(task["radius"], task["length"], task["estar"], prof,
                     force=task["force"],
                     tilt="free" if task["tilt"] is None else task["tilt"], n_slices=n_slices)
@@ -313,13 +382,14 @@ def compare_case(task, ref):
     return out
 
 
-def bem_from_table(tasks, table, n_x, n_y, tol, check_every=7):
+def bem_from_table(tasks, table, n_x, n_y, tol, check_every=7, missing_ok=False):
     """The BEM references of `tasks` (dicts as bem_case returns them) read back from
     an earlier roller_accuracy table (``--bem-from``), whose cases, grids, tolerance
     and third-grid cases (``--check-every``: its accuracy line, reused, holds their
     observed orders, and the header's grid line names them) must be this run's: the
     inverse of tabulate's bem_* columns (the observed orders are not columns: NaN, the
-    table's ``accuracy`` line keeps them)."""
+    table's ``accuracy`` line keeps them). With `missing_ok`, a case the table lacks
+    gives None in its place (the caller computes it) instead of an error."""
     c = table.columns
     tol_field = str(table.meta.get("tolerance", "")).split(" ")[0]
     if tol_field != f"{tol:g}":
@@ -338,7 +408,15 @@ def bem_from_table(tasks, table, n_x, n_y, tol, check_every=7):
              & (np.abs(c["force"] - t["force"]) <= 1e-9 * t["force"])
              & (c["free_tilt"] == float(free))
              & (free | (np.abs(c["tilt"] - (t["tilt"] or 0.0)) < 1e-12)))
+        if "case_set" in c:
+            m &= c["case_set"] == t.get("case_set", 0)
+            m &= np.abs(c["crown_radius"] - t.get("crown_radius", CROWN_RADIUS)) < 1e-12
+        elif t.get("case_set", 0) != 0:
+            m &= False          # a table before the wide set: its cases are all dense
         i = np.flatnonzero(m)
+        if i.size == 0 and missing_ok:
+            refs.append(None)   # not in the table: computed by the caller
+            continue
         if i.size != 1:
             raise ValueError(f"--bem-from: case {t['key']} is {i.size} times in the table "
                              "(1 expected: the same cases)")
@@ -417,6 +495,12 @@ def add_arguments(parser):
     parser.add_argument("--check-every", type=int, default=7,
                         help="every k-th case also on a third grid (4x) to measure the "
                              "convergence order (default 7, so that all tilts are sampled; 0: never)")
+    parser.add_argument("--no-wide", action="store_true",
+                        help="the dense set only (L = 14, 30 mm), without the wide set "
+                             "(WIDE_*: L/D 0.5-10, q/(E* D) 1e-5-3e-3, tilts to 3 mrad)")
+    parser.add_argument("--wide-limit", type=int, default=None, metavar="N",
+                        help="only the first N cases of the wide set (its order spreads "
+                             "any first N over L/D, load and profile; default: all)")
     parser.add_argument("--quick", action="store_true",
                         help="a quarter of the cases (two loads, two tilts): a smoke run")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
@@ -450,7 +534,14 @@ COLUMNS_UNITS = {
     "iso_err_depth": "-", "iso_err_moment": "-", "iso_err_p_max": "-", "iso_tilt": "rad",
     "iso_err_tilt": "-", "iso_err_stiffness": "-", "iso_err_tilt_stiffness": "-",
     "bem_seconds": "s",
+    "crown_radius": "m", "case_set": "-",
+    "rt_bound_depth": "-", "rt_bound_moment": "-", "rt_bound_p_max": "-",
+    "rt_bound_tilt": "-", "rt_bound_stiffness": "-", "rt_bound_tilt_stiffness": "-",
 }
+#: the runtime's error bound per quantity: |rt_err_*| + |bem_change_*| (the finer BEM
+#: grid's own error is at most its change from the coarser one where the observed order
+#: is at least 1: a Richardson estimate E_fine = change/(2^p - 1) <= |change|)
+BOUNDS = ("depth", "moment", "p_max", "tilt", "stiffness", "tilt_stiffness")
 
 
 def tabulate(tasks, results):
@@ -480,7 +571,12 @@ def tabulate(tasks, results):
                          "err_tilt_stiffness")},
             "rt_seconds": r["rt_seconds"], "rt_cpu_seconds": r["rt_cpu_seconds"],
             "bem_seconds": r["bem_seconds"],
+            "crown_radius": t.get("crown_radius", CROWN_RADIUS),
+            "case_set": t.get("case_set", 0),
         })
+        row = rows[-1]
+        for k in BOUNDS:
+            row[f"rt_bound_{k}"] = abs(row[f"rt_err_{k}"]) + abs(row[f"bem_change_{k}"])
     return {k: np.array([row[k] for row in rows], dtype=float) for k in COLUMNS_UNITS}
 
 
@@ -494,7 +590,35 @@ def summarise(col, tasks, results):
     def mx(a, mask):
         return float(np.max(np.abs(a[mask]), initial=0.0))
 
-    for m in ("rt", "iso"):
+    # the runtime's stated errors: its bounds (|error| + the BEM's grid change), by
+    # the runtime's own edge flag (the class whose error a user is shown); its peak
+    # pressure only where the BEM's is off the ends too (a finite peak), the rows where
+    # the two flags differ counted apart
+    rte = col["rt_edge"] > 0
+    s["rt_off_d"] = mx(col["rt_bound_depth"], ~rte)
+    s["rt_off_m"] = mx(col["rt_bound_moment"], ~rte & tilted)
+    s["rt_off_m0"] = mx(col["rt_bound_moment"], ~rte & ~tilted)
+    s["rt_off_p"] = mx(col["rt_bound_p_max"], ~rte & ~edge)
+    s["rt_edge_d"] = mx(col["rt_bound_depth"], rte)
+    s["rt_edge_m"] = mx(col["rt_bound_moment"], rte & tilted)
+    s["rt_off_t"] = mx(col["rt_bound_tilt"], ~rte & free)
+    s["rt_edge_t"] = mx(col["rt_bound_tilt"], rte & free)
+    s["rt_k"] = mx(col["rt_bound_stiffness"], np.ones_like(edge))
+    s["rt_kt"] = mx(col["rt_bound_tilt_stiffness"], np.ones_like(edge))
+    s["n_rt_off"], s["n_rt_edge"] = int((~rte).sum()), int(rte.sum())
+    s["n_flag_differ"] = int((~rte & edge).sum())
+    # the same by case set and L/D band (documentation: the runtime reads the above)
+    bands = []
+    for lo, hi in ((0, 1.0), (1.0, 2.0), (2.0, 5.0), (5.0, np.inf)):
+        ld = col["roller_length"] / DIAMETER
+        sel = ~rte & (ld >= lo) & (ld < hi) if np.isfinite(hi) else ~rte & (ld >= lo)
+        if sel.any():
+            bands.append(f"L/D {lo:g}-{hi:g} ({int(sel.sum())} cases): deflection "
+                         f"{mx(col['rt_bound_depth'], sel):.2%}, moment "
+                         f"{mx(col['rt_bound_moment'], sel & tilted):.2%}, peak pressure "
+                         f"{mx(col['rt_bound_p_max'], sel & ~edge):.2%}")
+    s["bands"] = "; ".join(bands)
+    for m in ("iso",):
         s[f"{m}_off_d"] = mx(col[f"{m}_err_depth"], ~edge)
         s[f"{m}_off_m"] = mx(col[f"{m}_err_moment"], ~edge & tilted)
         s[f"{m}_off_m0"] = mx(col[f"{m}_err_moment"], ~edge & ~tilted)
@@ -603,7 +727,7 @@ def figure(col, path):
               ("rt", "C0", "runtime (coupled slices, 100)"))
     # spread the cases of one load sideways: profile and tilt
     shift = np.exp(0.04 * (col["profile"] - 3.5) + 20 * np.abs(col["tilt"]) * ~free)
-    x = col["line_load"] / 1e3 * shift
+    x = col["line_load"] / (ESTAR * DIAMETER) * shift
     floor = 1e-4
     for ax, (key, chg, mask, title, target) in zip(axes, panels):
         for m, colour, _ in models:
@@ -620,11 +744,9 @@ def figure(col, path):
         ax.axhline(target, color="k", lw=0.8, ls="--")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xticks([q / 1e3 for q in LINE_LOADS])
-        ax.set_xticklabels([f"{q / 1e3:g}" for q in LINE_LOADS])
-        ax.minorticks_off()
+
         ax.set_title(title, fontsize=10)
-        ax.set_xlabel("mean line load F/L [N/mm]")
+        ax.set_xlabel("mean line load q/(E* D) [-]")
         ax.grid(True, which="major", lw=0.3, alpha=0.6)
     axes[0].set_ylabel(f"|error| against the 3D BEM [%] (floor {floor:g} %)")
     handles = [Line2D([], [], ls="", marker="o", color=c, label=lab) for _, c, lab in models]
@@ -635,7 +757,7 @@ def figure(col, path):
     handles.append(Line2D([], [], ls="", marker="o", markerfacecolor="none",
                           markeredgecolor="0.3", label="edge loaded (hollow)"))
     fig.legend(handles=handles, loc="lower center", ncol=6, fontsize=8, frameon=False)
-    fig.suptitle("Profiled and tilted rollers (D = 10 mm, L = 14 and 30 mm, tilt 0-2 mrad): "
+    fig.suptitle("Profiled and tilted rollers (D = 10 mm, L = 5-100 mm, tilt 0-3 mrad): "
                  "runtime model and ISO slicing against the 3D BEM; dashed: targets "
                  "1 %, 1 %, 5 %", fontsize=10)
     fig.tight_layout(rect=(0, 0.12, 1, 1))
@@ -649,15 +771,22 @@ def figure(col, path):
 def run(args):
     from linecontact.tables import write_table
 
-    tasks = study_tasks(args.n_x, args.n_y, args.tol, args.check_every, args.quick)
+    tasks = study_tasks(args.n_x, args.n_y, args.tol, args.check_every, args.quick,
+                        wide=not args.no_wide, wide_limit=args.wide_limit)
     t0 = time.perf_counter()
     old = None
+    n_computed = len(tasks)
     if args.bem_from is not None:
         from linecontact.tables import read_table
         old = read_table(args.bem_from.stem, directory=args.bem_from.parent)
         refs = bem_from_table(tasks, old, args.n_x, args.n_y, args.tol,
-                              args.check_every)
-        results = [compare_case(t, r) for t, r in zip(tasks, refs)]
+                              args.check_every, missing_ok=True)
+        todo = [t for t, r in zip(tasks, refs) if r is None]
+        n_computed = len(todo)
+        new = iter(run_study_from_args(run_case, todo, args, desc="roller study")
+                   if todo else [])
+        results = [dict(next(new), new=True) if r is None else compare_case(t, r)
+                   for t, r in zip(tasks, refs)]
     else:
         results = run_study_from_args(run_case, tasks, args, desc="roller study")
     wall = time.perf_counter() - t0
@@ -675,13 +804,31 @@ def run(args):
                  + f"; the per-case times sum to {s['case_seconds']:.0f} s")
     reuse = {}
     if old is not None:
-        # the BEM columns are the earlier table's: its accuracy line (the observed
-        # orders are not columns) and its provenance and time
-        accuracy = old.meta["accuracy"]
+        # the BEM columns are the earlier table's where it had the case: its accuracy
+        # line (the observed orders are not columns) and its provenance and time
         reuse["bem_from"] = bem_from_line(old.meta, args.bem_from.name)
-        wall_line = (f"{wall:.1f} s for the runtime and ISO slicing columns of "
-                     f"{len(tasks)} cases in one process (the BEM columns reused: "
-                     "bem_from)")
+        if n_computed:
+            from .runner import code_version
+            import datetime
+            sets = sorted({t.get("case_set", 0) for t, r in zip(tasks, refs) if r is None})
+            reuse["bem_from"] = (
+                f"rows of case_set {', '.join(str(k) for k in sets)}: the bem_* columns "
+                f"computed by '{args.command_line}', {code_version()}, "
+                f"{datetime.date.today().isoformat()} ({n_computed} cases); the other "
+                f"rows: {reuse['bem_from']}")
+        if n_computed == 0:
+            accuracy = old.meta["accuracy"]
+            wall_line = (f"{wall:.1f} s for the runtime and ISO slicing columns of "
+                         f"{len(tasks)} cases in one process (the BEM columns reused: "
+                         "bem_from)")
+        else:
+            accuracy = (accuracy + f" (all {len(tasks)} cases; the observed orders of "
+                        f"the {n_computed} computed in this run); the reused cases' "
+                        f"own line: {old.meta['accuracy']}")
+            wall_line = (wall_time_line(wall, [r for r in results if r.get("new")],
+                                        "cases' BEM", args.scheduler, args.workers)
+                         + f" and the runtime and ISO slicing of all {len(tasks)} cases "
+                         f"({len(tasks) - n_computed} BEM references reused: bem_from)")
     units = ", ".join(f"{k} [{u}]" for k, u in COLUMNS_UNITS.items())
     meta = table_meta(
         args.command_line,
@@ -703,8 +850,14 @@ def run(args):
                   "(depth over delta, moment over |M| or F L/2, tilt over the tilt, "
                   "stiffnesses relative); err_stiffness, err_tilt_stiffness = k/k_bem - 1 "
                   "for dF/dd at fixed tilt and dM/dtheta at fixed d, the BEM's from the "
-                  "flat and tilted rigid punch on its contact set",
-        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; L = 14 mm: profiles "
+                  "flat and tilted rigid punch on its contact set; crown_radius: the "
+                  "circular crown's Rc (unused by the other profiles); case_set: "
+                  + ", ".join(f"{k} = {v}" for k, v in CASE_SETS.items())
+                  + "; rt_bound_* = |rt_err_*| + |bem_change_*|: the runtime's error "
+                  "bound against a converged 3D solution (the finer grid's own error "
+                  "taken as at most its change from the coarser one, the Richardson "
+                  "estimate change/(2^p - 1) at an observed order p >= 1)",
+        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa; dense set: L = 14 mm: profiles "
               f"1-5 at the tilts below and the offset crown (x0 = {CROWN_OFFSET * 1e3:g} "
               f"mm, zero moment: theta = -x0/Rc) and an asymmetric crown (Rc = "
               f"{CROWN_RADII_ASYM[0] * 1e3:g} mm for x < 0, {CROWN_RADII_ASYM[1] * 1e3:g} mm "
@@ -713,7 +866,15 @@ def run(args):
               f"N/mm; end relief: {RELIEF['relief_fraction']:g} L at each end, tangent "
               f"corner radius {RELIEF['corner_radius'] * 1e3:g} mm; line loads "
               f"{', '.join(f'{q / 1e3:g}' for q in LINE_LOADS)} N/mm; tilts "
-              f"{', '.join(f'{t * 1e3:g}' for t in TILTS)} mrad",
+              f"{', '.join(f'{t * 1e3:g}' for t in TILTS)} mrad"
+              + ("" if args.no_wide else
+                 f"; wide set (case_set 1): L/D "
+                 f"{', '.join(f'{v:g}' for v in WIDE_L_OVER_D)} x mean line load q/(E* D) "
+                 f"{', '.join(f'{v:g}' for v in WIDE_LINE_LOADS_OVER_ESTAR_D)} x profiles "
+                 "1-5 (the same designs; the crown radius CROWN_RADIUS (L/14 mm)^2 within "
+                 f"{WIDE_CROWN_RADII[0] * 1e3:g}-{WIDE_CROWN_RADII[1] * 1e3:g} mm), the tilt "
+                 f"cycling through {', '.join(f'{t * 1e3:g}' for t in WIDE_TILTS)} mrad with "
+                 "the L/D, load and profile indices"),
         grid=f"per case an adapted window (contact box x 1.25, |y| <= 1.25 b) with "
              f"{args.n_x} x {args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells; the "
              f"finer grid is the reference; every {args.check_every}th case also on "
@@ -728,13 +889,17 @@ def run(args):
                   "moment 1e-6 F L/2",
         accuracy=accuracy,
         runtime_settings=runtime_settings(),
-        runtime_error=f"largest |error| off the ends ({s['n_off']} cases): deflection "
+        runtime_error=f"largest bound |error| + |BEM grid change| (rt_bound_*), by the "
+                      f"runtime's own edge flag: off the ends ({s['n_rt_off']} cases): deflection "
                       f"{s['rt_off_d']:.2%}, moment {s['rt_off_m']:.2%} (tilted), "
                       f"{s['rt_off_m0']:.1e} F L/2 (untilted), peak pressure "
-                      f"{s['rt_off_p']:.2%}, zero-moment tilt {s['rt_off_t']:.2%}; edge "
-                      f"loaded ({s['n_edge']} cases): deflection {s['rt_edge_d']:.2%}, "
+                      f"{s['rt_off_p']:.2%} (where the BEM's contact is off the ends too; "
+                      f"{s['n_flag_differ']} cases off the ends for the runtime reach an "
+                      f"end cell of the BEM), zero-moment tilt {s['rt_off_t']:.2%}; edge "
+                      f"loaded ({s['n_rt_edge']} cases): deflection {s['rt_edge_d']:.2%}, "
                       f"moment {s['rt_edge_m']:.2%}, tilt {s['rt_edge_t']:.2%}; all cases: "
-                      f"dF/dd {s['rt_k']:.2%}, dM/dtheta {s['rt_kt']:.2%}",
+                      f"dF/dd {s['rt_k']:.2%}, dM/dtheta {s['rt_kt']:.2%}; off the ends "
+                      f"by L/D: {s['bands']}",
         iso_error=f"largest |error| off the ends: deflection {s['iso_off_d']:.2%}, moment "
                   f"{s['iso_off_m']:.2%}, peak pressure {s['iso_off_p']:.2%}, zero-moment "
                   f"tilt {s['iso_off_t']:.2%}; edge loaded: deflection "

@@ -44,7 +44,11 @@ def _coverage():
                 end_gap=(pair("covered_infinite_end_gap_over_length")
                          if "covered_infinite_end_gap_over_length" in meta else None),
                 off=errors("runtime_error_off_ends"),
-                edge=errors("runtime_error_edge_loaded"))
+                edge=errors("runtime_error_edge_loaded"),
+                # optional (tables before issue 32 lack it): the end zone's own errors
+                zone=(errors("runtime_error_end_zone")
+                      if "runtime_error_end_zone" in meta else None),
+                zone_gap=float(meta.get("end_zone_gap_over_length", 0.0)))
             # the largest errors as coverage_note states them, written once
             off, edge = cov["off"], cov["edge"]
             cov["errors_edge_loaded"] = (
@@ -55,6 +59,13 @@ def _coverage():
                 f"contact off the ends: deflection {_pct(off['depth'])}, moment "
                 f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
                 f"zero-moment tilt {_pct(off['tilt'])}")
+            if cov["zone"] is not None:
+                z = cov["zone"]
+                cov["errors_end_zone"] = (
+                    f"contact in the end zone (within {cov['zone_gap']:g} L of a roller "
+                    f"end where the drop is infinite): deflection {_pct(z['depth'])}, "
+                    f"moment {_pct(z['moment'])} (tilted), peak pressure "
+                    f"{_pct(z['p_max'])}, zero-moment tilt {_pct(z['tilt'])}")
         except (FileNotFoundError, KeyError, ValueError):
             cov = None
         _COVERAGE.append(cov)
@@ -132,7 +143,10 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
                        f"drop is infinite (measured down to {cov['end_gap'][0]:.2g} L)")
     if n_slices < DEFAULT_N_SLICES:
         outside.append(f"n_slices = {n_slices} (measured with {DEFAULT_N_SLICES})")
-    errs = cov["errors_edge_loaded"] if edge_loaded else cov["errors_off_ends"]
+    in_zone = (not edge_loaded and end_gap is not None and cov["zone"] is not None
+               and end_gap < cov["zone_gap"])
+    errs = (cov["errors_edge_loaded"] if edge_loaded else
+            cov["errors_end_zone"] if in_zone else cov["errors_off_ends"])
     if outside:
         return (f"{'; '.join(outside)}: outside the range where this model's error was "
                 f"measured against {where}; inside it the largest errors are, {errs}")

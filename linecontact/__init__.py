@@ -8,11 +8,30 @@ model; docs/theory.md, section 'Self-similarity'). SI units in and out (m, N, Pa
 everything is vectorised over numpy arrays. Each model states its error against the BEM
 (``model.measured_error``, from tables/model_accuracy.csv).
 
-Modules: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO 16281),
-:mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.universal` (the universal
-curve), :mod:`~linecontact.mdr` (general MDR transforms), :mod:`~linecontact.models` (one
-interface for all models), :mod:`~linecontact.tables` (shipped data),
-:mod:`~linecontact.validity` (ranges and :class:`OutOfRangeError`).
+Layers, each importing only from the layers before it (and the helpers below):
+
+- formulas: :mod:`~linecontact.classical` (Eq. 1-4, Kunz, Palmgren, ISO 16281),
+  :mod:`~linecontact.lipopov` (Eq. 7-12), :mod:`~linecontact.mdr` (general MDR
+  transforms), :mod:`~linecontact.hertz` (elliptical point contact),
+  :mod:`~linecontact.universal` (the universal curve), :mod:`~linecontact.profiles`
+  (roller profiles);
+- models: :mod:`~linecontact.models`, one interface for every straight-roller law;
+- what follows from a normal contact of any model: :mod:`~linecontact.stresses`
+  (subsurface stresses, case-hardening check), :mod:`~linecontact.tangential` (stick,
+  partial slip, fretting), :mod:`~linecontact.adhesion` and
+  :mod:`~linecontact.viscoelastic`;
+- roller / raceway / contact: :mod:`~linecontact.roller` (profiled rollers by coupled
+  slices), :mod:`~linecontact.raceway` (a roller between two raceways),
+  :mod:`~linecontact.contact` (one contact from its parts: the front door);
+- :mod:`~linecontact.bearing` (radial roller bearings: load distribution, stiffness,
+  rating life);
+- the calculator, :mod:`linecontact.calc` (the command line and batches; no physics of
+  its own, and nothing in the library imports it).
+
+Helpers every layer uses: :mod:`~linecontact.errors` (the input errors, e.g.
+:class:`OutOfRangeError`), :mod:`~linecontact.checks` (validity ranges as
+:class:`Interval` data and the checks that enforce them), :mod:`~linecontact.tables`
+(the shipped data).
 
 Examples
 --------
@@ -44,7 +63,8 @@ _LAZY = {
             "mdr_profile_from_stiffness", "mdr_stiffness"),
     "models": ("DEFAULT_MODEL", "MODELS", "ContactModel", "get_model", "register",
                "standard_models"),
-    "validity": ("Interval", "OutOfRangeError"),
+    "checks": ("Interval",),
+    "errors": ("OutOfRangeError",),
 }
 _ORIGIN = {name: module for module, names in _LAZY.items() for name in names}
 
@@ -155,7 +175,7 @@ _ONE_LINER_DOC = """{summary}
     Notes
     -----
     Valid where the chosen model is: each model states its range of L/R, E* and
-    depth, and raises :class:`~linecontact.validity.OutOfRangeError` outside it.
+    depth, and raises :class:`~linecontact.errors.OutOfRangeError` outside it.
 
     Examples
     --------

@@ -24,7 +24,7 @@ import importlib
 import warnings
 from pathlib import Path
 
-from .validity import OutOfRangeError, UnknownNameError
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = []
 

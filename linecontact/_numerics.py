@@ -5,7 +5,8 @@ lower branch :math:`W_{-1}` of the Lambert W function (the closed forms of the L
 model). Both used to come from scipy (``scipy.interpolate.CubicSpline``,
 ``scipy.special.lambertw``), whose import alone costs several hundred milliseconds,
 more than the whole one-case computation; tests/test_lipopov.py checks that both agree
-with scipy to 1e-12.
+with scipy to 1e-12. Besides them, :func:`out`: the shape every result is returned in
+(a Python float for a scalar, the array otherwise).
 
 References
 ----------
@@ -25,7 +26,15 @@ import threading
 import numpy as np
 
 __all__ = ["NotAKnotSpline", "UniformHermite", "blockwise", "lambertw_m1",
-           "log1p_excess_root", "serial_blas"]
+           "log1p_excess_root", "out", "serial_blas"]
+
+
+def out(x):
+    """Return a Python float for a 0-d result, the array otherwise (internal helper)."""
+    x = np.asarray(x)
+    if x.ndim == 0:
+        return float(x)
+    return x
 
 
 class NotAKnotSpline:

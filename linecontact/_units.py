@@ -274,7 +274,7 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
     bounds : tuple of (callable, str), optional
         ``(inside, text)``: require ``inside(value)``; ``text`` describes the range
         (for example ``(Interval.contains, Interval.describe())`` of
-        :mod:`linecontact.validity`).
+        :mod:`linecontact.checks`).
 
     Returns
     -------
@@ -559,7 +559,7 @@ def range_error_parts(exc):
 
     Examples
     --------
-    >>> from linecontact.validity import OutOfRangeError
+    >>> from linecontact.errors import OutOfRangeError
     >>> range_error_parts(OutOfRangeError("design_force", "missing", "(0, inf) N",
     ...                                   hint="the lundberg profile needs it"))
     ('(0, inf) N', "design_force = 'missing': the lundberg profile needs it")

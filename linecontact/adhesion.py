@@ -74,9 +74,10 @@ import functools
 
 import numpy as np
 
+from ._numerics import out
+from .checks import Interval, check_positive, document
+from .errors import OutOfRangeError, UnknownNameError
 from .tables import TableError, read_table
-from .validity import (Interval, OutOfRangeError, UnknownNameError, check_positive,
-                       document, out)
 
 __all__ = [
     "AdhesiveContact",
@@ -85,6 +86,7 @@ __all__ = [
     "tabor_note",
     "jkr_cylinder_force_per_length",
     "jkr_cylinder_pull_off",
+    "jkr_cylinder_zero_load_half_width",
     "ADHESION_TABLE",
     "CYLINDER_MODELS",
     "TABOR_JKR",
@@ -250,7 +252,7 @@ class AdhesiveContact:
     and the finite cylinder's). The extrema (pull-off under both controls) are found
     on a log-spaced scan of a over 12 decades around `x_scale` and refined by Brent's
     method to a relative 1e-12 in a; one lying on the scan's end raises
-    :class:`~linecontact.validity.OutOfRangeError` (e.g. beyond `x_max`). Exact for
+    :class:`~linecontact.errors.OutOfRangeError` (e.g. beyond `x_max`). Exact for
     axisymmetric bodies; for elongated contacts see :class:`CylinderAdhesion`.
 
     Examples
@@ -471,7 +473,7 @@ class AdhesiveContact:
         """MDR half-length a at depth d on the stable (a > a_d) or unstable branch [m].
 
         Depths below the depth-controlled pull-off have no contact and raise
-        :class:`~linecontact.validity.OutOfRangeError` naming the range.
+        :class:`~linecontact.errors.OutOfRangeError` naming the range.
         """
         from scipy.optimize import brentq
 
@@ -520,7 +522,7 @@ class AdhesiveContact:
         """Depth d [m] at force F [N] on the force-controlled stable branch (a > a_F).
 
         Forces below the force-controlled pull-off have no contact and raise
-        :class:`~linecontact.validity.OutOfRangeError` naming the range.
+        :class:`~linecontact.errors.OutOfRangeError` naming the range.
         """
         from scipy.optimize import brentq
 
@@ -738,6 +740,50 @@ def jkr_cylinder_pull_off(radius, estar, work):
     w = check_positive("work", work, "J/m^2")
     return out(-3 * np.cbrt(np.pi * E * R * w ** 2 / 16)), out(np.cbrt(2 * R ** 2 * w /
                                                                         (np.pi * E)))
+
+
+@document(R=_RADIUS, E=_ESTAR, W=_WORK)
+def jkr_cylinder_zero_load_half_width(radius, estar, work):
+    r"""Contact half-width of the 2D JKR cylinder at zero load.
+
+    .. math:: b_0 = \left(\frac{32 R^2 w}{\pi E^*}\right)^{1/3}
+
+    the root b > 0 of :func:`jkr_cylinder_force_per_length` = 0,
+    :math:`\pi E^* b^2/(4R) = \sqrt{2\pi E^* w b}`.
+
+    Parameters
+    ----------
+    radius : float or array_like
+        Cylinder radius R [m].
+    estar : float or array_like
+        Effective modulus E* [Pa].
+    work : float or array_like
+        Work of adhesion w [J/m^2].
+
+    Returns
+    -------
+    float or ndarray
+        b_0 [m] (0 without adhesion, w = 0).
+
+    Notes
+    -----
+    Valid for %(R)s, %(E)s, %(W)s; plane strain, b_0 << R. It is 16^(1/3) = 2.52 times
+    the half-width at pull-off, b_c (:func:`jkr_cylinder_pull_off`).
+
+    Examples
+    --------
+    >>> f"{jkr_cylinder_zero_load_half_width(1e-3, 1e6, 0.05) * 1e6:.2f} um"
+    '79.86 um'
+
+    References
+    ----------
+    .. [1] M. Barquins, J. Adhesion 26 (1988) 1-12.
+    .. [2] M. K. Chaudhury et al., J. Appl. Phys. 80 (1996) 30-37.
+    """
+    R = _RADIUS.check(radius)
+    E = _ESTAR.check(estar)
+    w = _WORK.check(work)
+    return out(np.cbrt(32 * R ** 2 * w / (np.pi * E)))
 
 
 # --------------------------------------------------------------------------------------
@@ -967,8 +1013,3 @@ class CylinderAdhesion:
         z = self.mdr.zero_load()
         return {"half_width_2d": float(np.cbrt(32 * R ** 2 * self.work / (np.pi * E))),
                 "mdr_half_length": z["contact_radius"], "mdr_depth": z["depth"]}
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

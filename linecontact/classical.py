@@ -23,10 +23,11 @@ import math
 
 import numpy as np
 
+from ._numerics import out
+from .checks import POISSON_RATIO, Interval, check_interval, check_positive, document
+from .errors import OutOfRangeError
 from .lipopov import (lipopov_depth, lipopov_force, lipopov_profile,
                       lipopov_stiffness, lipopov_stiffness_at_force)
-from .validity import (POISSON_RATIO, Interval, OutOfRangeError, check_interval, check_positive,
-                       document, out)
 
 __all__ = [
     "effective_modulus",
@@ -124,7 +125,7 @@ def effective_modulus(modulus1, poisson1, modulus2=np.inf, poisson2=None):
     >>> effective_modulus(210e9, 0.3, 70e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: poisson2 = 'missing' is outside ...
+    linecontact.errors.OutOfRangeError: poisson2 = 'missing' is outside ...
 
     References
     ----------
@@ -1031,8 +1032,3 @@ def iso16281_force(depth, length, estar):
        reference rating life for universally loaded rolling bearings.
     """
     return _steel_force(depth, length, estar, ISO16281_C)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

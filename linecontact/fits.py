@@ -41,8 +41,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .validity import CombinationError, check_interval, check_positive, out
-from .validity import POISSON_RATIO
+from ._numerics import out
+from .checks import POISSON_RATIO, check_interval, check_positive
+from .errors import CombinationError
 
 __all__ = [
     "STEEL_EXPANSION",
@@ -392,8 +393,3 @@ def operating_clearance(clearance, inner_expansion=0.0, outer_contraction=0.0,
     dt = check_interval("thermal_change", thermal_change, -np.inf, np.inf, low_open=True,
                         high_open=True, unit="m")
     return out(Pd - di - do + dt)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -48,9 +48,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._numerics import out
+from .checks import check_interval, check_positive
+from .errors import CombinationError, UnknownNameError
 from .hertz import hertz_contact
-from .validity import (CombinationError, UnknownNameError, check_interval,
-                       check_positive, out)
 
 __all__ = ["SHARE_RULES", "axial_load_shares", "FlangeContacts", "flange_contacts"]
 
@@ -329,8 +330,3 @@ def flange_contacts(axial_force, roller_diameter, roller_length, pitch_diameter,
         inner_rim_margin=r(np.where(on, hi - height - axi, hi - height)),
         outer_rim_margin=r(np.where(on, ho - height - axo, ho - height)),
         tilting_moment=out(Fa * math.tan(th) * (2.0 * Re - l)))
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

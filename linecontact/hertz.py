@@ -43,8 +43,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validity import (POSITIVE_FORCE, POSITIVE_LENGTH, POSITIVE_MODULUS, Interval,
-                       check_positive, document, out)
+from ._numerics import out
+from .checks import (POSITIVE_FORCE, POSITIVE_LENGTH, POSITIVE_MODULUS, Interval,
+                     check_positive, document)
 
 __all__ = ["HertzContact", "hertz_eccentricity", "hertz_contact",
            "hertz_contact_at_approach"]
@@ -330,8 +331,3 @@ def hertz_contact_at_approach(approach, radius_x, radius_y, estar):
     unit = _contact(np.asarray(1.0), rx, ry, E)
     F = (d / unit.approach) ** 1.5
     return _contact(F, rx, ry, E)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

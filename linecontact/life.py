@@ -38,7 +38,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validity import check_interval, check_positive, out
+from ._numerics import out
+from .checks import check_interval, check_positive
 
 __all__ = [
     "A_ISO_CAP",
@@ -456,8 +457,3 @@ def modified_reference_rating_life(rating, pitch_diameter, roller_diameter,
         a = float(life_modification_factor(kappa, contamination, fatigue_load_limit, P))
     return ReferenceLife(basic=L10r, reference_load=P, life_modification=a,
                          reliability_factor=a1, life=a1 * a * L10r)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

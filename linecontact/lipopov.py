@@ -33,7 +33,7 @@ Derivation of F (checked numerically in tests/test_lipopov.py): substituting
 = 2\alpha\beta E^* L^3 e^{-u}/R`.
 
 The profile is bounded, :math:`g < \beta L^2/R`, so a depth at or beyond that bound has
-no solution in this form and is refused (:class:`~linecontact.validity.OutOfRangeError`).
+no solution in this form and is refused (:class:`~linecontact.errors.OutOfRangeError`).
 
 Coefficient sets (chosen by name, never switched silently)
 ----------------------------------------------------------
@@ -67,11 +67,10 @@ import os
 from dataclasses import dataclass, field
 
 import numpy as np
-from ._numerics import NotAKnotSpline, blockwise, log1p_excess_root
+from ._numerics import NotAKnotSpline, blockwise, log1p_excess_root, out
+from .checks import Interval, check_interval, check_positive, check_scaled, document
+from .errors import OutOfRangeError, UnknownNameError
 from .tables import available_tables, read_table, table_path
-from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
-                       check_scaled,
-                       check_positive, document, out)
 
 __all__ = [
     "ALPHA_EQ11",
@@ -111,7 +110,7 @@ class CoefficientSet:
     """A named source of alpha(L/R), beta(L/R) for Eq. 9, with its validity range.
 
     Call it with L/R to get ``(alpha, beta)``; L/R outside :attr:`valid` raises
-    :class:`~linecontact.validity.OutOfRangeError`.
+    :class:`~linecontact.errors.OutOfRangeError`.
 
     Parameters
     ----------
@@ -309,7 +308,7 @@ def lipopov_coefficients(length_over_radius, coefficients="published", *,
     >>> lipopov_coefficients(2.0, "eq11")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
+    linecontact.errors.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
     >>> lipopov_coefficients(2.0, "eq11", extrapolate=True)
     (1.5707963267948966, 0.4573)
     """
@@ -1133,8 +1132,3 @@ def fit_dimensionless_profile(x_tilde, g_tilde, start=(ALPHA_EQ11, 0.5)):
 
 __all__ += ["dimensionless_contact_radius", "dimensionless_force", "dimensionless_depth",
             "dimensionless_stiffness", "effective_beta", "fit_dimensionless_profile"]
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

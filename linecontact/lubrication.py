@@ -51,7 +51,9 @@ import math
 
 import numpy as np
 
-from .validity import (UnknownNameError, check_interval, check_positive, out)
+from ._numerics import out
+from .checks import check_interval, check_positive
+from .errors import UnknownNameError
 
 __all__ = [
     "DEFAULT_FILM_FORMULA",
@@ -406,7 +408,7 @@ def film_ratio(film_thickness, roughness_1, roughness_2):
     with np.errstate(divide="ignore", invalid="ignore"):
         lam = np.where(s > 0.0, h / np.where(s > 0.0, s, 1.0), np.inf)
     if np.any((s == 0.0) & (h == 0.0)):
-        from .validity import CombinationError
+        from .errors import CombinationError
         raise CombinationError({"film_thickness": 0.0, "roughness_1": 0.0,
                                 "roughness_2": 0.0},
                                "zero film between ideally smooth surfaces: Lambda is "
@@ -633,8 +635,3 @@ def viscosity_ratio(viscosity, speed, pitch_diameter):
     """
     nu = check_positive("viscosity", viscosity, "m^2/s")
     return out(nu / np.asarray(rated_viscosity(speed, pitch_diameter)))
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -30,7 +30,9 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from .validity import Interval, OutOfRangeError, document, out
+from ._numerics import out
+from .checks import Interval, document
+from .errors import OutOfRangeError
 
 __all__ = [
     "mdr_contact_radius",
@@ -112,7 +114,7 @@ def mdr_contact_radius(depth, profile, *, x_scale=1.0):
     -----
     Valid for %(D)s and %(X)s; a bounded profile also needs d < sup g: the search
     doubles x from `x_scale` up to 200 times, and a depth still not reached (or a
-    non-finite g) raises :class:`~linecontact.validity.OutOfRangeError` instead of
+    non-finite g) raises :class:`~linecontact.errors.OutOfRangeError` instead of
     returning a clamped or NaN value. The root is found by Brent's method to a relative
     tolerance of about 1e-14 in a. For a non-monotone g the root is one of several and
     the MDR itself does not apply.
@@ -392,8 +394,3 @@ def mdr_profile_from_force(depth, force, estar):
     x = k / (2 * E)
     _check_monotone_x(x, d, "force")
     return x, d.copy()
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

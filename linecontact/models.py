@@ -9,7 +9,7 @@ A model is built for one cylinder (radius R, length L, effective modulus E*), wh
 checked at construction (positive, finite). Whether the model *applies* to that
 cylinder (L/R inside its coefficient table, E* of steel for Palmgren) is checked on
 every evaluation, and :meth:`ContactModel.check_applicable` checks it up front; both
-raise :class:`~linecontact.validity.OutOfRangeError`. So the full row set can be built
+raise :class:`~linecontact.errors.OutOfRangeError`. So the full row set can be built
 for any cylinder and each row reports its own range.
 
 Keys
@@ -41,28 +41,29 @@ from __future__ import annotations
 
 import abc
 import math
-import os
 import sys
 from importlib import import_module
 
 import numpy as np
 
 from . import classical as _c
-from ._numerics import blockwise
+from ._numerics import blockwise, out
+from .accuracy import MODEL_ACCURACY, model_accuracy
 from .lipopov import (coefficient_set, lipopov_contact_radius, lipopov_depth,
                       lipopov_force, lipopov_profile, lipopov_stiffness,
                       lipopov_stiffness_at_force)
-from .tables import available_tables, read_table, table_path
+from .tables import available_tables
 from .universal import DEPTH_OVER_RADIUS, TABLE as _UNIVERSAL_TABLE, universal_curve
-from .validity import (OutOfRangeError, UnknownKeywordError, UnknownNameError,
-                       check_flag, check_interval, check_positive, check_scaled, document,
-                       out)
+from .errors import OutOfRangeError, UnknownKeywordError, UnknownNameError
+from .checks import check_flag, check_interval, check_positive, check_scaled, document
 
 __all__ = [
     "ContactModel",
     "scales_are_normal",
     "MODELS",
     "DEFAULT_MODEL",
+    "SLICE_MODELS",
+    "DEFAULT_SLICE_MODEL",
     "register",
     "get_model",
     "available_models",
@@ -89,6 +90,11 @@ DEFINED_IN = {
 
 #: Model used by the top-level one-liners and the CLI unless told otherwise.
 DEFAULT_MODEL = "universal"
+#: Models that solve a profiled, tilted roller by slices; each one's solver of a
+#: contact comes from :func:`linecontact.roller.solvers.slice_solver`.
+SLICE_MODELS = ("profiled-roller", "iso16281-slicing")
+#: Model used for a profiled or tilted roller unless told otherwise (coupled slices).
+DEFAULT_SLICE_MODEL = "profiled-roller"
 
 
 def register(cls):
@@ -302,12 +308,12 @@ class ContactModel(abc.ABC):
         """Raise :class:`OutOfRangeError` if the model does not apply to this cylinder."""
 
     def check_starts_at_zero(self):
-        """Raise :class:`~linecontact.validity.CombinationError` unless F(d) starts at
+        """Raise :class:`~linecontact.errors.CombinationError` unless F(d) starts at
         d = 0 (:attr:`first_contact_depth`), as the tangential and viscoelastic laws
         built on F(d) take it."""
         d0 = self.first_contact_depth
         if d0 != 0.0:
-            from .validity import CombinationError
+            from .errors import CombinationError
 
             raise CombinationError({"model": self.label, "first_contact_depth": d0},
                                    "the law's force starts at a nonzero depth (a tilted "
@@ -509,7 +515,7 @@ class LiPopovModel(ContactModel):
     >>> LiPopovModel(5e-3, 10e-3, 115.38e9, coefficients="eq11").depth(1e3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
+    linecontact.errors.OutOfRangeError: L/R = 2 is outside the valid range [5, inf); ...
     >>> m = LiPopovModel(5e-3, 10e-3, 115.38e9, coefficients="eq11", extrapolate=True)
     >>> m.label, f"{m.depth(1e3) * 1e6:.3f} um"
     ('Li-Popov (Eq. 11, extrapolated to L/R = 2)', '3.147 um')
@@ -918,7 +924,7 @@ class ISO16281Model(_SteelModel):
 
 
 #: The smallest normal double: a dimensionless depth or force below it is refused by
-#: the universal curve (a subnormal has lost precision, validity.check_interval).
+#: the universal curve (a subnormal has lost precision, checks.check_interval).
 _TINY = float(np.finfo(float).tiny)
 
 
@@ -1182,27 +1188,14 @@ class UniversalModel(ContactModel):
 
 
 # --------------------------------------------------------------------------------------
-ACCURACY_TABLE = "model_accuracy"
+ACCURACY_TABLE = MODEL_ACCURACY
 _NOT_APPLICABLE, _NO_ANSWER = 98.0, 99.0   # flags of tables/model_accuracy.csv
-_ACCURACY_CACHE: dict = {}
-
-
-def _accuracy_table():
-    """tables/model_accuracy.csv, read once per file version; None if absent."""
-    try:
-        path = table_path(ACCURACY_TABLE)
-    except FileNotFoundError:
-        return None
-    key = (str(path), os.stat(path).st_mtime_ns)
-    if key not in _ACCURACY_CACHE:
-        _ACCURACY_CACHE[key] = read_table(ACCURACY_TABLE)
-    return _ACCURACY_CACHE[key]
 
 
 def _measured_error(tag, length_over_radius):
     """Text: range of the measured F and k errors of model `tag` at the study's L/R
     rows bracketing `length_over_radius` (see :attr:`ContactModel.measured_error`)."""
-    table = _accuracy_table()
+    table = model_accuracy()
     if table is None:
         return (f"not measured: tables/{ACCURACY_TABLE}.csv is missing "
                 "(python -m tools.build_tables accuracy)")
@@ -1289,7 +1282,7 @@ def get_model(key, radius, length, estar, **options):
     >>> get_model("hertz", 5e-3, 10e-3, 115.38e9)
     Traceback (most recent call last):
     ...
-    linecontact.validity.UnknownNameError: model = 'hertz' is not a known name; valid: ...
+    linecontact.errors.UnknownNameError: model = 'hertz' is not a known name; valid: ...
     """
     if key not in MODELS and key in DEFINED_IN:
         import_module(DEFINED_IN[key])
@@ -1308,7 +1301,7 @@ def standard_models(radius, length, estar):
 
     Models are built even if they do not apply to this cylinder (L/R out of a table's
     range, non-steel E*); their evaluations then raise
-    :class:`~linecontact.validity.OutOfRangeError`, which the caller reports per row.
+    :class:`~linecontact.errors.OutOfRangeError`, which the caller reports per row.
     A missing universal table is an error (FileNotFoundError naming the file), never a
     silently shorter row set.
 
@@ -1348,8 +1341,3 @@ def standard_models(radius, length, estar):
     rows.append(PalmgrenModel(R, L, E))
     rows.append(ISO16281Model(R, L, E))
     return rows
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

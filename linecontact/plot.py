@@ -51,7 +51,7 @@ from pathlib import Path
 import numpy as np
 
 from ._units import _PREFIXES
-from .validity import OutOfRangeError, UnknownNameError
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = ["force_depth", "line_load", "profiled_roller", "pressure_field",
            "pressure_map", "adhesion", "creep", "hysteresis", "stresses", "bearing",
@@ -305,7 +305,7 @@ def save(fig, path, *, dpi=DPI):
     >>> save(None, "figure.jpg")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
+    linecontact.errors.OutOfRangeError: plot file = 'figure.jpg' is outside the valid range a name ending in .png, .svg or .pdf
     """
     path = Path(path)
     ext = path.suffix.lower().lstrip(".")
@@ -979,9 +979,12 @@ def creep(result, *, given=None, fig=None):
 # tangential: partial slip and the fretting loop
 # --------------------------------------------------------------------------------------
 def _tangential_name(c):
-    """'across (BEM)', 'along (BEM)' or 'MDR (G*/E*)'."""
-    if getattr(c, "method", "mdr") == "bem":
+    """'across (BEM)', 'along (BEM)', 'x (Mindlin)', 'y (Mindlin)' or 'MDR (G*/E*)'."""
+    method = getattr(c, "method", "mdr")
+    if method == "bem":
         return f"{c.direction} (BEM)"
+    if method == "mindlin":
+        return f"{c.direction} (Mindlin)"
     return "MDR (G*/E*)"
 
 
@@ -999,7 +1002,9 @@ def hysteresis(contact, amplitude, *, n=101, beyond="raise", points=None, fig=No
     Parameters
     ----------
     contact : TangentialContact or sequence of TangentialContact
-        The contact(s) at their normal load, with the friction coefficient.
+        The contact(s) at their normal load, with the friction coefficient (also
+        :class:`linecontact.mindlin.EllipticalTangentialContact`, a crowned roller's
+        ellipse by direction).
     amplitude : float
         Shift amplitude u0, 0 < u0 <= u* of every contact unless ``beyond`` is
         ``"saturate"`` [m].
@@ -1192,7 +1197,10 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
     mk, = ax.plot([w["y"] * sl], [w["z"] * sl], ls="none", marker="X", ms=10,
                   color="C0", mec="w", label="maximum", zorder=6)
     mk.scale = (sl, sl)
-    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})",
+    held = measure in getattr(result, "withheld", {})    # edge loaded: not converged
+    ax.annotate(f"max {_quantity(w['value'], 'Pa')}\n({result.method})" if not held else
+                f"max {_quantity(w['value'], 'Pa')} at this slice width\n(edge loaded: "
+                "not converged, grows as the slices are refined)",
                 (w["y"] * sl, w["z"] * sl), xytext=(8, 8), textcoords="offset points",
                 fontsize=7, color="C0")
     ax.set_ylim(z[-1] * sl, 0.0)                                   # depth downwards
@@ -1325,8 +1333,3 @@ def bearing(solution, *, fig=None):
         title += f"; {' and '.join(zero)} zero"
     axes[0].set_title(title, fontsize=8)
     return fig
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -48,8 +48,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import (Interval, OutOfRangeError, UnknownNameError, check_interval,
-                       check_positive)
+from .checks import Interval, check_interval, check_positive
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = [
     "Profile",
@@ -658,7 +658,7 @@ class TabulatedProfile(Profile):
     >>> p.drop(6e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: x = 0.006 m is outside the valid range [-0.005, 0.005] m; ...
+    linecontact.errors.OutOfRangeError: x = 0.006 m is outside the valid range [-0.005, 0.005] m; ...
 
     References
     ----------
@@ -941,7 +941,7 @@ def parse_profile(spec, *, length, radius=None, estar=None, design_force=None,
     >>> parse_profile("cone", length=10e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.UnknownNameError: profile = 'cone' is not a known name; valid: 'straight', 'end-relief', 'circular', 'iso16281', 'lundberg', 'johns-gohar', 'file:PATH.csv'
+    linecontact.errors.UnknownNameError: profile = 'cone' is not a known name; valid: 'straight', 'end-relief', 'circular', 'iso16281', 'lundberg', 'johns-gohar', 'file:PATH.csv'
 
     References
     ----------
@@ -1147,8 +1147,3 @@ def is_free_tilt(tilt):
                                hint="0 for an aligned roller, 'free' for moment "
                                     "equilibrium")
     return False
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -63,14 +63,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .models import DEFAULT_MODEL, DEFAULT_SLICE_MODEL, SLICE_MODELS
 from .profiles import TILT_RANGE, is_free_tilt
-from .validity import (CombinationError, Interval, OutOfRangeError, UnknownNameError,
-                       check_positive, out)
+from .errors import CombinationError, OutOfRangeError, UnknownNameError
+from ._numerics import out
+from .checks import Interval, check_positive
 
 __all__ = [
     "Raceways",
     "RacewaySolution",
     "effective_radii",
+    "effective_radius",
     "check_fit",
     "roller_between_raceways",
     "FIT_TOLERANCE",
@@ -81,12 +84,8 @@ __all__ = [
 FIT_TOLERANCE = 0.01
 #: Fit tolerances accepted [-].
 FIT_TOLERANCE_RANGE = Interval("fit_tolerance", 0.0, 0.5, low_open=False, high_open=True)
-#: Contact models that solve a profiled, tilted roller by slices (key -> method).
-SLICE_MODELS = ("profiled-roller", "iso16281-slicing")
 #: The law used for a straight, aligned roller when no model is named.
-DEFAULT_STRAIGHT_MODEL = "universal"
-#: The law used for a profiled or tilted roller when no model is named.
-DEFAULT_SLICE_MODEL = "profiled-roller"
+DEFAULT_STRAIGHT_MODEL = DEFAULT_MODEL
 
 
 def _one_of(name, value, given):
@@ -173,6 +172,43 @@ class Raceways:
         return check_fit(roller_radius, self.inner, self.outer, self.fit_tolerance)
 
 
+def effective_radius(roller_radius, counter_radius):
+    r"""Effective radius of two parallel cylinders in line contact (Hertz's reduction).
+
+    .. math:: \frac{1}{R} = \frac{1}{R_1} + \frac{1}{R_2}
+
+    with R_2 > 0 for a convex counter-body (an inner raceway), R_2 < 0 for a concave one
+    (an outer raceway, |R_2| > R_1) and R_2 = inf for a flat.
+
+    Parameters
+    ----------
+    roller_radius : float or array_like
+        Roller radius R1 [m].
+    counter_radius : float or array_like
+        Signed radius R2 of the counter-body [m] (negative: concave).
+
+    Returns
+    -------
+    float or ndarray
+        R [m], elementwise (nan where an input is nan; the inputs are not checked:
+        :func:`effective_radii` is the checked door).
+
+    Notes
+    -----
+    Valid for parallel axes and a contact half-width b << R (Hertz), 0 < R1 < |R2|.
+
+    Examples
+    --------
+    >>> f"{effective_radius(5e-3, 20e-3) * 1e3:.4f} mm"
+    '4.0000 mm'
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics (1985), section 4.2.
+    """
+    return 1 / (1 / roller_radius + 1 / counter_radius)
+
+
 def effective_radii(roller_radius, inner_radius, outer_radius):
     r"""Effective radii of a roller's contacts with an inner and an outer raceway.
 
@@ -217,7 +253,7 @@ def effective_radii(roller_radius, inner_radius, outer_radius):
              "outer_radius": float(np.atleast_1d(Ro)[i] if np.ndim(Ro) else Ro)},
             "the roller does not fit inside the outer raceway (Ro must exceed R1)",
             unit={"roller_radius": "m", "outer_radius": "m"})
-    return out(1.0 / (1.0 / R1 + 1.0 / Ri)), out(1.0 / (1.0 / R1 - 1.0 / Ro))
+    return out(effective_radius(R1, Ri)), out(effective_radius(R1, -Ro))
 
 
 def check_fit(roller_radius, inner_radius, outer_radius, tolerance=FIT_TOLERANCE):
@@ -260,7 +296,7 @@ def check_fit(roller_radius, inner_radius, outer_radius, tolerance=FIT_TOLERANCE
     >>> check_fit(5e-3, 40e-3, 60e-3)
     Traceback (most recent call last):
     ...
-    linecontact.validity.CombinationError: roller_radius = 0.005 m, inner_radius = 0.04 m, outer_radius = 0.06 m: the raceways do not fit the roller: Ro - Ri = 0.02 m, not the roller diameter 2 R1 = 0.01 m within 1 % (the difference 0.01 m exceeds 0.0001 m); Ro - Ri = 4 R1: diameters given as radii?
+    linecontact.errors.CombinationError: roller_radius = 0.005 m, inner_radius = 0.04 m, outer_radius = 0.06 m: the raceways do not fit the roller: Ro - Ri = 0.02 m, not the roller diameter 2 R1 = 0.01 m within 1 % (the difference 0.01 m exceeds 0.0001 m); Ro - Ri = 4 R1: diameters given as radii?
 
     References
     ----------
@@ -563,27 +599,16 @@ def _force_at_deflection(mi, mo, delta):
     return res.reshape(delta.shape)
 
 
-def _slice_solver(model, R_eff, L, E, prof, n_slices):
-    """force(F, tilt) -> RollerSolution of one contact, for a slice model."""
-    from .roller import ProfiledRoller, iso_slicing
-    from .roller.slices import DEFAULT_N_SLICES
-
-    if model == "profiled-roller":
-        roller = ProfiledRoller(R_eff, L, E, prof, n_slices=DEFAULT_N_SLICES
-                                if n_slices is None else n_slices)
-        return roller.at_force
-    n = 30 if n_slices is None else n_slices
-    return lambda F, tilt: iso_slicing(R_eff, L, E, prof, force=F, tilt=tilt, n_slices=n)
-
-
 def _slice_solution(model, R_in, R_out, L, E, prof, force, deflection, th, psi,
                     n_slices, clearance):
     if np.ndim(force) or np.ndim(deflection):
         raise CombinationError({"model": model, "force": "an array"},
                                "a slice model solves one load at a time; loop over "
                                "the loads")
-    inner = _slice_solver(model, R_in, L, E, prof, n_slices)
-    outer = _slice_solver(model, R_out, L, E, prof, n_slices)
+    from .roller.solvers import slice_solver
+
+    inner = slice_solver(model, R_in, L, E, prof, n_slices=n_slices).at_force
+    outer = slice_solver(model, R_out, L, E, prof, n_slices=n_slices).at_force
     free = th is None
 
     def at(F, t):
@@ -657,8 +682,3 @@ def _series_stiffness(si, so, free):
                   [Ki[1, 0], -Ko[1, 0], Ki[1, 1] + Ko[1, 1]]])
     dd_in, dd_out, _ = np.linalg.solve(A, [1.0, 1.0, 0.0])
     return 1.0 / (dd_in + dd_out)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

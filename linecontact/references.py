@@ -47,12 +47,7 @@ def cite(key):
     'Q. Li, V. L. Popov, "Normal line contact'
     """
     if key not in CITATIONS:
-        from .validity import UnknownNameError
+        from .errors import UnknownNameError
 
         raise UnknownNameError("key", key, sorted(CITATIONS))
     return CITATIONS[key]
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validity import CombinationError, check_interval
+from .checks import check_interval
+from .errors import CombinationError
 
 __all__ = ["SHARE_TOLERANCE", "DutyCycle", "revolution_shares", "duty_cycle_life"]
 
@@ -200,8 +201,3 @@ def duty_cycle_life(lives, shares, speeds=None):
         seconds = life * 1e6 * 2.0 * math.pi / mean
     return DutyCycle(life=life, revolution_shares=u, damage_shares=damage,
                      seconds=seconds)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

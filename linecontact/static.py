@@ -31,7 +31,9 @@ import math
 
 import numpy as np
 
-from .validity import OutOfRangeError, check_interval, check_positive, out
+from ._numerics import out
+from .checks import check_interval, check_positive
+from .errors import OutOfRangeError
 
 __all__ = [
     "PERMISSIBLE_PRESSURE",
@@ -231,8 +233,3 @@ def pressure_safety_factor(peak_pressure, permissible_pressure=PERMISSIBLE_PRESS
     pp = check_positive("permissible_pressure", permissible_pressure, "Pa")
     with np.errstate(divide="ignore"):
         return out(np.where(p > 0.0, (pp / np.where(p > 0.0, p, 1.0)) ** 2, np.inf))
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -295,8 +295,3 @@ def write_table(path, meta, columns):
     for row in zip(*arrays):
         out.write(",".join(repr(float(v)) for v in row) + "\n")
     Path(path).write_text(out.getvalue(), encoding="utf-8")
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -235,8 +235,3 @@ def html_table(result, max_rows=50):
     if extra:
         text += "<ul>" + "".join(f"<li>{t}</li>" for t in extra) + "</ul>"
     return text
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -30,7 +30,7 @@ Outside the table:
   :func:`~linecontact.lipopov.dimensionless_force` and its kin); the table header
   states the error this continuation makes per decade;
 - beyond its largest depth, every function raises
-  :class:`~linecontact.validity.OutOfRangeError`.
+  :class:`~linecontact.errors.OutOfRangeError`.
 
 The model built on the curve, registered under ``"universal"`` like every other model,
 is :class:`linecontact.models.UniversalModel`.
@@ -47,10 +47,10 @@ import numpy as np
 
 from . import tables as _tables
 from ._numerics import NotAKnotSpline, blockwise
+from .checks import Interval, check_interval
 from .lipopov import (dimensionless_depth, dimensionless_force, dimensionless_profile,
                       dimensionless_stiffness)
 from .tables import read_table, table_path
-from .validity import Interval, check_interval
 
 __all__ = ["DEPTH_OVER_RADIUS", "TABLE", "UniversalCurve", "universal_curve"]
 
@@ -72,7 +72,7 @@ class UniversalCurve:
     Notes
     -----
     Valid for 0 < d~ <= d_max, the table's largest dimensionless depth (30 for the
-    shipped table); a larger d~ raises :class:`~linecontact.validity.OutOfRangeError`.
+    shipped table); a larger d~ raises :class:`~linecontact.errors.OutOfRangeError`.
     Between the table's smallest depth d_min and d_max, Psi is the cubic spline of
     ln Psi against ln d~; below d_min, Eq. 7 with alpha = pi/2 and beta = ``beta_small``
     continues it (see the module docstring).
@@ -209,7 +209,7 @@ class UniversalCurve:
     def depth_of_x(self, x_tilde):
         r"""MDR profile :math:`\Phi(\tilde x) = \tilde d` with :math:`\Psi'(\tilde d)/2 = \tilde x` [-]."""
         # 1e-12 rounding allowance at the closed end (x~ computed as k/(2 E* L) from
-        # physical values), as validity.Interval's rtol
+        # physical values), as checks.Interval's rtol
         x = check_interval("x_tilde", x_tilde, 0.0, self.x_max * (1 + 1e-12),
                            hint="beyond the MDR contact radius at the largest depth of "
                                 "the universal table")
@@ -279,9 +279,3 @@ def universal_curve(name=TABLE):
     if key not in _CACHE:
         _CACHE[key] = UniversalCurve(read_table(name))
     return _CACHE[key]
-
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -57,8 +57,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .validity import (OutOfRangeError, UnknownNameError, check_interval, check_positive,
-                       out)
+from ._numerics import out
+from .checks import check_interval, check_positive
+from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = [
     "PronySeries",
@@ -883,8 +884,8 @@ def effective_relaxation(body, poisson, modulus2=np.inf, poisson2=None):
     E. H. Lee, J. R. M. Radok, J. Appl. Mech. 27 (1960) 438-444; K. L. Johnson, Contact
     Mechanics (1985), section 6.5.
     """
+    from .checks import POISSON_RATIO
     from .classical import MODULUS_OR_RIGID
-    from .validity import POISSON_RATIO
 
     if not isinstance(body, PronySeries):
         raise OutOfRangeError("body", repr(body), "a linecontact.viscoelastic.PronySeries")
@@ -898,8 +899,3 @@ def effective_relaxation(body, poisson, modulus2=np.inf, poisson2=None):
                                   "with a finite modulus2)")
         b = (1.0 - POISSON_RATIO.check(poisson2, name="poisson2").item() ** 2) / E2
     return body.scaled(1.0 / (1.0 - nu1 ** 2)).in_series(b)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -18,8 +18,8 @@ import pytest
 from linecontact.adhesion import (AdhesiveContact, CylinderAdhesion,
                                   jkr_cylinder_force_per_length, jkr_cylinder_pull_off,
                                   tabor_note, tabor_parameter)
+from linecontact.errors import OutOfRangeError
 from linecontact.models import get_model
-from linecontact.validity import OutOfRangeError
 
 R, E, W = 10e-3, 1.5e6, 0.04
 
@@ -232,8 +232,8 @@ def test_unknown_control_or_method_is_an_unknown_name():
     """A control or method that is not one of the names is an UnknownNameError listing
     the names (a name has no range), the project's rule for every named option."""
     from linecontact.adhesion import CylinderAdhesion
+    from linecontact.errors import UnknownNameError
     from linecontact.models import get_model
-    from linecontact.validity import UnknownNameError
 
     c = CylinderAdhesion(get_model("universal", 1e-3, 2e-3, 6.7e4), 0.05)
     with pytest.raises(UnknownNameError, match="'bem', 'mdr'"):
@@ -242,3 +242,19 @@ def test_unknown_control_or_method_is_an_unknown_name():
         c.pull_off("forse")
     with pytest.raises(UnknownNameError, match="'force', 'depth'"):
         c.mdr.pull_off("forse")
+
+
+@pytest.mark.parametrize("R,E,w", [(1e-3, 1e6, 0.05), (5e-3, 2e9, 0.1), (0.1, 1e5, 1.0)])
+def test_2d_jkr_zero_load_half_width_is_the_root_of_the_force(R, E, w):
+    """b_0 = (32 R^2 w/(pi E*))^(1/3) is where the 2D JKR force per length vanishes,
+    pi E* b^2/(4R) = sqrt(2 pi E* w b) (its two terms equal to 1e-14, round-off of a
+    cube root), and 16^(1/3) times the pull-off half-width b_c (Barquins 1988)."""
+    from linecontact.adhesion import (jkr_cylinder_pull_off,
+                                      jkr_cylinder_zero_load_half_width)
+
+    b0 = jkr_cylinder_zero_load_half_width(R, E, w)
+    assert math.pi * E * b0 ** 2 / (4 * R) == pytest.approx(
+        math.sqrt(2 * math.pi * E * w * b0), rel=1e-14)
+    assert b0 == pytest.approx(16 ** (1 / 3) * jkr_cylinder_pull_off(R, E, w)[1],
+                               rel=1e-14)
+    assert jkr_cylinder_zero_load_half_width(R, E, 0.0) == 0.0

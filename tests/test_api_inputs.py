@@ -16,8 +16,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from linecontact.errors import UnknownNameError
 from linecontact.models import MODELS, available_models, get_model
-from linecontact.validity import UnknownNameError
 
 names = st.text(alphabet="abcdefghijklmnopqrstuvwxyz_", min_size=1, max_size=12)
 
@@ -125,184 +125,7 @@ def test_profiled_roller_takes_arrays_of_forces_and_depths(method, values):
         assert s.depth == pytest.approx(one.depth, rel=1e-9, abs=0)
 
 
-# ---- every public callable: an unknown keyword is named, with the valid ones ------------
-
-#: The command line's modules are exempt (their API is the command: tests/test_cli.py
-#: and tests/test_calc_inputs.py), as in tests/test_docstrings.py; private modules too.
-_EXEMPT = {"cli", "__main__", "cases", "compute", "render", "batch"}
-
-
-def _public_callables():
-    """(label, callable to call with keywords only, valid keywords) of every function,
-    constructor and public method (plain, static or class method, inherited ones too)
-    named in the ``__all__`` of a public module of linecontact; callables taking
-    ``**kwargs`` check their keywords themselves and are tested apart."""
-    import importlib
-    import pkgutil
-
-    import linecontact
-
-    def keywords(f):
-        ps = inspect.signature(f).parameters
-        if any(p.kind is p.VAR_KEYWORD for p in ps.values()):
-            return None
-        return [n for n, p in ps.items() if n not in ("self", "cls")
-                and p.kind not in (p.POSITIONAL_ONLY, p.VAR_POSITIONAL)]
-
-    seen, out = set(), []
-    mods = ["linecontact"] + [f"linecontact.{i.name}" for i in
-                              pkgutil.iter_modules(linecontact.__path__)
-                              if not i.name.startswith("_") and i.name not in _EXEMPT]
-    for modname in mods:
-        module = importlib.import_module(modname)
-        for name in module.__all__:
-            obj = getattr(module, name)
-            origin = getattr(obj, "__module__", None) or modname
-            if origin in mods and origin != modname:
-                continue  # a re-export, walked where it is defined
-            if inspect.isfunction(obj):
-                targets = [(f"{modname}.{name}", obj, obj)]
-            elif inspect.isclass(obj) and not issubclass(obj, BaseException):
-                home = f"{modname}.{name}"
-                targets = [(f"{home}()", obj, obj.__init__)] \
-                    if obj.__init__ is not object.__init__ else []
-                for attr in dir(obj):
-                    static = inspect.getattr_static(obj, attr)
-                    if attr.startswith("_") or not isinstance(
-                            static, (staticmethod, classmethod)) and not \
-                            inspect.isfunction(static):
-                        continue
-                    member = getattr(obj, attr)
-                    if inspect.isfunction(member) and not isinstance(static,
-                                                                     staticmethod):
-                        member = _unbound(member)
-                    targets.append((f"{home}.{attr}", member,
-                                    getattr(obj, attr)))
-            else:
-                continue
-            for label, call, sig_of in targets:
-                key = (getattr(sig_of, "__qualname__", label), id(call))
-                if key in seen:
-                    continue
-                seen.add(key)
-                valid = keywords(sig_of)
-                if valid is not None:
-                    out.append((label, call, valid))
-    return out
-
-
-def _unbound(method):
-    """A plain method, called with a placeholder for self (binding fails first)."""
-    def call(**kw):
-        return method(None, **kw)
-    call.__wrapped__ = method
-    return call
-
-
-PUBLIC_CALLABLES = _public_callables()
-
-
-def test_the_public_callables_are_found():
-    """The walk finds the callables of the issue (a guard that skipped them all would
-    pass the rule vacuously)."""
-    labels = {label for label, _, _ in PUBLIC_CALLABLES}
-    for want in ("linecontact.classical.johnson_depth",
-                 "linecontact.roller.ProfiledRoller.at_force",
-                 "linecontact.viscoelastic.PronySeries()", "linecontact.contact.Contact.creep"):
-        assert want in labels, want
-    assert len(PUBLIC_CALLABLES) > 150
-
-
-def _assert_names_keyword(label, call, valid, keyword):
-    from linecontact.validity import UnknownKeywordError
-
-    with pytest.raises(TypeError) as info:
-        call(**{keyword: 1.0})
-    err = info.value
-    assert isinstance(err, UnknownKeywordError) and isinstance(err, ValueError), \
-        f"{label}({keyword}=...) raised a bare {type(err).__name__}: {err}"
-    msg = str(err)
-    assert "\n" not in msg and repr(keyword) in msg, msg
-    assert all(repr(n) in msg for n in valid), f"{label}: {msg} does not list {valid}"
-
-
-@pytest.mark.parametrize("label,call,valid", PUBLIC_CALLABLES,
-                         ids=[c[0] for c in PUBLIC_CALLABLES])
-def test_every_public_callable_names_an_unknown_keyword(label, call, valid):
-    """Every public function, constructor and method given a keyword it does not take
-    raises UnknownKeywordError (a TypeError, as Python's own, and a ValueError, as every
-    input error here) on one line naming the keyword and every keyword it takes."""
-    _assert_names_keyword(label, call, valid, "zz_not_a_keyword")
-
-
-_IDENT = st.from_regex(r"[a-z_][a-z0-9_]{0,14}", fullmatch=True)
-
-
-@settings(max_examples=200, deadline=None)
-@given(st.sampled_from(PUBLIC_CALLABLES), _IDENT)
-def test_any_unknown_keyword_is_named(case, keyword):
-    """The rule over random names and callables: any keyword a callable does not take
-    is named with the valid ones; a typo of a valid keyword (a letter dropped) is
-    offered as "did you mean" (a close match; with sigma_x, sigma_y, sigma_z several
-    are equally close, so which is not asserted)."""
-    label, call, valid = case
-    if keyword in valid:
-        return
-    _assert_names_keyword(label, call, valid, keyword)
-    long = [n for n in valid if len(n) >= 5]
-    if long:
-        typo = long[0][:-1]
-        if typo not in valid:
-            with pytest.raises(TypeError, match="did you mean '"):
-                call(**{typo: 1.0})
-
-
-def test_johnson_depth_cc_names_c():
-    """The issue's case for a plain function: classical.johnson_depth(cc=) says 'c'."""
-    from linecontact import classical
-    from linecontact.validity import UnknownKeywordError
-
-    with pytest.raises(UnknownKeywordError, match=r"'cc'.*did you mean 'c'\?"):
-        classical.johnson_depth(1e3, _R, _L, _E, cc=0.72)
-    with pytest.raises(TypeError):   # existing `except TypeError` still catches it
-        classical.johnson_depth(1e3, _R, _L, _E, cc=0.72)
-
-
-def test_the_guard_keeps_signatures_docstrings_and_identity():
-    """The wrapper is invisible otherwise: same signature, docstring, name and module
-    as the wrapped function; it pickles by name (to the same object); and results are
-    bit-identical (it only forwards the call)."""
-    import pickle
-
-    from linecontact import classical
-
-    f = classical.johnson_depth
-    assert inspect.signature(f) == inspect.signature(f.__wrapped__)
-    assert f.__doc__ == f.__wrapped__.__doc__ and f.__name__ == "johnson_depth"
-    assert f.__module__ == "linecontact.classical"
-    assert pickle.loads(pickle.dumps(f)) is f
-    x = np.linspace(10.0, 1e4, 7)
-    assert np.array_equal(f(x, _R, _L, _E), f.__wrapped__(x, _R, _L, _E))
-
-
-def test_a_type_error_inside_the_function_passes_unchanged():
-    """Only the call's own binding is translated: a TypeError raised inside the function
-    (here from an inner call with a wrong keyword) keeps its type and text, so a bug is
-    not dressed up as the user's mistake."""
-    from linecontact.validity import UnknownKeywordError, refuse_unknown_keywords
-
-    def inner(a):
-        return a
-
-    def outer(x):
-        return inner(x, b=1)
-
-    ns = {"__all__": ["outer"], "outer": outer}
-    refuse_unknown_keywords(ns)
-    with pytest.raises(TypeError, match="unexpected keyword argument 'b'") as info:
-        ns["outer"](1)
-    assert not isinstance(info.value, UnknownKeywordError)
-
+# ---- catch-alls: **options are checked by the model they reach ---------------------
 
 @pytest.mark.parametrize("call", [
     lambda: __import__("linecontact").depth(1e3, _R, _L, _E, model="johnson", cc=0.7),
@@ -311,7 +134,7 @@ def test_a_type_error_inside_the_function_passes_unchanged():
 def test_keyword_catch_alls_name_the_keyword_too(call):
     """Functions taking **options (linecontact.depth, get_model) pass them to a model
     constructor, which names the unknown one the same way."""
-    from linecontact.validity import UnknownKeywordError
+    from linecontact.errors import UnknownKeywordError
 
     with pytest.raises(UnknownKeywordError, match="did you mean 'c'"):
         call()
@@ -329,7 +152,7 @@ def test_a_refusal_caused_by_the_geometry_names_l_over_r(key, log_lr, log_d):
     the range that would be covered, not only the depth."""
     import re
 
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     R = 5e-3
     L = R * 10 ** log_lr
@@ -348,9 +171,9 @@ def test_exactly_one_of_depth_and_force_is_a_one_line_range_error():
     """Giving both or neither of depth and force (TangentialContact, a model's evaluate)
     is a bad value of an input, so it is the project's OutOfRangeError naming the
     choice, like roller_contact, not Python's TypeError."""
+    from linecontact.errors import OutOfRangeError
     from linecontact.models import get_model
     from linecontact.tangential import TangentialContact
-    from linecontact.validity import OutOfRangeError
 
     m = get_model("universal", 5e-3, 10e-3, 115e9)
     with pytest.raises(OutOfRangeError, match="exactly one of"):

@@ -14,7 +14,7 @@ from linecontact.bearing import (RadialRollerBearing, basic_rating_life,
                                  dynamic_load_rating, lamina_load_ratings,
                                  load_zone_integral, reference_rating_life)
 from linecontact.calc.cli import main
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 
 N = 10 / 9
 
@@ -228,7 +228,7 @@ def test_cli_table_json_and_errors(capsys, tmp_path):
     assert main(base + ["--clearance", "-5um"]) == 0
     assert "K_rr" in capsys.readouterr().out
     assert main(base + ["--json"]) == 0
-    d = json.loads(capsys.readouterr().out)["solution"]
+    d = json.loads(capsys.readouterr().out)["rows"][0]["solution"]
     assert np.dot(d["roller_loads"], np.cos(d["azimuth"])) == pytest.approx(1e4, rel=1e-9)
     assert main(base + ["--rollers", "2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -239,3 +239,73 @@ def test_cli_table_json_and_errors(capsys, tmp_path):
     assert main(["bearing", str(csv)]) == 2  # the second row fails, the first is written
     out = capsys.readouterr().out.splitlines()
     assert len(out) == 3 and out[1].split(",")[-1] == "" and "pitch_diameter" in out[2]
+
+
+@pytest.mark.parametrize("extra,says", [
+    (["--estar", "115GPa", "--modulus", "210GPa"], "--modulus"),
+    (["--modulus2", "200GPa"], "--modulus"),
+    (["--modulus", "210GPa"], "--poisson"),
+    (["--tilting-moment", "5Nm", "--misalignment", "1mrad"], "--misalignment"),
+    (["--rollers", "14.5"], "--rollers"),
+    (["--n-slices", "40.5"], "--n-slices"),
+    (["--surface-hardness", "700"], "--case-depth"),
+])
+def test_cli_rules_refuse_with_one_line_naming_the_option(capsys, extra, says):
+    """The bearing's input rules (E* or the moduli, a moment or a misalignment, whole
+    counts, the case-check inputs together): one line naming the option, status 2,
+    nothing silently taken (--n-slices 40.5 was truncated to 40 slices before)."""
+    base = {"--rollers": "14", "--pitch-diameter": "70mm", "--roller-diameter": "11mm",
+            "--length": "11mm", "--radial-load": "10kN"}
+    for k, v in zip(extra[::2], extra[1::2]):
+        base[k] = v
+    assert main(["bearing", *[x for kv in base.items() for x in kv]]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and says in err[0], err
+
+
+def test_tabulated_roller_is_roller_between_raceways():
+    """The bearing's tabulated (aligned, sliced) path at its most loaded roller is the
+    per-roller reference, roller_between_raceways at that roller's load between the
+    bearing's raceways, free to tilt, with the same slice model and count (both from
+    linecontact.roller.solvers): the approach within four times the bearing's reported
+    table error law_error (the interpolated delta(Q) between 14 tabulated depths;
+    law_error samples it at one point, and the error at a roller's own load, the outer
+    contact's interpolation onto the inner table included, was measured at up to 1.7
+    times it), a symmetric profile's tilt exactly 0 in both and the moments 0 to
+    round-off (1e-12 Q L)."""
+    from linecontact.raceway import roller_between_raceways
+
+    b = RadialRollerBearing(12, 60e-3, 8e-3, 10e-3, profile="iso16281")
+    s = b.solve(5e3)
+    j = int(np.argmax(s.roller_loads))
+    Q = s.roller_loads[j]
+    r = roller_between_raceways(4e-3, 10e-3, b.estar, b.raceways, force=Q,
+                                profile="iso16281", tilt="free")
+    assert r.force == Q and r.model == s.model
+    assert 0 < s.law_error < 1e-4
+    assert r.deflection == pytest.approx(s.approach[j], rel=4 * s.law_error)
+    assert r.tilt == 0.0 and s.roller_tilts[j] == 0.0
+    assert abs(r.moment_inner) < 1e-12 * Q * 10e-3
+    assert s.roller_moments[j] == 0.0
+
+
+def test_tilted_roller_is_roller_between_raceways():
+    """The bearing's tilted path solves each roller between its rings misaligned by
+    phi_j = theta cos psi_j, free to tilt: at the most loaded roller it is the same
+    solve as roller_between_raceways at that roller's load with the rings misaligned
+    by phi_j (both from the same slice solvers): approach and tilt to 1e-9 relative
+    (the two Newton solves' tolerances: force and moment balance below 1e-10 of F and
+    F L), the roller's moment M_in to 1e-9 of Q L."""
+    from linecontact.raceway import Raceways, roller_between_raceways
+
+    b = RadialRollerBearing(12, 60e-3, 8e-3, 10e-3, 20e-6, profile="circular:Rc=0.3")
+    s = b.solve(8e3, misalignment=5e-4)
+    j = int(np.argmax(s.roller_loads))
+    Q, L = s.roller_loads[j], 10e-3
+    race = Raceways(b.raceways.inner, b.raceways.outer, fit_tolerance=0.4999,
+                    misalignment=s.roller_misalignment[j])
+    r = roller_between_raceways(4e-3, L, b.estar, race, force=Q,
+                                profile="circular:Rc=0.3", tilt="free")
+    assert r.deflection == pytest.approx(s.approach[j], rel=1e-9)
+    assert r.tilt == pytest.approx(s.roller_tilts[j], rel=1e-9)
+    assert r.moment_inner == pytest.approx(s.roller_moments[j], abs=1e-9 * Q * L)

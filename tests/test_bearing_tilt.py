@@ -13,9 +13,9 @@ import pytest
 from linecontact.bearing import RadialRollerBearing
 from linecontact.calc.cli import main
 from linecontact.classical import hertz_half_width
+from linecontact.errors import CombinationError, OutOfRangeError
 from linecontact.raceway import effective_radii
 from linecontact.stresses import strip_maxima
-from linecontact.validity import CombinationError, OutOfRangeError
 
 
 @pytest.fixture(scope="module")
@@ -83,15 +83,19 @@ def test_stiffness_matrix_symmetric(profile, n, tol):
 def test_zero_moment_reduces_to_the_radial_solve(iso_bearing):
     """M = 0 on a symmetric roller: the ring does not tilt, K_rt = K_tr = 0 (to
     round-off, 1e-9 of sqrt(K_rr K_tt)), and delta_r, the loads and K_rr are those of
-    the radial-only solve (its tabulated roller law: within twice its law_error,
-    the table's interpolation error, 1.9e-4 here)."""
+    the radial-only solve (its tabulated roller law: within four times its law_error,
+    the table's interpolation error sampled at one point, the midpoint of the interval
+    holding Q_max (1.5e-5 here); the error at the rollers' own loads, the outer
+    contact's interpolation onto the inner table's loads included, was measured at up
+    to 1.7 times it: 2.6e-5 in the most loaded roller's approach, 3.8e-5 in its load,
+    test_bearing.py::test_tabulated_roller_is_roller_between_raceways)."""
     s0 = iso_bearing.solve(5e3)
     s1 = iso_bearing.solve(5e3, moment=0.0)
     assert abs(s1.tilt) < 1e-12
     K0, K1 = s0.stiffness, s1.stiffness
     assert abs(K1[0, 1]) < 1e-9 * math.sqrt(K1[0, 0] * K1[1, 1])
     assert abs(K0[0, 1]) < 1e-9 * math.sqrt(K0[0, 0] * K0[1, 1])
-    tol = 2 * s0.law_error
+    tol = 4 * s0.law_error
     assert 0 < tol < 1e-3
     assert s1.displacement == pytest.approx(s0.displacement, rel=tol)
     assert np.allclose(s1.roller_loads, s0.roller_loads, rtol=0,
@@ -170,9 +174,10 @@ def test_cli_tilt(capsys):
             "--roller-diameter", "8mm", "--length", "10mm", "--radial-load", "5kN",
             "--profile", "circular:Rc=300mm", "--n-slices", "20"]
     assert main(base + ["--misalignment", "3.4377468arcmin", "--json"]) == 0
-    d = json.loads(capsys.readouterr().out)["solution"]
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    d = row["solution"]
     assert d["tilt"] == pytest.approx(1e-3, rel=1e-6)
-    assert d["summary"]["stiffness_tt"] == d["stiffness"][1][1] > 0
+    assert row["stiffness_tt"] == d["stiffness"][1][1] > 0
     assert main(base + ["--tilting-moment", f"{d['moment']!r}Nm"]) == 0
     out = capsys.readouterr().out
     assert "K_tt" in out and "M_j [N m]" in out

@@ -22,18 +22,19 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from linecontact.calc import render
-from linecontact.calc.cases import BY_NAME
 from linecontact.calc.cli import main
+
+from doors import DOORS, IDS
 
 HEADER = "radius,length,modulus,poisson,load"
 ROW = "5mm,10mm,210GPa,0.3,{load}"
 
 
-def _calc(argv):
-    """(status, stdout, stderr) of ``linecontact calc ARGV`` run in this process."""
+def _calc(argv, command="calc"):
+    """(status, stdout, stderr) of ``linecontact COMMAND ARGV`` run in this process."""
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        status = main(["calc", *argv])
+        status = main([command, *argv])
     return status, out.getvalue(), err.getvalue()
 
 
@@ -44,99 +45,132 @@ def _rows(text):
 @settings(max_examples=25, deadline=None)
 @given(cell=st.sampled_from(["1kN", "1000", "1000 N", "2kN", "2000", "0.5kN", "", "3kN"]),
        option=st.sampled_from(["1kN", "1000", "2kN", "2000N"]))
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
 def test_an_option_and_a_filled_cell_that_differ_are_refused_in_that_row(
-        tmp_path_factory, cell, option):
-    """--load fills an empty cell; a filled cell equal to it in SI (1kN = 1000) is
-    computed; one that differs is an error in its row naming the cell and the option,
-    never silently computed with one of the two."""
+        tmp_path_factory, door, cell, option):
+    """--load (a bearing's --radial-load) fills an empty cell; a filled cell equal to
+    it in SI (1kN = 1000) is computed at that load; one that differs is an error in
+    its row naming the cell and the option, never silently computed with one of the
+    two."""
     path = tmp_path_factory.mktemp("conflict") / "bom.csv"
-    path.write_text(HEADER + "\n" + ROW.format(load=cell) + "\n")
-    status, out, err = _calc([str(path), "--load", option])
+    path.write_text(door.header + "\n" + door.row.format(load=cell) + "\n")
+    status, out, err = _calc([str(path), door.load_option, option], door.name)
     row = _rows(out)[0]
     si = {"1kN": 1e3, "1000": 1e3, "1000 N": 1e3, "2kN": 2e3, "2000": 2e3, "2000N": 2e3,
           "0.5kN": 500.0, "3kN": 3e3}
     if cell == "" or si[cell] == si[option]:
         assert status == 0 and row["error"] == ""
-        assert float(row["force_kN"]) == pytest.approx(si[option] / 1e3, rel=1e-12)
+        # calc prints the force; a bearing's through its 6-digit C_r and L10
+        assert door.load_of(row) == pytest.approx(si[option], rel=1e-12 if
+                                                  door.name == "calc" else 2e-5)
     else:
-        assert status == 2 and row["force_kN"] == ""
-        assert "conflicts with --load" in row["error"] and repr(cell) in row["error"]
+        assert status == 2 and row[door.result] == ""
+        assert f"conflicts with {door.load_option}" in row["error"]
+        assert repr(cell) in row["error"]
 
 
-@pytest.mark.parametrize("name", sorted(BY_NAME))
+_UNIT_CASES = [(d, name) for d in DOORS for name in d.parameters]
+
+
+@pytest.mark.parametrize("door,name", _UNIT_CASES,
+                         ids=[f"{d.name}-{n}" for d, n in _UNIT_CASES])
 @pytest.mark.parametrize("form", ["{} [mm]", "{} (GPa)", "{}_kN", "{} in mm"])
 def test_a_column_named_with_a_unit_is_refused_naming_the_parameter(
-        tmp_path, name, form):
+        tmp_path, door, name, form):
     """Every parameter's name written with a unit in the header ('radius [mm]') is
     not read: the file is refused and the message names the parameter it matches."""
     path = tmp_path / "units.csv"
     path.write_text(f"{form.format(name)},other\n5,x\n")
-    status, out, err = _calc([str(path)])
+    status, out, err = _calc([str(path)], door.name)
     assert status == 2 and f"did you mean {name!r}" in err, err
 
 
-@pytest.mark.parametrize("typo,name", [("lode", "load"), ("raduis", "radius"),
-                                       ("lenght", "length"), ("modulos", "modulus"),
-                                       ("poison", "poisson"), ("dept", "depth")])
-def test_a_misspelt_column_is_refused_naming_its_close_match(tmp_path, typo, name):
+_TYPOS = [(d, typo, name) for d in DOORS for typo, name in d.typos]
+
+
+@pytest.mark.parametrize("door,typo,name", _TYPOS,
+                         ids=[f"{d.name}-{t}" for d, t, _ in _TYPOS])
+def test_a_misspelt_column_is_refused_naming_its_close_match(tmp_path, door, typo,
+                                                             name):
     """A close spelling of a parameter (difflib ratio >= 0.75) is not silently a user
     column: the file is refused naming the parameter."""
     path = tmp_path / "typo.csv"
-    header = HEADER.replace(name, typo) if name in HEADER else HEADER + f",{typo}"
-    path.write_text(header + "\n" + ROW.format(load="1kN") + (",1" if name not in HEADER
-                                                           else "") + "\n")
-    status, out, err = _calc([str(path)])
+    cols = door.header.split(",")
+    header = (",".join(typo if c == name else c for c in cols) if name in cols
+              else door.header + f",{typo}")
+    path.write_text(header + "\n" + door.row.format(load="1kN")
+                    + (",1" if name not in cols else "") + "\n")
+    status, out, err = _calc([str(path)], door.name)
     assert status == 2 and f"did you mean {name!r}" in err, err
 
 
-def test_a_rerun_on_its_own_output_is_not_refused(tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_a_rerun_on_its_own_output_is_not_refused(tmp_path, door):
     """The result columns of an earlier run (force_kN, depth_um, ...) look like inputs
     with units but are the calculator's own: a rerun on its output is accepted."""
     first = tmp_path / "first.csv"
     src = tmp_path / "in.csv"
-    src.write_text(HEADER + "\n" + ROW.format(load="1kN") + "\n")
-    assert _calc([str(src), "-o", str(first)])[0] == 0
-    status, out, err = _calc([str(first)])
+    src.write_text(door.header + "\n" + door.row.format(load="1kN") + "\n")
+    assert _calc([str(src), "-o", str(first)], door.name)[0] == 0
+    status, out, err = _calc([str(first)], door.name)
     assert status == 0, err
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=10, deadline=None)
 @given(st.integers(1, 4))
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
 def test_a_row_with_more_cells_than_the_header_is_an_error_in_that_row(
-        tmp_path_factory, extra):
+        tmp_path_factory, door, extra):
     """A row with more cells than the header (a decimal comma, a missing header name)
-    is an error in that row, whatever else it holds; the other rows are computed."""
+    is an error in that row, whatever else it holds (never shifted under the wrong
+    headers); the other rows are computed."""
     path = tmp_path_factory.mktemp("wide") / "wide.csv"
-    wide = ROW.format(load="1kN") + ",1" * extra
-    path.write_text(HEADER + "\n" + ROW.format(load="1kN") + "\n" + wide + "\n")
-    status, out, err = _calc([str(path)])
+    wide = door.row.format(load="1kN") + ",1" * extra
+    path.write_text(door.header + "\n" + door.row.format(load="1kN") + "\n" + wide
+                    + "\n")
+    status, out, err = _calc([str(path)], door.name)
     rows = _rows(out)
-    assert status == 2 and rows[0]["error"] == ""
+    assert status == 2 and rows[0]["error"] == "" and float(rows[0][door.result]) > 0
     assert f"{5 + extra} cells under a header of 5 columns" in rows[1]["error"]
+    assert rows[1][door.result] == ""
 
 
-def test_a_semicolon_separated_file_is_refused_with_that_hint(tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_a_semicolon_separated_file_is_refused_with_that_hint(tmp_path, door):
     """A file separated by semicolons (a European spreadsheet export) is one column
     to a CSV reader: refused, saying semicolons, not 'no case columns'."""
     path = tmp_path / "semi.csv"
-    path.write_text(HEADER.replace(",", ";") + "\n" + ROW.format(load="1kN").replace(
-        ",", ";") + "\n")
-    status, out, err = _calc([str(path)])
+    path.write_text(door.header.replace(",", ";") + "\n" + door.row.format(
+        load="1kN").replace(",", ";") + "\n")
+    status, out, err = _calc([str(path)], door.name)
     assert status == 2 and "semicolons" in err and "comma-separated" in err
 
 
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_a_column_given_twice_is_refused(tmp_path, door):
+    """A column given twice would leave one of them silently unread: the file is
+    refused naming it."""
+    path = tmp_path / "twice.csv"
+    first = door.header.split(",")[0]
+    path.write_text(door.header + f",{first}\n" + door.row.format(load="1kN")
+                    + ",7\n")
+    status, out, err = _calc([str(path)], door.name)
+    assert status == 2 and out == "" and f"column {first!r} appears twice" in err
+
+
 @pytest.mark.parametrize("spelled", ["same", "dot", "absolute"])
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
 def test_output_naming_the_input_file_is_refused_and_the_input_kept(
-        tmp_path, monkeypatch, spelled):
+        tmp_path, monkeypatch, door, spelled):
     """-o naming the input CSV, however spelled (the same path, ./x/../FILE, absolute),
     is refused before anything is written: the input is byte for byte unchanged."""
     monkeypatch.chdir(tmp_path)
     (tmp_path / "x").mkdir()
     path = tmp_path / "bom.csv"
-    text = HEADER + "\n" + ROW.format(load="1kN") + "\n"
+    text = door.header + "\n" + door.row.format(load="1kN") + "\n"
     path.write_text(text)
     out = {"same": "bom.csv", "dot": "./x/../bom.csv", "absolute": str(path)}[spelled]
-    status, _, err = _calc(["bom.csv", "-o", out])
+    status, _, err = _calc(["bom.csv", "-o", out], door.name)
     assert status == 2 and "input file" in err
     assert path.read_text() == text
 
@@ -324,19 +358,31 @@ def test_raceway_contacts_carry_the_geometry_flags(tmp_path_factory, load, lengt
     assert math.isfinite(row["roller_deflection"])
 
 
-@pytest.mark.parametrize("flags", [[], ["--si"], ["--model", "johnson:c=0.72,universal"]])
-def test_a_rerun_round_trip_gives_the_same_results_and_says_so(tmp_path, flags):
-    """calc in.csv -o out.csv; calc out.csv -o out2.csv: out2 holds out's columns exactly
-    as they were, then this run's results under the prefix result_, cell for cell equal
-    to out's results (the earlier results are not read as inputs: nothing changes),
-    and stderr says in one line which columns are results of the earlier run."""
+_ROUND_TRIPS = [("calc", "radius,length,modulus,poisson,load,profile,part\n"
+                "5mm,10mm,210GPa,0.3,1kN,,a\n"
+                "5mm,10mm,210GPa,0.3,2kN,circular:Rc=0.5,b\n"
+                "5mm,10mm,210GPa,0.3,-1kN,,c\n", flags)
+               for flags in ([], ["--si"], ["--model", "johnson:c=0.72,universal"])]
+_ROUND_TRIPS += [("bearing", "rollers,pitch_diameter,roller_diameter,length,radial_load,"
+                  "profile,part\n"
+                  "14,70mm,11mm,11mm,10kN,,a\n"
+                  "14,70mm,11mm,11mm,5kN,circular:Rc=500mm,b\n"
+                  "14,70mm,11mm,11mm,-1kN,,c\n", flags) for flags in ([], ["--si"])]
+
+
+@pytest.mark.parametrize("command,text,flags", _ROUND_TRIPS,
+                         ids=[f"{c}{''.join(f)}" for c, _, f in _ROUND_TRIPS])
+def test_a_rerun_round_trip_gives_the_same_results_and_says_so(tmp_path, command, text,
+                                                               flags):
+    """calc in.csv -o out.csv; calc out.csv -o out2.csv (and the same with bearing):
+    out2 holds out's columns exactly as they were, then this run's results under the
+    prefix result_, cell for cell equal to out's results (the earlier results are not
+    read as inputs: nothing changes), and stderr says in one line which columns are
+    results of the earlier run."""
     src, out1, out2 = tmp_path / "in.csv", tmp_path / "out.csv", tmp_path / "out2.csv"
-    src.write_text("radius,length,modulus,poisson,load,profile,part\n"
-                   "5mm,10mm,210GPa,0.3,1kN,,a\n"
-                   "5mm,10mm,210GPa,0.3,2kN,circular:Rc=0.5,b\n"
-                   "5mm,10mm,210GPa,0.3,-1kN,,c\n")
-    s1, _, err1 = _calc([str(src), "-o", str(out1), *flags])
-    s2, _, err2 = _calc([str(out1), "-o", str(out2), *flags])
+    src.write_text(text)
+    s1, _, err1 = _calc([str(src), "-o", str(out1), *flags], command)
+    s2, _, err2 = _calc([str(out1), "-o", str(out2), *flags], command)
     assert s1 == s2 and "note" not in err1
     notes = [ln for ln in err2.splitlines() if "results of an earlier run" in ln]
     assert len(notes) == 1 and "result_" in notes[0], err2
@@ -370,9 +416,12 @@ def _value_options():
     out = []
     for name, p in sub.choices.items():
         for a in p._actions:
-            if a.option_strings and a.nargs is None and not isinstance(
-                    a, (argparse._StoreTrueAction, argparse._StoreFalseAction,
-                        argparse._HelpAction)):
+            # (an option renamed, hidden from --help, is refused at once with its new
+            # name: not an option that takes a value)
+            if a.option_strings and a.nargs is None and a.help != argparse.SUPPRESS \
+                    and not isinstance(a, (argparse._StoreTrueAction,
+                                           argparse._StoreFalseAction,
+                                           argparse._HelpAction)):
                 out.append((name, a.option_strings[-1]))
     return out
 
@@ -506,3 +555,26 @@ def test_a_model_option_twice_or_misspelt_is_refused(spec, says):
     status, out, err = _calc(["--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
                               "--load", "1kN", "--model", spec])
     assert status == 2 and says in err and err.count("\n") == 1, err
+
+
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_plot_follows_one_rule_for_every_command(tmp_path, door):
+    """--plot FILE: the format by the extension (PNG, SVG or PDF), another one refused
+    before anything is written (the output file is not created), and not with a CSV
+    batch; a bearing's former --figure is refused naming --plot."""
+    pytest.importorskip("matplotlib")
+    case = [x for c, v in zip(door.header.split(","), door.row.format(
+        load="1kN").split(",")) for x in ("--" + c.replace("_", "-"), v)]
+    out = tmp_path / "out.txt"
+    status, _, err = _calc([*case, "--plot", str(tmp_path / "f.jpg"), "-o", str(out)],
+                           door.name)
+    assert status == 2 and ".png, .svg or .pdf" in err and not out.exists()
+    status, _, err = _calc([*case, "--plot", str(tmp_path / "f.svg")], door.name)
+    assert status == 0 and (tmp_path / "f.svg").read_text().lstrip().startswith("<")
+    path = tmp_path / "in.csv"
+    path.write_text(door.header + "\n" + door.row.format(load="1kN") + "\n")
+    status, _, err = _calc([str(path), "--plot", str(tmp_path / "g.png")], door.name)
+    assert status == 2 and "not a CSV batch" in err
+    if door.name == "bearing":
+        status, _, err = _calc([*case, "--figure", "x.png"], door.name)
+        assert status == 2 and "--figure is now --plot" in err

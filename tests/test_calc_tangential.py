@@ -12,8 +12,9 @@ import numpy as np
 import pytest
 
 import linecontact.tangential as tg
-from linecontact.classical import effective_modulus
+import linecontact.tangential.cylinder_table as tg_table
 from linecontact.calc.cli import main
+from linecontact.classical import effective_modulus
 from linecontact.models import get_model
 from linecontact.tables import read_table, write_table
 from linecontact.viscoelastic import StandardLinearSolid, step_creep_depth
@@ -41,7 +42,7 @@ def table(tmp_path, monkeypatch):
         nu=nu, d_tilde=dt, kt_kn_across=np.where(nu == 0, 1.0, 0.9),
         kt_kn_along=np.where(nu == 0, 1.0, 0.75)))
     t = tg.CylinderTangentialTable(read_table("t", directory=tmp_path))
-    monkeypatch.setattr(tg, "_cached_table", lambda name: t)
+    monkeypatch.setattr(tg_table, "_cached_table", lambda name: t)
     return t
 
 
@@ -93,7 +94,7 @@ def test_shift_with_the_tables_slip_correction_is_the_runtimes(capsys, tmp_path,
         cols[f"shift_ratio_{side}_q1"] = np.full(nu.shape, c)
     write_table(tmp_path / "t.csv", META, cols)
     t = tg.CylinderTangentialTable(read_table("t", directory=tmp_path))
-    monkeypatch.setattr(tg, "_cached_table", lambda name: t)
+    monkeypatch.setattr(tg_table, "_cached_table", lambda name: t)
     rows = _json(capsys, CASE + ELASTIC + ["--friction", "0.1", "--tangential-load",
                                            "30N:90N:2", "--linear"])
     m = get_model("universal", 5e-3, 10e-3, effective_modulus(210e9, 0.3))
@@ -229,3 +230,29 @@ def test_bad_prony_values_are_one_clear_line(capsys, tmp_path, text, name, shown
     assert len(err) == 1, err
     assert "--prony" in err[0] and f"{name} = {shown}" in err[0], err
     assert err[0].count("valid") == 1 and "outside the valid range" not in err[0], err
+
+
+def test_crowned_roller_prints_mindlins_values_by_direction(capsys):
+    """A crowned roller (issue 32's: R 10 mm, L 20 mm, Rc 500 mm, steel on steel, 1 kN)
+    gets kt and u across and along from Contact.tangential's default, Mindlin's ellipse
+    (192.5 and 161.9 N/um), and its MDR column unchanged (method="mdr"): the library's
+    numbers (rtol 1e-10: the calculator's slice solve stops at its own iterate, 3e-12
+    from the library's call here, measured)."""
+    from linecontact.contact import Contact, Elastic, Roller
+
+    argv = ["calc", "--radius", "10mm", "--length", "20mm", "--crown-radius", "500mm",
+            "--load", "1kN", "--model", "profiled-roller", "--modulus", "210GPa",
+            "--poisson", "0.3", "--modulus2", "210GPa", "--poisson2", "0.3",
+            "--friction", "0.1", "--tangential-load", "50N"]
+    row = _json(capsys, argv)[0]
+    steel = Elastic(210e9, 0.3)
+    c = Contact(Roller(10e-3, 20e-3, crown_radius=0.5), None, steel, steel)
+    mdr = c.tangential(0.1, force=1e3, tangential_force=50.0, method="mdr")
+    assert row["kt_mdr"] == pytest.approx(mdr.stiffness, rel=1e-10, abs=0)
+    assert row["shift_mdr"] == pytest.approx(mdr.shift, rel=1e-10, abs=0)
+    for direction, value in (("across", 192.5), ("along", 161.9)):
+        t = c.tangential(0.1, force=1e3, tangential_force=50.0, direction=direction)
+        assert row[f"kt_{direction}"] == pytest.approx(t.stiffness, rel=1e-10, abs=0)
+        assert row[f"shift_{direction}"] == pytest.approx(t.shift, rel=1e-10, abs=0)
+        assert row[f"kt_{direction}"] / 1e6 == pytest.approx(value, abs=0.05)
+    assert "Mindlin" in row["flags"]

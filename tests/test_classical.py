@@ -19,8 +19,8 @@ from linecontact.classical import (ISO16281_C, JOHNSON_CONSTANTS, PALMGREN_C,
                                    puttock_thwaite_depth, puttock_thwaite_force,
                                    puttock_thwaite_profile, puttock_thwaite_stiffness,
                                    puttock_thwaite_stiffness_at_depth)
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import lipopov_depth
-from linecontact.validity import OutOfRangeError
 
 R, L = 5e-3, 10e-3
 E_STEEL = 210e9 / (2 * (1 - 0.3**2))

@@ -227,7 +227,7 @@ def test_json_results_equal_the_library_called_with_si_inputs(results):
     """The command converts units and hands SI to the library: its depth, stiffness and
     MDR radius at F = 1 kN equal those of the models built in-process (R = 5 mm,
     L = 10 mm, E* = 210 GPa / (1 - 0.3^2) by Eq. 3 with a rigid cylinder)."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     doc = _json(results, "one_json")
     assert math.isclose(doc["inputs"]["estar"], 210e9 / (1 - 0.09), rel_tol=1e-12)
@@ -315,7 +315,7 @@ def test_second_body_follows_eq3(results):
 def test_depth_input_gives_force_and_depth_column_first(results):
     """With --depth each model returns the force at that depth (its force(d)), and the
     table's first value column is d."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     doc = _json(results, "depth_json")
     compared = 0
@@ -535,6 +535,9 @@ def test_bad_input_message_states_the_valid_range(results, name):
 # in-process: the same main() as the command, called directly (no start-up per test)
 
 
+from doors import DOORS, IDS  # noqa: E402 - the commands whose batches keep the rules
+
+
 def _main(capsys, *argv):
     """(status, stdout, stderr) of linecontact.calc.cli.main(argv)."""
     from linecontact.calc.cli import main
@@ -704,27 +707,37 @@ def test_geometry_flags_on_every_row_of_every_model(capsys):
         assert row["half_width"] > 0.5 * 0.1e-3 and "b > 0.5 L" in row["flags"]
 
 
-def test_batch_keeps_user_columns_named_like_results(capsys, tmp_path):
-    """A user's model, note, error and depth_um columns are written as they were; the
-    result columns then carry the prefix result_ (all of them, one consistent set)."""
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_batch_keeps_user_columns_named_like_results(capsys, tmp_path, door):
+    """A user's model, note, error and result-named columns are written as they were
+    (never a second 'error' or 'note' column); the result columns then carry the
+    prefix result_ (all of them, one consistent set)."""
+    load = door.header.split(",")[-1]
+    model = "model" if door.name == "calc" else "model_used"  # the model's result column
     path = _write_csv(tmp_path / "u.csv",
-                      ["name", "model", "note", "error", "depth_um", "radius", "load"],
-                      [["a", "mine", "keep me", "E", "1.0", "5mm", "1kN"],
-                       ["b", "", "x,y", "", "", "5mm", "2kN"]])
-    status, out, err = _main(capsys, "calc", path, "--length", "10mm", "--modulus",
-                             "210GPa", "--poisson", "0.3")
+                      ["name", model, "note", "error", door.result, load],
+                      [["a", "mine", "keep me", "E", "1.0", "1kN"],
+                       ["b", "", "x,y", "", "", "2kN"]])
+    options = [o for o in door.row.split(",")[:-1]]
+    argv = [x for c, v in zip(door.header.split(",")[:-1], options)
+            for x in ("--" + c.replace("_", "-"), v)]
+    status, out, err = _main(capsys, door.name, path, *argv)
     assert status == 0, err
+    head = out.splitlines()[0].split(",")
+    assert head.count("error") == 1 and head.count("note") == 1
     rows = _csv(out)
-    assert [r["model"] for r in rows] == ["mine", ""]
+    assert [r[model] for r in rows] == ["mine", ""]
     assert [r["note"] for r in rows] == ["keep me", "x,y"]
-    assert [r["error"] for r in rows] == ["E", ""] and rows[0]["depth_um"] == "1.0"
-    assert all(r["result_error"] == "" and float(r["result_depth_um"]) > 0 for r in rows)
+    assert [r["error"] for r in rows] == ["E", ""] and rows[0][door.result] == "1.0"
+    assert all(r["result_error"] == "" and float(r["result_" + door.result]) > 0
+               for r in rows)
 
 
-def test_header_only_csv_is_a_clear_message(capsys, tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_header_only_csv_is_a_clear_message(capsys, tmp_path, door):
     """A CSV with a header and no rows: one line saying so, status 2."""
-    path = _write_csv(tmp_path / "h.csv", ["radius", "length", "load"], [])
-    status, out, err = _main(capsys, "calc", path)
+    path = _write_csv(tmp_path / "h.csv", door.header.split(","), [])
+    status, out, err = _main(capsys, door.name, path)
     assert status == 2 and "only a header row" in err and "Traceback" not in err
 
 
@@ -841,26 +854,26 @@ def test_progress_bar_goes_to_stderr_only(capsys, tmp_path):
     assert status == 0 and err == "" and plain == with_bar
 
 
-def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_ragged_rows_keep_every_cell_and_results_stay_aligned(capsys, tmp_path, door):
     """A row with more cells than the header keeps them (under an unnamed column) and is
     an error in that row (its cells are shifted: issue 22), a shorter row is padded;
     the result columns line up under their names in both the unquoted (line-copy) and
     the quoted (csv module) paths; CRLF line ends are read."""
     for quote in ("", '"'):
         path = tmp_path / f"r{len(quote)}.csv"
-        path.write_text(f"name,load\r\n{quote}a{quote},1kN,extra\r\nb\r\nc,2kN\r\n",
-                        encoding="utf-8")
-        status, out, err = _main(capsys, "calc", str(path), "--radius", "5mm",
-                                 *STEEL_CASE[1:])
+        path.write_text(f"name,{door.load}\r\n{quote}a{quote},1kN,extra\r\nb\r\n"
+                        "c,2kN\r\n", encoding="utf-8")
+        status, out, err = _main(capsys, door.name, str(path), *door.options)
         rows = list(csv.reader(io.StringIO(out)))
         head = rows[0]
-        assert head[:3] == ["name", "load", ""] and status == 2  # row b has no load
+        assert head[:3] == ["name", door.load, ""] and status == 2  # row b has no load
         assert [r[:3] for r in rows[1:]] == [["a", "1kN", "extra"], ["b", "", ""],
                                              ["c", "2kN", ""]]
-        depth = head.index("depth_um")
+        result = head.index(door.result)
         error = head.index("error")
-        assert rows[1][depth] == "" and "3 cells under a header of 2" in rows[1][error]
-        assert rows[2][depth] == "" and float(rows[3][depth]) > 0
+        assert rows[1][result] == "" and "3 cells under a header of 2" in rows[1][error]
+        assert rows[2][result] == "" and float(rows[3][result]) > 0
         assert all(len(r) == len(head) for r in rows)
 
 
@@ -885,28 +898,52 @@ SAMPLE = {
 }
 
 
-def _sample(name, tmp_path):
+def _sample(name, tmp_path, sample=None):
     if name == "hardness_profile":
         path = tmp_path / "hardness.csv"
         path.write_text("depth_m,HV\n0,700\n0.001,550\n0.005,350\n", encoding="utf-8")
         return str(path)
     if name != "prony":
-        return SAMPLE[name]
+        return (SAMPLE if sample is None else sample)[name]
     path = tmp_path / "prony.csv"
     path.write_text("# E_inf: 1GPa\ntau_s,E_Pa\n0.1,2e9\n", encoding="utf-8")
     return str(path)
 
 
-def test_sample_covers_every_option():
-    """The two tests below try every option of `calc --help`: a new option without a
-    sample value fails here, not silently untested."""
-    from linecontact.calc.cases import PARAMETERS
+#: A valid value of every input of `linecontact bearing`.
+BEARING_SAMPLE = {
+    "rollers": "14", "pitch_diameter": "70mm", "roller_diameter": "11mm",
+    "length": "11mm", "clearance": "5um", "radial_load": "10kN",
+    "tilting_moment": "5Nm", "misalignment": "0.2mrad", "modulus": "210GPa",
+    "poisson": "0.3", "modulus2": "210GPa", "poisson2": "0.3", "estar": "115GPa",
+    "profile": "iso16281", "model": "iso16281", "n_slices": "30", "rating": "60kN",
+    "surface_hardness": "700", "case_depth": "0.5mm", "core_hardness": "350",
+    "hardness_profile": "HARDNESS",
+}
 
-    assert set(SAMPLE) == {p.name for p in PARAMETERS}
+#: Per command: every input's sample value, and the case a batch completes.
+SAMPLES = {"calc": (SAMPLE, {"name": ["a", "b"], "radius": ["5mm", "6mm"],
+                             "length": ["10mm", "12mm"], "modulus": ["210GPa"] * 2,
+                             "poisson": ["0.3"] * 2, "load": ["1kN", "2kN"]}),
+           "bearing": (BEARING_SAMPLE, {"name": ["a", "b"], "rollers": ["14", "12"],
+                                        "pitch_diameter": ["70mm", "60mm"],
+                                        "roller_diameter": ["11mm", "10mm"],
+                                        "length": ["11mm", "10mm"],
+                                        "radial_load": ["10kN", "5kN"]})}
+_EVERY = [(c, n) for c, (sample, _) in SAMPLES.items() for n in sorted(sample)]
+_EVERY_IDS = [f"{c}-{n}" for c, n in _EVERY]
 
 
-@pytest.mark.parametrize("name", sorted(SAMPLE))
-def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, name):
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_sample_covers_every_option(door):
+    """The tests below try every option of each command's --help: a new option without
+    a sample value fails here, not silently untested."""
+    assert set(SAMPLES[door.name][0]) == set(door.parameters)
+
+
+@pytest.mark.parametrize("command,name", _EVERY, ids=_EVERY_IDS)
+def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, command,
+                                                           name):
     """An option of any kind (length, time, text, path, angle, ...) given with a CSV
     batch fills the empty cells of its column: every row is written and either computed
     or refused in its own 'error' cell, status 0 or 2, never an exception. The profile
@@ -914,31 +951,33 @@ def test_every_option_with_a_batch_runs_or_says_why_per_row(capsys, tmp_path, na
     gives every row its profiled-roller columns (a batch takes every option)."""
     from linecontact.calc.feature import option_name
 
-    src = _write_csv(tmp_path / "c.csv", ["name", "radius", "length", "modulus", "poisson",
-                                          "load"],
-                     [["a", "5mm", "10mm", "210GPa", "0.3", "1kN"],
-                      ["b", "6mm", "12mm", "210GPa", "0.3", "2kN"]])
-    status, out, err = _main(capsys, "calc", src, option_name(name), _sample(name, tmp_path))
+    sample, base = SAMPLES[command]
+    src = _write_csv(tmp_path / "c.csv", list(base), list(zip(*base.values())))
+    status, out, err = _main(capsys, command, src, option_name(name),
+                             _sample(name, tmp_path, sample))
     assert status in (0, 2), err
     rows = list(csv.DictReader(io.StringIO(out)))
     assert [r["name"] for r in rows] == ["a", "b"], err
     if status == 2:  # a row refused: it says so in its own cell, the file is written
         assert any(r["error"] for r in rows) and "error" in err
-    if name in ("profile", "crown_radius", "tilt"):
+    if command == "calc" and name in ("profile", "crown_radius", "tilt"):
         assert status == 0 and all(r["model"].startswith("Profiled roller")
                                    and float(r["moment_N_m"]) >= 0 for r in rows), err
 
 
-@pytest.mark.parametrize("name", sorted(set(SAMPLE) - {"radius", "length", "modulus",
-                                                       "poisson", "load"}))
-def test_every_option_as_a_csv_column_runs_or_says_why_per_row(capsys, tmp_path, name):
+@pytest.mark.parametrize("command,name", _EVERY, ids=_EVERY_IDS)
+def test_every_option_as_a_csv_column_runs_or_says_why_per_row(capsys, tmp_path, command,
+                                                              name):
     """The same value as a CSV column (one row with it, one with the cell empty): status
     0 or 2, both rows written, the empty cell's row computed."""
-    src = _write_csv(tmp_path / "c.csv", ["radius", "length", "modulus", "poisson", "load",
-                                          name],
-                     [["5mm", "10mm", "210GPa", "0.3", "1kN", _sample(name, tmp_path)],
-                      ["5mm", "10mm", "210GPa", "0.3", "1kN", ""]])
-    status, out, err = _main(capsys, "calc", src, "--json")
+    sample, base = SAMPLES[command]
+    case = {k: v[0] for k, v in base.items() if k != "name"}
+    if name in case:
+        return  # a column of the case itself: every test above has it
+    src = _write_csv(tmp_path / "c.csv", list(case) + [name],
+                     [list(case.values()) + [_sample(name, tmp_path, sample)],
+                      list(case.values()) + [""]])
+    status, out, err = _main(capsys, command, src, "--json")
     assert status in (0, 2), err
     rows = json.loads(out)["rows"]
     assert len(rows) == 2 and rows[1]["error"] == ""
@@ -971,8 +1010,8 @@ def _no_traceback(capsys, *argv):
     return status, out, err
 
 
-@pytest.mark.parametrize("name", sorted(SAMPLE))
-def test_odd_values_of_every_option_exit_0_or_2(capsys, tmp_path, name):
+@pytest.mark.parametrize("command,name", _EVERY, ids=_EVERY_IDS)
+def test_odd_values_of_every_option_exit_0_or_2(capsys, tmp_path, command, name):
     """Each odd value for each option, on the command line of a one-case call and as a
     cell of a batch: status 0 or 2, never an exception or 'Traceback'; a refused
     one-case value is one line on stderr. (This loop found: a NUL byte in a path, a
@@ -980,17 +1019,16 @@ def test_odd_values_of_every_option_exit_0_or_2(capsys, tmp_path, name):
     radius or a 1e-300 N load, all tracebacks before.)"""
     from linecontact.calc.feature import option_name
 
-    base = {"radius": "5mm", "length": "10mm", "modulus": "210GPa", "poisson": "0.3",
-            "load": "1kN"}
+    base = {k: v[0] for k, v in SAMPLES[command][1].items() if k != "name"}
     for value in ODD:
         value = _odd(value, tmp_path)
         cells = {**base, name: value}
-        argv = ["calc"] + [a for k, v in cells.items() for a in (option_name(k), v)]
+        argv = [command] + [a for k, v in cells.items() for a in (option_name(k), v)]
         status, out, err = _no_traceback(capsys, *argv)
         if status == 2 and out == "":
             assert len(err.strip().splitlines()) == 1, (value, err)
         src = _write_csv(tmp_path / "c.csv", list(cells), [list(cells.values())])
-        _no_traceback(capsys, "calc", src)
+        _no_traceback(capsys, command, src)
 
 
 @pytest.mark.parametrize("text", [

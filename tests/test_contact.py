@@ -14,10 +14,10 @@ import pytest
 
 from linecontact.contact import (Concave, Contact, Convex, Elastic, Flat, Raceways,
                                  Roller, Viscoelastic)
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.profiles import CircularCrownProfile
 from linecontact.raceway import roller_between_raceways
 from linecontact.roller import ProfiledRoller
-from linecontact.validity import CombinationError, UnknownNameError
 from linecontact.viscoelastic import PronySeries, StandardLinearSolid, effective_relaxation
 
 N = 40
@@ -50,11 +50,12 @@ def test_at_nu_zero_a_crowned_contacts_tangential_law_is_its_normal_law():
 
 
 def test_crowned_mdr_tangential_stiffness_is_gstar_over_estar_times_its_own_hertz_kn():
-    """A crowned contact's MDR k_t is G*/E* = 2(1 - nu)/(2 - nu) times its own k_n, and
+    """A crowned contact's MDR k_t (method="mdr"; the default is Mindlin's by direction,
+    tests/test_contact_mindlin.py) is G*/E* = 2(1 - nu)/(2 - nu) times its own k_n, and
     in the Hertz range (contact inside the roller) k_n = 3/2 F/delta (F ~ delta^3/2;
     to 2e-4 at 40 slices): the crowned value, not the straight cylinder's."""
     c = crowned()
-    t = c.tangential(0.15, force=200.0)
+    t = c.tangential(0.15, force=200.0, method="mdr")
     n = t.normal
     assert not n.solutions[0].edge_loaded
     assert t.shear_ratio == pytest.approx(2 * 0.7 / 1.7, rel=1e-14)
@@ -67,11 +68,11 @@ def test_crowned_mdr_tangential_stiffness_is_gstar_over_estar_times_its_own_hert
 
 def test_cam_follower_of_the_issue_gets_its_crowned_tangential_stiffness():
     """The crowned cam follower (R 8 mm, L 12 mm, Rc 300 mm, on a 25 mm cam, steel,
-    2 kN): k_t is its own MDR value, G*/E* k_n of the crowned contact (about 187 N/um),
-    not the straight roller's (about 355 N/um)."""
+    2 kN): k_t with method="mdr" is its own MDR value, G*/E* k_n of the crowned contact
+    (about 187 N/um), not the straight roller's (about 355 N/um)."""
     c = Contact(Roller(8e-3, 12e-3, crown_radius=0.3), Convex(25e-3), STEEL, STEEL,
                 n_slices=N)
-    t = c.tangential(0.15, force=2e3, tangential_force=100.0)
+    t = c.tangential(0.15, force=2e3, tangential_force=100.0, method="mdr")
     assert t.stiffness == pytest.approx(t.shear_ratio * t.normal.stiffness, rel=1e-15)
     assert 180e6 < t.stiffness < 195e6
     s = Contact(Roller(8e-3, 12e-3), Convex(25e-3), STEEL, STEEL).tangential(
@@ -80,9 +81,10 @@ def test_cam_follower_of_the_issue_gets_its_crowned_tangential_stiffness():
 
 
 def test_crowned_partial_slip_follows_mindlin():
-    """In the Hertz range the MDR shift under Q is Mindlin's (1949),
-    u = u* [1 - (1 - Q/(mu F))^(2/3)], u* = mu E* e/G* (exact for F ~ e^3/2; 1e-3 at
-    40 slices); a negative Q gives the same shift negated (the sign is the direction)."""
+    """In the Hertz range the shift under Q has Mindlin's (1949) form,
+    u = u* [1 - (1 - Q/(mu F))^(2/3)], u* = mu e/r (exact for F ~ e^3/2 whatever the
+    ratio r: Mindlin's ellipse's by default; 1e-3 at 40 slices); a negative Q gives the
+    same shift negated (the sign is the direction)."""
     c = crowned()
     mu, F = 0.15, 200.0
     for frac in (0.2, 0.7):
@@ -278,7 +280,7 @@ def test_undefined_combinations_are_refused_with_one_line(build, match):
 def test_unknown_names_are_unknown_name_errors_listing_the_valid_ones():
     """An unknown model key or tilt word raises UnknownNameError (a ValueError, not an
     OutOfRangeError) listing what is accepted."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
 
     with pytest.raises(UnknownNameError, match="'universal'") as err:
         Contact(Roller(5e-3, 10e-3), estar=1e11, model="hertz")
@@ -369,7 +371,7 @@ def test_creep_returns_the_history_where_only_the_long_term_depth_is_out_of_rang
     viscoelastic.creep_depth, the same integral), long_term_depth is None and its
     reason names the force and the range; a later time whose d(t) leaves the range is
     refused naming that time."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
     from linecontact.viscoelastic import StandardLinearSolid, creep_depth
 
     c = Contact(Roller(5e-3, 10e-3), material1=Elastic(math.inf),

@@ -9,7 +9,7 @@ has
   followed by a parenthetical remark; parameters whose type is not a number (str, bool,
   a table, a callable, ...) carry no unit;
 - when it takes a numeric parameter, its validity range: a ``Notes`` section, or a
-  range in numbers (``0 < d < inf``, rendered by :func:`linecontact.validity.document`
+  range in numbers (``0 < d < inf``, rendered by :func:`linecontact.checks.document`
   or written out);
 - an ``Examples`` section with a doctest (they run with the test suite), except for
   exception classes;

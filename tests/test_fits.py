@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 
 from linecontact.bearing import RadialRollerBearing
+from linecontact.errors import OutOfRangeError
 from linecontact.fits import (
     fit_pressure, inner_raceway_expansion, operating_clearance, outer_raceway_contraction,
     thermal_clearance_change)
-from linecontact.validity import OutOfRangeError
 
 E, NU = 210e9, 0.3
 

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.flanges import axial_load_shares, flange_contacts
-from linecontact.validity import CombinationError, UnknownNameError
 
 GEOM = dict(roller_diameter=11e-3, roller_length=11e-3, pitch_diameter=70e-3,
             end_radius=60e-3, flange_angle=math.radians(3), estar=115.4e9,

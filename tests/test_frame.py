@@ -25,6 +25,8 @@ from linecontact.calc.cli import main
 from linecontact.calc.frame import calc_frame
 from linecontact.models import get_model
 
+from doors import DOORS, IDS
+
 
 def _cases():
     return pd.DataFrame({"tag": ["a", "b", "c", "d"],
@@ -73,27 +75,39 @@ def test_results_are_the_librarys_and_the_batchs(tmp_path, capsys):
     assert out.attrs["linecontact"]["units"]["depth"] == "m"
 
 
-def test_user_column_named_like_a_result_is_kept():
-    cases = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "load": ["1kN"],
-                          "model": ["my roller"]})
-    out = calc_frame(cases, estar="115.38GPa", model="johnson:c=0.72")
-    assert out["model"].tolist() == ["my roller"]
-    assert out["result_model"].tolist() == ["Johnson (c = 0.72)"]
-    assert "result_error" in out and "error" not in out
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_user_column_named_like_a_result_is_kept(door):
+    """A user column named like a result column (the model's, error) is kept as it was;
+    the results get the batch's result_ prefix (one error column of each)."""
+    cols = door.header.split(",")
+    cells = door.row.format(load="1kN").split(",")
+    model = "model" if door.name == "calc" else "model_used"
+    cases = pd.DataFrame({**{c: [v] for c, v in zip(cols, cells)},
+                          model: ["my roller"], "error": ["mine"]})
+    options = {"model": "johnson:c=0.72"} if door.name == "calc" else {}
+    out = door.frame(cases, **options)
+    assert out[model].tolist() == ["my roller"] and out["error"].tolist() == ["mine"]
+    assert out["result_error"].tolist() == [""]
+    if door.name == "calc":
+        assert out["result_model"].tolist() == ["Johnson (c = 0.72)"]
+    else:
+        assert out["result_model_used"].tolist()[0].startswith("Universal")
 
 
-def test_frames_refused_as_a_whole():
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_frames_refused_as_a_whole(door):
+    first = door.header.split(",")[0]
     with pytest.raises(ValueError, match="no case columns"):
-        calc_frame(pd.DataFrame({"x": [1.0]}))
+        door.frame(pd.DataFrame({"x": [1.0]}))
     with pytest.raises(ValueError, match="no rows"):
-        calc_frame(pd.DataFrame({"radius": []}))
-    with pytest.raises(ValueError, match="'radios'.*did you mean 'radius'"):
-        calc_frame(pd.DataFrame({"radius": ["5mm"]}), radios="5mm")  # an unknown keyword
+        door.frame(pd.DataFrame({first: []}))
+    typo = first[:-2] + first[-1] + first[-2]
+    with pytest.raises(ValueError, match=f"'{typo}'.*did you mean '{first}'"):
+        door.frame(pd.DataFrame({first: ["5mm"]}), **{typo: "5mm"})  # unknown keyword
     with pytest.raises(TypeError, match="DataFrame"):
-        calc_frame([{"radius": "5mm"}])
-    with pytest.raises(ValueError, match="estar"):             # a bad option value
-        calc_frame(pd.DataFrame({"radius": ["5mm"], "length": ["1cm"],
-                                 "load": ["1kN"]}), estar="-5GPa")
+        door.frame([{first: "5mm"}])
+    with pytest.raises(ValueError, match="length"):             # a bad option value
+        door.frame(pd.DataFrame({first: ["5mm"]}), length="-5mm")
 
 
 def test_sweeps_of_numbers_are_si():

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
+from linecontact.errors import OutOfRangeError
 from linecontact.hertz import hertz_contact, hertz_contact_at_approach, hertz_eccentricity
-from linecontact.validity import OutOfRangeError
 
 ESTAR = 115.385e9          # steel on steel, E = 210 GPa, nu = 0.3
 R = 10e-3

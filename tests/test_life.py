@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 
 from linecontact.bearing import RadialRollerBearing, basic_rating_life
+from linecontact.errors import OutOfRangeError
 from linecontact.life import (
     A_ISO_CAP, RELIABILITY_FACTORS, fatigue_load_limit, life_modification_factor,
     modified_rating_life, modified_reference_rating_life, reference_equivalent_load,
     reliability_factor)
-from linecontact.validity import OutOfRangeError
 
 
 def test_a_iso_by_hand():

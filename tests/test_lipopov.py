@@ -14,6 +14,7 @@ from scipy.special import lambertw
 
 from linecontact._numerics import NotAKnotSpline, lambertw_m1, log1p_excess_root
 
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import (ALPHA_EQ11, BETA_EQ11, available_coefficient_sets,
                                  coefficient_set, dimensionless_profile,
                                  lipopov_coefficients, lipopov_contact_radius,
@@ -21,7 +22,6 @@ from linecontact.lipopov import (ALPHA_EQ11, BETA_EQ11, available_coefficient_se
                                  lipopov_force_limit, lipopov_profile, lipopov_stiffness,
                                  lipopov_stiffness_at_force)
 from linecontact.tables import read_table
-from linecontact.validity import OutOfRangeError
 
 STEEL_ESTAR = 210e9 / (2 * (1 - 0.3**2))
 
@@ -267,7 +267,7 @@ def test_table1_and_eq11_disagree_at_L_over_R_5_and_6():
 
 def test_unknown_coefficient_set_lists_the_valid_ones():
     """An unknown set name raises UnknownNameError listing 'eq11' and 'published'."""
-    from linecontact.validity import UnknownNameError
+    from linecontact.errors import UnknownNameError
 
     with pytest.raises(UnknownNameError) as err:
         coefficient_set("tabel1")

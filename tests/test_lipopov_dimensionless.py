@@ -19,11 +19,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import (dimensionless_contact_radius, dimensionless_depth,
                                  dimensionless_force, dimensionless_profile, dimensionless_stiffness,
                                  effective_beta, fit_dimensionless_profile,
                                  lipopov_force, lipopov_stiffness)
-from linecontact.validity import OutOfRangeError
 
 coef = st.tuples(st.floats(0.5, 3.0), st.floats(0.1, 2.0))
 

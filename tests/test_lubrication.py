@@ -7,11 +7,11 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import CombinationError, OutOfRangeError, UnknownNameError
 from linecontact.lubrication import (
     DEFAULT_FILM_FORMULA, cage_speed, central_film_pan_hamrock, ehl_parameters,
     entrainment_speed, film_ratio, minimum_film_dowson_higginson,
     minimum_film_pan_hamrock, minimum_film_thickness, rated_viscosity, viscosity_ratio)
-from linecontact.validity import CombinationError, OutOfRangeError, UnknownNameError
 
 # A cylindrical roller bearing's inner contact: d_m = 70 mm, D = 11 mm, so
 # R = D (d_m - D) / (2 d_m) = 11 * 59 / 140 mm = 4.635714 mm; steel E* = 115.4 GPa,

@@ -9,11 +9,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import (lipopov_contact_radius, lipopov_force, lipopov_profile,
                                  lipopov_stiffness)
 from linecontact.mdr import (mdr_contact_radius, mdr_force, mdr_profile_from_force,
                              mdr_profile_from_stiffness, mdr_stiffness)
-from linecontact.validity import OutOfRangeError
 
 E = 210e9 / (2 * (1 - 0.3**2))
 R, L = 5e-3, 10e-3

@@ -15,11 +15,11 @@ from hypothesis import strategies as st
 import linecontact
 from linecontact import models as mm
 from linecontact import tables as tb
+from linecontact.errors import OutOfRangeError
 from linecontact.mdr import mdr_force
 from linecontact.models import (MODELS, ContactModel, get_model, register,
                                 standard_models)
 from linecontact.tables import read_table, write_table
-from linecontact.validity import OutOfRangeError
 
 E = 210e9 / (2 * (1 - 0.3**2))
 
@@ -236,7 +236,7 @@ def test_regenerated_table_drops_in_without_code_change(tmp_path, monkeypatch):
 def test_unknown_model_key_lists_valid_keys():
     """An unknown key raises UnknownNameError (a ValueError, not an OutOfRangeError: a
     name has no range) listing the registered keys."""
-    from linecontact.validity import UnknownNameError
+    from linecontact.errors import UnknownNameError
 
     with pytest.raises(UnknownNameError) as err:
         get_model("hertz", R5, L5, E)
@@ -344,7 +344,7 @@ def test_out_of_range_error_message_and_attributes():
     message reads 'NAME = VALUE UNIT is outside the valid range RANGE[; hint]' and it
     survives pickling (e.g. from worker processes)."""
     import pickle
-    from linecontact.validity import check_interval, check_positive
+    from linecontact.checks import check_interval, check_positive
     with pytest.raises(OutOfRangeError) as err:
         check_positive("force", [1.0, -2.0], "N", hint="loads push")
     e = err.value
@@ -361,7 +361,7 @@ def test_out_of_range_error_message_and_attributes():
 def test_interval_renders_and_checks():
     """An Interval renders as '[lo, hi)' with its unit and as an inequality for docs, and
     its check() is what the formulas enforce (NaN is never inside)."""
-    from linecontact.validity import POISSON_RATIO, Interval
+    from linecontact.checks import POISSON_RATIO, Interval
     assert str(POISSON_RATIO) == "[0, 0.5]"  # 0.5: incompressible (issue 11.4)
     assert POISSON_RATIO.describe() == "0 <= poisson <= 0.5"
     iv = Interval("radius", 0.0, np.inf, True, True, "m")
@@ -483,8 +483,8 @@ def test_evaluate_many_leaves_a_subnormal_psi_to_its_model():
     returned None, sending a whole batch with one such row off its array path."""
     import numpy as np
 
+    from linecontact.errors import OutOfRangeError
     from linecontact.models import UniversalModel
-    from linecontact.validity import OutOfRangeError
 
     R, L, E = 5e-3, 1e-2, 2e11
     F = np.array([1e-301, 1e3])

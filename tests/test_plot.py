@@ -52,7 +52,7 @@ from linecontact.models import get_model, standard_models
 from linecontact.stresses import (HardnessProfile, case_check, line_contact_stresses,
                                   roller_stresses)
 from linecontact.tangential import TangentialContact
-from linecontact.validity import OutOfRangeError, UnknownNameError
+from linecontact.errors import OutOfRangeError, UnknownNameError
 from linecontact.viscoelastic import StandardLinearSolid
 
 ESTAR = 115.38e9

@@ -8,11 +8,11 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import OutOfRangeError
 from linecontact.profiles import (JOHNS_GOHAR_C, CircularCrownProfile, EndReliefProfile,
                                   ISO16281Profile, JohnsGoharProfile, LundbergProfile,
                                   StraightProfile, TabulatedProfile, parse_angle,
                                   parse_profile)
-from linecontact.validity import OutOfRangeError
 
 L, R, E = 10e-3, 5e-3, 115.385e9
 X = np.linspace(-L / 2 * 0.999, L / 2 * 0.999, 401)
@@ -159,7 +159,7 @@ def test_parse_profile_refuses_unknown_names_listing_the_valid_ones():
     """An unknown profile or option name is an UnknownNameError (not an
     OutOfRangeError: a name has no range) naming it and listing the valid ones, in one
     line."""
-    from linecontact.validity import UnknownNameError
+    from linecontact.errors import UnknownNameError
 
     for spec, param, fragment in (("cone", "profile",
                                    "'straight', 'end-relief', 'circular'"),

@@ -14,10 +14,10 @@ import sys
 import numpy as np
 import pytest
 
+from linecontact.errors import CombinationError, UnknownNameError
 from linecontact.raceway import (FIT_TOLERANCE, Raceways, check_fit, effective_radii,
                                  roller_between_raceways)
 from linecontact.roller import ProfiledRoller
-from linecontact.validity import CombinationError, UnknownNameError
 
 R1, L = 5e-3, 10e-3
 E_STEEL = 210e9 / (2 * (1 - 0.3 ** 2))          # E* of steel on steel [Pa]
@@ -185,3 +185,19 @@ def test_combinations_without_a_definition_are_refused():
         roller_between_raceways(R1, L, E_STEEL, RACE, force=1e3, model="hertz")
     with pytest.raises(CombinationError, match="exactly one of force and deflection"):
         roller_between_raceways(R1, L, E_STEEL, RACE)
+
+
+def test_effective_radius_is_hertz_reduction():
+    """1/R = 1/R1 + 1/R2 (Johnson 1985, section 4.2): two equal convex cylinders give
+    R1/2, a flat (R2 = inf) R1, a concave body (R2 < 0) 1/(1/R1 - 1/|R2|); and it is
+    the formula effective_radii checks and applies, bit for bit (one home)."""
+    from linecontact.raceway import effective_radius
+
+    assert effective_radius(5e-3, 5e-3) == 2.5e-3
+    assert effective_radius(5e-3, np.inf) == 5e-3
+    assert effective_radius(5e-3, -30e-3) == pytest.approx(6e-3, rel=1e-15)
+    R1, Ri, Ro = np.array([5e-3, 4e-3]), np.array([20e-3, 16e-3]), np.array([30e-3, 24e-3])
+    r_in, r_out = effective_radii(R1, Ri, Ro)
+    assert np.array_equal(r_in, effective_radius(R1, Ri))
+    assert np.array_equal(r_out, effective_radius(R1, -Ro))
+    assert np.isnan(effective_radius(5e-3, np.nan))      # a row without raceways

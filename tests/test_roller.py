@@ -11,12 +11,12 @@ import pytest
 from scipy.integrate import quad
 
 from linecontact.classical import iso16281_depth, iso16281_force
+from linecontact.errors import OutOfRangeError
 from linecontact.hertz import hertz_contact
 from linecontact.models import MODELS, get_model
 from linecontact.profiles import TabulatedProfile
 from linecontact.roller import (ISOSlicingModel, ProfiledRoller, ProfiledRollerModel,
                                 iso_slicing, roller_contact, strip_influence)
-from linecontact.validity import OutOfRangeError
 
 E = 115.385e9              # steel on steel
 R, LC = 10e-3, 20e-3       # the crowned roller of the Hertz check values
@@ -560,7 +560,7 @@ def test_a_setting_changed_after_construction_is_checked_and_used_throughout():
     by some steps and not others (grading 1.5 gave NaN warnings), and a bad value was
     not refused. Now the roller is built anew: the answer equals a new roller's, and a
     bad value is refused by name, leaving the roller as it was."""
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
     r = ProfiledRoller(5e-3, 10e-3, 115.385e9, "circular:Rc=0.5", n_slices=20)
     r.at_force(1e3)
     r.length = 12e-3

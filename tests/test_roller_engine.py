@@ -27,7 +27,7 @@ from linecontact import OutOfRangeError, _engine
 from linecontact.roller import ProfiledRoller
 from linecontact.roller import slices as sl
 from linecontact.roller.slices import SliceEquations
-from linecontact.validity import UnknownNameError
+from linecontact.errors import UnknownNameError
 
 TOL = 1e-12
 needs_c = pytest.mark.skipif(

@@ -180,7 +180,8 @@ def test_scalar_check_matches_the_array_path(value, ends):
     the general path (the value checked as a 1-element array, then reshaped), and
     refuses exactly what it refuses (NaN, out of range, subnormal; 2^60 below an open
     end of 2^53 + 1, which rounds to 2^53 as a float: refused there, as 2^53 is)."""
-    from linecontact.validity import OutOfRangeError, check_interval
+    from linecontact.checks import check_interval
+    from linecontact.errors import OutOfRangeError
     lo, hi, lo_open, hi_open = ends
     kw = dict(low_open=lo_open, high_open=hi_open)
     try:

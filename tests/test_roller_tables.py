@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import linecontact.roller.laws as laws
+from linecontact.errors import OutOfRangeError
 from linecontact.roller.laws import ISOSlicingModel
-from linecontact.validity import OutOfRangeError
 
 N = laws._TABLE_MIN
 E = 115.38e9

@@ -6,8 +6,8 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import CombinationError, OutOfRangeError
 from linecontact.spectrum import duty_cycle_life, revolution_shares
-from linecontact.validity import CombinationError, OutOfRangeError
 
 
 def test_two_case_spectrum_life():

@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
+from linecontact.errors import OutOfRangeError
 from linecontact.static import (
     PERMISSIBLE_PRESSURE, pressure_safety_factor, static_equivalent_load,
     static_load_rating, static_safety_factor)
-from linecontact.validity import OutOfRangeError
 
 
 def test_c0_is_iso_76_formula_exactly():

@@ -13,11 +13,11 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import minimize_scalar
 
+from linecontact.errors import OutOfRangeError
 from linecontact.roller import ProfiledRoller
 from linecontact.stresses import (MEASURES, HardnessProfile, case_check,
                                   line_contact_stresses, roller_stresses, strip_maxima,
-                                  strip_stresses)
-from linecontact.validity import OutOfRangeError
+                                  strip_stresses, yield_strength_from_hardness)
 
 ESTAR = 115.385e9
 
@@ -195,6 +195,35 @@ def test_minimum_case_depth_is_where_the_ratio_reaches_one():
     assert "Pavlina" in c.conversion
 
 
+def test_no_case_needed_where_the_core_carries_the_load():
+    """A light load (400 N on R 5 mm, L 10 mm) whose stress stays below the core's
+    allowable at every depth needs no case: the minimum case depth is 0, not a fraction
+    of the case depth given (issue 32)."""
+    s = line_contact_stresses(400.0, 5e-3, 10e-3, ESTAR)
+    for chd in (0.1e-3, 1e-3):
+        c = case_check(s, HardnessProfile(700.0, chd, 350.0))
+        assert c.min_case_depth == 0.0
+    core = yield_strength_from_hardness(350.0)
+    assert np.max(c.stress) < core, "the core's allowable (von Mises: f = 1) suffices"
+
+
+@pytest.mark.parametrize("measure", ["tresca", "von_mises"])
+def test_minimum_case_depth_does_not_depend_on_the_case_depth_given(measure, monkeypatch):
+    """The minimum case depth is a property of the load and the hardness levels: given
+    case depths from 0.03 to 3 mm give the same minimum to 0.5 % (issue 32; measured
+    3e-5, the bisection's 1e-4 tolerance), and an 8 times finer search grid changes it
+    by less than 0.5 % (measured 0)."""
+    import linecontact.stresses.hardening as st
+
+    s = line_contact_stresses(4000.0, 5e-3, 10e-3, ESTAR)
+    mins = [case_check(s, HardnessProfile(700.0, chd, 350.0), measure=measure)
+            .min_case_depth for chd in (0.03e-3, 0.3e-3, 3e-3)]
+    assert mins == pytest.approx([mins[1]] * 3, rel=5e-3)
+    monkeypatch.setattr(st, "_CHD_POINTS", 8 * st._CHD_POINTS)
+    fine = case_check(s, HardnessProfile(700.0, 3e-3, 350.0), measure=measure)
+    assert fine.min_case_depth == pytest.approx(mins[1], rel=5e-3)
+
+
 def test_measured_hardness_table():
     """A measured profile (depth, HV) is interpolated, and not used beyond its depth."""
     h = HardnessProfile(depths=[0, 0.5e-3, 1e-3, 3e-3], hardness=[700, 650, 500, 350])
@@ -258,14 +287,15 @@ def test_3d_correction_of_a_long_even_strip_is_its_end_effect():
     2e-4; the depth stays the strip's to 1 % of b. The middle's field: the search
     around p0's largest (the strip's worst as a whole lies at its loaded ends, 4.5 %
     above McEwen's, which roller_stresses' search over the whole strip finds)."""
-    import linecontact.stresses as ls
+    from linecontact.stresses import measures, strip
+    from linecontact.stresses import search as ls
     b, p0 = 1e-4, 1e9
     m = strip_maxima(0.1, 0.3)
     excess = []
     for half, n in ((200, 401), (2000, 801)):
         x = np.linspace(-half * b, half * b, n)
         p = p0 * (1 + 1e-7 * (1 - (x / x[-1]) ** 2))
-        w = ls._worst_3d(x, np.full(n, b), p, 0.1, 0.3, ls._maxima(0.1, 0.3),
+        w = ls._worst_3d(x, np.full(n, b), p, 0.1, 0.3, strip._maxima(0.1, 0.3),
                          wide=False)["tresca"]
         assert abs(w["slice"] - n // 2) <= 2
         assert w["z"] / b == pytest.approx(m.z["tresca"], abs=1e-2)
@@ -335,7 +365,7 @@ def test_corner_sums_equal_the_direct_corner_functions():
     functions (rectangle_stresses' path) to 1e-10 of the sums of magnitudes, for
     offsets 1e-3 to 1e4 times the depth, and the single-function path (the orthogonal
     shear's) equals its row."""
-    from linecontact.stresses import _PYZ, _love_corner
+    from linecontact.stresses.love import _PYZ, _love_corner
     rng = np.random.default_rng(7)
     for scale in (1e-3, 1.0, 1e4):
         X = (rng.random((1, 300)) - 0.5) * scale
@@ -358,7 +388,7 @@ def test_corner_sums_on_the_edges_extensions_and_near_the_surface():
     where d psi1/dz -> -pi/2 sign(XY) and d2H1/dx2 + d2H1/dy2 -> the same with its sign
     reversed). Each corner alone (unit weight) against the stacked direct functions, to
     1e-12 of max(1, |value|)."""
-    from linecontact.stresses import _love_corner
+    from linecontact.stresses.love import _love_corner
     v = np.array([0.0, -0.0, 1e-12, -1e-12, 0.3, -0.3, 7.0, -7.0, 1e4, -1e4])
     X = np.repeat(v, v.size)[None, :]
     Y = np.tile(v, v.size)[None, :]
@@ -390,7 +420,7 @@ def test_3d_correction_corners_rebuild_the_pressure_difference():
     max(b_i, b_k0); beyond the roller's ends -q_k0/(2 b_k0) (k0's strip extended). So
     the far cells' corners merged on common edges (adjacent cells of one half-width)
     lose nothing; and no two corners share a position."""
-    from linecontact.stresses import _N_Y, _NEAR, _corners_3d, _hertz_cell_means
+    from linecontact.stresses.search import _N_Y, _NEAR, _corners_3d, _hertz_cell_means
     for shape, force, tilt in (("circular:Rc=0.5", 4200.0, 0.0), ("iso16281", 11200.0, 2e-3),
                                ("end-relief:r=2mm,l=1.5mm", 4200.0, 0.0)):
         r = ProfiledRoller(5e-3, 14e-3, ESTAR, shape)
@@ -467,7 +497,7 @@ def test_roller_stresses_with_every_maximum_at_the_surface_keep_the_strips():
     rule): the search must not fail for lack of a measure below the surface, and the
     solution says what it is, a plane-strain strip result (no 3D correction made)."""
     from linecontact.roller import roller_contact
-    from linecontact.stresses import _maxima
+    from linecontact.stresses.strip import _maxima
     sol = roller_contact(5e-3, 14e-3, 115.385e9, "circular:Rc=0.5", force=4200.0)
     for mu in (0.4, 0.5, 1.0):
         assert all(_maxima(mu, 0.3).z[n] < 0.1 for n in MEASURES), mu
@@ -481,14 +511,15 @@ def _brute_worst(sol, mu=0.0, nu=0.3, n=15):
     """Each subsurface measure's worst by brute force: below EVERY loaded slice an n x n
     grid over the search's window (+-0.4 b, +-0.3 b around the strip optimum, z >=
     0.05 b), the library's own 3D field. Returns name -> (value [Pa], slice)."""
-    import linecontact.stresses as ls
+    from linecontact.stresses import measures, strip
+    from linecontact.stresses import search as ls
     x = np.asarray(sol.x, float)
     b = np.asarray(sol.half_width, float)
     q = np.asarray(sol.q, float)
     loaded = (b > 0) & (q > 0)
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
-    m = ls._maxima(mu, nu)
+    m = strip._maxima(mu, nu)
     xe = ls._slice_edges(x)
     cache = {}
 
@@ -508,7 +539,7 @@ def _brute_worst(sol, mu=0.0, nu=0.3, n=15):
             pz = np.maximum((m.z[name] + 0.3 * V) * b[k], 0.05 * b[k])
             shear = name == "orthogonal_shear"
             r = ls._field_3d(x, b, p0, mu, nu, [(k, py, pz, shear)], corners)[0]
-            v = np.abs(r) if shear else ls._measure_3d(name, *r)
+            v = np.abs(r) if shear else measures._measure_3d(name, *r)
             if v.max() > best[0]:
                 best = (float(v.max()), int(k))
         out[name] = best
@@ -607,3 +638,42 @@ def test_3d_search_finds_the_worst_near_the_ends():
         th = float(rng.uniform(5e-4, 2.5e-3))
         sol = roller_contact(5e-3, L, ESTAR, make_profile(prof, L), force=f, tilt=th)
         _check_search(sol, f"{prof} L={L} {f:.0f} N {th:.2e} rad")
+
+
+# ---- incompressible bodies (nu = 0.5: PDMS, rubber) -----------------------------------
+@pytest.mark.parametrize("mu", [0.0, 0.2])
+def test_incompressible_strip_von_mises_is_root3_tresca(mu):
+    """At nu = 0.5 the plane-strain sigma_x = (sigma_y + sigma_z)/2 is the mean of the
+    in-plane principal stresses, so von Mises = sqrt(3) Tresca at every point and at
+    the maximum (rtol 1e-12; McEwen's strip formulas hold at nu = 0.5: no 1 - 2 nu
+    divides them); frictionless, Tresca's maximum is 0.300 p0 at z = 0.786 b whatever nu
+    (Johnson 1985, section 4.2)."""
+    s = line_contact_stresses(200.0, 5e-3, 20e-3, 3e6, friction=mu, poisson=0.5)
+    p0 = float(s.peak_pressure[0])
+    assert s.worst["von_mises"]["value"] == pytest.approx(
+        np.sqrt(3) * s.worst["tresca"]["value"], rel=1e-12)
+    y, z = np.meshgrid(np.linspace(-2, 2, 9) * 1e-4, np.linspace(0.1, 2, 7) * 1e-4)
+    f = strip_stresses(y, z, 1e-4, 1e6, mu, 0.5)
+    assert f.measure("von_mises") == pytest.approx(np.sqrt(3) * f.measure("tresca"),
+                                                    rel=1e-12)
+    if mu == 0.0:
+        assert s.worst["tresca"]["value"] / p0 == pytest.approx(0.3004, abs=2e-4)
+
+
+def test_incompressible_stresses_are_the_limit_nu_to_one_half():
+    """nu = 0.5 is accepted by the strip, Love's rectangle and the 3D-corrected roller
+    stresses, and gives their limit nu -> 0.5 (the formulas are linear in nu: a step
+    of 1e-9 moves them by O(1e-9); asserted rtol 1e-7)."""
+    from linecontact.stresses import rectangle_stresses
+
+    a = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5)
+    b = rectangle_stresses(0.3, 0.1, 0.2, 1.0, 0.5, poisson=0.5 - 1e-9)
+    for k in a:
+        assert float(a[k]) == pytest.approx(float(b[k]), rel=1e-7, abs=1e-12), k
+    sol = ProfiledRoller(5e-3, 20e-3, 3e6, "circular:Rc=0.5", n_slices=30).at_force(1.0)
+    r = roller_stresses(sol, poisson=0.5)
+    q = roller_stresses(sol, poisson=0.5 - 1e-9)
+    for m in MEASURES:
+        assert r.worst[m]["value"] == pytest.approx(q.worst[m]["value"], rel=1e-7), m
+    with pytest.raises(OutOfRangeError, match="poisson = 0.51"):
+        strip_maxima(0.0, 0.51)

@@ -1,6 +1,6 @@
 """The C corner sums of the stresses' 3D correction (linecontact/_cstresses.c, in the
 extension linecontact._ckernels) against the numpy reference
-(linecontact.stresses._love_weighted / _love_corner), and the stresses computed with
+(linecontact.stresses.love._love_weighted / _love_corner), and the stresses computed with
 each: the same sums to rounding, the same worst values.
 
 Skipped where the optional extension does not run here (no C compiler at install; a
@@ -11,9 +11,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from linecontact import _engine
-from linecontact import stresses as st
+from linecontact import _engine, stresses
 from linecontact.roller import ProfiledRoller
+from linecontact.stresses import love as st
+from linecontact.stresses import search
 
 needs_c = pytest.mark.skipif(
     st._cstresses is None,
@@ -127,7 +128,7 @@ def _worst(sol, model, corners, mu=0.0, nu=0.3):
     saved = st._CORNERS[0]
     st._CORNERS[0] = corners
     try:
-        return st.roller_stresses(sol, mu, nu, roller=model).worst
+        return stresses.roller_stresses(sol, mu, nu, roller=model).worst
     finally:
         st._CORNERS[0] = saved
 
@@ -152,7 +153,7 @@ def test_c_and_numpy_stresses_give_the_same_worst(profile, force, tilt, mu, nu):
     model = ProfiledRoller(5e-3, 14e-3, ESTAR, profile)
     sol = model.at_force(force, tilt=tilt)
     c, n = _worst(sol, model, "c", mu, nu), _worst(sol, model, "numpy", mu, nu)
-    for name in st.MEASURES:
+    for name in stresses.MEASURES:
         u, v = c[name], n[name]
         assert abs(u["value"] - v["value"]) <= 1e-14 * abs(v["value"]), name
         same = u["slice"] == v["slice"] or (tilt == 0.0
@@ -179,9 +180,9 @@ def test_c_corners_are_numpy_s():
             b = np.where(loaded, b, 0.0)
             ks = [int(k) for k in np.flatnonzero(loaded)]
             st._CORNERS[0] = "c"
-            got = st._corners_many(x, b, p0, ks)
+            got = search._corners_many(x, b, p0, ks)
             st._CORNERS[0] = "numpy"
-            ref = st._corners_many(x, b, p0, ks)
+            ref = search._corners_many(x, b, p0, ks)
             for k, (g, r) in enumerate(zip(got, ref)):
                 for a, e, what in zip(g, r, ("x", "y", "weights")):
                     assert np.array_equal(a, e), f"slice {k}: {what} differ"
@@ -233,7 +234,7 @@ def test_where_c_declines_numpy_takes_over(monkeypatch):
     ref = _worst(sol, model, "numpy")
     monkeypatch.setattr(st, "_cstresses", Declines)
     got = _worst(sol, model, "c")
-    for name in st.MEASURES:
+    for name in stresses.MEASURES:
         assert got[name] == ref[name], name
 
 

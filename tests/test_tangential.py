@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 
 from linecontact.classical import effective_modulus
+from linecontact.errors import OutOfRangeError, UnknownNameError
 from linecontact.models import standard_models
 from linecontact.tables import TableError, read_table, write_table
 from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
@@ -25,7 +26,6 @@ from linecontact.tangential import (CylinderTangentialTable, TangentialContact,
                                     equivalent_poisson, gross_slip_shift, shear_modulus,
                                     shear_ratio, tangential_force, tangential_shift,
                                     tangential_stiffness)
-from linecontact.validity import OutOfRangeError, UnknownNameError
 
 from oracle_laws import FlatPunch, HertzSphere  # tests/oracle_laws.py
 

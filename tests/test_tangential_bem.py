@@ -110,7 +110,7 @@ def test_k_yy_is_k_xx_with_the_axes_exchanged():
 
 
 def test_material_out_of_range_is_refused():
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
     with pytest.raises(OutOfRangeError, match="nu = 0.6"):
         cerruti_rectangle(0.0, 0.0, 1.0, 1.0, 1.0, 0.6)
     with pytest.raises(OutOfRangeError, match="shear_modulus"):

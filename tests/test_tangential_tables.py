@@ -11,11 +11,11 @@ values are themselves exact to rounding (1e-15), so the difference is the table'
 import numpy as np
 import pytest
 
-import linecontact.tangential as tangential
+import linecontact.tangential.contact as tangential
 from linecontact._numerics import UniformHermite
+from linecontact.errors import OutOfRangeError
 from linecontact.models import get_model
 from linecontact.tangential import STRAIGHT_CYLINDER_MODELS, TangentialContact
-from linecontact.validity import OutOfRangeError
 
 E = 115.38e9
 N = tangential._TABLE_MIN + 12345

@@ -2,7 +2,7 @@
 
 Command line and CSV cells (linecontact._units): a value is one decimal number with a
 decimal point and at most one unit name; everything else is refused with one line
-naming the parameter, the value and the valid range. Python API (linecontact.validity):
+naming the parameter, the value and the valid range. Python API (linecontact.checks):
 numbers in SI; nothing that would lose information (an imaginary part, a mask, a unit)
 passes silently.
 """
@@ -20,7 +20,8 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from linecontact._units import InputError, parse_bool, parse_column, parse_quantity
-from linecontact.validity import OutOfRangeError, check_positive
+from linecontact.checks import check_positive
+from linecontact.errors import OutOfRangeError
 
 #: units and their exact SI factor (definitions: 1 in = 25.4 mm, 1 lbf = 4.4482216152605 N)
 UNITS = {
@@ -206,7 +207,7 @@ def test_booleans_are_exactly_true_false_yes_no_1_0(text):
 
 
 # ---------------------------------------------------------------------------------------
-# Python API: linecontact.validity refuses what would lose information
+# Python API: linecontact.checks refuses what would lose information
 
 
 @given(normal, st.floats(allow_nan=False, allow_infinity=False).filter(lambda y: y != 0))

@@ -8,12 +8,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import linecontact as lc
-from linecontact.mdr import mdr_force
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import fit_dimensionless_profile
-from linecontact.tables import read_table
+from linecontact.mdr import mdr_force
 from linecontact.models import UniversalModel
+from linecontact.tables import read_table
 from linecontact.universal import universal_curve
-from linecontact.validity import OutOfRangeError
 
 TABLE = read_table("universal_curve")
 CURVE = universal_curve()

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from linecontact.validity import OutOfRangeError
+from linecontact.errors import OutOfRangeError
 from linecontact.viscoelastic import (PronySeries, StandardLinearSolid, creep_depth,
                                       force_history, read_prony_series,
                                       step_creep_depth)
@@ -224,7 +224,7 @@ def test_prony_lists_are_keywords_and_a_swap_is_refused():
     PronySeries(1e9, moduli=[2e9, 1e9], times=[0.1, 10.0])
 
 
-from hypothesis import given, settings  # noqa: E402
+from hypothesis import assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 
@@ -238,6 +238,9 @@ def test_swapped_prony_lists_are_refused_and_honest_ones_accepted(einf, terms):
     swapped are refused."""
     moduli = [r * einf for r, _ in terms]
     times = [f * einf for _, f in terms]
+    # distinct fractions can round to one time once scaled by E_inf: such a series has a
+    # repeated time, which is refused for that reason (tested above), not this test's case
+    assume(len(set(times)) == len(times))
     PronySeries(einf, moduli=moduli, times=times)
     with pytest.raises(OutOfRangeError, match="swapped"):
         PronySeries(einf, moduli=times, times=moduli)

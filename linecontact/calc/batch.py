@@ -63,7 +63,7 @@ from .cases import BY_NAME, PARAMETERS, parse_cases
 from .compute import compute
 from .feature import RAW_KINDS, bounds_of, option_name
 
-__all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS"]
+__all__ = ["run_batch", "read_table", "result_columns", "PROGRESS_ROWS", "CALC"]
 
 #: Batches of this many rows or more show a progress bar (on a terminal).
 PROGRESS_ROWS = 10000
@@ -73,7 +73,7 @@ class BatchError(ValueError):
     """The file as a whole cannot be used (one line, naming the file)."""
 
 
-def _unread_lookalikes(path, header, names, known):
+def _unread_lookalikes(path, header, names, known, table=None):
     """Refuse a column that looks like an input but would not be read: a parameter's
     name with a unit in it ('radius [mm]', 'load_kN', 'E (GPa)') or a close spelling
     ('lode', 'raduis'), when that parameter is not itself a column. Units go in the
@@ -81,13 +81,12 @@ def _unread_lookalikes(path, header, names, known):
     import difflib
     import re
 
-    from .compute import all_fields
-
+    table = table or CALC
+    BY_NAME = table.by_name
     # a file written by the calculator (it ends with the 'error' column) holds its
     # result columns, named like inputs with units (force_kN): those are not inputs
     rerun = any(re.sub(r"^result[0-9]*_", "", h) == "error" for h in names)
-    results = {_col_name(f, si).lower() for f in all_fields()
-               for si in (False, True)} | set(_TEXT_RESULTS) if rerun else set()
+    results = table.result_names() if rerun else set()
     earlier = []
     for j, h in enumerate(names):
         if h in BY_NAME or not h:
@@ -279,8 +278,57 @@ class _Progress:
             self.bar.close()
 
 
-def run_batch(args, argv, specs, options):
-    """The batch command; returns the exit status (2 if any row failed)."""
+class _CalcTable:
+    """What the batch loop asks of ``linecontact calc``: its parameters, the rules
+    (:func:`~linecontact.calc.cases.parse_cases`), the evaluation
+    (:func:`~linecontact.calc.compute.compute`), the result columns and the JSON
+    header. A subcommand (:class:`linecontact.calc.command.Command`) answers the same
+    questions, so that every batch follows the same rules."""
+
+    name = "calc"
+    parameters = PARAMETERS
+    by_name = BY_NAME
+    #: Columns whose cell may hold a sweep by mistake ('1kN:2kN:3'): said as such.
+    sweep_columns = ("load", "depth")
+
+    @staticmethod
+    def parse(cells, n, label):
+        return parse_cases(cells, n, label=label)
+
+    @staticmethod
+    def evaluate(cases, errors, args, specs, progress):
+        return compute(cases, errors, specs, first_only=args.model is None,
+                       progress=progress, label=lambda name: name)
+
+    @staticmethod
+    def layout(results, cases, si):
+        return _result_layout(results, cases, si, len(results.sets) > 1)
+
+    @staticmethod
+    def header(argv, results):
+        return render.json_header(argv, results)
+
+    @staticmethod
+    def result_names():
+        """Every name a result column of this command may have (a rerun's own)."""
+        from .compute import all_fields
+
+        return {_col_name(f, si).lower() for f in all_fields()
+                for si in (False, True)} | set(_TEXT_RESULTS)
+
+
+#: The calculator's own table (the default of :func:`run_batch`).
+CALC = _CalcTable()
+
+
+def run_batch(args, argv, specs, options, table=CALC):
+    """The batch command; returns the exit status (2 if any row failed).
+
+    `table`: the command whose rows these are (:data:`CALC`, or a subcommand's
+    :class:`~linecontact.calc.command.Command`): its parameters, rules, evaluation
+    and result columns; the reading, the checks of the file and of the options
+    against the cells, and the writing are the same for every command."""
+    PARAMETERS, BY_NAME = table.parameters, table.by_name
     header, body, lines = read_table(args.csv)
     n = len(body)
     names = [h.strip().lower() for h in header]
@@ -290,7 +338,7 @@ def run_batch(args, argv, specs, options):
             if h in known:
                 raise BatchError(f"{str(args.csv)!r}: column {header[j]!r} appears twice")
             known[h] = j
-    earlier = _unread_lookalikes(args.csv, header, names, known)
+    earlier = _unread_lookalikes(args.csv, header, names, known, table)
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
@@ -339,7 +387,7 @@ def run_batch(args, argv, specs, options):
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})
-    cases, present, errors = parse_cases(cells, n, label=lambda name: name)
+    cases, present, errors = table.parse(cells, n, lambda name: name)
     _refuse_conflicts(cases, cells, conflicts, errors)
     if not flat:  # a row with more cells than the header: its cells are shifted or
         # split (a decimal comma), so that error comes before any other of the row
@@ -350,7 +398,7 @@ def run_batch(args, argv, specs, options):
                     f"at most {len(names)} cells, one per header column",
                     f"{len(r)} cells under a header of {len(names)} columns (a decimal "
                     "comma, or a missing header name?)"))
-    for name in ("load", "depth"):  # a sweep in a cell: say so, not just "not a number"
+    for name in table.sweep_columns:  # a sweep in a cell: say so, not just "not a number"
         col = cells.get(name)
         if col is None or ":" not in "".join(col):
             continue
@@ -358,34 +406,33 @@ def run_batch(args, argv, specs, options):
             if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):
                 errors[i] = str(InputError(name, c, "one value per row in a batch",
                                            "a sweep"))
-    first_only = args.model is None
-    progress = _Progress(n, args.progress if args.progress is not None
+    progress = _Progress(n, getattr(args, "progress", None)
+                         if getattr(args, "progress", None) is not None
                          else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
     try:
-        results = compute(cases, errors, specs, first_only=first_only, progress=progress,
-                          label=lambda name: name)
+        results = table.evaluate(cases, errors, args, specs, progress)
     finally:
         progress.close()
     si = args.si or args.json
-    multi = len(results.sets) > 1
-    out_cols, getters = _result_layout(results, cases, si, multi)
+    out_cols, getters = table.layout(results, cases, si)
     out_names = result_columns(out_cols, header)
     if earlier:  # a rerun on an output: say once what its result columns are
         prefix = out_names[-1][:-len(out_cols[-1])]
         shown = ", ".join(earlier[:3]) + (", ..." if len(earlier) > 3 else "")
-        print(f"{render.PROG} calc: note: {len(earlier)} columns of {str(args.csv)!r} "
+        print(f"{render.PROG} {table.name}: note: {len(earlier)} columns of {str(args.csv)!r} "
               f"are results of an earlier run ({shown}): not read as inputs, written "
               f"back as they were; this run's results follow"
               + (f" as the {prefix}* columns" if prefix else ""), file=sys.stderr)
     if args.json:
-        text = _json(argv, results, header, body, out_names, getters, width)
+        text = _json(table.header(argv, results), header, body, out_names, getters,
+                     width)
     else:
         text = _csv(header, body, lines, out_names, getters, width)
     render.write(text, args.output)
     n_failed = len(errors) - errors.count("")
     if n_failed:
-        print(f"{render.PROG} calc: error: {n_failed} of {n} rows failed; see the "
-              "'error' column", file=sys.stderr)
+        print(f"{render.PROG} {table.name}: error: {n_failed} of {n} rows failed; see "
+              "the 'error' column", file=sys.stderr)
         return 2
     return 0
 
@@ -683,10 +730,9 @@ def _csv(header, body, lines, out_names, getters, width):
     return head + "\n".join(out)
 
 
-def _json(argv, results, header, body, out_names, getters, width):
+def _json(doc, header, body, out_names, getters, width):
     import json
 
-    doc = render.json_header(argv, results)
     rows = []
     for i, r in enumerate(body):
         row = {}

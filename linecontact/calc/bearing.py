@@ -145,7 +145,7 @@ def _value(name, text, label):
 
 def _estar(v, label):
     from ..classical import effective_modulus
-    from ..validity import CombinationError
+    from ..errors import CombinationError
 
     if v["estar"] is not None:
         if any(v[k] is not None for k in ("modulus", "poisson", "modulus2", "poisson2")):
@@ -169,7 +169,7 @@ def _estar(v, label):
 def solve_one(cells, label=option_name):
     """(bearing, solution) from the typed cells of one bearing (name -> text)."""
     from ..bearing import RadialRollerBearing
-    from ..validity import OutOfRangeError
+    from ..errors import OutOfRangeError
 
     v = {p.name: _value(p.name, cells.get(p.name), label) for p in PARAMETERS}
     for need in ("rollers", "pitch_diameter", "roller_diameter", "length", "radial_load"):
@@ -185,7 +185,7 @@ def solve_one(cells, label=option_name):
                             model=v["model"], profile=v["profile"], rating=v["rating"],
                             **kw)
     if v["tilting_moment"] is not None and v["misalignment"] is not None:
-        from ..validity import CombinationError
+        from ..errors import CombinationError
 
         raise CombinationError({label("tilting_moment"): v["tilting_moment"],
                                 label("misalignment"): v["misalignment"]},
@@ -197,7 +197,8 @@ def solve_one(cells, label=option_name):
 
 def summary(s):
     """The one-bearing outputs (FIELDS order), SI; the tilt stiffnesses None under a
-    law (no tilt), the stresses None where not computed."""
+    law (no tilt), the stresses None where not computed or not converged (an
+    edge-loaded roller: the notes say why)."""
     K = s.stiffness
     two = K.shape == (2, 2)
     st = s.stress or {}
@@ -219,8 +220,9 @@ def summary(s):
     }
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         w = st.get(m)
-        out[m] = w["value"] if w else None
-        out[f"{m}_depth"] = w["depth"] if w else None
+        shown = w and "withheld" not in w     # an edge-loaded roller's: "-", see notes
+        out[m] = w["value"] if shown else None
+        out[f"{m}_depth"] = w["depth"] if shown else None
     return out
 
 

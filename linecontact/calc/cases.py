@@ -31,7 +31,8 @@ from .._units import parse_column
 from .feature import RAW_KINDS, Fail, Parameter, bounds_of, option_name
 from .features import FEATURES
 
-__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases", "likely_cause"]
+__all__ = ["CORE", "PARAMETERS", "BY_NAME", "Cases", "parse_cases", "parse_columns",
+           "likely_cause"]
 
 _CYL = "cylinder (roller)"
 _BODY = "second body and materials"
@@ -148,9 +149,26 @@ def parse_cases(cells, n, label=option_name):
         ``""`` for a good row, else the first problem of that row (one line: the
         parameter, the value as typed, the valid range).
     """
+    values, present, raw, errors = parse_columns(PARAMETERS, cells, n, label)
+    cases = Cases(n, values, present, raw)
+    cases.label = label
+    _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
+    return cases, present, errors
+
+
+def parse_columns(parameters, cells, n, label=option_name):
+    """The cells of each of `parameters` as SI arrays (the unit rules of
+    :mod:`linecontact._units` and the per-unit factors applied once per column).
+
+    Returns (values, present, raw, errors): name -> SI float array (NaN where not
+    given or refused) or the cells as typed (:data:`RAW_KINDS`); name -> bool array
+    (given); name -> the cells as given; the first problem of each row (``""``: none).
+    The rules between parameters are the caller's (:func:`parse_cases`, a
+    subcommand's ``resolve``).
+    """
     errors = [""] * n
     values, present, raw = {}, {}, {}
-    for p in PARAMETERS:
+    for p in parameters:
         col = cells.get(p.name)
         if col is None:
             values[p.name] = [""] * n if p.kind in RAW_KINDS else np.full(n, np.nan)
@@ -209,10 +227,7 @@ def parse_cases(cells, n, label=option_name):
             for j in rows:
                 if not errors[j]:
                     errors[j] = u_errors[j if inv is None else inv[j]]
-    cases = Cases(n, values, present, raw)
-    cases.label = label
-    _resolve(cases, errors, Fail(errors, raw, label, not label("load").startswith("--")))
-    return cases, present, errors
+    return values, present, raw, errors
 
 
 def _resolve(cases, errors, fail):

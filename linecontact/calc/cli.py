@@ -26,8 +26,11 @@ Where things are
 
 Adding options and output: a feature (see :mod:`linecontact.calc.feature`); its
 parameters become ``--options``, CSV columns and ``--help`` sections here with no
-change to this module. A flag that is not a value (like ``--linear``) or a subcommand is
-added in :func:`build_parser` below.
+change to this module. A subcommand (``linecontact bearing``) is one module of
+:mod:`linecontact.calc.subcommands` plus its line in ``SUBCOMMANDS`` (the shape:
+:class:`linecontact.calc.feature.Subcommand`): its parser, one case, sweeps, batch,
+JSON and ``--plot`` are this module's and :mod:`linecontact.calc.command`'s. A flag
+that is not a value (like ``--linear``) is added in :func:`build_parser` below.
 
 Inputs
     Values may carry ONE unit name ("5mm", "0.2 in", "210 GPa", "1kN"); bare numbers are
@@ -163,16 +166,67 @@ def build_parser():
                      "rows or more, on a terminal)")
     out.add_argument("--no-progress", dest="progress", action="store_false",
                      help="no progress bar")
-    from .bearing import add_parser as add_bearing
-
-    add_bearing(sub)
+    for command in _commands().values():
+        _add_command(sub, command)
     return parser
 
 
-def _value_options():
-    from .bearing import PARAMETERS as BEARING
+def _commands():
+    """name -> :class:`~linecontact.calc.command.Command` of every registered
+    subcommand (:data:`linecontact.calc.subcommands.SUBCOMMANDS`)."""
+    from .command import Command
+    from .subcommands import SUBCOMMANDS
 
-    return {option_name(p.name) for p in PARAMETERS + BEARING}
+    return {m.name: Command(m) for m in SUBCOMMANDS}
+
+
+class _Renamed(argparse.Action):
+    """An option renamed to the calculator's: refused with the new name."""
+
+    def __init__(self, *args, now="", **kwargs):
+        self.now = now
+        super().__init__(*args, **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        parser.error(f"{option_string} is now {self.now}")
+
+
+def _add_command(sub, command):
+    """A subcommand's parser: its parameters (one option each, in their groups) and
+    the calculator's output options."""
+    m = command.module
+    p = sub.add_parser(command.name, help=m.help, description=m.description,
+                       epilog=m.epilog)
+    p.add_argument("csv", nargs="?", metavar="FILE.csv", help="batch: one case per row")
+    groups = {}
+    for q in command.parameters:
+        if q.group not in groups:
+            groups[q.group] = p.add_argument_group(q.group)
+        groups[q.group].add_argument(option_name(q.name), dest=q.name, metavar="VALUE",
+                                     help=f"{q.help} [{q.kind}]")
+    out = p.add_argument_group("output")
+    out.add_argument("--linear", action="store_true",
+                     help="linear instead of geometric sweep spacing")
+    out.add_argument("--si", action="store_true", help="output in SI units")
+    out.add_argument("--json", action="store_true", help="machine-readable JSON (SI units)")
+    out.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    out.add_argument("--plot", metavar="FILE", help="also draw the case (one case or a "
+                     "sweep); PNG, SVG or PDF by the extension; needs matplotlib (pip "
+                     "install 'linecontact[plot]')")
+    out.add_argument("--figure", action=_Renamed, now="--plot FILE (PNG, SVG or PDF by "
+                     "the extension), as in linecontact calc", help=argparse.SUPPRESS)
+    out.add_argument("--progress", dest="progress", action="store_true", default=None,
+                     help="progress bar on stderr for a batch")
+    out.add_argument("--no-progress", dest="progress", action="store_false",
+                     help="no progress bar")
+    return p
+
+
+def _value_options():
+    names = {p.name for p in PARAMETERS}
+    for c in _commands().values():
+        names |= {p.name for p in c.parameters}
+    return {option_name(n) for n in names}
 
 
 _VALUE_OPTIONS = _value_options()
@@ -195,19 +249,20 @@ def _join_negative_values(argv):
     return out
 
 
-def sweep_cells(raw, linear=False):
+def sweep_cells(raw, linear=False, parameters=PARAMETERS):
     """Cells of a command line with sweeps: name -> ndarray of SI floats (a sweep, or
     the grid of several: every combination, the first varying slowest) or list of str.
 
     Returns (cells, n). A sweep of a signed quantity whose range includes zero or a
     negative end is spaced linearly (a geometric one has no such values).
+    `parameters`: the command's (default: the calculator's).
     """
     import numpy as np
 
     from .._units import parse_quantity, parse_sweep
 
     sweeps = {}
-    for p in PARAMETERS:
+    for p in parameters:
         text = raw.get(p.name)
         if not (p.sweep and p.kind not in RAW_KINDS and text is not None and ":" in text):
             continue
@@ -251,8 +306,8 @@ def _calc_one(args, argv, specs):
     if bad:  # an unexpected failure of a model, or a feature's one-case refusal
         raise _Failed(bad)
     if args.plot is not None:  # refuse a bad file name before anything is written
+        from ..errors import OutOfRangeError
         from ..plot import FORMATS
-        from ..validity import OutOfRangeError
         if args.plot.rsplit(".", 1)[-1].lower() not in FORMATS:
             raise OutOfRangeError("--plot", args.plot, "a name ending in .png, .svg "
                                   "or .pdf")
@@ -269,6 +324,39 @@ def _calc_one(args, argv, specs):
         _error(notes[0] if notes else "no model selected")
         return 2
     return 0
+
+
+def _command_one(command, args, argv):
+    """A subcommand's one case or sweep: its text (or JSON), and the figure."""
+    from . import render
+
+    raw = {p.name: getattr(args, p.name) for p in command.parameters}
+    cells, n = sweep_cells(raw, args.linear, command.parameters)
+    cases, present, errors = command.parse(cells, n)
+    if errors[0]:
+        raise _Failed(errors[0])
+    results = command.evaluate(cases, errors)
+    bad = next((e for e in errors if e), "")
+    if bad:
+        raise _Failed(bad)
+    _check_plot_name(args.plot)
+    if args.json:
+        render.write(command.json(argv, cases, present, results), args.output)
+    else:
+        render.write(command.text(cases, results, args.si), args.output)
+    if args.plot is not None:
+        command.draw(results, args.plot)
+    return 0
+
+
+def _check_plot_name(path):
+    """Refuse a --plot file name of no known format before anything is written."""
+    if path is None:
+        return
+    from ..plot import FORMATS
+    from ..errors import OutOfRangeError
+    if path.rsplit(".", 1)[-1].lower() not in FORMATS:
+        raise OutOfRangeError("--plot", path, "a name ending in .png, .svg or .pdf")
 
 
 class _Failed(Exception):
@@ -290,39 +378,46 @@ def main(argv=None):
     if args.command is None:
         parser.print_help(sys.stderr)
         return 2
-    if args.command == "bearing":
-        return _bearing(args, argv)
+    name = args.command
+    command = None if name == "calc" else _commands()[name]
+    parameters = PARAMETERS if command is None else command.parameters
     try:
-        from .compute import parse_model_option
-
-        specs = parse_model_option(args.model)
         from . import render
 
+        if command is None:
+            from .compute import parse_model_option
+
+            specs = parse_model_option(args.model)
+        else:
+            specs = None
         render.refuse_input_as_output(args.output, [args.csv] + [
-            getattr(args, p.name) for p in PARAMETERS if p.kind == "path"])
+            getattr(args, p.name) for p in parameters if p.kind == "path"])
         if args.csv is not None:
-            from .batch import run_batch
+            from .batch import CALC, run_batch
 
             if getattr(args, "plot", None) is not None:
                 raise _Failed("--plot draws one case or a sweep, not a CSV batch (read "
                               "the batch's output into linecontact.plot instead)")
 
-            options = {p.name: getattr(args, p.name) for p in PARAMETERS}
-            return run_batch(args, argv, specs, options)
+            options = {p.name: getattr(args, p.name) for p in parameters}
+            return run_batch(args, argv, specs, options,
+                             CALC if command is None else command)
+        if command is not None:
+            return _command_one(command, args, argv)
         return _calc_one(args, argv, specs)
     except _Failed as exc:
-        _error(str(exc))
+        _error(str(exc), name)
         return 2
     except ValueError as exc:
         # InputError, BatchError (ours) or the library's OutOfRangeError
         from .._units import InputError
-        from ..validity import CombinationError, OutOfRangeError, UnknownNameError
+        from ..errors import CombinationError, OutOfRangeError, UnknownNameError
         from .batch import BatchError
 
         if not isinstance(exc, (InputError, OutOfRangeError, BatchError, CombinationError,
                                 UnknownNameError)):
             raise
-        _error(str(exc))
+        _error(str(exc), name)
         return 2
     except BrokenPipeError:  # the reader stopped early (`| head`): stop quietly
         import os
@@ -336,31 +431,10 @@ def main(argv=None):
 
         if not isinstance(exc, MissingDependencyError):
             raise
-        _error(str(exc))
+        _error(str(exc), name)
         return 2
     except OSError as exc:  # the output file (render.OutputError names it) and others
-        name = getattr(exc, "filename", None)
+        fname = getattr(exc, "filename", None)
         reason = exc.strerror or str(exc) or type(exc).__name__
-        _error(f"{name!r}: {reason}" if name else reason)
-        return 2
-
-
-def _bearing(args, argv):
-    """``linecontact bearing``: bad input is one line on stderr, status 2."""
-    from .bearing import run
-
-    try:
-        return run(args, argv)
-    except ValueError as exc:  # InputError, OutOfRangeError, CombinationError, ...
-        _error(str(exc).splitlines()[0] if str(exc) else type(exc).__name__, "bearing")
-        return 2
-    except BrokenPipeError:
-        import os
-
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 1
-    except OSError as exc:
-        name = getattr(exc, "filename", None)
-        reason = exc.strerror or str(exc) or type(exc).__name__
-        _error(f"{name!r}: {reason}" if name else reason, "bearing")
+        _error(f"{fname!r}: {reason}" if fname else reason, name)
         return 2

@@ -12,7 +12,7 @@ Cases (:func:`linecontact.calc.cases.parse_cases`) are grouped by distinct conta
 (effective radius, length, E*): one model object per group and model, each evaluated
 once per group on the array of its loads or depths with
 :meth:`linecontact.models.ContactModel.evaluate`. A model that refuses some elements
-(:class:`~linecontact.validity.OutOfRangeError`) is re-evaluated on halves of the
+(:class:`~linecontact.errors.OutOfRangeError`) is re-evaluated on halves of the
 array until the refused elements are isolated: each of them gets the model's message as
 its ``note``, the others their values. Any other exception is reported the same way,
 in the row's ``error`` (never lost, never stopping the other rows). Then each active
@@ -221,7 +221,7 @@ def _build(specs, R, L, E, first_only, default_key=None):
     """
     from .. import models
     from .._units import InputError
-    from ..validity import OutOfRangeError, UnknownNameError
+    from ..errors import OutOfRangeError, UnknownNameError
 
     if specs is None:
         if first_only and default_key is not None:
@@ -319,7 +319,7 @@ def _safe_evaluate(evaluate, label, given, values, notes, errors, idx, describe=
     describe = describe or (lambda exc, row: str(exc))
     import sys
 
-    from ..validity import CombinationError, OutOfRangeError
+    from ..errors import CombinationError, OutOfRangeError
 
     def converged(exc):
         roller = sys.modules.get("linecontact.roller")  # imported only by a slice model
@@ -784,7 +784,7 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
     (a Refused stand-in where the library refuses the model for this contact), or
     (None, None) with the rows' errors set when the library refuses the combination
     whatever the model (raceways that do not fit, ...)."""
-    from ..validity import CombinationError, OutOfRangeError
+    from ..errors import CombinationError, OutOfRangeError
 
     parts = dict(_core_parts(cases, i0), **extra)
     try:
@@ -852,7 +852,7 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
     given = cases.given[g]
     values = cases.value[g]
     if text is None and not isinstance(obj, Refused):
-        from ..validity import OutOfRangeError
+        from ..errors import OutOfRangeError
 
         try:
             obj.check_applicable()  # refused for the whole cylinder: one message

@@ -37,7 +37,7 @@ How to add a feature (one module + one registration line)
            parameter as written (``--tilt`` or the column ``tilt``), ``fail.cell(name,
            i)`` its text in row i, ``fail.batch`` True for a CSV batch,
            ``fail.message(mask, text)`` refuses with a library's own one-line message
-           (a :class:`~linecontact.validity.CombinationError`). Return None
+           (a :class:`~linecontact.errors.CombinationError`). Return None
            when none of the feature's inputs is given (the feature is then inactive and
            costs nothing: import heavy modules inside ``columns``/``blocks``), else a
            :class:`State` whose ``rows`` marks where it is active.
@@ -70,9 +70,52 @@ How to add a feature (one module + one registration line)
     JSON renderers pick it up. A test: ``tests/test_cli.py`` runs every option in a
     batch and on the command line.
 
-A subcommand (e.g. ``linecontact bearing``) is not a feature: add it in
-:func:`linecontact.calc.cli.build_parser` (a sub-parser and a function); reuse
-:func:`linecontact.calc.cases.parse_cases` and the renderers where they fit.
+Adding a subcommand is one module plus one line
+    A subcommand (``linecontact bearing``) is a question of its own, with its own
+    inputs and results, on the same machinery (:mod:`linecontact.calc.command`).
+    1. Write ``linecontact/calc/subcommands/NAME.py`` with these module-level names
+       (the :class:`Subcommand` protocol):
+
+       ``name``, ``help``, ``description``, ``epilog``
+           ``linecontact NAME``, its line in ``linecontact --help``, its ``--help``.
+       ``parameters``
+           A tuple of :class:`Parameter`, as a feature's: each is an option
+           ``--NAME``, a CSV column ``NAME`` and a ``--help`` entry (under its
+           ``group``), parsed to SI by the unit rules; sweeps come for free.
+       ``fields``
+           Mapping output name -> :class:`Field`: the batch's columns (``NAME_UNIT``),
+           the JSON's units, the one-case list.
+       ``notes``
+           Mapping key -> one paragraph (the JSON header's notes, printed under the
+           table).
+       ``resolve(values, present, fail) -> State``
+           The input rules over all rows, as a feature's (``fail`` refuses rows with
+           one line); the State is handed to ``solve``.
+       ``solve(values, i, state) -> object``
+           Row i: ask the library. A library refusal (a ``ValueError`` of
+           :mod:`linecontact.errors` or :mod:`linecontact._units`) is the row's
+           error; no physics here.
+       ``row(obj, state, i) -> dict``
+           Field name -> SI value (None: not defined), plus ``"model_used"`` (the method),
+           ``"notes"`` (list of str) and ``"note"`` (them joined, the batch's cell).
+       ``model_of(obj) -> (key, label, provenance)``
+           The JSON header's entry of the row's model.
+       ``describe(obj, si) -> str``, ``blocks(obj) -> list[Block]``
+           One case's first line, and its extra tables (e.g. one row per roller).
+       ``to_json(obj) -> dict``
+           One case's full result for ``--json`` (SI).
+       ``figure(objects) -> matplotlib Figure``
+           ``--plot FILE``: the computed cases drawn by :mod:`linecontact.plot`.
+
+    2. Add the module to the tuple :data:`linecontact.calc.subcommands.SUBCOMMANDS`.
+
+    That is all: the parser (``--si``, ``--json``, ``-o``, ``--plot``, ``--linear``,
+    each option once), the one-case text and JSON (the calculator's header), the CSV
+    batch with every rule of ``calc`` (:func:`linecontact.calc.batch.run_batch`:
+    docs/batch.md, docs/inputs.md) and the DataFrame
+    (:func:`linecontact.calc.frame.command_frame`) pick it up; its batch is held to
+    the calculator's input-rule tests (tests/test_calc_inputs.py, parametrised over
+    the commands).
 """
 
 from __future__ import annotations
@@ -84,7 +127,8 @@ import re
 
 import numpy as np
 
-__all__ = ["Parameter", "Field", "State", "Block", "Feature", "Fail", "option_name",
+__all__ = ["Parameter", "Field", "State", "Block", "Feature", "Subcommand", "Fail",
+           "option_name",
            "bounds_of", "RAW_KINDS", "each", "short", "flag_text",
            "DEPTH_OVER_RADIUS_MAX", "HALF_WIDTH_OVER_LENGTH_MAX"]
 
@@ -122,7 +166,7 @@ class Parameter:
     positive : bool
         Values must be > 0 (otherwise any finite number, e.g. a concave radius < 0).
     bounds : str, optional
-        Name of a :mod:`linecontact.validity` Interval the value must lie in.
+        Name of a :mod:`linecontact.checks` Interval the value must lie in.
     sweep : bool
         May be a sweep ``START:STOP:N`` on the command line (every numeric parameter
         may: two sweeps give the grid).
@@ -285,9 +329,9 @@ def bounds_of(p):
     """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
-    from .. import validity
+    from .. import checks
 
-    iv = getattr(validity, p.bounds)
+    iv = getattr(checks, p.bounds)
     return (iv.contains, iv.describe())
 
 
@@ -309,12 +353,41 @@ class Feature(Protocol):
     def blocks(self, state: State, results: Any) -> list: ...
 
 
+class Subcommand(Protocol):
+    """What a subcommand module provides (see the module docstring)."""
+
+    name: str
+    help: str
+    description: str
+    epilog: str
+    parameters: Sequence[Parameter]
+    fields: Mapping[str, Field]
+    notes: Mapping[str, str]
+
+    def resolve(self, values: Mapping[str, Any], present: Mapping[str, np.ndarray],
+                fail: Fail) -> State: ...
+
+    def solve(self, values: Mapping[str, Any], i: int, state: State) -> Any: ...
+
+    def row(self, obj: Any, state: State, i: int) -> dict: ...
+
+    def model_of(self, obj: Any) -> tuple: ...
+
+    def describe(self, obj: Any, si: bool) -> str: ...
+
+    def blocks(self, obj: Any) -> list: ...
+
+    def to_json(self, obj: Any) -> dict: ...
+
+    def figure(self, objects: Sequence[Any]) -> Any: ...
+
+
 def each(func, idx, notes, width=1, missing=""):
     """func(sub-index array) -> values (`width` per element, flattened), element by
     element where a call is refused (its reason in ``notes[k]``); returns shape (n,) or
     (n, width), NaN where refused. A missing file (a table not installed) is said in
     every note: `missing`, or the file name."""
-    from ..validity import OutOfRangeError
+    from ..errors import OutOfRangeError
 
     shape = (idx.size,) if width == 1 else (idx.size, width)
     try:

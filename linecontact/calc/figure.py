@@ -65,3 +65,15 @@ def draw_results(results, path):
         ax.grid(True, lw=0.3)
         ax.legend(fontsize=7)
     return plot.save(fig, path)
+
+
+def draw_command(command, results, path):
+    """``linecontact SUBCOMMAND ... --plot FILE``: the subcommand's figure of the
+    computed cases (its module's ``figure``, drawn by :mod:`linecontact.plot`), saved
+    to `path` (png, svg or pdf). Returns the path written."""
+    from .. import plot
+
+    objects = [o for o in results.objects if o is not None]
+    if not objects:
+        raise ValueError("--plot: nothing to draw (no case computed)")
+    return plot.save(command.module.figure(objects), path)

@@ -21,6 +21,9 @@ and read back.
 - ``result.attrs["linecontact"]`` holds the batch's JSON header (version, units of
   every column, notes, the models' provenance).
 
+:func:`command_frame` does the same for a subcommand's batch (``command_frame("bearing",
+cases)``: ``linecontact bearing FILE.csv``).
+
 pandas is optional (``pip install 'linecontact[pandas]'``) and imported only here,
 never on the one-case path.
 
@@ -47,7 +50,7 @@ from pathlib import Path
 
 from .cases import PARAMETERS
 
-__all__ = ["calc_frame"]
+__all__ = ["calc_frame", "command_frame"]
 
 
 def _cell(value):
@@ -92,25 +95,85 @@ def calc_frame(cases, *, model=None, **options):
         A frame the batch refuses as a whole, or an option value it refuses (one line,
         naming it); an unknown option name.
     """
-    import pandas as pd
-
-    from .batch import run_batch
+    from .batch import CALC
     from .compute import parse_model_option
+
+    _check_frame(cases, PARAMETERS, "calc_frame", ["cases", "model"], options)
+    specs = parse_model_option(model)
+    return _run(CALC, cases, options, specs, model)
+
+
+def command_frame(command, cases, **options):
+    """A subcommand's batch (``linecontact bearing FILE.csv``) on a DataFrame, by
+    exactly that batch's rules (see the module docstring).
+
+    Parameters
+    ----------
+    command : str
+        The subcommand's name (:data:`linecontact.calc.subcommands.SUBCOMMANDS`), e.g.
+        ``"bearing"``.
+    cases : pandas.DataFrame
+        One case per row; columns named like the subcommand's options without the
+        dashes (``pitch_diameter``).
+    **options
+        Values for empty or missing cells, by parameter name.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The user's columns, then the result columns [SI], same index and row order.
+
+    Raises
+    ------
+    ValueError
+        An unknown command; a frame the batch refuses as a whole, or an option value
+        it refuses (one line, naming it); an unknown option name.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> out = command_frame("bearing", pd.DataFrame({"radial_load": ["5kN", "10kN"]}),
+    ...                     rollers=14, pitch_diameter="70mm", roller_diameter="11mm",
+    ...                     length="11mm")
+    >>> [f"{q:.0f} N" for q in out["max_roller_load_N"]]
+    ['1455 N', '2914 N']
+    """
+    from .command import Command
+    from .subcommands import SUBCOMMANDS
+
+    by_name = {m.name: m for m in SUBCOMMANDS}
+    if command not in by_name:
+        from ..errors import UnknownNameError
+        raise UnknownNameError("command", command, sorted(by_name))
+    table = Command(by_name[command])
+    _check_frame(cases, table.parameters, "command_frame", ["command", "cases"], options)
+    return _run(table, cases, options, None, None)
+
+
+def _check_frame(cases, parameters, func, keywords, options):
+    import pandas as pd
 
     if not isinstance(cases, pd.DataFrame):
         raise TypeError(f"cases must be a pandas DataFrame, not {type(cases).__name__}")
-    known = {p.name for p in PARAMETERS}
+    known = {p.name for p in parameters}
     unknown = sorted(set(options) - known)
     if unknown:
-        from ..validity import UnknownKeywordError
-        raise UnknownKeywordError("calc_frame", unknown[0],
-                                  ["cases", "model", *sorted(known)])
+        from ..errors import UnknownKeywordError
+        raise UnknownKeywordError(func, unknown[0], [*keywords, *sorted(known)])
     if len(cases) == 0:
         raise ValueError("cases: the DataFrame has no rows; expected one case per row")
+
+
+def _run(table, cases, options, specs, model):
+    """The batch of `table` (the calculator's or a subcommand's) on the frame's cells,
+    JSON output (SI, full precision) read back into the frame's columns."""
+    import pandas as pd
+
+    from .batch import run_batch
+
     header = [str(c) for c in cases.columns]
-    specs = parse_model_option(model)
     opts = {p.name: (None if options.get(p.name) is None else _cell(options[p.name]))
-            for p in PARAMETERS}
+            for p in table.parameters}
     with tempfile.TemporaryDirectory(prefix="linecontact-frame-") as folder:
         src, dst = Path(folder, "cases.csv"), Path(folder, "results.json")
         with open(src, "w", newline="", encoding="utf-8") as fh:
@@ -122,7 +185,7 @@ def calc_frame(cases, *, model=None, **options):
                                   json=True, output=str(dst), plot=None, linear=False)
         # the batch's "N of M rows failed" line: the error column says it, row by row
         with contextlib.redirect_stderr(io.StringIO()):
-            run_batch(args, ["calc", "<DataFrame>"], specs, opts)
+            run_batch(args, [table.name, "<DataFrame>"], specs, opts, table)
         doc = json.loads(dst.read_text(encoding="utf-8"))
     rows = doc.pop("rows")
     names = [k for k in rows[0] if k not in set(header)] if rows else []

@@ -23,7 +23,8 @@ from .compute import CONTACT_COLUMNS, P0_NOTE, all_fields, model_id
 from .features import FEATURES
 
 __all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
-           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write"]
+           "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write",
+           "clean_json", "command_text"]
 
 #: Every output column (the core's and the features').
 FIELDS = all_fields()
@@ -113,13 +114,14 @@ def _jsonable(obj):
         return str(obj)
 
 
-def json_header(argv, results):
-    """The one JSON header of every command (see the module docstring)."""
+def json_header(argv, results, fields=None, notes=None):
+    """The one JSON header of every command (see the module docstring); `fields` and
+    `notes`: a subcommand's own (default: the calculator's)."""
     return {
         "linecontact_version": _version(),
         "command": [PROG] + list(argv),
-        "units": {name: f.si for name, f in FIELDS.items()},
-        "notes": dict(NOTES),
+        "units": {name: f.si for name, f in (FIELDS if fields is None else fields).items()},
+        "notes": dict(NOTES if notes is None else notes),
         "models": [
             {
                 "key": m.key,
@@ -182,6 +184,7 @@ def _typed(cases, name):
 
 #: Units of a swept input in the table: kind -> (engineering unit, factor from SI).
 _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
+                "moment": ("N m", 1.0),
                 "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0),
                 "surface_energy": ("mJ/m^2", 1e3)}
 
@@ -327,6 +330,78 @@ def one_json(argv, cases, present, results):
         doc.setdefault(b.name, []).append({"label": label, "rows": b.json_rows,
                                            "units": dict(b.units)})
     return json.dumps(doc, indent=2) + "\n"
+
+
+def clean_json(x):
+    """JSON-safe: NaN and infinities (an edge-loaded roller's peak pressure, an
+    infinite life) become null, numpy scalars and arrays plain numbers and lists."""
+    if isinstance(x, dict):
+        return {str(k): clean_json(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [clean_json(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return clean_json(x.tolist())
+    if hasattr(x, "item") and not isinstance(x, (str, bytes)):
+        x = x.item()
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
+
+
+def command_text(command, cases, results, si):
+    """Plain text of a subcommand (:class:`linecontact.calc.command.Command`): one
+    case as its description, its fields one per line and the module's tables (its
+    blocks); a sweep as one row per case (the swept inputs, then the fields); then the
+    command's notes and each case's own."""
+    from .._units import DIMENSIONS
+
+    module, fields = command.module, command.fields
+    n = cases.n
+    lines = []
+    if n == 1:
+        obj, row = results.objects[0], results.rows[0]
+        lines += [module.describe(obj, si), f"model: {row.get('model_used', '')}", ""]
+        table = []
+        optional = getattr(module, "optional", ())
+        for name, f in fields.items():
+            v = row.get(name)
+            if v is None and name in optional:
+                continue  # an output asked for by its options only (the case check)
+            table.append([f"  {f.heading}",
+                          fmt(None if v is None else (v if si else v * f.factor)),
+                          f.si if si else f.eng])
+        lines += aligned(table)
+        text = blocks_text(module.blocks(obj), "load", si)
+        lines += text.rstrip("\n").split("\n") if text else []
+    else:
+        swept = []
+        for p in command.parameters:
+            col = cases.cells.get(p.name)
+            if isinstance(col, np.ndarray) and len(col) > 1 and np.any(col != col[0]):
+                swept.append((p, col))
+        shown = [k for k in fields if any(r is not None and r.get(k) is not None
+                                          for r in results.rows)]
+        header = (["case"] + [f"{p.name.replace('_', ' ')} ["
+                              f"{(DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]) or '-'}]"
+                              for p, _ in swept]
+                  + [f"{fields[k].heading} [{fields[k].si if si else fields[k].eng}]"
+                     for k in shown] + ["note"])
+        table = [header]
+        for i in range(n):
+            row = results.rows[i] or {}
+            cells = [str(i + 1)]
+            cells += [fmt(float(col[i]) if si else float(col[i]) * _INPUT_UNITS[p.kind][1])
+                      for p, col in swept]
+            for k in shown:
+                v = row.get(k)
+                cells.append(fmt(None if v is None else
+                                 (v if si else v * fields[k].factor)))
+            table.append(cells + [row.get("note", "")])
+        lines += aligned(table)
+    lines += [""] + [f"Note: {t}" for t in command.notes.values()]
+    if n == 1:
+        lines += [f"Note: {t}" for t in results.rows[0].get("notes", ())]
+    return "\n".join(lines) + "\n"
 
 
 def _entries(model_docs, results):

@@ -101,6 +101,8 @@ Modules
 ``model``      :class:`ProfiledRoller`, :func:`roller_contact` (depth, force, free tilt)
 ``iso``        :func:`iso_slicing` (ISO 16281, uncoupled slices)
 ``laws``       :class:`ProfiledRollerModel`, :class:`ISOSlicingModel` (registered laws)
+``solvers``    :func:`~linecontact.roller.solvers.slice_solver`: the one factory from a
+               slice model's name to a contact's solver, with the default slice counts
 
 References
 ----------
@@ -139,8 +141,3 @@ __all__ = [
     "ISO_MIN_SLICES",
     "TILT_RANGE",
 ]
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from ..validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -11,65 +11,42 @@ from .slices import DEFAULT_N_SLICES
 __all__ = []
 
 
-_COVERAGE = []
-_ACCURACY_TABLE = "roller_accuracy"
+_COVERAGE = {}
 #: relative slack on the covered bounds (the header prints 6 significant digits)
 _COVER_SLACK = 1e-5
 
 
 def _coverage():
-    """The covered_* and runtime_error_* fields of tables/roller_accuracy.csv, parsed
-    once on first use (None if the table or the fields are missing)."""
-    if not _COVERAGE:
-        from ..tables import read_table
+    """tables/roller_accuracy.csv's covered range and largest errors
+    (:func:`linecontact.accuracy.roller_coverage`) with those errors as the note states
+    them, written once per table version (None if the table or the fields are
+    missing)."""
+    from ..accuracy import roller_coverage
+
+    raw = roller_coverage()
+    if _COVERAGE.get("raw", _COVERAGE) is not raw:     # first use, or a new table
+        cov = None
         try:
-            meta = read_table(_ACCURACY_TABLE).meta
-
-            def pair(key):
-                lo, hi = (float(v) for v in meta[key].split(","))
-                return lo, hi
-
-            def errors(key):
-                return {k: float(v) for k, v in
-                        (item.split() for item in meta[key].split(","))}
-
-            cov = dict(
-                l_over_d=pair("covered_l_over_d"),
-                line_load=pair("covered_line_load_over_estar_d"),
-                given_tilt=pair("covered_given_tilt_rad"),
-                free_tilt=pair("covered_free_tilt_rad"),
-                tilt_drop=pair("covered_tilt_drop_over_approach"),
-                profiles=tuple(k.strip() for k in meta["covered_profiles"].split(",")),
-                # optional (tables before issue 20 lack it): None, not measured
-                end_gap=(pair("covered_infinite_end_gap_over_length")
-                         if "covered_infinite_end_gap_over_length" in meta else None),
-                off=errors("runtime_error_off_ends"),
-                edge=errors("runtime_error_edge_loaded"),
-                # optional (tables before issue 32 lack it): the end zone's own errors
-                zone=(errors("runtime_error_end_zone")
-                      if "runtime_error_end_zone" in meta else None),
-                zone_gap=float(meta.get("end_zone_gap_over_length", 0.0)))
-            # the largest errors as coverage_note states them, written once
-            off, edge = cov["off"], cov["edge"]
-            cov["errors_edge_loaded"] = (
-                f"edge loaded: deflection {_pct(edge['depth'])}, moment "
-                f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} (peak "
-                "pressure singular, not reported)")
-            cov["errors_off_ends"] = (
-                f"contact off the ends: deflection {_pct(off['depth'])}, moment "
-                f"{_pct(off['moment'])} (tilted), peak pressure {_pct(off['p_max'])}, "
-                f"zero-moment tilt {_pct(off['tilt'])}")
-            if cov["zone"] is not None:
-                z = cov["zone"]
-                cov["errors_end_zone"] = (
-                    f"contact in the end zone (within {cov['zone_gap']:g} L of a roller "
-                    f"end where the drop is infinite): deflection {_pct(z['depth'])}, "
-                    f"moment {_pct(z['moment'])} (tilted), peak pressure "
-                    f"{_pct(z['p_max'])}, zero-moment tilt {_pct(z['tilt'])}")
-        except (FileNotFoundError, KeyError, ValueError):
+            if raw is not None:
+                off, edge = raw["off"], raw["edge"]
+                cov = dict(raw, errors_edge_loaded=(
+                    f"edge loaded: deflection {_pct(edge['depth'])}, moment "
+                    f"{_pct(edge['moment'])}, zero-moment tilt {_pct(edge['tilt'])} "
+                    "(peak pressure singular, not reported)"), errors_off_ends=(
+                    f"contact off the ends: deflection {_pct(off['depth'])}, moment "
+                    f"{_pct(off['moment'])} (tilted), peak pressure "
+                    f"{_pct(off['p_max'])}, zero-moment tilt {_pct(off['tilt'])}"))
+                z = raw.get("zone")
+                if z is not None:
+                    cov["errors_end_zone"] = (
+                        f"contact in the end zone (within {raw['zone_gap']:g} L of a "
+                        "roller end where the drop is infinite): deflection "
+                        f"{_pct(z['depth'])}, moment {_pct(z['moment'])} (tilted), peak "
+                        f"pressure {_pct(z['p_max'])}, zero-moment tilt {_pct(z['tilt'])}")
+        except KeyError:                   # an error the note states is not measured
             cov = None
-        _COVERAGE.append(cov)
-    return _COVERAGE[0]
+        _COVERAGE.update(raw=raw, cov=cov)
+    return _COVERAGE["cov"]
 
 
 def geometry_cause(radius, length, estar, force=None):
@@ -124,13 +101,12 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
     tkey, tname = ("free_tilt", "zero-moment tilt") if free_tilt else (
         "given_tilt", "tilt")
     drop = th * length / 2 / approach if approach > 0 else (0.0 if th == 0 else math.inf)
-    checks = [(_slenderness(radius, length).split(" = ")[0], length / D, cov["l_over_d"],
-               ""),
+    checks = [("L/(2R)", length / D, cov["l_over_d"], ""),
               ("mean line load q/(E* 2R)", force / (length * estar * D), cov["line_load"],
                ""),
               (f"|{tname}|", th, cov[tkey], " rad"),
               ("tilt drop |theta| L/2 over the approach", drop, cov["tilt_drop"], "")]
-    outside = [(_slenderness(radius, length) if name.startswith("L/(2R)") else
+    outside = [(_slenderness(radius, length) if name == "L/(2R)" else
                 f"{name} = {v:.2g}{u}") + f" (measured {lo:.2g}-{hi:.2g}{u})"
                for name, v, (lo, hi), u in checks
                if not lo * (1 - _COVER_SLACK) <= v <= hi * (1 + _COVER_SLACK)]
@@ -143,7 +119,7 @@ def coverage_note(radius, length, estar, profile_key, force, tilt, approach,
                        f"drop is infinite (measured down to {cov['end_gap'][0]:.2g} L)")
     if n_slices < DEFAULT_N_SLICES:
         outside.append(f"n_slices = {n_slices} (measured with {DEFAULT_N_SLICES})")
-    in_zone = (not edge_loaded and end_gap is not None and cov["zone"] is not None
+    in_zone = (not edge_loaded and end_gap is not None and "errors_end_zone" in cov
                and end_gap < cov["zone_gap"])
     errs = (cov["errors_edge_loaded"] if edge_loaded else
             cov["errors_end_zone"] if in_zone else cov["errors_off_ends"])

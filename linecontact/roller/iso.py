@@ -12,14 +12,16 @@ import math
 
 import numpy as np
 
+from ..checks import check_interval, check_positive
+from ..errors import OutOfRangeError
 from ..profiles import as_profile, is_free_tilt, roller_drop
-from ..validity import OutOfRangeError, check_interval, check_positive
 from .slices import N_SLICES, TILT_RANGE
 from .solution import RollerSolution, contact_extent, peak_pressure
 
 __all__ = ["iso_slicing", "ISO_MIN_SLICES"]
 
-#: ISO 16281 asks for at least 30 slices.
+#: ISO 16281 asks for at least 30 slices: the method's fewest and its default count
+#: (linecontact.roller.solvers.DEFAULT_SLICES).
 ISO_MIN_SLICES = 30
 
 
@@ -39,7 +41,7 @@ def _iso_state(P, x, L, E, n, d, th):
 
 
 def iso_slicing(radius, length, estar, profile=None, *, depth=None, force=None, tilt=0.0,
-                n_slices=30):
+                n_slices=ISO_MIN_SLICES):
     """ISO 16281 slicing: uncoupled nonlinear slice springs with the misalignment term.
 
     .. math::

@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .._numerics import NotAKnotSpline
-from ..validity import check_interval
+from ..checks import check_interval
 
 __all__ = ["strip_influence"]
 

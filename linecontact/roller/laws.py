@@ -6,13 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._numerics import BLOCK, UniformHermite
+from .._numerics import BLOCK, UniformHermite, out
 from ..models import ContactModel, register
 from ..profiles import as_profile
-from ..validity import check_positive, out
-from .iso import iso_slicing
-from .model import ProfiledRoller
-from .slices import DEFAULT_N_SLICES, TILT_RANGE
+from ..checks import check_positive
+from .slices import TILT_RANGE
+from .solvers import DEFAULT_SLICES, slice_solver
 
 __all__ = ["ProfiledRollerModel", "ISOSlicingModel"]
 
@@ -329,7 +328,8 @@ class ProfiledRollerModel(_SolvedRoller):
     tilt : float, optional
         Tilt theta [rad], held fixed (default 0).
     n_slices : int, optional
-        Number of slices [-] (default 50).
+        Number of slices [-] (default 50, the coupled slices' default,
+        :data:`~linecontact.roller.solvers.DEFAULT_SLICES`).
 
     Notes
     -----
@@ -361,10 +361,10 @@ class ProfiledRollerModel(_SolvedRoller):
     _onset_power = 1.5          # a crowned roller starts as a point contact, F ~ d^(3/2)
 
     def __init__(self, radius, length, estar, profile=None, tilt=0.0,
-                 n_slices=DEFAULT_N_SLICES):
+                 n_slices=DEFAULT_SLICES["profiled-roller"]):
         super().__init__(radius, length, estar, tilt)
-        self.roller = ProfiledRoller(self.radius, self.length, self.estar, profile,
-                                     n_slices=n_slices)
+        self.roller = slice_solver(self.key, self.radius, self.length, self.estar,
+                                   profile, n_slices=n_slices)
         self.axial_profile = self.roller.profile
         self.n_slices = self.roller.n_slices
 
@@ -453,11 +453,12 @@ class ISOSlicingModel(_SolvedRoller):
     tilt : float, optional
         Tilt theta [rad] (default 0).
     n_slices : int, optional
-        n >= 30 [-] (default 30).
+        n >= 30 [-] (default 30, ISO 16281's,
+        :data:`~linecontact.roller.solvers.DEFAULT_SLICES`).
 
     Notes
     -----
-    See :func:`iso_slicing`. Valid for steel on steel only.
+    See :func:`~linecontact.roller.iso_slicing`. Valid for steel on steel only.
 
     Examples
     --------
@@ -475,7 +476,8 @@ class ISOSlicingModel(_SolvedRoller):
 
     _name = "ISO 16281 slicing"
 
-    def __init__(self, radius, length, estar, profile=None, tilt=0.0, n_slices=30):
+    def __init__(self, radius, length, estar, profile=None, tilt=0.0,
+                 n_slices=DEFAULT_SLICES["iso16281-slicing"]):
         super().__init__(radius, length, estar, tilt)
         self.n_slices = n_slices
         self.axial_profile = as_profile(profile, self.radius, self.length, self.estar)
@@ -489,14 +491,15 @@ class ISOSlicingModel(_SolvedRoller):
         from ..classical import STEEL_ESTAR_RANGE, STEEL_HINT
         STEEL_ESTAR_RANGE.check(self.estar, hint=STEEL_HINT)
 
-    def _solve(self, **kw):
-        return iso_slicing(self.radius, self.length, self.estar, self.axial_profile,
-                           tilt=self.tilt, n_slices=self.n_slices, **kw)
+    def _solver(self):
+        # the model's attributes as they are now (a change changes the law)
+        return slice_solver(self.key, self.radius, self.length, self.estar,
+                            self.axial_profile, n_slices=self.n_slices)
 
     def at_depth(self, depth):
         """:class:`RollerSolution` at depth d [m]."""
-        return self._solve(depth=depth)
+        return self._solver().at_depth(depth, self.tilt)
 
     def at_force(self, force):
         """:class:`RollerSolution` at force F [N]."""
-        return self._solve(force=force)
+        return self._solver().at_force(force, self.tilt)

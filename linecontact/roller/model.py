@@ -9,11 +9,12 @@ import math
 
 import numpy as np
 
-from ..profiles import (as_profile, drop_inside, drop_slope_inside, is_free_tilt,
-                        profile_identity, roller_drop)
-from ..validity import OutOfRangeError, check_flag, check_interval, check_positive
 from .._engine import check_engine, resolve_engine
 from .._numerics import CACHE_BYTES, cache_nbytes, serial_blas
+from ..checks import check_flag, check_interval, check_positive
+from ..errors import OutOfRangeError
+from ..profiles import (as_profile, drop_inside, drop_slope_inside, is_free_tilt,
+                        profile_identity, roller_drop)
 from .coverage import coverage_note, geometry_cause
 from .slices import (DEFAULT_N_SLICES, N_SLICES, SLICE_GRADING, TILT_RANGE,
                      ConvergenceError, SliceEquations, coarse_slices)

@@ -9,8 +9,8 @@ import math
 import numpy as np
 
 from .._numerics import CACHE_BYTES, cache_nbytes
+from ..checks import Interval
 from ..profiles import TILT_RANGE
-from ..validity import Interval
 from .kernel import far_field_coefficients, strip_values
 
 __all__ = ["ConvergenceError", "N_SLICES", "TILT_RANGE", "SLICE_GRADING"]

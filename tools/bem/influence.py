@@ -94,7 +94,7 @@ def kernel_offsets(nx, ny, dx, dy, estar=1.0):
 # --- uniform shear traction on a rectangle (Cerruti) -------------------------------------
 
 def _check_material(shear_modulus, nu):
-    from linecontact.validity import OutOfRangeError
+    from linecontact.errors import OutOfRangeError
     if not (np.isfinite(shear_modulus) and shear_modulus > 0):
         raise OutOfRangeError("shear_modulus", shear_modulus, "(0, inf) Pa", unit="Pa")
     if not (np.isfinite(nu) and 0.0 <= nu <= 0.5):

@@ -63,7 +63,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.fft import next_fast_len
 
-from linecontact.validity import OutOfRangeError, check_positive
+from linecontact.checks import check_positive
+from linecontact.errors import OutOfRangeError
 
 from .halfspace import DCFFTOperator
 from .solver import ConvergenceError, solve_contact, solve_punch

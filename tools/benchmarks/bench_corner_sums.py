@@ -2,15 +2,14 @@
 
     OPENBLAS_NUM_THREADS=1 nice -n 10 python -m tools.benchmarks.bench_corner_sums
 
-The corners are those of real slices (linecontact.stresses._corners_many of the ISO
-16281 roller of the `roller` benchmark, tools/benchmarks/suite.py, at 4200 N and 2 mrad
-tilt, its loaded slices);
-the points n = 3, 16, 32, 48 across each slice at depths 0.3-1.2 b (where the 3D
+The corners are those of real slices (linecontact.stresses.search._corners_many of
+the ISO 16281 roller of the `roller` benchmark, tools/benchmarks/suite.py, at 4200 N
+and 2 mrad tilt, its loaded slices); the points n = 3, 16, 32, 48 across each slice at depths 0.3-1.2 b (where the 3D
 correction's search evaluates them). Each evaluation is timed (time.process_time, the
 best of ``--repeat`` of a loop of calls, C and numpy in turn) for the C extension
-(linecontact._ckernels.love_sums, through stresses._love_c) and numpy's
-stresses._love_weighted on the same corners and points, and reported in ns per corner
-and point (CPU / (corners x points)). Writes tools/benchmarks/results/corner_sums.txt.
+(linecontact._ckernels.love_sums, through stresses.love._love_c) and numpy's
+stresses.love._love_weighted on the same corners and points, and reported in ns per
+corner and point (CPU / (corners x points)). Writes tools/benchmarks/results/corner_sums.txt.
 """
 from __future__ import annotations
 
@@ -23,8 +22,9 @@ from pathlib import Path
 import numpy as np
 
 import linecontact
-from linecontact import stresses as st
 from linecontact.roller import ProfiledRoller
+from linecontact.stresses import love as st
+from linecontact.stresses import search
 from tools.benchmarks.suite import D, ESTAR, FORCE, L, TILT
 from tools.studies.roller_study import make_profile
 
@@ -56,7 +56,7 @@ def main(argv=None):
     p0 = np.where(loaded, 2 * q / (np.pi * np.where(loaded, b, 1.0)), 0.0)
     b = np.where(loaded, b, 0.0)
     ks = [int(k) for k in np.flatnonzero(loaded)][::4]
-    corners = st._corners_many(x, b, p0, ks)
+    corners = search._corners_many(x, b, p0, ks)
     lines = [f"bench_corner_sums: linecontact {linecontact.__version__}, Python "
              f"{platform.python_version()}, numpy {np.__version__}, "
              f"{datetime.date.today().isoformat()}",

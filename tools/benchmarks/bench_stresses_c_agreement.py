@@ -6,7 +6,7 @@
 Random rollers (the study profiles, L 8-30 mm, R 3-10 mm, forces from light to edge
 loaded, tilt 0 or up to 4 mrad either way, friction 0 or 0-0.5, Poisson 0.2-0.45),
 each solved once and its stresses computed with the C corner sums and with numpy's
-(stresses._CORNERS); reports the largest relative difference of every measure's worst
+(stresses.love._CORNERS); reports the largest relative difference of every measure's worst
 value and how many worst points lie on another slice (untilted: the mirror slice, a
 tie). Writes tools/benchmarks/results/stresses_c_agreement.txt.
 """
@@ -19,8 +19,9 @@ from pathlib import Path
 import numpy as np
 
 import linecontact
-from linecontact import stresses as st
+from linecontact import stresses
 from linecontact.roller import ProfiledRoller
+from linecontact.stresses import love as st
 from tools.studies.roller_study import make_profile
 
 REPO = Path(__file__).resolve().parents[2]
@@ -54,8 +55,8 @@ def main(argv=None):
             res = {}
             for c in ("c", "numpy"):
                 st._CORNERS[0] = c
-                res[c] = st.roller_stresses(sol, mu, nu, roller=model).worst
-            for m in st.MEASURES:
+                res[c] = stresses.roller_stresses(sol, mu, nu, roller=model).worst
+            for m in stresses.MEASURES:
                 u, v = res["c"][m], res["numpy"][m]
                 checks += 1
                 r = abs(u["value"] - v["value"]) / abs(v["value"])

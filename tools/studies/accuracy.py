@@ -38,9 +38,9 @@ from pathlib import Path
 import numpy as np
 
 from linecontact.classical import STEEL_ESTAR
+from linecontact.errors import OutOfRangeError
 from linecontact.models import UniversalModel, get_model
 from linecontact.tables import available_tables, write_table
-from linecontact.validity import OutOfRangeError
 from tools.studies.runner import add_runner_arguments, run_study_from_args, table_meta
 
 REPO = Path(__file__).resolve().parents[2]

@@ -22,9 +22,9 @@ import math
 import numpy as np
 from scipy.optimize import least_squares, minimize
 
+from linecontact.errors import OutOfRangeError
 from linecontact.lipopov import (dimensionless_contact_radius, dimensionless_force,
                                  dimensionless_profile, dimensionless_stiffness)
-from linecontact.validity import OutOfRangeError
 
 #: Residual choices for the fit of Eq. 9 to the extracted points (x~_i, g~_i):
 #: name -> (numeric id used in the comparison table, description).

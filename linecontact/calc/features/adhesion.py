@@ -90,7 +90,7 @@ def columns(model, rows, normal, state):
     """Pull-off (BEM-corrected and MDR), zero load, the force or depth with adhesion and
     the Tabor parameter, for the rows of one contact and one model."""
     from ... import adhesion as ad
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
 
     n = len(rows)
     out = {c: np.full(n, np.nan) for c in fields}
@@ -128,8 +128,8 @@ def columns(model, rows, normal, state):
         note(j, "MDR: " + short(sub[0]) if sub[0] else "")
         out["pull_off_mdr"][j], out["zero_load_depth"][j] = v[0], v[1]
         out["force_adhesive"][j], out["depth_adhesive"][j] = v[2], v[3]
-        out["zero_load_half_width"][j] = np.cbrt(32 * model.radius ** 2 * w /
-                                                 (np.pi * model.estar))
+        out["zero_load_half_width"][j] = ad.jkr_cylinder_zero_load_half_width(
+            model.radius, model.estar, w)
         if getattr(model, "key", "") not in ad.CYLINDER_MODELS:
             continue
         sub = [""]

@@ -58,8 +58,8 @@ notes = {
 def resolve(values, present, fail):
     """Each raceway as a radius or a diameter, both or neither; not with --radius2; the
     pair must fit the roller (linecontact.raceway.check_fit)."""
+    from ...errors import CombinationError
     from ...raceway import check_fit
-    from ...validity import CombinationError
 
     P, v, label = present, values, fail.label
     given = {s: P[f"{s}_raceway"] | P[f"{s}_raceway_diameter"] for s in ("inner", "outer")}
@@ -86,6 +86,8 @@ def resolve(values, present, fail):
     with np.errstate(invalid="ignore"):
         fail(P["misalignment"] & ~(np.abs(v["misalignment"]) < 0.1), "misalignment",
              "(-0.1, 0.1) rad", "the roller models linearise the tilt (small angles)")
+    from ...raceway import effective_radius
+
     R1 = v["radius"]
     for i in np.flatnonzero(given["inner"] & given["outer"]):
         try:
@@ -98,7 +100,7 @@ def resolve(values, present, fail):
         except ValueError:
             pass  # a value out of range: its own message comes from the core
     with np.errstate(invalid="ignore", divide="ignore"):
-        r_in = 1 / (1 / R1 + 1 / radii["inner"])
+        r_in = effective_radius(R1, radii["inner"])
     psi = np.where(P["misalignment"], v["misalignment"], 0.0)
     state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
                   compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],

@@ -115,8 +115,8 @@ def _check_profiles(v, P, fail):
     row's roller and load): a spec or file the library refuses is one line naming the
     option and the spec as typed."""
     from ..._units import range_error_parts
+    from ...errors import OutOfRangeError, UnknownNameError
     from ...profiles import parse_profile
-    from ...validity import OutOfRangeError, UnknownNameError
 
     label = fail.label
     seen = {}

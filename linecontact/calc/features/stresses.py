@@ -22,7 +22,10 @@
     2.876 HV - 90.7 MPa, Pavlina & Van Tyne 2008). The CSV has columns depth_m, HV.
 
 Poisson's ratio of the stressed body: ``--poisson`` where given, else 0.3 (said in the
-notes). Not combined with the raceways (a whole roller).
+notes). A whole roller between raceways (``--inner-raceway``, ``--outer-raceway``): the
+stresses of each contact (:func:`contact_stresses`), each measure's worse contact in the
+main columns and named in the note, both contacts' maxima and case ratios in a table
+of their own; the case check takes the worse contact (CHD min: the larger minimum).
 """
 from __future__ import annotations
 
@@ -32,7 +35,8 @@ import numpy as np
 
 from ..feature import Block, Field, Parameter, State
 
-__all__: list = []
+__all__ = ["contact_stresses", "case_of_contacts", "min_case_depth", "hardness_of",
+           "HARDNESS"]
 
 name = "stresses"
 group = "subsurface stresses and case-hardening check"
@@ -76,6 +80,20 @@ NOTE = ("stresses: plane-strain Hertz strip (McEwen 1949; Johnson 1985, sections
         "smallest effective case depth with a ratio <= 1. docs/stresses.md.")
 notes = {"stresses": NOTE}
 
+#: Each contact's maxima of a whole roller between raceways (its block).
+_CONTACT_FIELDS = {}
+for _m in _MEASURES:
+    for _side in ("inner", "outer"):
+        _CONTACT_FIELDS[f"{_m}_{_side}"] = Field(f"{_HEAD[_m]} {_side}", "Pa", "MPa", 1e-6)
+for _side in ("inner", "outer"):
+    _CONTACT_FIELDS[f"case_ratio_{_side}"] = Field(f"vM/allow {_side}", "-", "-", 1.0)
+
+CONTACTS_NOTE = ("a whole roller between raceways: each contact's stress maxima (its "
+                 "slices' worst where solved by slices, else the plane-strain strip of "
+                 "its effective radius at the roller load) and case-check ratio; the "
+                 "main columns show the worse contact of each measure, named in the "
+                 "note ('worse'); CHD min: the larger of the two contacts' minima.")
+
 _ROW_FIELDS = {}
 for _m in _MEASURES:
     _ROW_FIELDS[f"{_m}_max"] = fields[f"{_m}_max"]
@@ -102,14 +120,27 @@ def resolve(values, present, fail):
             fail(np.arange(n) == i, "stresses", "yes or no", "not yes or no")
     for nm in ("sliding_friction", "stress_field", "hardness_profile") + _HARD:
         fail(P[nm] & ~on, nm, f"with {label('stresses')} yes", "stresses not asked for")
-    raceways = (P["inner_raceway"] | P["outer_raceway"] | P["inner_raceway_diameter"]
-                | P["outer_raceway_diameter"])
-    fail(on & raceways, "stresses", "one contact (without the raceways)",
-         "not available for a whole roller")
     with np.errstate(invalid="ignore"):
         fail(P["sliding_friction"] & ~((v["sliding_friction"] >= 0)
                                         & (v["sliding_friction"] <= 1)),
              "sliding_friction", "[0, 1]", "outside the range of the strip solution")
+    hardness = hardness_of(v, P, fail, on)
+    nu = np.where(P["poisson"], v["poisson"], 0.3)
+    return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
+                 nu=nu, nu_given=P["poisson"], hardness=hardness,
+                 section=np.where(P["stress_field"], v["stress_field"], np.nan))
+
+
+#: The case-check inputs (a subcommand declares them too: ``linecontact bearing``).
+HARDNESS = tuple(p for p in parameters if p.name in _HARD + ("hardness_profile",))
+
+
+def hardness_of(v, P, fail, on):
+    """The rows' hardness profiles (:class:`linecontact.stresses.HardnessProfile`, None
+    where none is given) from the three values or the measured CSV: the three
+    together, or the file, not both; only in the rows of `on`."""
+    label = fail.label
+    n = len(on)
     three = ", ".join(label(s) for s in _HARD)
     some = P[_HARD[0]] | P[_HARD[1]] | P[_HARD[2]]
     for nm in _HARD:
@@ -117,7 +148,7 @@ def resolve(values, present, fail):
     fail(some & P["hardness_profile"], "hardness_profile",
          f"either {label('hardness_profile')} or {three}", "conflicts")
     hardness = [None] * n
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
     from ...stresses import HardnessProfile
     for i in np.flatnonzero(on & (some | P["hardness_profile"])):
         try:
@@ -131,10 +162,7 @@ def resolve(values, present, fail):
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
-    nu = np.where(P["poisson"], v["poisson"], 0.3)
-    return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
-                 nu=nu, nu_given=P["poisson"], hardness=hardness,
-                 section=np.where(P["stress_field"], v["stress_field"], np.nan))
+    return hardness
 
 
 def _read_profile(path):
@@ -149,8 +177,8 @@ def _read_profile(path):
 
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
-    from ...stresses import case_check, line_contact_stresses, roller_stresses
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
+    from ...stresses import line_contact_stresses, roller_stresses
 
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
@@ -161,6 +189,13 @@ def columns(model, rows, normal, state):
             continue
         sol = normal["solution"][j] if "solution" in normal else None
         try:
+            if _is_raceways(sol):  # a whole roller: each contact's, the worse flagged
+                _between_raceways(out, flags, j, sol, model, state, i)
+                continue
+            if sol is None and _slice_law(model):
+                # a slice model named as the law of a plain contact (--model
+                # profiled-roller): the row's own solve, as the library's at this force
+                sol = model.at_force(float(F[j]))
             if _is_slices(sol):   # a profiled roller: the worst along its slices
                 s = roller_stresses(sol, state.mu[i], state.nu[i],
                                     roller=_measured_as(model))
@@ -171,24 +206,164 @@ def columns(model, rows, normal, state):
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
+        if s.withheld:    # an edge-loaded roller: slice-width numbers, "-" and why
+            flags[j] = "; ".join(t for t in (flags[j], "stress maxima and case check "
+                                 "not reported: " + s.withheld[_MEASURES[0]]) if t)
+            continue
         for m in _MEASURES:
             out[f"{m}_max"][j] = s.worst[m]["value"]
             out[f"{m}_depth"][j] = s.worst[m]["z"]
         if state.hardness[i] is not None:
-            try:
-                c = case_check(s, state.hardness[i])
-                out["case_ratio"][j] = c.max_ratio
-                out["case_ratio_depth"][j] = c.depth_at_max
-                if c.min_case_depth is not None:
-                    out["min_case_depth"][j] = c.min_case_depth
-                elif state.hardness[i].case_depth is not None:
-                    flags[j] = "; ".join(t for t in (flags[j], (
-                        "CHD min: none, the stress exceeds the allowable of the surface "
-                        "hardness itself")) if t)
-            except OutOfRangeError as exc:
-                flags[j] = "; ".join(t for t in (flags[j], str(exc)) if t)
+            c, text = _case(s, state.hardness[i])
+            _put_case(out, j, c)
+            flags[j] = "; ".join(t for t in (flags[j], text) if t)
     out["flags"] = flags
     return out
+
+
+_NO_CHD = "CHD min: none, the stress exceeds the allowable of the surface hardness itself"
+
+
+def _case(s, hardness):
+    """(CaseCheck or None, flag text) of one contact's stresses."""
+    from ...stresses import case_check
+    from ...errors import OutOfRangeError
+
+    try:
+        c = case_check(s, hardness)
+    except OutOfRangeError as exc:
+        return None, str(exc)
+    if c.min_case_depth is None and hardness.case_depth is not None:
+        return c, _NO_CHD
+    if c.min_case_depth == 0.0:
+        return c, "CHD min: 0, none needed (the core hardness carries the load)"
+    return c, ""
+
+
+def _put_case(out, j, c):
+    if c is None:
+        return
+    out["case_ratio"][j] = c.max_ratio
+    out["case_ratio_depth"][j] = c.depth_at_max
+    if c.min_case_depth is not None:
+        out["min_case_depth"][j] = c.min_case_depth
+
+
+def _is_raceways(sol):
+    """A whole roller's solution (linecontact.raceway.RacewaySolution)."""
+    return sol is not None and hasattr(sol, "depth_inner") and hasattr(sol, "radius_outer")
+
+
+def contact_stresses(sol, length, estar, profile, friction, poisson):
+    """{'inner': SubsurfaceStresses, 'outer': ...} of a whole roller's two contacts
+    (:class:`linecontact.raceway.RacewaySolution` `sol`; roller length [m], E* [Pa],
+    profile): the slices' :func:`linecontact.stresses.roller_stresses` where the
+    contacts were solved by slices (each checked against the measured range as a
+    roller of the contact's effective radius), else the plane-strain strip
+    :func:`linecontact.stresses.line_contact_stresses` of each contact's effective
+    radius at the roller load, as :class:`linecontact.bearing.RadialRollerBearing`
+    takes them for its most loaded roller."""
+    from types import SimpleNamespace
+
+    from ...stresses import line_contact_stresses, roller_stresses
+
+    out = {}
+    for side in ("inner", "outer"):
+        part = getattr(sol, side)
+        R = float(getattr(sol, f"radius_{side}"))
+        if part is not None:
+            measured = SimpleNamespace(radius=R, length=length, estar=estar,
+                                       profile=profile)
+            out[side] = roller_stresses(part, friction, poisson, roller=measured)
+        else:
+            out[side] = line_contact_stresses(float(sol.force), R, length, estar,
+                                              friction, poisson)
+    return out
+
+
+def case_of_contacts(both, hardness):
+    """The case check of a whole roller's two contacts (`both`: side ->
+    SubsurfaceStresses): (checks, texts, worse) with checks side -> CaseCheck or None,
+    texts the flags to show, worse the side of the larger ratio (None if neither). A
+    contact whose maxima are withheld (edge loaded: the slice width's numbers) leaves
+    the check unreported, with the reason."""
+    held = {k: st.withheld for k, st in both.items() if st.withheld}
+    if held:
+        return {}, ["case check not reported: " + "; ".join(
+            f"{k} contact: {next(iter(h.values()))}" for k, h in held.items())], None
+    checks, texts = {}, []
+    for side, st in both.items():
+        c, text = _case(st, hardness)
+        checks[side] = c
+        if text:
+            texts.append(f"{side}: {text}")
+    done = {k: c for k, c in checks.items() if c is not None}
+    worse = max(done, key=lambda k: done[k].max_ratio) if done else None
+    return checks, texts, worse
+
+
+def min_case_depth(checks):
+    """The smallest case depth that carries both contacts: the larger of their minima
+    (None if either has none) [m]."""
+    need = [c.min_case_depth for c in checks.values() if c is not None]
+    if not need or any(d is None for d in need):
+        return None
+    return max(need)
+
+
+def _between_raceways(out, flags, j, sol, model, state, i):
+    """A whole roller's row: each measure's worse contact in the main columns (its
+    contact named in the flags), each contact's own maxima kept for the block."""
+    c = model.contact
+    both = contact_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
+                            float(state.nu[i]))
+    worse = {}
+    # a maximum not converged in a contact (an edge-loaded one: the slice width's
+    # number) is not reported, as linecontact.bearing takes it: that measure's worse
+    # is unknown, and so is the case check
+    held = {k: st.withheld for k, st in both.items() if st.withheld}
+    for m in _MEASURES:
+        side = max(both, key=lambda k: both[k].worst[m]["value"])
+        worse[m] = side
+        if any(m in h for h in held.values()):
+            continue
+        out[f"{m}_max"][j] = both[side].worst[m]["value"]
+        out[f"{m}_depth"][j] = both[side].worst[m]["z"]
+    texts = [f"stresses: worse contact {_said(worse)}"] if not held else [
+        "stress maxima and case check not reported: " + "; ".join(
+            f"{k} contact: {h[_MEASURES[0]]}" for k, h in held.items())]
+    for side, st in both.items():
+        texts += [f"{side}: {t}" for t in st.notes]
+    row = {f"{m}_{side}": (None if m in both[side].withheld
+                           else both[side].worst[m]["value"])
+           for m in _MEASURES for side in both}
+    if state.hardness[i] is not None and not held:
+        checks, said, side = case_of_contacts(both, state.hardness[i])
+        for k, c in checks.items():
+            row[f"case_ratio_{k}"] = None if c is None else c.max_ratio
+        texts += said
+        if side is not None:
+            _put_case(out, j, checks[side])
+            need = min_case_depth(checks)
+            out["min_case_depth"][j] = np.nan if need is None else need
+            texts.insert(1, f"case check: worse contact {side}")
+    row["text"] = {"worse": "-" if held else _said(worse)}
+    flags[j] = "; ".join(texts)
+    state.__dict__.setdefault("by_contact", {}).setdefault(int(i), row)
+
+
+def _said(worse):
+    """'inner' when every measure's worse contact is the inner one, else per measure."""
+    sides = set(worse.values())
+    if len(sides) == 1:
+        return sides.pop()
+    return ", ".join(f"{_HEAD[m]} {side}" for m, side in worse.items())
+
+
+def _slice_law(model):
+    """The row's law is a slice model's (its solutions: ``at_force`` -> RollerSolution)."""
+    return getattr(model, "contact", None) is None and callable(
+        getattr(model, "at_force", None)) and hasattr(model, "axial_profile")
 
 
 def _measured_as(model):
@@ -199,6 +374,9 @@ def _measured_as(model):
     from types import SimpleNamespace
 
     c = getattr(model, "contact", None)
+    if c is None and _slice_law(model):
+        return SimpleNamespace(radius=model.radius, length=model.length,
+                               estar=model.estar, profile=model.axial_profile)
     if c is None or getattr(c, "radius", None) is None:
         return None
     return SimpleNamespace(radius=c.radius, length=c.roller.length, estar=c.estar,
@@ -240,9 +418,24 @@ def blocks(state, results):
             except ValueError as exc:
                 doc["section"] = {"note": str(exc)}
         json_rows.append(doc)
-    if not any(r is not None for r in json_rows):
-        return []
-    return [Block(name="stresses", key="stresses", label="stresses along the roller",
-                  fields={}, rows=[None] * len(json_rows), text_columns=(),
-                  json_rows=json_rows, note="",
-                  units={k: f.si for k, f in _ROW_FIELDS.items()})]
+    out = []
+    if any(r is not None for r in json_rows):
+        out.append(Block(name="stresses", key="stresses", label="stresses along the roller",
+                         fields={}, rows=[None] * len(json_rows), text_columns=(),
+                         json_rows=json_rows, note="",
+                         units={k: f.si for k, f in _ROW_FIELDS.items()}))
+    by_contact = getattr(state, "by_contact", {})
+    if by_contact:
+        n = len(state.rows)
+        rows = [None] * n
+        for i, row in by_contact.items():
+            rows[i] = dict(row, label="roller between raceways")
+        out.append(Block(name="stresses_contacts", key="contacts",
+                         label="each contact", fields=_CONTACT_FIELDS, rows=rows,
+                         text_columns=("worse",),
+                         json_rows=[None if r is None else
+                                    {k: v for k, v in r.items() if k != "label"}
+                                    for r in rows],
+                         note=CONTACTS_NOTE,
+                         units={k: f.si for k, f in _CONTACT_FIELDS.items()}))
+    return out

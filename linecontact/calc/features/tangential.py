@@ -7,6 +7,10 @@
     (:func:`linecontact.tangential.cylinder_stiffness_ratios`; "-" with a note where
     the table is not installed or the case is outside it). G* needs the moduli and
     Poisson's ratios (not ``--estar``).
+    For a crowned roller (``--crown-radius``) whose Hertz ellipse lies inside it, the
+    values across and along are Mindlin's for the ellipse
+    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`): the
+    calculator prints both directions, so it takes no direction option.
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's
@@ -56,7 +60,9 @@ notes = {
     "tangential": "kt: full-stick tangential stiffness; MDR: (G*/E*) k (Popov & Hess 2015, "
                   "exact for axisymmetric contacts); across (rolling direction) and along "
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
-                  "tangential_cylinder.csv) times k; u: tangential shift under Q at "
+                  "tangential_cylinder.csv) times k, or for a crowned roller whose Hertz "
+                  "ellipse lies inside it Mindlin's ratio of the ellipse (Mindlin 1949) "
+                  "times k; u: tangential shift under Q at "
                   "constant normal force or depth, u = (mu/r) [d - d(F - |Q|/mu)] sign(Q) "
                   "with r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
                   "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "
@@ -169,19 +175,19 @@ def _composed(contact, rows, sel, F, state, out, note):
     """k_t, Q/(mu F) and the shift of a composed contact (a profiled or tilted roller):
     :meth:`linecontact.contact.Contact.tangential`, the MDR on the contact's own F(d);
     the BEM table's across/along values are for a straight, aligned cylinder only."""
-    from ...validity import CombinationError, OutOfRangeError
+    from ...errors import CombinationError, OutOfRangeError
 
     for j in sel:
         i = rows[j]
         Q = float(state.tangential_load[i]) if state.loaded[i] else None
         try:
             t = contact.tangential(float(state.friction[i]), force=float(F[j]),
-                                   tangential_force=Q)
+                                   tangential_force=Q, method="mdr")
         except (CombinationError, OutOfRangeError) as exc:
             note(j, f"kt: {short(str(exc))}")
             continue
         out["kt_mdr"][j] = t.stiffness
-        note(j, "kt across/along: the BEM table is for a straight, aligned cylinder")
+        _directions(contact, float(state.friction[i]), float(F[j]), Q, j, out, note)
         if Q is None:
             continue
         out["tangential_load"][j] = Q
@@ -191,6 +197,28 @@ def _composed(contact, rows, sel, F, state, out, note):
         note(j, {"gross slip": "gross slip: |Q| >= mu F, the contact slides (no static "
                  "shift)" if t.shift is None else "gross slip onset: |Q| = mu F"}.get(
                      str(t.state), str(t.state)))
+
+
+def _directions(contact, mu, F, Q, j, out, note):
+    """k_t (and the shift under Q) across and along the axis of a composed contact where
+    the library has a law by direction (a crowned roller: Mindlin's ellipse, the
+    default of :meth:`linecontact.contact.Contact.tangential`); "-" with the reason
+    elsewhere."""
+    for direction in ("across", "along"):
+        t = contact.tangential(mu, force=F, tangential_force=Q, direction=direction)
+        if t.method != "mindlin":
+            crowned = t.notes and "Mindlin" in t.notes[0]   # a crown, ellipse not inside
+            note(j, "kt across/along: " + (t.notes[0] if crowned else
+                                           "the BEM table is for a straight, aligned "
+                                           "cylinder"))
+            return
+        if t.notes:
+            note(j, f"kt {direction}: " + "; ".join(t.notes))
+            continue
+        out[f"kt_{direction}"][j] = t.stiffness
+        if Q is not None and t.shift is not None:
+            out[f"shift_{direction}"][j] = t.shift
+    note(j, "kt/u across/along: Mindlin's Hertz ellipse (crowned roller)")
 
 
 def _slip_correction(model, direction, depth, gstar, q):

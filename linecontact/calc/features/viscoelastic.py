@@ -60,7 +60,7 @@ def resolve(values, present, fail):
     friction or the raceways; --time needs the body and a load. The State's
     ``modulus`` (E0) gives E* its instantaneous value."""
     from ..._units import range_error_parts
-    from ...validity import OutOfRangeError
+    from ...errors import OutOfRangeError
     from ...viscoelastic import StandardLinearSolid, read_prony_series
 
     v, P, label = values, present, fail.label
@@ -156,7 +156,7 @@ def _parts(state, i):
 def columns(model, rows, normal, state):
     """d(inf) and, with --time, d(t) under the held force, for the rows of one contact:
     :meth:`linecontact.contact.Contact.creep` (Lee & Radok) of the composed contact."""
-    from ...validity import CombinationError, OutOfRangeError
+    from ...errors import CombinationError, OutOfRangeError
 
     n = len(rows)
     out = {"depth_long_term": np.full(n, np.nan)}

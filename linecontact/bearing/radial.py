@@ -1,84 +1,7 @@
-r"""Radial cylindrical and needle roller bearings: load distribution, stiffness, rating life.
-
-Z rollers (diameter D, effective length L, any axial profile) sit at the azimuths
-:math:`\psi_j = \psi_0 + 2\pi j/Z` on the pitch diameter :math:`d_m`, between an inner
-raceway of radius :math:`(d_m - D)/2` (convex) and an outer raceway (concave) that
-leaves the radial internal clearance :math:`P_d` (ISO 5753-1's radial internal
-clearance; Harris' diametral clearance :math:`P_d = d_o - d_i - 2D`, negative for
-preload). A radial displacement :math:`\delta_r` of the inner ring towards the roller at
-:math:`\psi = 0` gives roller j the ring approach
-
-.. math:: \delta_j = \delta_r\cos\psi_j - P_d/2,
-
-and the roller carries :math:`Q_j = Q(\delta_j)` for :math:`\delta_j > 0`, 0 otherwise.
-:math:`Q(\delta)` is the whole roller between its two raceways (the two contacts in
-series with the same load, :func:`linecontact.raceway.roller_between_raceways`) under
-any contact law of :mod:`linecontact.models` (the universal curve by default, the
-ISO/TS 16281 spring ``"iso16281"`` for comparison), or the coupled-slice model of
-:mod:`linecontact.roller` for a profiled roller. Equilibrium of the ring:
-
-.. math:: F_r = \sum_j Q_j\cos\psi_j, \qquad
-          K_{rr} = \frac{dF_r}{d\delta_r} = \sum_{j\,\text{loaded}} k_j\cos^2\psi_j,
-
-with :math:`k_j = dQ/d\delta` of roller j: the radial stiffness is the exact derivative
-of the equilibrium (no finite differences).
-
-How it is solved
-----------------
-The roller law is evaluated once, vectorised, on a geometric grid of loads
-(:data:`GRID_POINTS` points from :math:`10^{-9}F_r` to :math:`2.05F_r`, which bounds
-every roller load for :math:`Z \ge 3`), giving :math:`\delta(Q)` and its slope; its
-inverse :math:`Q(\delta)` is the cubic Hermite interpolant of :math:`\ln Q` against
-:math:`\ln\delta` with the exact slopes :math:`d\ln Q/d\ln\delta = k\delta/Q`. Newton's
-method on :math:`\delta_r`, bracketed, solves the ring equilibrium on that inverse; then
-(laws) a Newton polish on the loaded rollers' loads and :math:`\delta_r` with the exact
-law, :math:`\delta(Q_j) = \delta_r\cos\psi_j - P_d/2`, :math:`\sum Q_j\cos\psi_j = F_r`,
-removes the interpolation error: the loads then sum to :math:`F_r` to round-off.
-
-A profiled roller under the slice model is tabulated the same way, at
-:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve); its slice loads
-for the rating life are interpolated between the tabulated load distributions (in
-:math:`\ln Q`), and the table's interpolation error is reported
-(:attr:`BearingSolution.law_error`).
-
-Tilting moment and misalignment
--------------------------------
-A tilt theta of the inner ring in the load plane adds :math:`\theta x\cos\psi_j` to
-roller j's approach along its axis x: the rings are misaligned by
-:math:`\phi_j = \theta\cos\psi_j` at roller j, which is free to tilt between its two
-slice contacts (force and moment balance, :mod:`linecontact.raceway`) and carries
-:math:`Q_j, M_j`; the ring carries :math:`F_r = \sum Q_j\cos\psi_j`,
-:math:`M = \sum M_j\cos\psi_j`. Given M, (delta_r, theta) are solved (2 DOF); given
-theta, delta_r (1 DOF). One Newton iteration on all unknowns (each distinct roller's
-inner depth and tilt, and the ring's) with the slice model's exact 2x2 contact
-matrices; the bearing's stiffness matrix is
-:math:`K = \sum_j \cos^2\psi_j\,(K_{in}^{-1} + K_{out}^{-1})^{-1}`
-= d(F_r, M)/d(delta_r, theta), exact for the discrete equations (docs/bearings.md).
-
-Stribeck's result
------------------
-For :math:`Q = K\delta^n` and the load-zone parameter
-:math:`\varepsilon = \tfrac12(1 - P_d/(2\delta_r))`, the continuous load zone gives
-:math:`Q_{max} = F_r/(Z J_r(\varepsilon))` (:func:`load_zone_integral`);
-:math:`J_r(0.5) = 0.2448` for n = 10/9: :math:`Z Q_{max}/F_r \to 4.08` for many rollers.
-
-Rating life
------------
-ISO 281:2007's basic dynamic load rating :math:`C_r` (:func:`dynamic_load_rating`) and
-basic rating life :math:`L_{10} = (C_r/P_r)^{10/3}` (:func:`basic_rating_life`), and the
-basic reference rating life of ISO 16281:2025 (which replaced ISO/TS 16281:2008; the
-lamina method for roller bearings, :func:`reference_rating_life`), both in
-:math:`10^6` revolutions.
-
-References
-----------
-.. [1] R. Stribeck, "Kugellager fuer beliebige Belastungen", Z. VDI 45 (1901) 73-125.
-.. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007),
-   load distribution in radially loaded bearings (the integral J_r(epsilon)).
-.. [3] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life.
-.. [4] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for
-   calculating the modified reference rating life for universally loaded rolling
-   bearings.
+r"""The radial bearing's solvers: :class:`RadialRollerBearing` (the load distribution
+over the rollers, the ring's equilibrium and stiffness: under a law, tabulated slices, or
+tilted rollers) and :class:`BearingSolution`; the method is the package docstring's,
+:mod:`linecontact.bearing`.
 """
 from __future__ import annotations
 
@@ -87,20 +10,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._numerics import serial_blas
-from .profiles import TILT_RANGE
-from .raceway import Raceways, effective_radii, roller_between_raceways
-from .validity import (CombinationError, OutOfRangeError, UnknownNameError,
-                       check_interval, check_positive)
+from .._numerics import serial_blas
+from ..models import DEFAULT_SLICE_MODEL, SLICE_MODELS
+from ..profiles import TILT_RANGE
+from ..raceway import Raceways, effective_radii, roller_between_raceways
+from ..errors import CombinationError, OutOfRangeError, UnknownNameError
+from ..checks import check_interval, check_positive
+from .interpolant import _Law
+from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
+                      reference_rating_life)
 
 __all__ = [
     "RadialRollerBearing",
     "BearingSolution",
     "load_zone_integral",
-    "dynamic_load_rating",
-    "basic_rating_life",
-    "reference_rating_life",
-    "lamina_load_ratings",
     "GRID_POINTS",
     "PROFILED_POINTS",
 ]
@@ -109,15 +32,8 @@ __all__ = [
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
-#: Slices of a profiled roller in a bearing (converged to 0.1 % in its outputs) [-].
-N_SLICES = 40
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
-#: ISO 16281 constants relating the ring rolling-element rating Q_c to C_r:
-#: Q_ci = C_i / (0.378 Z), Q_ce = C_e / (0.364 Z) (i = 1, alpha = 0). They are the
-#: Lundberg-Palmgren ratios J_r/J_1 and J_r/J_2 of the zero-clearance load zone
-#: (this module's integrals give 0.3764 and 0.3630, see the tests).
-ISO_RING_FACTOR = {"inner": 0.378, "outer": 0.364}
 #: Upper bound of any roller load in units of F_r for Z >= 3: one roller at
 #: |psi| <= pi/Z alone carries at most F_r/cos(pi/Z) <= 2 F_r.
 _TOP = 2.05
@@ -177,260 +93,6 @@ def load_zone_integral(epsilon, exponent=10 / 9):
     return float(2.0 * np.sum(w * integrand) / (2.0 * math.pi))
 
 
-def dynamic_load_rating(rollers, pitch_diameter, roller_diameter, length, b_m=1.1):
-    r"""Basic dynamic radial load rating C_r of a radial roller bearing (ISO 281:2007).
-
-    .. math::
-
-        C_r = b_m f_c\,(L_{we})^{7/9} Z^{3/4} D_{we}^{29/27}\ [\mathrm{N,\ mm}],\quad
-        f_c = 207.9\,\lambda\nu\,\gamma^{2/9}\frac{(1-\gamma)^{29/27}}{(1+\gamma)^{1/4}}
-        \left[1 + \left(1.04\left(\frac{1-\gamma}{1+\gamma}\right)^{143/108}
-        \right)^{9/2}\right]^{-2/9}
-
-    with :math:`\gamma = D_{we}/D_{pw}` (contact angle 0, one row) and
-    :math:`\lambda\nu = 0.83`.
-
-    Parameters
-    ----------
-    rollers : int
-        Number of rollers Z >= 3 [-].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    length : float
-        Effective roller length L_we > 0 [m].
-    b_m : float, optional
-        Rating factor for contemporary material and manufacturing, 0 < b_m <= 2 [-]
-        (ISO 281 Table: 1.1 for cylindrical and machined-ring needle roller
-        bearings, default; 1.0 for drawn-cup needle roller bearings).
-
-    Returns
-    -------
-    float
-        C_r [N].
-
-    Notes
-    -----
-    Valid for Z >= 3, 0 < D_we < D_pw < inf, 0 < L_we < inf. The formula reproduces
-    ISO 281's Table of f_c (84.2 at gamma = 0.10, 74.1 at 0.05); a catalogue's C_r
-    may differ (manufacturers' own b_m, profile and material).
-
-    Examples
-    --------
-    >>> f"{dynamic_load_rating(14, 70e-3, 11e-3, 11e-3) / 1e3:.1f} kN"
-    '59.7 kN'
-
-    References
-    ----------
-    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life,
-       clause 7 (radial roller bearings) and its table of f_c.
-    """
-    Z = _rollers(rollers)
-    Dpw = float(check_positive("pitch_diameter", pitch_diameter, "m"))
-    Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
-    Lwe = float(check_positive("length", length, "m"))
-    bm = float(check_interval("b_m", b_m, 0.0, 2.0, low_open=True))
-    _fits(Dpw, Dwe)
-    g = Dwe / Dpw
-    fc = (207.9 * 0.83 * g ** (2 / 9) * (1 - g) ** (29 / 27) / (1 + g) ** 0.25
-          * (1 + (1.04 * ((1 - g) / (1 + g)) ** (143 / 108)) ** 4.5) ** (-2 / 9))
-    return bm * fc * (Lwe * 1e3) ** (7 / 9) * Z ** 0.75 * (Dwe * 1e3) ** (29 / 27)
-
-
-def basic_rating_life(rating, load, exponent=10 / 3):
-    r"""Basic rating life L10 = (C/P)^p of ISO 281 [10^6 revolutions].
-
-    .. math:: L_{10} = \left(\frac{C_r}{P_r}\right)^{10/3}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r > 0 [N].
-    load : float or array_like
-        Dynamic equivalent load P_r > 0 (the radial load of a purely radially loaded
-        bearing) [N].
-    exponent : float, optional
-        Life exponent p, 0 < p < inf [-] (10/3 for roller bearings, default).
-
-    Returns
-    -------
-    float or ndarray
-        L10 [-] in millions of revolutions.
-
-    Notes
-    -----
-    Valid for 0 < C, P < inf (ISO 281 limits P to below about C/2 for its life
-    factors; the formula itself is what is computed here).
-
-    Examples
-    --------
-    >>> f"{basic_rating_life(65e3, 10e3):.1f}"
-    '512.5'
-
-    References
-    ----------
-    .. [1] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life.
-    """
-    C = check_positive("rating", rating, "N")
-    P = check_positive("load", load, "N")
-    p = check_positive("exponent", exponent, "")
-    r = (C / P) ** p
-    return float(r) if np.ndim(r) == 0 else r
-
-
-def lamina_load_ratings(rating, rollers, pitch_diameter, roller_diameter, laminae):
-    r"""Rolling-element load ratings of one lamina, inner and outer ring (ISO 16281).
-
-    .. math::
-
-        q_{ci} = \frac{C_i}{0.378\,Z}\,n_s^{-7/9}, \quad
-        q_{ce} = \frac{C_e}{0.364\,Z}\,n_s^{-7/9}, \quad
-        C_i = C_r\left[1 + \left(\frac{C_i}{C_e}\right)^{9/2}\right]^{2/9},\
-        \frac{C_i}{C_e} = 1.038\left(\frac{1-\gamma}{1+\gamma}\right)^{143/108}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r of the bearing, 0 < C_r < inf [N].
-    rollers : int
-        Number of rollers Z >= 3 [-].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    laminae : int
-        Number of laminae n_s >= 1 the roller length is divided into [-].
-
-    Returns
-    -------
-    tuple of float
-        (q_ci, q_ce) [N].
-
-    Notes
-    -----
-    Valid for 0 < C_r < inf, Z >= 3, 0 < D_we < D_pw, n_s >= 1 (contact angle 0, one
-    row). The ring split C_i/C_e and the factors 0.378, 0.364 are those of ISO/TS
-    16281:2008 as reconstructed from the Lundberg-Palmgren theory (the factors are the
-    ratios J_r/J_1, J_r/J_2 of the zero-clearance load zone, 0.3764 and 0.3630 by
-    :func:`load_zone_integral` and its analogues); ISO 16281:2025 keeps the method
-    (not checked against the 2025 text, which is not public).
-
-    Examples
-    --------
-    >>> qi, qe = lamina_load_ratings(65e3, 14, 70e-3, 11e-3, 1)
-    >>> f"{qi / 1e3:.1f} kN, {qe / 1e3:.1f} kN"
-    '12.7 kN, 19.4 kN'
-
-    References
-    ----------
-    .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), section on roller bearings (lamina
-       method).
-    .. [2] G. Lundberg, A. Palmgren, "Dynamic capacity of roller bearings", Acta
-       Polytechnica Mech. Eng. Series 2(4) (1952).
-    """
-    C = float(check_positive("rating", rating, "N"))
-    Z = _rollers(rollers)
-    Dpw = float(check_positive("pitch_diameter", pitch_diameter, "m"))
-    Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
-    n = int(check_interval("laminae", laminae, 1, 1e6))
-    _fits(Dpw, Dwe)
-    g = Dwe / Dpw
-    ratio = 1.038 * ((1 - g) / (1 + g)) ** (143 / 108)  # C_i / C_e
-    Ci = C * (1 + ratio ** 4.5) ** (2 / 9)
-    Ce = C * (1 + ratio ** -4.5) ** (2 / 9)
-    scale = n ** (-7 / 9)
-    return (Ci / (ISO_RING_FACTOR["inner"] * Z) * scale,
-            Ce / (ISO_RING_FACTOR["outer"] * Z) * scale)
-
-
-def reference_rating_life(rating, pitch_diameter, roller_diameter, slice_loads_inner,
-                          slice_loads_outer, rotating="inner"):
-    r"""Basic reference rating life L10r of ISO 16281 from the rollers' lamina loads.
-
-    .. math::
-
-        q_{e,k} = \left(\frac1Z\sum_j q_{jk}^{\,p}\right)^{1/p}\ (p = 4\
-        \text{rotating ring},\ 9/2\ \text{stationary}),\qquad
-        L_{10r} = \left(\sum_k\left[\left(\frac{q_{ci}}{q_{ei,k}}\right)^{-9/2} +
-        \left(\frac{q_{ce}}{q_{ee,k}}\right)^{-9/2}\right]\right)^{-8/9}
-
-    Parameters
-    ----------
-    rating : float
-        Basic dynamic load rating C_r, 0 < C_r < inf [N].
-    pitch_diameter : float
-        Pitch diameter D_pw > D_we [m].
-    roller_diameter : float
-        Roller diameter D_we > 0 [m].
-    slice_loads_inner : array_like
-        Lamina loads of the inner-ring contacts, shape (Z, n_s), >= 0 [N].
-    slice_loads_outer : array_like
-        Lamina loads of the outer-ring contacts, shape (Z, n_s), >= 0 [N].
-    rotating : str, optional
-        ``"inner"`` (default) or ``"outer"``: the ring that rotates against the load.
-
-    Returns
-    -------
-    float
-        L10r [-] in millions of revolutions (inf if no lamina is loaded).
-
-    Notes
-    -----
-    Valid for loads >= 0, 0 < D_we < D_pw, Z >= 3 rollers (the rows), n_s >= 1 laminae
-    (the columns). For an aligned bearing of zero clearance with
-    uniform lamina loads the Stribeck load zone gives L10r = (C_r/F_r)^4: the line-
-    contact exponent of Lundberg and Palmgren, equal to ISO 281's (C_r/P_r)^(10/3) at
-    P = C_r only (ISO 281 rounds the exponent to 10/3 for all roller bearings). No
-    edge-stress or life-modification factor (a_ISO) is applied: this is the basic
-    reference rating life.
-
-    Examples
-    --------
-    Ten of 14 rollers carrying 2 kN each, uniformly over 10 laminae:
-
-    >>> q = np.zeros((14, 10)); q[:10] = 200.0
-    >>> f"{reference_rating_life(65e3, 70e-3, 11e-3, q, q):.0f}"
-    '2024'
-
-    References
-    ----------
-    .. [1] ISO/TS 16281:2008 (now ISO 16281:2025), equations of the basic reference
-       rating life of roller bearings (lamina method).
-    """
-    qi = np.asarray(slice_loads_inner, dtype=float)
-    qo = np.asarray(slice_loads_outer, dtype=float)
-    if qi.ndim != 2 or qi.shape != qo.shape:
-        raise CombinationError({"slice_loads_inner": f"shape {qi.shape}",
-                                "slice_loads_outer": f"shape {qo.shape}"},
-                               "give two arrays of the same shape (rollers, laminae)")
-    for name, q in (("slice_loads_inner", qi), ("slice_loads_outer", qo)):
-        check_interval(name, q, 0.0, np.inf, high_open=True, unit="N")
-    if rotating not in ("inner", "outer"):
-        raise UnknownNameError("rotating", rotating, ["inner", "outer"])
-    Z, n = qi.shape
-    qci, qce = lamina_load_ratings(rating, Z, pitch_diameter, roller_diameter, n)
-    pi, po = (4.0, 4.5) if rotating == "inner" else (4.5, 4.0)
-    qei = np.mean(qi ** pi, axis=0) ** (1 / pi)
-    qee = np.mean(qo ** po, axis=0) ** (1 / po)
-    total = np.sum((qei / qci) ** 4.5) + np.sum((qee / qce) ** 4.5)
-    return math.inf if total == 0 else float(total ** (-8 / 9))
-
-
-def _rollers(rollers):
-    z = check_interval("rollers", rollers, 3, 100000)
-    if float(z) != int(z):
-        raise OutOfRangeError("rollers", float(z), "a whole number >= 3")
-    return int(z)
-
-
-def _fits(Dpw, Dwe):
-    if not Dpw > Dwe:
-        raise OutOfRangeError("pitch_diameter", Dpw, f"({Dwe:.6g}, inf) m", unit="m",
-                              hint="the pitch diameter must exceed the roller diameter "
-                                   "(the inner raceway diameter d_m - D is positive)")
-
-
 def _laminae(sol, length, n):
     """Lamina loads [N] of a slice solution on n equal laminae over the roller length:
     the slices' cumulative load (each slice's q_k w spread evenly over its width)
@@ -449,8 +111,9 @@ def _laminae(sol, length, n):
 def _worst_of(fields):
     """The largest value of each stress measure over named contacts' stress results
     (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
-    "notes": [...]}."""
-    from .stresses import MEASURES
+    "notes": [...]}; a measure whose maximum is not converged in some contact (an
+    edge-loaded one) carries "withheld": the reason (its value is the slice width's)."""
+    from ..stresses import MEASURES
 
     worst = {}
     for m in MEASURES:
@@ -458,9 +121,17 @@ def _worst_of(fields):
         w = st.worst[m]
         worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
                     "x": float(w["x"]), "contact": name}
+        held = [n for n, f in fields.items() if m in getattr(f, "withheld", {})]
+        if held:
+            worst[m]["withheld"] = (" and ".join(held) + " contact: "
+                                    + fields[held[0]].withheld[m])
     notes = []
     for name, st in fields.items():
         notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
+    held = sorted(m for m in MEASURES if "withheld" in worst[m])
+    if held:
+        notes.append("stress maxima not reported (" + ", ".join(held) + "): "
+                     + worst[held[0]]["withheld"])
     return {"worst": worst, "notes": notes}
 
 
@@ -469,7 +140,7 @@ def _contact_stresses(si, so, poisson, rollers=(None, None)):
     (:func:`linecontact.stresses.roller_stresses`, no traction); `rollers`: each
     contact's (radius, length, estar, profile), so that the measured error is quoted
     only inside the measured range."""
-    from .stresses import roller_stresses
+    from ..stresses import roller_stresses
 
     return _worst_of({"inner": roller_stresses(si, poisson=poisson, roller=rollers[0]),
                       "outer": roller_stresses(so, poisson=poisson, roller=rollers[1])})
@@ -541,7 +212,8 @@ class BearingSolution:
         Subsurface stress maxima at the most loaded roller, worst of its two contacts,
         per measure (``"tresca"``, ``"von_mises"``, ``"orthogonal_shear"``): value [Pa],
         depth [m], x along the roller [m], contact (:mod:`linecontact.stresses`, no
-        traction).
+        traction); and ``withheld``, the reason, where an edge-loaded contact makes the
+        maximum a slice-width number (not converged: report "-").
 
     Notes
     -----
@@ -593,60 +265,6 @@ class BearingSolution:
         return out
 
 
-class _Law:
-    """delta(Q) of one roller on a grid and its monotone inverse Q(delta)."""
-
-    def __init__(self, Q, delta, k):
-        self.lnQ = np.log(Q)
-        self.lnd = np.log(delta)
-        self.s = k * delta / Q  # d ln Q / d ln delta
-        self.Qtop = float(Q[-1])
-        self.dtop = float(delta[-1])
-        if not np.all(np.diff(self.lnd) > 0):
-            raise OutOfRangeError("roller law", "not increasing", "a deflection that "
-                                  "grows with the load")
-
-    def delta_of(self, Q):
-        """delta(Q) by the Hermite interpolant of ln delta against ln Q."""
-        lnQ = np.log(np.asarray(Q, dtype=float))
-        return np.exp(self._hermite(lnQ, self.lnQ, self.lnd, 1.0 / self.s)[0])
-
-    def force(self, delta):
-        """(Q, dQ/d delta) at ring approaches delta (0 where delta <= 0)."""
-        d = np.asarray(delta, dtype=float)
-        Q = np.zeros_like(d)
-        k = np.zeros_like(d)
-        on = d > 0
-        if np.any(d[on] > self.dtop * (1 + 1e-12)):
-            raise OutOfRangeError("roller approach", float(d.max()),
-                                  f"(0, {self.dtop:.6g}] m (the tabulated roller law)",
-                                  unit="m", hint="a roller load beyond the law's range")
-        if np.any(on):
-            v, dv = self._hermite(np.log(d[on]), self.lnd, self.lnQ, self.s)
-            Q[on] = np.exp(v)
-            k[on] = Q[on] * dv / d[on]
-        return Q, k
-
-    @staticmethod
-    def _hermite(x, xs, ys, ss):
-        """Cubic Hermite interpolation (value, slope); linear extension below xs[0]."""
-        i = np.clip(np.searchsorted(xs, x) - 1, 0, len(xs) - 2)
-        h = xs[i + 1] - xs[i]
-        t = (x - xs[i]) / h
-        below = x < xs[0]
-        t = np.where(below, 0.0, t)
-        h00 = 2 * t**3 - 3 * t**2 + 1
-        h10 = t**3 - 2 * t**2 + t
-        h01 = -2 * t**3 + 3 * t**2
-        h11 = t**3 - t**2
-        y = h00 * ys[i] + h10 * h * ss[i] + h01 * ys[i + 1] + h11 * h * ss[i + 1]
-        dy = ((6 * t**2 - 6 * t) * ys[i] + (3 * t**2 - 4 * t + 1) * h * ss[i]
-              + (-6 * t**2 + 6 * t) * ys[i + 1] + (3 * t**2 - 2 * t) * h * ss[i + 1]) / h
-        y = np.where(below, ys[0] + ss[0] * (x - xs[0]), y)
-        dy = np.where(below, ss[0], dy)
-        return y, dy
-
-
 class RadialRollerBearing:
     r"""A radial cylindrical or needle roller bearing: geometry, material, contact law.
 
@@ -674,8 +292,10 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the coupled-slice model, 10 <= n <= 1000 [-] (default 40: the bearing's
-        outputs converged to 0.1 %, docs/bearings.md).
+        Slices of the slice model, 10 <= n <= 1000 (ISO slicing: n >= 30) [-]
+        (default None: the model's, as in every other door,
+        :func:`linecontact.roller.solvers.default_n_slices`: 50 coupled slices, 30 ISO
+        slicing; the laminae of the rating life of a sliced roller are as many).
     azimuth0 : float, optional
         Azimuth psi_0 of the first roller from the load line, |psi_0| <= pi [rad]
         (default 0: a roller under the load).
@@ -685,7 +305,7 @@ class RadialRollerBearing:
     rotating : str, optional
         The ring rotating against the load, ``"inner"`` (default) or ``"outer"``.
     poisson : float, optional
-        Poisson's ratio of the rings for the von Mises stress, 0 <= nu < 0.5 [-]
+        Poisson's ratio of the rings for the von Mises stress, 0 <= nu <= 0.5 [-]
         (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
 
     Notes
@@ -712,11 +332,10 @@ class RadialRollerBearing:
     """
 
     def __init__(self, rollers, pitch_diameter, roller_diameter, length, clearance=0.0,
-                 *, estar=115.38e9, model=None, profile=None, n_slices=N_SLICES,
+                 *, estar=115.38e9, model=None, profile=None, n_slices=None,
                  azimuth0=0.0, rating=None, rotating="inner", poisson=0.3):
-        from .models import available_models
-        from .profiles import StraightProfile, as_profile
-        from .raceway import SLICE_MODELS
+        from ..models import available_models
+        from ..profiles import StraightProfile, as_profile
 
         self.rollers = _rollers(rollers)
         self.pitch_diameter = float(check_positive("pitch_diameter", pitch_diameter, "m"))
@@ -729,20 +348,20 @@ class RadialRollerBearing:
             "clearance", clearance, -D, D, low_open=True, high_open=True, unit="m",
             hint="the clearance must be smaller than the roller diameter"))
         self.estar = float(check_positive("estar", estar, "Pa"))
-        self.n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
+        if n_slices is not None:
+            n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
         self.azimuth0 = float(check_interval("azimuth0", azimuth0, -math.pi, math.pi,
                                              unit="rad"))
         if rotating not in ("inner", "outer"):
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
-        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5,
-                                            high_open=True))
+        self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5))
         self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)
         straight = isinstance(self.profile, StraightProfile)
         if model is None:
-            model = "universal" if straight else "profiled-roller"
+            model = "universal" if straight else DEFAULT_SLICE_MODEL
         if model not in available_models():
             raise UnknownNameError("model", model, available_models())
         if not straight and model not in SLICE_MODELS:
@@ -751,6 +370,12 @@ class RadialRollerBearing:
                                    "model='profiled-roller' (coupled slices)")
         self.model = model
         self.sliced = model in SLICE_MODELS
+        # the slice count of the slice model solving the rollers (a law's tilted twin:
+        # the default slice model's)
+        from ..roller.solvers import default_n_slices
+
+        self.n_slices = (default_n_slices(model if self.sliced else DEFAULT_SLICE_MODEL)
+                         if n_slices is None else n_slices)
         # raceways: the inner one at (d_m - D)/2; the outer one leaves P_d/2 per side
         self.raceways = Raceways(inner=(self.pitch_diameter - D) / 2,
                                  outer=(self.pitch_diameter + D) / 2 + self.clearance / 2,
@@ -787,23 +412,23 @@ class RadialRollerBearing:
 
     def _contacts(self):
         """(solve at depth, solve at force) of the inner and the outer contact."""
-        from .roller import ProfiledRoller, iso_slicing
+        out = []
+        for c in self._solvers():
+            out.append((lambda d, c=c: c.at_depth(d, 0.0),
+                        lambda F, c=c: c.at_force(F, 0.0)))
+        return out
+
+    def _solvers(self):
+        """The slice solvers of the inner and the outer contact of one roller (fresh:
+        each keeps its own warm start), from the factory every door uses
+        (:func:`linecontact.roller.solvers.slice_solver`), as
+        :func:`~linecontact.raceway.roller_between_raceways` builds them."""
+        from ..roller.solvers import slice_solver
 
         R1 = self.roller_diameter / 2
-        out = []
-        for R in effective_radii(R1, self.raceways.inner, self.raceways.outer):
-            if self.model == "profiled-roller":
-                c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                                   n_slices=self.n_slices)
-                out.append((lambda d, c=c: c.at_depth(d, tilt=0.0),
-                            lambda F, c=c: c.at_force(F, tilt=0.0)))
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                out.append((lambda d, a=args: iso_slicing(*a, depth=d, tilt=0.0,
-                                                          n_slices=self.n_slices),
-                            lambda F, a=args: iso_slicing(*a, force=F, tilt=0.0,
-                                                          n_slices=self.n_slices)))
-        return out
+        return [slice_solver(self.model, R, self.length, self.estar, self.profile,
+                             n_slices=self.n_slices)
+                for R in effective_radii(R1, self.raceways.inner, self.raceways.outer)]
 
     @staticmethod
     def _depth_table(at_depth, d_lo, d_top, F_top):
@@ -1003,7 +628,7 @@ class RadialRollerBearing:
     def _law_stresses(self, Q):
         """Subsurface stresses of the most loaded roller under a law: the plane-strain
         Hertz strip of each contact at the mean line load Q/L."""
-        from .stresses import line_contact_stresses
+        from ..stresses import line_contact_stresses
 
         R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
                                       self.raceways.outer)
@@ -1197,29 +822,10 @@ class RadialRollerBearing:
         """(at_depth(d, t) -> RollerSolution, first_contact_depth(t)) factories of the
         inner and the outer contact of one roller (fresh solvers: each keeps its own
         warm start)."""
-        from .roller import ProfiledRoller, iso_slicing
-
-        R1 = self.roller_diameter / 2
-        radii = effective_radii(R1, self.raceways.inner, self.raceways.outer)
-        pair = []
-        for R in radii:
-            c = ProfiledRoller(R, self.length, self.estar, self.profile,
-                               n_slices=self.n_slices)
-            if self.model == "profiled-roller":
-                pair.append(c.at_depth)
-            else:
-                args = (R, self.length, self.estar, self.profile)
-                pair.append(lambda d, t, a=args: iso_slicing(
-                    *a, depth=d, tilt=t, n_slices=self.n_slices))
-        if self.model == "profiled-roller":
-            return pair, c.first_contact_depth
-        # ISO slicing: first contact on its own slice centres (x_k tan theta)
-        from .profiles import roller_drop
-
-        L, n = self.length, self.n_slices
-        x = -L / 2 + L / n * (np.arange(n) + 0.5)
-        P = roller_drop(self.profile, L, x)
-        return pair, lambda t: float(np.min(P - x * math.tan(t)))
+        inner, outer = self._solvers()
+        # the first contact: the same for both (the profile and the slices), here the
+        # outer contact's (ISO slicing: on its slice centres, x_k tan theta)
+        return [inner.at_depth, outer.at_depth], outer.first_contact_depth
 
     def _solve_tilted(self, F, M, theta):
         r"""Ring displacement and tilt (M given) or displacement at a given tilt, every
@@ -1355,8 +961,3 @@ class RadialRollerBearing:
         Fm = math.sqrt(Fi[i] * Fi[i + 1])
         si, so = solvers[0](Fm), solvers[1](Fm)
         return abs(float(law.delta_of(Fm)) / (si.depth + so.depth) - 1.0)
-
-
-# An unknown keyword names the valid ones and the close match (docs/inputs.md).
-from .validity import refuse_unknown_keywords  # noqa: E402
-refuse_unknown_keywords(globals())

@@ -1,16 +1,16 @@
-"""Validity ranges as data, and the one error raised for input outside them.
+"""Validity ranges as data, and the checks that refuse input outside them.
 
 Every public function of :mod:`linecontact` checks its inputs in physical terms before
-any formula sees them. A value outside its valid range raises :class:`OutOfRangeError`
-(a :class:`ValueError`) whose message names the parameter, the offending value and the
-valid range, for example::
+any formula sees them. A value outside its valid range raises
+:class:`~linecontact.errors.OutOfRangeError` (a :class:`ValueError`) whose message names
+the parameter, the offending value and the valid range, for example::
 
     radius = -0.005 m is outside the valid range (0, inf) m
 
 Nothing is clamped and no NaN is returned silently.
 
 The ranges themselves are :class:`Interval` objects, so that the same data renders the
-Notes section of a docstring and the error message.
+Notes section of a docstring (:func:`document`) and the error message.
 """
 from __future__ import annotations
 
@@ -18,384 +18,21 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import OutOfRangeError
+
 __all__ = [
-    "OutOfRangeError",
-    "UnknownNameError",
-    "UnknownKeywordError",
-    "CombinationError",
     "Interval",
     "check_positive",
     "check_interval",
     "check_scaled",
     "check_flag",
     "document",
-    "refuse_unknown_keywords",
     "POSITIVE_LENGTH",
     "POSITIVE_FORCE",
     "POSITIVE_DEPTH",
     "POSITIVE_MODULUS",
     "POISSON_RATIO",
 ]
-
-
-class OutOfRangeError(ValueError):
-    """An input lies outside the range in which the formula or table is valid.
-
-    Parameters
-    ----------
-    parameter : str
-        Name of the offending parameter, as in the function signature.
-    value : float or str
-        The offending value (the first offending element of an array), in the unit
-        `unit` [`unit`]; a str describes a value that is not a number.
-    valid : str
-        The valid range, e.g. ``"(0, inf) m"`` or ``"[0.1, 6]"``.
-    unit : str, optional
-        Unit of `value`, printed after it.
-    hint : str, optional
-        What to do instead; appended to the message.
-    where : str, optional
-        Where the value sits, printed in parentheses after it (e.g. ``"element [1] of
-        shape (2,)"`` or ``"at depth 1e-06 m"``).
-
-    Notes
-    -----
-    No range applies to the error itself: any name, value and range are accepted. A
-    numeric value is printed with 6 significant digits (``%.6g``); the attributes
-    ``parameter``, ``value``, ``valid``, ``unit``, ``hint`` and ``where`` keep what was
-    given, and the error survives pickling (so it can cross process boundaries).
-
-    Examples
-    --------
-    >>> err = OutOfRangeError("radius", -0.005, "(0, inf) m", unit="m")
-    >>> str(err)
-    'radius = -0.005 m is outside the valid range (0, inf) m'
-    >>> isinstance(err, ValueError), err.parameter, err.value, err.valid
-    (True, 'radius', -0.005, '(0, inf) m')
-    """
-
-    def __init__(self, parameter, value, valid, *, unit="", hint="", where=""):
-        self.parameter = parameter
-        self.value = value
-        self.valid = valid
-        self.unit = unit
-        self.hint = hint
-        self.where = where
-        if isinstance(value, (float, int, np.floating, np.integer)):
-            shown = f"{float(value):.6g}"
-        else:
-            shown = repr(value) if isinstance(value, str) else str(value)
-        msg = f"{parameter} = {shown}{' ' + unit if unit else ''}"
-        if where:
-            msg += f" ({where})"
-        msg += f" is outside the valid range {valid}"
-        if hint:
-            msg += f"; {hint}"
-        super().__init__(msg)
-
-    def __reduce__(self):  # keep picklable despite the keyword-only arguments
-        return (_rebuild, (self.parameter, self.value, self.valid, self.unit, self.hint,
-                           self.where))
-
-
-def _rebuild(parameter, value, valid, unit, hint, where):
-    return OutOfRangeError(parameter, value, valid, unit=unit, hint=hint, where=where)
-
-
-class UnknownNameError(ValueError):
-    """A name (a model key, a profile, an option, a method) that is not one of the known
-    names; the message lists them.
-
-    Parameters
-    ----------
-    parameter : str
-        Name of the parameter that took the name, as in the function signature.
-    value : object
-        The unknown name (printed with repr).
-    valid : iterable of str
-        The names accepted there.
-    hint : str, optional
-        What to do instead; appended to the message.
-
-    Notes
-    -----
-    Not an :class:`OutOfRangeError`: a name has no range. The attributes
-    ``parameter``, ``value`` and ``valid`` (a tuple) keep what was given; the error
-    survives pickling.
-
-    Examples
-    --------
-    >>> err = UnknownNameError("model", "hertz", ["universal", "kunz"])
-    >>> str(err)
-    "model = 'hertz' is not a known name; valid: 'universal', 'kunz'"
-    >>> isinstance(err, ValueError), isinstance(err, OutOfRangeError)
-    (True, False)
-    """
-
-    def __init__(self, parameter, value, valid, *, hint=""):
-        self.parameter = parameter
-        self.value = value
-        self.valid = tuple(valid)
-        self.hint = hint
-        names = ", ".join(repr(v) for v in self.valid)
-        msg = f"{parameter} = {value!r} is not a known name; valid: {names}"
-        super().__init__(msg + (f"; {hint}" if hint else ""))
-
-    def __reduce__(self):
-        return (_rebuild_name, (self.parameter, self.value, self.valid, self.hint))
-
-
-def _rebuild_name(parameter, value, valid, hint):
-    return UnknownNameError(parameter, value, valid, hint=hint)
-
-
-class UnknownKeywordError(UnknownNameError, TypeError):
-    """A keyword argument that a function, method or class does not take: the message
-    names it, the close match ("did you mean") and every keyword it does take.
-
-    A :class:`UnknownNameError` (so a :class:`ValueError`, as every input error of the
-    library) and a :class:`TypeError` (what Python raises for an unexpected keyword, so
-    ``except TypeError`` still catches it).
-
-    Parameters
-    ----------
-    function : str
-        The callable's name as the user wrote it (``"johnson_depth"``,
-        ``"ProfiledRoller.at_force"``).
-    keyword : str
-        The keyword it does not take.
-    valid : iterable of str
-        The keywords it takes.
-
-    Notes
-    -----
-    One line, ``johnson_depth keyword = 'cc' is not a known name; valid: ...; did you
-    mean 'c'?``; the close match is :func:`difflib.get_close_matches` (cutoff 0.6, and
-    a case-insensitive equal name first). The attributes ``function``, ``keyword`` and
-    ``valid`` keep what was given; the error survives pickling.
-
-    Examples
-    --------
-    >>> err = UnknownKeywordError("johnson_depth", "cc",
-    ...                           ["force", "radius", "length", "estar", "c"])
-    >>> str(err)
-    "johnson_depth keyword = 'cc' is not a known name; valid: 'force', 'radius', 'length', 'estar', 'c'; did you mean 'c'?"
-    >>> isinstance(err, ValueError), isinstance(err, TypeError)
-    (True, True)
-    """
-
-    def __init__(self, function, keyword, valid):
-        import difflib
-
-        self.function = function
-        self.keyword = keyword
-        valid = tuple(valid)
-        same = [v for v in valid if str(v).lower() == str(keyword).lower()]
-        close = same or difflib.get_close_matches(str(keyword), [str(v) for v in valid],
-                                                  n=2, cutoff=0.6)
-        hint = ("did you mean " + " or ".join(repr(c) for c in close) + "?") if close \
-            else ""
-        super().__init__(f"{function} keyword", keyword, valid, hint=hint)
-
-    def __reduce__(self):
-        return (UnknownKeywordError, (self.function, self.keyword, self.valid))
-
-
-def _unknown_keyword(func, name, kwargs):
-    """The UnknownKeywordError for the first keyword in `kwargs` that `func` does not
-    take (None if it takes them all: the TypeError had another cause)."""
-    import inspect
-
-    try:
-        params = inspect.signature(func).parameters
-    except (TypeError, ValueError):
-        return None
-    if any(p.kind is p.VAR_KEYWORD for p in params.values()):
-        return None
-    valid = [n for n, p in params.items()
-             if n not in ("self", "cls") and p.kind not in (p.POSITIONAL_ONLY,
-                                                             p.VAR_POSITIONAL)]
-    for key in kwargs:
-        if key not in valid:
-            return UnknownKeywordError(name, key, valid)
-    return None
-
-
-#: inspect.CO_VARKEYWORDS: the code object takes **kwargs.
-_CO_VARKEYWORDS = 0x08
-
-
-def _guarded(func, name):
-    """`func` wrapped so that an unknown keyword raises UnknownKeywordError.
-
-    The call runs inside a ``try`` (free in CPython >= 3.11 until something raises); a
-    TypeError whose traceback ends in this wrapper (raised while Python bound the
-    arguments, before `func`'s own frame began) and names a keyword `func` does not
-    take is replaced. Every other error passes unchanged.
-
-    Where `func` is itself a pass-through decorator's wrapper (``functools.wraps``,
-    taking ``*args, **kwargs``, e.g. :func:`linecontact._numerics.serial_blas`), the
-    function it wraps decides: a TypeError raised in the wrapper's own frame, binding
-    the wrapped function's arguments, is replaced likewise.
-    """
-    import functools
-    import inspect
-
-    inner = inspect.unwrap(func)
-    if getattr(func, "_keywords_checked", False) or \
-            inner.__code__.co_flags & _CO_VARKEYWORDS:
-        return func  # wrapped already, or it takes **kwargs and checks them itself
-    # the frame in which binding the innermost function's arguments fails: this wrapper's
-    # own, or the decorator's wrapper's
-    binder = None if inner is func else func.__code__
-
-    @functools.wraps(func)
-    def guarded(*args, **kwargs):
-        try:
-            return func(*args, **kwargs)
-        except TypeError as exc:
-            tb = exc.__traceback__.tb_next
-            if kwargs and (tb is None or (tb.tb_next is None and
-                                          tb.tb_frame.f_code is binder)):
-                err = _unknown_keyword(func, name, kwargs)
-                if err is not None:
-                    raise err from None
-            raise
-
-    guarded._keywords_checked = True
-    return guarded
-
-
-def refuse_unknown_keywords(namespace):
-    """Make every public callable of a module refuse an unknown keyword by name.
-
-    Each function named in ``namespace["__all__"]``, and the constructor and public
-    methods (plain, static and class methods defined in the class body) of each class
-    named there (exceptions aside), is replaced by a wrapper that raises
-    :class:`UnknownKeywordError` (one line: the keyword, the close match and the valid
-    keywords) where Python would raise its bare ``TypeError: ... got an unexpected
-    keyword argument``. Called once at the end of each public module of linecontact.
-
-    Parameters
-    ----------
-    namespace : dict
-        A module's ``globals()``, holding ``__all__``.
-
-    Returns
-    -------
-    None
-
-    Notes
-    -----
-    The wrapper keeps the signature, docstring, name and module of what it wraps
-    (:func:`functools.wraps`, so :func:`inspect.signature` and doctests see the
-    original) and costs one extra Python call per call (about 0.2 us; a vectorised
-    call's time is unchanged; docs/history.md, "The unknown-keyword guard"). Callables taking
-    ``**kwargs`` check their own keywords and are left alone; a callable wrapped once
-    is not wrapped again (a re-export). Valid input: any module namespace with an
-    ``__all__`` list of names it defines.
-
-    Examples
-    --------
-    >>> def law(force, c=1.0):
-    ...     "F [N] scaled."
-    ...     return c * force
-    >>> ns = {"__all__": ["law"], "law": law}
-    >>> refuse_unknown_keywords(ns)
-    >>> ns["law"](2.0, cc=0.5)
-    Traceback (most recent call last):
-    ...
-    linecontact.validity.UnknownKeywordError: law keyword = 'cc' is not a known name; valid: 'force', 'c'; did you mean 'c'?
-
-    References
-    ----------
-    Python Language Reference, section 'Calls' (keyword arguments bound to parameter
-    names, TypeError otherwise); PEP 362 (function signature objects).
-    """
-    import inspect
-
-    for public in namespace.get("__all__", ()):
-        obj = namespace.get(public)
-        if inspect.isfunction(obj):
-            namespace[public] = _guarded(obj, obj.__name__)
-        elif inspect.isclass(obj) and not issubclass(obj, BaseException):
-            _guard_class(obj)
-
-
-def _guard_class(cls):
-    """Wrap the constructor and the public methods of `cls` and of its bases from the
-    same package (a public class may inherit them from a private base)."""
-    home = cls.__module__.split(".")[0]
-    for klass in cls.__mro__:
-        if klass.__module__.split(".")[0] == home:
-            _guard_body(klass)
-
-
-def _guard_body(cls):
-    """Wrap the constructor and the public methods defined in `cls`'s own body."""
-    import inspect
-
-    for attr, member in list(vars(cls).items()):
-        if attr.startswith("_") and attr != "__init__":
-            continue
-        if isinstance(member, (staticmethod, classmethod)):
-            inner = member.__func__
-            if getattr(inner, "_keywords_checked", False):
-                continue
-            name = f"{cls.__name__}.{attr}"
-            setattr(cls, attr, type(member)(_guarded(inner, name)))
-        elif inspect.isfunction(member):
-            name = cls.__name__ if attr == "__init__" else f"{cls.__name__}.{attr}"
-            try:
-                setattr(cls, attr, _guarded(member, name))
-            except (AttributeError, TypeError):  # a class that refuses new attributes
-                return
-
-
-class CombinationError(ValueError):
-    """Inputs that are each valid but whose combination is not defined physically (or
-    not by the methods here): names every parameter and value involved, and why.
-
-    Parameters
-    ----------
-    parameters : dict
-        Parameter name -> the value given (numbers printed with 6 digits, other values
-        with repr), in the order they should be named.
-    reason : str
-        Why the combination is refused (one clause, no trailing period).
-    unit : dict, optional
-        Parameter name -> unit of its value, printed after it.
-
-    Notes
-    -----
-    One line, ``a = 1, b = 'x': reason``. The attributes ``parameters``, ``reason`` and
-    ``unit`` keep what was given; the error survives pickling.
-
-    Examples
-    --------
-    >>> err = CombinationError({"tilt": "free", "material2": "viscoelastic"},
-    ...                        "Lee-Radok needs a contact shape fixed in time")
-    >>> str(err)
-    "tilt = 'free', material2 = 'viscoelastic': Lee-Radok needs a contact shape fixed in time"
-    """
-
-    def __init__(self, parameters, reason, unit=None):
-        self.parameters = dict(parameters)
-        self.reason = reason
-        self.unit = dict(unit or {})
-        parts = []
-        for name, value in self.parameters.items():
-            if isinstance(value, (float, int, np.floating, np.integer)) and not isinstance(
-                    value, bool):
-                shown = f"{float(value):.6g}"
-            else:
-                shown = repr(value)
-            u = self.unit.get(name, "")
-            parts.append(f"{name} = {shown}{' ' + u if u else ''}")
-        super().__init__(f"{', '.join(parts)}: {reason}")
-
-    def __reduce__(self):
-        return (CombinationError, (self.parameters, self.reason, self.unit))
 
 
 def _fmt(x):
@@ -440,7 +77,7 @@ class Interval:
     >>> L_over_R.check(7.0)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: L/R = 7 is outside the valid range [0.1, 6]
+    linecontact.errors.OutOfRangeError: L/R = 7 is outside the valid range [0.1, 6]
     """
 
     name: str
@@ -660,7 +297,7 @@ def check_scaled(name, value, scale, scaled, unit=""):
     >>> check_scaled("force", 1e-305, 4.6e3, "force F R/(E* L^3)", "N")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: force = 1e-305 N is outside the valid range >= 1.02353e-304 N; below it the dimensionless force F R/(E* L^3) is a subnormal number (precision lost)
+    linecontact.errors.OutOfRangeError: force = 1e-305 N is outside the valid range >= 1.02353e-304 N; below it the dimensionless force F R/(E* L^3) is a subnormal number (precision lost)
     """
     v = np.asarray(value)
     if v.size == 0:
@@ -741,7 +378,7 @@ def check_interval(name, value, low, high, *, low_open=False, high_open=False, u
     >>> check_interval("poisson", [0.3, 0.5], 0.0, 0.5, high_open=True)
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: poisson = 0.5 (element [1] of shape (2,)) is outside the valid range [0, 0.5)
+    linecontact.errors.OutOfRangeError: poisson = 0.5 (element [1] of shape (2,)) is outside the valid range [0, 0.5)
     """
     if _exact_scalar(value) and _exact_scalar(low) and _exact_scalar(high):
         # one Python number between fixed ends (every constructor and solve checks
@@ -818,7 +455,7 @@ def check_positive(name, value, unit="", *, hint=""):
     >>> check_positive("radius", -0.005, "m")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: radius = -0.005 m is outside the valid range (0, inf) m
+    linecontact.errors.OutOfRangeError: radius = -0.005 m is outside the valid range (0, inf) m
     """
     return check_interval(name, value, 0.0, np.inf, low_open=True, high_open=True,
                           unit=unit, hint=hint)
@@ -847,14 +484,6 @@ def document(**ranges):
         func.__doc__ = doc
         return func
     return deco
-
-
-def out(x):
-    """Return a Python float for a 0-d result, the array otherwise (internal helper)."""
-    x = np.asarray(x)
-    if x.ndim == 0:
-        return float(x)
-    return x
 
 
 #: Ranges shared by many functions (rendered in their docstrings).
@@ -902,7 +531,7 @@ def check_flag(name, value):
     >>> check_flag("extrapolate", "no")
     Traceback (most recent call last):
     ...
-    linecontact.validity.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False; a yes/no option takes a boolean, not a word or number
+    linecontact.errors.OutOfRangeError: extrapolate = 'no' is outside the valid range True or False; a yes/no option takes a boolean, not a word or number
 
     References
     ----------
@@ -913,6 +542,3 @@ def check_flag(name, value):
     raise OutOfRangeError(name, value, "True or False",
                           hint="a yes/no option takes a boolean, not a word or number")
 
-
-# This module's own public callables refuse an unknown keyword by name too.
-refuse_unknown_keywords(globals())

@@ -1,0 +1,104 @@
+r"""Radial cylindrical and needle roller bearings: load distribution, stiffness, rating life.
+
+Z rollers (diameter D, effective length L, any axial profile) sit at the azimuths
+:math:`\psi_j = \psi_0 + 2\pi j/Z` on the pitch diameter :math:`d_m`, between an inner
+raceway of radius :math:`(d_m - D)/2` (convex) and an outer raceway (concave) that
+leaves the radial internal clearance :math:`P_d` (ISO 5753-1's radial internal
+clearance; Harris' diametral clearance :math:`P_d = d_o - d_i - 2D`, negative for
+preload). A radial displacement :math:`\delta_r` of the inner ring towards the roller at
+:math:`\psi = 0` gives roller j the ring approach
+
+.. math:: \delta_j = \delta_r\cos\psi_j - P_d/2,
+
+and the roller carries :math:`Q_j = Q(\delta_j)` for :math:`\delta_j > 0`, 0 otherwise.
+:math:`Q(\delta)` is the whole roller between its two raceways (the two contacts in
+series with the same load, :func:`linecontact.raceway.roller_between_raceways`) under
+any contact law of :mod:`linecontact.models` (the universal curve by default, the
+ISO/TS 16281 spring ``"iso16281"`` for comparison), or the coupled-slice model of
+:mod:`linecontact.roller` for a profiled roller. Equilibrium of the ring:
+
+.. math:: F_r = \sum_j Q_j\cos\psi_j, \qquad
+          K_{rr} = \frac{dF_r}{d\delta_r} = \sum_{j\,\text{loaded}} k_j\cos^2\psi_j,
+
+with :math:`k_j = dQ/d\delta` of roller j: the radial stiffness is the exact derivative
+of the equilibrium (no finite differences).
+
+How it is solved
+----------------
+The roller law is evaluated once, vectorised, on a geometric grid of loads
+(:data:`GRID_POINTS` points from :math:`10^{-9}F_r` to :math:`2.05F_r`, which bounds
+every roller load for :math:`Z \ge 3`), giving :math:`\delta(Q)` and its slope; its
+inverse :math:`Q(\delta)` is the cubic Hermite interpolant of :math:`\ln Q` against
+:math:`\ln\delta` with the exact slopes :math:`d\ln Q/d\ln\delta = k\delta/Q`. Newton's
+method on :math:`\delta_r`, bracketed, solves the ring equilibrium on that inverse; then
+(laws) a Newton polish on the loaded rollers' loads and :math:`\delta_r` with the exact
+law, :math:`\delta(Q_j) = \delta_r\cos\psi_j - P_d/2`, :math:`\sum Q_j\cos\psi_j = F_r`,
+removes the interpolation error: the loads then sum to :math:`F_r` to round-off.
+
+A profiled roller under the slice model is tabulated the same way, at
+:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve); its slice loads
+for the rating life are interpolated between the tabulated load distributions (in
+:math:`\ln Q`), and the table's interpolation error is reported
+(:attr:`BearingSolution.law_error`).
+
+Tilting moment and misalignment
+-------------------------------
+A tilt theta of the inner ring in the load plane adds :math:`\theta x\cos\psi_j` to
+roller j's approach along its axis x: the rings are misaligned by
+:math:`\phi_j = \theta\cos\psi_j` at roller j, which is free to tilt between its two
+slice contacts (force and moment balance, :mod:`linecontact.raceway`) and carries
+:math:`Q_j, M_j`; the ring carries :math:`F_r = \sum Q_j\cos\psi_j`,
+:math:`M = \sum M_j\cos\psi_j`. Given M, (delta_r, theta) are solved (2 DOF); given
+theta, delta_r (1 DOF). One Newton iteration on all unknowns (each distinct roller's
+inner depth and tilt, and the ring's) with the slice model's exact 2x2 contact
+matrices; the bearing's stiffness matrix is
+:math:`K = \sum_j \cos^2\psi_j\,(K_{in}^{-1} + K_{out}^{-1})^{-1}`
+= d(F_r, M)/d(delta_r, theta), exact for the discrete equations (docs/bearings.md).
+
+Stribeck's result
+-----------------
+For :math:`Q = K\delta^n` and the load-zone parameter
+:math:`\varepsilon = \tfrac12(1 - P_d/(2\delta_r))`, the continuous load zone gives
+:math:`Q_{max} = F_r/(Z J_r(\varepsilon))` (:func:`load_zone_integral`);
+:math:`J_r(0.5) = 0.2448` for n = 10/9: :math:`Z Q_{max}/F_r \to 4.08` for many rollers.
+
+Rating life
+-----------
+ISO 281:2007's basic dynamic load rating :math:`C_r` (:func:`dynamic_load_rating`) and
+basic rating life :math:`L_{10} = (C_r/P_r)^{10/3}` (:func:`basic_rating_life`), and the
+basic reference rating life of ISO 16281:2025 (which replaced ISO/TS 16281:2008; the
+lamina method for roller bearings, :func:`reference_rating_life`), both in
+:math:`10^6` revolutions.
+
+References
+----------
+.. [1] R. Stribeck, "Kugellager fuer beliebige Belastungen", Z. VDI 45 (1901) 73-125.
+.. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007),
+   load distribution in radially loaded bearings (the integral J_r(epsilon)).
+.. [3] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life.
+.. [4] ISO 16281:2025 (formerly ISO/TS 16281:2008), Rolling bearings - Methods for
+   calculating the modified reference rating life for universally loaded rolling
+   bearings.
+"""
+from __future__ import annotations
+
+from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
+                     load_zone_integral)
+from .ratings import (basic_rating_life, dynamic_load_rating, lamina_load_ratings,
+                      reference_rating_life)
+
+__all__ = [
+    "RadialRollerBearing",
+    "BearingSolution",
+    "load_zone_integral",
+    "dynamic_load_rating",
+    "basic_rating_life",
+    "reference_rating_life",
+    "lamina_load_ratings",
+    "GRID_POINTS",
+    "PROFILED_POINTS",
+]
+
+
+# An unknown keyword names the valid ones and the close match (docs/inputs.md); the
+# classes are wrapped in place, the functions here, where users import them.

@@ -51,7 +51,24 @@ x < 0, 250 mm for x > 0, given as a 2001-point user table). Mean line loads
 F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 0.86-3.8 GPa). 104 cases.
 
-Budget: measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
+The wide set (issue 32, ``wide_tasks``): the rollers users bring -- L/D 0.5, 0.8, 1,
+1.5, 3, 6, 10 (cam-follower rings, cylindrical roller bearings, needles) at mean line
+loads q/(E* D) = 1e-5, 1e-4, 1e-3, 3e-3, each with the five profiles (the crown radius
+scaled with L^2, WIDE_CROWN_RADII), the tilt cycling through 0, 1, 3 mrad: 140 cases,
+ordered so that any first N (``--wide-limit``) spread over the grid. A wide-set case
+whose BEM changes by more than REFINE between the two grids takes a third (4x) grid as
+its reference. ``--bem-from`` reuses the BEM of the cases an earlier table has and
+computes the others.
+
+4. The runtime's stated errors (header ``runtime_error_*``, read by
+   linecontact.accuracy) are bounds: per row |error| + |BEM grid change| (the finer
+   grid's own error is at most its change from the coarser one at an observed order
+   >= 1), their largest by the class the runtime states: its own edge flag, and the
+   end zone (within END_ZONE L of an end where the drop is infinite) apart.
+
+Budget: the wide set's 140 cases took 576 s wall (138 cases) + 87 s (2 refined on
+512 x 128) with 1 worker, niced, on the shared 2-core VM at load average 7-10 (median
+8.3 s per case). Measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
 shared 2-core VM (2 Dask workers; the longer two at load average 8-16; the table's
 header line ``wall_time``); the cases are independent, so the study runs through
 tools.studies.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28

@@ -56,7 +56,16 @@ DIMENSIONS = {
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
     "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
     "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12Nm, 1.5kNm, 12"),
+    "angular_speed": ("1 / [time]", "rad/s", "1500rpm, 157rad/s, 157"),
+    "kinematic_viscosity": ("[length] ** 2 / [time]", "m^2/s", "20.7cSt, 2.07e-5"),
+    "density": ("[mass] / [length] ** 3", "kg/m^3", "860kg/m^3, 0.86g/cm^3, 860"),
+    "inverse_pressure": ("1 / [pressure]", "1/Pa", "2e-8"),
+    "temperature_difference": ("[temperature]", "K", "10K, 10"),
 }
+#: Kinds converted by their built-in names only, never by pint: a temperature
+#: difference in 'degC' would be read by pint as an absolute temperature (+273.15), and
+#: a speed in 'Hz' as rad/s (pint's radian is a pure number), not revolutions.
+_BUILTIN_ONLY = {"temperature_difference", "angular_speed"}
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
 QUANTITY = re.compile(
@@ -147,6 +156,10 @@ BUILTIN_UNITS = {
     "surface_energy": {"J/m^2": 1.0, "mJ/m^2": 1e-3, "uJ/m^2": 1e-6, "N/m": 1.0,
                        "mN/m": 1e-3},
     "moment": {"Nm": 1.0, "kNm": 1e3, "Nmm": 1e-3, "MNm": 1e6},
+    "angular_speed": {"rad/s": 1.0, "rpm": 3.141592653589793 / 30},
+    "kinematic_viscosity": {"cSt": 1e-6, "St": 1e-4},
+    "density": {"kg/m^3": 1.0, "g/cm^3": 1e3},
+    "temperature_difference": {"K": 1.0},
 }
 #: Built-in names that pint spells otherwise (pint reads 'Nm' as number-metre): the
 #: expression pint gives the same factor for (held by a test).
@@ -174,6 +187,9 @@ def _unit_factor(unit, kind):
         result = f"expected a pure number, got the unit {unit!r}"
     elif unit in BUILTIN_UNITS.get(kind, ()):
         result = BUILTIN_UNITS[kind][unit]
+    elif kind in _BUILTIN_ONLY:
+        result = (f"unknown unit {unit!r} for {_a(kind)} (the units understood are "
+                  f"{', '.join(BUILTIN_UNITS[kind])})")
     elif "/" in unit:
         names = [n for units in BUILTIN_UNITS.values() for n in units if "/" in n]
         result = (f"unknown unit {unit!r} (the compound names understood are "

@@ -1262,6 +1262,12 @@ def stresses(result, *, measure="von_mises", case=None, n=121, fig=None):
 BEARING_FIELDS = (("roller_loads", "roller load Q", "N"),
                   ("roller_moments", "roller moment M", "N m"),
                   ("roller_tilts", "roller tilt", "rad"))
+#: The life panels of a bearing solved at a speed (``solve(..., speed=)``): each roller's
+#: film ratio, the smaller of its two contacts' (where the film inputs are given;
+#: unloaded rollers, Lambda = inf, are left out), and its share of the L10r damage.
+BEARING_LIFE_FIELDS = ((("film_ratio_inner", "film_ratio_outer"), "film ratio Lambda",
+                        "-"),
+                       ("roller_damage", "damage share", "-"))
 
 
 @register("bearing")
@@ -1270,8 +1276,9 @@ def bearing(solution, *, fig=None):
 
     One panel per per-roller quantity the solution holds (:data:`BEARING_FIELDS`;
     moments and tilts that are all zero, as under a contact law with aligned rings,
-    are left out and the title says so), against the roller's azimuth from the load
-    line, the load zone shaded.
+    are left out and the title says so; for a solution at a speed, the film ratio and
+    the damage share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from
+    the load line, the load zone shaded.
 
     Parameters
     ----------
@@ -1302,11 +1309,19 @@ def bearing(solution, *, fig=None):
     psi = np.where(psi <= -180.0, psi + 360.0, psi)
     order = np.argsort(psi, kind="stable")
     shown, zero = [], []
-    for attr, name, unit in BEARING_FIELDS:
-        v = getattr(solution, attr, None)
+    fields = BEARING_FIELDS
+    if getattr(solution, "speed", None) is not None:
+        fields = fields + BEARING_LIFE_FIELDS
+    for attr, name, unit in fields:
+        if isinstance(attr, tuple):          # the smaller of two contacts' values
+            parts = [getattr(solution, a, None) for a in attr]
+            v = None if any(p is None for p in parts) else np.minimum(*parts)
+        else:
+            v = getattr(solution, attr, None)
         if v is None:
             continue
         v = np.asarray(v, dtype=float)
+        v = np.where(np.isfinite(v), v, np.nan)     # Lambda = inf: no film to show
         if attr != "roller_loads" and not np.any(v):
             zero.append(name.split()[1])            # "moment", "tilt"
             continue

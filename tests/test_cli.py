@@ -903,6 +903,11 @@ def _sample(name, tmp_path, sample=None):
         path = tmp_path / "hardness.csv"
         path.write_text("depth_m,HV\n0,700\n0.001,550\n0.005,350\n", encoding="utf-8")
         return str(path)
+    if name == "spectrum":
+        path = tmp_path / "spectrum.csv"
+        path.write_text("time_share,radial_load,speed\n0.8,10kN,1500rpm\n"
+                        "0.2,20kN,750rpm\n", encoding="utf-8")
+        return str(path)
     if name != "prony":
         return (SAMPLE if sample is None else sample)[name]
     path = tmp_path / "prony.csv"
@@ -918,7 +923,17 @@ BEARING_SAMPLE = {
     "poisson": "0.3", "modulus2": "210GPa", "poisson2": "0.3", "estar": "115GPa",
     "profile": "iso16281", "model": "iso16281", "n_slices": "30", "rating": "60kN",
     "surface_hardness": "700", "case_depth": "0.5mm", "core_hardness": "350",
-    "hardness_profile": "HARDNESS",
+    "hardness_profile": "HARDNESS", "static_rating": "60kN", "speed": "1500rpm",
+    "viscosity": "20.7cSt", "density": "860kg/m^3", "pressure_viscosity": "2e-8",
+    "roughness_roller": "0.1um", "roughness_raceway": "0.15um",
+    "film_formula": "dowson-higginson", "contamination": "0.5", "reliability": "0.99",
+    "fatigue_load_limit": "8kN", "shaft_interference": "20um", "bore": "50mm",
+    "shaft_bore": "20mm", "housing_interference": "10um", "outside_diameter": "100mm",
+    "housing_diameter": "150mm", "ring_modulus": "210GPa",
+    "temperature_difference": "10K", "axial_load": "1kN", "end_radius": "60mm",
+    "flange_angle": "3deg", "inner_flange_height": "3.2mm",
+    "outer_flange_height": "3.2mm", "overall_length": "11.5mm", "end_chamfer": "0.5mm",
+    "axial_share": "equal", "spectrum": "SPECTRUM",
 }
 
 #: Per command: every input's sample value, and the case a batch completes.

@@ -1,4 +1,4 @@
-"""Operating clearance (linecontact.fits): Lame interference fits against hand-computed ring
+"""Operating clearance (linecontact.bearing.fits): Lame interference fits against hand-computed ring
 expansion, thermal change, and the operating clearance's effect on the load zone."""
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 
 from linecontact.bearing import RadialRollerBearing
 from linecontact.errors import OutOfRangeError
-from linecontact.fits import (
+from linecontact.bearing.fits import (
     fit_pressure, inner_raceway_expansion, operating_clearance, outer_raceway_contraction,
     thermal_clearance_change)
 

@@ -1,4 +1,4 @@
-"""Roller end / flange contacts of NJ and NUP bearings (linecontact.flanges): equilibrium,
+"""Roller end / flange contacts of NJ and NUP bearings (linecontact.bearing.flanges): equilibrium,
 the tilting couple from the contact points, and the Hertz contact of the end sphere."""
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from linecontact.errors import CombinationError, UnknownNameError
-from linecontact.flanges import axial_load_shares, flange_contacts
+from linecontact.bearing.flanges import axial_load_shares, flange_contacts
 
 GEOM = dict(roller_diameter=11e-3, roller_length=11e-3, pitch_diameter=70e-3,
             end_radius=60e-3, flange_angle=math.radians(3), estar=115.4e9,

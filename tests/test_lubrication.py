@@ -1,5 +1,5 @@
 """EHL film of a line contact, film ratio, pure-rolling kinematics, ISO 281's nu1 and kappa
-(linecontact.lubrication): each against its published formula evaluated by hand."""
+(linecontact.bearing.lubrication): each against its published formula evaluated by hand."""
 from __future__ import annotations
 
 import math
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from linecontact.errors import CombinationError, OutOfRangeError, UnknownNameError
-from linecontact.lubrication import (
+from linecontact.bearing.lubrication import (
     DEFAULT_FILM_FORMULA, cage_speed, central_film_pan_hamrock, ehl_parameters,
     entrainment_speed, film_ratio, minimum_film_dowson_higginson,
     minimum_film_pan_hamrock, minimum_film_thickness, rated_viscosity, viscosity_ratio)

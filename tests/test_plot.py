@@ -434,6 +434,25 @@ def test_bearing_panels_are_the_roller_arrays():
     assert len(fig.axes) == 1 and "moment and tilt zero" in fig.axes[0].get_title()
 
 
+def test_bearing_at_a_speed_adds_film_ratio_and_damage_panels():
+    """Solved at a speed with the film inputs: each roller's Lambda (the smaller of its
+    two contacts'; unloaded rollers, Lambda = inf, not drawn) and its damage share."""
+    b = RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, 40e-6, viscosity=20.7e-6,
+                            density=860.0, pressure_viscosity=2e-8,
+                            roughness_roller=0.1e-6, roughness_raceway=0.15e-6)
+    s = b.solve(10e3, speed=157.08)
+    fig = plot.bearing(s)
+    assert [ax.get_ylabel() for ax in fig.axes] == [
+        "roller load Q [kN]", "film ratio Lambda [-]", "damage share [-]"]
+    lam = np.minimum(s.film_ratio_inner, s.film_ratio_outer)[fig.axes[1].lines[0].order]
+    y = fig.axes[1].lines[0].get_ydata()
+    np.testing.assert_allclose(y[np.isfinite(lam)], lam[np.isfinite(lam)], rtol=1e-12)
+    assert np.all(np.isnan(y[~np.isfinite(lam)]))
+    d = fig.axes[2].lines[0]
+    np.testing.assert_allclose(d.get_ydata(), s.roller_damage[d.order], rtol=1e-12)
+    _check_readable(fig)
+
+
 # --------------------------------------------------------------------------------------
 # several results, files, the optional dependency
 # --------------------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-"""Duty-cycle life by the Palmgren-Miner rule (linecontact.spectrum)."""
+"""Duty-cycle life by the Palmgren-Miner rule (linecontact.bearing.spectrum)."""
 from __future__ import annotations
 
 import math
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from linecontact.errors import CombinationError, OutOfRangeError
-from linecontact.spectrum import duty_cycle_life, revolution_shares
+from linecontact.bearing.spectrum import duty_cycle_life, revolution_shares
 
 
 def test_two_case_spectrum_life():

@@ -1,4 +1,4 @@
-"""Static load rating and safety (linecontact.static): ISO 76's C0r exactly, s0 = C0/P0,
+"""Static load rating and safety (linecontact.bearing.ratings): ISO 76's C0r exactly, s0 = C0/P0,
 and the 4000 MPa behind the factor 44."""
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from linecontact.errors import OutOfRangeError
-from linecontact.static import (
+from linecontact.bearing.ratings import (
     PERMISSIBLE_PRESSURE, pressure_safety_factor, static_equivalent_load,
     static_load_rating, static_safety_factor)
 

@@ -82,21 +82,90 @@ References
 """
 from __future__ import annotations
 
+from . import fits, flanges, lubrication, spectrum
+from .fits import (STEEL_EXPANSION, fit_pressure, inner_raceway_expansion,
+                   operating_clearance, outer_raceway_contraction,
+                   thermal_clearance_change)
+from .flanges import SHARE_RULES, FlangeContacts, axial_load_shares, flange_contacts
+from .lubrication import (DEFAULT_FILM_FORMULA, FILM_FORMULAS, cage_speed,
+                          central_film_pan_hamrock, ehl_parameters, entrainment_speed,
+                          film_ratio, minimum_film_dowson_higginson,
+                          minimum_film_pan_hamrock, minimum_film_thickness,
+                          rated_viscosity, viscosity_ratio)
 from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
                      load_zone_integral)
-from .ratings import (basic_rating_life, dynamic_load_rating, lamina_load_ratings,
-                      reference_rating_life)
+from .ratings import (A_ISO_CAP, KAPPA_RANGE, PERMISSIBLE_PRESSURE, RELIABILITY_FACTORS,
+                      ReferenceLife, basic_rating_life, dynamic_load_rating,
+                      fatigue_load_limit, lamina_load_ratings, life_modification_factor,
+                      modified_rating_life, modified_reference_rating_life,
+                      pressure_safety_factor, reference_equivalent_load,
+                      reference_rating_life, reliability_factor, roller_damage_shares,
+                      static_equivalent_load,
+                      static_load_rating, static_safety_factor)
+from .spectrum import (LIFE_KINDS, DutyCycle, LoadCase, SpectrumSolution, duty_cycle_life,
+                       revolution_shares, solve_spectrum)
 
 __all__ = [
+    # load distribution (radial.py)
     "RadialRollerBearing",
     "BearingSolution",
     "load_zone_integral",
+    "GRID_POINTS",
+    "PROFILED_POINTS",
+    # ratings (ratings.py): ISO 281, ISO 16281, ISO 76, life modification
     "dynamic_load_rating",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",
-    "GRID_POINTS",
-    "PROFILED_POINTS",
+    "roller_damage_shares",
+    "static_load_rating",
+    "static_equivalent_load",
+    "static_safety_factor",
+    "pressure_safety_factor",
+    "PERMISSIBLE_PRESSURE",
+    "life_modification_factor",
+    "fatigue_load_limit",
+    "reliability_factor",
+    "modified_rating_life",
+    "reference_equivalent_load",
+    "modified_reference_rating_life",
+    "ReferenceLife",
+    "A_ISO_CAP",
+    "KAPPA_RANGE",
+    "RELIABILITY_FACTORS",
+    # lubrication (lubrication.py): EHL film, kinematics, viscosity ratio
+    "minimum_film_thickness",
+    "minimum_film_pan_hamrock",
+    "central_film_pan_hamrock",
+    "minimum_film_dowson_higginson",
+    "ehl_parameters",
+    "film_ratio",
+    "entrainment_speed",
+    "cage_speed",
+    "rated_viscosity",
+    "viscosity_ratio",
+    "DEFAULT_FILM_FORMULA",
+    "FILM_FORMULAS",
+    # duty cycle (spectrum.py)
+    "solve_spectrum",
+    "LoadCase",
+    "SpectrumSolution",
+    "LIFE_KINDS",
+    "duty_cycle_life",
+    "revolution_shares",
+    "DutyCycle",
+    # operating clearance (fits.py)
+    "fit_pressure",
+    "inner_raceway_expansion",
+    "outer_raceway_contraction",
+    "thermal_clearance_change",
+    "operating_clearance",
+    "STEEL_EXPANSION",
+    # flanges of NJ / NUP bearings (flanges.py)
+    "axial_load_shares",
+    "flange_contacts",
+    "FlangeContacts",
+    "SHARE_RULES",
 ]
 
 

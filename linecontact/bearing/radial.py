@@ -17,8 +17,9 @@ from ..raceway import Raceways, effective_radii, roller_between_raceways
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 from ..checks import check_interval, check_positive
 from .interpolant import _Law
+from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
-                      reference_rating_life)
+                      reference_rating_life, static_load_rating)
 
 __all__ = [
     "RadialRollerBearing",
@@ -214,6 +215,80 @@ class BearingSolution:
         depth [m], x along the roller [m], contact (:mod:`linecontact.stresses`, no
         traction); and ``withheld``, the reason, where an edge-loaded contact makes the
         maximum a slice-width number (not converged: report "-").
+    clearance : float
+        Operating radial clearance the load distribution used: the given one after the
+        fits and the ring temperature difference (:mod:`linecontact.bearing.fits`) [m].
+    clearance_changes : dict or None
+        With fits or a temperature difference: the clearance before mounting
+        (``"unmounted"``) and its changes ``"inner_fit"``, ``"outer_fit"``,
+        ``"thermal"`` (negative: the clearance shrinks) [m].
+    static_rating : float
+        Basic static load rating C0r (ISO 76, or the one given) [N].
+    static_load : float
+        Static equivalent load P0r = F_r (ISO 76, contact angle 0) [N].
+    static_safety : float
+        s0 = C0r/P0r [-].
+    pressure_safety : float
+        Stress-based static safety (4000 MPa/p_max)^2 from :attr:`peak_pressure`,
+        edge stresses included (nan where the peak is not reported) [-].
+    roller_damage : ndarray
+        Share of the bearing's ISO 16281 damage taken at each roller's position,
+        summing to 1 (:func:`linecontact.bearing.ratings.roller_damage_shares`) [-].
+    speed : float or None
+        Speed of the inner ring against the outer ring [rad/s] (None: not given).
+    entrainment_speed : float or None
+        Mean rolling speed u of both contacts in pure rolling [m/s].
+    film_minimum_inner, film_minimum_outer : ndarray or None
+        Minimum EHL film h_min of each roller's inner and outer contact on each lamina
+        (:attr:`slice_x`), shape (Z, n_s), by :attr:`film_formula`; inf where the
+        lamina carries no load [m].
+    film_central_inner, film_central_outer : ndarray or None
+        Central EHL film h_c, Pan & Hamrock (1989), shape (Z, n_s); inf where unloaded
+        [m].
+    film_ratio_inner, film_ratio_outer : ndarray or None
+        Film ratio Lambda of each roller's inner and outer contact, its smallest over
+        the laminae (inf: unloaded) [-].
+    film_ratio : float or None
+        The smallest Lambda of the bearing [-].
+    film_formula : str or None
+        The minimum-film formula used (:data:`linecontact.bearing.lubrication.FILM_FORMULAS`).
+    rated_viscosity : float or None
+        nu1 of ISO 281 at the speed and pitch diameter [m^2/s].
+    kappa : float or None
+        Viscosity ratio nu/nu1 [-].
+    fatigue_load_limit : float or None
+        C_u used for a_ISO [N].
+    reliability_factor : float or None
+        a1 [-].
+    life_modification : float or None
+        a_ISO at P = F_r [-].
+    life_modified : float or None
+        L_nm = a1 a_ISO L10 (ISO 281) [-] (10^6 revolutions).
+    reference_load : float or None
+        Dynamic equivalent reference load P_ref = C_r L10r^(-3/10) [N].
+    life_modification_reference : float or None
+        a_ISO at P_ref [-].
+    life_modified_reference : float or None
+        ISO 16281's modified reference rating life L_nmr = a1 a_ISO(P_ref) L10r [-]
+        (10^6 revolutions).
+    axial_load : float or None
+        Axial load F_a on the flanges [N].
+    flange_forces : ndarray or None
+        Axial force F_a,j each roller passes between its flanges, summing to F_a [N].
+    flange_normal_forces : ndarray or None
+        Normal force F_a,j / cos(theta) of each of the roller's two flange contacts [N].
+    flange_pressure_inner, flange_pressure_outer : ndarray or None
+        Hertz peak pressure of each roller's inner-ring and outer-ring flange contact
+        [Pa].
+    flange_rim_margin : ndarray or None
+        Smaller distance of the two contact ellipses to their flange rims (negative:
+        over the rim) [m].
+    flange_couple : ndarray or None
+        Couple F_a,j tan(theta)(2 R_e - l) of each roller's two flange forces [N m].
+    flange_load_offset : ndarray or None
+        Shift M/(2 Q_j) of each raceway contact's load centre along the roller that
+        balances the couple (0 where unloaded); beyond L/6 a rigid roller's line load
+        would lift at one end [m].
 
     Notes
     -----
@@ -252,6 +327,40 @@ class BearingSolution:
     roller_tilts: np.ndarray = None
     roller_misalignment: np.ndarray = None
     stress: dict = None
+    clearance: float = None
+    clearance_changes: dict = None
+    static_rating: float = None
+    static_load: float = None
+    static_safety: float = None
+    pressure_safety: float = None
+    roller_damage: np.ndarray = None
+    speed: float = None
+    entrainment_speed: float = None
+    film_minimum_inner: np.ndarray = None
+    film_minimum_outer: np.ndarray = None
+    film_central_inner: np.ndarray = None
+    film_central_outer: np.ndarray = None
+    film_ratio_inner: np.ndarray = None
+    film_ratio_outer: np.ndarray = None
+    film_ratio: float = None
+    film_formula: str = None
+    rated_viscosity: float = None
+    kappa: float = None
+    fatigue_load_limit: float = None
+    reliability_factor: float = None
+    life_modification: float = None
+    life_modified: float = None
+    reference_load: float = None
+    life_modification_reference: float = None
+    life_modified_reference: float = None
+    axial_load: float = None
+    flange_forces: np.ndarray = None
+    flange_normal_forces: np.ndarray = None
+    flange_pressure_inner: np.ndarray = None
+    flange_pressure_outer: np.ndarray = None
+    flange_rim_margin: np.ndarray = None
+    flange_couple: np.ndarray = None
+    flange_load_offset: np.ndarray = None
 
     def to_dict(self):
         """The solution as plain Python (lists for arrays), SI units."""
@@ -307,12 +416,88 @@ class RadialRollerBearing:
     poisson : float, optional
         Poisson's ratio of the rings for the von Mises stress, 0 <= nu <= 0.5 [-]
         (default 0.3, steel; the Tresca and orthogonal shear do not depend on it).
+    viscosity : float, optional
+        Kinematic viscosity nu of the lubricant at the operating temperature,
+        0 < nu < inf [m^2/s]: with a speed (:meth:`solve`), kappa = nu/nu1.
+    density : float, optional
+        Density rho of the lubricant, 0 < rho < inf [kg/m^3]: the film's dynamic
+        viscosity eta0 = rho nu (with `pressure_viscosity`).
+    pressure_viscosity : float, optional
+        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha < inf [1/Pa]:
+        with `viscosity`, `density` and a speed, the EHL film of every contact.
+    roughness_roller, roughness_raceway : float, optional
+        RMS roughness Rq of the rollers and of the raceways, 0 <= Rq < inf [m]: the
+        film ratio Lambda (both, with the film inputs).
+    film_formula : str, optional
+        Minimum-film formula, ``"pan-hamrock"`` (default) or ``"dowson-higginson"``
+        (:data:`linecontact.bearing.lubrication.FILM_FORMULAS`); the central film is
+        Pan & Hamrock's.
+    contamination : float, optional
+        Contamination factor e_C, 0 <= e_C <= 1 [-]: with `viscosity`, the modified
+        lives L_nm (ISO 281) and L_nmr (ISO 16281).
+    reliability : float, optional
+        Reliability of the modified lives, 0.9 <= R <= 0.9995 [-] (default 0.9,
+        a1 = 1; with `contamination`).
+    fatigue_load_limit : float, optional
+        Fatigue load limit C_u, 0 < C_u < inf [N] (default: ISO 281's estimate from
+        C0r, :func:`linecontact.bearing.ratings.fatigue_load_limit`; with
+        `contamination`).
+    static_rating : float, optional
+        Basic static load rating C0r, 0 < C0r < inf [N] (default: ISO 76 from the
+        geometry, :func:`linecontact.bearing.ratings.static_load_rating`).
+    shaft_interference : float, optional
+        Effective diametral interference of the inner ring on the shaft,
+        0 <= I < inf [m] (with `bore`): the inner raceway grows (Lame).
+    bore : float, optional
+        Bore d of the inner ring (the shaft seat), 0 < d < d_m - D [m].
+    shaft_bore : float, optional
+        Bore of a hollow shaft, 0 <= d_s < d (default 0: solid) [m].
+    housing_interference : float, optional
+        Effective diametral interference of the outer ring in the housing,
+        0 <= I < inf [m] (with `outside_diameter`): the outer raceway shrinks.
+    outside_diameter : float, optional
+        Outside diameter of the outer ring (the housing seat), d_m + D + P_d < D_o <
+        inf [m].
+    housing_diameter : float, optional
+        Outside diameter of the housing, D_o < D_h <= inf (default inf: massive) [m].
+    ring_modulus : float, optional
+        Young's modulus of the rings, the shaft and the housing for the fits,
+        0 < E < inf (default 2 E* (1 - nu^2) from `estar` and `poisson`: rollers and
+        rings of one material) [Pa].
+    temperature_difference : float, optional
+        Temperature of the inner ring above the outer ring's, the rollers at their
+        mean, -inf < dT < inf [K]: the clearance changes by -12e-6/K dT d_m (steel).
+    end_radius : float, optional
+        Radius R_e of the rollers' spherical ends, 0 < R_e < inf [m]; with
+        `flange_angle` and the flange heights, the flanges of an NJ / NUP bearing that
+        carry an axial load (:meth:`solve`'s `axial_load`).
+    flange_angle : float, optional
+        Inclination theta of the flange faces to the radial plane, 0 < theta < pi/4
+        [rad].
+    inner_flange_height, outer_flange_height : float, optional
+        Heights of the inner and the outer ring's flanges above their raceways,
+        0 < h < D/2 [m].
+    overall_length : float, optional
+        The rollers' overall length l between their end vertices, 0 < l < inf
+        (default: `length`) [m].
+    end_chamfer : float, optional
+        Radial extent of the roller's corner beyond which its end is not spherical,
+        0 <= c < D/2 (default 0) [m].
+    axial_share : str, optional
+        How the rollers share the axial load: ``"proportional"`` to their radial loads
+        (default) or ``"equal"`` (:func:`linecontact.bearing.flanges.axial_load_shares`).
 
     Notes
     -----
     Valid for Z >= 3, 0 < D < d_m, |P_d| < D, within the contact law's range (its
     depth and L/R ranges; the universal curve to d <= 0.15 R). Centrifugal forces,
-    ring deformation and roller skew are not modelled.
+    ring deformation and roller skew are not modelled. The fits take the rings, the
+    shaft and the housing of one material, E = 2 E* (1 - nu^2) from `estar` and
+    `poisson` (210 GPa for the defaults) unless `ring_modulus` is given, Poisson's
+    ratio `poisson`, each ring a cylinder from bore to raceway;
+    the load distribution uses the operating clearance (:attr:`clearance`; the given
+    one is :attr:`internal_clearance`). Each input group is all or nothing: an input
+    that a missing partner would leave unused is refused (docs/bearing_life.md).
 
     Examples
     --------
@@ -333,7 +518,16 @@ class RadialRollerBearing:
 
     def __init__(self, rollers, pitch_diameter, roller_diameter, length, clearance=0.0,
                  *, estar=115.38e9, model=None, profile=None, n_slices=None,
-                 azimuth0=0.0, rating=None, rotating="inner", poisson=0.3):
+                 azimuth0=0.0, rating=None, rotating="inner", poisson=0.3,
+                 viscosity=None, density=None, pressure_viscosity=None,
+                 roughness_roller=None, roughness_raceway=None,
+                 film_formula=DEFAULT_FILM_FORMULA, contamination=None, reliability=None,
+                 fatigue_load_limit=None, static_rating=None, shaft_interference=None,
+                 bore=None, shaft_bore=None, housing_interference=None,
+                 outside_diameter=None, housing_diameter=None, ring_modulus=None,
+                 temperature_difference=None, end_radius=None, flange_angle=None,
+                 inner_flange_height=None, outer_flange_height=None,
+                 overall_length=None, end_chamfer=None, axial_share="proportional"):
         from ..models import available_models
         from ..profiles import StraightProfile, as_profile
 
@@ -356,6 +550,17 @@ class RadialRollerBearing:
             raise UnknownNameError("rotating", rotating, ["inner", "outer"])
         self.rotating = rotating
         self.poisson = float(check_interval("poisson", poisson, 0.0, 0.5))
+        self.internal_clearance = self.clearance
+        self.clearance_changes = self._mounting(
+            shaft_interference, bore, shaft_bore, housing_interference,
+            outside_diameter, housing_diameter, temperature_difference, ring_modulus)
+        self.lubricant = self._lubricant(viscosity, density, pressure_viscosity,
+                                         roughness_roller, roughness_raceway,
+                                         film_formula, contamination, reliability,
+                                         fatigue_load_limit)
+        self.flanges = self._flange_geometry(end_radius, flange_angle,
+                                             inner_flange_height, outer_flange_height,
+                                             overall_length, end_chamfer, axial_share)
         self._model_named = model is not None
         R1 = D / 2
         self.profile = as_profile(profile, R1, self.length, self.estar)
@@ -386,6 +591,295 @@ class RadialRollerBearing:
         self.azimuth = (self.azimuth0 + 2 * math.pi * np.arange(self.rollers)
                         / self.rollers)
         self.azimuth = (self.azimuth + math.pi) % (2 * math.pi) - math.pi
+        self.static_rating = (
+            static_load_rating(self.rollers, self.pitch_diameter, D, self.length)
+            if static_rating is None
+            else float(check_positive("static_rating", static_rating, "N")))
+        if self.lubricant and self.lubricant["contamination"] is not None:
+            from .ratings import fatigue_load_limit as _cu
+
+            given = self.lubricant["fatigue_load_limit"]
+            self.lubricant["fatigue_load_limit"] = (
+                float(_cu(self.static_rating, self.pitch_diameter)) if given is None
+                else float(check_positive("fatigue_load_limit", given, "N")))
+
+    # -- mounting, lubricant, flanges (the inputs beyond the load distribution) -----
+    @staticmethod
+    def _needs(given, partners, reason, values=None):
+        """Refuse an input group given in part: when any input of `given` (name ->
+        value) is not None, every name of `partners` must be given in `values`
+        (default `given`)."""
+        values = given if values is None else values
+        named = {k: v for k, v in given.items() if v is not None}
+        missing = [k for k in partners if values.get(k) is None]
+        if named and missing:
+            raise CombinationError({**named, **{k: None for k in missing}}, reason)
+
+    def _mounting(self, shaft_interference, bore, shaft_bore, housing_interference,
+                  outside_diameter, housing_diameter, temperature_difference,
+                  ring_modulus=None):
+        """The operating clearance from the fits (Lame) and the rings' temperature
+        difference, set as self.clearance; returns the changes (None: none given)."""
+        from .fits import (inner_raceway_expansion, operating_clearance,
+                           outer_raceway_contraction, thermal_clearance_change)
+
+        shaft = {"shaft_interference": shaft_interference, "bore": bore,
+                 "shaft_bore": shaft_bore}
+        housing = {"housing_interference": housing_interference,
+                   "outside_diameter": outside_diameter,
+                   "housing_diameter": housing_diameter}
+        self._needs(shaft, ("shaft_interference", "bore"), "an inner-ring fit needs "
+                    "the interference and the ring's bore")
+        self._needs(housing, ("housing_interference", "outside_diameter"), "an "
+                    "outer-ring fit needs the interference and the ring's outside "
+                    "diameter")
+        if ring_modulus is not None and shaft_interference is None \
+                and housing_interference is None:
+            raise CombinationError({"ring_modulus": ring_modulus,
+                                    "shaft_interference": None,
+                                    "housing_interference": None},
+                                   "the rings' modulus is used by a fit only")
+        if (shaft_interference is None and housing_interference is None
+                and temperature_difference is None):
+            return None
+        dm, D, Pd = self.pitch_diameter, self.roller_diameter, self.clearance
+        E = (2.0 * self.estar * (1.0 - self.poisson ** 2) if ring_modulus is None
+             else float(check_positive("ring_modulus", ring_modulus, "Pa")))
+        nu = self.poisson
+        d_in, d_out = dm - D, dm + D + Pd          # raceway diameters
+        grow = shrink = heat = 0.0
+        if shaft_interference is not None:
+            d = float(check_interval("bore", bore, 0.0, d_in, low_open=True,
+                                     high_open=True, unit="m",
+                                     hint="the bore lies inside the inner raceway "
+                                          "(d_m - D)"))
+            ds = 0.0 if shaft_bore is None else float(check_interval(
+                "shaft_bore", shaft_bore, 0.0, d, high_open=True, unit="m",
+                hint="a hollow shaft's bore is smaller than the ring's bore"))
+            grow = float(inner_raceway_expansion(shaft_interference, d, d_in, E, nu,
+                                                 shaft_bore=ds))
+        if housing_interference is not None:
+            Do = float(check_interval("outside_diameter", outside_diameter, d_out,
+                                      np.inf, low_open=True, high_open=True, unit="m",
+                                      hint="the outer ring's outside lies beyond its "
+                                           "raceway (d_m + D + P_d)"))
+            Dh = np.inf if housing_diameter is None else float(check_interval(
+                "housing_diameter", housing_diameter, Do, np.inf, low_open=True,
+                unit="m", hint="the housing's outside lies beyond the ring's"))
+            shrink = float(outer_raceway_contraction(housing_interference, Do, d_out,
+                                                     E, nu, housing_diameter=Dh))
+        if temperature_difference is not None:
+            heat = float(thermal_clearance_change(d_in, d_out, D,
+                                                  temperature_difference, 0.0))
+        op = float(operating_clearance(Pd, grow, shrink, heat))
+        self.clearance = float(check_interval(
+            "operating clearance", op, -D, D, low_open=True, high_open=True, unit="m",
+            hint="the fits and temperatures leave a clearance beyond the roller "
+                 "diameter"))
+        return {"unmounted": Pd, "inner_fit": 0.0 - grow, "outer_fit": 0.0 - shrink,
+                "thermal": heat}
+
+    def _lubricant(self, viscosity, density, pressure_viscosity, roughness_roller,
+                   roughness_raceway, film_formula, contamination, reliability,
+                   fatigue_load_limit):
+        """The lubricant, surfaces and life-modification inputs, checked (None: none
+        given)."""
+        given = {"viscosity": viscosity, "density": density,
+                 "pressure_viscosity": pressure_viscosity,
+                 "roughness_roller": roughness_roller,
+                 "roughness_raceway": roughness_raceway,
+                 "contamination": contamination, "reliability": reliability,
+                 "fatigue_load_limit": fatigue_load_limit}
+        if film_formula not in FILM_FORMULAS:
+            raise UnknownNameError("film_formula", film_formula, list(FILM_FORMULAS))
+        film = ("viscosity", "density", "pressure_viscosity")
+        self._needs({k: given[k] for k in film[1:]}, film, "the EHL film needs the "
+                    "viscosity, the density (eta0 = rho nu) and the pressure-viscosity "
+                    "coefficient", given)
+        self._needs({k: given[k] for k in ("roughness_roller", "roughness_raceway")},
+                    film + ("roughness_roller", "roughness_raceway"), "the film ratio "
+                    "needs both roughnesses and the film inputs", given)
+        self._needs({"contamination": contamination}, ("viscosity",), "the modified "
+                    "life needs the viscosity ratio kappa: give the viscosity", given)
+        self._needs({"reliability": reliability,
+                     "fatigue_load_limit": fatigue_load_limit}, ("contamination",),
+                    "the modified life (a1, C_u) needs the contamination factor", given)
+        if film_formula != DEFAULT_FILM_FORMULA and pressure_viscosity is None:
+            raise CombinationError({"film_formula": film_formula,
+                                    "pressure_viscosity": None},
+                                   "a film formula needs the film inputs")
+        if all(v is None for v in given.values()):
+            return None
+        lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
+        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3"),
+                           ("pressure_viscosity", "1/Pa")):
+            v = given[name]
+            lub[name] = None if v is None else float(check_positive(name, v, unit))
+        for name in ("roughness_roller", "roughness_raceway"):
+            v = given[name]
+            lub[name] = None if v is None else float(check_interval(
+                name, v, 0.0, np.inf, high_open=True, unit="m"))
+        lub["contamination"] = None if contamination is None else float(
+            check_interval("contamination", contamination, 0.0, 1.0))
+        lub["reliability"] = 0.9 if reliability is None else float(
+            check_interval("reliability", reliability, 0.9, 0.9995))
+        return lub
+
+    def _flange_geometry(self, end_radius, flange_angle, inner_flange_height,
+                         outer_flange_height, overall_length, end_chamfer, axial_share):
+        """The flanges of an NJ / NUP bearing, checked once by a zero-force flange
+        contact (the contact point on both flange faces); None: none given."""
+        from .flanges import SHARE_RULES, flange_contacts
+
+        geo = {"end_radius": end_radius, "flange_angle": flange_angle,
+               "inner_flange_height": inner_flange_height,
+               "outer_flange_height": outer_flange_height}
+        extra = {"overall_length": overall_length, "end_chamfer": end_chamfer}
+        self._needs({**geo, **extra}, tuple(geo), "the flanges need the roller end "
+                    "radius, the flange angle and both flange heights")
+        if axial_share not in SHARE_RULES:
+            raise UnknownNameError("axial_share", axial_share, SHARE_RULES)
+        if end_radius is None:
+            return None
+        geo["roller_length"] = self.length if overall_length is None else overall_length
+        geo["end_chamfer"] = 0.0 if end_chamfer is None else end_chamfer
+        flange_contacts(0.0, self.roller_diameter, geo["roller_length"],
+                        self.pitch_diameter, geo["end_radius"], geo["flange_angle"],
+                        self.estar, geo["inner_flange_height"],
+                        geo["outer_flange_height"], geo["end_chamfer"])
+        geo["rule"] = axial_share
+        return geo
+
+    def _extras(self, sol, speed, axial_load):
+        """The solution with what the load distribution implies: static safety, the
+        damage per roller, and, where their inputs are given, the operating clearance's
+        origin, the film, kappa, the modified lives and the flange contacts."""
+        from dataclasses import replace
+
+        from .ratings import (life_modification_factor, modified_rating_life,
+                              modified_reference_rating_life, pressure_safety_factor,
+                              reliability_factor, roller_damage_shares,
+                              static_equivalent_load, static_safety_factor)
+
+        F = sol.radial_load
+        P0 = float(static_equivalent_load(F))
+        pp = sol.peak_pressure
+        f = dict(clearance=self.clearance, clearance_changes=self.clearance_changes,
+                 static_rating=self.static_rating, static_load=P0,
+                 static_safety=float(static_safety_factor(self.static_rating, P0)),
+                 pressure_safety=(float(pressure_safety_factor(pp))
+                                  if math.isfinite(pp) else math.nan),
+                 roller_damage=roller_damage_shares(
+                     self.rating, self.pitch_diameter, self.roller_diameter,
+                     sol.slice_loads_inner, sol.slice_loads_outer, self.rotating))
+        notes = list(sol.notes)
+        lub = self.lubricant
+        if speed is not None:
+            f.update(self._film(sol, speed))
+            if lub is not None and lub["contamination"] is not None:
+                ec, cu = lub["contamination"], lub["fatigue_load_limit"]
+                a1 = float(reliability_factor(lub["reliability"]))
+                a = float(life_modification_factor(f["kappa"], ec, cu, F))
+                ref = modified_reference_rating_life(
+                    self.rating, self.pitch_diameter, self.roller_diameter,
+                    sol.slice_loads_inner, sol.slice_loads_outer, f["kappa"], ec, cu,
+                    lub["reliability"], self.rotating)
+                f.update(fatigue_load_limit=cu, reliability_factor=a1,
+                         life_modification=a,
+                         life_modified=float(modified_rating_life(sol.life_iso281, a,
+                                                                  a1)),
+                         reference_load=ref.reference_load,
+                         life_modification_reference=ref.life_modification,
+                         life_modified_reference=ref.life)
+        if axial_load is not None:
+            f.update(self._flange_solution(sol, axial_load, notes))
+        f["notes"] = tuple(notes)
+        return replace(sol, **f)
+
+    def _film(self, sol, speed):
+        """Entrainment speed; with the lubricant, nu1 and kappa; with the film inputs,
+        each lamina's minimum and central film and each contact's Lambda."""
+        from .lubrication import (central_film_pan_hamrock, entrainment_speed,
+                                  film_ratio, minimum_film_thickness, rated_viscosity)
+
+        w = abs(speed)
+        f = dict(speed=float(speed),
+                 entrainment_speed=float(entrainment_speed(speed, self.pitch_diameter,
+                                                           self.roller_diameter)))
+        lub = self.lubricant
+        if lub is None or lub["viscosity"] is None:
+            return f
+        if not w > 0:
+            raise OutOfRangeError("speed", speed, "a nonzero speed [rad/s]", unit="rad/s",
+                                  hint="the film and kappa need the rings to turn")
+        nu1 = float(rated_viscosity(w, self.pitch_diameter))
+        f.update(rated_viscosity=nu1, kappa=lub["viscosity"] / nu1)
+        if lub["pressure_viscosity"] is None:
+            return f
+        eta = lub["density"] * lub["viscosity"]
+        alpha = lub["pressure_viscosity"]
+        width = self.length / sol.slice_loads_inner.shape[1]
+        u = f["entrainment_speed"]
+        radii = effective_radii(self.roller_diameter / 2, self.raceways.inner,
+                                self.raceways.outer)
+        for name, R, q in (("inner", radii[0], sol.slice_loads_inner),
+                           ("outer", radii[1], sol.slice_loads_outer)):
+            line = np.asarray(q, dtype=float) / width
+            hmin = np.asarray(minimum_film_thickness(u, R, line, self.estar, eta, alpha,
+                                                     formula=lub["film_formula"]))
+            f[f"film_minimum_{name}"] = hmin
+            f[f"film_central_{name}"] = np.asarray(central_film_pan_hamrock(
+                u, R, line, self.estar, eta, alpha))
+            if lub["roughness_roller"] is not None:
+                lam = np.asarray(film_ratio(hmin, lub["roughness_roller"],
+                                            lub["roughness_raceway"]))
+                f[f"film_ratio_{name}"] = lam.min(axis=1)
+        f["film_formula"] = lub["film_formula"]
+        if "film_ratio_inner" in f:
+            f["film_ratio"] = float(min(f["film_ratio_inner"].min(),
+                                        f["film_ratio_outer"].min()))
+        return f
+
+    def _flange_solution(self, sol, axial_load, notes):
+        """Each roller's share of the axial load and its two flange contacts
+        (uncoupled: from the radial load distribution, which the flange couple does not
+        change)."""
+        from .flanges import axial_load_shares, flange_contacts
+
+        g = self.flanges
+        Fa = float(check_interval("axial_load", axial_load, 0.0, np.inf,
+                                  high_open=True, unit="N"))
+        if g is None:
+            raise CombinationError({"axial_load": Fa, "end_radius": None},
+                                   "an axial load needs the flanges (end_radius, "
+                                   "flange_angle, inner_flange_height, "
+                                   "outer_flange_height)")
+        Q = sol.roller_loads
+        Faj = axial_load_shares(Fa, Q, g["rule"])
+        c = flange_contacts(Faj, self.roller_diameter, g["roller_length"],
+                            self.pitch_diameter, g["end_radius"], g["flange_angle"],
+                            self.estar, g["inner_flange_height"],
+                            g["outer_flange_height"], g["end_chamfer"])
+        M = np.asarray(c.tilting_moment, dtype=float)
+        offset = np.divide(np.abs(M), 2.0 * Q, out=np.zeros_like(M), where=Q > 0)
+        margin = np.minimum(c.inner_rim_margin, c.outer_rim_margin)
+        if np.any(offset > self.length / 6):
+            notes.append("flange couple: rollers "
+                         f"{np.flatnonzero(offset > self.length / 6).tolist()} need "
+                         "their raceway loads shifted beyond L/6: their line loads "
+                         "lift at one end")
+        if np.any(margin < 0):
+            notes.append("flange contact ellipses run over the flange rim at rollers "
+                         f"{np.flatnonzero(margin < 0).tolist()} (Hertz does not hold)")
+        notes.append("flanges: the couple of the flange forces is not fed back into "
+                     "the rollers' tilt (the radial load distribution is the "
+                     "flange-free one)")
+        return dict(axial_load=Fa, flange_forces=np.asarray(Faj, dtype=float),
+                    flange_normal_forces=np.asarray(c.normal_force, dtype=float),
+                    flange_pressure_inner=np.asarray(c.inner_p0, dtype=float),
+                    flange_pressure_outer=np.asarray(c.outer_p0, dtype=float),
+                    flange_rim_margin=np.asarray(margin, dtype=float),
+                    flange_couple=M, flange_load_offset=offset)
 
     # -- the roller law -----------------------------------------------------------
     def _law_grid(self, F):
@@ -485,9 +979,11 @@ class RadialRollerBearing:
         return dr
 
     @serial_blas
-    def solve(self, radial_load, moment=None, misalignment=None):
+    def solve(self, radial_load, moment=None, misalignment=None, *, speed=None,
+              axial_load=None):
         r"""Solve the bearing under a radial load F_r, and a tilting moment M or a given
-        misalignment theta (:class:`BearingSolution`).
+        misalignment theta (:class:`BearingSolution`); at a speed, and with an axial
+        load on the flanges.
 
         .. math::
 
@@ -506,6 +1002,14 @@ class RadialRollerBearing:
             plane, |theta| < 0.1 [rad] (positive: the rings close at +x on the loaded
             side): delta_r is solved at this tilt (1 DOF) and the moment it needs is
             reported. At most one of `moment` and `misalignment`.
+        speed : float, optional
+            Speed of the inner ring against the outer ring, -inf < omega < inf [rad/s]
+            (nonzero with a lubricant): the entrainment speed, and with the bearing's
+            lubricant kappa, the film and the modified lives.
+        axial_load : float, optional
+            Axial load F_a carried by the flanges, 0 <= F_a < inf [N] (needs the
+            bearing's flange geometry): each roller's flange forces, their Hertz
+            stresses and couple.
 
         Returns
         -------
@@ -524,7 +1028,11 @@ class RadialRollerBearing:
         Valid for 0 < F_r < inf within the contact law's range. With a moment or a
         misalignment each roller is solved by slices (the bearing's slice model; for a
         straight roller with no model named, ``"profiled-roller"``) and is free to
-        tilt between its rings, docs/bearings.md.
+        tilt between its rings, docs/bearings.md. The film, lives, static safety and
+        flange contacts follow from the load distribution (docs/bearing_life.md);
+        the flange couple is not fed back into it (the rollers' radial loads and tilts
+        are the flange-free ones; the solution reports the load shift that would
+        balance the couple).
 
         Examples
         --------
@@ -535,6 +1043,18 @@ class RadialRollerBearing:
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
+        if speed is not None:
+            speed = float(check_interval("speed", speed, -np.inf, np.inf, low_open=True,
+                                         high_open=True, unit="rad/s"))
+        elif self.lubricant is not None:
+            raise CombinationError({"speed": None, "viscosity": self.lubricant[
+                "viscosity"]}, "the lubricant's film and kappa need the inner ring's "
+                "speed: give solve(..., speed=)")
+        return self._extras(self._solve_load(F, moment, misalignment), speed,
+                            axial_load)
+
+    def _solve_load(self, F, moment, misalignment):
+        """The load distribution under F_r and a moment or misalignment."""
         if moment is not None and misalignment is not None:
             raise CombinationError({"moment": moment, "misalignment": misalignment},
                                    "give a tilting moment or a misalignment, not both "

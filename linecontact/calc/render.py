@@ -186,7 +186,9 @@ def _typed(cases, name):
 _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa", 1e-9),
                 "moment": ("N m", 1.0),
                 "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0),
-                "surface_energy": ("mJ/m^2", 1e3)}
+                "surface_energy": ("mJ/m^2", 1e3), "angular_speed": ("rpm", 30 / math.pi),
+                "kinematic_viscosity": ("cSt", 1e6), "density": ("kg/m^3", 1.0),
+                "inverse_pressure": ("1/Pa", 1.0), "temperature_difference": ("K", 1.0)}
 
 
 def swept_inputs(cases):

@@ -52,6 +52,10 @@ _LOAD = "load"
 _MAT = "materials (rings: --modulus/--poisson; rollers: --modulus2/--poisson2)"
 _MODEL = "contact model"
 _CASE = "case-hardening check of the most loaded roller"
+_LUB = "lubrication and modified life (docs/bearing_life.md)"
+_MOUNT = "operating clearance: fits and ring temperatures"
+_FLANGE = "flanges of NJ / NUP bearings: axial load"
+_SPECTRUM = "duty cycle"
 
 #: The bearing's inputs: option ``--NAME`` = CSV column ``NAME``.
 parameters = (
@@ -87,6 +91,66 @@ parameters = (
               "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL),
     Parameter("rating", "force", "basic dynamic load rating C_r (default: ISO 281 "
               "from the geometry)", _MODEL),
+    Parameter("static_rating", "force", "basic static load rating C0r (default: ISO 76 "
+              "from the geometry)", _MODEL),
+    Parameter("speed", "angular_speed", "speed of the inner ring against the outer ring "
+              "(e.g. 1500rpm): entrainment speed; with --viscosity kappa, film and "
+              "modified lives", _LUB, positive=False),
+    Parameter("viscosity", "kinematic_viscosity", "kinematic viscosity of the lubricant "
+              "at the operating temperature (e.g. 20.7cSt)", _LUB),
+    Parameter("density", "density", "density of the lubricant (e.g. 860kg/m^3): "
+              "eta0 = rho nu for the film", _LUB),
+    Parameter("pressure_viscosity", "inverse_pressure", "pressure-viscosity "
+              "coefficient alpha in 1/Pa (e.g. 2e-8): with --viscosity and --density, "
+              "the EHL film", _LUB),
+    Parameter("roughness_roller", "length", "RMS roughness Rq of the rollers (e.g. "
+              "0.1um): the film ratio Lambda", _LUB, positive=False),
+    Parameter("roughness_raceway", "length", "RMS roughness Rq of the raceways", _LUB,
+              positive=False),
+    Parameter("film_formula", "text", "minimum-film formula: pan-hamrock (default) or "
+              "dowson-higginson", _LUB),
+    Parameter("contamination", "dimensionless", "contamination factor e_C, 0 to 1 (with "
+              "--viscosity): the modified lives L_nm, L_nmr", _LUB, positive=False),
+    Parameter("reliability", "dimensionless", "reliability of the modified lives, "
+              "0.9 to 0.9995 (default 0.9)", _LUB),
+    Parameter("fatigue_load_limit", "force", "fatigue load limit C_u (default: C0r/8.2, "
+              "ISO 281's estimate)", _LUB),
+    Parameter("shaft_interference", "length", "effective diametral interference of the "
+              "inner ring on the shaft (with --bore)", _MOUNT, positive=False),
+    Parameter("bore", "length", "bore of the inner ring", _MOUNT),
+    Parameter("shaft_bore", "length", "bore of a hollow shaft (default solid)", _MOUNT,
+              positive=False),
+    Parameter("housing_interference", "length", "effective diametral interference of "
+              "the outer ring in the housing (with --outside-diameter)", _MOUNT,
+              positive=False),
+    Parameter("outside_diameter", "length", "outside diameter of the outer ring", _MOUNT),
+    Parameter("housing_diameter", "length", "outside diameter of the housing (default "
+              "massive)", _MOUNT),
+    Parameter("ring_modulus", "pressure", "Young's modulus of rings, shaft and housing "
+              "for the fits (default: the rings' --modulus, or 2 E* (1 - nu^2))",
+              _MOUNT),
+    Parameter("temperature_difference", "temperature_difference", "inner ring warmer "
+              "than the outer ring by (e.g. 10K; rollers at the mean)", _MOUNT,
+              positive=False),
+    Parameter("axial_load", "force", "axial load carried by the flanges (NJ, NUP; with "
+              "the flange geometry)", _FLANGE, positive=False),
+    Parameter("end_radius", "length", "radius R_e of the rollers' spherical ends", _FLANGE),
+    Parameter("flange_angle", "angle", "inclination of the flange faces to the radial "
+              "plane (e.g. 3deg)", _FLANGE),
+    Parameter("inner_flange_height", "length", "height of the inner ring's flange above "
+              "its raceway", _FLANGE),
+    Parameter("outer_flange_height", "length", "height of the outer ring's flange above "
+              "its raceway", _FLANGE),
+    Parameter("overall_length", "length", "overall roller length between its end "
+              "vertices (default --length)", _FLANGE),
+    Parameter("end_chamfer", "length", "radial extent of the roller's corner (default 0)",
+              _FLANGE, positive=False),
+    Parameter("axial_share", "text", "how the rollers share the axial load: "
+              "proportional (to their radial loads, default) or equal", _FLANGE),
+    Parameter("spectrum", "path", "duty cycle: a CSV of load cases, columns time_share "
+              "(or revolution_share), radial_load, and optionally speed, "
+              "tilting_moment, misalignment, axial_load (values with units as in the "
+              "options); the combined lives by Palmgren-Miner", _SPECTRUM),
 ) + tuple(Parameter(p.name, p.kind, p.help, _CASE, p.positive, p.bounds, p.sweep,
                     p.plausible, p.words) for p in HARDNESS)
 
@@ -112,13 +176,44 @@ fields = {
     "von_mises_depth": Field("  at depth", "m", "um", 1e6),
     "orthogonal_shear": Field("max orthogonal shear", "Pa", "MPa", 1e-6),
     "orthogonal_shear_depth": Field("  at depth", "m", "um", 1e6),
+    "static_rating": Field("C0r ISO 76", "N", "kN", 1e-3),
+    "static_safety": Field("s0 = C0r/P0r", "-", "-", 1.0),
+    "pressure_safety": Field("s0 (4000 MPa/p_max)^2", "-", "-", 1.0),
+    "operating_clearance": Field("operating clearance", "m", "um", 1e6),
+    "entrainment_speed": Field("entrainment speed u", "m/s", "m/s", 1.0),
+    "kappa": Field("kappa = nu/nu1", "-", "-", 1.0),
+    "film_minimum_inner": Field("h_min inner (Q_max roller)", "m", "um", 1e6),
+    "film_minimum_outer": Field("h_min outer (Q_max roller)", "m", "um", 1e6),
+    "film_central_inner": Field("h_c inner (Q_max roller)", "m", "um", 1e6),
+    "film_central_outer": Field("h_c outer (Q_max roller)", "m", "um", 1e6),
+    "film_ratio": Field("Lambda min", "-", "-", 1.0),
+    "life_modification": Field("a_ISO", "-", "-", 1.0),
+    "life_modified": Field("L_nm ISO 281", "1e6 rev", "1e6 rev", 1.0),
+    "life_modified_reference": Field("L_nmr ISO 16281", "1e6 rev", "1e6 rev", 1.0),
+    "max_flange_force": Field("F_a,j max (flanges)", "N", "N", 1.0),
+    "flange_pressure_inner": Field("p0 inner flange max", "Pa", "MPa", 1e-6),
+    "flange_pressure_outer": Field("p0 outer flange max", "Pa", "MPa", 1e-6),
+    "flange_couple": Field("flange couple max", "N m", "N m", 1.0),
+    "spectrum_life_iso281": Field("duty cycle L10", "1e6 rev", "1e6 rev", 1.0),
+    "spectrum_life_iso16281": Field("duty cycle L10r", "1e6 rev", "1e6 rev", 1.0),
+    "spectrum_life_modified": Field("duty cycle L_nm", "1e6 rev", "1e6 rev", 1.0),
+    "spectrum_life_modified_reference": Field("duty cycle L_nmr", "1e6 rev", "1e6 rev",
+                                              1.0),
+    "spectrum_hours_iso281": Field("duty cycle L10h", "h", "h", 1.0),
     "case_ratio": Field("vM/allow (case check)", "-", "-", 1.0),
     "case_ratio_depth": Field("  at depth", "m", "um", 1e6),
     "min_case_depth": Field("CHD min", "m", "mm", 1e3),
 }
 
 #: Fields shown in one case's list only where computed (asked for by their options).
-optional = ("case_ratio", "case_ratio_depth", "min_case_depth")
+optional = ("case_ratio", "case_ratio_depth", "min_case_depth", "operating_clearance",
+            "entrainment_speed", "kappa", "film_minimum_inner", "film_minimum_outer",
+            "film_central_inner", "film_central_outer", "film_ratio",
+            "life_modification", "life_modified", "life_modified_reference",
+            "max_flange_force", "flange_pressure_inner", "flange_pressure_outer",
+            "flange_couple", "spectrum_life_iso281", "spectrum_life_iso16281",
+            "spectrum_life_modified", "spectrum_life_modified_reference",
+            "spectrum_hours_iso281")
 
 notes = {
     "clearance": "P_d is the radial internal clearance (ISO 5753-1), Harris' diametral "
@@ -136,6 +231,24 @@ notes = {
               "per slice, the worst 3D-corrected (measured error in the notes below); "
               "under a law the plane-strain Hertz strip at the mean line load Q/L; von "
               "Mises with the rings' Poisson's ratio (0.3 if not given).",
+    "static": "C0r = 44 (1 - D/d_m) Z L D [N, mm] (ISO 76), P0r = F_r; s0 = C0r/P0r, "
+              "and from the computed peak pressure (4000 MPa/p_max)^2 (edge stresses "
+              "included; docs/bearing_life.md).",
+    "film": "EHL film of each roller's contacts per lamina (Pan & Hamrock 1989 by "
+            "default, Dowson & Higginson 1977 by --film-formula; the central film Pan & "
+            "Hamrock's) from the entrainment speed of pure rolling; shown: the most "
+            "loaded roller's smallest over its laminae; Lambda = h_min/sqrt(Rq1^2 + "
+            "Rq2^2); kappa = nu/nu1 (ISO 281's nu1, catalogue form).",
+    "modified": "L_nm = a1 a_ISO L10 (ISO 281:2007, catalogue form; a_ISO at P = F_r, "
+                "capped at 50); L_nmr = a1 a_ISO(P_ref) L10r with P_ref = C_r "
+                "L10r^(-3/10).",
+    "flanges": "axial load: each roller's flange force (shared in proportion to the "
+               "radial loads, or equally), the Hertz pressure of its two flange "
+               "contacts and their couple; the couple is not fed back into the rollers' "
+               "tilt (docs/bearing_life.md).",
+    "spectrum": "duty cycle: each case solved alone, combined by Palmgren-Miner, "
+                "1/L = sum u_i/L_i with u_i the shares of revolutions (from shares of "
+                "time: t_i n_i / sum t_j n_j).",
     "case": "case check (--surface-hardness, --case-depth, --core-hardness or "
             "--hardness-profile): the most loaded roller between the same raceways at "
             "Q_max (linecontact.raceway.roller_between_raceways, free to tilt under the "
@@ -186,7 +299,79 @@ def resolve(values, present, fail):
             fail(P[nm] & (v[nm] != np.round(v[nm])), nm, "a whole number",
                  "not a whole number")
     hardness = hardness_of(v, P, fail, np.ones(n, bool))
-    return State(np.ones(n, bool), estar=estar, hardness=hardness)
+    spectra = [None] * n
+    read = {}
+    for i in np.flatnonzero(P["spectrum"]):
+        path = v["spectrum"][i].strip()
+        if path not in read:
+            try:
+                read[path] = read_spectrum(path)
+            except Exception as exc:  # noqa: BLE001 - the row's error, one line
+                read[path] = str(exc).splitlines()[0] if str(exc) else repr(exc)
+        if isinstance(read[path], str):
+            fail(np.arange(n) == i, "spectrum", "a CSV of load cases (time_share or "
+                 "revolution_share, radial_load, ...)", read[path])
+        else:
+            spectra[i] = read[path]
+    return State(np.ones(n, bool), estar=estar, hardness=hardness, spectra=spectra)
+
+
+#: The columns of a duty-cycle CSV (``--spectrum``): each a Parameter, read with the
+#: calculator's unit rules.
+SPECTRUM_COLUMNS = (
+    Parameter("time_share", "dimensionless", "share of time of the case (fractions "
+              "summing to 1)", _SPECTRUM, positive=False),
+    Parameter("revolution_share", "dimensionless", "share of revolutions of the case",
+              _SPECTRUM, positive=False),
+    Parameter("radial_load", "force", "radial load F_r", _SPECTRUM),
+    Parameter("speed", "angular_speed", "speed of the inner ring (default --speed)",
+              _SPECTRUM, positive=False),
+    Parameter("tilting_moment", "moment", "tilting moment", _SPECTRUM, positive=False),
+    Parameter("misalignment", "angle", "misalignment", _SPECTRUM, positive=False),
+    Parameter("axial_load", "force", "axial load on the flanges", _SPECTRUM,
+              positive=False),
+)
+
+
+def read_spectrum(path):
+    """The load cases of a duty-cycle CSV: (cases as dicts of LoadCase's fields with
+    None where not given, 'time' or 'revolutions'); ValueError naming the row and
+    column of a bad cell."""
+    from ..batch import read_table
+    from ..cases import parse_columns
+
+    header, body, _ = read_table(path)
+    names = [h.strip().lower() for h in header]
+    known = {p.name for p in SPECTRUM_COLUMNS}
+    unknown = [h for h in names if h and h not in known]
+    if unknown:
+        raise ValueError(f"{path}: unknown columns {unknown} (known: {sorted(known)})")
+    rows = [list(r) for r in body]
+    n = len(rows)
+    cells = {nm: [r[j].strip() if j < len(r) else "" for r in rows]
+             for j, nm in enumerate(names) if nm}
+    values, present, _, errors = parse_columns(SPECTRUM_COLUMNS, cells, n,
+                                               lambda nm: nm)
+    bad = [(i, e) for i, e in enumerate(errors) if e]
+    if bad:
+        raise ValueError(f"{path}: row {bad[0][0] + 1}: {bad[0][1]}")
+    t, r = present["time_share"], present["revolution_share"]
+    if not ((t.all() and not r.any()) or (r.all() and not t.any())):
+        raise ValueError(f"{path}: give time_share or revolution_share in every row "
+                         "(one of the two)")
+    if not present["radial_load"].all():
+        raise ValueError(f"{path}: radial_load missing in rows "
+                         f"{(np.flatnonzero(~present['radial_load']) + 1).tolist()}")
+    share = "time_share" if t.all() else "revolution_share"
+
+    def cell(nm, i):
+        return float(values[nm][i]) if present[nm][i] else None
+
+    cases = [dict(share=float(values[share][i]), radial_load=cell("radial_load", i),
+                  speed=cell("speed", i), moment=cell("tilting_moment", i),
+                  misalignment=cell("misalignment", i), axial_load=cell("axial_load", i))
+             for i in range(n)]
+    return cases, ("time" if share == "time_share" else "revolutions")
 
 
 _EXAMPLES = {"rollers": "14", "pitch_diameter": "70mm", "roller_diameter": "11mm",
@@ -196,8 +381,9 @@ _EXAMPLES = {"rollers": "14", "pitch_diameter": "70mm", "roller_diameter": "11mm
 class Solved:
     """One bearing: the library's bearing, its solution and the case check (or None)."""
 
-    def __init__(self, bearing, solution, case=None):
+    def __init__(self, bearing, solution, case=None, spectrum=None):
         self.bearing, self.solution, self.case = bearing, solution, case
+        self.spectrum = spectrum
 
 
 def _given(v, name, i):
@@ -219,16 +405,42 @@ def solve(values, i, state):
         kw["n_slices"] = int(g["n_slices"])
     if g["poisson"] is not None:
         kw["poisson"] = g["poisson"]
+    for nm in _LIBRARY:
+        if g[nm] is not None:
+            kw[nm] = g[nm]
+    if (g["ring_modulus"] is None and g["modulus"] is not None
+            and (g["shaft_interference"] is not None
+                 or g["housing_interference"] is not None)):
+        kw["ring_modulus"] = g["modulus"]        # the rings' own modulus for the fits
     b = RadialRollerBearing(int(g["rollers"]), g["pitch_diameter"], g["roller_diameter"],
                             g["length"], g["clearance"] or 0.0,
                             estar=float(state.estar[i]), model=g["model"],
                             profile=g["profile"], rating=g["rating"], **kw)
     s = b.solve(g["radial_load"], moment=g["tilting_moment"],
-                misalignment=g["misalignment"])
+                misalignment=g["misalignment"], speed=g["speed"],
+                axial_load=g["axial_load"])
     case = None
     if state.hardness[i] is not None:
         case = case_check(b, s, state.hardness[i])
-    return Solved(b, s, case)
+    spectrum = None
+    if state.spectra[i] is not None:
+        from ...bearing import solve_spectrum
+
+        cases, shares = state.spectra[i]
+        cases = [dict(c, speed=g["speed"]) if c["speed"] is None else c for c in cases]
+        spectrum = solve_spectrum(b, cases, shares=shares)
+    return Solved(b, s, case, spectrum)
+
+
+#: The parameters passed to :class:`linecontact.bearing.RadialRollerBearing` by name
+#: where given (the lubricant, life factors, fits, temperatures and flanges).
+_LIBRARY = ("static_rating", "viscosity", "density", "pressure_viscosity",
+            "roughness_roller", "roughness_raceway", "film_formula", "contamination",
+            "reliability", "fatigue_load_limit", "shaft_interference", "bore",
+            "shaft_bore", "housing_interference", "outside_diameter",
+            "housing_diameter", "ring_modulus", "temperature_difference", "end_radius",
+            "flange_angle", "inner_flange_height", "outer_flange_height",
+            "overall_length", "end_chamfer", "axial_share")
 
 
 def most_loaded_roller(bearing, solution):
@@ -287,6 +499,29 @@ def row(obj, state, i):
         "life_iso281": s.life_iso281,
         "life_iso16281": s.life_iso16281,
     }
+    j = int(np.argmax(s.roller_loads))
+    out.update(static_rating=s.static_rating, static_safety=s.static_safety,
+               pressure_safety=s.pressure_safety,
+               operating_clearance=(s.clearance if s.clearance_changes is not None
+                                    else None),
+               entrainment_speed=s.entrainment_speed, kappa=s.kappa,
+               film_ratio=s.film_ratio, life_modification=s.life_modification,
+               life_modified=s.life_modified,
+               life_modified_reference=s.life_modified_reference)
+    for nm in ("film_minimum_inner", "film_minimum_outer", "film_central_inner",
+               "film_central_outer"):
+        a = getattr(s, nm)
+        out[nm] = None if a is None else float(np.min(a[j]))
+    if s.flange_forces is not None:
+        out.update(max_flange_force=float(s.flange_forces.max()),
+                   flange_pressure_inner=float(s.flange_pressure_inner.max()),
+                   flange_pressure_outer=float(s.flange_pressure_outer.max()),
+                   flange_couple=float(s.flange_couple.max()))
+    sp = obj.spectrum
+    if sp is not None:
+        for kind in ("iso281", "iso16281", "modified", "modified_reference"):
+            out[f"spectrum_life_{kind}"] = sp.life.get(kind)
+        out["spectrum_hours_iso281"] = (sp.hours or {}).get("iso281")
     for m in ("tresca", "von_mises", "orthogonal_shear"):
         w = st.get(m)
         shown = w and "withheld" not in w     # an edge-loaded roller's: "-", see notes
@@ -345,19 +580,77 @@ def blocks(obj):
     under a tilt)."""
     s = obj.solution
     tilted = s.stiffness.shape == (2, 2)
-    flds = dict(_ROLLER_FIELDS, **(_TILT_FIELDS if tilted else {}))
+    film = s.film_ratio_inner is not None
+    flange = s.flange_forces is not None
+    life = s.speed is not None
+    flds = dict(_ROLLER_FIELDS, **(_TILT_FIELDS if tilted else {}),
+                **({"film_ratio": _LIFE_FIELDS["film_ratio"]} if film else {}),
+                **({"damage": _LIFE_FIELDS["damage"]} if life else {}),
+                **({"flange_force": _LIFE_FIELDS["flange_force"]} if flange else {}))
     rows = []
     for j in range(len(s.azimuth)):
         r = {"label": str(j), "azimuth": float(s.azimuth[j]),
              "approach": float(s.approach[j]), "load": float(s.roller_loads[j])}
         if tilted:
             r.update(moment=float(s.roller_moments[j]), tilt=float(s.roller_tilts[j]))
+        if film:
+            lam = min(float(s.film_ratio_inner[j]), float(s.film_ratio_outer[j]))
+            r["film_ratio"] = lam if math.isfinite(lam) else None
+        if life:
+            r["damage"] = float(s.roller_damage[j])
+        if flange:
+            r["flange_force"] = float(s.flange_forces[j])
         rows.append(r)
-    return [Block(name="rollers", label="roller", fields=flds, rows=rows,
-                  note="roller j at azimuth psi_j from the load line; approach: "
-                       "delta_r cos psi_j - P_d/2 (negative: a gap); Q: its load"
-                       + ("; M_j: its inner contact's moment, tilt: its own against "
-                          "the inner ring" if tilted else "") + ".")]
+    out = [Block(name="rollers", label="roller", fields=flds, rows=rows,
+                 note="roller j at azimuth psi_j from the load line; approach: "
+                      "delta_r cos psi_j - P_d/2 (negative: a gap); Q: its load"
+                      + ("; M_j: its inner contact's moment, tilt: its own against "
+                         "the inner ring" if tilted else "")
+                      + ("; Lambda: the smaller of its two contacts' film ratios"
+                         if film else "")
+                      + ("; damage: its share of the L10r damage" if life else "")
+                      + ("; F_a,j: the axial force through its flanges" if flange
+                         else "") + ".")]
+    sp = obj.spectrum
+    if sp is not None:
+        cflds = dict(_CASE_FIELDS)
+        crows = []
+        for i, (c, sol) in enumerate(zip(sp.cases, sp.solutions)):
+            r = {"label": str(i), "share": c.share, "u": float(sp.revolution_shares[i]),
+                 "radial_load": c.radial_load, "speed": c.speed}
+            for kind in sp.lives:
+                r[f"life_{kind}"] = float(sp.lives[kind][i])
+                r[f"damage_{kind}"] = float(sp.damage[kind][i])
+            crows.append(r)
+        cflds = {k: f for k, f in cflds.items()
+                 if not (k.startswith(("life_", "damage_"))
+                         and k.split("_", 1)[1] not in sp.lives)}
+        out.append(Block(name="spectrum", label="case", fields=cflds, rows=crows,
+                         note="load case i: its share as given, u_i its share of "
+                              "revolutions, each life as if it acted alone and its "
+                              "share of the damage (Palmgren-Miner)."))
+    return out
+
+
+_LIFE_FIELDS = {
+    "film_ratio": Field("Lambda", "-", "-", 1.0),
+    "damage": Field("damage", "-", "-", 1.0),
+    "flange_force": Field("F_a,j", "N", "N", 1.0),
+}
+_CASE_FIELDS = {
+    "share": Field("share", "-", "-", 1.0),
+    "u": Field("u_i", "-", "-", 1.0),
+    "radial_load": Field("F_r", "N", "kN", 1e-3),
+    "speed": Field("speed", "rad/s", "rpm", 30 / math.pi),
+    "life_iso281": Field("L10", "1e6 rev", "1e6 rev", 1.0),
+    "damage_iso281": Field("damage L10", "-", "-", 1.0),
+    "life_iso16281": Field("L10r", "1e6 rev", "1e6 rev", 1.0),
+    "damage_iso16281": Field("damage L10r", "-", "-", 1.0),
+    "life_modified": Field("L_nm", "1e6 rev", "1e6 rev", 1.0),
+    "damage_modified": Field("damage L_nm", "-", "-", 1.0),
+    "life_modified_reference": Field("L_nmr", "1e6 rev", "1e6 rev", 1.0),
+    "damage_modified_reference": Field("damage L_nmr", "-", "-", 1.0),
+}
 
 
 def to_json(obj):
@@ -368,7 +661,21 @@ def to_json(obj):
                         "roller_diameter": b.roller_diameter, "length": b.length,
                         "clearance": b.clearance, "estar": b.estar,
                         "profile": b.profile.label, "n_slices": b.n_slices},
-            "solution": obj.solution.to_dict()}
+            "solution": obj.solution.to_dict(),
+            **({"spectrum": _spectrum_json(obj.spectrum)} if obj.spectrum is not None
+               else {})}
+
+
+def _spectrum_json(sp):
+    """The duty cycle for ``--json`` [SI]: the cases, their shares of revolutions,
+    lives and damage, and the combined lives."""
+    return {"cases": [{k: getattr(c, k) for k in ("share", "radial_load", "speed",
+                                                  "moment", "misalignment",
+                                                  "axial_load")} for c in sp.cases],
+            "revolution_shares": sp.revolution_shares.tolist(),
+            "lives": {k: v.tolist() for k, v in sp.lives.items()},
+            "damage": {k: v.tolist() for k, v in sp.damage.items()},
+            "life": dict(sp.life), "hours": sp.hours}
 
 
 def figure(objects):

@@ -41,9 +41,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._numerics import out
-from .checks import POISSON_RATIO, check_interval, check_positive
-from .errors import CombinationError
+from .._numerics import out
+from ..checks import POISSON_RATIO, check_interval, check_positive
+from ..errors import CombinationError
 
 __all__ = [
     "STEEL_EXPANSION",

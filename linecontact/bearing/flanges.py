@@ -48,10 +48,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._numerics import out
-from .checks import check_interval, check_positive
-from .errors import CombinationError, UnknownNameError
-from .hertz import hertz_contact
+from .._numerics import out
+from ..checks import check_interval, check_positive
+from ..errors import CombinationError, UnknownNameError
+from ..hertz import hertz_contact
 
 __all__ = ["SHARE_RULES", "axial_load_shares", "FlangeContacts", "flange_contacts"]
 

@@ -51,9 +51,9 @@ import math
 
 import numpy as np
 
-from ._numerics import out
-from .checks import check_interval, check_positive
-from .errors import UnknownNameError
+from .._numerics import out
+from ..checks import check_interval, check_positive
+from ..errors import UnknownNameError
 
 __all__ = [
     "DEFAULT_FILM_FORMULA",
@@ -408,7 +408,7 @@ def film_ratio(film_thickness, roughness_1, roughness_2):
     with np.errstate(divide="ignore", invalid="ignore"):
         lam = np.where(s > 0.0, h / np.where(s > 0.0, s, 1.0), np.inf)
     if np.any((s == 0.0) & (h == 0.0)):
-        from .errors import CombinationError
+        from ..errors import CombinationError
         raise CombinationError({"film_thickness": 0.0, "roughness_1": 0.0,
                                 "roughness_2": 0.0},
                                "zero film between ideally smooth surfaces: Lambda is "
@@ -619,7 +619,7 @@ def viscosity_ratio(viscosity, speed, pitch_diameter):
     Notes
     -----
     The life modification factor a_ISO accepts 0.1 <= kappa; above 4 it takes 4
-    (:func:`linecontact.life.life_modification_factor`). The dynamic viscosity of
+    (:func:`linecontact.bearing.ratings.life_modification_factor`). The dynamic viscosity of
     the film formulas is eta0 = rho nu.
 
     Examples

@@ -182,6 +182,6 @@ def stress_coverage():
     --------
     >>> c = stress_coverage()
     >>> c["l_over_d"], c["errors"]["error_3d_off_ends"]["tresca"]
-    ((0.5, 10.0), 0.00728)
+    ((0.5, 10.0), 0.0109)
     """
     return _read(STRESS_ACCURACY, _stress)

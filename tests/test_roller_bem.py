@@ -338,7 +338,8 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
     assert np.max(np.abs(c["rt_err_moment"][wide & off & given])) < 0.01
     assert np.max(np.abs(c["rt_err_p_max"][wide & off])) < 0.03
     # the stated errors are bounds: |error| + |grid change| per row, and the header's
-    # runtime_error_* fields are their largest by the class the runtime states
+    # runtime_error_* fields are their largest by the class the runtime states, times
+    # the margin MARGIN (the cases sample the range)
     for k in rs.BOUNDS:
         np.testing.assert_allclose(c[f"rt_bound_{k}"], np.abs(c[f"rt_err_{k}"])
                                    + np.abs(c[f"bem_change_{k}"]), rtol=1e-12, atol=0)
@@ -349,9 +350,9 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
     stated = {k: float(v) for k, v in (item.split() for item in
                                        t.meta["runtime_error_off_ends"].split(","))}
     assert stated["depth"] == pytest.approx(
-        np.max(c["rt_bound_depth"][~rte & clear]), rel=2e-3)
+        rs.MARGIN * np.max(c["rt_bound_depth"][~rte & clear]), rel=2e-3)
     assert stated["p_max"] == pytest.approx(
-        np.max(c["rt_bound_p_max"][~rte & clear & off]), rel=2e-3)
+        rs.MARGIN * np.max(c["rt_bound_p_max"][~rte & clear & off]), rel=2e-3)
 
 
 @pytest.mark.slow

@@ -119,6 +119,10 @@ END_GRIDS = ((4096, 16), (8192, 32))
 #: (0.8-1.5), needles (3-10) and cam-follower rings (0.5-0.8), mean line loads
 #: q/(E* D) from light to heavy, tilts to 3 mrad; D = DIAMETER throughout
 WIDE_L_OVER_D = (0.5, 0.8, 1.0, 1.5, 3.0, 6.0, 10.0)
+#: appended after the first block (its order and cases unchanged): a needle of L/D 10
+#: on an inner raceway has L/(2R) = 10/(1 - D/d_m), up to 12 at D/d_m = 0.15, with R
+#: the contact's effective radius (the population check found them outside L/D 10)
+WIDE_EXTRA_L_OVER_D = (12.0,)
 WIDE_LINE_LOADS_OVER_ESTAR_D = (1e-5, 1e-4, 1e-3, 3e-3)
 WIDE_TILTS = (0.0, 1e-3, 3e-3)        #: [rad]
 #: the wide set's crown radius: CROWN_RADIUS (L / 14 mm)^2 within these bounds [m]
@@ -186,16 +190,26 @@ def task_profile(task):
 def wide_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
     """The wide set (WIDE_*): every L/D and line load with each of the five profiles,
     the tilt cycling through WIDE_TILTS with the L/D, load and profile indices (so
-    each L/D and each profile meets every tilt): 140 cases (``quick``: the first and
-    last L/D and load, 20)."""
+    each L/D and each profile meets every tilt): 140 cases, then the 20 of
+    WIDE_EXTRA_L_OVER_D (``quick``: the first and last L/D and load of the first
+    block, 20)."""
     lds = WIDE_L_OVER_D[::len(WIDE_L_OVER_D) - 1] if quick else WIDE_L_OVER_D
+    out = _wide_block(lds, 0, n_x, n_y, tol, quick)
+    if not quick:
+        out += _wide_block(WIDE_EXTRA_L_OVER_D, len(WIDE_L_OVER_D), n_x, n_y, tol, quick)
+    return out
+
+
+def _wide_block(lds, i0, n_x, n_y, tol, quick):
+    """The wide set's cases of the L/D values `lds` (indices from `i0`, for the tilt
+    cycle and the third-grid rule), in their stride order."""
     # the order: a stride permutation (WIDE_STRIDE, prime to the count), so that any
     # first n cases spread over L/D, load and profile (``--wide-limit``); the third-grid
     # check by the case itself, not its place
     qs = (WIDE_LINE_LOADS_OVER_ESTAR_D[::len(WIDE_LINE_LOADS_OVER_ESTAR_D) - 1] if quick
           else WIDE_LINE_LOADS_OVER_ESTAR_D)
     tasks = []
-    for i, ld in enumerate(lds):
+    for i, ld in enumerate(lds, start=i0):
         L = ld * DIAMETER
         for j, qn in enumerate(qs):
             q = qn * ESTAR * DIAMETER

@@ -82,7 +82,8 @@ MARGIN = 1.5
 #: the last full run's time (1 worker, niced, the shared 2-core VM), quoted in the header
 #: of a table rebuilt from its checkpoints
 STUDY_WALL = ("352 s for 48 cases + about 360 s for 12 more in an earlier, interrupted "
-              "run (1 worker, niced, load average 6-10), 2026-11-29")
+              "run (1 worker, niced, load average 6-10), 2026-11-29; the 3 cases of "
+              "L/D 12 in the run this line heads (its wall time above)")
 #: two planes near the surface (z/b) of the traction cases, extrapolated linearly to
 #: z = 0 (with friction above about 0.3 the largest shear sits at the surface). Measured
 #: on a light, long contact at mu = 0.4 (L/D 0.8, q/(E* D) 1e-5): the surface Tresca

@@ -32,9 +32,9 @@ Cases: the roller study's rollers and profiles (tools/studies/roller_study.py; D
 10 mm, E* = 115.385 GPa): the dense set, L = 14 mm with the circular crown, ISO/TS
 16281, Lundberg's, Johns-Gohar's and straight-with-end-relief profiles, L = 30 mm with
 the ISO profile; line loads 100, 800 and 2000 N/mm; tilts 0 and 2 mrad: 36 cases; and
-every WIDE_EVERY-th case of the roller study's wide set (issue 32: L/D 0.5-10,
+every WIDE_EVERY-th case of the roller study's wide set (issue 32: L/D 0.5-12,
 q/(E* D) 1e-5-3e-3, tilts 0-3 mrad; each L/D, load, profile and tilt at least once):
-24 cases. ``--quick``: 6 dense and 4 wide. Friction 0.4 is not in the study: there
+27 cases. ``--quick``: 6 dense and 4 wide. Friction 0.4 is not in the study: there
 the largest shear sits at the surface, and the reference's near-surface traction field
 (planes z/b = 0.01, 0.02 extrapolated to z = 0, SURFACE_OVER_B) gave a surface von Mises
 7.5 % below the exact plane-strain value on a long light contact (SURFACE_FRICTION).
@@ -100,7 +100,7 @@ WIDE_EVERY = 6
 
 def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False, wide=True):
     """The cases (picklable dicts with a unique 'key'): the dense set and, with `wide`,
-    every WIDE_EVERY-th case of the roller study's wide set (L/D 0.5-10, q/(E* D)
+    every WIDE_EVERY-th case of the roller study's wide set (L/D 0.5-12, q/(E* D)
     1e-5-3e-3, tilts 0-3 mrad; each L/D and load at least once)."""
     combos = [("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
     loads = LINE_LOADS[::2] if quick else LINE_LOADS
@@ -384,7 +384,7 @@ def run(args):
               f"{', '.join(f'{q / 1e3:g}' for q in LINE_LOADS)} N/mm; tilts "
               f"{', '.join(f'{t * 1e3:g}' for t in TILTS)} mrad"
               + (f"; wide set: every {WIDE_EVERY}th case of the roller study's wide "
-                 "set (tools/studies/roller_study.py, wide_tasks: L/D 0.5-10, q/(E* D) "
+                 "set (tools/studies/roller_study.py, wide_tasks: L/D 0.5-12, q/(E* D) "
                  "1e-5-3e-3, profiles 1-5, tilts 0, 1, 3 mrad)" if not args.no_wide else "")
               + (" (quick subset)" if args.quick else ""),
         grid=f"BEM: adapted window (contact box x 1.25, |y| <= 1.25 b), {args.n_x} x "

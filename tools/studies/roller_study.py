@@ -124,6 +124,10 @@ WIDE_L_OVER_D = (0.5, 0.8, 1.0, 1.5, 3.0, 6.0, 10.0)
 #: on an inner raceway has L/(2R) = 10/(1 - D/d_m), up to 12 at D/d_m = 0.15, with R
 #: the contact's effective radius (the population check found them outside L/D 10)
 WIDE_EXTRA_L_OVER_D = (12.0,)
+#: and a lighter load for every L/D (appended last): a large cam-follower ring or a
+#: long needle at 2 % of its rating carries q/(E* 2R) down to 5e-6 (the population
+#: check found four such contacts below 1e-5)
+WIDE_EXTRA_LINE_LOADS_OVER_ESTAR_D = (3e-6,)
 WIDE_LINE_LOADS_OVER_ESTAR_D = (1e-5, 1e-4, 1e-3, 3e-3)
 WIDE_TILTS = (0.0, 1e-3, 3e-3)        #: [rad]
 #: the wide set's crown radius: CROWN_RADIUS (L / 14 mm)^2 within these bounds [m]
@@ -198,21 +202,25 @@ def wide_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
     out = _wide_block(lds, 0, n_x, n_y, tol, quick)
     if not quick:
         out += _wide_block(WIDE_EXTRA_L_OVER_D, len(WIDE_L_OVER_D), n_x, n_y, tol, quick)
+        out += _wide_block(WIDE_L_OVER_D + WIDE_EXTRA_L_OVER_D, 0, n_x, n_y, tol, quick,
+                           qs=WIDE_EXTRA_LINE_LOADS_OVER_ESTAR_D,
+                           j0=len(WIDE_LINE_LOADS_OVER_ESTAR_D))
     return out
 
 
-def _wide_block(lds, i0, n_x, n_y, tol, quick):
+def _wide_block(lds, i0, n_x, n_y, tol, quick, qs=None, j0=0):
     """The wide set's cases of the L/D values `lds` (indices from `i0`, for the tilt
     cycle and the third-grid rule), in their stride order."""
     # the order: a stride permutation (WIDE_STRIDE, prime to the count), so that any
     # first n cases spread over L/D, load and profile (``--wide-limit``); the third-grid
     # check by the case itself, not its place
-    qs = (WIDE_LINE_LOADS_OVER_ESTAR_D[::len(WIDE_LINE_LOADS_OVER_ESTAR_D) - 1] if quick
-          else WIDE_LINE_LOADS_OVER_ESTAR_D)
+    if qs is None:
+        qs = (WIDE_LINE_LOADS_OVER_ESTAR_D[::len(WIDE_LINE_LOADS_OVER_ESTAR_D) - 1]
+              if quick else WIDE_LINE_LOADS_OVER_ESTAR_D)
     tasks = []
     for i, ld in enumerate(lds, start=i0):
         L = ld * DIAMETER
-        for j, qn in enumerate(qs):
+        for j, qn in enumerate(qs, start=j0):
             q = qn * ESTAR * DIAMETER
             for k, code in enumerate(WIDE_PROFILES):
                 prof = PROFILES[code]

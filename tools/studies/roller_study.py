@@ -54,7 +54,7 @@ F/L = 100, 300, 800, 2000 N/mm (Hertz line-contact pressure sqrt(q E*/(pi R)) =
 The wide set (issue 32, ``wide_tasks``): the rollers users bring -- L/D 0.5, 0.8, 1,
 1.5, 3, 6, 10 and 12 (cam-follower rings, cylindrical roller bearings, needles, a
 needle's contact on an inner raceway reaching L/(2R) = 12) at mean line
-loads q/(E* D) = 1e-5, 1e-4, 1e-3, 3e-3, each with the five profiles (the crown radius
+loads q/(E* D) = 1e-5, 1e-4, 1e-3, 3e-3 (and 3e-6), each with the five profiles (the crown radius
 scaled with L^2, WIDE_CROWN_RADII), the tilt cycling through 0, 1, 3 mrad: 160 cases,
 ordered so that any first N (``--wide-limit``) spread over the grid. A wide-set case
 whose BEM changes by more than REFINE between the two grids takes a third (4x) grid as
@@ -564,7 +564,7 @@ def add_arguments(parser):
                              "convergence order (default 7, so that all tilts are sampled; 0: never)")
     parser.add_argument("--no-wide", action="store_true",
                         help="the dense set only (L = 14, 30 mm), without the wide set "
-                             "(WIDE_*: L/D 0.5-12, q/(E* D) 1e-5-3e-3, tilts to 3 mrad)")
+                             "(WIDE_*: L/D 0.5-12, q/(E* D) 3e-6-3e-3, tilts to 3 mrad)")
     parser.add_argument("--wide-limit", type=int, default=None, metavar="N",
                         help="only the first N cases of the wide set (its order spreads "
                              "any first N over L/D, load and profile; default: all)")

@@ -33,7 +33,7 @@ Cases: the roller study's rollers and profiles (tools/studies/roller_study.py; D
 16281, Lundberg's, Johns-Gohar's and straight-with-end-relief profiles, L = 30 mm with
 the ISO profile; line loads 100, 800 and 2000 N/mm; tilts 0 and 2 mrad: 36 cases; and
 every WIDE_EVERY-th case of the roller study's wide set (issue 32: L/D 0.5-12,
-q/(E* D) 1e-5-3e-3, tilts 0-3 mrad; each L/D, load, profile and tilt at least once):
+q/(E* D) 3e-6-3e-3, tilts 0-3 mrad; each L/D, load, profile and tilt at least once):
 27 cases. ``--quick``: 6 dense and 4 wide. Friction 0.4 is not in the study: there
 the largest shear sits at the surface, and the reference's near-surface traction field
 (planes z/b = 0.01, 0.02 extrapolated to z = 0, SURFACE_OVER_B) gave a surface von Mises
@@ -83,7 +83,8 @@ MARGIN = 1.5
 #: of a table rebuilt from its checkpoints
 STUDY_WALL = ("352 s for 48 cases + about 360 s for 12 more in an earlier, interrupted "
               "run (1 worker, niced, load average 6-10), 2026-11-29; the 3 cases of "
-              "L/D 12 in the run this line heads (its wall time above)")
+              "L/D 12 in 28 s, and those of q/(E* D) = 3e-6 in the run this line heads "
+              "(its wall time above)")
 #: two planes near the surface (z/b) of the traction cases, extrapolated linearly to
 #: z = 0 (with friction above about 0.3 the largest shear sits at the surface). Measured
 #: on a light, long contact at mu = 0.4 (L/D 0.8, q/(E* D) 1e-5): the surface Tresca

@@ -55,7 +55,7 @@ The wide set (issue 32, ``wide_tasks``): the rollers users bring -- L/D 0.5, 0.8
 1.5, 3, 6, 10 and 12 (cam-follower rings, cylindrical roller bearings, needles, a
 needle's contact on an inner raceway reaching L/(2R) = 12) at mean line
 loads q/(E* D) = 1e-5, 1e-4, 1e-3, 3e-3 (and 3e-6), each with the five profiles (the crown radius
-scaled with L^2, WIDE_CROWN_RADII), the tilt cycling through 0, 1, 3 mrad: 160 cases,
+scaled with L^2, WIDE_CROWN_RADII), the tilt cycling through 0, 1, 3 mrad: 200 cases,
 ordered so that any first N (``--wide-limit``) spread over the grid. A wide-set case
 whose BEM changes by more than REFINE between the two grids takes a third (4x) grid as
 its reference. ``--bem-from`` reuses the BEM of the cases an earlier table has and
@@ -69,7 +69,7 @@ computes the others.
 
 Budget: the wide set's first 140 cases took 576 s wall (138 cases) + 87 s (2 refined on
 512 x 128) with 1 worker, niced, on the shared 2-core VM at load average 7-10 (median
-8.3 s per case). Measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
+8.3 s per case); the 20 of L/D 12 about 240 s, the 40 of q/(E* D) = 3e-6 288 s. Measured 150 s, 198 s, 461 s and 598 s for the 104 cases with the default grids on the
 shared 2-core VM (2 Dask workers; the longer two at load average 8-16; the table's
 header line ``wall_time``); the cases are independent, so the study runs through
 tools.studies.runner.run_study (checkpoints, ``--resume``, a Dask cluster). ``--quick`` runs 28
@@ -196,8 +196,9 @@ def wide_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):
     """The wide set (WIDE_*): every L/D and line load with each of the five profiles,
     the tilt cycling through WIDE_TILTS with the L/D, load and profile indices (so
     each L/D and each profile meets every tilt): 140 cases, then the 20 of
-    WIDE_EXTRA_L_OVER_D (``quick``: the first and last L/D and load of the first
-    block, 20)."""
+    WIDE_EXTRA_L_OVER_D and the 40 of WIDE_EXTRA_LINE_LOADS_OVER_ESTAR_D, each block
+    in its own order (``quick``: the first and last L/D and load of the first block,
+    20)."""
     lds = WIDE_L_OVER_D[::len(WIDE_L_OVER_D) - 1] if quick else WIDE_L_OVER_D
     out = _wide_block(lds, 0, n_x, n_y, tol, quick)
     if not quick:

@@ -158,7 +158,7 @@ def roller_coverage():
     Examples
     --------
     >>> roller_coverage()["l_over_d"]
-    (0.5, 10.0)
+    (0.5, 12.0)
     """
     return _read(ROLLER_ACCURACY, _roller)
 
@@ -190,7 +190,7 @@ def stress_coverage():
     --------
     >>> c = stress_coverage()
     >>> c["l_over_d"], c["errors"]["error_3d_off_ends"]["tresca"]
-    ((0.5, 10.0), 0.0109)
+    ((0.5, 12.0), 0.0109)
     """
     return _read(STRESS_ACCURACY, _stress)
 

@@ -408,14 +408,14 @@ def test_solution_states_the_measured_error_inside_the_covered_range():
 
 
 def test_solution_outside_the_covered_range_names_the_quantity():
-    # a full solve: L/(2R) = 12 is beyond the table's longest roller (L/D 10), named in
+    # a full solve: L/(2R) = 15 is beyond the table's longest roller (L/D 12), named in
     # the user's terms (issue 32): the roller's length and the contact's effective
     # radius R by name, L/(2R) being the roller's L/D only on a flat
     cov, _ = _covered()
     lo, hi = cov["l_over_d"]
-    s = ProfiledRoller(5e-3, 120e-3, 115.385e9, "circular:Rc=0.5").at_force(2e4)
+    s = ProfiledRoller(5e-3, 150e-3, 115.385e9, "circular:Rc=0.5").at_force(2e4)
     assert s.notes[-1].startswith(
-        "L/(2R) = 12 (roller length L = 120 mm, the contact's effective radius R = 5 mm: "
+        "L/(2R) = 15 (roller length L = 150 mm, the contact's effective radius R = 5 mm: "
         f"the roller's L/D on a flat) (measured {lo:.2g}-{hi:.2g})"), s.notes[-1]
     assert "outside the range" in s.notes[-1]
 

@@ -26,6 +26,10 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``adhesion``
     Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
     MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
+``adhesion-long``
+    Pull-off of long rollers below that table (s = b_c/L down to 1e-3): an end model
+    calibrated on the BEM and checked by BEM runs below the table:
+    tables/adhesion_long_roller.csv (tools.studies.adhesion_long_study).
 ``population``
     Drawn rollers of cylindrical, needle and cam-follower bearings at 2-50 % of their
     ISO 281 ratings: does each stated error of the runtime bound its difference to the
@@ -55,6 +59,7 @@ SUBCOMMANDS = {
     "stress": "tools.studies.stress_study",
     "accuracy": "tools.studies.accuracy",
     "adhesion": "tools.studies.adhesion_study",
+    "adhesion-long": "tools.studies.adhesion_long_study",
     "bearing": "tools.studies.bearing_study",
     "population": "tools.studies.population_study",
 }

@@ -406,11 +406,25 @@ def run_batch(args, argv, specs, options, table=CALC):
             if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):
                 errors[i] = str(InputError(name, c, "one value per row in a batch",
                                            "a sweep"))
-    progress = _Progress(n, getattr(args, "progress", None)
-                         if getattr(args, "progress", None) is not None
-                         else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
+    spread = (getattr(args, "scheduler", None) is not None
+              or getattr(args, "workers", None) is not None
+              or getattr(args, "client", None) is not None)
+    shown = getattr(args, "progress", None)
+    progress = _Progress(n, shown if shown is not None else sys.stderr.isatty() and (
+        spread or n >= PROGRESS_ROWS))
     try:
-        results = table.evaluate(cases, errors, args, specs, progress)
+        if spread:  # the evaluation on a dask cluster: the same results
+            from .spread import evaluate_on_cluster
+
+            results = evaluate_on_cluster(
+                table, cells, errors, cases, model=getattr(args, "model", None),
+                specs=specs, scheduler=getattr(args, "scheduler", None),
+                workers=getattr(args, "workers", None),
+                connect_timeout=getattr(args, "connect_timeout", None),
+                client=getattr(args, "client", None), progress=progress,
+                label=lambda name: name)
+        else:
+            results = table.evaluate(cases, errors, args, specs, progress)
     finally:
         progress.close()
     si = args.si or args.json

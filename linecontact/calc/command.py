@@ -49,6 +49,27 @@ class CommandResults:
         self.rows = [None] * n
         self.models = {}
 
+    @classmethod
+    def merged(cls, parts, errors, cases):
+        """The results of a whole batch from those of its consecutive row ranges
+        (:meth:`Command.evaluate` on each alone, the batch on a cluster): rows and
+        errors concatenated, the models in the order of their first row, as a
+        serial run registers them. `errors`, the whole batch's, is updated in place."""
+        lengths = [len(p.errors) for p in parts]
+        if sum(lengths) != len(errors):
+            raise ValueError(f"CommandResults.merged: the parts hold {sum(lengths)} "
+                             f"rows, the batch {len(errors)}")
+        out = cls(len(errors), errors, cases)
+        a = 0
+        for p, m in zip(parts, lengths):
+            errors[a:a + m] = p.errors
+            out.objects[a:a + m] = p.objects
+            out.rows[a:a + m] = p.rows
+            for mid, entry in p.models.items():
+                out.models.setdefault(mid, entry)
+            a += m
+        return out
+
 
 class _Entry:
     def __init__(self, key, label, provenance):

@@ -1,0 +1,305 @@
+"""Batches on a dask cluster (linecontact.calc.spread): ``linecontact calc FILE.csv
+--scheduler ADDRESS``, ``linecontact bearing FILE.csv --scheduler ADDRESS`` and
+``calc_frame(..., client=)`` write the serial batch's output byte for byte, and every
+bad ``--scheduler`` is one line with exit status 2 within the connect timeout.
+
+The cluster is a ``dask scheduler`` and two ``dask worker`` processes started
+separately on 127.0.0.1 (the issue's setting), importing this checkout's linecontact
+(PYTHONPATH), as a user's workers import the same installed code.
+"""
+import os
+import random
+import socket
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("distributed")
+
+from linecontact.calc.cli import main  # noqa: E402
+
+REPO = Path(__file__).resolve().parents[1]
+
+BEARING = ["--rollers", "14", "--pitch-diameter", "70mm", "--length", "11mm",
+           "--modulus", "210GPa", "--poisson", "0.3", "--profile", "iso16281"]
+
+
+def _free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def scheduler(tmp_path_factory):
+    """A scheduler and two single-thread workers, each its own process, on 127.0.0.1;
+    yields the address; all stopped at the end (killed after 5 s)."""
+    from dask.distributed import Client
+
+    logs_dir = tmp_path_factory.mktemp("dask")
+    port = _free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    env = dict(os.environ, PYTHONPATH=str(REPO))
+    procs, logs = [], []
+
+    def start(name, *argv):
+        log = open(logs_dir / f"{name}.log", "w")
+        logs.append(log)
+        procs.append(subprocess.Popen([sys.executable, "-m", "dask", *argv], cwd=REPO,
+                                      env=env, stdout=log, stderr=subprocess.STDOUT))
+
+    try:
+        start("scheduler", "scheduler", "--host", "127.0.0.1", "--port", str(port),
+              "--no-dashboard")
+        for k in range(2):
+            start(f"worker{k}", "worker", address, "--nthreads", "1", "--no-nanny",
+                  "--no-dashboard", "--host", "127.0.0.1",
+                  "--local-directory", str(logs_dir / f"w{k}"))
+        with Client(address, timeout="60s") as client:
+            client.wait_for_workers(2, timeout=120)
+        yield address
+    finally:
+        for p in reversed(procs):
+            p.terminate()
+            try:
+                p.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait(timeout=10)
+        for log in logs:
+            log.close()
+
+
+def calc_cases(path, n, seed=1):
+    """n rows: distinct rollers, a third profiled (crown radius), every 17th refused
+    (a negative load), one with a unit in a sweep: the rules' refusals among them."""
+    rnd = random.Random(seed)
+    lines = ["name,radius,length,estar,load,crown_radius"]
+    for i in range(n):
+        crown = "" if i % 3 else f"{rnd.uniform(200, 800):.1f}mm"
+        load = "-1kN" if i % 17 == 0 else (
+            "1kN:2kN:3" if i == 5 else f"{rnd.uniform(0.1, 20):.3f}kN")
+        lines.append(f"r{i},{rnd.uniform(3, 8):.4f}mm,{rnd.uniform(5, 20):.3f}mm,"
+                     f"{rnd.uniform(100, 230):.1f}GPa,{load},{crown}")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def bearing_cases(path, n, seed=35):
+    """A tolerance Monte Carlo of one bearing (docs/cluster.md): clearance, roller
+    diameter, misalignment and load drawn per row; one row refused (a clearance of
+    the wrong sign would be legal: a roller diameter of 0 is not)."""
+    rnd = random.Random(seed)
+    lines = ["case,clearance,roller_diameter,misalignment,radial_load"]
+    for i in range(n):
+        d = "0mm" if i == 3 else f"{rnd.gauss(11, 0.001):.5f}mm"
+        lines.append(f"{i},{rnd.gauss(20, 5):.2f}um,{d},{rnd.gauss(0.5, 0.2):.3f}mrad,"
+                     f"{rnd.uniform(8, 12):.3f}kN")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def _both(tmp_path, argv, scheduler, name="out"):
+    """(serial bytes, status), (cluster bytes, status) of one command line, each
+    written to the same output name (the JSON header records it)."""
+    out = tmp_path / name
+    runs = []
+    for extra in ([], ["--scheduler", scheduler]):
+        if out.exists():
+            out.unlink()
+        code = main([*argv, "-o", str(out), *extra])
+        runs.append((out.read_bytes(), code))
+    return runs
+
+
+@pytest.mark.parametrize("flags", [[], ["--json"], ["--model", "all", "--si"]])
+def test_calc_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler, flags):
+    """A few hundred rows, mixed plain and profiled, some refused: the same bytes
+    (CSV, JSON with its header's model list, every model's columns), the same status."""
+    src = calc_cases(tmp_path / "cases.csv", 300)
+    (serial, s_code), (spread, c_code) = _both(tmp_path, ["calc", str(src), *flags],
+                                               scheduler)
+    assert s_code == c_code == 2          # the refused rows
+    assert serial == spread
+
+
+def test_bearing_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler):
+    """Tens of rows of a bearing's tolerance Monte Carlo (ISO 16281 profile, a slice
+    model per row): the same bytes and status, CSV and JSON."""
+    src = bearing_cases(tmp_path / "mc.csv", 24)
+    for flags in ([], ["--json"]):
+        (serial, s_code), (spread, c_code) = _both(
+            tmp_path, ["bearing", str(src), *BEARING, *flags], scheduler)
+        assert s_code == c_code == 2      # the row with a roller diameter of 0
+        assert serial == spread
+
+
+def _frame_cases(tmp_path, n=120):
+    import pandas as pd
+
+    cases = pd.read_csv(calc_cases(tmp_path / "c.csv", n), dtype=str,
+                        keep_default_na=False)
+    cases.index = cases.index * 10 + 3       # kept, not renumbered
+    return cases
+
+
+def _same_frame(one, other):
+    import pandas as pd
+
+    pd.testing.assert_frame_equal(one, other, check_exact=True)
+    assert one.attrs == other.attrs
+
+
+def test_frames_with_a_client(tmp_path, scheduler):
+    """calc_frame and command_frame with client=: the serial frames (values, dtypes,
+    index, header) exactly."""
+    import pandas as pd
+    from dask.distributed import Client
+
+    from linecontact.calc.frame import calc_frame, command_frame
+
+    cases = _frame_cases(tmp_path)
+    b = pd.read_csv(bearing_cases(tmp_path / "b.csv", 6), dtype=str)
+    bearing = dict(rollers=14, pitch_diameter="70mm", length="11mm")
+    with Client(scheduler, timeout="60s") as client:
+        spread = calc_frame(cases, client=client)
+        b_spread = command_frame("bearing", b, client=client, **bearing)
+    _same_frame(calc_frame(cases), spread)
+    _same_frame(command_frame("bearing", b, **bearing), b_spread)
+
+
+def test_dask_dataframe_of_cases(tmp_path, scheduler):
+    """A dask DataFrame of cases is evaluated on the current client: the serial frame
+    of its rows."""
+    pytest.importorskip("dask.dataframe")    # needs pyarrow
+    import dask.dataframe as dd
+    from dask.distributed import Client
+
+    from linecontact.calc.frame import calc_frame
+
+    cases = _frame_cases(tmp_path, 40)
+    with Client(scheduler, timeout="60s"):
+        lazy = calc_frame(dd.from_pandas(cases, npartitions=3))
+    _same_frame(calc_frame(cases), lazy)
+
+
+def test_a_worker_with_other_code_stops_the_batch(tmp_path, scheduler, monkeypatch,
+                                                  capsys):
+    """Each task compares its worker's linecontact code with the client's: another
+    fingerprint (here the client's, changed) stops the batch in one line, exit 1,
+    and writes nothing."""
+    from linecontact.calc import spread
+
+    monkeypatch.setattr(spread, "linecontact_fingerprint", lambda: "linecontact other")
+    out = tmp_path / "o.csv"
+    code = main(["calc", str(calc_cases(tmp_path / "c.csv", 20)), "-o", str(out),
+                 "--scheduler", scheduler])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and not out.exists()
+    assert len(err) == 1 and "other linecontact code" in err[0] \
+        and "nothing written" in err[0], err
+
+
+class _NotDask:
+    """A TCP server that accepts and answers like a web server, then holds the
+    connection (the issue's HTTP port that held a client for 330 s)."""
+
+    def __init__(self):
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(8)
+        self.port = self.sock.getsockname()[1]
+        self.conns = []
+        threading.Thread(target=self._serve, daemon=True).start()
+
+    def _serve(self):
+        while True:
+            try:
+                c, _ = self.sock.accept()
+            except OSError:
+                return
+            self.conns.append(c)
+            try:
+                c.sendall(b"HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello")
+            except OSError:
+                pass
+
+    def close(self):
+        for c in self.conns:
+            c.close()
+        self.sock.close()
+
+
+def test_bad_scheduler_is_one_line_and_exit_2(tmp_path, capsys):
+    """Malformed, empty, a web address, a dead port, a server that is not dask: one
+    line naming --scheduler, exit 2, nothing written, within the connect timeout
+    (3 s here; a dead port at once)."""
+    src = calc_cases(tmp_path / "c.csv", 5)
+    out = tmp_path / "o.csv"
+    server = _NotDask()
+    dead = _free_port()
+    try:
+        for value, says in (("tcp://127.0.0.1", "HOST:PORT"), ("", "empty"),
+                            ("http://127.0.0.1:8787", "web address"),
+                            (f"127.0.0.1:{dead}", "nothing listens"),
+                            (f"tcp://127.0.0.1:{server.port}",
+                             "does not answer as a dask scheduler")):
+            t0 = time.monotonic()
+            code = main(["calc", str(src), "-o", str(out), "--scheduler", value,
+                         "--connect-timeout", "3"])
+            took = time.monotonic() - t0
+            err = capsys.readouterr().err.strip().splitlines()
+            assert code == 2 and not out.exists(), (value, err)
+            assert len(err) == 1 and "--scheduler" in err[0] and says in err[0], err
+            assert took < 3 + 5, (value, took)      # the timeout and start-up
+    finally:
+        server.close()
+
+
+def test_cluster_options_need_a_batch_and_dask(tmp_path, capsys, monkeypatch):
+    """--scheduler without a CSV, with --workers, a bad --workers or --connect-timeout:
+    one line, exit 2; without dask installed the line names the extra."""
+    src = calc_cases(tmp_path / "c.csv", 3)
+    one = ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa",
+           "--load", "1kN"]
+    for argv, says in (([*one, "--scheduler", "tcp://127.0.0.1:1"], "FILE.csv"),
+                       (["calc", str(src), "--scheduler", "tcp://127.0.0.1:1",
+                         "--workers", "2"], "give one"),
+                       (["calc", str(src), "--workers", "0"], ">= 1"),
+                       (["calc", str(src), "--scheduler", "tcp://127.0.0.1:1",
+                         "--connect-timeout", "-1"], "> 0")):
+        assert main(argv) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and says in err[0], err
+    monkeypatch.setitem(sys.modules, "dask.distributed", None)
+    assert main(["calc", str(src), "--scheduler", "tcp://127.0.0.1:1"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "linecontact[cluster]" in err[0], err
+
+
+def test_json_header_does_not_name_the_cluster(tmp_path):
+    """The header's command is what was computed: the cluster's options (any spelling
+    argparse takes) are left out, so the bytes are the serial batch's."""
+    from linecontact.calc.cli import _without_cluster_options
+
+    argv = ["calc", "f.csv", "--scheduler", "tcp://h:1", "--json", "--sched=tcp://h:1",
+            "--workers", "2", "--connect-timeout", "5", "--si"]
+    assert _without_cluster_options(argv) == ["calc", "f.csv", "--json", "--si"]
+
+
+@pytest.mark.slow
+def test_issue_sizes_on_cluster(tmp_path, scheduler):
+    """The issue's sizes: a 10 000-row calc batch and a 1 000-row bearing batch through
+    the scheduler and two workers equal the serial outputs byte for byte (minutes on
+    two cores; tools/benchmarks/results/cluster_batch.txt has a recorded run)."""
+    (serial, s_code), (spread, c_code) = _both(
+        tmp_path, ["calc", str(calc_cases(tmp_path / "c.csv", 10000))], scheduler)
+    assert serial == spread and s_code == c_code
+    (serial, s_code), (spread, c_code) = _both(
+        tmp_path, ["bearing", str(bearing_cases(tmp_path / "b.csv", 1000)), *BEARING],
+        scheduler)
+    assert serial == spread and s_code == c_code

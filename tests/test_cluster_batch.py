@@ -8,7 +8,6 @@ separately on 127.0.0.1 (the issue's setting), importing this checkout's linecon
 (PYTHONPATH), as a user's workers import the same installed code.
 """
 import os
-import random
 import socket
 import subprocess
 import sys
@@ -21,11 +20,12 @@ import pytest
 pytest.importorskip("distributed")
 
 from linecontact.calc.cli import main  # noqa: E402
+# the cases: a calc batch with plain, crowned and refused rows; the bearing's
+# tolerance Monte Carlo of docs/cluster.md (one of the benchmark's, the same rows)
+from tools.benchmarks.bench_cluster_batch import (BEARING, bearing_cases,  # noqa: E402
+                                                  calc_cases)
 
 REPO = Path(__file__).resolve().parents[1]
-
-BEARING = ["--rollers", "14", "--pitch-diameter", "70mm", "--length", "11mm",
-           "--modulus", "210GPa", "--poisson", "0.3", "--profile", "iso16281"]
 
 
 def _free_port():
@@ -74,35 +74,6 @@ def scheduler(tmp_path_factory):
             log.close()
 
 
-def calc_cases(path, n, seed=1):
-    """n rows: distinct rollers, a third profiled (crown radius), every 17th refused
-    (a negative load), one with a unit in a sweep: the rules' refusals among them."""
-    rnd = random.Random(seed)
-    lines = ["name,radius,length,estar,load,crown_radius"]
-    for i in range(n):
-        crown = "" if i % 3 else f"{rnd.uniform(200, 800):.1f}mm"
-        load = "-1kN" if i % 17 == 0 else (
-            "1kN:2kN:3" if i == 5 else f"{rnd.uniform(0.1, 20):.3f}kN")
-        lines.append(f"r{i},{rnd.uniform(3, 8):.4f}mm,{rnd.uniform(5, 20):.3f}mm,"
-                     f"{rnd.uniform(100, 230):.1f}GPa,{load},{crown}")
-    path.write_text("\n".join(lines) + "\n")
-    return path
-
-
-def bearing_cases(path, n, seed=35):
-    """A tolerance Monte Carlo of one bearing (docs/cluster.md): clearance, roller
-    diameter, misalignment and load drawn per row; one row refused (a clearance of
-    the wrong sign would be legal: a roller diameter of 0 is not)."""
-    rnd = random.Random(seed)
-    lines = ["case,clearance,roller_diameter,misalignment,radial_load"]
-    for i in range(n):
-        d = "0mm" if i == 3 else f"{rnd.gauss(11, 0.001):.5f}mm"
-        lines.append(f"{i},{rnd.gauss(20, 5):.2f}um,{d},{rnd.gauss(0.5, 0.2):.3f}mrad,"
-                     f"{rnd.uniform(8, 12):.3f}kN")
-    path.write_text("\n".join(lines) + "\n")
-    return path
-
-
 def _both(tmp_path, argv, scheduler, name="out"):
     """(serial bytes, status), (cluster bytes, status) of one command line, each
     written to the same output name (the JSON header records it)."""
@@ -116,11 +87,12 @@ def _both(tmp_path, argv, scheduler, name="out"):
     return runs
 
 
-@pytest.mark.parametrize("flags", [[], ["--json"], ["--model", "all", "--si"]])
-def test_calc_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler, flags):
-    """A few hundred rows, mixed plain and profiled, some refused: the same bytes
-    (CSV, JSON with its header's model list, every model's columns), the same status."""
-    src = calc_cases(tmp_path / "cases.csv", 300)
+@pytest.mark.parametrize("flags, rows", [([], 300), (["--json"], 300),
+                                         (["--model", "all", "--si"], 100)])
+def test_calc_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler, flags, rows):
+    """Hundreds of rows, mixed plain and crowned, some refused: the same bytes (CSV,
+    JSON with its header's model list, every model's columns), the same status."""
+    src = calc_cases(tmp_path / "cases.csv", rows)
     (serial, s_code), (spread, c_code) = _both(tmp_path, ["calc", str(src), *flags],
                                                scheduler)
     assert s_code == c_code == 2          # the refused rows
@@ -129,9 +101,9 @@ def test_calc_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler, flags):
 
 def test_bearing_batch_on_cluster_is_the_serial_batch(tmp_path, scheduler):
     """Tens of rows of a bearing's tolerance Monte Carlo (ISO 16281 profile, a slice
-    model per row): the same bytes and status, CSV and JSON."""
-    src = bearing_cases(tmp_path / "mc.csv", 24)
-    for flags in ([], ["--json"]):
+    model per row; one refused): the same bytes and status, CSV and JSON."""
+    for rows, flags in ((16, []), (6, ["--json"])):
+        src = bearing_cases(tmp_path / "mc.csv", rows)
         (serial, s_code), (spread, c_code) = _both(
             tmp_path, ["bearing", str(src), *BEARING, *flags], scheduler)
         assert s_code == c_code == 2      # the row with a roller diameter of 0
@@ -205,10 +177,12 @@ def test_a_worker_with_other_code_stops_the_batch(tmp_path, scheduler, monkeypat
 
 
 class _NotDask:
-    """A TCP server that accepts and answers like a web server, then holds the
-    connection (the issue's HTTP port that held a client for 330 s)."""
+    """A TCP server that accepts, answers like a web server (or says nothing, `reply`
+    None) and holds the connection (the issue's HTTP port that held a client for
+    330 s)."""
 
-    def __init__(self):
+    def __init__(self, reply=b"HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello"):
+        self.reply = reply
         self.sock = socket.socket()
         self.sock.bind(("127.0.0.1", 0))
         self.sock.listen(8)
@@ -224,7 +198,8 @@ class _NotDask:
                 return
             self.conns.append(c)
             try:
-                c.sendall(b"HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello")
+                if self.reply:
+                    c.sendall(self.reply)
             except OSError:
                 pass
 
@@ -237,17 +212,18 @@ class _NotDask:
 def test_bad_scheduler_is_one_line_and_exit_2(tmp_path, capsys):
     """Malformed, empty, a web address, a dead port, a server that is not dask: one
     line naming --scheduler, exit 2, nothing written, within the connect timeout
-    (3 s here; a dead port at once)."""
+    (3 s here; a dead port at once; a silent server after the 3 s)."""
     src = calc_cases(tmp_path / "c.csv", 5)
     out = tmp_path / "o.csv"
-    server = _NotDask()
+    server, silent = _NotDask(), _NotDask(reply=None)
     dead = _free_port()
     try:
         for value, says in (("tcp://127.0.0.1", "HOST:PORT"), ("", "empty"),
                             ("http://127.0.0.1:8787", "web address"),
                             (f"127.0.0.1:{dead}", "nothing listens"),
                             (f"tcp://127.0.0.1:{server.port}",
-                             "does not answer as a dask scheduler")):
+                             "does not answer as a dask scheduler"),
+                            (f"127.0.0.1:{silent.port}", "within 3 s")):
             t0 = time.monotonic()
             code = main(["calc", str(src), "-o", str(out), "--scheduler", value,
                          "--connect-timeout", "3"])
@@ -258,6 +234,7 @@ def test_bad_scheduler_is_one_line_and_exit_2(tmp_path, capsys):
             assert took < 3 + 5, (value, took)      # the timeout and start-up
     finally:
         server.close()
+        silent.close()
 
 
 def test_cluster_options_need_a_batch_and_dask(tmp_path, capsys, monkeypatch):
@@ -303,3 +280,36 @@ def test_issue_sizes_on_cluster(tmp_path, scheduler):
         tmp_path, ["bearing", str(bearing_cases(tmp_path / "b.csv", 1000)), *BEARING],
         scheduler)
     assert serial == spread and s_code == c_code
+
+
+def test_parts_keep_each_contact_whole(tmp_path):
+    """calc's rows of one contact are solved as one warm-started sweep (equal to a row
+    alone within the solver's tolerance, not bit for bit: split into consecutive
+    ranges, this file's JSON differs in 1e-15 digits), so split_rows keeps each
+    contact's rows in one part; every row is in exactly one part; a subcommand's
+    parts are consecutive ranges."""
+    import numpy as np
+
+    from linecontact.calc.batch import CALC
+    from linecontact.calc.cases import parse_cases
+    from linecontact.calc.batch import read_table
+    from linecontact.calc.compute import group_rows
+    from linecontact.calc.spread import split_rows
+
+    header, body, _ = read_table(calc_cases(tmp_path / "c.csv", 300))
+    names = [h.strip().lower() for h in header]
+    cells = {h: [r[j] for r in body] for j, h in enumerate(names) if h != "name"}
+    cases, _, errors = parse_cases(cells, len(body), lambda n: n)
+    parts = split_rows(CALC, cases, errors, 16)
+    assert np.array_equal(np.sort(np.concatenate(parts)), np.arange(300))
+    group = group_rows(cases, errors)[1]
+    shared = np.bincount(group[group >= 0]).argmax()
+    assert (group == shared).sum() > 40          # the roller that runs through the file
+    for g in np.unique(group[group >= 0]):
+        assert sum(np.isin(np.flatnonzero(group == g), p).any() for p in parts) == 1
+    assert len(parts) > 8                        # the rest is still spread
+
+    class Sub:
+        module = None
+    ranges = split_rows(Sub, cases, errors, 4)
+    assert [(r[0], r[-1]) for r in ranges] == [(0, 74), (75, 149), (150, 224), (225, 299)]

@@ -50,24 +50,24 @@ class CommandResults:
         self.models = {}
 
     @classmethod
-    def merged(cls, parts, errors, cases):
-        """The results of a whole batch from those of its consecutive row ranges
-        (:meth:`Command.evaluate` on each alone, the batch on a cluster): rows and
-        errors concatenated, the models in the order of their first row, as a
-        serial run registers them. `errors`, the whole batch's, is updated in place."""
-        lengths = [len(p.errors) for p in parts]
-        if sum(lengths) != len(errors):
-            raise ValueError(f"CommandResults.merged: the parts hold {sum(lengths)} "
-                             f"rows, the batch {len(errors)}")
+    def merged(cls, parts, rows, errors, cases):
+        """The results of a whole batch from those of parts of its rows
+        (:meth:`Command.evaluate` on each alone, the batch on a cluster; a row's
+        solution depends on that row alone): `rows` the rows each part holds, in
+        order, consecutive ranges in row order (so that the models come in the order
+        of their first row, as a serial run registers them). `errors`, the whole
+        batch's, is updated in place."""
+        if sum(len(r) for r in rows) != len(errors):
+            raise ValueError(f"CommandResults.merged: the parts hold "
+                             f"{sum(len(r) for r in rows)} rows, the batch {len(errors)}")
         out = cls(len(errors), errors, cases)
-        a = 0
-        for p, m in zip(parts, lengths):
-            errors[a:a + m] = p.errors
-            out.objects[a:a + m] = p.objects
-            out.rows[a:a + m] = p.rows
+        for p, r in zip(parts, rows):
+            for k, i in enumerate(list(r)):
+                errors[i] = p.errors[k]
+                out.objects[i] = p.objects[k]
+                out.rows[i] = p.rows[k]
             for mid, entry in p.models.items():
                 out.models.setdefault(mid, entry)
-            a += m
         return out
 
 

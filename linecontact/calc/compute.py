@@ -1006,23 +1006,29 @@ class Unmergeable(ValueError):
     a way whose whole-batch value cannot be told from the parts (a message says how)."""
 
 
-def merge_results(parts, errors, cases, label=None):
-    """The :class:`Results` of a whole batch from those of its consecutive row ranges,
-    each computed by :func:`compute` on those rows alone (the batch on a cluster,
-    :mod:`linecontact.calc.spread`); the same as :func:`compute` on all the rows.
+def merge_results(parts, rows, errors, cases, label=None):
+    """The :class:`Results` of a whole batch from those of parts of its rows, each
+    computed by :func:`compute` on those rows alone (the batch on a cluster,
+    :mod:`linecontact.calc.spread`); the same as :func:`compute` on all the rows when
+    no part splits a group of :func:`group_rows` (a contact's rows are solved as one
+    sweep, each load warm-started from its neighbour's: equal to a row alone within
+    the solver's tolerance, not bit for bit).
 
-    Every value of a row depends on that row alone; what the whole batch decides is
-    taken from the parts: the fields of each set (a field some part lacks is none
+    Every value of a group depends on that group alone; what the whole batch decides
+    is taken from the parts: the fields of each set (a field some part lacks is none
     there, as :func:`compute` fills it), the set's id (from the part whose group comes
     first in the whole batch's order of the groups), the models (in that order: the
-    JSON header's), whether any row is whole or a single contact, the
-    features' columns (in the features' order, from `cases`, the whole batch's), the
-    features' blocks (their rows concatenated).
+    JSON header's), whether any row is whole or a single contact, the features'
+    columns (in the features' order, from `cases`, the whole batch's), the features'
+    blocks (their rows put in place).
 
     Parameters
     ----------
     parts : list of Results
-        In row order; ``errors`` of each its rows' errors, ``cases`` unused.
+        ``errors`` of each its rows' errors, ``cases`` unused.
+    rows : list of int arrays
+        The rows of the batch that each part holds, in the part's order; together
+        every row once.
     errors : list of str
         The whole batch's row errors: updated in place from the parts' (a model's
         unexpected exception), and the merged result's ``errors``.
@@ -1045,35 +1051,38 @@ def merge_results(parts, errors, cases, label=None):
     from .feature import option_name
 
     n = len(errors)
-    lengths = [len(p.errors) for p in parts]
-    if sum(lengths) != n:
-        raise ValueError(f"merge_results: the parts hold {sum(lengths)} rows, the batch {n}")
+    rows = [np.asarray(r, dtype=np.intp) for r in rows]
+    if sum(r.size for r in rows) != n or any(len(p.errors) != r.size
+                                             for p, r in zip(parts, rows)):
+        raise ValueError(f"merge_results: the parts hold {sum(r.size for r in rows)} "
+                         f"rows, the batch {n}")
     # the whole batch's order of the groups (as compute evaluates them): a row's key
-    key, _, _ = _group_key(cases, errors, [(f, st) for f, st in cases.active()
-                                           if getattr(st, "parts", None) is not None])
-    offsets = np.cumsum([0] + lengths[:-1]).tolist()
+    key = group_rows(cases, errors)[0]
 
-    def rank(row, offset):
+    def rank(row, part_rows):
         """Where the group of a part's row comes in the whole batch's order."""
-        return tuple(key[offset + row].tolist())
+        return tuple(key[part_rows[row]].tolist())
 
-    for p, a, m in zip(parts, offsets, lengths):
-        errors[a:a + m] = p.errors
+    for p, r in zip(parts, rows):
+        for i, e in zip(r.tolist(), p.errors):
+            errors[i] = e
     n_sets = {len(p.sets) for p in parts}
     if len(n_sets) != 1:
-        raise Unmergeable(f"the row ranges chose {sorted(n_sets)} model sets")
+        raise Unmergeable(f"the parts chose {sorted(n_sets)} model sets")
     if len({p.deviation for p in parts}) != 1:
-        raise Unmergeable("the row ranges differ on the deviation column")
-    out = Results(0, n_sets.pop(), errors, cases, label or option_name)
+        raise Unmergeable("the parts differ on the deviation column")
+    out = Results(n, n_sets.pop(), errors, cases, label or option_name)
     for j, s in enumerate(out.sets):
         ps = [p.sets[j] for p in parts]
-        names = list(dict.fromkeys(k for q in ps for k in q["fields"]))
-        s["fields"] = {k: np.concatenate([q["fields"].get(k, np.full(m, np.nan))
-                                          for q, m in zip(ps, lengths)]) for k in names}
-        for k in ("note", "flags", "label", "solution"):
-            s[k] = np.concatenate([np.asarray(q[k], dtype=object) for q in ps])
+        for q, r in zip(ps, rows):
+            for k, arr in q["fields"].items():
+                if k not in s["fields"]:
+                    s["fields"][k] = np.full(n, np.nan)
+                s["fields"][k][r] = arr
+            for k in ("note", "flags", "label", "solution"):
+                s[k][r] = q[k]
         # named by the first group of the whole batch that evaluated it
-        named = sorted(((rank(q["named_at"], a), q["id"]) for q, a in zip(ps, offsets)
+        named = sorted(((rank(q["named_at"], r), q["id"]) for q, r in zip(ps, rows)
                         if q.get("named")), key=lambda t: t[0])
         s["id"] = named[0][1] if named else ps[0]["id"]
         if named:
@@ -1084,11 +1093,11 @@ def merge_results(parts, errors, cases, label=None):
                 s[k] = found
     # the models in the order the whole batch's groups registered them
     first = {}
-    for p, a in zip(parts, offsets):
+    for p, r in zip(parts, rows):
         for mid, (row, j) in p.origins.items():
-            r = (rank(row, a), j)
-            if mid not in first or r < first[mid][0]:
-                first[mid] = (r, p.models[mid])
+            at = (rank(row, r), j)
+            if mid not in first or at < first[mid][0]:
+                first[mid] = (at, p.models[mid])
     for mid in sorted(first, key=lambda m: first[m][0]):
         out.models[mid] = first[mid][1]
     out.whole = any(p.whole for p in parts)
@@ -1106,13 +1115,35 @@ def merge_results(parts, errors, cases, label=None):
             out.extra += names
     out.features = [f for f, st in active if np.any(st.rows)]
     keys = list(dict.fromkeys(b.key for p in parts for b in p.blocks))
-    for key in keys:
-        blocks = [next((b for b in p.blocks if b.key == key), None) for p in parts]
+    for bkey in keys:
+        blocks = [next((b for b in p.blocks if b.key == bkey), None) for p in parts]
         merged = copy.copy(next(b for b in blocks if b is not None))
-        merged.rows, merged.json_rows = [], []
-        for b, m in zip(blocks, lengths):
-            merged.rows += list(b.rows) if b is not None else [None] * m
-            merged.json_rows += (list(b.json_rows) if b is not None and b.json_rows
-                                 is not None else [None] * m)
+        merged.rows, merged.json_rows = [None] * n, [None] * n
+        for b, r in zip(blocks, rows):
+            if b is None:
+                continue
+            for k, i in enumerate(r.tolist()):
+                merged.rows[i] = b.rows[k]
+                if b.json_rows is not None:
+                    merged.json_rows[i] = b.json_rows[k]
         out.blocks.append(merged)
     return out
+
+
+def group_rows(cases, errors):
+    """(key, group): per row the values that make one contact (as :func:`compute`
+    groups the rows: a group's loads are solved as one sweep) and the number of its
+    group (groups numbered in the order of their first row; -1 for a row with an
+    error). A batch split into parts that keep each group whole computes the same
+    values as the whole (:func:`merge_results`)."""
+    composed = [(f, st) for f, st in cases.active()
+                if getattr(st, "parts", None) is not None]
+    key, _, ok = _group_key(cases, errors, composed)
+    group = np.full(len(errors), -1, dtype=np.intp)
+    good = np.flatnonzero(ok)
+    if good.size:
+        _, first, inverse = np.unique(key[good], axis=0, return_index=True,
+                                      return_inverse=True)
+        order = np.argsort(np.argsort(first, kind="stable"), kind="stable")
+        group[good] = order[np.ravel(inverse)]
+    return key, group

@@ -5,15 +5,17 @@ client.
 
 The batch reads the file and makes every whole-file check and every row's input
 check in this process, exactly as without a cluster (:func:`~linecontact.calc.batch.
-run_batch`); only the evaluation goes to the workers. The rows are split into
-consecutive ranges (about :data:`RANGES_PER_WORKER` per worker, so that a slow
-range does not hold the others up and the progress bar moves); each range's cells,
-as the batch filled them from the options, and the rows' errors travel to a worker,
-which reads them by the same rules, skips the rows already refused and evaluates the
-others (:func:`_evaluate_rows`). Every value of a row depends on that row alone, so
-the ranges' results joined in row order (:func:`linecontact.calc.compute.
-merge_results`, :meth:`linecontact.calc.command.CommandResults.merged`) are the
-serial batch's, and the output is written by the same code: the same bytes.
+run_batch`); only the evaluation goes to the workers. The rows are split into parts of
+about equal size (about :data:`RANGES_PER_WORKER` per worker, so that a slow part does
+not hold the others up and the progress bar moves; :func:`split_rows`): a
+subcommand's in consecutive ranges, calc's so that the rows of one contact stay
+together (they are solved as one sweep, each load warm-started from its neighbour's).
+Each part's cells, as the batch filled them from the options, and its rows' errors
+travel to a worker, which reads them by the same rules, skips the rows already refused
+and evaluates the others (:func:`_evaluate_rows`). What a row gets depends on its part
+alone, so the parts' results put back in place (:func:`linecontact.calc.compute.
+merge_results`, :meth:`linecontact.calc.command.CommandResults.merged`) are the serial
+batch's, and the output is written by the same code: the same bytes.
 
 Each task first checks that its worker runs the same linecontact code as this process
 (:func:`linecontact.calc.cluster.linecontact_fingerprint`; a worker that joins later is
@@ -26,9 +28,9 @@ import sys
 
 from .cluster import ClusterError, connect, linecontact_fingerprint
 
-__all__ = ["evaluate_on_cluster", "RANGES_PER_WORKER", "WorkerMismatch"]
+__all__ = ["evaluate_on_cluster", "split_rows", "RANGES_PER_WORKER", "WorkerMismatch"]
 
-#: Row ranges per worker of the cluster (at least one row per range).
+#: Parts of the rows per worker of the cluster (at least one row per part).
 RANGES_PER_WORKER = 8
 
 
@@ -129,15 +131,20 @@ def evaluate_on_cluster(table, cells, errors, cases, *, model=None, specs=None,
     opened = (contextlib.nullcontext(client) if client is not None else
               connect(scheduler, workers, connect_timeout))
     with opened as cl:
-        parts = _run_ranges(cl, table, cells, errors, model, specs, progress,
-                            scheduler or "the client's scheduler")
+        try:
+            nworkers = len(cl.scheduler_info().get("workers", {}))
+        except Exception:  # noqa: BLE001 - the count only sizes the parts
+            nworkers = 1
+        rows = split_rows(table, cases, errors, max(1, nworkers) * RANGES_PER_WORKER)
+        parts = _run_parts(cl, table, cells, errors, rows, model, specs, progress,
+                           scheduler or "the client's scheduler")
     if hasattr(table, "module"):
         from .command import CommandResults
-        return CommandResults.merged(parts, errors, cases)
+        return CommandResults.merged(parts, rows, errors, cases)
     from .compute import Unmergeable, merge_results
 
     try:
-        return merge_results(parts, errors, cases, label)
+        return merge_results(parts, rows, errors, cases, label)
     except Unmergeable as exc:
         from . import render
         print(f"{render.PROG} {table.name}: note: the row ranges computed on the cluster "
@@ -150,27 +157,58 @@ def evaluate_on_cluster(table, cells, errors, cases, *, model=None, specs=None,
                               progress)
 
 
-def _run_ranges(client, table, cells, errors, model, specs, progress, where):
-    """Submit the row ranges, collect their results in row order (progress as they
-    finish); one-line ClusterErrors for the faults the user fixes."""
+def split_rows(table, cases, errors, k):
+    """The rows of the batch in at most `k` parts of about equal size (arrays of row
+    numbers, each ascending), for the workers: a subcommand's in consecutive ranges
+    (each row is solved alone); calc's so that the rows of one contact stay in one
+    part (:func:`linecontact.calc.compute.group_rows`: they are solved as one sweep),
+    the contacts taken in the order of their first row."""
+    import numpy as np
+
+    n = len(errors)
+    k = max(1, min(n, k))
+    if hasattr(table, "module"):
+        bounds = [n * j // k for j in range(k + 1)]
+        return [np.arange(a, b) for a, b in zip(bounds[:-1], bounds[1:])]
+    from .compute import group_rows
+
+    unit = group_rows(cases, errors)[1]
+    bad = unit < 0                          # a refused row: a unit of its own
+    unit[bad] = unit.max(initial=-1) + 1 + np.arange(int(bad.sum()))
+    _, first, inverse = np.unique(unit, return_index=True, return_inverse=True)
+    inverse = np.ravel(inverse)
+    sizes = np.bincount(inverse)
+    order = np.argsort(first, kind="stable")
+    start = np.empty_like(sizes)
+    start[order] = np.cumsum(sizes[order]) - sizes[order]
+    part = np.minimum(k - 1, start * k // n)[inverse]
+    return [r for r in (np.flatnonzero(part == j) for j in range(k)) if r.size]
+
+
+def _take(col, r):
+    """The cells of rows `r` (ascending) of a column."""
+    if r[-1] - r[0] + 1 == r.size:
+        return col[int(r[0]):int(r[-1]) + 1]
+    return [col[i] for i in r.tolist()]
+
+
+def _run_parts(client, table, cells, errors, rows, model, specs, progress, where):
+    """Submit the parts (row numbers `rows`), collect their results in order
+    (progress as they finish); one-line ClusterErrors for the faults the user
+    fixes."""
     from dask.distributed import as_completed
 
     n = len(errors)
-    try:
-        nworkers = len(client.scheduler_info().get("workers", {}))
-    except Exception:  # noqa: BLE001 - the count only sizes the ranges
-        nworkers = 1
-    k = max(1, min(n, max(1, nworkers) * RANGES_PER_WORKER))
-    bounds = [n * j // k for j in range(k + 1)]
     expected = linecontact_fingerprint()
     futures, done = [], 0
     try:
-        for a, b in zip(bounds[:-1], bounds[1:]):
+        for r in rows:
             futures.append(client.submit(
-                _evaluate_rows, table.name, {name: col[a:b] for name, col in cells.items()},
-                errors[a:b], model, specs, expected, pure=False))
+                _evaluate_rows, table.name, {name: _take(col, r) for name, col in
+                                             cells.items()},
+                [errors[i] for i in r.tolist()], model, specs, expected, pure=False))
         index = {f.key: j for j, f in enumerate(futures)}
-        parts = [None] * k
+        parts = [None] * len(futures)
         for fut in as_completed(futures):
             j = index[fut.key]
             try:
@@ -179,7 +217,7 @@ def _run_ranges(client, table, cells, errors, model, specs, progress, where):
                 client.cancel(futures)
                 raise ClusterError(f"batch stopped, nothing written: {exc}",
                                    exit_code=1) from None
-            done += bounds[j + 1] - bounds[j]
+            done += rows[j].size
             if progress is not None:
                 progress(done)
             fut.release()

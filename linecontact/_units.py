@@ -9,8 +9,16 @@ a unit, and nothing more*:
   exponent (``5``, ``0.2``, ``.5``, ``2.1e11``); a decimal comma (``1,5mm``), thousands
   separators, ``inf``, ``nan``, hexadecimal and non-ASCII digits are refused;
 - the unit is ONE unit name, letters only, with or without a space before it (``mm``,
-  ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``); products, quotients,
-  powers, sums and any other expression are refused, never evaluated. The common
+  ``GPa``, ``kN``, ``lbf``, ``in``, ``psi``, ``um``, ``µm``, ``°``), or one of the
+  compound names of :data:`BUILTIN_UNITS` as people write them (a moment ``N m``,
+  ``N·m``, ``N*m``, ``Nm``; a surface energy ``mJ/m^2``, ``mJ/m2``, ``mJ/m²``); any
+  other product, quotient, power, sum or expression is refused, never evaluated;
+- typography is read as what it means (:func:`normalize`): the Unicode minus sign
+  (U+2212) as ``-``, the no-break and thin spaces (U+00A0, U+2009, U+202F, U+2007) as
+  a space, the middle dots (U+00B7, U+22C5) as ``*``, the superscript two as ``^2``;
+- unit names are case-sensitive (``MM`` is not ``mm``): a name that matches a unit
+  of the right kind apart from letter case is refused with a "did you mean", never
+  read as some other unit (pint would read ``MM`` as megamolar). The common
   names (:data:`BUILTIN_UNITS`: SI prefixes of m, N, Pa, and inch-pound units) have
   their exact factors here; for any other name pint (https://pint.readthedocs.io) is
   asked only for the size of that one unit in SI, once per distinct unit, so a wrong
@@ -33,6 +41,7 @@ it as one line and exits with status 2.
 
 from __future__ import annotations
 
+import math
 import re
 import sys
 
@@ -44,6 +53,9 @@ __all__ = [
     "parse_column",
     "parse_sweep",
     "parse_bool",
+    "engineering_unit",
+    "display_unit",
+    "format_numbers",
 ]
 
 #: Physical kinds the CLI understands: pint dimensionality, SI unit, examples for messages.
@@ -52,10 +64,11 @@ DIMENSIONS = {
     "force": ("[force]", "N", "1kN, 200 lbf, 1000"),
     "pressure": ("[pressure]", "Pa", "210GPa, 30e6 psi, 2.1e11"),
     "dimensionless": ("", "", "0.3"),
-    "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.0005"),
+    "count": ("", "", "3, 14, 40"),
+    "angle": ("[]", "rad", "0.5mrad, 0.03 deg, 0.03°, 0.0005"),
     "time": ("[time]", "s", "10s, 5min, 2h, 100"),
     "surface_energy": ("[mass] / [time] ** 2", "J/m^2", "50mJ/m^2, 0.05 J/m^2, 0.05"),
-    "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12Nm, 1.5kNm, 12"),
+    "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "12 N m, 1.5kNm, 12"),
     "angular_speed": ("1 / [time]", "rad/s", "1500rpm, 157rad/s, 157"),
     "kinematic_viscosity": ("[length] ** 2 / [time]", "m^2/s", "20.7cSt, 2.07e-5"),
     "density": ("[mass] / [length] ** 3", "kg/m^3", "860kg/m^3, 0.86g/cm^3, 860"),
@@ -68,16 +81,38 @@ DIMENSIONS = {
 _BUILTIN_ONLY = {"temperature_difference", "angular_speed"}
 
 #: A number and an optional single unit name; ASCII digits only (``re.ASCII``).
+_NAME = r"[A-Za-z\u00b5\u03bc\u039c\u00b0]+"
 QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"
-    r"\s*(?P<unit>[A-Za-z\u00b5\u03bc\u039c]+(?:/[A-Za-z]+(?:\^[0-9])?)?)?\s*$",
+    rf"\s*(?P<unit>{_NAME}(?:(?:\s*\*\s*|\s+){_NAME})*(?:/[A-Za-z]+(?:\^?[0-9])?)?)?\s*$",
     re.ASCII,
 )
 # re.ASCII: \s and the class above never match other scripts' digits or spaces; the
 # micro sign \u00b5 and the Greek mu \u03bc are listed explicitly (for "5 µm"), and the
 # capital \u039c so that "5 ΜM" (µm typed in capitals) gets its "did you mean".
-# A compound name (``mJ/m^2``) is matched as ONE name and converted only if it is a
-# built-in unit (the surface energies of BUILTIN_UNITS); it is never handed to pint.
+# the degree sign \u00b0 too ("0.05°"). A compound name (``mJ/m^2``, ``N m``, ``N*m``) is
+# matched as ONE name and converted only if its canonical spelling (:func:`_canonical`)
+# is a built-in unit (the moments and surface energies of BUILTIN_UNITS); it is never
+# handed to pint.
+
+#: Typography read as what it means (:func:`normalize`): minus sign, no-break, thin
+#: and figure spaces, middle dots as a product, superscript two.
+_TYPOGRAPHY = str.maketrans({"\u2212": "-", "\u00a0": " ", "\u2009": " ", "\u202f": " ",
+                             "\u2007": " ", "\u00b7": "*", "\u22c5": "*", "\u00b2": "^2"})
+
+
+def normalize(text):
+    """`text` with its typography read as ASCII: the Unicode minus (U+2212) as ``-``,
+    the no-break, thin, narrow and figure spaces as a space, the middle dots (U+00B7,
+    U+22C5) as ``*``, ``²`` as ``^2``; anything else unchanged (other scripts' digits
+    and spaces stay refused).
+
+    Examples
+    --------
+    >>> normalize("\u22125\u00a0mm"), normalize("20 N\u00b7m"), normalize("50 mJ/m\u00b2")
+    ('-5 mm', '20 N*m', '50 mJ/m^2')
+    """
+    return text.translate(_TYPOGRAPHY)
 
 #: Smallest positive normal float: below it a value has lost precision (subnormal).
 _TINY = sys.float_info.min
@@ -129,7 +164,7 @@ def _valid_text(kind, positive, bounds):
     dim, si, examples = DIMENSIONS[kind]
     what = _a(kind)
     if bounds:
-        return bounds[1]
+        return f"an integer, {bounds[1]}" if kind == "count" else bounds[1]
     if positive:
         return f"{what} > 0 (e.g. {examples})"
     return f"{what} (e.g. {examples})"
@@ -139,6 +174,167 @@ _PREFIXES = {"p": 1e-12, "n": 1e-9, "u": 1e-6, "\u00b5": 1e-6, "\u03bc": 1e-6, "
              "c": 1e-2, "d": 1e-1, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9, "T": 1e12}
 _INCH = 0.0254  # m, exact by definition (1959)
 _LBF = 4.4482216152605  # N, exact: 0.45359237 kg x 9.80665 m/s^2
+
+#: Prefixes offered, largest first (their factors are :data:`_PREFIXES`, the one home
+#: of the SI prefixes); shown with the micro sign.
+_ENGINEERING = ("T", "G", "M", "k", "", "m", "u", "n", "p")
+_SHOWN = {"u": "\u00b5"}
+#: Units that take a prefix (the first symbol of a compound such as N/m or N m).
+_SI_SYMBOLS = ("m", "N", "Pa", "J", "s", "rad")
+#: Units shown without the prefixes above 1 (no km, ks, krad).
+_NOT_LARGER = ("m", "s", "rad")
+
+
+def engineering_unit(values, unit):
+    """The SI prefix that fits an array's magnitude: the factor and the prefixed unit.
+
+    The prefix puts the largest finite magnitude of `values` in [1, 1000): a force of
+    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus
+    of 6.7e4 Pa in kPa. Lengths, times and angles are not shown above their base unit
+    (no km, ks, krad).
+
+    Parameters
+    ----------
+    values : float or array_like
+        Values in the SI unit `unit` (NaN and zeros ignored) [`unit`].
+    unit : str
+        The SI unit: m, N, Pa, J, s, rad, or a compound whose first symbol is one
+        (``"N/m"``, ``"N m"``); any other unit (``"-"``, ``"HV"``) is returned as is.
+
+    Returns
+    -------
+    factor : float
+        Multiply the SI values by it [-].
+    unit : str
+        The prefixed unit (the micro sign for 1e-6).
+
+    Notes
+    -----
+    Valid for any finite values; the prefixes run from p (1e-12) to T (1e12), the
+    factors :data:`_PREFIXES` of the unit parser (one table). Without a finite
+    non-zero value the unit is returned unprefixed (factor 1).
+
+    Examples
+    --------
+    >>> engineering_unit([0.0, 1.2e-3], "N")
+    (1000.0, 'mN')
+    >>> engineering_unit(6.7e4, "Pa"), engineering_unit(2e3, "N/m")
+    ((0.001, 'kPa'), (0.001, 'kN/m'))
+    >>> engineering_unit(7e-6, "m"), engineering_unit(3.0, "m")
+    ((1000000.0, 'µm'), (1.0, 'm'))
+    """
+    import numpy as np
+
+    first = unit.replace("/", " ").split(" ")[0]
+    if first not in _SI_SYMBOLS:
+        return 1.0, unit
+    v = np.abs(np.asarray(values, dtype=float)).ravel()
+    v = v[np.isfinite(v) & (v > 0)]
+    if v.size == 0:
+        return 1.0, unit
+    top = float(v.max())
+    for p in _ENGINEERING:
+        f = _PREFIXES[p]
+        if f > 1 and first in _NOT_LARGER:
+            continue
+        if top >= f * (1 - 1e-12) or p == _ENGINEERING[-1]:
+            return 1.0 / f, _SHOWN.get(p, p) + unit
+    raise AssertionError("unreachable: the last prefix is always taken")
+
+
+def display_unit(values, si_unit, unit=None, factor=1.0):
+    """The unit a column of values is shown in: the usual one where it reads well,
+    else the SI prefix that fits (a soft contact's force in mN, not 0.0001 kN).
+
+    Parameters
+    ----------
+    values : float or array_like
+        The column in SI [`si_unit`] (NaN ignored).
+    si_unit : str
+        Its SI unit (``"N"``, ``"Pa"``, ``"N/m"``).
+    unit, factor : str, float, optional
+        The usual engineering unit of the column and its factor from SI (``"kN"``,
+        1e-3); default the SI unit.
+
+    Returns
+    -------
+    factor : float
+        Multiply the SI values by it [-].
+    unit : str
+        The unit shown.
+
+    Notes
+    -----
+    The usual unit is kept when the column's largest finite magnitude in it lies in
+    [0.1, 10 000) (read with 4 significant digits without an exponent) or the column
+    has no finite non-zero value; otherwise :func:`engineering_unit` picks the prefix
+    of the SI unit that puts it in [1, 1000).
+
+    Examples
+    --------
+    >>> display_unit([1.2e-3, 3e-4], "N", "kN", 1e-3)
+    (1000.0, 'mN')
+    >>> display_unit([1500.0], "N", "kN", 1e-3), display_unit(2.667e6, "Pa", "GPa", 1e-9)
+    ((0.001, 'kN'), (1e-06, 'MPa'))
+    """
+    import numpy as np
+
+    unit = si_unit if unit is None else unit
+    v = np.abs(np.asarray(values, dtype=float)).ravel()
+    v = v[np.isfinite(v) & (v > 0)]
+    if v.size == 0 or 0.1 <= float(v.max()) * factor < 1e4:
+        return factor, unit
+    if si_unit.replace("/", " ").split(" ")[0] not in _SI_SYMBOLS:
+        return factor, unit  # a unit without prefixes (-, %, HV)
+    f, u = engineering_unit(v, si_unit)
+    if float(v.max()) * f < 1:  # below the smallest prefix (round-off): as usual
+        return factor, unit
+    return f, u
+
+
+#: Round-off: a value below this fraction of its quantity's scale (the largest entry of
+#: its column or matrix) is shown as 0. About 500 units in the last place of a double
+#: (2.2e-16): the error of sums over a few hundred terms, far below 4 significant digits
+#: of any value shown beside it (a sweep spans at most a few decades).
+NOISE = 1e-13
+
+
+def format_numbers(values, digits=4, scale=None):
+    """Values as table cells: `digits` significant digits, '-' for none (NaN, None),
+    and '0' for round-off (below :data:`NOISE` times `scale`).
+
+    Parameters
+    ----------
+    values : array_like
+        The numbers, already in the unit shown.
+    digits : int
+        Significant digits.
+    scale : float, optional
+        The magnitude of the quantity they are parts of (a stiffness matrix's largest
+        entry for its off-diagonal terms); default the largest finite magnitude of
+        `values`, in their unit.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> format_numbers([759.55, -2.96e-17, float("nan")])
+    ['759.5', '0', '-']
+    >>> format_numbers([-2.96e-14], scale=7.6e5), format_numbers([1e-3, 5.0])
+    (['0'], ['0.001', '5'])
+    """
+    import numpy as np
+
+    v = np.array([np.nan if x is None else x for x in np.ravel(values).tolist()], float)
+    if scale is None:
+        finite = np.abs(v[np.isfinite(v)])
+        scale = float(finite.max()) if finite.size else 0.0
+    tiny = NOISE * abs(scale)
+    return ["-" if x != x else "0" if abs(x) <= tiny and x != 0 and math.isfinite(x)
+            else format(x + 0.0, f".{digits}g") for x in v.tolist()]
+
 
 #: Unit names converted without pint: the SI prefixes of m, N and Pa, and the inch-pound
 #: units of engineering drawings, with their exact definitions. Each factor equals
@@ -151,7 +347,8 @@ BUILTIN_UNITS = {
               "lbf": _LBF, "kip": 1000 * _LBF, "kgf": 9.80665},
     "pressure": {**{p + "Pa": f for p, f in _PREFIXES.items()},
                  "psi": _LBF / _INCH**2, "ksi": 1000 * _LBF / _INCH**2, "bar": 1e5},
-    "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180},
+    "angle": {"rad": 1.0, "mrad": 1e-3, "urad": 1e-6, "deg": 3.141592653589793 / 180,
+              "\u00b0": 3.141592653589793 / 180},
     "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0, "h": 3600.0, "d": 86400.0},
     "surface_energy": {"J/m^2": 1.0, "mJ/m^2": 1e-3, "uJ/m^2": 1e-6, "N/m": 1.0,
                        "mN/m": 1e-3},
@@ -164,12 +361,37 @@ BUILTIN_UNITS = {
 #: Built-in names that pint spells otherwise (pint reads 'Nm' as number-metre): the
 #: expression pint gives the same factor for (held by a test).
 PINT_SPELLING = {"Nm": "N*m", "kNm": "kN*m", "Nmm": "N*mm", "MNm": "MN*m"}
+#: The products of unit names people write for the built-in compound names ("N m",
+#: "N*m", "N·m" for "Nm"): factors -> built-in name (:func:`_canonical`).
+_PRODUCTS = {tuple(v.split("*")): k for k, v in PINT_SPELLING.items()}
+
+
+def _canonical(unit):
+    """The built-in spelling of a unit name as typed, or the name itself: a product
+    of names (``N m``, ``N*m``) -> ``Nm`` when it is a built-in moment, else the
+    factors joined by ``*``; a power of the denominator without its caret (``m2``) ->
+    ``m^2``.
+
+    Examples
+    --------
+    >>> _canonical("N m"), _canonical("kN * m"), _canonical("mJ/m2"), _canonical("m m")
+    ('Nm', 'kNm', 'mJ/m^2', 'm*m')
+    """
+    num, slash, den = unit.partition("/")
+    factors = tuple(re.split(r"\s*\*\s*|\s+", num.strip()))
+    num = _PRODUCTS.get(factors, "*".join(factors))
+    if slash:
+        den = re.sub(r"\^?([0-9])$", r"^\1", den)
+    return num + slash + den
 
 
 def _a(kind):
-    """'a length', 'an angle', 'a number' (for 'dimensionless')."""
+    """'a length', 'an angle', 'a number' (for 'dimensionless'), 'an integer' (for
+    'count': rollers, slices)."""
     if kind == "dimensionless":
         return "a number"
+    if kind == "count":
+        return "an integer"
     return f"{'an' if kind[0] in 'aeiou' else 'a'} {kind.replace('_', ' ')}"
 
 
@@ -183,15 +405,25 @@ def _unit_factor(unit, kind):
     if key in _FACTORS:
         return _FACTORS[key]
     dim, si, _ = DIMENSIONS[kind]
-    if kind == "dimensionless":
+    name = _canonical(unit)
+    other = next((k for k, units in BUILTIN_UNITS.items() if name in units), None)
+    if kind in ("dimensionless", "count"):
         result = f"expected a pure number, got the unit {unit!r}"
-    elif unit in BUILTIN_UNITS.get(kind, ()):
-        result = BUILTIN_UNITS[kind][unit]
+    elif name in BUILTIN_UNITS.get(kind, ()):
+        result = BUILTIN_UNITS[kind][name]
+    elif other is not None:  # a built-in unit of another kind: say which, without pint
+        result = f"expected {_a(kind)}, got {_a(other)} ({unit})"
+    elif any(n.casefold() == name.casefold() for n in BUILTIN_UNITS.get(kind, ())):
+        # 'MM', 'KN': a unit of this kind in the wrong case, never read as another
+        # unit (pint reads 'MM' as megamolar): unit names are case-sensitive
+        result = (f"unknown unit {unit!r} (unit names are case-sensitive: "
+                  + _did_you_mean(unit, kind)[2:])
     elif kind in _BUILTIN_ONLY:
         result = (f"unknown unit {unit!r} for {_a(kind)} (the units understood are "
                   f"{', '.join(BUILTIN_UNITS[kind])})")
-    elif "/" in unit:
-        names = [n for units in BUILTIN_UNITS.values() for n in units if "/" in n]
+    elif "/" in name or "*" in name:
+        names = [n for units in BUILTIN_UNITS.values() for n in units
+                 if "/" in n or n in PINT_SPELLING]
         result = (f"unknown unit {unit!r} (the compound names understood are "
                   f"{', '.join(names)})")
     else:
@@ -205,7 +437,7 @@ def _unit_factor(unit, kind):
                 result = f"expected {_a(kind)}, got {_describe_unit(u)}"
             else:
                 result = float(ureg.Quantity(1.0, u).to(si).magnitude)
-    if isinstance(result, str):
+    if isinstance(result, str) and "did you mean" not in result:
         result += _did_you_mean(unit, kind)
     _FACTORS[key] = result
     return result
@@ -247,7 +479,7 @@ def _describe_unit(u):
 
 def _format_reason(text):
     """Why a string is not 'a number with a unit': the commonest mistakes by name."""
-    s = text.strip()
+    s = normalize(text).strip()
     if not s:
         return "empty value"
     if "," in s:
@@ -284,7 +516,9 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
     text : str or float
         ``"5mm"``, ``"0.2 in"``, ``"210 GPa"``, or a bare number (SI).
     kind : str
-        One of :data:`DIMENSIONS`: ``length``, ``force``, ``pressure``, ``dimensionless``.
+        One of :data:`DIMENSIONS`: ``length``, ``force``, ``pressure``, ``dimensionless``,
+        ``count`` (a whole number: rollers, slices; a fraction is refused, never
+        truncated), ...
     positive : bool
         Require a value > 0 (all lengths, forces and moduli of this problem).
     bounds : tuple of (callable, str), optional
@@ -329,6 +563,7 @@ def parse_quantity(parameter, text, kind, *, positive=True, bounds=None):
 
 def _parse_one(text, kind):
     """(SI value, None) or (None, reason) for one string: the rule of the module."""
+    text = normalize(text)
     m = QUANTITY.match(text)
     if m is None:
         return None, _format_reason(text)
@@ -352,6 +587,8 @@ def _parse_one(text, kind):
 def _range_reason(value, kind, positive, bounds):
     si = DIMENSIONS[kind][1]
     unit = f" {si}" if si else ""
+    if kind == "count" and value != int(value):
+        return f"{value:g} is not an integer (a count is never rounded)"
     if bounds is not None:
         inside, _ = bounds
         if not inside(value):
@@ -430,6 +667,9 @@ def parse_column(parameter, cells, kind, *, positive=True, bounds=None):
         ok &= np.asarray(bounds[0](values), dtype=bool)
     elif positive:
         ok &= values > 0
+    if kind == "count":  # a fraction gets its reason from the slow path below
+        with np.errstate(invalid="ignore"):
+            ok &= values == np.round(values)
     for i in np.flatnonzero(~ok):
         if errors[i]:
             continue
@@ -543,7 +783,9 @@ def _match_column(parameter, cells, valid, errors):
     import numpy as np
 
     n = len(cells)
-    matches = list(map(QUANTITY.match, cells))      # one C-level pass
+    # one C-level pass (typography read as ASCII first, as parse_quantity does)
+    matches = [QUANTITY.match(normalize(c)) if isinstance(c, str) else QUANTITY.match(c)
+               for c in cells]
     if None in matches:
         numbers = [""] * n
         units = [None] * n

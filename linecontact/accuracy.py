@@ -1,7 +1,7 @@
 """The one reader of the accuracy and coverage tables: what each method's error was
 measured to be, and over which range.
 
-Three shipped tables (tables/README.md) hold a study against a 3D boundary-element
+Four shipped tables (tables/README.md) hold a study against a 3D boundary-element
 solution each:
 
 - ``tables/model_accuracy.csv``: the straight-cylinder laws' F and k errors by L/R and
@@ -10,7 +10,11 @@ solution each:
   errors, in its header (``covered_*``, ``runtime_error_*``; :func:`roller_coverage`);
 - ``tables/stress_accuracy.csv``: the runtime stresses' covered range and largest
   errors, in its header (``covered_*``, ``error_*``, ``slice_error_*``;
-  :func:`stress_coverage`).
+  :func:`stress_coverage`);
+- ``tables/tangential_profiles.csv``: the tangential law by direction of profiled
+  rollers (the equivalent ellipse's ratio), its covered range and largest errors across
+  and along the roller in its header (``covered_*``, ``runtime_error_*``;
+  :func:`tangential_coverage`).
 
 Each is read once per file version (a rebuilt table is read again) and parsed here; a
 missing table or field gives None, and its users say "not measured". The header fields
@@ -28,12 +32,16 @@ __all__ = [
     "model_accuracy",
     "roller_coverage",
     "stress_coverage",
+    "TANGENTIAL_PROFILES",
+    "tangential_coverage",
 ]
 
 #: Table stems (tables/<stem>.csv) of the three accuracy studies.
 MODEL_ACCURACY = "model_accuracy"
 ROLLER_ACCURACY = "roller_accuracy"
 STRESS_ACCURACY = "stress_accuracy"
+#: Table stem of the profiled rollers' tangential study.
+TANGENTIAL_PROFILES = "tangential_profiles"
 
 #: (stem, path, mtime) -> what was read or parsed from that file version
 _CACHE: dict = {}
@@ -177,3 +185,35 @@ def stress_coverage():
     ((1.4, 3.0), 0.00583)
     """
     return _read(STRESS_ACCURACY, _stress)
+
+
+def _tangential(meta):
+    return dict(l_over_d=_range_field(meta, "covered_l_over_d"),
+                line_load=_range_field(meta, "covered_line_load_over_estar_d"),
+                nu=_range_field(meta, "covered_nu"),
+                profiles=_names_field(meta, "covered_profiles"),
+                across=_errors_field(meta, "runtime_error_across"),
+                along=_errors_field(meta, "runtime_error_along"))
+
+
+def tangential_coverage():
+    """The measured range and largest errors of the profiled rollers' tangential law by
+    direction, the equivalent ellipse's Mindlin ratio (tables/tangential_profiles.csv's
+    header).
+
+    Returns
+    -------
+    dict or None
+        ``l_over_d``, ``line_load`` (q/(E* D)), ``nu`` as (lo, hi); ``profiles``
+        (profile keys); ``across`` and ``along``: {``stiffness_ratio``: largest relative
+        error of k_t/k_n, grid error included; ``partial_slip``: largest force error
+        over the partial-slip curve relative to mu F; ``dissipation``: largest
+        |W/W_BEM - 1| per fretting cycle} [-]. None if the table or a field is missing.
+
+    Examples
+    --------
+    >>> c = tangential_coverage()
+    >>> c["nu"], c["across"]["stiffness_ratio"] < 0.01
+    ((0.0, 0.5), True)
+    """
+    return _read(TANGENTIAL_PROFILES, _tangential)

@@ -603,16 +603,23 @@ class AdhesiveContact:
         return {"approach_depth": d_app, "approach_force": F_app,
                 "retraction_depth": d_ret, "retraction_force": F_ret, "energy": energy}
 
-    def viscoelastic_limit(self, material, limit):
-        """The same contact with the relaxed or the instantaneous modulus of a material.
+    def viscoelastic_limit(self, material, limit, counterbody=None):
+        """The same contact with the relaxed or the instantaneous effective modulus.
 
         Parameters
         ----------
-        material : linecontact.viscoelastic.PronySeries
-            Relaxation function of the effective modulus E*(t).
+        material : linecontact.contact.Viscoelastic or linecontact.viscoelastic.PronySeries
+            The viscoelastic body, ``Viscoelastic(E(t), nu)`` (its effective modulus
+            E*(t) is built with its 1 - nu^2 and the counter-body's compliance,
+            :func:`linecontact.viscoelastic.effective_relaxation`), or an effective
+            modulus E*(t) that function made (``Contact(...).relaxation``). A bare
+            Prony series is refused: it may be a body's own E(t), and reading it as E*
+            would drop 1 - nu^2 and the counter-body.
         limit : {'relaxed', 'instantaneous'}
             'relaxed': infinitely slow loading and unloading (E* = E*(inf));
             'instantaneous': infinitely fast (E* = E*(0)).
+        counterbody : linecontact.contact.Elastic, optional
+            The elastic counter-body of a ``Viscoelastic`` material (default rigid).
 
         Returns
         -------
@@ -621,12 +628,14 @@ class AdhesiveContact:
         Raises
         ------
         OutOfRangeError
-            Any other `limit`: between the two the pull-off force depends on the speed
+            A bare Prony series, a counter-body with an effective E*(t), or any other
+            `limit`: between the two the pull-off force depends on the speed
             of the receding contact edge through the dissipation at the crack tip
             (Greenwood & Johnson 1981; Persson & Brener 2005), which the
             correspondence principle of linecontact.viscoelastic (valid while the
             contact does not shrink) does not give.
         """
+        material = _effective_relaxation(material, counterbody)
         if limit == "relaxed":
             E = material.long_term
         elif limit == "instantaneous":
@@ -643,6 +652,31 @@ class AdhesiveContact:
                                normal_force=(None if nf is None
                                              else (lambda a: scale * np.asarray(nf(a)))),
                                x_max=self.x_max, x_scale=self.x_scale)
+
+
+def _effective_relaxation(material, counterbody):
+    """E*(t) of :meth:`AdhesiveContact.viscoelastic_limit`'s material (see there)."""
+    from .contact import Elastic, Viscoelastic
+    from .viscoelastic import PronySeries, effective_relaxation
+
+    valid = ("Viscoelastic(E(t), nu) with counterbody=Elastic(E2, nu2) (default rigid), "
+             "or the effective E*(t) of viscoelastic.effective_relaxation")
+    if isinstance(material, Viscoelastic):
+        if counterbody is None:
+            return effective_relaxation(material.relaxation, material.poisson)
+        if not isinstance(counterbody, Elastic):
+            raise OutOfRangeError("counterbody", repr(counterbody), "Elastic(E2, nu2)")
+        return effective_relaxation(material.relaxation, material.poisson,
+                                    counterbody.modulus, counterbody.poisson)
+    if isinstance(material, PronySeries) and material.effective:
+        if counterbody is not None:
+            raise OutOfRangeError("counterbody", repr(counterbody), valid,
+                                  hint="an effective E*(t) includes its counter-body")
+        return material
+    raise OutOfRangeError(
+        "material", type(material).__name__, valid,
+        hint="a bare relaxation function may be the body's own E(t); E* needs its "
+             "1 - nu^2 and the counter-body's compliance")
 
 
 # --------------------------------------------------------------------------------------

@@ -28,7 +28,8 @@ Several results in one figure: :func:`panels`. Every function takes ``fig=`` (a
 ``Figure`` or ``SubFigure`` to draw into; the single-panel ones also ``ax=``), so
 :func:`panels` stacks any of them. Readable by default: each curve its own colour,
 marker and dash, the legend outside the data (right of the axes), units on every axis
-with the SI prefix that fits the data's magnitude (:func:`engineering_unit`: a soft
+with the SI prefix that fits the data's magnitude
+(:func:`linecontact._units.engineering_unit`: a soft
 contact's force in mN, a steel roller's in kN). :data:`PLOTS` lists the figures by
 name (:func:`register` adds one).
 
@@ -50,7 +51,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._units import _PREFIXES
+from ._units import engineering_unit
 from .errors import OutOfRangeError, UnknownNameError
 
 __all__ = ["force_depth", "line_load", "profiled_roller", "pressure_field",
@@ -106,71 +107,6 @@ def register(name):
 # --------------------------------------------------------------------------------------
 # units, styles, layout
 # --------------------------------------------------------------------------------------
-#: Prefixes offered, largest first (their factors are _units' table, the one home of
-#: the SI prefixes); shown with the micro sign.
-_ENGINEERING = ("T", "G", "M", "k", "", "m", "u", "n", "p")
-_SHOWN = {"u": "\u00b5"}
-#: Units that take a prefix (the first symbol of a compound such as N/m or N m).
-_SI_SYMBOLS = ("m", "N", "Pa", "J", "s", "rad")
-#: Units shown without the prefixes above 1 (no km, ks, krad).
-_NOT_LARGER = ("m", "s", "rad")
-
-
-def engineering_unit(values, unit):
-    """The SI prefix that fits an array's magnitude: the factor and the prefixed unit.
-
-    The prefix puts the largest finite magnitude of `values` in [1, 1000): a force of
-    1.2e-3 N is shown in mN (1e-4 N in µN, not as 0.0001 kN), 2e3 N in kN, a modulus
-    of 6.7e4 Pa in kPa. Lengths, times and angles are not shown above their base unit
-    (no km, ks, krad).
-
-    Parameters
-    ----------
-    values : float or array_like
-        Values in the SI unit `unit` (NaN and zeros ignored) [`unit`].
-    unit : str
-        The SI unit: m, N, Pa, J, s, rad, or a compound whose first symbol is one
-        (``"N/m"``, ``"N m"``); any other unit (``"-"``, ``"HV"``) is returned as is.
-
-    Returns
-    -------
-    factor : float
-        Multiply the SI values by it [-].
-    unit : str
-        The prefixed unit (the micro sign for 1e-6).
-
-    Notes
-    -----
-    Valid for any finite values; the prefixes run from p (1e-12) to T (1e12), the
-    factors those of the unit parser (:mod:`linecontact._units`). Without a finite
-    non-zero value the unit is returned unprefixed (factor 1).
-
-    Examples
-    --------
-    >>> engineering_unit([0.0, 1.2e-3], "N")
-    (1000.0, 'mN')
-    >>> engineering_unit(6.7e4, "Pa"), engineering_unit(2e3, "N/m")
-    ((0.001, 'kPa'), (0.001, 'kN/m'))
-    >>> engineering_unit(7e-6, "m"), engineering_unit(3.0, "m")
-    ((1000000.0, 'µm'), (1.0, 'm'))
-    """
-    first = unit.replace("/", " ").split(" ")[0]
-    if first not in _SI_SYMBOLS:
-        return 1.0, unit
-    v = np.abs(np.asarray(values, dtype=float)).ravel()
-    v = v[np.isfinite(v) & (v > 0)]
-    if v.size == 0:
-        return 1.0, unit
-    top = float(v.max())
-    for p in _ENGINEERING:
-        f = _PREFIXES[p]
-        if f > 1 and first in _NOT_LARGER:
-            continue
-        if top >= f * (1 - 1e-12) or p == _ENGINEERING[-1]:
-            return 1.0 / f, _SHOWN.get(p, p) + unit
-    raise AssertionError("unreachable: the last prefix is always taken")
-
-
 def _quantity(value, unit, digits=4):
     """'67 kPa': a value with the prefix that fits it."""
     f, u = engineering_unit(value, unit)
@@ -777,7 +713,8 @@ def pressure_map(result, *, ny=81, fig=None, ax=None):
 # adhesion
 # --------------------------------------------------------------------------------------
 @register("adhesion")
-def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
+def adhesion(contact, depth_max=None, *, n=201, loop=None, points=None, fig=None,
+             ax=None):
     r"""F(d) of an adhesive contact on approach and retraction, the pull-off marked.
 
     The curves are :meth:`linecontact.adhesion.AdhesiveContact.hysteresis` (the rule
@@ -802,6 +739,9 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         Points per branch [-].
     loop : dict, optional
         The cycle already computed (what ``hysteresis`` returned): drawn as given.
+    points : sequence of (depth, force), optional
+        Computed states to mark, d [m] and F [N] (NaN pairs are skipped), e.g. the
+        calculator's rows: black circles, line ``"computed"``.
     fig : matplotlib.figure.Figure or SubFigure, optional
         Where to draw (default a new figure).
     ax : matplotlib.axes.Axes, optional
@@ -871,8 +811,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
                                            "mfc": "none", "mew": 1.5}))
             title.append(f"MDR pull-off (force control) {bem_f['mdr_error']:+.1%} "
                          "against the BEM")
-    sd, ud = engineering_unit(np.concatenate([da, dr]), "m")
-    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs]]), "N")
+    pts = _points(points) if points is not None else np.zeros((0, 2))
+    sd, ud = engineering_unit(np.concatenate([da, dr, pts[:, 0]]), "m")
+    sf, uf = engineering_unit(np.concatenate([Fa, Fr, [r[1] for r in refs], pts[:, 1]]),
+                              "N")
     fig, (ax,) = _new(fig, 1, ax)
     for d, F, label, st in ((da, Fa, "approach", _style(0)), (dr, Fr, "retraction",
                                                               _style(1))):
@@ -883,6 +825,10 @@ def adhesion(contact, depth_max=None, *, n=201, loop=None, fig=None, ax=None):
         ax.axhline(F * sf, label=label, **st)
     for label, d, F, st in marks:
         line, = ax.plot([d * sd], [F * sf], ls="none", label=label, zorder=6, **st)
+        line.scale = (sd, sf)
+    if pts.size:
+        line, = ax.plot(pts[:, 0] * sd, pts[:, 1] * sf, ls="none", marker="o", color="k",
+                        mfc="none", ms=7, label="computed", zorder=7)
         line.scale = (sd, sf)
     ax.axhline(0.0, color="k", lw=0.5)
     ax.axvline(0.0, color="k", lw=0.5)
@@ -985,6 +931,8 @@ def _tangential_name(c):
         return f"{c.direction} (BEM)"
     if method == "mindlin":
         return f"{c.direction} (Mindlin)"
+    if method == "ellipse":
+        return f"{c.direction} (equivalent ellipse)"
     return "MDR (G*/E*)"
 
 
@@ -1275,10 +1223,10 @@ def bearing(solution, *, fig=None):
     """Roller loads, moments and tilts around the ring of a radial roller bearing.
 
     One panel per per-roller quantity the solution holds (:data:`BEARING_FIELDS`;
-    moments and tilts that are all zero, as under a contact law with aligned rings,
-    are left out and the title says so; for a solution at a speed, the film ratio and
-    the damage share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from
-    the load line, the load zone shaded.
+    moments and tilts that are all zero to round-off, as with aligned rings, are left
+    out and the title says so; for a solution at a speed, the film ratio and the damage
+    share, :data:`BEARING_LIFE_FIELDS`), against the roller's azimuth from the load
+    line, the load zone shaded.
 
     Parameters
     ----------
@@ -1309,6 +1257,13 @@ def bearing(solution, *, fig=None):
     psi = np.where(psi <= -180.0, psi + 360.0, psi)
     order = np.argsort(psi, kind="stable")
     shown, zero = [], []
+    # round-off: 1e-12 of the largest roller load times the laminae's span (about the
+    # roller length) for a moment, 1e-12 rad for a tilt (a symmetric roller between
+    # aligned rings, solved exactly, has moments of 1e-17 Q L); exact zeros elsewhere
+    span = 2 * float(np.max(np.abs(solution.slice_x))) if getattr(
+        solution, "slice_x", None) is not None and np.size(solution.slice_x) else 0.0
+    tiny = {"roller_moments": 1e-12 * float(np.max(solution.roller_loads)) * span,
+            "roller_tilts": 1e-12}
     fields = BEARING_FIELDS
     if getattr(solution, "speed", None) is not None:
         fields = fields + BEARING_LIFE_FIELDS
@@ -1322,7 +1277,8 @@ def bearing(solution, *, fig=None):
             continue
         v = np.asarray(v, dtype=float)
         v = np.where(np.isfinite(v), v, np.nan)     # Lambda = inf: no film to show
-        if attr != "roller_loads" and not np.any(v):
+        small = np.abs(v) <= tiny[attr] if attr in tiny else v == 0
+        if attr != "roller_loads" and np.all(small):
             zero.append(name.split()[1])            # "moment", "tilt"
             continue
         shown.append((v, name, unit))

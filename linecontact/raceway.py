@@ -654,6 +654,20 @@ def _slice_solution(model, R_in, R_out, L, E, prof, force, deflection, th, psi,
         else:
             raise OutOfRangeError("deflection", dl, "a deflection the model reaches",
                                   unit="m", hint="no force found in 100 Newton steps")
+    return _contacts_solution(model, si, so, R_in, R_out, psi, free, clearance, F)
+
+
+def _contacts_solution(model, si, so, R_in, R_out, misalignment, free, clearance,
+                      force=None):
+    """The :class:`RacewaySolution` of a roller whose two slice contacts are solved:
+    `si` and `so` (:class:`~linecontact.roller.RollerSolution`, inner and outer, at the
+    same load), the slice model's name, the effective radii [m], the rings'
+    misalignment [rad], whether the roller is free to tilt, the clearance [m] and the
+    roller load asked for [N] (None: the inner contact's). The one assembly of
+    :func:`roller_between_raceways` and of a bearing's rollers
+    (:mod:`linecontact.bearing`), so that both report the same numbers of one solve."""
+    F = si.force if force is None else force
+    psi = misalignment
     k = _series_stiffness(si, so, free)
     tks = _kmt(si.stiffness_matrix) + _kmt(so.stiffness_matrix)
     notes = tuple(f"inner: {n}" for n in si.notes) + tuple(f"outer: {n}" for n in so.notes)

@@ -121,6 +121,12 @@ class PronySeries:
     J. Appl. Mech. 27 (1960) 438-444.
     """
 
+    #: True for the effective modulus E*(t) of a pair of bodies as built by
+    #: :func:`effective_relaxation` (a body's E(t) with its 1 - nu^2 and the
+    #: counter-body's compliance); False for a series as typed, which may be a body's
+    #: own E(t) (what ``AdhesiveContact.viscoelastic_limit`` refuses to guess).
+    effective = False
+
     #: Swapped lists (see Notes): the largest modulus below this fraction of E_inf
     #: [-] while the longest time is at least ``SWAP_TIME * E_inf`` [s/Pa].
     SWAP_MODULUS = 1e-4
@@ -898,4 +904,6 @@ def effective_relaxation(body, poisson, modulus2=np.inf, poisson2=None):
             raise OutOfRangeError("poisson2", "missing", "a number in [0, 0.5] (needed "
                                   "with a finite modulus2)")
         b = (1.0 - POISSON_RATIO.check(poisson2, name="poisson2").item() ** 2) / E2
-    return body.scaled(1.0 / (1.0 - nu1 ** 2)).in_series(b)
+    series = body.scaled(1.0 / (1.0 - nu1 ** 2)).in_series(b)
+    series.effective = True
+    return series

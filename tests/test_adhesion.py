@@ -203,18 +203,46 @@ def test_viscoelastic_limits_and_refusal():
     """Relaxed and instantaneous limits are JKR with E*(inf) and E*(0) (the sphere's
     pull-off does not depend on E*, its zero-load radius does); any rate in between is
     refused with the reason."""
+    from linecontact.contact import Viscoelastic
     from linecontact.viscoelastic import StandardLinearSolid
 
     sls = StandardLinearSolid(3e6, 1e6, 0.1)
     c = sphere()
-    for limit, Ev in (("relaxed", 1e6), ("instantaneous", 3e6)):
-        v = c.viscoelastic_limit(sls, limit)
-        assert v.estar == pytest.approx(Ev)
+    for limit, E in (("relaxed", 1e6), ("instantaneous", 3e6)):
+        v = c.viscoelastic_limit(Viscoelastic(sls, 0.0), limit)  # nu = 0, rigid: E* = E
+        assert v.estar == pytest.approx(E)
         assert v.pull_off("force")["force"] == pytest.approx(-1.5 * math.pi * W * R, rel=1e-9)
         assert v.zero_load()["contact_radius"] ** 3 == pytest.approx(
-            9 * math.pi * W * R ** 2 / (2 * Ev), rel=1e-10)
+            9 * math.pi * W * R ** 2 / (2 * E), rel=1e-10)
     with pytest.raises(OutOfRangeError, match="crack-tip"):
-        c.viscoelastic_limit(sls, "1 mm/s")
+        c.viscoelastic_limit(Viscoelastic(sls, 0.0), "1 mm/s")
+
+
+@pytest.mark.parametrize("nu1,E2,nu2", [(0.5, np.inf, None), (0.4, 210e9, 0.3),
+                                        (0.3, 5e6, 0.45)])
+def test_viscoelastic_limit_uses_the_effective_modulus_of_the_pair(nu1, E2, nu2):
+    """The limits are JKR with the EFFECTIVE modulus: 1/E* = (1 - nu1^2)/E1 +
+    (1 - nu2^2)/E2 at t = 0 and t = inf (Johnson 1985, Eq. 4.22; Lee & Radok 1960:
+    the compliances add at every time, so at both ends), to 1e-12 (the series of
+    effective_relaxation is computed by root finding to machine precision); a bare
+    Prony series (perhaps the body's own E(t)) is refused, never read as E*."""
+    from linecontact.contact import Elastic, Viscoelastic
+    from linecontact.viscoelastic import StandardLinearSolid, effective_relaxation
+
+    sls = StandardLinearSolid(3e6, 1e6, 0.1)
+    counter = None if np.isinf(E2) else Elastic(E2, nu2)
+    c = sphere()
+    for limit, E1 in (("relaxed", 1e6), ("instantaneous", 3e6)):
+        expected = 1 / ((1 - nu1**2) / E1 + (0 if counter is None else (1 - nu2**2) / E2))
+        v = c.viscoelastic_limit(Viscoelastic(sls, nu1), limit, counter)
+        assert v.estar == pytest.approx(expected, rel=1e-12)
+        # the effective E*(t) of the library's own function gives the same
+        eff = effective_relaxation(sls, nu1, E2, nu2)
+        assert c.viscoelastic_limit(eff, limit).estar == v.estar
+    with pytest.raises(OutOfRangeError, match="material.*own E\\(t\\)"):
+        c.viscoelastic_limit(sls, "relaxed")
+    with pytest.raises(OutOfRangeError, match="counterbody"):
+        c.viscoelastic_limit(effective_relaxation(sls, nu1), "relaxed", Elastic(E2, nu2))
 
 
 def test_depth_at_force_inverts_force_at_depth():

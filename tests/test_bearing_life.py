@@ -222,6 +222,28 @@ def test_two_case_spectrum_life_is_palmgren_miner_through_the_bearing():
         life * 1e6 * 2 * math.pi / (0.3 * W + 0.7 * W / 2) / 3600, rel=1e-12)
 
 
+def test_a_standstill_case_of_a_lubricated_bearing_takes_no_damage():
+    """A duty cycle with a case at standstill (shares of time, speed 0): it takes no
+    revolutions, so the combined lives are the turning case's alone (every kind,
+    the modified ones too), and its hours count the standstill time; the case is
+    solved for its static safety, without the film and kappa that need rotation
+    (a lubricated bearing's solve() refuses speed 0; the spectrum must not)."""
+    b = _bearing(**OIL, contamination=0.5)
+    r = solve_spectrum(b, [LoadCase(0.7, 10e3, speed=W), LoadCase(0.3, 30e3, speed=0.0)])
+    s1 = b.solve(10e3, speed=W)
+    assert r.revolution_shares.tolist() == [1.0, 0.0]
+    for kind, attr in (("iso281", "life_iso281"), ("modified", "life_modified"),
+                       ("modified_reference", "life_modified_reference")):
+        assert r.life[kind] == pytest.approx(getattr(s1, attr), rel=1e-12)
+        assert r.damage[kind].tolist() == [1.0, 0.0]
+        # 1e6 revolutions at 1500 r/min for 70 % of the time
+        assert r.hours[kind] == pytest.approx(
+            getattr(s1, attr) * 1e6 / (0.7 * 1500 * 60), rel=1e-12)
+    assert math.isnan(r.lives["modified"][1]) and r.solutions[1].kappa is None
+    assert r.solutions[1].static_safety == pytest.approx(
+        r.solutions[1].static_rating / 30e3, rel=1e-15)
+
+
 # -- the new inputs change nothing they do not concern ----------------------------------
 def test_lubricant_flanges_and_speed_leave_the_load_distribution_unchanged():
     """Film, life and flange inputs are read off the load distribution: every field of

@@ -158,6 +158,42 @@ def test_a_column_given_twice_is_refused(tmp_path, door):
     assert status == 2 and out == "" and f"column {first!r} appears twice" in err
 
 
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_linear_with_a_batch_is_refused_as_a_conflict(tmp_path, door):
+    """--linear spaces a sweep's values; a CSV batch has one value per row, so with a
+    CSV it would do nothing: refused up front by the shared batch loop, for every
+    command, one line naming the conflict, status 2, nothing written."""
+    path = tmp_path / "in.csv"
+    path.write_text(door.header + "\n" + door.row.format(load="1kN") + "\n")
+    status, out, err = _calc([str(path), "--linear"], door.name)
+    assert status == 2 and out == "" and len(err.splitlines()) == 1, err
+    assert "--linear" in err and "CSV batch" in err
+
+
+@pytest.mark.parametrize("how", ["option", "column"])
+def test_a_json_only_input_in_a_batch_without_json_is_refused_once(tmp_path, how):
+    """--stress-field writes a block of the --json output only: a CSV batch without
+    --json (the option, or a filled cell of its column) is refused once up front, as
+    the one case is (one line naming the input and 'with --json', status 2, nothing
+    written); with --json the batch runs. The rule is the parameter's declaration
+    (Parameter.json_only), the same for every door."""
+    case = "radius,length,estar,load,profile,stresses"
+    cells = "5mm,10mm,115GPa,1kN,iso16281,yes"
+    path = tmp_path / "in.csv"
+    if how == "column":
+        path.write_text(case + ",stress_field\n" + cells + ",\n" + cells + ",0mm\n")
+        extra = []
+    else:
+        path.write_text(case + "\n" + cells + "\n")
+        extra = ["--stress-field", "0mm"]
+    status, out, err = _calc([str(path), *extra])
+    assert status == 2 and out == "" and len(err.splitlines()) == 1, err
+    named = "--stress-field" if how == "option" else "column 'stress_field'"
+    assert err.split(": error: ")[1].startswith(named) and "with --json" in err
+    status, out, err = _calc([str(path), *extra, "--json"])
+    assert status == 0, err
+
+
 @pytest.mark.parametrize("spelled", ["same", "dot", "absolute"])
 @pytest.mark.parametrize("door", DOORS, ids=IDS)
 def test_output_naming_the_input_file_is_refused_and_the_input_kept(

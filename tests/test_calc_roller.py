@@ -323,3 +323,38 @@ def test_batch_rows_sharing_a_roller_are_one_sweep_equal_to_one_by_one(capsys, t
                 scale = {"moment_N_m": 1e-9 * together[k]["force_N"] * 0.014,
                          "tilt_rad": 1e-12}.get(name, 0.0)
                 assert a == pytest.approx(b, rel=1e-8, abs=scale), (k, name)
+
+
+def test_a_tilted_rollers_depth_says_it_is_at_the_centre_and_gives_the_approach(capsys):
+    """A straight roller tilted by 1 degree (17.45 mrad, inside the models' declared
+    |theta| < 0.1 rad) touches first at its +x end: its depth at the centre x = 0 is
+    negative, and the row says so with the approach from first contact, d - d0
+    (Contact.first_contact_depth, about -theta L/2 for a straight roller): the
+    library's ContactResult.approach of the same solve to the printed 4 digits. An
+    aligned crowned roller (first contact at the centre, d0 = 0) has no such note:
+    there d is the approach."""
+    from linecontact.contact import Contact, Roller
+
+    small = ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115.385GPa"]
+    doc = _json(capsys, *small, "--load", "1kN", "--tilt", "1deg",
+                "--model", "profiled-roller")
+    row = doc["models"][0]["rows"][0]
+    theta = doc["models"][0]["rows"][0]["tilt"]
+    r = Contact(Roller(5e-3, 10e-3, profile="straight", tilt=theta),
+                estar=115.385e9).normal(force=1e3)
+    assert row["depth"] < 0 < r.approach
+    assert row["depth"] == pytest.approx(r.depth, rel=1e-9)
+    assert "depth at the roller's centre" in row["flags"]
+    assert f"the approach from first contact d - d0 = {r.approach * 1e6:.4g} um" \
+        in row["flags"]
+    crowned = _json(capsys, *small, "--load", "1kN", "--crown-radius", "500mm",
+                    "--model", "profiled-roller")["models"][0]["rows"][0]
+    assert "first contact" not in crowned["flags"]
+
+
+def test_a_tilt_past_the_declared_range_is_refused_with_the_range(capsys):
+    """The roller models linearise the tilt: |theta| < 0.1 rad (5.7 degrees); 6 degrees
+    is refused in one line naming --tilt, the value and the range (exit 2)."""
+    status, out, err = _main(capsys, *ROLLER, "--load", "1kN", "--tilt", "6deg")
+    assert status == 2 and "--tilt" in err and "(-0.1, 0.1) rad" in err
+    assert len(err.strip().splitlines()) == 1

@@ -56,15 +56,22 @@ def test_partial_slip_is_mindlins_law():
 
 def test_ellipse_reaching_the_ends_falls_back_with_a_note():
     """At 100 kN the Hertz ellipse of the issue's roller (a = 10.6 mm > L/2 = 10 mm)
-    reaches the ends: the MDR's direction-free G*/E* is used there, and a note says so;
-    the 1 kN load in the same call keeps Mindlin's ratio."""
+    reaches the ends: the equivalent ellipse of the slices' footprint is used there
+    (its half-length L/2 and the slices' k_n; linecontact.mindlin.
+    equivalent_ellipse_ratio), and the notes say so; the 1 kN load in the same call
+    keeps Mindlin's ratio."""
     c = _issue_roller(40)
     F = np.array([1e3, 1e5])
     assert hertz_contact(1e5, 0.5, 0.01, c.estar).a > 10e-3
     t = c.tangential(0.1, force=F)
     ratio = mindlin.stiffness_ratio(0.5, 0.01, c.gstar, c.estar, "y")
-    assert t.stiffness_ratio == pytest.approx([ratio, c.gstar / c.estar], rel=1e-15)
-    assert len(t.notes) == 1 and "reaches the roller's ends" in t.notes[0]
+    s = t.normal.solutions[1]
+    ell = mindlin.equivalent_ellipse_ratio(0.5 * s.contact_length,
+                                           s.stiffness_matrix[0, 0], c.gstar, c.estar,
+                                           "y")
+    assert t.stiffness_ratio == pytest.approx([ratio, ell], rel=1e-15)
+    assert "reaches the roller's ends" in t.notes[0]
+    assert any("equivalent ellipse across" in n for n in t.notes[1:])
 
 
 def test_cam_follower_gets_mindlins_stiffness_against_its_cam():
@@ -99,13 +106,15 @@ def test_mdr_law_says_its_measured_error_or_that_it_has_none():
     """The MDR's direction-free ratio carries a note: for a crowned roller its
     difference from Mindlin's ellipse (issue 32's roller: -8.6 % across, +8.6 % along),
     for a straight cylinder's law its difference from the BEM table (where the table
-    covers the case), for another profile that it is not measured."""
+    covers the case), for another profile its difference from the equivalent ellipse
+    (stiffer across, softer along than the MDR's ratio)."""
     c = _issue_roller(20)
     (note,) = c.tangential(0.1, force=1e3, method="mdr").notes
     assert "-8.6% from Mindlin's Hertz ellipse across, +8.6% along" in note
     (note,) = Contact(Roller(5e-3, 10e-3, profile="iso16281"), None, STEEL, STEEL,
-                      n_slices=20).tangential(0.1, force=1e3).notes
-    assert "not measured" in note
+                      n_slices=20).tangential(0.1, force=1e3, method="mdr").notes
+    assert "from the equivalent ellipse of the footprint across" in note
+    assert note.split(":")[2].strip().startswith("-")       # MDR below it across
     (note,) = Contact(Roller(5e-3, 10e-3), None, STEEL, STEEL).tangential(
         0.1, force=1e3).notes
     assert "BEM" in note

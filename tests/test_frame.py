@@ -99,8 +99,11 @@ def test_frames_refused_as_a_whole(door):
     first = door.header.split(",")[0]
     with pytest.raises(ValueError, match="no case columns"):
         door.frame(pd.DataFrame({"x": [1.0]}))
-    with pytest.raises(ValueError, match="no rows"):
-        door.frame(pd.DataFrame({first: []}))
+    with pytest.raises(ValueError, match=r"cases: columns of 2 levels.*flatten"):
+        door.frame(pd.DataFrame([["5mm"]], columns=pd.MultiIndex.from_tuples(
+            [("a", first)])))  # every row failed as "missing" (the names were tuples)
+    with pytest.raises(ValueError, match=r"^cases \(DataFrame\): column .* twice"):
+        door.frame(pd.DataFrame({first: ["5mm"], first.upper(): ["5mm"]}))  # no temp path
     typo = first[:-2] + first[-1] + first[-2]
     with pytest.raises(ValueError, match=f"'{typo}'.*did you mean '{first}'"):
         door.frame(pd.DataFrame({first: ["5mm"]}), **{typo: "5mm"})  # unknown keyword
@@ -116,3 +119,14 @@ def test_sweeps_of_numbers_are_si():
                           "load": [1e3, "1kN"], "estar": [115.38e9, "115.38GPa"]})
     out = calc_frame(cases)
     assert np.asarray(out["depth_m"])[0] == np.asarray(out["depth_m"])[1]
+
+
+@pytest.mark.parametrize("door", DOORS, ids=IDS)
+def test_a_frame_without_rows_gives_an_empty_frame_with_the_result_columns(door):
+    """0 rows: no error, the user's columns and the result columns (those of a row of
+    the same columns), no row (a notebook's filter that leaves nothing must not raise)."""
+    first = door.header.split(",")[0]
+    empty = door.frame(pd.DataFrame({first: pd.Series([], dtype=object)}))
+    one = door.frame(pd.DataFrame({first: [None]}))
+    assert len(empty) == 0 and list(empty.columns) == list(one.columns)
+    assert "error" in empty.columns and empty.attrs["linecontact"]

@@ -129,6 +129,41 @@ def test_bad_inputs_are_refused():
         minimum_film_pan_hamrock(**dict(CASE, load_per_length=-1.0))
 
 
+def test_pressure_viscosity_in_gpa_given_as_a_bare_number_is_refused():
+    """alpha is taken in 1/Pa: oils lie near 1e-8 to 4e-8 1/Pa (10 to 40 GPa^-1). The
+    tables' 20 GPa^-1 typed as 20 would make G = alpha E' 1e9 times too large and the
+    film (h ~ G^0.568) about 1.3e5 times too thick, tens of millimetres: refused with
+    the unit named, at the film formula and at the bearing."""
+    from linecontact.bearing import RadialRollerBearing
+
+    with pytest.raises(OutOfRangeError, match="GPa"):
+        minimum_film_pan_hamrock(**dict(CASE, pressure_viscosity=20.0))
+    with pytest.raises(OutOfRangeError, match="pressure_viscosity"):
+        RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, viscosity=20.7e-6, density=860.0,
+                            pressure_viscosity=20.0)
+    # the top of the accepted range still computes
+    assert minimum_film_pan_hamrock(**dict(CASE, pressure_viscosity=1e-7)) > 0
+
+
+@pytest.mark.parametrize("inputs, words", [
+    (dict(density=0.86), "g/cm^3"),          # 0.86 g/cm^3 typed as a bare number
+    (dict(density=1e5), "kg/m^3"),
+    (dict(viscosity=68.0), "mm^2/s"),        # 68 cSt typed as a bare number
+    (dict(viscosity=1e-9), "m^2/s"),
+])
+def test_density_and_viscosity_unit_slips_are_refused(inputs, words):
+    """The bearing's lubricant: oils lie near 800-1000 kg/m^3 and 1e-6 to 1e-3 m^2/s. A
+    density in g/cm^3 or a viscosity in mm^2/s given as a bare SI number would change
+    eta0 = rho nu by a factor 1e3 or 1e6 and the film by 1e2 or more (h ~ U^0.694):
+    refused, the message naming the unit, rather than a silently wrong film."""
+    from linecontact.bearing import RadialRollerBearing
+
+    oil = dict(viscosity=20.7e-6, density=860.0, pressure_viscosity=2e-8)
+    oil.update(inputs)
+    with pytest.raises(OutOfRangeError, match=words.replace("^", r"\^")):
+        RadialRollerBearing(14, 70e-3, 11e-3, 11e-3, **oil)
+
+
 def test_film_ratio_by_hand():
     """Lambda = h / sqrt(Rq1^2 + Rq2^2): 0.3 um over sqrt(0.1^2 + 0.2^2) um = 1.3416."""
     assert film_ratio(0.3e-6, 0.1e-6, 0.2e-6) == pytest.approx(0.3 / math.sqrt(0.05),
@@ -161,9 +196,10 @@ def test_rated_viscosity_catalogue_branches_by_hand():
     rpm = math.pi / 30
     # 1500 r/min, 70 mm: 4500 / sqrt(1500 * 70) = 13.887 mm^2/s
     assert rated_viscosity(1500 * rpm, 70e-3) == pytest.approx(13.8873e-6, rel=1e-4)
-    # 500 r/min, 70 mm: 45000 * 500^-0.83 / sqrt(70) = 30.76 mm^2/s
+    # 500 r/min, 70 mm: 45000 * 500^-0.83 / sqrt(70) = 258.86 / 8.3666 = 30.940 mm^2/s
     assert rated_viscosity(500 * rpm, 70e-3) == pytest.approx(
         45000 * 500 ** -0.83 / math.sqrt(70) * 1e-6, rel=1e-12)
+    assert rated_viscosity(500 * rpm, 70e-3) == pytest.approx(30.940e-6, rel=1e-4)
     # the second branch from 1000 r/min on
     assert rated_viscosity(1000 * rpm, 70e-3) == pytest.approx(
         4500 / math.sqrt(1000 * 70) * 1e-6, rel=1e-12)

@@ -358,3 +358,76 @@ def test_a_subnormal_number_is_refused_in_a_column_even_when_its_unit_scales_it_
     with pytest.raises(InputError) as exc:
         parse_quantity("--x", column[0], kind)
     assert errors[0] == str(exc.value) and math.isnan(values[0]), (values[0], errors[0])
+
+
+#: Units as people write them (issue 36), per kind: text -> SI value. A moment as the
+#: package prints it ("M [N m]") and with a product sign; a surface energy with the
+#: power's caret left out or as a superscript; the degree sign; typographic minus and
+#: spaces (U+2212, U+00A0, U+2009, U+202F), which a word processor or a web page puts in.
+WRITTEN = {
+    "moment": [("20 N m", 20.0), ("20 N·m", 20.0), ("20 N*m", 20.0), ("20 N\u22c5m", 20.0),
+               ("20Nm", 20.0), ("1.5 kN m", 1500.0), ("300 N mm", 0.3)],
+    "surface_energy": [("50mJ/m2", 0.05), ("50 mJ/m^2", 0.05), ("50 mJ/m\u00b2", 0.05),
+                       ("0.05 J/m2", 0.05)],
+    "angle": [("0.05°", 0.05 * math.pi / 180), ("0.05 °", 0.05 * math.pi / 180),
+              ("0.05deg", 0.05 * math.pi / 180)],
+    "length": [("\u22125mm", -0.005), ("5\u00a0mm", 0.005), ("5\u2009mm", 0.005),
+               ("5\u202fmm", 0.005), ("\u22121e\u22123", None)],
+    "force": [("\u22121 kN", -1000.0), ("10\u00a0kN", 1e4)],
+}
+
+
+@pytest.mark.parametrize("kind,text,si", [(k, t, v) for k, rows in WRITTEN.items()
+                                          for t, v in rows])
+def test_units_as_people_write_them_convert_the_same_in_a_cell_and_an_option(kind, text, si):
+    """Each written form converts to its SI value (1e-15: one product of factors), and
+    a CSV column of it to the same float as the option (one rule for both doors).
+    '\u22121e\u22123' keeps the Unicode minus only in the mantissa's place: the exponent's
+    is read too, so it is -1e-3 m."""
+    si = -1e-3 if si is None else si
+    got = parse_quantity("--x", text, kind, positive=False)
+    assert math.isclose(got, si, rel_tol=1e-15), (text, got, si)
+    values, errors = parse_column("--x", [text, text], kind, positive=False)
+    assert errors == ["", ""] and values.tolist() == [got, got]
+
+
+#: A unit in the wrong case, per kind: what is suggested (first) and what must never be
+#: said (pint reads 'MM' as megamolar, a concentration: no word about it for a length).
+CASE_ERRORS = [("5MM", "length", "'mm'"), ("1KN", "force", "'kN'"),
+               ("210 GPA", "pressure", "'GPa'"), ("3 MRAD", "angle", "'mrad'"),
+               ("12 NM", "moment", "'Nm'")]
+
+
+@pytest.mark.parametrize("text,kind,first", CASE_ERRORS)
+def test_a_unit_in_the_wrong_case_is_a_case_error_with_the_unit_of_that_kind(text, kind,
+                                                                            first):
+    """Refused as a case error naming the unit of the kind first, never explained as a
+    unit of another dimension."""
+    msg = _refused(text, kind)
+    assert "case-sensitive" in msg and f"did you mean {first}" in msg, msg
+    assert "substance" not in msg and "molar" not in msg and "got" not in msg, msg
+
+
+@pytest.mark.parametrize("text,kind,other", [("5 N m", "length", "a moment"),
+                                             ("5 kN", "moment", "a force"),
+                                             ("5 mJ/m2", "pressure", "a surface energy")])
+def test_a_built_in_unit_of_another_kind_is_named_by_its_kind(text, kind, other):
+    """A compound name of the wrong kind says what kind it is (without pint)."""
+    assert f"got {other}" in _refused(text, kind)
+
+
+@given(st.lists(st.one_of(st.integers(-5, 5000).map(str), st.floats(-10, 5000).map(repr),
+                          st.sampled_from(["3mm", "1e1", "40.5", "14.0", " 7 ", "x"])),
+                min_size=1, max_size=12))
+def test_a_count_is_a_whole_number_never_rounded(cells):
+    """A count (rollers, slices) is a whole number: a fraction is refused naming
+    'integer' (40.5 slices were truncated to 40), a unit is refused, 14.0 and 1e1 are
+    the integers they write; a column gives each cell's result."""
+    _assert_parses_like_its_cells(cells, "count")
+    for cell in cells:
+        try:
+            v = parse_quantity("--n", cell, "count")
+        except InputError as exc:
+            assert "valid: an integer" in str(exc)
+        else:
+            assert v == int(v) and v > 0

@@ -19,6 +19,10 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``tangential``
     Tangential stiffness and partial slip of the finite cylinder:
     tables/tangential_cylinder.csv (tools.studies.tangential_study).
+``tangential-profiles``
+    Tangential stiffness by direction of profiled rollers, 3D BEM against the
+    equivalent ellipse's Mindlin ratio: tables/tangential_profiles.csv
+    (tools.studies.tangential_profile_study).
 ``adhesion``
     Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
     MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
@@ -43,6 +47,7 @@ SUBCOMMANDS = {
     "paper": "tools.studies.paper_study",
     "roller": "tools.studies.roller_study",
     "tangential": "tools.studies.tangential_study",
+    "tangential-profiles": "tools.studies.tangential_profile_study",
     "stress": "tools.studies.stress_study",
     "accuracy": "tools.studies.accuracy",
     "adhesion": "tools.studies.adhesion_study",
@@ -64,7 +69,12 @@ def main(argv=None):
     module.add_arguments(parser)
     args = parser.parse_args(argv[1:])
     args.command_line = "python -m tools.build_tables " + " ".join(argv)
-    return module.run(args) or 0
+    from tools.studies.runner import StudyError
+    try:
+        return module.run(args) or 0
+    except StudyError as exc:          # one line that says what to do, no traceback
+        print(f"error: {exc}", file=sys.stderr)
+        return exc.exit_code
 
 
 if __name__ == "__main__":

@@ -36,9 +36,13 @@ law, :math:`\delta(Q_j) = \delta_r\cos\psi_j - P_d/2`, :math:`\sum Q_j\cos\psi_j
 removes the interpolation error: the loads then sum to :math:`F_r` to round-off.
 
 A profiled roller under the slice model is tabulated the same way, at
-:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve); its slice loads
-for the rating life are interpolated between the tabulated load distributions (in
-:math:`\ln Q`), and the table's interpolation error is reported
+:data:`PROFILED_POINTS` depths per contact (each a coupled-slice solve), and the ring
+equilibrium on that table is polished the same way with every loaded roller solved
+exactly between its raceways at its load
+(:func:`linecontact.raceway.roller_between_raceways`, free to tilt): each roller's load,
+approach, tilt, moment and lamina loads, and the most loaded roller's peak pressure and
+stresses, are those of its own exact solve (kept as :attr:`BearingSolution.roller`);
+the polish's remaining residual, below 1e-9, is reported
 (:attr:`BearingSolution.law_error`).
 
 Tilting moment and misalignment
@@ -92,11 +96,12 @@ from .lubrication import (DEFAULT_FILM_FORMULA, FILM_FORMULAS, cage_speed,
                           film_ratio, minimum_film_dowson_higginson,
                           minimum_film_pan_hamrock, minimum_film_thickness,
                           rated_viscosity, viscosity_ratio)
-from .radial import (GRID_POINTS, PROFILED_POINTS, BearingSolution, RadialRollerBearing,
-                     load_zone_integral)
+from .radial import (GRID_POINTS, MAX_SLICES, PROFILED_POINTS, SLICE_COUNT,
+                     BearingSolution, RadialRollerBearing, load_zone_integral)
 from .ratings import (A_ISO_CAP, KAPPA_RANGE, PERMISSIBLE_PRESSURE, RELIABILITY_FACTORS,
-                      ReferenceLife, basic_rating_life, dynamic_load_rating,
+                      ROLLER_COUNT, ReferenceLife, basic_rating_life, dynamic_load_rating,
                       fatigue_load_limit, lamina_load_ratings, life_modification_factor,
+                      max_rollers,
                       modified_rating_life, modified_reference_rating_life,
                       pressure_safety_factor, reference_equivalent_load,
                       reference_rating_life, reliability_factor, roller_damage_shares,
@@ -114,6 +119,10 @@ __all__ = [
     "PROFILED_POINTS",
     # ratings (ratings.py): ISO 281, ISO 16281, ISO 76, life modification
     "dynamic_load_rating",
+    "max_rollers",
+    "ROLLER_COUNT",
+    "SLICE_COUNT",
+    "MAX_SLICES",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",

@@ -32,7 +32,8 @@ References
 .. [1] S. P. Timoshenko, J. N. Goodier, Theory of Elasticity, 3rd ed., McGraw-Hill
    (1970), section 28 (thick-walled cylinder).
 .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press
-   (2007): Essential Concepts, chapter 2 (interference fitting and clearance).
+   (2007): Essential Concepts, chapter 3 (interference fitting and clearance;
+   differential expansion).
 .. [3] SKF, Rolling bearings (PUB BU/P1 17000, 2018), "Bearing internal clearance"
    (the reduction by fits and temperature, about 70-90 % of the interference, and
    alpha dT d_m for a ring temperature difference).
@@ -189,7 +190,7 @@ def inner_raceway_expansion(interference, bore, raceway_diameter, ring_modulus,
     ----------
     .. [1] S. P. Timoshenko, J. N. Goodier, Theory of Elasticity (1970), section 28.
     .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 2.
+       Essential Concepts, chapter 3.
     """
     Es = ring_modulus if shaft_modulus is None else shaft_modulus
     vs = ring_poisson if shaft_poisson is None else shaft_poisson
@@ -256,7 +257,7 @@ def outer_raceway_contraction(interference, outside_diameter, raceway_diameter,
     ----------
     .. [1] S. P. Timoshenko, J. N. Goodier, Theory of Elasticity (1970), section 28.
     .. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 2.
+       Essential Concepts, chapter 3.
     """
     Eh = ring_modulus if housing_modulus is None else housing_modulus
     vh = ring_poisson if housing_poisson is None else housing_poisson
@@ -325,7 +326,7 @@ def thermal_clearance_change(inner_raceway_diameter, outer_raceway_diameter,
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 2.
+       Essential Concepts, chapter 3.
     .. [2] SKF, Rolling bearings (PUB BU/P1 17000, 2018), "Bearing internal
        clearance".
     """
@@ -382,7 +383,7 @@ def operating_clearance(clearance, inner_expansion=0.0, outer_contraction=0.0,
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 2.
+       Essential Concepts, chapter 3.
     """
     Pd = check_interval("clearance", clearance, -np.inf, np.inf, low_open=True,
                         high_open=True, unit="m")

@@ -35,10 +35,13 @@ References
 .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press
    (2007): Advanced Concepts, chapter 1 (cylindrical roller bearings under combined
    radial and axial load; roller end-flange contact).
-.. [2] P. Karna, "Roller end-flange contact in cylindrical roller bearings under
-   thrust load", ASLE Transactions 17 (1974) (the rib reaction and its contact
-   stress).
-.. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section
+.. [2] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007):
+   Essential Concepts, chapter 6 (contact stress and deformation: roller end-flange
+   contact stress).
+.. [3] C. L. Karna, "Performance characteristics at the rib roller end contact in
+   tapered roller bearings", ASLE Transactions 17 (1974) (the rib reaction and the
+   Hertz stress of the spherical roller end on the rib, for tapered roller bearings).
+.. [4] K. L. Johnson, Contact Mechanics, Cambridge University Press (1985), section
    4.2 (Hertz point contact).
 """
 from __future__ import annotations

@@ -36,9 +36,11 @@ class _Law:
         k = np.zeros_like(d)
         on = d > 0
         if np.any(d[on] > self.dtop * (1 + 1e-12)):
-            raise OutOfRangeError("roller approach", float(d.max()),
+            exc = OutOfRangeError("roller approach", float(d.max()),
                                   f"(0, {self.dtop:.6g}] m (the tabulated roller law)",
                                   unit="m", hint="a roller load beyond the law's range")
+            exc.top = self.dtop  # for the bearing's message in its user's words
+            raise exc
         if np.any(on):
             v, dv = self._hermite(np.log(d[on]), self.lnd, self.lnQ, self.s)
             Q[on] = np.exp(v)

@@ -39,7 +39,8 @@ References
    Lubrication, 2nd ed., Marcel Dekker, New York (2004), chapter 21 (rectangular
    conjunctions).
 .. [4] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed., CRC Press (2007):
-   Essential Concepts, chapter 8 (bearing kinematics).
+   Essential Concepts, the chapter on kinematic speeds (cage and rolling
+   element speeds).
 .. [5] ISO 281:2007, Rolling bearings - Dynamic load ratings and rating life, the rated
    viscosity nu1 as published in bearing catalogues, e.g. SKF, Rolling bearings
    (catalogue PUB BU/P1 17000, 2018), section "Viscosity ratio kappa", or Schaeffler,
@@ -52,12 +53,15 @@ import math
 import numpy as np
 
 from .._numerics import out
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from ..errors import UnknownNameError
 
 __all__ = [
     "DEFAULT_FILM_FORMULA",
     "FILM_FORMULAS",
+    "DENSITY",
+    "KINEMATIC_VISCOSITY",
+    "PRESSURE_VISCOSITY",
     "ehl_parameters",
     "minimum_film_pan_hamrock",
     "central_film_pan_hamrock",
@@ -78,6 +82,25 @@ FILM_FORMULAS = {
     "pan-hamrock": ("Pan & Hamrock (1989)", (1.714, -0.128, 0.694, 0.568)),
     "dowson-higginson": ("Dowson & Higginson (1977)", (2.65, -0.13, 0.70, 0.54)),
 }
+#: Accepted pressure-viscosity coefficients alpha [1/Pa]: lubricating oils lie near
+#: 1e-8 to 4e-8 1/Pa (10 to 40 GPa^-1; Hamrock, Schmid & Jacobson 2004, the chapter on
+#: lubricant viscosity); a value above 1e-7 is a unit slip (20 GPa^-1 given as the bare
+#: number 20 makes the film thousands of times too thick), refused.
+PRESSURE_VISCOSITY = Interval("pressure_viscosity", 0.0, 1e-7, low_open=True,
+                              unit="1/Pa")
+_ALPHA_HINT = ("alpha in 1/Pa: 20 GPa^-1 is 2e-8 1/Pa (lubricating oils lie near 1e-8 "
+               "to 4e-8)")
+#: Accepted lubricant densities [kg/m^3]: mineral and synthetic oils and greases' base
+#: oils lie near 800 to 1000 kg/m^3 (perfluorinated ones near 1900); outside 500-2500 is
+#: a unit slip (0.86 g/cm^3 given as the bare number 0.86 makes eta0 = rho nu a thousand
+#: times too small and the film some hundred times too thin), refused.
+DENSITY = Interval("density", 500.0, 2500.0, unit="kg/m^3")
+_DENSITY_HINT = "density in kg/m^3: 0.86 g/cm^3 is 860 kg/m^3"
+#: Accepted kinematic viscosities [m^2/s]: 1e-7 to 1e-1 m^2/s (0.1 to 1e5 mm^2/s, from
+#: a thin spindle oil to a heavy gear oil near its pour point); above that is a unit slip
+#: (68 mm^2/s given as the bare number 68 is 68 m^2/s), refused.
+KINEMATIC_VISCOSITY = Interval("viscosity", 1e-7, 1e-1, unit="m^2/s")
+_VISCOSITY_HINT = "kinematic viscosity in m^2/s: 68 mm^2/s (cSt) is 6.8e-5 m^2/s"
 #: Pan & Hamrock's (1989) central film h_c/R = c W'^w U^u G^g as (c, w, u, g).
 _PAN_HAMROCK_CENTRAL = (2.922, -0.166, 0.692, 0.470)
 
@@ -107,7 +130,8 @@ def ehl_parameters(speed, radius, load_per_length, estar, viscosity, pressure_vi
         Dynamic viscosity eta0 at the operating (inlet) temperature and ambient
         pressure, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -139,7 +163,7 @@ def ehl_parameters(speed, radius, load_per_length, estar, viscosity, pressure_vi
                        unit="N/m")
     E = 2.0 * check_positive("estar", estar, "Pa")
     eta = check_positive("viscosity", viscosity, "Pa s")
-    alpha = check_positive("pressure_viscosity", pressure_viscosity, "1/Pa")
+    alpha = PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT)
     U, G, W = np.broadcast_arrays(eta * u / (E * R), alpha * E, w / (E * R))
     return out(U), out(G), out(W)
 
@@ -177,7 +201,8 @@ def minimum_film_pan_hamrock(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -229,7 +254,8 @@ def central_film_pan_hamrock(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -278,7 +304,8 @@ def minimum_film_dowson_higginson(speed, radius, load_per_length, estar, viscosi
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
 
     Returns
     -------
@@ -330,7 +357,8 @@ def minimum_film_thickness(speed, radius, load_per_length, estar, viscosity,
     viscosity : float or array_like
         Dynamic viscosity eta0 at the operating temperature, 0 < eta0 < inf [Pa s].
     pressure_viscosity : float or array_like
-        Pressure-viscosity coefficient alpha, 0 < alpha < inf [1/Pa].
+        Pressure-viscosity coefficient alpha, 0 < alpha <= 1e-7
+        (:data:`PRESSURE_VISCOSITY`) [1/Pa].
     formula : str, optional
         ``"pan-hamrock"`` (default) or ``"dowson-higginson"``.
 
@@ -481,7 +509,8 @@ def entrainment_speed(inner_ring_speed, pitch_diameter, roller_diameter,
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 8 (cage and rolling element speeds).
+       Essential Concepts, the chapter on kinematic speeds (cage and rolling
+       element speeds).
     """
     wi = check_interval("inner_ring_speed", inner_ring_speed, -np.inf, np.inf,
                         low_open=True, high_open=True, unit="rad/s")
@@ -530,7 +559,7 @@ def cage_speed(inner_ring_speed, pitch_diameter, roller_diameter, outer_ring_spe
     References
     ----------
     .. [1] T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis, 5th ed. (2007),
-       Essential Concepts, chapter 8.
+       Essential Concepts, the chapter on kinematic speeds.
     """
     wi = check_interval("inner_ring_speed", inner_ring_speed, -np.inf, np.inf,
                         low_open=True, high_open=True, unit="rad/s")
@@ -569,8 +598,11 @@ def rated_viscosity(speed, pitch_diameter):
     The two-branch power law is the published fit of ISO 281's nu1 diagram (the
     viscosity needed for adequate lubrication at the operating temperature; mineral
     oils); at 1000 r/min (104.72 rad/s), where the second branch takes over, the
-    first gives 2.3 % more (the published fit's own step). Catalogue diagrams span roughly 2 to 100000 r/min and d_m of
-    10 to 2000 mm; no range is enforced beyond positivity.
+    first gives 2.3 % more (the published fit's own step). Catalogue diagrams span
+    roughly 2 to 100000 r/min and d_m of 10 to 2000 mm; no range is enforced beyond
+    positivity. The catalogues' d_m is the bearing's mean diameter (d + D)/2; the
+    bearing passes its pitch diameter, within a few percent of it for a cylindrical
+    roller bearing (nu1 ~ d_m^-0.5: half that in nu1).
 
     Examples
     --------

@@ -13,11 +13,13 @@ import numpy as np
 from .._numerics import serial_blas
 from ..models import DEFAULT_SLICE_MODEL, SLICE_MODELS
 from ..profiles import TILT_RANGE
-from ..raceway import Raceways, effective_radii, roller_between_raceways
+from ..raceway import (Raceways, _contacts_solution, effective_radii,
+                       roller_between_raceways)
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from .interpolant import _Law
-from .lubrication import DEFAULT_FILM_FORMULA, FILM_FORMULAS
+from .lubrication import (_ALPHA_HINT, _DENSITY_HINT, _VISCOSITY_HINT, DEFAULT_FILM_FORMULA,
+                          DENSITY, FILM_FORMULAS, KINEMATIC_VISCOSITY, PRESSURE_VISCOSITY)
 from .ratings import (_fits, _rollers, basic_rating_life, dynamic_load_rating,
                       reference_rating_life, static_load_rating)
 
@@ -27,12 +29,24 @@ __all__ = [
     "load_zone_integral",
     "GRID_POINTS",
     "PROFILED_POINTS",
+    "MAX_SLICES",
+    "SLICE_COUNT",
 ]
 
 #: Points of the roller-law grid of a straight roller under a law [-].
 GRID_POINTS = 160
 #: Tabulated loads of a profiled roller (coupled slices) [-].
 PROFILED_POINTS = 14
+#: Most slices per roller of a bearing [-]. The bearing solves each contact at
+#: PROFILED_POINTS depths, so its cost grows with the slice solver's (about n^3):
+#: measured for a 14-roller ISO-profiled bearing (d_m 65 mm, D 11 mm, L 12 mm) at
+#: 10 kN on 2 shared CPU cores: 50 slices 0.3-0.5 s, 100 0.4-0.6 s, 200 2-3.5 s, 400
+#: 24-44 s (and numpy's overflow warning from the solver's matmul), 1000 beyond 5 min;
+#: at 200 the displacement is within 5e-7 and the most loaded roller within 1.3e-6 of
+#: 400 slices' (50: 6.5e-5 and 1.4e-5), so more slices buy nothing measurable.
+MAX_SLICES = 200
+#: The slice counts a bearing accepts (an integer in it) [-].
+SLICE_COUNT = Interval("n_slices", 10, MAX_SLICES, False, False, "")
 #: Laminae for the rating life of a roller under a law (uniform line load) [-].
 LAMINAE = 20
 #: Upper bound of any roller load in units of F_r for Z >= 3: one roller at
@@ -109,42 +123,24 @@ def _laminae(sol, length, n):
     return np.diff(np.interp(np.linspace(-length / 2, length / 2, n + 1), edges, cum))
 
 
-def _worst_of(fields):
-    """The largest value of each stress measure over named contacts' stress results
-    (name -> SubsurfaceStresses): {"worst": {measure: {value, depth, x, contact}},
-    "notes": [...]}; a measure whose maximum is not converged in some contact (an
-    edge-loaded one) carries "withheld": the reason (its value is the slice width's)."""
-    from ..stresses import MEASURES
+def _one_roller(sol, i):
+    """Roller i of a :class:`~linecontact.raceway.RacewaySolution` solved for several
+    loads under a law (its per-load entries taken at i): that roller's own solve."""
+    from dataclasses import fields, replace
 
-    worst = {}
-    for m in MEASURES:
-        name, st = max(fields.items(), key=lambda kv: kv[1].worst[m]["value"])
-        w = st.worst[m]
-        worst[m] = {"value": float(w["value"]), "depth": float(w["z"]),
-                    "x": float(w["x"]), "contact": name}
-        held = [n for n, f in fields.items() if m in getattr(f, "withheld", {})]
-        if held:
-            worst[m]["withheld"] = (" and ".join(held) + " contact: "
-                                    + fields[held[0]].withheld[m])
-    notes = []
-    for name, st in fields.items():
-        notes.extend(f"stress ({name} contact): {t}" for t in st.notes)
-    held = sorted(m for m in MEASURES if "withheld" in worst[m])
-    if held:
-        notes.append("stress maxima not reported (" + ", ".join(held) + "): "
-                     + worst[held[0]]["withheld"])
-    return {"worst": worst, "notes": notes}
+    per_load = {f.name: getattr(sol, f.name) for f in fields(sol)}
+    return replace(sol, **{k: float(v[i]) for k, v in per_load.items()
+                           if isinstance(v, np.ndarray) and v.ndim == 1})
 
 
-def _contact_stresses(si, so, poisson, rollers=(None, None)):
-    """Subsurface stress maxima of one roller's two slice contacts
-    (:func:`linecontact.stresses.roller_stresses`, no traction); `rollers`: each
-    contact's (radius, length, estar, profile), so that the measured error is quoted
-    only inside the measured range."""
-    from ..stresses import roller_stresses
-
-    return _worst_of({"inner": roller_stresses(si, poisson=poisson, roller=rollers[0]),
-                      "outer": roller_stresses(so, poisson=poisson, roller=rollers[1])})
+def _ring_step(c, w, k, r, e):
+    """One Newton step of the ring equilibrium on (Q_j, delta_r), the rollers' law
+    linearised: delta(Q_j + dQ_j) = (delta_r + d delta_r) c_j - P_d/2 and
+    sum w_j (Q_j + dQ_j) c_j = F_r, for the residuals r_j = delta(Q_j) - (delta_r c_j -
+    P_d/2), e = F_r - sum w_j Q_j c_j (c_j = cos psi_j, w_j rollers alike, k_j =
+    dQ/d delta): (d delta_r, dQ_j)."""
+    ddr = (e + float(np.sum(w * k * c * r))) / float(np.sum(w * k * c ** 2))
+    return ddr, k * (c * ddr - r)
 
 
 @dataclass(frozen=True)
@@ -192,8 +188,11 @@ class BearingSolution:
     life_iso16281 : float
         ISO 16281 basic reference rating life L10r [-] (10^6 revolutions).
     law_error : float
-        Largest relative error of the tabulated roller law used for the roller loads
-        (0 after the exact polish of a law) [-].
+        Largest relative error of the roller law at the roller loads, |delta(Q_j) -
+        delta_j| / delta(Q_j) [-]: after the exact polish of the tabulated law, 0 for
+        a law (exact to round-off) and the polish's remaining residual for a slice
+        model (below 1e-9: the slice solves converge to 1e-10 in force); 0 under a
+        tilt (each roller solved exactly).
     model : str
         The contact law or slice model.
     notes : tuple of str
@@ -289,6 +288,19 @@ class BearingSolution:
         Shift M/(2 Q_j) of each raceway contact's load centre along the roller that
         balances the couple (0 where unloaded); beyond L/6 a rigid roller's line load
         would lift at one end [m].
+    roller : RacewaySolution
+        The most loaded roller between its raceways at its load
+        (:class:`~linecontact.raceway.RacewaySolution`): the exact solve its approach,
+        tilt, moment, peak pressure and stresses come from, the same solve as
+        :func:`~linecontact.raceway.roller_between_raceways` at Q_max (free to tilt,
+        the rings misaligned by theta cos psi_j at its azimuth). Not in
+        :meth:`to_dict`.
+    roller_stresses : RacewayStresses
+        The subsurface stresses of that roller's two contacts, ``"inner"`` and
+        ``"outer"`` (:class:`~linecontact.stresses.RacewayStresses`, a mapping to each
+        one's :class:`~linecontact.stresses.SubsurfaceStresses`, no traction): the
+        fields `stress` summarises; its ``case_check`` is the case check over both.
+        Not in :meth:`to_dict`.
 
     Notes
     -----
@@ -361,11 +373,16 @@ class BearingSolution:
     flange_rim_margin: np.ndarray = None
     flange_couple: np.ndarray = None
     flange_load_offset: np.ndarray = None
+    roller: object = None
+    roller_stresses: object = None
 
     def to_dict(self):
-        """The solution as plain Python (lists for arrays), SI units."""
+        """The solution as plain Python (lists for arrays), SI units (the solve objects
+        `roller` and `roller_stresses` left out)."""
         out = {}
         for k, v in self.__dict__.items():
+            if k in ("roller", "roller_stresses"):
+                continue
             if isinstance(v, np.ndarray):
                 v = v.tolist()
             elif isinstance(v, tuple):
@@ -380,7 +397,8 @@ class RadialRollerBearing:
     Parameters
     ----------
     rollers : int
-        Number of rollers Z, 3 <= Z [-].
+        Number of rollers Z, 3 <= Z, that fit on the pitch circle without overlapping
+        (d_m sin(pi/Z) > D; :func:`~linecontact.bearing.ratings.max_rollers`) [-].
     pitch_diameter : float
         Pitch diameter d_m > D [m].
     roller_diameter : float
@@ -401,7 +419,8 @@ class RadialRollerBearing:
     profile : str or Profile or None, optional
         The rollers' axial profile (:mod:`linecontact.profiles`); None: straight.
     n_slices : int, optional
-        Slices of the slice model, 10 <= n <= 1000 (ISO slicing: n >= 30) [-]
+        Slices of the slice model, an integer 10 <= n <= MAX_SLICES = 200 (ISO
+        slicing: n >= 30; converged long before, see MAX_SLICES) [-]
         (default None: the model's, as in every other door,
         :func:`linecontact.roller.solvers.default_n_slices`: 50 coupled slices, 30 ISO
         slicing; the laminae of the rating life of a sliced roller are as many).
@@ -423,7 +442,7 @@ class RadialRollerBearing:
         Density rho of the lubricant, 0 < rho < inf [kg/m^3]: the film's dynamic
         viscosity eta0 = rho nu (with `pressure_viscosity`).
     pressure_viscosity : float, optional
-        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha < inf [1/Pa]:
+        Pressure-viscosity coefficient alpha of the lubricant, 0 < alpha <= 1e-7 [1/Pa]:
         with `viscosity`, `density` and a speed, the EHL film of every contact.
     roughness_roller, roughness_raceway : float, optional
         RMS roughness Rq of the rollers and of the raceways, 0 <= Rq < inf [m]: the
@@ -489,7 +508,8 @@ class RadialRollerBearing:
 
     Notes
     -----
-    Valid for Z >= 3, 0 < D < d_m, |P_d| < D, within the contact law's range (its
+    Valid for 3 <= Z <= max_rollers(d_m, D), 0 < D < d_m, |P_d| < D, within the
+    contact law's range (its
     depth and L/R ranges; the universal curve to d <= 0.15 R). Centrifugal forces,
     ring deformation and roller skew are not modelled. The fits take the rings, the
     shaft and the housing of one material, E = 2 E* (1 - nu^2) from `estar` and
@@ -535,7 +555,7 @@ class RadialRollerBearing:
         self.pitch_diameter = float(check_positive("pitch_diameter", pitch_diameter, "m"))
         self.roller_diameter = float(check_positive("roller_diameter", roller_diameter,
                                                     "m"))
-        _fits(self.pitch_diameter, self.roller_diameter)
+        _fits(self.pitch_diameter, self.roller_diameter, self.rollers)
         self.length = float(check_positive("length", length, "m"))
         D = self.roller_diameter
         self.clearance = float(check_interval(
@@ -543,7 +563,13 @@ class RadialRollerBearing:
             hint="the clearance must be smaller than the roller diameter"))
         self.estar = float(check_positive("estar", estar, "Pa"))
         if n_slices is not None:
-            n_slices = int(check_interval("n_slices", n_slices, 10, 1000))
+            n = check_interval("n_slices", n_slices, 10, MAX_SLICES,
+                               hint="more slices change no result measurably and cost "
+                                    "minutes (MAX_SLICES)").item()
+            if n != int(n):
+                raise OutOfRangeError("n_slices", n, f"[10, {MAX_SLICES}], an integer",
+                                      hint="a slice count is never rounded")
+            n_slices = int(n)
         self.azimuth0 = float(check_interval("azimuth0", azimuth0, -math.pi, math.pi,
                                              unit="rad"))
         if rotating not in ("inner", "outer"):
@@ -711,10 +737,12 @@ class RadialRollerBearing:
         if all(v is None for v in given.values()):
             return None
         lub = {"film_formula": film_formula, "fatigue_load_limit": fatigue_load_limit}
-        for name, unit in (("viscosity", "m^2/s"), ("density", "kg/m^3"),
-                           ("pressure_viscosity", "1/Pa")):
+        for name, interval, hint in (("viscosity", KINEMATIC_VISCOSITY, _VISCOSITY_HINT),
+                                     ("density", DENSITY, _DENSITY_HINT)):
             v = given[name]
-            lub[name] = None if v is None else float(check_positive(name, v, unit))
+            lub[name] = None if v is None else float(interval.check(v, hint=hint))
+        lub["pressure_viscosity"] = None if pressure_viscosity is None else float(
+            PRESSURE_VISCOSITY.check(pressure_viscosity, hint=_ALPHA_HINT))
         for name in ("roughness_roller", "roughness_raceway"):
             v = given[name]
             lub[name] = None if v is None else float(check_interval(
@@ -905,12 +933,8 @@ class RadialRollerBearing:
         return np.asarray(s.deflection), np.asarray(s.stiffness), s
 
     def _contacts(self):
-        """(solve at depth, solve at force) of the inner and the outer contact."""
-        out = []
-        for c in self._solvers():
-            out.append((lambda d, c=c: c.at_depth(d, 0.0),
-                        lambda F, c=c: c.at_force(F, 0.0)))
-        return out
+        """The aligned solves at depth of the inner and the outer contact."""
+        return [lambda d, c=c: c.at_depth(d, 0.0) for c in self._solvers()]
 
     def _solvers(self):
         """The slice solvers of the inner and the outer contact of one roller (fresh:
@@ -992,8 +1016,9 @@ class RadialRollerBearing:
 
         Parameters
         ----------
-        radial_load : float
-            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller).
+        radial_load : float or array_like
+            Radial load F_r, 0 < F_r < inf [N] (zero or less lifts every roller); an
+            array gives an object array of solutions of its shape, one per load.
         moment : float, optional
             Tilting moment M on the inner ring about the axis normal to the load plane,
             |M| < inf [N m]: the ring tilt theta is solved with delta_r (2 DOF).
@@ -1013,7 +1038,7 @@ class RadialRollerBearing:
 
         Returns
         -------
-        BearingSolution
+        BearingSolution or ndarray of BearingSolution
 
         Raises
         ------
@@ -1021,7 +1046,9 @@ class RadialRollerBearing:
             Both `moment` and `misalignment`; either with a straight-cylinder law named
             as the model (a law has no tilt: use ``model="profiled-roller"``).
         OutOfRangeError
-            A load that lifts every roller, or one beyond the contact law's range.
+            A load that lifts every roller, or one beyond the contact law's range; a
+            preload (clearance < 0) that alone presses the rollers beyond it, named as
+            the clearance.
 
         Notes
         -----
@@ -1040,18 +1067,59 @@ class RadialRollerBearing:
         >>> f"{s.roller_loads @ np.cos(s.azimuth) / 10e3:.12f}"
         '1.000000000000'
         """
+        if not isinstance(radial_load, str) and np.ndim(radial_load) > 0:
+            loads = check_interval(
+                "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
+                unit="N", hint="a radial load of zero or less lifts every roller")
+            out = np.empty(np.shape(loads), dtype=object)
+            for idx, f in np.ndenumerate(loads):
+                out[idx] = self.solve(float(f), moment, misalignment, speed=speed,
+                                      axial_load=axial_load)
+            return out
+        try:
+            return self._solve(radial_load, moment, misalignment, speed, axial_load)
+        except OutOfRangeError as exc:
+            top = getattr(exc, "top", None)
+            if top is None or not -self.clearance / 2 >= top:
+                raise
+            given = getattr(self, "internal_clearance", self.clearance)
+            fitted = ("" if given == self.clearance else
+                      f" (the operating clearance after the fits: {self.clearance:.3g} m)")
+            raise OutOfRangeError(
+                "clearance", given,
+                f"(-{2 * top:.3g}, {self.roller_diameter:.3g}) m at F_r = "
+                f"{float(radial_load):.6g} N{fitted}", unit="m",
+                hint=f"a preload presses every roller by -P_d/2 = "
+                     f"{-self.clearance / 2 * 1e6:.4g} um before any load, beyond the "
+                     f"roller's range at this load ({top * 1e6:.4g} um); preloads are "
+                     "a few micrometres") from None
+
+    def _solve(self, radial_load, moment, misalignment, speed, axial_load,
+               at_rest=False):
+        """:meth:`solve` of one radial load; `at_rest`: a duty cycle's case at
+        standstill (:func:`linecontact.bearing.spectrum.solve_spectrum`), solved
+        without the film, kappa and the modified lives, which need the rings to turn
+        (it takes no revolutions, so no fatigue damage)."""
         F = float(check_interval(
             "radial_load", radial_load, 0.0, np.inf, low_open=True, high_open=True,
             unit="N", hint="a radial load of zero or less lifts every roller"))
-        if speed is not None:
+        if at_rest:
+            speed = None
+        elif speed is not None:
             speed = float(check_interval("speed", speed, -np.inf, np.inf, low_open=True,
                                          high_open=True, unit="rad/s"))
         elif self.lubricant is not None:
             raise CombinationError({"speed": None, "viscosity": self.lubricant[
                 "viscosity"]}, "the lubricant's film and kappa need the inner ring's "
                 "speed: give solve(..., speed=)")
-        return self._extras(self._solve_load(F, moment, misalignment), speed,
-                            axial_load)
+        sol = self._extras(self._solve_load(F, moment, misalignment), speed, axial_load)
+        if at_rest:
+            from dataclasses import replace
+
+            sol = replace(sol, speed=0.0, entrainment_speed=0.0, notes=sol.notes + (
+                "at standstill: no film, kappa or modified life (they need the rings "
+                "to turn); no revolutions, so no fatigue damage in the duty cycle",))
+        return sol
 
     def _solve_load(self, F, moment, misalignment):
         """The load distribution under F_r and a moment or misalignment."""
@@ -1088,14 +1156,16 @@ class RadialRollerBearing:
             label = sol.model if sol is not None else self.model
             c = np.cos(self.azimuth)
             K = np.array([[float(np.sum(k * c * c))]])
-            stress = self._law_stresses(float(np.max(Q)))
+            roller = _one_roller(sol, int(np.argmax(np.asarray(sol.force))))
+            Mj, tj = np.zeros(self.rollers), np.zeros(self.rollers)
         else:
-            (dr, Q, k, approach, x, qi, qo, pp, law_error, label, K,
-             worst) = self._solve_sliced(F)
-            stress = _contact_stresses(*worst, self.poisson, self._stress_rollers())
+            (dr, Q, k, approach, x, qi, qo, pp, law_error, label, K, roller, Mj, tj,
+             more) = self._solve_sliced(F)
+            notes.extend(more)
             if not math.isfinite(pp):
                 notes.append("peak pressure not reported: the most loaded roller is "
                              "edge loaded (a singular pressure on a half-space)")
+        fields = self._roller_stresses(roller)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
         zone = math.acos(max(-1.0, min(1.0, self.clearance / (2 * dr)))) if dr > 0 \
             else math.pi
@@ -1103,7 +1173,7 @@ class RadialRollerBearing:
             zone = math.pi
         life16281 = reference_rating_life(self.rating, self.pitch_diameter,
                                           self.roller_diameter, qi, qo, self.rotating)
-        notes.extend(stress["notes"])
+        notes.extend(fields.notes)
         Z = self.rollers
         return BearingSolution(
             radial_load=F, displacement=float(dr), azimuth=self.azimuth.copy(),
@@ -1113,9 +1183,9 @@ class RadialRollerBearing:
             slice_loads_outer=qo, rating=self.rating,
             life_iso281=basic_rating_life(self.rating, F),
             life_iso16281=life16281, law_error=float(law_error), model=label,
-            notes=tuple(notes), moment=0.0, tilt=0.0, roller_moments=np.zeros(Z),
-            roller_tilts=np.zeros(Z), roller_misalignment=np.zeros(Z),
-            stress=stress["worst"])
+            notes=tuple(notes), moment=0.0, tilt=0.0, roller_moments=Mj,
+            roller_tilts=tj, roller_misalignment=np.zeros(Z),
+            stress=fields.worst, roller=roller, roller_stresses=fields)
 
     def _tilt_model(self, moment, misalignment):
         """This bearing if its model solves tilted rollers by slices; else, with no
@@ -1135,26 +1205,15 @@ class RadialRollerBearing:
             profile=self.profile, n_slices=self.n_slices, azimuth0=self.azimuth0,
             rating=self.rating, rotating=self.rotating, poisson=self.poisson)
 
-    def _stress_rollers(self):
-        """The inner and the outer contact as equivalent rollers on a flat (effective
-        radius, length, E*, profile) for the stress table's range check."""
-        from types import SimpleNamespace
+    def _roller_stresses(self, roller):
+        """Subsurface stresses of one roller's two contacts (`roller`: its
+        :class:`~linecontact.raceway.RacewaySolution`), no traction, with the rings'
+        Poisson's ratio: :func:`linecontact.stresses.raceway_stresses` (each contact's,
+        the worse per measure and the case check over both)."""
+        from ..stresses import raceway_stresses
 
-        radii = effective_radii(self.roller_diameter / 2, self.raceways.inner,
-                                self.raceways.outer)
-        return tuple(SimpleNamespace(radius=R, length=self.length, estar=self.estar,
-                                     profile=self.profile) for R in radii)
-
-    def _law_stresses(self, Q):
-        """Subsurface stresses of the most loaded roller under a law: the plane-strain
-        Hertz strip of each contact at the mean line load Q/L."""
-        from ..stresses import line_contact_stresses
-
-        R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
-                                      self.raceways.outer)
-        return _worst_of({name: line_contact_stresses(Q, R, self.length, self.estar,
-                                                      poisson=self.poisson)
-                          for name, R in (("inner", R_in), ("outer", R_out))})
+        return raceway_stresses(roller, self.length, self.estar, self.profile,
+                                poisson=self.poisson)
 
     def _tilted_load_zone(self, dr, th, first, points=721):
         """Half the azimuth range where a roller would be loaded,
@@ -1203,8 +1262,13 @@ class RadialRollerBearing:
                          "slice width (not converged)")
         jm = int(np.argmax(Q))
         si, so = sols[inverse[jm]]
-        stress = _contact_stresses(si, so, self.poisson, self._stress_rollers())
-        notes.extend(stress["notes"])
+        R_in, R_out = effective_radii(self.roller_diameter / 2, self.raceways.inner,
+                                      self.raceways.outer)
+        roller = _contacts_solution(self.model, si, so, R_in, R_out,
+                                    float(th * c[jm]), True,
+                                    self.raceways.check_fit(self.roller_diameter / 2))
+        fields = self._roller_stresses(roller)
+        notes.extend(fields.notes)
         approach = dr * c - self.clearance / 2
         zone = self._tilted_load_zone(dr, th, first)
         eps = 0.5 * (1 - self.clearance / (2 * dr)) if dr > 0 else math.inf
@@ -1221,7 +1285,8 @@ class RadialRollerBearing:
             life_iso281=basic_rating_life(self.rating, F), life_iso16281=life,
             law_error=0.0, model=label, notes=tuple(notes),
             moment=float(Mj @ c), tilt=float(th), roller_moments=Mj, roller_tilts=tj,
-            roller_misalignment=th * c, stress=stress["worst"])
+            roller_misalignment=th * c, stress=fields.worst, roller=roller,
+            roller_stresses=fields)
 
     def _polish(self, law, dr, F):
         """Newton on (Q_j loaded, delta_r) with the exact law (the grid's interpolation
@@ -1235,8 +1300,7 @@ class RadialRollerBearing:
             d, kk, sol = self._exact(Q[on])
             r = d - (dr * c[on] - self.clearance / 2)
             e = F - float(np.sum(Q[on] * c[on]))
-            ddr = (e + float(np.sum(kk * c[on] * r))) / float(np.sum(kk * c[on] ** 2))
-            dQ = kk * (c[on] * ddr - r)
+            ddr, dQ = _ring_step(c[on], 1.0, kk, r, e)
             step = 1.0
             neg = Q[on] + dQ <= 0
             if np.any(neg):  # a roller leaves the load zone: drop it and start again
@@ -1255,6 +1319,71 @@ class RadialRollerBearing:
         k[on] = kk
         return dr, Q, k, self._approach(dr), sol
 
+    def _roller(self, Q):
+        """One roller between the bearing's raceways at load Q [N], aligned rings,
+        free to tilt: :func:`~linecontact.raceway.roller_between_raceways` with the
+        bearing's model, profile and slices (the per-roller reference)."""
+        if not self.sliced:
+            return roller_between_raceways(self.roller_diameter / 2, self.length,
+                                           self.estar, self.raceways, force=Q,
+                                           model=self.model)
+        return roller_between_raceways(self.roller_diameter / 2, self.length,
+                                       self.estar, self.raceways, force=Q,
+                                       model=self.model, profile=self.profile,
+                                       tilt="free", n_slices=self.n_slices)
+
+    def _polish_rollers(self, law, dr, F, tol=1e-9):
+        """Newton on (Q_j of the loaded rollers, delta_r) with each roller solved
+        exactly between its raceways (:meth:`_roller`, the per-roller reference), from
+        the tabulated law's equilibrium delta_r; rollers of equal cos psi (+psi and
+        -psi) solved once. Stops when every loaded roller's deflection meets its ring
+        approach to `tol` relative (the slice solves converge to 1e-10 in force) and
+        the loads balance F_r to round-off; a roller that leaves the load zone is
+        dropped, one the ring reaches joins it.
+
+        Returns (delta_r, Q_g, k_g, solutions_g, residual, groups of the rollers,
+        cos psi_g, rollers per group), per group of equal cos psi; solutions_g None
+        where unloaded; residual: the largest relative |delta(Q_g) - delta_g|."""
+        c = np.cos(self.azimuth)
+        _, first, inverse = np.unique(np.round(c, 12), return_index=True,
+                                      return_inverse=True)
+        cg = c[first]
+        w = np.bincount(inverse).astype(float)
+        P = self.clearance / 2
+        edge = 1e-12 * (abs(dr) + abs(self.clearance))   # as _approach: 0 below
+        a = dr * cg - P
+        Q = law.force(np.where(np.abs(a) <= edge, 0.0, a))[0]
+        on = Q > 0
+        k = np.zeros_like(Q)
+        sols = [None] * len(cg)
+        worst = math.inf
+        for it in range(31):
+            idx = np.flatnonzero(on)
+            for g in idx:
+                if sols[g] is None or sols[g].force != Q[g]:
+                    sols[g] = self._roller(float(Q[g]))
+            d = np.array([sols[g].deflection for g in idx])
+            k[idx] = [sols[g].stiffness for g in idx]
+            r = d - (dr * cg[idx] - P)
+            e = F - float(np.sum(w[idx] * Q[idx] * cg[idx]))
+            worst = float(np.max(np.abs(r) / d))
+            enter = ~on & (dr * cg - P > 1e-12 * (abs(dr) + abs(self.clearance)))
+            if it == 30 or (not np.any(enter) and worst <= tol and abs(e) <= 1e-12 * F):
+                break
+            if np.any(enter):  # the ring reaches an unloaded roller: load it
+                on |= enter
+                Q[enter] = law.force(dr * cg[enter] - P)[0]
+                continue
+            ddr, dQ = _ring_step(cg[idx], w[idx], k[idx], r, e)
+            neg = Q[idx] + dQ <= 0
+            if np.any(neg):  # a roller leaves the load zone: drop it and start again
+                for g in idx[neg]:
+                    on[g], Q[g], k[g], sols[g] = False, 0.0, 0.0, None
+                continue
+            Q[idx] += dQ
+            dr += ddr
+        return dr, Q, k, sols, worst, inverse, cg, w
+
     def _universal_start(self, F):
         """The same bearing with the universal-curve law (a straight roller) at the
         radial load F: the bearing, its roller law, its delta_r and the law grid's
@@ -1271,11 +1400,13 @@ class RadialRollerBearing:
     def _solve_sliced(self, F):
         """Profiled rollers: each contact's coupled-slice solution tabulated over the
         depths the bearing needs (the load range first estimated with the universal
-        curve), the two in series at equal load, inverted like a law."""
+        curve), the two in series at equal load, inverted like a law; the ring
+        equilibrium on that table polished with exact solves of the loaded rollers
+        (:meth:`_polish_rollers`), whose solves give every per-roller output."""
         est, law0, dr0, s0 = self._universal_start(F)
         Qmax0 = float(np.max(law0.force(est._approach(dr0))[0]))
         lo, hi = 1e-3 * Qmax0, 1.6 * Qmax0
-        (dep_i, force_i), (dep_o, force_o) = self._contacts()
+        dep_i, dep_o = self._contacts()
         lnQ0 = law0.lnQ
         tables = []
         for dep, straight in ((dep_i, s0.depth_inner), (dep_o, s0.depth_outer)):
@@ -1298,44 +1429,39 @@ class RadialRollerBearing:
         k = 1.0 / (1.0 / np.array([r.stiffness for r in ti]) + 1.0 / k_out)
         law = _Law(Fi, delta, k)
         dr = self._equilibrium(law, F)
-        approach = self._approach(dr)
-        Q, kj = law.force(approach)
-        inner = _Law(Fi, np.array([r.depth for r in ti]),
-                     np.array([r.stiffness for r in ti]))
-        L = self.length
-        n_lam = self.n_slices
+        # the tabulated equilibrium polished with exact solves of the loaded rollers:
+        # every roller's load, approach, tilt, moment and contacts are those of
+        # roller_between_raceways at its load
+        dr, Qg, kg, sols, residual, inverse, cg, w = self._polish_rollers(law, dr, F)
+        L, n_lam = self.length, self.n_slices
         x = (np.arange(n_lam) + 0.5) / n_lam * L - L / 2
-        qi = np.zeros((self.rollers, n_lam))
+        qi = np.zeros((len(cg), n_lam))
         qo = np.zeros_like(qi)
-        pp = -math.inf
+        Mg, tg = np.zeros(len(cg)), np.zeros(len(cg))
         K = np.zeros((2, 2))
-        c = np.cos(self.azimuth)
-        # each loaded roller's two contacts solved at their tabulated depths (the load
-        # then differs from Q_j by the table's interpolation error, law_error: the
-        # lamina loads are scaled to Q_j); rollers of equal load (+psi and -psi) solved
-        # once. The 2x2 stiffness: each roller's two contacts in series as 2x2
-        # matrices, (K_in^-1 + K_out^-1)^-1 (the roller free to tilt), summed with
-        # cos^2 psi_j (docs/bearings.md).
-        done = {}
-        for j in np.flatnonzero(Q > 0):
-            key = float(f"{Q[j]:.12e}")
-            if key not in done:
-                ri = dep_i(float(inner.delta_of(Q[j])))
-                ro = dep_o(float(outer.delta_of(Q[j])))
-                Ki, Ko = (np.asarray(r.stiffness_matrix) for r in (ri, ro))
-                done[key] = (_laminae(ri, L, n_lam) * Q[j] / ri.force,
-                             _laminae(ro, L, n_lam) * Q[j] / ro.force,
-                             max(ri.p_max if ri.p_max is not None else math.nan,
-                                 ro.p_max if ro.p_max is not None else math.nan),
-                             Ki @ np.linalg.solve(Ki + Ko, Ko), (ri, ro))
-            qi[j], qo[j], p, kser, pair = done[key]
-            K += c[j] ** 2 * kser
-            if Q[j] == np.max(Q):
-                pp, worst = p, pair
-        jm = int(np.argmax(Q))
-        law_error = self._table_error(law, (force_i, force_o), Fi, Q[jm])
-        label = f"{self.model} ({ti[0].method}, {ti[0].n_slices} slices)"
-        return dr, Q, kj, approach, x, qi, qo, pp, law_error, label, K, worst
+        # the 2x2 stiffness: each roller's two contacts in series as 2x2 matrices,
+        # (K_in^-1 + K_out^-1)^-1 (the roller free to tilt), summed with cos^2 psi_j
+        # (docs/bearings.md)
+        for g, sol in enumerate(sols):
+            if sol is None:
+                continue
+            qi[g] = _laminae(sol.inner, L, n_lam)
+            qo[g] = _laminae(sol.outer, L, n_lam)
+            Mg[g], tg[g] = sol.moment_inner, sol.tilt
+            Ki, Ko = (np.asarray(c.stiffness_matrix) for c in (sol.inner, sol.outer))
+            K += w[g] * cg[g] ** 2 * (Ki @ np.linalg.solve(Ki + Ko, Ko))
+        Q = Qg[inverse]
+        roller = sols[inverse[int(np.argmax(Q))]]
+        p_in, p_out = roller.peak_pressure_inner, roller.peak_pressure_outer
+        pp = (math.nan if p_in is None or p_out is None      # edge loaded: not reported
+              else max(float(p_in), float(p_out)))
+        notes = []
+        if residual > 1e-9:
+            notes.append(f"the exact polish of the roller loads stopped at a relative "
+                         f"residual of {residual:.2g} (30 Newton steps)")
+        label = f"{self.model} ({roller.inner.method}, {roller.inner.n_slices} slices)"
+        return (dr, Q, kg[inverse], self._approach(dr), x, qi[inverse], qo[inverse],
+                pp, residual, label, K, roller, Mg[inverse], tg[inverse], notes)
 
     # -- tilting moment and misalignment -----------------------------------------
     def _contact_pair(self):
@@ -1471,13 +1597,3 @@ class RadialRollerBearing:
                 "rad; a moment near the rollers' capacity, about F_r L/2, edge loads "
                 "them)")
         return dr, th, c, inverse, sols, K, ks, first
-
-    @staticmethod
-    def _table_error(law, solvers, Fi, Qmax):
-        """Relative error of the interpolated delta(Q) at the geometric midpoint of the
-        table interval holding the largest roller load (one extra pair of slice
-        solves): the interpolant's error is largest between the nodes."""
-        i = int(np.clip(np.searchsorted(Fi, Qmax) - 1, 0, len(Fi) - 2))
-        Fm = math.sqrt(Fi[i] * Fi[i + 1])
-        si, so = solvers[0](Fm), solvers[1](Fm)
-        return abs(float(law.delta_of(Fm)) / (si.depth + so.depth) - 1.0)

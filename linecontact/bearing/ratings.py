@@ -64,11 +64,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._numerics import out
-from ..checks import check_interval, check_positive
+from ..checks import Interval, check_interval, check_positive
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 
 __all__ = [
     "dynamic_load_rating",
+    "max_rollers",
+    "ROLLER_COUNT",
     "basic_rating_life",
     "reference_rating_life",
     "lamina_load_ratings",
@@ -134,7 +136,8 @@ def dynamic_load_rating(rollers, pitch_diameter, roller_diameter, length, b_m=1.
 
     Notes
     -----
-    Valid for Z >= 3, 0 < D_we < D_pw < inf, 0 < L_we < inf. The formula reproduces
+    Valid for Z >= 3 rollers that fit (D_pw sin(pi/Z) > D_we), 0 < D_we < D_pw < inf,
+    0 < L_we < inf. The formula reproduces
     ISO 281's Table of f_c (84.2 at gamma = 0.10, 74.1 at 0.05); a catalogue's C_r
     may differ (manufacturers' own b_m, profile and material).
 
@@ -153,7 +156,7 @@ def dynamic_load_rating(rollers, pitch_diameter, roller_diameter, length, b_m=1.
     Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
     Lwe = float(check_positive("length", length, "m"))
     bm = float(check_interval("b_m", b_m, 0.0, 2.0, low_open=True))
-    _fits(Dpw, Dwe)
+    _fits(Dpw, Dwe, Z)
     g = Dwe / Dpw
     fc = (207.9 * 0.83 * g ** (2 / 9) * (1 - g) ** (29 / 27) / (1 + g) ** 0.25
           * (1 + (1.04 * ((1 - g) / (1 + g)) ** (143 / 108)) ** 4.5) ** (-2 / 9))
@@ -256,7 +259,7 @@ def lamina_load_ratings(rating, rollers, pitch_diameter, roller_diameter, lamina
     Dpw = float(check_positive("pitch_diameter", pitch_diameter, "m"))
     Dwe = float(check_positive("roller_diameter", roller_diameter, "m"))
     n = int(check_interval("laminae", laminae, 1, 1e6))
-    _fits(Dpw, Dwe)
+    _fits(Dpw, Dwe, Z)
     g = Dwe / Dpw
     ratio = 1.038 * ((1 - g) / (1 + g)) ** (143 / 108)  # C_i / C_e
     Ci = C * (1 + ratio ** 4.5) ** (2 / 9)
@@ -1012,6 +1015,11 @@ def modified_reference_rating_life(rating, pitch_diameter, roller_diameter,
                          reliability_factor=a1, life=a1 * a * L10r)
 
 
+#: The roller counts of a bearing: an integer from 3 (the most that fit on a pitch
+#: circle: :func:`max_rollers`) [-].
+ROLLER_COUNT = Interval("rollers", 3, math.inf, False, True, "")
+
+
 def _rollers(rollers):
     z = check_interval("rollers", rollers, 3, 100000)
     if float(z) != int(z):
@@ -1019,8 +1027,51 @@ def _rollers(rollers):
     return int(z)
 
 
-def _fits(Dpw, Dwe):
+def max_rollers(pitch_diameter, roller_diameter):
+    """The most rollers of diameter D that fit on the pitch circle d_m without
+    overlapping: the largest Z with d_m sin(pi/Z) > D (the chord between neighbouring
+    centres longer than a roller's diameter).
+
+    Parameters
+    ----------
+    pitch_diameter : float
+        Pitch diameter d_m > D [m].
+    roller_diameter : float
+        Roller diameter D > 0 [m].
+
+    Returns
+    -------
+    int
+        The largest Z that fits [-] (below 3: no bearing of these sizes).
+
+    Notes
+    -----
+    Valid for 0 < D < d_m; geometry only (a cage needs more room: a real bearing
+    holds fewer).
+
+    Examples
+    --------
+    >>> max_rollers(65e-3, 11e-3), max_rollers(70e-3, 11e-3)
+    (18, 19)
+    """
+    ratio = roller_diameter / pitch_diameter
+    z = int(math.pi / math.asin(min(ratio, 1.0)))
+    while z >= 3 and not pitch_diameter * math.sin(math.pi / z) > roller_diameter:
+        z -= 1
+    return z
+
+
+def _fits(Dpw, Dwe, Z=None):
+    """Refuse a roller not smaller than the pitch diameter and, with `Z`, rollers that
+    overlap on the pitch circle (:func:`max_rollers`)."""
     if not Dpw > Dwe:
         raise OutOfRangeError("pitch_diameter", Dpw, f"({Dwe:.6g}, inf) m", unit="m",
                               hint="the pitch diameter must exceed the roller diameter "
                                    "(the inner raceway diameter d_m - D is positive)")
+    if Z is not None and not Dpw * math.sin(math.pi / Z) > Dwe:
+        most = max_rollers(Dpw, Dwe)
+        raise OutOfRangeError(
+            "rollers", Z, f"[3, {most}] (for d_m = {Dpw * 1e3:.6g} mm, "
+            f"D = {Dwe * 1e3:.6g} mm)", hint=f"{Z} rollers overlap: neighbouring centres "
+            f"are d_m sin(pi/Z) = {Dpw * math.sin(math.pi / Z) * 1e3:.4g} mm apart, less "
+            f"than the roller diameter; at most {most} fit")

@@ -267,7 +267,8 @@ class SpectrumSolution:
         u_i of each case [-].
     lives : dict
         Life kind (:data:`LIFE_KINDS`) -> each case's life L_i [-] (10^6
-        revolutions); only the kinds every case has.
+        revolutions); only the kinds every turning case has (nan for a case at
+        standstill that has none: its modified lives need the rings to turn).
     damage : dict
         Life kind -> each case's share d_i of the damage, summing to 1 [-].
     life : dict
@@ -340,6 +341,9 @@ def solve_spectrum(bearing, cases, shares="time"):
     -----
     Each case solved as if it acted alone (:meth:`RadialRollerBearing.solve`), linear
     damage accumulation (:func:`duty_cycle_life`), independent of the cases' order.
+    A case at standstill (shares of time, speed 0) takes no revolutions and no
+    damage; it is solved for its load distribution and static safety, without the
+    film, kappa and modified lives (nan in `lives`), which need the rings to turn.
     Speeds only convert shares of time and give the film and kappa; a case's
     direction of rotation does not matter to the lives.
 
@@ -378,17 +382,26 @@ def solve_spectrum(bearing, cases, shares="time"):
                                     f"{missing}"}, "shares of time need each case's "
                                    "speed (or give shares='revolutions')")
         speeds = np.abs(np.array([c.speed for c in cases], dtype=float))
+    # a case at standstill (shares of time, speed 0) takes no revolutions: solved
+    # without the film, kappa and modified lives (undefined without rotation), it
+    # enters the combination with no damage
+    at_rest = [speeds is not None and speeds[i] == 0.0 for i in range(len(cases))]
     sols = tuple(bearing.solve(c.radial_load, c.moment, c.misalignment, speed=c.speed,
-                               axial_load=c.axial_load) for c in cases)
+                               axial_load=c.axial_load) if not rest else
+                 bearing._solve(c.radial_load, c.moment, c.misalignment, None,
+                                c.axial_load, at_rest=True)
+                 for c, rest in zip(cases, at_rest))
     lives, damage, life, hours = {}, {}, {}, ({} if speeds is not None else None)
     u = None
     for kind, attr in LIFE_KINDS.items():
         Li = [getattr(s, attr) for s in sols]
-        if any(v is None for v in Li):
+        if any(v is None and not rest for v, rest in zip(Li, at_rest)):
             continue
+        Li = [math.inf if v is None else v for v in Li]
         d = duty_cycle_life(Li, share, speeds)
         u = d.revolution_shares
-        lives[kind] = np.array(Li, dtype=float)
+        lives[kind] = np.array([math.nan if v is None else v for v in
+                                (getattr(s, attr) for s in sols)], dtype=float)
         damage[kind] = d.damage_shares
         life[kind] = d.life
         if hours is not None:

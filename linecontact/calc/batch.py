@@ -329,6 +329,11 @@ def run_batch(args, argv, specs, options, table=CALC):
     and result columns; the reading, the checks of the file and of the options
     against the cells, and the writing are the same for every command."""
     PARAMETERS, BY_NAME = table.parameters, table.by_name
+    if getattr(args, "linear", False):
+        # a batch has one value per cell, no sweep to space: --linear would do nothing
+        raise BatchError("--linear spaces the values of a sweep, and a CSV batch has "
+                         "none (one value per row): drop --linear, or give the sweep "
+                         "without the CSV")
     header, body, lines = read_table(args.csv)
     n = len(body)
     names = [h.strip().lower() for h in header]
@@ -342,11 +347,12 @@ def run_batch(args, argv, specs, options, table=CALC):
     if not known and not any(v is not None for v in options.values()):
         raise BatchError(f"{str(args.csv)!r}: no case columns; expected some of: "
                          + ", ".join(p.name for p in PARAMETERS))
-    # a row longer than the header keeps its extra cells under unnamed columns, so the
-    # result columns stay aligned; a shorter row is padded with empty cells
+    # a row longer than the header keeps its extra cells under columns named by their
+    # place (extra_5: the 5th cell; no column without a name), so the result columns
+    # stay aligned; a shorter row is padded with empty cells
     flat = isinstance(body, _FlatRows)  # rectangular: every row as wide as the header
     width = len(header) if flat else max(len(header), max(map(len, body)))
-    header = list(header) + [""] * (width - len(header))
+    header = list(header) + _extra_names(header, width)
     full = flat or min(map(len, body)) >= width  # no short row (the usual case)
     transposed = None
     cells = {}
@@ -384,6 +390,13 @@ def run_batch(args, argv, specs, options, table=CALC):
                 conflicts[p.name] = (opt, si, [bool(c.strip()) for c in col])
             col = [c if c.strip() else opt for c in col]
         cells[p.name] = col
+    # an input written to the JSON output only, given without --json (as an option or
+    # in any cell of its column): refused once, before any row is computed
+    render.refuse_json_only(
+        PARAMETERS, {p.name: next((c for c in cells[p.name] if c.strip()), None)
+                     for p in PARAMETERS if p.json_only and p.name in cells},
+        args.json, lambda name: (option_name(name) if options.get(name) is not None
+                                 else f"column {header[known[name]]!r}"))
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})
@@ -712,6 +725,19 @@ def _result_cells_by_row(getters):
 
     return [template % row if ok else slow(i)
             for i, (row, ok) in enumerate(zip(zip(*cols), finite.tolist()))]
+
+
+def _extra_names(header, width):
+    """Names of the columns of the cells beyond the header (a row longer than it):
+    ``extra_K`` for the K-th cell of a row, ``_`` prepended while the name is taken."""
+    taken = {h.strip().lower() for h in header}
+    names = []
+    for k in range(len(header) + 1, width + 1):
+        name = f"extra_{k}"
+        while name in taken:
+            name = "_" + name
+        names.append(name)
+    return names
 
 
 def _quote(text):

@@ -62,11 +62,18 @@ CORE = (
               bounds="POISSON_RATIO"),
     Parameter("estar", "pressure", "effective modulus E* of Eq. 3 (instead of the moduli)",
               _BODY, plausible=_MODULUS),
-    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N", _LOAD,
-              plausible=_FORCE),
+    Parameter("load", "force", "normal force F per contact, or a sweep START:STOP:N "
+              "(> 0; zero or tensile only where a feature gives it a meaning: adhesion)",
+              _LOAD, positive=False, plausible=_FORCE),
     Parameter("depth", "length", "indentation depth d of one contact (rigid-body "
-              "approach), or a sweep START:STOP:N", _LOAD, plausible=_DEPTH),
+              "approach), or a sweep START:STOP:N (> 0; zero or negative only with "
+              "adhesion)", _LOAD, positive=False, plausible=_DEPTH),
 )
+
+#: The load parameters: signed in the declaration above (a sweep through 0 is spaced
+#: linearly), positive by the core's rule (:func:`_resolve`) except in the rows a
+#: feature marks ``signed`` (:class:`~linecontact.calc.feature.State`).
+_SIGNED_LOADS = ("load", "depth")
 
 #: Every input, in ``--help`` order: the core, then each feature's.
 PARAMETERS = CORE + tuple(p for f in FEATURES for p in f.parameters)
@@ -271,6 +278,7 @@ def _resolve(cases, errors, fail):
         state = f.resolve(v, P, fail)
         if state is not None:
             cases.states[f.name] = state
+    _positive_loads(cases, fail)
     radius_eff_f = np.full(n, np.nan)
     modulus_f = np.full(n, np.nan)
     for _, st in cases.active():
@@ -324,6 +332,32 @@ def _resolve(cases, errors, fail):
     cases.length = v["length"]
     cases.given, cases.value = given, value
     v.update(radius_eff=radius_eff, estar=estar)
+
+
+def _positive_loads(cases, fail):
+    """The core's rule: a load or depth > 0, except in the rows a feature's State marks
+    ``signed`` (it gives F <= 0 or d <= 0 a meaning: an adhesive contact under a tensile
+    load); the refusal names the options that would allow it (the features' ``signed``
+    module attribute)."""
+    from .._units import _range_reason, _valid_text
+
+    v, P, label = cases.values, cases.present, fail.label
+    signed = np.zeros(cases.n, bool)
+    for _, st in cases.active():
+        s = getattr(st, "signed", None)
+        if s is not None:
+            signed |= np.asarray(s, dtype=bool)
+    allow = [label(nm) for f in FEATURES for nm in getattr(f, "signed", ())]
+    for name in _SIGNED_LOADS:
+        kind = BY_NAME[name].kind
+        with np.errstate(invalid="ignore"):
+            bad = np.flatnonzero(P[name] & ~(v[name] > 0) & ~np.isnan(v[name]) & ~signed)
+        valid = _valid_text(kind, True, None) + (
+            f"; zero or negative only with {' or '.join(allow)}" if allow else "")
+        for i in bad:
+            mask = np.zeros(cases.n, bool)
+            mask[i] = True
+            fail(mask, name, valid, _range_reason(float(v[name][i]), kind, True, None))
 
 
 #: Units tried, in order, to bring an implausible bare number into its range.

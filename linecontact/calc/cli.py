@@ -456,6 +456,10 @@ def main(argv=None):
             specs = None
         render.refuse_input_as_output(args.output, [args.csv] + [
             getattr(args, p.name) for p in parameters if p.kind == "path"])
+        render.refuse_same_output(args.output, getattr(args, "plot", None))
+        if args.csv is None:  # a batch checks its columns too (batch.run_batch)
+            render.refuse_json_only(parameters, {p.name: getattr(args, p.name)
+                                                 for p in parameters}, args.json)
         _check_cluster_options(args)
         if args.csv is not None:
             from .batch import CALC, run_batch

@@ -124,8 +124,10 @@ class Command:
                                  under="ignore"):
                     obj = self.module.solve(cases.values, i, cases.state)
                     row = self.module.row(obj, cases.state, i)
-            except (InputError, OutOfRangeError, CombinationError,
-                    UnknownNameError) as exc:
+            except OutOfRangeError as exc:
+                errors[i] = self._in_user_words(exc, cases, i)
+                continue
+            except (InputError, CombinationError, UnknownNameError) as exc:
                 errors[i] = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
                 continue
             except Exception as exc:  # noqa: BLE001 - reported in the row, never lost
@@ -141,6 +143,23 @@ class Command:
             if progress is not None:
                 progress(done)
         return res
+
+    def _in_user_words(self, exc, cases, i):
+        """The library's refusal of one of the command's own inputs (``rollers``,
+        ``clearance``, ``n_slices``: the library names its parameters as the command
+        does) said as the user gave it: the option or column and the value as typed
+        (``--clearance = '-5mm': a preload presses ...; valid: ...``); any other
+        refusal as the library words it."""
+        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        name = getattr(exc, "parameter", None)
+        col = cases.cells.get(name) if name in self.by_name else None
+        if col is None:
+            return text
+        label = getattr(cases, "label", option_name)
+        typed = (f"{float(col[i]):.6g}" if isinstance(col, np.ndarray)
+                 else str(col[i]).strip())
+        reason = getattr(exc, "hint", "") or "out of range"
+        return f"{label(name)} = {typed!r}: {reason}; valid: {exc.valid}"
 
     # -- the batch's columns and header --------------------------------------------
     def layout(self, results, cases, si):

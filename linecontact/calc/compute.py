@@ -193,13 +193,15 @@ def _option_value(name, text, default, kind="dimensionless"):
     if isinstance(default, bool):
         return parse_bool(name, text)
     if isinstance(default, (int, float)):
+        if isinstance(default, int) and kind == "dimensionless":
+            kind = "count"  # an integer option (n_slices): a fraction is refused here
         try:
             value = parse_quantity(name, text, kind, positive=False)
         except InputError:
             if QUANTITY.match(text) or text[:1] in "+-.0123456789":
                 raise  # a number with a wrong unit (tilt=1mm), not a name
             return text  # a named constant (e.g. johnson c=johnson1985); the model checks
-        # an integer option (n_slices=40) stays an int; 40.5 goes to the model to refuse
+        # an integer option (n_slices=40) stays an int
         return int(value) if isinstance(default, int) and value.is_integer() else value
     return text
 
@@ -892,8 +894,15 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         for i in g:
             notes[i] = _user_note(obj.exc, given[0], cases, i)
     else:
+        # a load or depth <= 0 (a feature's signed row: adhesion) has no contact without
+        # the feature: the core's law is not asked, the given value stands
+        with np.errstate(invalid="ignore"):
+            unloaded = ~(values > 0)
+        for which, name in (("load", "force"), ("depth", "depth")):
+            sel = unloaded & (given == which)
+            r[name][sel] = values[sel]
         for which in ("load", "depth"):
-            sel = np.flatnonzero(given == which)
+            sel = np.flatnonzero((given == which) & ~unloaded)
             if sel.size:
                 rr = _safe_evaluate(evaluate, label, which, values[sel], notes, errors,
                                     g[sel], lambda exc, i, w=which: _user_note(
@@ -913,8 +922,14 @@ def _evaluate_set(item, g, cases, active, whole, notes, errors, produced=None):
         flags[j] = flag_text(r["depth"][j], r["half_width"][j], R, L)
     if refused:
         return r, flags, label, obj
+    with np.errstate(invalid="ignore"):
+        unloaded = ~(values > 0)
     for f, st in active:
-        sel = np.flatnonzero(st.rows[g] & np.isfinite(r["force"]) & np.isfinite(r["depth"]))
+        signed = getattr(st, "signed", None)
+        here = np.isfinite(r["force"]) & np.isfinite(r["depth"])
+        if signed is not None:
+            here = here | (signed[g] & unloaded)
+        sel = np.flatnonzero(st.rows[g] & here)
         if not sel.size:
             continue
         normal = {k: r[k][sel] for k in r}

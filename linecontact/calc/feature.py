@@ -63,6 +63,19 @@ How to add a feature (one module + one registration line)
            Extra tables printed after the main one (``[]`` for none), e.g. the profiled
            roller's rows. ``results.errors`` is the list of row errors: a one-case
            failure is written there (it ends the command with that line).
+       ``figure(state, results) -> list`` (optional)
+           ``--plot FILE``: what the feature computed, drawn by :mod:`linecontact.plot`
+           (no physics: the library's result objects, asked of the library as in
+           ``columns``). A list of items, each either a callable ``draw(fig=None)`` (a
+           figure function of :mod:`linecontact.plot` with its result bound, e.g.
+           ``functools.partial(plot.creep, result)``: one band of panels) or a str
+           (one line on stderr: a result that has no figure, or what was left out of
+           it); ``[]`` when the feature adds nothing. ``columns`` may remember each
+           row's contact law for it with :func:`keep` (``state.kept[i]``: the first
+           model set's, as ``columns`` saw it). :mod:`linecontact.calc.figure` puts
+           the core's F(d) and every feature's items into one figure
+           (:func:`linecontact.plot.panels` when there are several). A feature
+           without ``figure`` is said on stderr as having none.
 
     2. Add the module to the tuple :data:`linecontact.calc.features.FEATURES`.
 
@@ -128,7 +141,7 @@ import re
 import numpy as np
 
 __all__ = ["Parameter", "Field", "State", "Block", "Feature", "Subcommand", "Fail",
-           "option_name",
+           "option_name", "keep",
            "bounds_of", "RAW_KINDS", "each", "short", "flag_text",
            "DEPTH_OVER_RADIUS_MAX", "HALF_WIDTH_OVER_LENGTH_MAX"]
 
@@ -178,6 +191,11 @@ class Parameter:
     words : tuple of str
         Words accepted besides a number (e.g. ``("free",)`` for the tilt): such a cell
         is given (``present``) with the value NaN; ``fail.cell(name, i)`` has the word.
+    json_only : str
+        Non-empty for an input whose result is written to the ``--json`` output only
+        (a block with no table): what it writes. Given without ``--json`` (option or
+        CSV column) it is refused up front (:func:`linecontact.calc.render.refuse_json_only`),
+        not computed and dropped.
     """
 
     name: str
@@ -189,6 +207,7 @@ class Parameter:
     sweep: bool = True
     plausible: tuple | None = None
     words: tuple = ()
+    json_only: str = ""
 
 
 @dataclass(frozen=True)
@@ -231,6 +250,16 @@ class State:
     ``models``
         Tuple of model keys: the default model set of the feature's rows (instead of
         the standard set of a straight cylinder), e.g. the slice models.
+    ``signed``
+        Bool array: rows where the feature gives a load or depth <= 0 a meaning (an
+        adhesive contact under a tensile load); the core refuses them elsewhere (its
+        message names the parameters of the features' module attribute ``signed``,
+        a tuple of parameter names). In such a row the core's models (no adhesion:
+        no contact) are not evaluated; the core columns show the given value only,
+        and the feature's ``columns`` is called with NaN for the rest of ``normal``.
+    ``kept``
+        Object array: each row's contact law as ``columns`` saw it (:func:`keep`),
+        for the feature's ``figure``.
     """
 
     def __init__(self, rows, **attrs):
@@ -267,6 +296,11 @@ class Block:
         Prefix of the block's columns in a CSV batch (``KEY_FIELD_UNIT``).
     units : Mapping[str, str]
         SI unit of each JSON row entry.
+    scales : Mapping[str, float]
+        Field name -> the magnitude of its quantity [SI] where it may be round-off (a
+        moment that symmetry makes zero): a value below
+        :data:`linecontact._units.NOISE` of it is printed as 0 (the JSON keeps it).
+        Default: the column's largest value.
     """
 
     name: str
@@ -278,6 +312,7 @@ class Block:
     note: str = ""
     key: str = ""
     units: Mapping[str, str] = field(default_factory=dict)
+    scales: Mapping[str, float] = field(default_factory=dict)
 
 
 class Fail:
@@ -320,6 +355,18 @@ class Fail:
                 self.errors[i] = str(InputError(self.label(name), typed, valid, reason))
 
 
+def keep(state, rows, model):
+    """Remember the contact law `model` of `rows` (the first one given per row: the
+    first model set's) in ``state.kept`` (object array over the cases) for the
+    feature's ``figure``: a reference per row, no copy."""
+    kept = state.__dict__.get("kept")
+    if kept is None:
+        kept = state.kept = np.full(len(state.rows), None, dtype=object)
+    rows = np.asarray(rows, dtype=np.intp)
+    free = rows[np.equal(kept[rows], None)]
+    kept[free] = model
+
+
 def option_name(name):
     """``inner_raceway`` -> ``--inner-raceway``."""
     return "--" + name.replace("_", "-")
@@ -329,9 +376,11 @@ def bounds_of(p):
     """(inside, description) of a Parameter's validity Interval, or None."""
     if p.bounds is None:
         return None
-    from .. import checks
+    from importlib import import_module
 
-    iv = getattr(checks, p.bounds)
+    # 'POISSON_RATIO' (linecontact.checks) or 'bearing.ROLLER_COUNT' (its module's)
+    where, _, name = p.bounds.rpartition(".")
+    iv = getattr(import_module(f"linecontact.{where or 'checks'}"), name)
     return (iv.contains, iv.describe())
 
 
@@ -351,6 +400,8 @@ class Feature(Protocol):
                 state: State) -> dict: ...
 
     def blocks(self, state: State, results: Any) -> list: ...
+
+    # optional: def figure(self, state: State, results: Any) -> list: ...
 
 
 class Subcommand(Protocol):

@@ -17,7 +17,9 @@ and read back.
   already has gets the batch's ``result_`` prefix.
 - A row that cannot be computed keeps its place and says why in ``error``; the
   others are computed. Nothing is raised for a bad row; a bad frame as a whole (no
-  case column, a column twice) raises the batch's ValueError.
+  case column, a column twice, columns of several levels) raises ValueError naming
+  the frame (``cases (DataFrame): ...``). A frame without rows gives an empty frame
+  with the result columns.
 - ``result.attrs["linecontact"]`` holds the batch's JSON header (version, units of
   every column, notes, the models' provenance).
 
@@ -198,8 +200,13 @@ def _check_frame(cases, parameters, func, keywords, options):
     if unknown:
         from ..errors import UnknownKeywordError
         raise UnknownKeywordError(func, unknown[0], [*keywords, *sorted(known)])
-    if len(cases) == 0:
-        raise ValueError("cases: the DataFrame has no rows; expected one case per row")
+    if isinstance(cases.columns, pd.MultiIndex):
+        # every row failed as "radius: missing": the names were tuples
+        raise ValueError(
+            f"cases: columns of {cases.columns.nlevels} levels (e.g. "
+            f"{cases.columns[0]!r}); valid: one level of names like the batch's columns "
+            "(radius, length, ...): flatten them first, e.g. "
+            "cases.columns = cases.columns.get_level_values(-1)")
 
 
 def _run(table, cases, options, specs, model, client=None):
@@ -207,8 +214,16 @@ def _run(table, cases, options, specs, model, client=None):
     JSON output (SI, full precision) read back into the frame's columns."""
     import pandas as pd
 
-    from .batch import run_batch
+    from .batch import BatchError, run_batch
 
+    if len(cases) == 0:  # no rows: no results, but the result columns all the same
+        probe = pd.DataFrame({c: [None] for c in cases.columns})
+        out = cases.copy()
+        done = _run(table, probe, options, specs, model)
+        for name in done.columns[len(cases.columns):]:
+            out[name] = pd.Series([], index=cases.index, dtype=done[name].dtype)
+        out.attrs["linecontact"] = done.attrs["linecontact"]
+        return out
     header = [str(c) for c in cases.columns]
     opts = {p.name: (None if options.get(p.name) is None else _cell(options[p.name]))
             for p in table.parameters}
@@ -224,7 +239,11 @@ def _run(table, cases, options, specs, model, client=None):
                                   client=client)
         # the batch's "N of M rows failed" line: the error column says it, row by row
         with contextlib.redirect_stderr(io.StringIO()):
-            run_batch(args, [table.name, "<DataFrame>"], specs, opts, table)
+            try:
+                run_batch(args, [table.name, "<DataFrame>"], specs, opts, table)
+            except BatchError as exc:  # said of the frame, not of the internal file
+                raise BatchError(str(exc).replace(repr(str(src)), "cases (DataFrame)")
+                                 ) from None
         doc = json.loads(dst.read_text(encoding="utf-8"))
     rows = doc.pop("rows")
     names = [k for k in rows[0] if k not in set(header)] if rows else []

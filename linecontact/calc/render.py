@@ -24,7 +24,7 @@ from .features import FEATURES
 
 __all__ = ["PROG", "FIELDS", "NOTES", "fmt", "unit", "scale", "columns_of", "json_header",
            "table_text", "blocks_text", "swept_inputs", "one_json", "num", "aligned", "write",
-           "clean_json", "command_text"]
+           "clean_json", "command_text", "refuse_same_output"]
 
 #: Every output column (the core's and the features').
 FIELDS = all_fields()
@@ -52,14 +52,30 @@ def fmt(value, digits=4):
 
 
 def _fmt_column(values):
-    """:func:`fmt` of every element of a float array (a list of str)."""
-    return [format(v, ".4g") if v == v else "-" for v in np.asarray(values, float).tolist()]
+    """:func:`fmt` of every element of a float array (a list of str), round-off shown
+    as 0 (:func:`linecontact._units.format_numbers`)."""
+    from .._units import format_numbers
+
+    return format_numbers(values)
 
 
 def unit(field, si):
     """Unit of a field's column: SI or engineering."""
     f = FIELDS[field]
     return f.si if si else f.eng
+
+
+def column_unit(field, values, si):
+    """(factor from SI, unit) of a field's column holding the SI `values`: SI with
+    `si`, else the field's engineering unit where the values read well in it, or the
+    SI prefix that fits them (:func:`linecontact._units.display_unit`: a soft
+    contact's force in mN, not 0.0001 kN)."""
+    from .._units import display_unit
+
+    f = FIELDS[field]
+    if si:
+        return 1.0, f.si
+    return display_unit(values, f.si, f.eng, f.factor)
 
 
 def scale(field, value, si):
@@ -139,7 +155,9 @@ def _case_line(cases, present, si):
     inputs of the active features as typed."""
 
     def q(field, key):
-        return f"{fmt(scale(field, float(cases[key][0]), si))} {unit(field, si)}"
+        value = float(cases[key][0])
+        factor, u = column_unit(field, value, si)
+        return f"{fmt(value * factor)} {u}"
 
     line = f"R = {q('radius', 'radius')}"
     if present["radius2"][0]:
@@ -188,7 +206,8 @@ _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa"
                 "angle": ("mrad", 1e3), "time": ("s", 1.0), "dimensionless": ("-", 1.0),
                 "surface_energy": ("mJ/m^2", 1e3), "angular_speed": ("rpm", 30 / math.pi),
                 "kinematic_viscosity": ("cSt", 1e6), "density": ("kg/m^3", 1.0),
-                "inverse_pressure": ("1/Pa", 1.0), "temperature_difference": ("K", 1.0)}
+                "inverse_pressure": ("1/Pa", 1.0), "temperature_difference": ("K", 1.0),
+                "count": ("-", 1.0)}
 
 
 def swept_inputs(cases):
@@ -218,7 +237,11 @@ def table_text(cases, present, results, si):
     for p, _ in swept:
         u = DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]
         heads.append(f"{p.name.replace('_', ' ')} [{u or '-'}]")
-    header = (["model"] + heads + [f"{FIELDS[c].heading} [{unit(c, si)}]" for c in cols]
+    # each column's unit fits its values (over every model's rows)
+    shown = {c: column_unit(c, np.concatenate([np.ravel(s["fields"][c]).astype(float)
+                                               for s in results.sets]), si)
+             for c in cols} if results.sets else {c: (1.0, unit(c, si)) for c in cols}
+    header = (["model"] + heads + [f"{FIELDS[c].heading} [{shown[c][1]}]" for c in cols]
               + ["note"])
     n = cases.n
     columns = [[] for _ in range(len(header))]  # column-wise: fast for a long sweep
@@ -228,7 +251,7 @@ def table_text(cases, present, results, si):
         for k, (p, col) in enumerate(swept, start=1):
             columns[k] += _fmt_column(col if si else col * _INPUT_UNITS[p.kind][1])
         for k, c in enumerate(cols, start=1 + len(swept)):
-            columns[k] += _fmt_column(scale(c, f[c], si))
+            columns[k] += _fmt_column(np.asarray(f[c], float) * shown[c][0])
         columns[-1] += ["; ".join(t for t in (a, b) if t) for a, b in zip(s["flags"], s["note"])]
     lines = [_case_line(cases, present, si), ""]
     lines += aligned([header] + [list(r) for r in zip(*columns)])
@@ -245,6 +268,8 @@ def _block_note(results, text):
 def blocks_text(blocks, given, si):
     """The features' extra tables (e.g. the profiled roller's rows), each after its
     rows' note; blocks of one name share one table."""
+    from .._units import NOISE, display_unit, format_numbers
+
     out = ""
     names = []
     for b in blocks:
@@ -255,21 +280,26 @@ def blocks_text(blocks, given, si):
         fields = group[0].fields
         first = "force" if given == "load" else "depth"
         cols = ([first] if first in fields else []) + [c for c in fields if c != first]
+        rows = [(b, row) for b in group for row in b.rows if row is not None]
+        shown = {}  # each column's unit fits its values
+        values = {}
+        for c in cols:
+            vals = [np.nan if row.get(c) is None else float(row[c]) for _, row in rows]
+            size = group[0].scales.get(c)
+            if size is not None:  # round-off of its quantity's scale: 0 (the unit too)
+                vals = [0.0 if abs(v) <= NOISE * abs(size) else v for v in vals]
+            values[c] = vals
+            shown[c] = ((1.0, fields[c].si) if si else
+                        display_unit(vals, fields[c].si, fields[c].eng, fields[c].factor))
+        cells_of = {c: format_numbers([v * shown[c][0] for v in values[c]]) for c in cols}
         header = [group[0].label] + [
-            f"{fields[c].heading} [{fields[c].si if si else fields[c].eng}]" for c in cols
+            f"{fields[c].heading} [{shown[c][1]}]" for c in cols
         ] + list(group[0].text_columns) + ["note"]
         table = []
-        for b in group:
-            for row in b.rows:
-                if row is None:
-                    continue
-                cells = [row.get("label", "")]
-                for c in cols:
-                    val = row.get(c)
-                    cells.append("-" if val is None else
-                                 f"{val if si else val * fields[c].factor:.4g}")
-                cells += [row.get("text", {}).get(t, "-") for t in b.text_columns]
-                table.append(cells + [row.get("note", "")])
+        for i, (b, row) in enumerate(rows):
+            cells = [row.get("label", "")] + [cells_of[c][i] for c in cols]
+            cells += [row.get("text", {}).get(t, "-") for t in b.text_columns]
+            table.append(cells + [row.get("note", "")])
         if not table:
             continue
         out += "\n".join([""] + aligned([header] + table) + ["", "Note: " + group[0].note])
@@ -355,7 +385,7 @@ def command_text(command, cases, results, si):
     case as its description, its fields one per line and the module's tables (its
     blocks); a sweep as one row per case (the swept inputs, then the fields); then the
     command's notes and each case's own."""
-    from .._units import DIMENSIONS
+    from .._units import DIMENSIONS, format_numbers
 
     module, fields = command.module, command.fields
     n = cases.n
@@ -365,12 +395,17 @@ def command_text(command, cases, results, si):
         lines += [module.describe(obj, si), f"model: {row.get('model_used', '')}", ""]
         table = []
         optional = getattr(module, "optional", ())
+        # round-off (an aligned bearing's K_rt) as 0 against its quantity's scale
+        sizes = module.scales(obj) if hasattr(module, "scales") else {}
         for name, f in fields.items():
             v = row.get(name)
             if v is None and name in optional:
                 continue  # an output asked for by its options only (the case check)
+            k = 1.0 if si else f.factor
+            size = sizes.get(name)
             table.append([f"  {f.heading}",
-                          fmt(None if v is None else (v if si else v * f.factor)),
+                          "-" if v is None else format_numbers(
+                              [v * k], scale=None if size is None else size * k)[0],
                           f.si if si else f.eng])
         lines += aligned(table)
         text = blocks_text(module.blocks(obj), "load", si)
@@ -394,10 +429,15 @@ def command_text(command, cases, results, si):
             cells = [str(i + 1)]
             cells += [fmt(float(col[i]) if si else float(col[i]) * _INPUT_UNITS[p.kind][1])
                       for p, col in swept]
+            obj = results.objects[i]
+            sizes = (module.scales(obj) if obj is not None and hasattr(module, "scales")
+                     else {})
             for k in shown:
                 v = row.get(k)
-                cells.append(fmt(None if v is None else
-                                 (v if si else v * fields[k].factor)))
+                f = 1.0 if si else fields[k].factor
+                size = sizes.get(k)
+                cells.append("-" if v is None else format_numbers(
+                    [v * f], scale=None if size is None else size * f)[0])
             table.append(cells + [row.get("note", "")])
         lines += aligned(table)
     lines += [""] + [f"Note: {t}" for t in command.notes.values()]
@@ -479,6 +519,46 @@ def refuse_input_as_output(output, inputs):
             raise OutputError(output, ValueError(
                 f"-o names the input file {str(name)!r}, which would be overwritten; "
                 "give another output file"))
+
+
+def refuse_same_output(output, plot):
+    """Raise :class:`OutputError` if ``-o`` and ``--plot`` name the same file (the
+    figure would overwrite the table, or the table the figure): compared as files (same
+    inode where it exists, else the same absolute path), before anything is written."""
+    import os
+
+    if output is None or plot is None:
+        return
+    try:
+        same = (os.path.samefile(output, plot) if os.path.exists(output)
+                and os.path.exists(plot) else
+                os.path.abspath(output) == os.path.abspath(plot))
+    except (OSError, ValueError):
+        return
+    if same:
+        raise OutputError(plot, ValueError(
+            f"--plot names the -o file {str(output)!r}; the figure would overwrite the "
+            "table: give two different files"))
+
+
+def refuse_json_only(parameters, given, json, label=None):
+    """Raise :class:`~linecontact._units.InputError` if an input whose result goes to
+    the ``--json`` output only (:attr:`Parameter.json_only`) is given without
+    ``--json``: it would be computed and written nowhere. `given`: parameter name ->
+    what was given (the option's text, or for a CSV batch its first filled cell), None
+    where not given; `label`: name -> the input as the user named it (default: the
+    option)."""
+    if json:
+        return
+    from .._units import InputError
+    from .feature import option_name
+
+    for p in parameters:
+        if p.json_only and given.get(p.name) is not None:
+            raise InputError((label or option_name)(p.name), given[p.name],
+                             f"with --json ({p.json_only} is written to the JSON "
+                             "output only)",
+                             "no --json: it would not be written anywhere")
 
 
 class OutputError(OSError):

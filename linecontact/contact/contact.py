@@ -417,6 +417,38 @@ class Contact:
     def _slice_first_contact(self, tilt):
         return self._solver().first_contact_depth(tilt)
 
+    def first_contact_depth(self, tilt=0.0):
+        """Depth d0 of the roller's centre (x = 0) at first contact, at tilt `tilt`
+        [rad]: nothing touches for d <= d0, and a solution's approach from first
+        contact is d - d0 (:attr:`ContactResult.approach`). 0 for an aligned roller
+        whose drop is least at its centre; negative where a tilt brings an end closer
+        (the depth at the centre of a contact at one end is then negative).
+
+        Parameters
+        ----------
+        tilt : float, optional
+            Tilt theta of the roller axis [rad], within (-0.1, 0.1).
+
+        Returns
+        -------
+        float
+            d0 [m], on the slice model's own grid (the coupled slices' or ISO 16281's).
+
+        Examples
+        --------
+        >>> c = Contact(Roller(5e-3, 10e-3, profile="straight", tilt=1e-3),
+        ...             estar=115.38e9)
+        >>> f"{c.first_contact_depth(1e-3) * 1e6:.2f} um"
+        '-5.00 um'
+        """
+        if self.raceways or not self.sliced:
+            raise CombinationError({"model": self.model},
+                                   "the first-contact depth is a single roller contact "
+                                   "solved by slices (a profile or a tilt)")
+        from ..profiles import TILT_RANGE
+
+        return self._slice_first_contact(TILT_RANGE.check(tilt).item())
+
     def _free_stiffness(self, s):
         """dF/dd: at the held tilt, or with the tilt free (M = 0 kept)."""
         K = s.stiffness_matrix
@@ -508,19 +540,25 @@ class Contact:
             Tangential force Q, either sign (the sign is the direction) [N].
         shift : float or array_like, optional
             Tangential shift u instead of Q, either sign [m].
-        method : {None, "mdr", "bem", "mindlin"}, optional
+        method : {None, "mdr", "bem", "mindlin", "ellipse"}, optional
             None (default): ``"mindlin"`` for a crowned roller (circular crown, coupled
-            slices) and ``"mdr"`` otherwise. ``"mdr"``: the ratio G*/E* in every
-            direction; ``"bem"``: a straight cylinder's direction-dependent k_t/k_n
-            and partial-slip correction from the BEM table
+            slices), ``"ellipse"`` for any other profile solved by slices, ``"mdr"``
+            otherwise. ``"mdr"``: the ratio G*/E* in every direction; ``"bem"``: a
+            straight cylinder's direction-dependent k_t/k_n and partial-slip
+            correction from the BEM table
             (:class:`linecontact.tangential.TangentialContact`; straight-cylinder
             laws only); ``"mindlin"``: Mindlin's ratio of the Hertz ellipse (circular
-            crown only; at a load whose ellipse reaches the roller's ends the MDR's
-            ratio, with a note).
+            crown only; at a load whose ellipse reaches the roller's ends the
+            equivalent ellipse's, with a note); ``"ellipse"``: Mindlin's ratio of the
+            equivalent ellipse of the slices' footprint, the ellipse of the same
+            half-length and normal stiffness
+            (:func:`linecontact.mindlin.equivalent_ellipse_ratio`; slice models only),
+            its error measured against the 3D tangential BEM in
+            tables/tangential_profiles.csv and stated in the notes.
         direction : {"across", "along"}, optional
-            With ``method="bem"`` or ``"mindlin"``: the shift across the axis (the
-            rolling direction, default: the direction of the traction in a rolling
-            bearing, a cam follower or a support roller) or along it.
+            With ``method="bem"``, ``"mindlin"`` or ``"ellipse"``: the shift across the
+            axis (the rolling direction, default: the direction of the traction in a
+            rolling bearing, a cam follower or a support roller) or along it.
 
         Returns
         -------
@@ -542,7 +580,12 @@ class Contact:
         8.6 % above along (its notes say so); Mindlin's k_t here is the slices'
         k_n times Mindlin's ratio, within 0.05 % of Mindlin's closed form at 20 to 80
         slices (tests/test_contact_mindlin.py). Other profiles (logarithmic, end
-        relief) keep the MDR's ratio; for them its error is not measured.
+        relief, straight by slices) get the equivalent ellipse's ratio by direction,
+        within 0.43 % of the 3D tangential BEM (its grid error included) over the
+        profiles, L/D 1-3, loads q/(E* D) 1e-4 to 2e-3 and nu 0-0.5 of
+        tables/tangential_profiles.csv; its partial-slip force within 2.1 % of mu F and
+        its energy per fretting cycle within 19 % there (the notes give the table's
+        figures and say when a case lies outside its range).
 
         Examples
         --------
@@ -582,12 +625,21 @@ class Contact:
                                    "give a tangential force or a shift, not both")
         mu = tg.FRICTION.check(friction, name="friction")
         if method is None:
-            method = "mindlin" if self._crowned() else "mdr"
-        if method not in ("mdr", "bem", "mindlin"):
-            raise UnknownNameError("method", method, ("mdr", "bem", "mindlin"))
-        if method == "mindlin":
+            method = ("mindlin" if self._crowned() else
+                      "ellipse" if self.sliced and not self.raceways else "mdr")
+        methods = ("mdr", "bem", "mindlin", "ellipse")
+        if method not in methods:
+            raise UnknownNameError("method", method, methods)
+        if method in ("mindlin", "ellipse"):
             if direction not in ("across", "along"):
                 raise UnknownNameError("direction", direction, ("across", "along"))
+        if method == "ellipse" and not self.sliced:
+            raise CombinationError({"method": "ellipse", "model": self.model},
+                                   "the equivalent ellipse is built from the footprint "
+                                   "of a slice model (model='profiled-roller' or "
+                                   "'iso16281-slicing'); for a straight cylinder's law "
+                                   "use method='bem'")
+        if method == "mindlin":
             if not self._crowned():
                 raise CombinationError({"method": "mindlin", "model": self.model,
                                         "profile": self.profile.label},
@@ -608,11 +660,13 @@ class Contact:
         r = float(tg.SHEAR_RATIO.check(self.gstar / self.estar, name="gstar/estar"))
         shear = r
         if method == "mindlin":
-            r, notes, used = self._mindlin_ratio(F, direction, r)
-            if not used:        # no load's ellipse inside the roller: the MDR's law
-                method, r = "mdr", shear
+            r, notes, used = self._mindlin_ratio(F, direction, r, n)
+            if not used:        # no load's Hertz ellipse inside the roller
+                method = "ellipse"
+        elif method == "ellipse":
+            r, notes = self._ellipse_ratio(n, direction, r)
         else:
-            notes = self._mdr_notes(law, e, r)
+            notes = self._mdr_notes(law, e, r, n)
         kt = out(r * np.asarray(n.stiffness))
         ustar = out(mu * e / r)
         rkw = {} if method == "mdr" else {"ratio": r}
@@ -664,10 +718,11 @@ class Contact:
             method=method, stiffness_ratio=float(r) if method == "mdr" else r,
             direction=None if method == "mdr" else direction, notes=notes)
 
-    def _mdr_notes(self, law, approach, mdr_ratio):
-        """The MDR's direction-free ratio and its measured error where known: against
-        Mindlin's ellipse for a crowned roller, against the BEM table for a straight
-        cylinder's law; not measured for other profiles."""
+    def _mdr_notes(self, law, approach, mdr_ratio, normal=None):
+        """The MDR's direction-free ratio and its error: against Mindlin's ellipse for a
+        crowned roller, against the equivalent ellipse (itself measured against the 3D
+        tangential BEM) for another profile solved by slices, against the BEM table for
+        a straight cylinder's law."""
         from .. import tangential as tg
 
         head = f"MDR: k_t/k_n = G*/E* = {mdr_ratio:.4f} in every direction"
@@ -681,9 +736,16 @@ class Contact:
                     f"{err[1]:+.1%} along (the default method gives the law by "
                     "direction)",)
         if self.sliced:
-            return (f"{head}: its error for this elongated contact is not measured "
-                    "(for a crowned roller's ellipse of a/b = 12: -8.6 % across, +8.6 % "
-                    "along)",)
+            err = []
+            for direction in ("across", "along"):
+                ell = np.atleast_1d(self._ellipse_ratio(normal, direction,
+                                                        mdr_ratio)[0])
+                err.append(float(np.max(mdr_ratio / ell - 1)) if direction == "along"
+                           else float(np.min(mdr_ratio / ell - 1)))
+            return (f"{head}: {err[0]:+.1%} from the equivalent ellipse of the "
+                    f"footprint across, {err[1]:+.1%} along (the default "
+                    "method='ellipse' gives the law by direction, with its error "
+                    "measured against the 3D tangential BEM)",)
         if self.model not in tg.STRAIGHT_CYLINDER_MODELS:
             return (head,)
         try:
@@ -702,12 +764,80 @@ class Contact:
         return (isinstance(self.profile, CircularCrownProfile) and not self.raceways
                 and self.model == "profiled-roller")
 
-    def _mindlin_ratio(self, force, direction, mdr_ratio):
+    def _ellipse_ratio(self, n, direction, mdr_ratio):
+        """The equivalent ellipse's k_t/k_n at each load of the normal state `n`: the
+        ellipse of the slices' half-length (half their contact length) and held-tilt
+        normal stiffness, Mindlin's ratio in `direction`
+        (:func:`linecontact.mindlin.equivalent_ellipse_ratio`); the MDR's ratio where
+        the footprint is not longer than wide. Returns (ratio [-], notes), the notes
+        with the error measured in tables/tangential_profiles.csv or why it is not
+        known for this case."""
+        from .. import mindlin
+
+        F = np.asarray(n.force, dtype=float)
+        r = np.full(F.size, float(mdr_ratio))
+        short = 0
+        for k, s in enumerate(n.solutions):
+            try:
+                r[k] = mindlin.equivalent_ellipse_ratio(
+                    0.5 * s.contact_length, float(s.stiffness_matrix[0, 0]), self.gstar,
+                    self.estar, "y" if direction == "across" else "x")
+            except OutOfRangeError:
+                short += 1
+        notes = []
+        if short:
+            notes.append(f"at {short} of {F.size} loads the footprint is not longer "
+                         "along the axis than across it: the MDR's direction-free ratio "
+                         f"G*/E* = {mdr_ratio:.4f} there, its error not measured")
+        notes.append(self._ellipse_note(n, direction))
+        return out(r.reshape(F.shape)), tuple(notes)
+
+    def _ellipse_note(self, n, direction):
+        """The equivalent ellipse's measured error (tables/tangential_profiles.csv) for
+        this case, or what lies outside the range measured there."""
+        from .. import tangential as tg
+        from ..accuracy import tangential_coverage
+
+        cov = tangential_coverage()
+        where = "the 3D tangential BEM (tables/tangential_profiles.csv)"
+        if cov is None:
+            return (f"equivalent ellipse {direction}: its error against {where} is not "
+                    "known here")
+        D = 2 * self.roller.radius
+        L = self.roller.length
+        F = np.asarray(n.force, dtype=float)
+        nu = float(tg.equivalent_poisson(self.gstar, self.estar))
+        checks = [("L/D", np.array([L / D]), cov["l_over_d"]),
+                  ("mean line load q/(E* D)", F / (L * self.estar * D), cov["line_load"]),
+                  ("Poisson's ratio nu", np.array([nu]), cov["nu"])]
+        slack = 1e-5
+        outside = [f"{name} {np.min(v):.2g}-{np.max(v):.2g} (measured {lo:.2g}-{hi:.2g})"
+                   for name, v, (lo, hi) in checks
+                   if np.any(v < lo * (1 - slack)) or np.any(v > hi * (1 + slack))]
+        key = getattr(self.profile, "key", "")
+        if key not in cov["profiles"]:
+            outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
+        if np.any(np.asarray(n.tilt, dtype=float) != 0):
+            outside.append("a tilted roller (measured aligned)")
+        e = cov[direction]
+        errs = (f"k_t/k_n {100 * e['stiffness_ratio']:.2g} %, partial-slip force "
+                f"{100 * e['partial_slip']:.2g} % of mu F, energy per fretting cycle "
+                f"{100 * e['dissipation']:.2g} %")
+        if outside:
+            return (f"equivalent ellipse {direction}: {'; '.join(outside)}: outside the "
+                    f"range where its error was measured against {where}; inside it "
+                    f"the largest errors are {errs}")
+        return (f"equivalent ellipse {direction}: inside the range measured against "
+                f"{where}, largest errors {errs} (the slices' own normal errors "
+                "aside)")
+
+    def _mindlin_ratio(self, force, direction, mdr_ratio, normal=None):
         """Mindlin's k_t/k_n across or along the roller at each normal force [N] where
         the Hertz ellipse (radii Rc along the axis, the effective radius across) lies
-        inside the roller, |x0| + a_x < L/2 with x0 = apex + Rc tan(tilt); the MDR's
-        ratio elsewhere, with a note. Returns (ratio [-], notes, whether Mindlin's
-        ratio was used at any load)."""
+        inside the roller, |x0| + a_x < L/2 with x0 = apex + Rc tan(tilt); elsewhere
+        the equivalent ellipse's of the slices' footprint (:meth:`_ellipse_ratio`,
+        `normal` the normal state), or the MDR's without one, with a note. Returns
+        (ratio [-], notes, whether Mindlin's ratio was used at any load)."""
         from .. import mindlin
         from ..hertz import hertz_contact
 
@@ -727,14 +857,20 @@ class Contact:
         inside = np.abs(x0) + semi_x < L / 2
         if inside.all():
             return out(np.full(F.shape, ratio)), (), True
-        r = out(np.where(inside, ratio, mdr_ratio))
         worst = float(np.max(np.where(inside, 0.0, semi_x)))
-        note = (f"at {int(np.count_nonzero(~inside))} of {inside.size} loads the Hertz "
+        head = (f"at {int(np.count_nonzero(~inside))} of {inside.size} loads the Hertz "
                 f"ellipse reaches the roller's ends (a = {worst * 1e3:.4g} mm, apex at "
-                f"{x0 * 1e3:.4g} mm, L/2 = {L * 500:.4g} mm): there the MDR's "
-                f"direction-free ratio G*/E* = {mdr_ratio:.4f} (Mindlin's {direction}: "
-                f"{ratio:.4f}), its error not measured")
-        return r, (note,), bool(inside.any())
+                f"{x0 * 1e3:.4g} mm, L/2 = {L * 500:.4g} mm)")
+        if normal is None:
+            r = out(np.where(inside, ratio, mdr_ratio))
+            return r, (f"{head}: there the MDR's direction-free ratio G*/E* = "
+                       f"{mdr_ratio:.4f} (Mindlin's {direction}: {ratio:.4f}), its "
+                       "error not measured",), bool(inside.any())
+        ell, notes = self._ellipse_ratio(normal, direction, mdr_ratio)
+        r = out(np.where(inside, ratio, ell))
+        return r, (f"{head}: there the equivalent ellipse of the slices' footprint "
+                   f"(Mindlin's {direction} ratio of the Hertz ellipse: {ratio:.4f})",
+                   ) + notes, bool(inside.any())
 
     def _tangential_bem(self, mu, force, depth, Q, u, direction):
         """Contact.tangential with the BEM table's ratio and slip correction, one

@@ -166,14 +166,15 @@ class TangentialResult(_Result):
     reasons : dict
         Output name -> (parameters, reason) for each None field.
     method : str
-        ``"mdr"``, ``"bem"`` or ``"mindlin"``.
+        ``"mdr"``, ``"bem"``, ``"mindlin"`` or ``"ellipse"`` (the equivalent ellipse
+        of a profiled roller's footprint).
     stiffness_ratio : float or ndarray
-        k_t/k_n used: G*/E*, the BEM table's ratio or Mindlin's elliptical ratio in the
-        direction asked [-].
+        k_t/k_n used: G*/E*, the BEM table's ratio, Mindlin's elliptical ratio or the
+        equivalent ellipse's in the direction asked [-].
     direction : str or None
         ``"across"`` or ``"along"`` the roller's axis for a direction-dependent law
-        (``method="bem"`` or ``"mindlin"``); None for the MDR's, the same in every
-        direction.
+        (``method="bem"``, ``"mindlin"`` or ``"ellipse"``); None for the MDR's, the
+        same in every direction.
     notes : tuple of str
         Validity notes (e.g. loads at which a crowned roller's ellipse reaches its ends).
 

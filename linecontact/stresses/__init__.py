@@ -24,7 +24,8 @@ worst point), :mod:`~linecontact.stresses.accuracy` (the measured error each res
 states), :mod:`~linecontact.stresses.results` (:class:`SubsurfaceStresses`),
 :mod:`~linecontact.stresses.along_roller` (:func:`line_contact_stresses`,
 :func:`roller_stresses`), :mod:`~linecontact.stresses.hardening` (the case-hardening
-check). Every public name is importable from :mod:`linecontact.stresses` itself.
+check), :mod:`~linecontact.stresses.raceways` (:func:`raceway_stresses`: a whole
+roller's two contacts, the worse and the case check over both). Every public name is importable from :mod:`linecontact.stresses` itself.
 
 References
 ----------
@@ -49,6 +50,7 @@ from .along_roller import EDGE_LOADED_STRESS, line_contact_stresses, roller_stre
 from .hardening import CaseCheck, HardnessProfile, case_check, yield_strength_from_hardness
 from .love import rectangle_stresses
 from .measures import MEASURES, stress_measures
+from .raceways import RacewayCaseCheck, RacewayStresses, noted_case_check, raceway_stresses
 from .results import SubsurfaceStresses
 from .strip import StripMaxima, StripStresses, strip_maxima, strip_stresses
 
@@ -69,4 +71,8 @@ __all__ = [
     "CaseCheck",
     "case_check",
     "EDGE_LOADED_STRESS",
+    "raceway_stresses",
+    "RacewayStresses",
+    "RacewayCaseCheck",
+    "noted_case_check",
 ]

@@ -140,6 +140,39 @@ class HardnessProfile:
         self.surface_hardness, self.core_hardness = hs, hc
         self.depths = self.hardness = None
 
+    def check_fits(self, radius, where="roller"):
+        """Refuse a case or a measured profile deeper than the part's radius (a case
+        deeper than the roller's radius would harden past its axis: no core left).
+
+        Parameters
+        ----------
+        radius : float
+            Radius of the case-hardened part, 0 < radius < inf [m].
+        where : str
+            The part, for the message (``"roller"``).
+
+        Raises
+        ------
+        OutOfRangeError
+            ``case_depth`` >= radius.
+
+        Examples
+        --------
+        >>> HardnessProfile(700.0, 0.3e-3, 350.0).check_fits(5e-3)
+        >>> HardnessProfile(700.0, 6e-3, 350.0).check_fits(5e-3)
+        Traceback (most recent call last):
+        ...
+        linecontact.errors.OutOfRangeError: case_depth = 0.006 m is outside the valid range (0, 0.005) m (below the roller's radius); a case deeper than the part's radius leaves it no core (a through-hardened roller: give the core hardness equal to the surface's)
+        """
+        R = float(check_positive("radius", radius, "m"))
+        depth = self.case_depth
+        if depth is not None and depth >= R:  # (a measured profile: its own depths)
+            raise OutOfRangeError(
+                "case_depth", depth, f"(0, {R:.6g}) m (below the {where}'s radius)",
+                unit="m", hint="a case deeper than the part's radius leaves it no core "
+                               "(a through-hardened roller: give the core hardness "
+                               "equal to the surface's)")
+
     def with_case_depth(self, case_depth):
         """The same model with another effective case depth [m]."""
         return HardnessProfile(self.surface_hardness, case_depth, self.core_hardness)

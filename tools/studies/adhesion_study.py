@@ -193,7 +193,8 @@ def run(args):
            for n in (64, 32, 16, 8)]
         + [{"key": "long_strip_pp_16", "kind": "long_strip_pp", "n": 16}],
         scheduler=args.scheduler, workers=args.workers, progress=False,
-        checkpoint=args.checkpoint, resume=getattr(args, "resume", False))
+        checkpoint=args.checkpoint, resume=getattr(args, "resume", False),
+        connect_timeout=getattr(args, "connect_timeout", None))
     cols = assemble([r for r in results if r["n"] in grids], grids)
     by = {(r["s"], r["n"]): r for r in results}
     check_lines = []

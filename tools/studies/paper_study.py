@@ -37,12 +37,14 @@ Writes into ``--out`` (default ``tables/``):
     alpha, beta and F, k errors of every residual choice at every L/R.
 
 Run time: the full 512 x 512 study is 29 sweeps of 100 contact + 100 punch solves,
-14 000 - 23 000 operator applications per L/R, 2 180 s of CPU in all: 25.6 min wall with
-2 worker processes on a shared 2-core machine, about 18 min on an idle one
-(tables/README.md; each run's own timings are in its table header). Each finished L/R is
-saved in the checkpoint folder (default OUT/partial_paper/) until the tables are
-written; ``--resume`` picks them up after an interruption. One L/R on a coarse grid
-takes seconds::
+14 000 - 23 000 operator applications per L/R: 222 s of CPU in all and 3.6 min wall
+with 2 worker processes on the shared 2-core machine under a load of 2-5
+(tools/benchmarks/results/paper_study.txt, ``python -m tools.build_tables paper
+--out TMP``; the shipped tables' own run, with older code,
+took 25.6 min: tables/README.md; each run's timings are in its table header). Each
+finished L/R is saved in the checkpoint folder (default OUT/partial_paper/) until the
+tables are written; ``--resume`` picks them up after an interruption. One L/R on a
+coarse grid takes seconds::
 
     python -m tools.build_tables paper --l-over-r 5 --n 64 --steps 20 --out /tmp/check
 
@@ -134,12 +136,19 @@ def _run_meta(args, results, wall):
     per = "; ".join(f"L/R {r['l_over_r']:g}: {r['wall_time']:.1f} s wall, "
                     f"{r['cpu_time']:.1f} s CPU, {int(r['iterations'].sum())} op"
                     for r in results)
-    n = None if args.scheduler else (args.workers or DEFAULT_WORKERS)
+    n = None if args.scheduler is not None else (args.workers or DEFAULT_WORKERS)
+    # one backend in every row (the runner refuses workers with another), but results
+    # resumed from an earlier run may come from another: then each is named
+    by_backend = {}
+    for r in results:
+        by_backend.setdefault(r["backend"], []).append(f"{r['l_over_r']:g}")
+    backend = (next(iter(by_backend)) if len(by_backend) == 1 else
+               "; ".join(f"{b} at L/R = {', '.join(q)}" for b, q in by_backend.items()))
     idle = (f" (on an idle machine about CPU / {n} = {cpu / n:.0f} s)" if n else "")
     return dict(
         grid=f"{nx} x {ny} cells over |x| <= L/2, |y| <= sqrt(2 R d_max) "
              f"({results[0]['grid']} at L/R = {results[0]['l_over_r']:g}); FFT "
-             f"backend {results[0]['backend']}",
+             f"backend {backend}",
         steps=f"{args.steps} equal depth steps to d_max",
         d_max_over_R=f"{args.d_max:g}",
         tolerance=f"contact solver: largest gap error <= {args.tol:g} d; punch: "
@@ -169,7 +178,8 @@ def run(args):
         results = run_sweeps(args.l_over_r, args.n, args.steps, args.d_max, args.tol,
                              backend=args.backend, scheduler=args.scheduler,
                              workers=args.workers, checkpoint=checkpoint,
-                             resume=args.resume, progress=not args.no_progress)
+                             resume=args.resume, progress=not args.no_progress,
+                             connect_timeout=args.connect_timeout)
         wall = time.perf_counter() - t0
         cols = curves = curves_from_results(results)
         command, meta_run = args.command_line, _run_meta(args, results, wall)

@@ -6,15 +6,24 @@ Tasks go to a ``dask.distributed`` client:
 
 - by default a ``LocalCluster`` on this machine, ``--workers`` worker processes (default
   2) with one thread each, so that one task = one core (the BEM tasks ask their FFT
-  backend for one thread too);
+  backend for one thread too); it listens on 127.0.0.1 only, and its workers run
+  without dask's ``MALLOC_TRIM_THRESHOLD_`` (see :func:`_client`);
 - with ``--scheduler ADDRESS`` (e.g. ``tcp://host:8786``) an existing cluster started
   with ``dask scheduler`` and ``dask worker ADDRESS --nthreads 1`` on each machine
   (docs/cluster.md). The scheduler and the workers need linecontact installed (the
-  same code as this checkout: checked before any task runs), not the repository: the
-  study code travels with the tasks (:func:`ship_study_code`). The ``tools`` package
-  is uploaded to the cluster as a zip (``Client.upload_file``, which also reaches
-  workers that join later), and a task function defined elsewhere in the checkout
-  (a test, a script) is pickled by value with cloudpickle.
+  same code as this checkout, and the same FFT backend: checked before any task runs
+  and again by every task, so a worker that joins later is refused too), not the
+  repository: the study code travels with the tasks (:func:`ship_study_code`). The
+  ``tools`` package is uploaded to the cluster as a zip (``Client.upload_file``, which
+  also reaches workers that join later), and a task function defined elsewhere in the
+  checkout (a test, a script) is pickled by value with cloudpickle.
+
+Faults the user must act on (a bad ``--scheduler``: empty, malformed, nothing
+listening, not a dask scheduler, each found within ``--connect-timeout``; the
+scheduler lost during the study; a worker with other code or FFT backend) raise
+:class:`StudyError`, whose message is one line saying what to do;
+``python -m tools.build_tables`` prints it without a traceback and exits with its
+``exit_code`` (2 for a bad address, else 1).
 
 Each task is a picklable dict with a unique ``"key"`` (str). As results arrive, the
 client (this process, never a worker) saves each one in the checkpoint folder as
@@ -43,10 +52,33 @@ from pathlib import Path
 
 __all__ = ["add_runner_arguments", "run_study", "run_study_from_args", "table_meta",
            "wall_time_line", "code_version", "ship_study_code", "check_same_linecontact",
-           "linecontact_fingerprint", "DEFAULT_WORKERS"]
+           "linecontact_fingerprint", "worker_environment", "check_workers",
+           "StudyError", "WorkerMismatch", "check_scheduler_address",
+           "DEFAULT_WORKERS", "DEFAULT_CONNECT_TIMEOUT"]
 
 #: Worker processes of the default LocalCluster (the 2 cores of the reference machine).
 DEFAULT_WORKERS = 2
+
+#: Seconds to reach a ``--scheduler`` and hear it answer as a dask scheduler.
+DEFAULT_CONNECT_TIMEOUT = 60.0
+
+
+class StudyError(RuntimeError):
+    """A study that cannot go on, for a reason the user fixes outside the code (a bad
+    ``--scheduler``, a lost scheduler, a worker with other code). Its message is one
+    line that says what to do; ``exit_code`` is the command's exit status (2 for a
+    bad option, 1 otherwise). ``python -m tools.build_tables`` prints the line alone,
+    without a traceback."""
+
+    def __init__(self, message, exit_code=1):
+        super().__init__(message)
+        self.exit_code = exit_code
+
+
+class WorkerMismatch(RuntimeError):
+    """Raised by a task on a worker whose linecontact code or FFT backend differ from
+    the client's (:func:`worker_environment`); the message names the worker, both
+    environments and the remedy."""
 
 
 def code_version():
@@ -81,7 +113,8 @@ def table_meta(command_line, **fields):
 
 def add_runner_arguments(parser):
     """Add ``--scheduler``, ``--workers``, ``--checkpoint``, ``--resume``,
-    ``--no-progress`` to an argparse parser (read back by :func:`run_study_from_args`)."""
+    ``--connect-timeout``, ``--no-progress`` to an argparse parser (read back by
+    :func:`run_study_from_args`)."""
     g = parser.add_argument_group("study runner (dask.distributed)")
     g.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="address of a running dask scheduler, e.g. tcp://host:8786 "
@@ -96,6 +129,11 @@ def add_runner_arguments(parser):
                    help="reuse the results saved in the checkpoint folder by an "
                         "interrupted run with the same task settings (an error "
                         "without a checkpoint folder)")
+    g.add_argument("--connect-timeout", type=float, default=DEFAULT_CONNECT_TIMEOUT,
+                   metavar="SECONDS",
+                   help=f"with --scheduler: give up (exit 2) when the address does not "
+                        f"answer as a dask scheduler within this time (default "
+                        f"{DEFAULT_CONNECT_TIMEOUT:g})")
     g.add_argument("--no-progress", action="store_true", help="no progress bar")
     return parser
 
@@ -197,10 +235,27 @@ def _by_value_modules(func):
     return [module]
 
 
-def _run_pickled(task, func_pickle):
+def _run_pickled(task, func_pickle, expected=None):
     """The task as the cluster runs it: `func_pickle` (cloudpickle of the study
-    function, by value where the cluster lacks its module) called on `task`."""
+    function, by value where the cluster lacks its module) called on `task`, after
+    checking that this worker's :func:`worker_environment` is `expected` (the
+    client's): a worker that joined after the start-up check is refused here.
+
+    Raises
+    ------
+    WorkerMismatch
+        This worker has other linecontact code or another FFT backend.
+    """
     import pickle as _pickle
+    if expected is not None:
+        try:
+            from distributed import get_worker
+            worker = get_worker().address
+        except (ImportError, ValueError):
+            worker = f"pid {os.getpid()}"
+        line = _mismatch(worker, worker_environment(), expected)
+        if line is not None:
+            raise WorkerMismatch(line)
     return _pickle.loads(func_pickle)(task)
 
 
@@ -212,47 +267,223 @@ def ship_study_code(client):
     and every worker, present and future, put it first on ``sys.path``; modules of an
     older upload are forgotten first). Then the workers' linecontact must be this
     checkout's (:func:`linecontact_fingerprint`): a study computed by other code than
-    the version its table names would be a lie.
+    the version its table names would be a lie, and so must its FFT backend
+    (:func:`check_workers`; each task checks again, for workers that join later).
 
     Raises
     ------
-    RuntimeError
-        A worker imports a linecontact with other sources than this process (it names
-        the worker, both fingerprints and what to install).
+    StudyError
+        A worker imports a linecontact with other sources than this process, or has
+        another FFT backend (it names the worker, both and what to install).
     """
     client.run_on_scheduler(exec, _FORGET_TOOLS, {})
     client.run(exec, _FORGET_TOOLS, {})
     with tempfile.TemporaryDirectory(prefix="linecontact-ship-") as folder:
         client.upload_file(str(_zip_tools(folder)))
-    check_same_linecontact(client)
+    check_workers(client)
+
+
+def _fft_backend():
+    """The FFT backend this interpreter's BEM tasks get by default: 'pyfftw X.Y' when
+    pyFFTW imports, else 'scipy' (tools.bem.halfspace.best_backend)."""
+    try:
+        import pyfftw
+    except ImportError:
+        return "scipy"
+    return f"pyfftw {getattr(pyfftw, '__version__', '?')}"
+
+
+_ENVIRONMENT = {}
+
+
+def worker_environment():
+    """What decides a task's numbers besides the task, in this process: its
+    linecontact sources (:func:`linecontact_fingerprint`) and its default FFT
+    backend (pyFFTW or scipy: the same solve, other rounding and speed). Computed
+    once per process (a process keeps the code it imported).
+
+    >>> sorted(worker_environment())
+    ['fft', 'linecontact']
+    """
+    if not _ENVIRONMENT:
+        _ENVIRONMENT.update(linecontact=linecontact_fingerprint(), fft=_fft_backend())
+    return dict(_ENVIRONMENT)
+
+
+def _mismatch(worker, found, expected):
+    """One line: how `worker`'s environment `found` differs from `expected`, and the
+    remedy; None when they agree."""
+    if found.get("linecontact") != expected.get("linecontact"):
+        return (f"dask worker {worker} runs other linecontact code than this checkout "
+                f"(there: {found.get('linecontact')}; here: "
+                f"{expected.get('linecontact')}):"
+                f" install this checkout on it (pip install {_REPO}) and restart it, or "
+                f"stop it")
+    if found.get("fft") != expected.get("fft"):
+        remedy = ("install pyFFTW there (pip install pyfftw) and restart it"
+                  if expected.get("fft", "").startswith("pyfftw") else
+                  "give it the same FFT package as this machine")
+        return (f"dask worker {worker} has FFT backend {found.get('fft')}, this process "
+                f"{expected.get('fft')} (a table names one backend): {remedy}, or stop "
+                f"it")
+    return None
+
+
+def check_workers(client, expected=None):
+    """StudyError unless every worker connected now has `expected` (default this
+    process's :func:`worker_environment`). Workers that join later are checked by
+    each task they run (:func:`_run_pickled`)."""
+    expected = expected or worker_environment()
+    found = client.run(worker_environment)
+    bad = {w: line for w, env in found.items()
+           if (line := _mismatch(w, env, expected)) is not None}
+    if bad:
+        worker = sorted(bad)[0]
+        raise StudyError(f"{len(bad)} of {len(found)} dask workers refused: "
+                         f"{bad[worker]}")
 
 
 def check_same_linecontact(client, expected=None):
-    """RuntimeError unless every worker's :func:`linecontact_fingerprint` equals
-    `expected` (default: this process's)."""
-    expected = expected or linecontact_fingerprint()
-    found = client.run(linecontact_fingerprint)
-    other = {w: f for w, f in found.items() if f != expected}
-    if other:
-        worker, theirs = sorted(other.items())[0]
-        raise RuntimeError(
-            f"{len(other)} of {len(found)} dask workers run other linecontact code "
-            f"than this checkout (worker {worker}: {theirs}; here: {expected}); "
-            f"install this checkout on them (pip install {_REPO}) and restart them")
+    """StudyError (a RuntimeError) unless every worker's linecontact fingerprint
+    equals `expected` (default: this process's) and its FFT backend this process's."""
+    env = worker_environment()
+    if expected is not None:
+        env["linecontact"] = expected
+    check_workers(client, env)
 
 
-def _client(scheduler, workers):
+#: URL schemes of dask's comms that a ``--scheduler`` address may use.
+_SCHEMES = ("tcp", "tls", "ws", "wss", "ucx", "inproc")
+
+
+def _bad_address(scheduler, why):
+    return StudyError(f"--scheduler {scheduler!r}: {why}", exit_code=2)
+
+
+def check_scheduler_address(scheduler):
+    """The address `scheduler` as ``(scheme, host, port)``; a StudyError (exit 2) with
+    one line when it is empty or not a dask scheduler address with a host and a port.
+
+    >>> check_scheduler_address("tcp://127.0.0.1:8786")
+    ('tcp', '127.0.0.1', 8786)
+    >>> check_scheduler_address("10.0.0.5:8786")
+    ('tcp', '10.0.0.5', 8786)
+    """
+    example = "e.g. tcp://HOST:8786 (leave the option out for a local cluster)"
+    if not isinstance(scheduler, str) or not scheduler.strip():
+        raise _bad_address(scheduler, f"empty: give the address of a running dask "
+                                      f"scheduler, {example}")
+    text = scheduler.strip()
+    scheme, _, rest = text.rpartition("://")
+    scheme = scheme.lower() or "tcp"
+    if scheme not in _SCHEMES:
+        hint = (" (that is a web address: the scheduler's own port is printed by "
+                "'dask scheduler' as 'Scheduler at: tcp://...')"
+                if scheme in ("http", "https") else "")
+        raise _bad_address(scheduler, f"the scheme {scheme!r} is not one of dask's "
+                                      f"{', '.join(_SCHEMES)}{hint}; {example}")
+    if scheme == "inproc":
+        return scheme, rest, None
+    host, sep, port = rest.rpartition(":")
+    host = host.strip("[]")          # an IPv6 literal, [::1]:8786
+    if not sep or not host or not port.isdigit() or not 0 < int(port) < 65536 \
+            or any(c in host for c in "/ ?#@"):
+        raise _bad_address(scheduler, f"not HOST:PORT after the scheme; {example}")
+    return scheme, host, int(port)
+
+
+async def _identify(address, timeout):
+    """The scheduler's answer to dask's ``identity`` request at `address`."""
+    from distributed.comm import connect
+    comm = await connect(address, timeout=timeout)
+    try:
+        await comm.write({"op": "identity", "reply": True})
+        return await comm.read()
+    finally:
+        comm.abort()
+
+
+def _probe_scheduler(scheduler, timeout):
+    """StudyError (exit 2), within about `timeout` seconds, unless a dask scheduler
+    answers at `scheduler`: nothing listening, an unknown host, another server (an
+    HTTP port would otherwise hold the client for minutes) or a dask worker each get
+    their one line."""
+    import asyncio
+    import socket
+    from concurrent.futures import ThreadPoolExecutor, TimeoutError as FutureTimeout
+    scheme, host, port = check_scheduler_address(scheduler)
+    if scheme in ("tcp", "tls", "ws", "wss"):
+        try:
+            socket.create_connection((host, port), timeout=timeout).close()
+        except ConnectionRefusedError:
+            raise _bad_address(scheduler, f"nothing listens on port {port} of {host} "
+                                          f"(connection refused): start the scheduler "
+                                          f"(dask scheduler --host {host} --port {port}) "
+                                          f"or correct the address") from None
+        except socket.gaierror as exc:
+            raise _bad_address(scheduler, f"unknown host {host!r} ({exc.strerror})") \
+                from None
+        except (socket.timeout, OSError) as exc:
+            raise _bad_address(scheduler, f"no connection to {host}:{port} within "
+                                          f"{timeout:g} s ({exc}); is the host up "
+                                          f"and the port open?") from None
+    if scheme != "tcp":
+        return                      # the handshake needs the client's TLS/UCX setup
+    address = "tcp://" + scheduler.strip().rpartition("://")[2]   # [::1]:P kept as is
+    pool = ThreadPoolExecutor(1)    # its own event loop: safe under a running one
+    try:
+        reply = pool.submit(asyncio.run, asyncio.wait_for(
+            _identify(address, timeout), timeout)).result(timeout + 5)
+        why = ""
+    except (FutureTimeout, asyncio.TimeoutError, TimeoutError):
+        reply, why = None, f"no reply to dask's handshake within {timeout:g} s"
+    except Exception as exc:        # noqa: BLE001 - a non-dask peer breaks the
+        reply = None                # handshake in many ways; each is named
+        why = f"dask's handshake failed: {type(exc).__name__}: {exc}"
+    finally:
+        pool.shutdown(wait=False)
+    kind = reply.get("type") if isinstance(reply, dict) else None
+    if kind != "Scheduler":
+        what = (f"is a dask {kind}, not the scheduler" if kind else
+                f"does not answer as a dask scheduler ({why or 'an unknown reply'}: "
+                f"another kind of server, a web port?)")
+        raise _bad_address(scheduler, f"{host}:{port} {what}; give the address that "
+                                      f"'dask scheduler' prints as 'Scheduler at:'")
+
+
+def _client(scheduler, workers, connect_timeout=None):
     from dask.distributed import Client, LocalCluster
-    if scheduler:
-        return Client(scheduler, timeout="60s"), None
-    cluster = LocalCluster(n_workers=int(workers or DEFAULT_WORKERS),
-                           threads_per_worker=1, processes=True,
-                           dashboard_address=":0")   # a free port: never clashes
+    timeout = float(DEFAULT_CONNECT_TIMEOUT if connect_timeout is None
+                    else connect_timeout)
+    if scheduler is not None:
+        _probe_scheduler(scheduler, timeout)
+        try:
+            return Client(scheduler.strip(), timeout=f"{timeout}s"), None
+        except (OSError, TimeoutError) as exc:
+            raise _bad_address(scheduler, f"no dask client connection within "
+                                          f"{timeout:g} s ({exc})") from None
+    import dask
+    # dask's nannies set MALLOC_TRIM_THRESHOLD_=65536 in the workers' environment
+    # (config distributed.nanny.pre-spawn-environ). Setting it switches off glibc's
+    # dynamic mmap threshold, so every array above 128 KiB (a 512 x 512 grid is
+    # 2 MiB) is mmap'ed and unmapped again: 1.76 million against 64 000 page faults,
+    # 13 % more CPU, for one L/R of the paper study at 512 x 512
+    # (tools/benchmarks/results/paper_study.txt). None leaves glibc's default (a
+    # value the user exported is still passed on: dask prefers os.environ).
+    with dask.config.set({"distributed.nanny.pre-spawn-environ."
+                          "MALLOC_TRIM_THRESHOLD_": None}):
+        cluster = LocalCluster(n_workers=int(workers or DEFAULT_WORKERS),
+                               threads_per_worker=1, processes=True,
+                               host="127.0.0.1",          # nothing listens outside
+                               dashboard_address=None,    # no dashboard: not needed,
+                               # but the scheduler's HTTP server (health, metrics)
+                               # runs anyway: on loopback, a free port (not 8787)
+                               scheduler_kwargs={"dashboard_address": "127.0.0.1:0"})
     return Client(cluster), cluster
 
 
 def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
-              resume=False, progress=True, desc=""):
+              resume=False, progress=True, desc="", connect_timeout=None):
     """Run ``func(task)`` for every task on a Dask cluster; the results in task order.
 
     Parameters
@@ -262,8 +493,9 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
     tasks : list of dict
         Picklable dicts, each with a unique ``"key"`` (str).
     scheduler : str, optional
-        Address of a running dask scheduler; default a ``LocalCluster`` of `workers`
-        processes with one thread each.
+        Address of a running dask scheduler (``tcp://HOST:PORT``); default (None) a
+        ``LocalCluster`` of `workers` processes with one thread each, listening on
+        127.0.0.1 only. An empty string is refused, not taken for None.
     workers : int, optional
         Worker processes of the local cluster (default :data:`DEFAULT_WORKERS`).
     checkpoint : path, optional
@@ -275,6 +507,9 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
         A tqdm progress bar on stderr.
     desc : str
         Label of the progress bar.
+    connect_timeout : float, optional
+        Seconds for `scheduler` to answer as a dask scheduler (default
+        :data:`DEFAULT_CONNECT_TIMEOUT`).
 
     Returns
     -------
@@ -287,6 +522,11 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
     ValueError
         Keys missing, not str, or repeated; `resume` without a `checkpoint` folder
         (there would be nothing to resume from, and every task would run again).
+    StudyError
+        One line, what to do: `scheduler` empty, malformed, not answering or not a
+        dask scheduler (``exit_code`` 2, before any task runs); the scheduler lost
+        during the study (restart it and the workers, rerun with ``--resume``); a
+        worker with other linecontact code or FFT backend (the study stops).
     Exception
         The first exception raised by a task; the results finished before it stay in
         the checkpoint folder.
@@ -301,6 +541,11 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
     if resume and checkpoint is None:
         raise ValueError("resume = True needs the checkpoint folder of the earlier run "
                          "(--checkpoint DIR); none was given")
+    if scheduler is not None:
+        check_scheduler_address(scheduler)        # a typo fails before any work
+    if connect_timeout is not None and not connect_timeout > 0:
+        raise StudyError(f"--connect-timeout {connect_timeout!r}: give a time in "
+                         f"seconds > 0", exit_code=2)
     done = {}
     if checkpoint is not None:
         Path(checkpoint).mkdir(parents=True, exist_ok=True)
@@ -320,23 +565,80 @@ def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
                    unit="task", file=sys.stderr)
     try:
         if todo:
-            _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar)
+            _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar,
+                         connect_timeout, total=len(tasks))
     finally:
         if bar is not None:
             bar.close()
     return [done[k] for k in keys]
 
 
-def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar):
+def _lost_scheduler(scheduler, checkpoint, done, total):
+    """The one line of a study whose scheduler went away: what is kept and what to
+    restart (the workers stop with their scheduler: 'dask worker' exits when it
+    cannot reconnect), then ``--resume``."""
+    kept = (f"{len(done)} of {total} tasks finished, saved in {checkpoint}"
+            if checkpoint is not None else
+            f"{len(done)} of {total} tasks finished, none saved (no --checkpoint)")
+    again = ("rerun the same command with --resume" if checkpoint is not None else
+             "rerun the same command (every task runs again)")
+    return StudyError(f"lost the dask scheduler at {scheduler} ({kept}); restart the "
+                      f"scheduler and the workers ('dask scheduler ...', 'dask worker "
+                      f"{scheduler} ...'), then {again}")
+
+
+#: Loggers of the client side of distributed whose messages on a lost connection
+#: (tracebacks of the reconnection attempts) the runner replaces by its own line.
+_CLIENT_LOGGERS = ("distributed.client", "distributed.comm", "distributed.core",
+                   "distributed.batched", "distributed.utils")
+
+
+class _Quiet:
+    """Drop every record of the loggers `names` inside the block (a filter: distributed
+    resets their levels when a client starts). After a lost scheduler the client's
+    reconnection task logs its traceback when ``client.close()`` cancels it, which
+    the runner does inside the block."""
+
+    def __init__(self, names, active=True):
+        import logging
+        self.loggers = [logging.getLogger(n) for n in names] if active else []
+
+    @staticmethod
+    def filter(record):
+        return False
+
+    def __enter__(self):
+        for lg in self.loggers:
+            lg.addFilter(self.filter)
+        return self
+
+    def __exit__(self, exc_type, exc, tb):
+        for lg in self.loggers:
+            lg.removeFilter(self.filter)
+        return False
+
+
+def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar,
+                 connect_timeout=None, total=None):
+    # with a remote scheduler every connection fault reaches the user as one line
+    # of the runner's (StudyError): distributed's own logged tracebacks would bury it
+    with _Quiet(_CLIENT_LOGGERS, active=scheduler is not None):
+        _run_on_client(func, todo, scheduler, workers, checkpoint, done, bar,
+                       connect_timeout, total)
+
+
+def _run_on_client(func, todo, scheduler, workers, checkpoint, done, bar,
+                   connect_timeout=None, total=None):
     from dask.distributed import as_completed
     import cloudpickle
-    client, cluster = _client(scheduler, workers)
+    client, cluster = _client(scheduler, workers, connect_timeout)
+    futures = []
     try:
         # a local cluster's scheduler is this process and its workers start with this
         # sys.path: they import the code from the checkout like this process does
-        if scheduler:
+        if scheduler is not None:
             ship_study_code(client)
-        by_value = _by_value_modules(func) if scheduler else []
+        by_value = _by_value_modules(func) if scheduler is not None else []
         for module in by_value:
             cloudpickle.register_pickle_by_value(module)
         try:
@@ -344,13 +646,23 @@ def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar):
         finally:
             for module in by_value:
                 cloudpickle.unregister_pickle_by_value(module)
-        futures = client.map(_run_pickled, todo, func_pickle=func_pickle, pure=False)
+        expected = worker_environment()
+        futures = client.map(_run_pickled, todo, func_pickle=func_pickle,
+                             expected=expected, pure=False)
         task_of = {f.key: t for f, t in zip(futures, todo)}
         for fut in as_completed(futures):
             task = task_of[fut.key]
             try:
                 result = fut.result()
+            except WorkerMismatch as exc:
+                client.cancel(futures)
+                again = (f"; {len(done)} of {total} tasks finished, saved in "
+                         f"{checkpoint}: rerun with --resume" if checkpoint is not None
+                         else "")
+                raise StudyError(f"study stopped, {exc}{again}") from None
             except BaseException:
+                if scheduler is not None and client.status != "running":
+                    raise _lost_scheduler(scheduler, checkpoint, done, total) from None
                 client.cancel(futures)
                 raise
             done[task["key"]] = result
@@ -360,6 +672,13 @@ def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar):
                 bar.update(1)
                 bar.set_postfix_str(f"last {task['key']}")
             fut.release()
+    except StudyError:
+        raise
+    except Exception:
+        # the scheduler went away between the calls above (the upload, the map)
+        if scheduler is not None and client.status != "running":
+            raise _lost_scheduler(scheduler, checkpoint, done, total) from None
+        raise
     finally:
         client.close()
         if cluster is not None:
@@ -397,4 +716,5 @@ def run_study_from_args(func, tasks, args, desc=""):
                      checkpoint=getattr(args, "checkpoint", None),
                      resume=getattr(args, "resume", False),
                      progress=not getattr(args, "no_progress", False),
-                     desc=desc)
+                     desc=desc,
+                     connect_timeout=getattr(args, "connect_timeout", None))

@@ -184,7 +184,8 @@ def run(args):
                          args.n_width, args.tol, args.check_every,
                          scheduler=args.scheduler, workers=args.workers,
                          checkpoint=checkpoint, resume=args.resume,
-                         progress=not args.no_progress)
+                         progress=not args.no_progress,
+                         connect_timeout=args.connect_timeout)
     meta = table_meta(args.command_line, **{
         "title": "Universal force-depth curve of a rigid parabolic cylinder of finite "
                  "length on an elastic half-space: F R/(E* L^3) = Psi(d R/L^2)",

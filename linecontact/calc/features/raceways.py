@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State
+from ..feature import Field, Parameter, State, keep
 
 __all__: list = []
 
@@ -53,6 +53,17 @@ notes = {
               "each strip for a law, the slice model's peak for a profiled roller; "
               "clearance: Ro - Ri - 2 R1.",
 }
+
+
+#: The default models where the library solves the roller by slices (misaligned
+#: rings): the roller feature's (linecontact.raceway.SLICE_MODELS).
+SLICE_DEFAULTS = ("profiled-roller", "iso16281-slicing")
+#: The row's note of a straight roller between misaligned rings.
+SLICED_NOTE = ("straight roller between misaligned raceways: solved by coupled slices "
+               "(a straight-cylinder law has no tilt), as linecontact bearing does")
+#: The row's note of a profiled roller between raceways without a tilt given.
+FREE_NOTE = ("roller between raceways: its tilt is free (moment equilibrium), as in "
+             "linecontact bearing; give {tilt} to hold it")
 
 
 def resolve(values, present, fail):
@@ -102,9 +113,20 @@ def resolve(values, present, fail):
     with np.errstate(invalid="ignore", divide="ignore"):
         r_in = effective_radius(R1, radii["inner"])
     psi = np.where(P["misalignment"], v["misalignment"], 0.0)
+    shaped = P["crown_radius"] | P["profile"]
+    # as linecontact bearing: a straight roller between misaligned rings is solved by
+    # coupled slices (the library's default there; a straight-cylinder law has no
+    # tilt), and a profiled roller tilts freely unless --tilt is given (the roller
+    # feature's default between raceways); each row says so in its note
+    with np.errstate(invalid="ignore"):
+        sliced = rows & (psi != 0) & ~shaped & ~P["tilt"]
     state = State(rows, radius_eff=np.where(rows, r_in, np.nan), whole=rows,
                   compared="roller_deflection", inner=radii["inner"], outer=radii["outer"],
-                  psi=psi)
+                  # the slice models' columns only where a row needs them (the
+                  # default set of every row otherwise: the standard laws)
+                  psi=psi, models=SLICE_DEFAULTS if sliced.any() else None,
+                  said=[SLICED_NOTE if sliced[i] else FREE_NOTE.format(tilt=label("tilt"))
+                        if shaped[i] and not P["tilt"][i] else "" for i in range(len(rows))])
     state.parts = lambda i: _parts(state, i)
     return state
 
@@ -118,6 +140,7 @@ def _parts(state, i):
 
 def columns(model, rows, normal, state):
     """The whole roller's columns from its solution (linecontact.raceway.RacewaySolution)."""
+    keep(state, rows, model)
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
     out["roller_deflection"] = normal["depth"]
@@ -126,6 +149,7 @@ def columns(model, rows, normal, state):
     for j, sol in enumerate(normal["solution"]):
         if sol is None:
             continue
+        flags[j] = state.said[rows[j]]
         out["depth_inner"][j] = sol.depth_inner
         out["depth_outer"][j] = sol.depth_outer
         for side in ("inner", "outer"):
@@ -145,6 +169,49 @@ def columns(model, rows, normal, state):
             flags[j] = "; ".join(t for t in (flags[j], geometry) if t)
     out["flags"] = flags
     return out
+
+
+#: Loads drawn at most in one q(x) band (a longer sweep: evenly chosen, said).
+MAX_CURVES = 8
+
+
+def figure(state, results):
+    """``--plot``: a roller between raceways solved by slices: q(x) of its inner and of
+    its outer contact (:func:`linecontact.plot.line_load` of the solution's ``inner``
+    and ``outer``, the roller's ends marked), the first roller's rows; under a law
+    (no slices) there is no q(x): said."""
+    from functools import partial
+
+    from ... import plot
+
+    sols = results.sets[0]["solution"] if results.sets else []
+    kept = getattr(state, "kept", None)
+    rows = [i for i in np.flatnonzero(state.rows) if i < len(sols) and sols[i] is not None
+            and kept is not None and kept[i] is not None]
+    if not rows:
+        return []
+    sliced = [i for i in rows if getattr(sols[i], "inner", None) is not None]
+    if not sliced:
+        return ["--plot: a roller between raceways under a law has no q(x) (no slices); "
+                "its deflection and each contact's depth and pressure are in the table"]
+    c0 = kept[sliced[0]].contact
+    mine = [i for i in sliced if kept[i].contact is c0]
+    said = ["--plot: a roller between raceways: q(x) of the inner contact, then of the "
+            "outer"]
+    if len(rows) > len(mine):
+        said.append(f"--plot: q(x) drawn for the roller of the first row; "
+                    f"{len(rows) - len(mine)} row(s) of other rollers are in the table")
+    if len(mine) > MAX_CURVES:
+        pick = np.unique(np.round(np.linspace(0, len(mine) - 1, MAX_CURVES)).astype(int))
+        said.append(f"--plot: q(x) of {len(pick)} of the {len(mine)} rows (evenly chosen)")
+        mine = [mine[k] for k in pick]
+    def draw(side, fig=None):
+        made = plot.line_load([getattr(sols[i], side) for i in mine], c0, fig=fig)
+        ax = (fig if fig is not None else made).axes[0]
+        ax.set_title(f"{side} contact: {ax.get_title()}", fontsize=9)
+        return made
+
+    return [partial(draw, side) for side in ("inner", "outer")] + said[1:]
 
 
 def _geometry_flags(contact, sol, force):

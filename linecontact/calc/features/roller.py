@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from ..feature import Block, Field, Parameter, State
+from ..feature import Block, Field, Parameter, State, keep
 
 __all__: list = []
 
@@ -49,7 +49,7 @@ parameters = (
               group),
     Parameter("tilt", "angle", "tilt of the roller axis, e.g. 1mrad, 0.05deg (bare: rad), "
               "positive loads the +x end; 'free': moment equilibrium; default 0 "
-              "(aligned)", group, positive=False, words=("free",)),
+              "(aligned), free between raceways", group, positive=False, words=("free",)),
 )
 
 NAMES = tuple(p.name for p in parameters)
@@ -98,6 +98,11 @@ def resolve(values, present, fail):
          f"conflicts with {label('profile')}")
     free = np.array([bool(P["tilt"][i]) and fail.cell("tilt", i).strip().lower() == "free"
                      for i in range(len(rows))], dtype=bool)
+    # between raceways the roller tilts freely unless --tilt is given, as in
+    # linecontact bearing (the raceways feature's row note says so)
+    free |= ~P["tilt"] & np.any([P[k] for k in ("inner_raceway", "outer_raceway",
+                                                 "inner_raceway_diameter",
+                                                 "outer_raceway_diameter")], axis=0)
     with np.errstate(invalid="ignore"):
         fail(P["tilt"] & ~free & ~(np.abs(v["tilt"]) < 0.1), "tilt", "(-0.1, 0.1) rad, "
              "or free", "the roller models linearise the tilt (small angles)")
@@ -167,6 +172,7 @@ def columns(model, rows, normal, state):
     """The roller's own quantities from its solution: moment, tilt, tilt stiffness (the
     library's), peak pressure, where it sits and the contact length (one contact; the
     larger of the two contacts' peaks between raceways), edge loading in the flags."""
+    keep(state, rows, model)
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
     for k in ("tilt", "moment", "tilt_stiffness"):
@@ -185,7 +191,7 @@ def columns(model, rows, normal, state):
             out["p_max"][j] = sol.p_max
         out["x_at_p_max"][j] = _clean(sol.x_at_p_max, sol)
         out["contact_length"][j] = sol.contact_length
-        text = []
+        text = _depth_text(model, sol)
         if sol.edge_loaded:
             text.append(f"edge loaded ({_edge_text(sol)}): p max singular there")
         elif not sol.p_max_resolved:
@@ -196,6 +202,21 @@ def columns(model, rows, normal, state):
         s, "peak_pressure_inner") else m for m, s in zip(out["moment"], normal["solution"])])
     out["flags"] = flags
     return out
+
+
+def _depth_text(model, sol):
+    """[what d means] where the depth at the roller's centre is not the approach from
+    first contact (a tilt brings an end closer: d0 = Contact.first_contact_depth < 0,
+    and d < 0 when the contact lies at one end), with that approach d - d0."""
+    contact = getattr(model, "contact", None)
+    if contact is None or not callable(getattr(contact, "first_contact_depth", None)):
+        return []
+    d0 = contact.first_contact_depth(sol.tilt)
+    if not d0 < -1e-9 * abs(sol.depth):   # first contact at the centre: d is the approach
+        return []
+    return [f"d: the depth at the roller's centre x = 0 (tilted: first contact nearer "
+            f"an end, at d0 = {d0 * 1e6:.4g} um); the approach from first contact d - d0 "
+            f"= {(sol.depth - d0) * 1e6:.4g} um"]
 
 
 def _clean(value, sol):
@@ -225,6 +246,45 @@ def blocks(state, results):
         units={c: ROW_FIELDS[c].si for c in ROW_FIELDS} | {"x": "m", "q": "N/m",
                                                            "width": "m",
                                                            "tilt": "rad"})]
+
+
+#: Loads drawn at most in one q(x) figure (a longer sweep: evenly chosen, said).
+MAX_CURVES = 8
+
+
+def figure(state, results):
+    """``--plot``: q(x) of the first model set's profiled rows with the roller's ends,
+    above its profile drop and each row's rigid approach
+    (:func:`linecontact.plot.profiled_roller`); rows of another roller (length or
+    profile) and a roller between raceways are said, not drawn."""
+    from functools import partial
+
+    from ... import plot
+
+    sols = results.sets[0]["solution"] if results.sets else []
+    kept = getattr(state, "kept", None)
+    rows = [i for i in np.flatnonzero(state.rows)
+            if i < len(sols) and sols[i] is not None and kept is not None
+            and kept[i] is not None and getattr(kept[i], "contact", None) is not None
+            and not hasattr(sols[i], "peak_pressure_inner")]
+    if not rows:
+        return []
+    c0 = kept[rows[0]].contact
+
+    def same(c):
+        return c.roller.length == c0.roller.length and c.profile == c0.profile
+
+    mine = [i for i in rows if same(kept[i].contact)]
+    said = []
+    if len(rows) > len(mine):
+        said.append(f"--plot: q(x) drawn for the roller of the first row; "
+                    f"{len(rows) - len(mine)} row(s) of other rollers are in --json")
+    if len(mine) > MAX_CURVES:
+        pick = np.unique(np.round(np.linspace(0, len(mine) - 1, MAX_CURVES)).astype(int))
+        said.append(f"--plot: q(x) of {len(pick)} of the {len(mine)} profiled rows "
+                    "(evenly chosen; every row is in --json)")
+        mine = [mine[k] for k in pick]
+    return [partial(plot.profiled_roller, [sols[i] for i in mine], c0)] + said
 
 
 def _edge_text(sol):

@@ -23,9 +23,10 @@
 
 Poisson's ratio of the stressed body: ``--poisson`` where given, else 0.3 (said in the
 notes). A whole roller between raceways (``--inner-raceway``, ``--outer-raceway``): the
-stresses of each contact (:func:`contact_stresses`), each measure's worse contact in the
-main columns and named in the note, both contacts' maxima and case ratios in a table
-of their own; the case check takes the worse contact (CHD min: the larger minimum).
+stresses of each contact (:func:`linecontact.stresses.raceway_stresses`), each
+measure's worse contact in the main columns and named in the note, both contacts'
+maxima and case ratios in a table of their own; the case check takes the worse
+contact (CHD min: the larger minimum).
 """
 from __future__ import annotations
 
@@ -33,10 +34,9 @@ import math
 
 import numpy as np
 
-from ..feature import Block, Field, Parameter, State
+from ..feature import Block, Field, Parameter, State, keep
 
-__all__ = ["contact_stresses", "case_of_contacts", "min_case_depth", "hardness_of",
-           "HARDNESS"]
+__all__ = ["hardness_of", "HARDNESS"]
 
 name = "stresses"
 group = "subsurface stresses and case-hardening check"
@@ -48,7 +48,8 @@ parameters = (
     Parameter("sliding_friction", "dimensionless", "coefficient mu of the sliding "
               "traction mu p for the stresses, 0 to 1", group, positive=False),
     Parameter("stress_field", "length", "with --json: the stress field on the section "
-              "across the roller at this x", group, positive=False),
+              "across the roller at this x", group, positive=False,
+              json_only="the field on the section"),
     Parameter("surface_hardness", "dimensionless", "surface hardness HV (> 550) for the "
               "case-hardening check", group),
     Parameter("case_depth", "length", "effective case depth CHD (to 550 HV, ISO 2639)",
@@ -124,7 +125,7 @@ def resolve(values, present, fail):
         fail(P["sliding_friction"] & ~((v["sliding_friction"] >= 0)
                                         & (v["sliding_friction"] <= 1)),
              "sliding_friction", "[0, 1]", "outside the range of the strip solution")
-    hardness = hardness_of(v, P, fail, on)
+    hardness = hardness_of(v, P, fail, on, v["radius"])
     nu = np.where(P["poisson"], v["poisson"], 0.3)
     return State(on, mu=np.where(P["sliding_friction"], v["sliding_friction"], 0.0),
                  nu=nu, nu_given=P["poisson"], hardness=hardness,
@@ -135,10 +136,11 @@ def resolve(values, present, fail):
 HARDNESS = tuple(p for p in parameters if p.name in _HARD + ("hardness_profile",))
 
 
-def hardness_of(v, P, fail, on):
+def hardness_of(v, P, fail, on, radius):
     """The rows' hardness profiles (:class:`linecontact.stresses.HardnessProfile`, None
     where none is given) from the three values or the measured CSV: the three
-    together, or the file, not both; only in the rows of `on`."""
+    together, or the file, not both; only in the rows of `on`; a case depth within
+    the roller's `radius` (array over the rows [m]: HardnessProfile.check_fits)."""
     label = fail.label
     n = len(on)
     three = ", ".join(label(s) for s in _HARD)
@@ -156,9 +158,12 @@ def hardness_of(v, P, fail, on):
                 hardness[i] = _read_profile(v["hardness_profile"][i].strip())
             else:
                 hardness[i] = HardnessProfile(*(float(v[nm][i]) for nm in _HARD))
+                if np.isfinite(radius[i]) and radius[i] > 0:
+                    hardness[i].check_fits(float(radius[i]))
         except OutOfRangeError as exc:
             nm = exc.parameter if exc.parameter in _HARD else "hardness_profile"
-            fail(np.arange(n) == i, nm, exc.valid, str(exc))
+            fail(np.arange(n) == i, nm, exc.valid,
+                 exc.hint if nm == "case_depth" and exc.hint else str(exc))
         except (OSError, ValueError) as exc:
             fail(np.arange(n) == i, "hardness_profile", "a readable CSV (depth_m, HV)",
                  str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
@@ -178,7 +183,6 @@ def _read_profile(path):
 def columns(model, rows, normal, state):
     """The strip maxima for the mean line load F/L of each model row, and the check."""
     from ...errors import OutOfRangeError
-    from ...stresses import line_contact_stresses, roller_stresses
 
     n = len(rows)
     out = {k: np.full(n, np.nan) for k in fields}
@@ -192,17 +196,10 @@ def columns(model, rows, normal, state):
             if _is_raceways(sol):  # a whole roller: each contact's, the worse flagged
                 _between_raceways(out, flags, j, sol, model, state, i)
                 continue
-            if sol is None and _slice_law(model):
-                # a slice model named as the law of a plain contact (--model
-                # profiled-roller): the row's own solve, as the library's at this force
-                sol = model.at_force(float(F[j]))
-            if _is_slices(sol):   # a profiled roller: the worst along its slices
-                s = roller_stresses(sol, state.mu[i], state.nu[i],
-                                    roller=_measured_as(model))
+            keep(state, [i], model)
+            s = _stresses_of(model, sol, float(F[j]), state, i)
+            if _is_slices(sol) or (sol is None and _slice_law(model)):
                 flags[j] = "; ".join(s.notes)
-            else:
-                s = line_contact_stresses(F[j], model.radius, model.length, model.estar,
-                                          state.mu[i], state.nu[i])
         except OutOfRangeError as exc:
             flags[j] = str(exc)
             continue
@@ -221,23 +218,63 @@ def columns(model, rows, normal, state):
     return out
 
 
-_NO_CHD = "CHD min: none, the stress exceeds the allowable of the surface hardness itself"
+def _stresses_of(model, sol, force, state, i):
+    """The SubsurfaceStresses of one contact of row i: the worst along a profiled
+    roller's slices (:func:`linecontact.stresses.roller_stresses`), else the
+    plane-strain strip at F/L (:func:`~linecontact.stresses.line_contact_stresses`)."""
+    from ...stresses import line_contact_stresses, roller_stresses
+
+    if sol is None and _slice_law(model):
+        # a slice model named as the law of a plain contact (--model profiled-roller):
+        # the row's own solve, as the library's at this force
+        sol = model.at_force(force)
+    if _is_slices(sol):
+        return roller_stresses(sol, state.mu[i], state.nu[i], roller=_measured_as(model))
+    return line_contact_stresses(force, model.radius, model.length, model.estar,
+                                 state.mu[i], state.nu[i])
+
+
+def figure(state, results):
+    """``--plot``: the stresses of the worst row (the largest von Mises maximum of the
+    first model set): the field of its worst section with the maximum marked, the
+    maxima along the roller and, with a hardness profile, the allowable at each depth
+    of maximum and the case check (:func:`linecontact.plot.stresses`, von Mises, the
+    measure of the check)."""
+    from functools import partial
+
+    from ... import plot
+    from ...errors import OutOfRangeError
+
+    kept = getattr(state, "kept", None)
+    f = results.sets[0]["fields"]
+    if kept is None or "von_mises_max" not in f:
+        return (["--plot: stresses of a roller between raceways: no figure (each "
+                 "contact's maxima are in the table)"]
+                if getattr(state, "by_contact", None) else [])
+    value = np.where(np.equal(kept, None), np.nan, f["von_mises_max"])
+    if not np.isfinite(value).any():
+        return ["--plot: stresses: no maximum computed (the rows' notes say why)"]
+    i = int(np.nanargmax(value))
+    model = kept[i]
+    try:
+        s = _stresses_of(model, results.sets[0]["solution"][i], float(f["force"][i]),
+                         state, i)
+    except OutOfRangeError as exc:
+        return [f"--plot: stresses: no figure: {exc}"]
+    case = _case(s, state.hardness[i])[0] if state.hardness[i] is not None else None
+    out = [partial(plot.stresses, s, measure="von_mises", case=case)]
+    if np.sum(np.isfinite(value)) > 1:
+        out.append(f"--plot: stresses drawn for the worst row (row {i + 1}, von Mises "
+                   f"{value[i] * 1e-6:.4g} MPa) of {int(np.sum(np.isfinite(value)))}")
+    return out
 
 
 def _case(s, hardness):
-    """(CaseCheck or None, flag text) of one contact's stresses."""
-    from ...stresses import case_check
-    from ...errors import OutOfRangeError
+    """(CaseCheck or None, flag text) of one contact's stresses
+    (:func:`linecontact.stresses.noted_case_check`)."""
+    from ...stresses import noted_case_check
 
-    try:
-        c = case_check(s, hardness)
-    except OutOfRangeError as exc:
-        return None, str(exc)
-    if c.min_case_depth is None and hardness.case_depth is not None:
-        return c, _NO_CHD
-    if c.min_case_depth == 0.0:
-        return c, "CHD min: 0, none needed (the core hardness carries the load)"
-    return c, ""
+    return noted_case_check(s, hardness)
 
 
 def _put_case(out, j, c):
@@ -254,81 +291,25 @@ def _is_raceways(sol):
     return sol is not None and hasattr(sol, "depth_inner") and hasattr(sol, "radius_outer")
 
 
-def contact_stresses(sol, length, estar, profile, friction, poisson):
-    """{'inner': SubsurfaceStresses, 'outer': ...} of a whole roller's two contacts
-    (:class:`linecontact.raceway.RacewaySolution` `sol`; roller length [m], E* [Pa],
-    profile): the slices' :func:`linecontact.stresses.roller_stresses` where the
-    contacts were solved by slices (each checked against the measured range as a
-    roller of the contact's effective radius), else the plane-strain strip
-    :func:`linecontact.stresses.line_contact_stresses` of each contact's effective
-    radius at the roller load, as :class:`linecontact.bearing.RadialRollerBearing`
-    takes them for its most loaded roller."""
-    from types import SimpleNamespace
-
-    from ...stresses import line_contact_stresses, roller_stresses
-
-    out = {}
-    for side in ("inner", "outer"):
-        part = getattr(sol, side)
-        R = float(getattr(sol, f"radius_{side}"))
-        if part is not None:
-            measured = SimpleNamespace(radius=R, length=length, estar=estar,
-                                       profile=profile)
-            out[side] = roller_stresses(part, friction, poisson, roller=measured)
-        else:
-            out[side] = line_contact_stresses(float(sol.force), R, length, estar,
-                                              friction, poisson)
-    return out
-
-
-def case_of_contacts(both, hardness):
-    """The case check of a whole roller's two contacts (`both`: side ->
-    SubsurfaceStresses): (checks, texts, worse) with checks side -> CaseCheck or None,
-    texts the flags to show, worse the side of the larger ratio (None if neither). A
-    contact whose maxima are withheld (edge loaded: the slice width's numbers) leaves
-    the check unreported, with the reason."""
-    held = {k: st.withheld for k, st in both.items() if st.withheld}
-    if held:
-        return {}, ["case check not reported: " + "; ".join(
-            f"{k} contact: {next(iter(h.values()))}" for k, h in held.items())], None
-    checks, texts = {}, []
-    for side, st in both.items():
-        c, text = _case(st, hardness)
-        checks[side] = c
-        if text:
-            texts.append(f"{side}: {text}")
-    done = {k: c for k, c in checks.items() if c is not None}
-    worse = max(done, key=lambda k: done[k].max_ratio) if done else None
-    return checks, texts, worse
-
-
-def min_case_depth(checks):
-    """The smallest case depth that carries both contacts: the larger of their minima
-    (None if either has none) [m]."""
-    need = [c.min_case_depth for c in checks.values() if c is not None]
-    if not need or any(d is None for d in need):
-        return None
-    return max(need)
-
-
 def _between_raceways(out, flags, j, sol, model, state, i):
-    """A whole roller's row: each measure's worse contact in the main columns (its
-    contact named in the flags), each contact's own maxima kept for the block."""
+    """A whole roller's row (:func:`linecontact.stresses.raceway_stresses`): each
+    measure's worse contact in the main columns (its contact named in the flags),
+    each contact's own maxima kept for the block, the case check over both."""
+    from ...stresses import raceway_stresses
+
     c = model.contact
-    both = contact_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
+    both = raceway_stresses(sol, c.roller.length, c.estar, c.profile, float(state.mu[i]),
                             float(state.nu[i]))
-    worse = {}
+    worst = both.worst
+    worse = {m: worst[m]["contact"] for m in _MEASURES}
     # a maximum not converged in a contact (an edge-loaded one: the slice width's
-    # number) is not reported, as linecontact.bearing takes it: that measure's worse
-    # is unknown, and so is the case check
-    held = {k: st.withheld for k, st in both.items() if st.withheld}
+    # number) is not reported: that measure's worse is unknown, and so is the case check
+    held = both.withheld
     for m in _MEASURES:
-        side = max(both, key=lambda k: both[k].worst[m]["value"])
-        worse[m] = side
-        if any(m in h for h in held.values()):
+        if "withheld" in worst[m]:
             continue
-        out[f"{m}_max"][j] = both[side].worst[m]["value"]
-        out[f"{m}_depth"][j] = both[side].worst[m]["z"]
+        out[f"{m}_max"][j] = worst[m]["value"]
+        out[f"{m}_depth"][j] = worst[m]["depth"]
     texts = [f"stresses: worse contact {_said(worse)}"] if not held else [
         "stress maxima and case check not reported: " + "; ".join(
             f"{k} contact: {h[_MEASURES[0]]}" for k, h in held.items())]
@@ -338,15 +319,15 @@ def _between_raceways(out, flags, j, sol, model, state, i):
                            else both[side].worst[m]["value"])
            for m in _MEASURES for side in both}
     if state.hardness[i] is not None and not held:
-        checks, said, side = case_of_contacts(both, state.hardness[i])
-        for k, c in checks.items():
-            row[f"case_ratio_{k}"] = None if c is None else c.max_ratio
-        texts += said
-        if side is not None:
-            _put_case(out, j, checks[side])
-            need = min_case_depth(checks)
+        case = both.case_check(state.hardness[i])
+        for k, ck in case.checks.items():
+            row[f"case_ratio_{k}"] = None if ck is None else ck.max_ratio
+        texts += list(case.notes)
+        if case.worse is not None:
+            _put_case(out, j, case.checks[case.worse])
+            need = case.min_case_depth
             out["min_case_depth"][j] = np.nan if need is None else need
-            texts.insert(1, f"case check: worse contact {side}")
+            texts.insert(1, f"case check: worse contact {case.worse}")
     row["text"] = {"worse": "-" if held else _said(worse)}
     flags[j] = "; ".join(texts)
     state.__dict__.setdefault("by_contact", {}).setdefault(int(i), row)

@@ -8,9 +8,11 @@
     the table is not installed or the case is outside it). G* needs the moduli and
     Poisson's ratios (not ``--estar``).
     For a crowned roller (``--crown-radius``) whose Hertz ellipse lies inside it, the
-    values across and along are Mindlin's for the ellipse
-    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`): the
-    calculator prints both directions, so it takes no direction option.
+    values across and along are Mindlin's for the ellipse, and for any other roller
+    solved by slices those of the equivalent ellipse of its footprint
+    (:meth:`linecontact.contact.Contact.tangential`, :mod:`linecontact.mindlin`), with
+    the error measured in tables/tangential_profiles.csv in the notes: the calculator
+    prints both directions, so it takes no direction option.
 ``--tangential-load Q`` (a force or a sweep; needs ``--friction``)
     The tangential shift u of the Cattaneo-Mindlin law at the given normal force or
     depth, held constant (:func:`linecontact.tangential.tangential_shift`) with the MDR's
@@ -24,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State, each, short
+from ..feature import Field, Parameter, State, each, keep, short
 
 __all__: list = []
 
@@ -62,7 +64,9 @@ notes = {
                   "the axis: the finite cylinder's BEM ratio k_t/k_n (tables/"
                   "tangential_cylinder.csv) times k, or for a crowned roller whose Hertz "
                   "ellipse lies inside it Mindlin's ratio of the ellipse (Mindlin 1949) "
-                  "times k; u: tangential shift under Q at "
+                  "times k, or for another roller solved by slices Mindlin's ratio of the "
+                  "equivalent ellipse (the footprint's half-length and k) times k; u: "
+                  "tangential shift under Q at "
                   "constant normal force or depth, u = (mu/r) [d - d(F - |Q|/mu)] sign(Q) "
                   "with r = G*/E* (MDR) or the BEM ratio, times the table's partial-slip "
                   "correction across/along (Cattaneo 1938, Mindlin 1949); gross slip at "
@@ -89,7 +93,19 @@ def resolve(values, present, fail):
     fail(P["tangential_load"] & ~P["friction"], "tangential_load",
          f"with {label('friction')}", "no friction coefficient given")
     v = values
+    # --friction (Coulomb, for the partial slip above) is not the sliding friction of
+    # the stresses (full sliding, q = mu p): a row with both --friction and the
+    # stresses but no --sliding-friction says which coefficient its stresses used
+    stresses = np.array([bool(P["stresses"][i]) and fail.cell("stresses", i).strip()
+                         .lower() not in ("no", "false", "0") for i in range(len(rows))],
+                        dtype=bool) if "stresses" in P else np.zeros_like(rows)
+    unslid = P["friction"] & stresses & ~P.get("sliding_friction", np.zeros_like(rows))
     return State(rows, friction=v["friction"], tangential_load=v["tangential_load"],
+                 unslid=unslid, unslid_note=(
+                     f"the stresses are frictionless: {label('friction')} is the Coulomb "
+                     "coefficient of the partial slip (stick zone, Cattaneo-Mindlin), not "
+                     f"the full sliding of the stresses; give {label('sliding_friction')} "
+                     "for them"),
                  loaded=P["tangential_load"], friction_given=P["friction"],
                  e1=v["modulus"], nu1=v["poisson"],
                  e2=np.where(P["modulus2"], v["modulus2"], np.inf),
@@ -107,6 +123,7 @@ def columns(model, rows, normal, state):
         LOAD_COLUMNS if state.any_load else ())}
     flags = [""] * n
     out["flags"] = flags
+    keep(state, rows, model)
     F, d, k = normal["force"], normal["depth"], normal["stiffness"]
     ok = np.isfinite(d) & (d > 0) & np.isfinite(F)
 
@@ -114,6 +131,8 @@ def columns(model, rows, normal, state):
         if text and text not in flags[j]:
             flags[j] = "; ".join(t for t in (flags[j], text) if t)
 
+    for j in np.flatnonzero(state.unslid[rows]):
+        note(j, state.unslid_note)
     sel = np.flatnonzero(state.friction_given[rows] & ok)
     if not sel.size:
         return out
@@ -201,24 +220,26 @@ def _composed(contact, rows, sel, F, state, out, note):
 
 def _directions(contact, mu, F, Q, j, out, note):
     """k_t (and the shift under Q) across and along the axis of a composed contact where
-    the library has a law by direction (a crowned roller: Mindlin's ellipse, the
-    default of :meth:`linecontact.contact.Contact.tangential`); "-" with the reason
-    elsewhere."""
+    the library has a law by direction (the default of
+    :meth:`linecontact.contact.Contact.tangential`: a crowned roller's Mindlin ellipse,
+    any other sliced profile's equivalent ellipse), with the library's notes; "-" with
+    the reason elsewhere."""
+    methods = set()
     for direction in ("across", "along"):
         t = contact.tangential(mu, force=F, tangential_force=Q, direction=direction)
-        if t.method != "mindlin":
-            crowned = t.notes and "Mindlin" in t.notes[0]   # a crown, ellipse not inside
-            note(j, "kt across/along: " + (t.notes[0] if crowned else
-                                           "the BEM table is for a straight, aligned "
-                                           "cylinder"))
+        if t.method not in ("mindlin", "ellipse"):
+            note(j, "kt across/along: the law by direction is for a roller solved by "
+                    "slices (a straight cylinder's law: method='bem')")
             return
+        methods.add(t.method)
         if t.notes:
             note(j, f"kt {direction}: " + "; ".join(t.notes))
-            continue
         out[f"kt_{direction}"][j] = t.stiffness
         if Q is not None and t.shift is not None:
             out[f"shift_{direction}"][j] = t.shift
-    note(j, "kt/u across/along: Mindlin's Hertz ellipse (crowned roller)")
+    note(j, "kt/u across/along: " + ("Mindlin's Hertz ellipse (crowned roller)"
+                                     if methods == {"mindlin"} else
+                                     "the equivalent ellipse of the footprint"))
 
 
 def _slip_correction(model, direction, depth, gstar, q):
@@ -230,6 +251,85 @@ def _slip_correction(model, direction, depth, gstar, q):
     nu = tg.equivalent_poisson(gstar, model.estar)
     return np.atleast_1d(table.shift_factor(direction, nu,
                                             depth * model.radius / model.length ** 2, q))
+
+
+#: Normal states drawn at most (a sweep of the normal load: the first, the rest said).
+MAX_FIGURES = 3
+
+
+def _laws(model, mu, gstar, force):
+    """The tangential laws drawn for one normal state: the finite cylinder's BEM law
+    across and along (:class:`linecontact.tangential.TangentialContact`,
+    ``method="bem"``), or the MDR's where the table does not answer (its reason)."""
+    from ... import tangential as tg
+    from ...errors import OutOfRangeError
+
+    try:
+        return [tg.TangentialContact(model, mu, gstar, force=force, method="bem",
+                                     direction=direction)
+                for direction in ("across", "along")], ""
+    except (OutOfRangeError, FileNotFoundError) as exc:
+        why = short(str(exc)) if isinstance(exc, OutOfRangeError) else _MISSING
+        return [tg.TangentialContact(model, mu, gstar, force=force)], why
+
+
+def figure(state, results):
+    """``--plot``: F_t(u) from stick to gross slip and the fretting loop
+    (:func:`linecontact.plot.hysteresis`) across and along the axis (the BEM table's
+    law; the MDR's where the table does not answer), the rows' (u, Q) marked, at the
+    amplitude of the largest computed shift (else half the smallest gross-slip shift);
+    one panel per normal state of the first contact (at most :data:`MAX_FIGURES`). A
+    composed contact (a profiled roller) is said, not drawn."""
+    from functools import partial
+
+    from ... import plot
+    from ... import tangential as tg
+
+    kept = getattr(state, "kept", None)
+    if kept is None:
+        return []
+    f = results.sets[0]["fields"]
+    rows = [i for i in np.flatnonzero(state.friction_given) if kept[i] is not None
+            and np.isfinite(f["force"][i]) and f["force"][i] > 0]
+    if not rows:
+        return []
+    m0 = kept[rows[0]]
+    if m0.contact is not None:
+        return ["--plot: tangential: no figure for a composed contact's law (a profiled "
+                "or tilted roller): its k_t and shifts are in the table"]
+    groups = {}
+    for i in rows:
+        if kept[i] is m0:
+            groups.setdefault((float(f["force"][i]), float(state.friction[i])),
+                              []).append(i)
+    out, said = [], []
+    for (F, mu), idx in list(groups.items())[:MAX_FIGURES]:
+        i0 = idx[0]
+        gstar = float(tg.effective_shear_modulus(state.e1[i0], state.nu1[i0],
+                                                 state.e2[i0], state.nu2[i0]))
+        laws, why = _laws(m0, mu, gstar, F)
+        if why:
+            said.append(f"--plot: tangential: the MDR's law (G*/E*), the BEM's across "
+                        f"and along not available: {why}")
+        name = "across" if len(laws) == 2 else "mdr"
+        u = np.array([f[f"shift_{name}"][i] if f"shift_{name}" in f else np.nan
+                      for i in idx])
+        Q = np.array([state.tangential_load[i] for i in idx])
+        ustar = min(float(c.gross_slip_shift) for c in laws)
+        good = np.isfinite(u)
+        amp = min(float(np.max(np.abs(u[good]))), ustar) if good.any() else 0.5 * ustar
+        if not amp > 0:
+            amp = 0.5 * ustar
+        pts = list(zip(u[good], Q[good])) or None
+        out.append(partial(plot.hysteresis, laws, amp, points=pts))
+    if len(groups) > MAX_FIGURES:
+        said.append(f"--plot: tangential drawn for the first {MAX_FIGURES} of "
+                    f"{len(groups)} normal states (every row is in the table)")
+    others = len(rows) - sum(len(v) for v in groups.values())
+    if others:
+        said.append(f"--plot: tangential drawn for the first contact; {others} row(s) of "
+                    "other contacts are in the table only")
+    return out + said
 
 
 def blocks(state, results):

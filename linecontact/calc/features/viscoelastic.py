@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..feature import Field, Parameter, State, short
+from ..feature import Field, Parameter, State, keep, short
 
 __all__: list = []
 
@@ -158,6 +158,7 @@ def columns(model, rows, normal, state):
     :meth:`linecontact.contact.Contact.creep` (Lee & Radok) of the composed contact."""
     from ...errors import CombinationError, OutOfRangeError
 
+    keep(state, rows, model)
     n = len(rows)
     out = {"depth_long_term": np.full(n, np.nan)}
     if state.any_time:
@@ -208,6 +209,66 @@ def _creep_note(column, factor, text):
         text = (f"beyond the model's range: its elastic-equivalent force F {factor} = "
                 + text[len("force = "):])
     return f"{column}: {text}"
+
+
+#: Histories drawn at most (a load or depth sweep: the first values, the rest said).
+MAX_FIGURES = 3
+#: Samples of a drawn history [-].
+SAMPLES = 121
+
+
+def figure(state, results):
+    """``--plot``: each row's load history and the response (:func:`linecontact.plot.creep`):
+    under a held force the creep d(t) with the long-term depth, under a held depth the
+    relaxation F(t) (:meth:`linecontact.contact.Contact.creep`,
+    :meth:`~linecontact.contact.Contact.relaxation_history`), up to the latest
+    ``--time`` of the rows (their times among the samples) or, without one, to five
+    retardation times tau E0/E_inf of the slowest term (within e^-5 of the long-term
+    state). One panel per held value of the first contact (at most
+    :data:`MAX_FIGURES`)."""
+    from functools import partial
+
+    from ... import plot
+    from ...errors import CombinationError, OutOfRangeError
+
+    kept = getattr(state, "kept", None)
+    if kept is None:
+        return []
+    rows = [i for i in np.flatnonzero(state.rows)
+            if kept[i] is not None and kept[i].contact is not None
+            and state.bodies[i] is not None]
+    if not rows:
+        return []
+    m0 = kept[rows[0]]
+    groups = {}
+    cases = results.cases
+    for i in rows:
+        if kept[i] is m0:
+            groups.setdefault((cases.given[i], float(cases.value[i])), []).append(i)
+    out, said = [], []
+    for (given, value), idx in list(groups.items())[:MAX_FIGURES]:
+        body = state.bodies[idx[0]]
+        times = [float(state.time[i]) for i in idx if state.timed[i]]
+        end = max(times) if times and max(times) > 0 else \
+            5.0 * float(np.max(body.times)) * body.instantaneous / body.long_term
+        t = np.unique(np.concatenate([np.linspace(0.0, end, SAMPLES), times]))
+        try:
+            res = (m0.contact.creep(t, force=value) if given == "load"
+                   else m0.contact.relaxation_history(t, depth=value))
+        except (CombinationError, OutOfRangeError) as exc:
+            said.append(f"--plot: {'creep' if given == 'load' else 'relaxation'} at "
+                        f"{value:g} {'N' if given == 'load' else 'm'}: no figure: "
+                        f"{short(str(exc))}")
+            continue
+        out.append(partial(plot.creep, res, given="force" if given == "load" else "depth"))
+    if len(groups) > MAX_FIGURES:
+        said.append(f"--plot: creep drawn for the first {MAX_FIGURES} of {len(groups)} "
+                    "held values (every row is in the table)")
+    others = len(rows) - sum(len(v) for v in groups.values())
+    if others:
+        said.append(f"--plot: creep drawn for the first contact; {others} row(s) of other "
+                    "contacts are in the table only")
+    return out + said
 
 
 def blocks(state, results):

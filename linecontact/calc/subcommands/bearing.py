@@ -10,14 +10,15 @@ roller takes the options of ``calc --stresses`` (``--surface-hardness``,
 ``--case-depth``, ``--core-hardness`` or ``--hardness-profile``).
 
 All physics is the library's: :class:`linecontact.bearing.RadialRollerBearing` for the
-bearing, and for the case check its most loaded roller between the same raceways at
-its load (:func:`linecontact.raceway.roller_between_raceways`, the per-roller
-reference, with the bearing's model, profile and slices; the roller free to tilt
-under the rings' misalignment at its azimuth), each contact's stresses
-(:func:`linecontact.stresses.roller_stresses`, or the strip under a law) and
+bearing, and for the case check the solution's own most loaded roller
+(:attr:`~linecontact.bearing.BearingSolution.roller`, the same solve as
+:func:`linecontact.raceway.roller_between_raceways` at its load with the bearing's
+model, profile and slices, free to tilt under the rings' misalignment at its azimuth)
+and its contacts' stresses (:attr:`~linecontact.bearing.BearingSolution.roller_stresses`:
+:func:`linecontact.stresses.roller_stresses`, or the strip under a law) through
 :func:`linecontact.stresses.case_check`: the same solve ``linecontact calc
---inner-raceway ... --outer-raceway ... --load Q_max --stresses yes`` makes. This module
-reads, asks and names.
+--inner-raceway ... --outer-raceway ... --load Q_max --tilt free --stresses yes``
+makes. This module reads, asks and names.
 """
 from __future__ import annotations
 
@@ -28,8 +29,7 @@ import numpy as np
 
 from ..cases import BY_NAME as _CALC
 from ..feature import Block, Field, Parameter, State
-from ..features.stresses import HARDNESS, case_of_contacts, contact_stresses, hardness_of
-from ..features.stresses import min_case_depth as _min_case_depth
+from ..features.stresses import HARDNESS, hardness_of
 
 __all__: list = []
 
@@ -59,7 +59,8 @@ _SPECTRUM = "duty cycle"
 
 #: The bearing's inputs: option ``--NAME`` = CSV column ``NAME``.
 parameters = (
-    Parameter("rollers", "dimensionless", "number of rollers Z (>= 3)", _GEOM),
+    Parameter("rollers", "count", "number of rollers Z (>= 3, as many as fit on the "
+              "pitch circle)", _GEOM, bounds="bearing.ROLLER_COUNT"),
     Parameter("pitch_diameter", "length", "pitch diameter d_m", _GEOM),
     Parameter("roller_diameter", "length", "roller diameter D", _GEOM),
     _CALC["length"],
@@ -87,8 +88,9 @@ parameters = (
     Parameter("model", "text", "contact law of each contact: universal (default for a "
               "straight roller), iso16281 (the ISO spring), profiled-roller (default "
               "for a profile), iso16281-slicing, any key of linecontact calc", _MODEL),
-    Parameter("n_slices", "dimensionless", "slices of a slice model (default: the "
-              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL),
+    Parameter("n_slices", "count", "slices of a slice model (default: the "
+              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL,
+              bounds="bearing.SLICE_COUNT"),
     Parameter("rating", "force", "basic dynamic load rating C_r (default: ISO 281 "
               "from the geometry)", _MODEL),
     Parameter("static_rating", "force", "basic static load rating C0r (default: ISO 76 "
@@ -250,9 +252,10 @@ notes = {
                 "1/L = sum u_i/L_i with u_i the shares of revolutions (from shares of "
                 "time: t_i n_i / sum t_j n_j).",
     "case": "case check (--surface-hardness, --case-depth, --core-hardness or "
-            "--hardness-profile): the most loaded roller between the same raceways at "
-            "Q_max (linecontact.raceway.roller_between_raceways, free to tilt under the "
-            "rings' misalignment at its azimuth), each contact's von Mises over the "
+            "--hardness-profile): the bearing's most loaded roller, solved exactly "
+            "between the same raceways at Q_max (as linecontact.raceway."
+            "roller_between_raceways, free to tilt under the rings' misalignment at its "
+            "azimuth), each contact's von Mises over the "
             "yield strength 2.876 HV - 90.7 MPa (Pavlina & Van Tyne 2008, "
             "linecontact.stresses.case_check), the worse contact named; CHD min: the "
             "smallest effective case depth that carries both contacts.",
@@ -298,7 +301,7 @@ def resolve(values, present, fail):
         with np.errstate(invalid="ignore"):
             fail(P[nm] & (v[nm] != np.round(v[nm])), nm, "a whole number",
                  "not a whole number")
-    hardness = hardness_of(v, P, fail, np.ones(n, bool))
+    hardness = hardness_of(v, P, fail, np.ones(n, bool), v["roller_diameter"] / 2)
     spectra = [None] * n
     read = {}
     for i in np.flatnonzero(P["spectrum"]):
@@ -396,7 +399,8 @@ def _given(v, name, i):
 def solve(values, i, state):
     """Row i: :class:`linecontact.bearing.RadialRollerBearing` and its solve, and the
     case check of its most loaded roller (library refusals propagate: the row's
-    error)."""
+    error): a :class:`linecontact.stresses.RacewayCaseCheck` (the solution's
+    ``roller_stresses.case_check``)."""
     from ...bearing import RadialRollerBearing
 
     g = {p.name: _given(values, p.name, i) for p in parameters}
@@ -419,9 +423,11 @@ def solve(values, i, state):
     s = b.solve(g["radial_load"], moment=g["tilting_moment"],
                 misalignment=g["misalignment"], speed=g["speed"],
                 axial_load=g["axial_load"])
+    # the case check of the most loaded roller's two contacts: the solution's own
+    # stresses of its own solve of that roller (BearingSolution.roller_stresses)
     case = None
     if state.hardness[i] is not None:
-        case = case_check(b, s, state.hardness[i])
+        case = s.roller_stresses.case_check(state.hardness[i])
     spectrum = None
     if state.spectra[i] is not None:
         from ...bearing import solve_spectrum
@@ -441,40 +447,6 @@ _LIBRARY = ("static_rating", "viscosity", "density", "pressure_viscosity",
             "housing_diameter", "ring_modulus", "temperature_difference", "end_radius",
             "flange_angle", "inner_flange_height", "outer_flange_height",
             "overall_length", "end_chamfer", "axial_share")
-
-
-def most_loaded_roller(bearing, solution):
-    """The bearing's most loaded roller between its raceways at its load Q_max, as
-    :func:`linecontact.raceway.roller_between_raceways` solves it (the bearing's model,
-    profile and slices; under a tilt, free to tilt with the rings' misalignment
-    theta cos psi_j at its azimuth): a :class:`~linecontact.raceway.RacewaySolution`."""
-    from ...raceway import Raceways, roller_between_raceways
-
-    s = solution
-    j = int(np.argmax(s.roller_loads))
-    race = bearing.raceways
-    psi = float(s.roller_misalignment[j]) if s.roller_misalignment is not None else 0.0
-    tilted = psi != 0.0 or s.tilt != 0.0 or s.moment != 0.0
-    model = bearing.model
-    if tilted and not bearing.sliced:
-        model = "profiled-roller"  # as the bearing solves a tilt with no model named
-    if psi:
-        race = Raceways(race.inner, race.outer, misalignment=psi,
-                        fit_tolerance=race.fit_tolerance)
-    sliced = tilted or bearing.sliced
-    return roller_between_raceways(
-        bearing.roller_diameter / 2, bearing.length, bearing.estar, race,
-        force=float(s.roller_loads[j]), model=model, profile=bearing.profile,
-        tilt="free" if tilted else 0.0, n_slices=bearing.n_slices if sliced else None)
-
-
-def case_check(bearing, solution, hardness):
-    """The case check of the most loaded roller's two contacts: (checks, texts, worse)
-    of :func:`linecontact.calc.features.stresses.case_of_contacts`."""
-    roller = most_loaded_roller(bearing, solution)
-    both = contact_stresses(roller, bearing.length, bearing.estar, bearing.profile, 0.0,
-                            bearing.poisson)
-    return case_of_contacts(both, hardness)
 
 
 def row(obj, state, i):
@@ -529,12 +501,12 @@ def row(obj, state, i):
         out[f"{m}_depth"] = w["depth"] if shown else None
     notes = list(s.notes)
     if obj.case is not None:
-        checks, texts, worse = obj.case
+        checks, texts, worse = obj.case.checks, obj.case.notes, obj.case.worse
         if worse is not None:
             c = checks[worse]
             out["case_ratio"] = c.max_ratio
             out["case_ratio_depth"] = c.depth_at_max
-            out["min_case_depth"] = _min_case_depth(checks)
+            out["min_case_depth"] = obj.case.min_case_depth
             notes.append(f"case check: worse contact {worse} (vM/allow inner "
                          + ", outer ".join(f"{checks[k].max_ratio:.4g}"
                                            if checks[k] is not None else "-"
@@ -554,14 +526,39 @@ def model_of(obj):
                                                      "RadialRollerBearing"}
 
 
-def describe(obj, si):
-    """The bearing in one line."""
+def scales(obj):
+    """The size of the quantities that may be round-off in an aligned bearing [SI]:
+    the ring tilt against delta_r/L, the moment against F_r L, the stiffness matrix's
+    coupling terms against sqrt(K_rr K_tt) (the matrix's own scale); a value below
+    :data:`linecontact._units.NOISE` of its scale is shown as 0."""
     b, s = obj.bearing, obj.solution
+    K = s.stiffness
+    out = {"tilt": (abs(s.displacement) + abs(b.clearance)) / b.length,
+           "moment": s.radial_load * b.length}
+    if K.shape == (2, 2):
+        out["stiffness_rt"] = out["stiffness_tr"] = math.sqrt(abs(K[0, 0] * K[1, 1]))
+    return out
+
+
+def describe(obj, si):
+    """The bearing in one line (SI with `si`), round-off shown as 0."""
+    from ..._units import format_numbers
+
+    b, s = obj.bearing, obj.solution
+    sc = scales(obj)
+    M = format_numbers([s.moment], 6, sc["moment"])[0]
+    if si:
+        th = format_numbers([s.tilt], 6, sc["tilt"])[0]
+        return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter:.6g} m, "
+                f"D = {b.roller_diameter:.6g} m, L = {b.length:.6g} m, P_d = "
+                f"{b.clearance:.6g} m, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
+                f"F_r = {s.radial_load:.6g} N, M = {M} N m, theta = {th} rad")
+    th = format_numbers([s.tilt * 1e3], 6, sc["tilt"] * 1e3)[0]
     return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter * 1e3:.6g} "
             f"mm, D = {b.roller_diameter * 1e3:.6g} mm, L = {b.length * 1e3:.6g} mm, "
             f"P_d = {b.clearance * 1e6:.6g} um, E* = {b.estar / 1e9:.5g} GPa, profile "
-            f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {s.moment:.6g} N m, "
-            f"theta = {s.tilt * (1 if si else 1e3):.6g} " + ("rad" if si else "mrad"))
+            f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {M} N m, "
+            f"theta = {th} mrad")
 
 
 _ROLLER_FIELDS = {
@@ -601,7 +598,12 @@ def blocks(obj):
         if flange:
             r["flange_force"] = float(s.flange_forces[j])
         rows.append(r)
-    out = [Block(name="rollers", label="roller", fields=flds, rows=rows,
+    # round-off (an aligned profiled bearing's moments, 1e-16 N m) printed as 0 against
+    # the quantity's scale: a roller's moment against Q_max L, its tilt against the
+    # bearing's (scales)
+    sizes = {"moment": s.max_roller_load * obj.bearing.length,
+             "tilt": scales(obj)["tilt"]} if tilted else {}
+    out = [Block(name="rollers", label="roller", fields=flds, rows=rows, scales=sizes,
                  note="roller j at azimuth psi_j from the load line; approach: "
                       "delta_r cos psi_j - P_d/2 (negative: a gap); Q: its load"
                       + ("; M_j: its inner contact's moment, tilt: its own against "

@@ -17,9 +17,9 @@ whose ``exit_code`` is the command's exit status (2 for a bad option, 1 for a fa
 during the run). dask and distributed are optional (``pip install
 'linecontact[cluster]'``) and imported only here, only when a cluster is asked for.
 
-The address rules, the handshake probe and the local cluster's settings are those of
-the study runner (``tools/studies/runner.py``, issue 35), moved here so that both use one
-copy (linecontact never imports ``tools``).
+The table studies' runner (``tools/studies/runner.py``) connects through these too
+(:func:`start_client`): one copy of the address rules, the handshake probe and the
+local cluster's settings (linecontact never imports ``tools``).
 """
 from __future__ import annotations
 
@@ -29,7 +29,8 @@ import logging
 from pathlib import Path
 
 __all__ = ["ClusterError", "check_scheduler_address", "check_connect_timeout",
-           "check_workers_option", "connect", "require_distributed",
+           "check_workers_option", "probe_scheduler", "start_client", "connect",
+           "require_distributed", "WITHOUT",
            "linecontact_fingerprint", "DEFAULT_CONNECT_TIMEOUT", "DEFAULT_WORKERS",
            "EXTRA"]
 
@@ -69,16 +70,22 @@ def _bad_address(scheduler, why):
     return ClusterError(f"--scheduler {scheduler!r}: {why}", exit_code=2)
 
 
-def check_scheduler_address(scheduler):
+#: What leaving ``--scheduler`` out does, in its refusals (the study runner: "for a
+#: local cluster").
+WITHOUT = "to compute in this process"
+
+
+def check_scheduler_address(scheduler, without=WITHOUT):
     """The address `scheduler` as ``(scheme, host, port)``; a ClusterError (exit 2) with
     one line when it is empty or not a dask scheduler address with a host and a port.
+    `without`: what leaving the option out does (said in the line).
 
     >>> check_scheduler_address("tcp://127.0.0.1:8786")
     ('tcp', '127.0.0.1', 8786)
     >>> check_scheduler_address("10.0.0.5:8786")
     ('tcp', '10.0.0.5', 8786)
     """
-    example = "e.g. tcp://HOST:8786 (leave the option out to compute in this process)"
+    example = f"e.g. tcp://HOST:8786 (leave the option out {without})"
     if not isinstance(scheduler, str) or not scheduler.strip():
         raise _bad_address(scheduler, f"empty: give the address of a running dask "
                                       f"scheduler, {example}")
@@ -127,7 +134,7 @@ async def _identify(address, timeout):
         comm.abort()
 
 
-def _probe_scheduler(scheduler, timeout):
+def probe_scheduler(scheduler, timeout, without=WITHOUT):
     """ClusterError (exit 2), within about `timeout` seconds, unless a dask scheduler
     answers at `scheduler`: nothing listening, an unknown host, another server (an
     HTTP port would otherwise hold the client for minutes) or a dask worker each get
@@ -135,7 +142,7 @@ def _probe_scheduler(scheduler, timeout):
     import asyncio
     import socket
     from concurrent.futures import ThreadPoolExecutor, TimeoutError as FutureTimeout
-    scheme, host, port = check_scheduler_address(scheduler)
+    scheme, host, port = check_scheduler_address(scheduler, without)
     if scheme in ("tcp", "tls", "ws", "wss"):
         try:
             socket.create_connection((host, port), timeout=timeout).close()
@@ -189,12 +196,14 @@ def check_workers_option(workers):
     return value
 
 
-@contextlib.contextmanager
-def connect(scheduler=None, workers=None, connect_timeout=None):
-    """A ``distributed.Client``: to the scheduler at `scheduler` (probed first, see the
-    module docstring), else to a local cluster of `workers` processes (default
-    :data:`DEFAULT_WORKERS`) with one thread each on 127.0.0.1; closed (with the local
-    cluster) at the end of the block.
+def start_client(scheduler=None, workers=None, connect_timeout=None, without=WITHOUT,
+                 quiet=True):
+    """``(client, cluster)``: a ``distributed.Client`` to the scheduler at `scheduler`
+    (probed first, see the module docstring; cluster None), else to a new local
+    cluster of `workers` processes (default :data:`DEFAULT_WORKERS`) with one thread
+    each on 127.0.0.1 (the cluster: the caller closes both). `quiet`: the local
+    workers log only critical messages (not the heartbeats that fail as the cluster
+    closes).
 
     Raises
     ------
@@ -204,34 +213,46 @@ def connect(scheduler=None, workers=None, connect_timeout=None):
     """
     timeout = check_connect_timeout(connect_timeout)
     if scheduler is not None:
-        check_scheduler_address(scheduler)      # a typo fails before any import
+        check_scheduler_address(scheduler, without)     # a typo fails before any import
     require_distributed("--scheduler" if scheduler is not None else "--workers")
     from dask.distributed import Client, LocalCluster
-    cluster = None
     if scheduler is not None:
-        _probe_scheduler(scheduler, timeout)
+        probe_scheduler(scheduler, timeout, without)
         try:
-            client = Client(scheduler.strip(), timeout=f"{timeout}s")
+            return Client(scheduler.strip(), timeout=f"{timeout}s"), None
         except (OSError, TimeoutError) as exc:
             raise _bad_address(scheduler, f"no dask client connection within "
                                           f"{timeout:g} s ({exc})") from None
-    else:
-        import dask
-        # dask's nannies set MALLOC_TRIM_THRESHOLD_=65536 in the workers'
-        # environment, which switches off glibc's dynamic mmap threshold (every array
-        # above 128 KiB mmap'ed and unmapped again: page faults, system time); None
-        # leaves glibc's default (a value the user exported is still passed on)
-        with dask.config.set({"distributed.nanny.pre-spawn-environ."
-                              "MALLOC_TRIM_THRESHOLD_": None}):
-            cluster = LocalCluster(n_workers=check_workers_option(workers),
-                                   threads_per_worker=1, processes=True,
-                                   host="127.0.0.1", dashboard_address=None,
-                                   # the workers' log lines when the cluster closes
-                                   # (heartbeats to a closed scheduler) say nothing
-                                   # to the user; a task's failure reaches the batch
-                                   silence_logs=logging.CRITICAL,
-                                   scheduler_kwargs={"dashboard_address": "127.0.0.1:0"})
-        client = Client(cluster)
+    import dask
+    # dask's nannies set MALLOC_TRIM_THRESHOLD_=65536 in the workers' environment
+    # (config distributed.nanny.pre-spawn-environ). Setting it switches off glibc's
+    # dynamic mmap threshold, so every array above 128 KiB (a 512 x 512 grid is
+    # 2 MiB) is mmap'ed and unmapped again: 1.76 million against 64 000 page faults,
+    # 13 % more CPU, for one L/R of the paper study at 512 x 512
+    # (tools/benchmarks/results/paper_study.txt). None leaves glibc's default (a
+    # value the user exported is still passed on: dask prefers os.environ).
+    with dask.config.set({"distributed.nanny.pre-spawn-environ."
+                          "MALLOC_TRIM_THRESHOLD_": None}):
+        cluster = LocalCluster(n_workers=check_workers_option(workers),
+                               threads_per_worker=1, processes=True,
+                               host="127.0.0.1",          # nothing listens outside
+                               dashboard_address=None,    # no dashboard: not needed,
+                               # but the scheduler's HTTP server (health, metrics)
+                               # runs anyway: on loopback, a free port (not 8787)
+                               scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+                               # the workers' log lines when the cluster closes
+                               # (heartbeats to a closed scheduler) say nothing to
+                               # the user; a task's failure reaches the caller
+                               silence_logs=logging.CRITICAL if quiet else
+                               logging.WARNING)
+    return Client(cluster), cluster
+
+
+@contextlib.contextmanager
+def connect(scheduler=None, workers=None, connect_timeout=None):
+    """:func:`start_client` as a context: the client (and a local cluster) closed at
+    the end of the block."""
+    client, cluster = start_client(scheduler, workers, connect_timeout)
     try:
         yield client
     finally:

@@ -309,6 +309,22 @@ class _CalcTable:
         return render.json_header(argv, results)
 
     @staticmethod
+    def groups(cases, errors):
+        """Per row its contact's group (:func:`~linecontact.calc.compute.group_rows`):
+        a batch on a cluster keeps each group in one part."""
+        from .compute import group_rows
+
+        return group_rows(cases, errors)[1]
+
+    @staticmethod
+    def merge(parts, rows, errors, cases, label=None):
+        """The results of the whole batch from its parts'
+        (:func:`~linecontact.calc.compute.merge_results`)."""
+        from .compute import merge_results
+
+        return merge_results(parts, rows, errors, cases, label)
+
+    @staticmethod
     def result_names():
         """Every name a result column of this command may have (a rerun's own)."""
         from .compute import all_fields

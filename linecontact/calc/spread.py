@@ -43,20 +43,8 @@ def _same(name):
     return name
 
 
-def _table(command):
-    """The command whose rows these are: ``calc``'s table or a subcommand's."""
-    from .batch import CALC
-
-    if command == CALC.name:
-        return CALC
-    from .command import Command
-    from .subcommands import SUBCOMMANDS
-
-    return Command(next(m for m in SUBCOMMANDS if m.name == command))
-
-
-def _evaluate_rows(command, cells, errors, model, specs, expected):
-    """On a worker: the results of one range of rows of `command`'s batch, from their
+def _evaluate_rows(table, cells, errors, model, specs, expected):
+    """On a worker: the results of one part of the rows of `table`'s batch, from their
     cells (name -> list of str) and the client's errors of these rows (a row with one
     is not evaluated); what the batch's output does not need (the cases, the solution
     objects) stays here."""
@@ -74,7 +62,6 @@ def _evaluate_rows(command, cells, errors, model, specs, expected):
         raise WorkerMismatch(f"{where} runs other linecontact code than this process "
                              f"(there: {found}; here: {expected}), so its rows would "
                              f"differ: install the same linecontact there and restart it")
-    table = _table(command)
     m = len(errors)
     cases, _, errs = table.parse(cells, m, _same)
     errs[:] = errors
@@ -138,13 +125,10 @@ def evaluate_on_cluster(table, cells, errors, cases, *, model=None, specs=None,
         rows = split_rows(table, cases, errors, max(1, nworkers) * RANGES_PER_WORKER)
         parts = _run_parts(cl, table, cells, errors, rows, model, specs, progress,
                            scheduler or "the client's scheduler")
-    if hasattr(table, "module"):
-        from .command import CommandResults
-        return CommandResults.merged(parts, rows, errors, cases)
-    from .compute import Unmergeable, merge_results
+    from .compute import Unmergeable
 
     try:
-        return merge_results(parts, rows, errors, cases, label)
+        return table.merge(parts, rows, errors, cases, label)
     except Unmergeable as exc:
         from . import render
         print(f"{render.PROG} {table.name}: note: the row ranges computed on the cluster "
@@ -167,12 +151,10 @@ def split_rows(table, cases, errors, k):
 
     n = len(errors)
     k = max(1, min(n, k))
-    if hasattr(table, "module"):
+    unit = table.groups(cases, errors)
+    if unit is None:
         bounds = [n * j // k for j in range(k + 1)]
         return [np.arange(a, b) for a, b in zip(bounds[:-1], bounds[1:])]
-    from .compute import group_rows
-
-    unit = group_rows(cases, errors)[1]
     bad = unit < 0                          # a refused row: a unit of its own
     unit[bad] = unit.max(initial=-1) + 1 + np.arange(int(bad.sum()))
     _, first, inverse = np.unique(unit, return_index=True, return_inverse=True)
@@ -204,7 +186,7 @@ def _run_parts(client, table, cells, errors, rows, model, specs, progress, where
     try:
         for r in rows:
             futures.append(client.submit(
-                _evaluate_rows, table.name, {name: _take(col, r) for name, col in
+                _evaluate_rows, table, {name: _take(col, r) for name, col in
                                              cells.items()},
                 [errors[i] for i in r.tolist()], model, specs, expected, pure=False))
         index = {f.key: j for j, f in enumerate(futures)}

@@ -23,7 +23,7 @@ from linecontact.calc.cli import main  # noqa: E402
 # the cases: a calc batch with plain, crowned and refused rows; the bearing's
 # tolerance Monte Carlo of docs/cluster.md (one of the benchmark's, the same rows)
 from tools.benchmarks.bench_cluster_batch import (BEARING, bearing_cases,  # noqa: E402
-                                                  calc_cases)
+                                                  calc_cases, local_processes)
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -313,3 +313,35 @@ def test_parts_keep_each_contact_whole(tmp_path):
         groups = staticmethod(lambda cases, errors: None)
     ranges = split_rows(Sub, cases, errors, 4)
     assert [(r[0], r[-1]) for r in ranges] == [(0, 74), (75, 149), (150, 224), (225, 299)]
+
+
+def test_lost_scheduler_is_one_line(tmp_path):
+    """The scheduler killed while a bearing batch runs on it: one line naming it and
+    what to restart, exit 1, no traceback, nothing written (its own scheduler and
+    worker: the module's stay up)."""
+    from dask.distributed import Client
+
+    src = bearing_cases(tmp_path / "b.csv", 300)
+    out = tmp_path / "o.csv"
+    procs = []
+    with local_processes(1, tmp_path, procs) as address:
+        cmd = subprocess.Popen([sys.executable, "-m", "linecontact", "bearing", str(src),
+                                *BEARING, "--scheduler", address, "-o", str(out)],
+                               cwd=REPO, stderr=subprocess.PIPE, text=True,
+                               env=dict(os.environ, PYTHONPATH=str(REPO)))
+        try:
+            with Client(address, timeout="60s") as client:   # wait for the parts
+                t0 = time.monotonic()
+                while not client.run_on_scheduler(
+                        lambda dask_scheduler: len(dask_scheduler.tasks)):
+                    assert time.monotonic() - t0 < 120 and cmd.poll() is None
+                    time.sleep(0.2)
+            time.sleep(1)
+            procs[0].kill()                                  # the scheduler
+            err = cmd.communicate(timeout=120)[1].strip().splitlines()
+        finally:
+            if cmd.poll() is None:
+                cmd.kill()
+    assert cmd.returncode == 1 and not out.exists(), err
+    assert len(err) == 1 and "lost the dask scheduler at " + address in err[0] \
+        and "restart the scheduler and its workers" in err[0], err

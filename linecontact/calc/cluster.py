@@ -30,6 +30,7 @@ from pathlib import Path
 
 __all__ = ["ClusterError", "check_scheduler_address", "check_connect_timeout",
            "check_workers_option", "probe_scheduler", "start_client", "connect",
+           "quiet_client_logs", "CLIENT_LOGGERS",
            "require_distributed", "WITHOUT",
            "linecontact_fingerprint", "DEFAULT_CONNECT_TIMEOUT", "DEFAULT_WORKERS",
            "EXTRA"]
@@ -259,6 +260,34 @@ def connect(scheduler=None, workers=None, connect_timeout=None):
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+#: Loggers of the client side of distributed whose messages on a lost connection
+#: (tracebacks of the reconnection attempts) the callers replace by their own line.
+CLIENT_LOGGERS = ("distributed.client", "distributed.comm", "distributed.core",
+                  "distributed.batched", "distributed.utils")
+
+
+def _drop(record):
+    return False
+
+
+@contextlib.contextmanager
+def quiet_client_logs(active=True, names=CLIENT_LOGGERS):
+    """Drop every record of the loggers `names` inside the block (a filter:
+    distributed resets their levels when a client starts); nothing when not `active`.
+    After a lost scheduler the client's reconnection task logs its traceback when
+    ``client.close()`` cancels it: close the client inside the block. The filter is
+    removed at the end in every case (no lasting silence of distributed's logs in a
+    notebook)."""
+    loggers = [logging.getLogger(n) for n in names] if active else []
+    for lg in loggers:
+        lg.addFilter(_drop)
+    try:
+        yield
+    finally:
+        for lg in loggers:
+            lg.removeFilter(_drop)
 
 
 _FINGERPRINT = []

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import sys
 
-from .cluster import ClusterError, connect, linecontact_fingerprint
+from .cluster import ClusterError, connect, linecontact_fingerprint, quiet_client_logs
 
 __all__ = ["evaluate_on_cluster", "split_rows", "RANGES_PER_WORKER", "WorkerMismatch"]
 
@@ -117,7 +117,10 @@ def evaluate_on_cluster(table, cells, errors, cases, *, model=None, specs=None,
     saved = list(errors)
     opened = (contextlib.nullcontext(client) if client is not None else
               connect(scheduler, workers, connect_timeout))
-    with opened as cl:
+    # with a remote scheduler every connection fault reaches the user as one line
+    # (ClusterError): distributed's own logged tracebacks would bury it
+    with quiet_client_logs(active=client is None and scheduler is not None), \
+            opened as cl:
         try:
             nworkers = len(cl.scheduler_info().get("workers", {}))
         except Exception:  # noqa: BLE001 - the count only sizes the parts

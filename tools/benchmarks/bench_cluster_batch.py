@@ -75,15 +75,16 @@ def _free_port():
 
 
 @contextlib.contextmanager
-def local_processes(workers, folder):
+def local_processes(workers, folder, procs=None):
     """`dask scheduler` and `workers` single-thread `dask worker` processes on
-    127.0.0.1, started separately; yields the address."""
+    127.0.0.1, started separately (appended to the list `procs` if given, the
+    scheduler first); yields the address; all stopped at the end."""
     from dask.distributed import Client
 
     port = _free_port()
     address = f"tcp://127.0.0.1:{port}"
     env = dict(os.environ, PYTHONPATH=str(REPO))
-    procs = []
+    procs = [] if procs is None else procs
 
     def start(*argv):
         procs.append(subprocess.Popen([sys.executable, "-m", "dask", *argv], cwd=REPO,

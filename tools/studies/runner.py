@@ -480,42 +480,12 @@ def _lost_scheduler(scheduler, checkpoint, done, total):
                       f"{scheduler} ...'), then {again}")
 
 
-#: Loggers of the client side of distributed whose messages on a lost connection
-#: (tracebacks of the reconnection attempts) the runner replaces by its own line.
-_CLIENT_LOGGERS = ("distributed.client", "distributed.comm", "distributed.core",
-                   "distributed.batched", "distributed.utils")
-
-
-class _Quiet:
-    """Drop every record of the loggers `names` inside the block (a filter: distributed
-    resets their levels when a client starts). After a lost scheduler the client's
-    reconnection task logs its traceback when ``client.close()`` cancels it, which
-    the runner does inside the block."""
-
-    def __init__(self, names, active=True):
-        import logging
-        self.loggers = [logging.getLogger(n) for n in names] if active else []
-
-    @staticmethod
-    def filter(record):
-        return False
-
-    def __enter__(self):
-        for lg in self.loggers:
-            lg.addFilter(self.filter)
-        return self
-
-    def __exit__(self, exc_type, exc, tb):
-        for lg in self.loggers:
-            lg.removeFilter(self.filter)
-        return False
-
-
 def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar,
                  connect_timeout=None, total=None):
     # with a remote scheduler every connection fault reaches the user as one line
     # of the runner's (StudyError): distributed's own logged tracebacks would bury it
-    with _Quiet(_CLIENT_LOGGERS, active=scheduler is not None):
+    from linecontact.calc.cluster import quiet_client_logs
+    with quiet_client_logs(active=scheduler is not None):
         _run_on_client(func, todo, scheduler, workers, checkpoint, done, bar,
                        connect_timeout, total)
 

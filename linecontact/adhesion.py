@@ -38,10 +38,16 @@ adhesion``), in the self-similar variables of the parabolic cylinder
 :math:`F_c/(L\,F_{c,2D}/L)` is one function of :math:`s = b_c/L = (2\tilde w/\pi)^{1/3}`
 for every L/R. The 2D law holds per unit length in the middle of a long roller, but the
 whole roller's ratio does not tend to 1 as s -> 0: below s of about 0.08 the contact
-unzips from its ends before its middle reaches b_c, and the ratio falls with s (the BEM
-measured it down to the table's smallest s; no value is given below). The plain MDR
-value is given beside it, by name (``method='mdr'``), with its error measured against
-the same BEM.
+unzips from its ends before its middle reaches b_c, and the ratio falls with s. Below
+the BEM table (s < 0.025, most real rollers) the pull-off comes from
+``tables/adhesion_long_roller.csv`` (``python -m tools.build_tables adhesion-long``),
+down to s = 1e-3, with its stated error: an end model, the ends peeling when the energy
+release rate :math:`G_e = f^2(k\ln(L/b) + c)/(2\pi E^* b)` of the line-loaded strip
+(f the middle's tension per unit length, b its half-width) reaches w, k and c fitted
+on the BEM, including BEM runs below the table; the ratio falls as
+:math:`(4/3)\,16^{1/6}/\sqrt{k\ln(1/s)}` as s -> 0, never to the 2D value
+(docs/adhesion.md). The plain MDR value is given beside it, by name
+(``method='mdr'``), with its error measured against the same BEM or end model.
 
 JKR needs a large Tabor parameter :math:`\mu_T = (R w^2/(E^{*2} z_0^3))^{1/3}`
 (:func:`tabor_parameter`, z0 about 0.3 nm, the range of the surface forces); below
@@ -88,6 +94,7 @@ __all__ = [
     "jkr_cylinder_pull_off",
     "jkr_cylinder_zero_load_half_width",
     "ADHESION_TABLE",
+    "LONG_ROLLER_TABLE",
     "CYLINDER_MODELS",
     "TABOR_JKR",
     "TABOR_DMT",
@@ -95,6 +102,10 @@ __all__ = [
 
 #: Name of the BEM table of the finite cylinder's adhesion (tables/).
 ADHESION_TABLE = "adhesion_cylinder"
+
+#: Name of the long roller's pull-off table below the BEM table (tables/): the end
+#: model calibrated on the BEM (python -m tools.build_tables adhesion-long).
+LONG_ROLLER_TABLE = "adhesion_long_roller"
 
 #: Tabor parameter above which the JKR theory holds (Johnson & Greenwood 1997's
 #: adhesion map: JKR for mu_T > about 5), and below which the contact is DMT-like.
@@ -832,10 +843,10 @@ def _cached_table(name):
     return read_table(name)
 
 
-def _table(name, directory):
+def _table(name, directory, required=("s", "ratio_force", "ratio_depth", "mdr_err_force",
+                                     "mdr_err_depth", "d_tilde_off")):
     table = read_table(name, directory=directory) if directory else _cached_table(name)
-    for col in ("s", "ratio_force", "ratio_depth", "mdr_err_force", "mdr_err_depth",
-                "d_tilde_off"):
+    for col in required:
         if col not in table.columns:
             raise TableError(f"{table.path}: no column {col!r}")
     s = table.columns["s"]
@@ -868,20 +879,24 @@ class CylinderAdhesion:
     table : str, optional
         Table stem (default :data:`ADHESION_TABLE`).
     directory : path-like, optional
-        Read the table from this folder instead of tables/.
+        Read the tables from this folder instead of tables/.
+    long_table : str, optional
+        Stem of the long roller's table below the BEM table (default
+        :data:`LONG_ROLLER_TABLE`).
 
     Notes
     -----
-    The corrected values (``method='bem'``) are valid for s inside the table's range
+    The corrected values (``method='bem'``) are the BEM table's for s inside its range
     (0.025 <= s <= 0.5: :attr:`s_range`); a larger s is refused here (a disc-like
-    contact: the plain rule of Hess is :meth:`AdhesiveContact.from_model`), a smaller one
-    by :meth:`pull_off` (the ratio falls as s decreases, ends peeling first, and is not
-    extrapolated; the 2D law per unit length of the middle section is
+    contact: the plain rule of Hess is :meth:`AdhesiveContact.from_model`). Below it, down
+    to s = 1e-3 (:attr:`long_range`), :meth:`pull_off` gives the long roller's value
+    (method 'end-model', :data:`LONG_ROLLER_TABLE`) with its stated error: the ends
+    peel first and the ratio keeps falling as s decreases; a smaller s is refused by
+    :meth:`pull_off` (the 2D law per unit length of the middle section is
     :func:`jkr_cylinder_pull_off`). ``method='mdr'`` gives the rule of Hess at any s,
-    with its error measured against the BEM inside the table and NaN (not measured)
-    below it. Accuracy of the table: its header's ``accuracy``, ``grid_check`` and
-    ``straight_edge`` lines (docs/adhesion.md). JKR itself needs a large Tabor
-    parameter (:attr:`tabor`).
+    with its error measured against the BEM or the end model, NaN (not measured) below
+    both. Accuracy of the tables: their headers' ``accuracy`` lines (docs/adhesion.md).
+    JKR itself needs a large Tabor parameter (:attr:`tabor`).
 
     Examples
     --------
@@ -904,7 +919,8 @@ class CylinderAdhesion:
        and Friction, Springer (2015), chapter 5 (the MDR's rule).
     """
 
-    def __init__(self, model, work, *, table=ADHESION_TABLE, directory=None):
+    def __init__(self, model, work, *, table=ADHESION_TABLE, directory=None,
+                 long_table=LONG_ROLLER_TABLE):
         key = getattr(model, "key", "")
         if key not in CYLINDER_MODELS:
             raise OutOfRangeError("model", key or type(model).__name__,
@@ -915,6 +931,7 @@ class CylinderAdhesion:
         self.model = model
         self.work = _one("work", work, Interval("work", 0.0, np.inf, True, True, "J/m^2"))
         self.table = _table(table, directory)
+        self._long_name, self._directory = long_table, directory
         R, L, E = model.radius, model.length, model.estar
         self.w_tilde = self.work * R ** 2 / (E * L ** 3)
         self.s = float(np.cbrt(2 * self.w_tilde / np.pi))
@@ -942,6 +959,32 @@ class CylinderAdhesion:
         """The table's range of s = b_c/L [-]: (smallest, largest)."""
         s = self.table.columns["s"]
         return float(s[0]), float(s[-1])
+
+    @functools.cached_property
+    def long_table(self):
+        """The long roller's table below the BEM table (:data:`LONG_ROLLER_TABLE`)."""
+        return _table(self._long_name, self._directory,
+                      ("s", "ratio_force", "error_force", "ratio_depth", "error_depth"))
+
+    @property
+    def long_range(self):
+        """The long roller's table's range of s = b_c/L [-]: (smallest, largest)."""
+        s = self.long_table.columns["s"]
+        return float(s[0]), float(s[-1])
+
+    def _long(self, control):
+        """(ratio, relative error) of the long roller's table at this s, or None outside
+        its range."""
+        from scipy.interpolate import PchipInterpolator
+
+        cols = self.long_table.columns
+        s_lo, s_hi = self.long_range
+        if not s_lo * (1 - 1e-12) <= self.s <= s_hi * (1 + 1e-12):
+            return None
+        x = np.log(cols["s"])
+        r = float(PchipInterpolator(x, cols[f"ratio_{control}"])(np.log(self.s)))
+        e = float(PchipInterpolator(x, cols[f"error_{control}"])(np.log(self.s)))
+        return r, e / r
 
     @property
     def in_table(self):
@@ -976,62 +1019,76 @@ class CylinderAdhesion:
         control : {'force', 'depth'}
             Force or depth control.
         method : {'bem', 'mdr'}
-            'bem': the BEM table's value (refused below the table's smallest s);
-            'mdr': the rule of Hess on the model's MDR profile, with its measured error.
+            'bem': the BEM table's value, and below it (s < :attr:`s_range`'s start)
+            the long roller's (the end model calibrated on the BEM,
+            :data:`LONG_ROLLER_TABLE`, down to :attr:`long_range`'s start) with its
+            stated error; 'mdr': the rule of Hess on the model's MDR profile, with its
+            error measured against either.
 
         Returns
         -------
         dict
             ``force`` [N], ``ratio`` (over the 2D JKR value of the length) [-],
-            ``method``, ``error`` (the value's error against the BEM: 0 for 'bem', the
-            model's MDR force over the BEM table's, minus 1, for 'mdr', NaN below the
-            table; the table's ``mdr_err_*`` columns are the universal curve's) [-],
-            ``depth`` [m]
-            (the BEM's depth at the depth-controlled jump-off; NaN under force control
-            or with 'mdr'), ``in_table`` (bool); with 'bem' also ``mdr_force`` [N]
-            (NaN where the model refuses, the reason in ``mdr_note``) and
-            ``mdr_error`` [-] beside it.
+            ``method`` ('bem', 'end-model' or 'mdr'), ``error`` [-]: 0 for 'bem' (the
+            BEM's own accuracy is its table's header), the stated relative error for
+            'end-model' (the long roller's table's ``error_*`` over its ratio), the
+            MDR force over the BEM's or end model's, minus 1, for 'mdr' (NaN where
+            neither is given; the BEM table's ``mdr_err_*`` columns are the universal
+            curve's); ``pull_off_2d`` [N] (the 2D JKR value times L, beside it);
+            ``depth`` [m] (the BEM's depth at the depth-controlled jump-off; NaN under
+            force control, with the end model or with 'mdr'), ``in_table`` (bool:
+            inside the BEM table); with 'bem' also ``mdr_force`` [N] (NaN where the model
+            refuses, the reason in ``mdr_note``) and ``mdr_error`` [-] beside it.
 
         Raises
         ------
         OutOfRangeError
-            method='bem' with s below the table (``work`` named, with the range).
+            method='bem' with s below the long roller's table (``work`` named, with
+            the range).
         """
         if control not in _CONTROLS:
             raise UnknownNameError("control", control, _CONTROLS)
         if method not in _METHODS:
             raise UnknownNameError("method", method, _METHODS)
-        # the MDR's error: this model's rule of Hess against the BEM's value (the
+        # the reference: the BEM table inside it, the end model below it (None: neither)
+        long = None if self.in_table else self._long(control)
+        if self.in_table:
+            ratio, kind, error = self._column(f"ratio_{control}"), "bem", 0.0
+        elif long is not None:
+            (ratio, error), kind = long, "end-model"
+        else:
+            ratio, kind, error = np.nan, None, np.nan
+        ref = ratio * self.pull_off_2d
+        # the MDR's error: this model's rule of Hess against the reference (the
         # table's mdr_err_* columns hold the universal curve's only; another model's
         # MDR profile, Li-Popov's or Puttock-Thwaite's, pulls off elsewhere)
-        bem = (self._column(f"ratio_{control}") * self.pull_off_2d if self.in_table
-               else np.nan)
         if method == "mdr":
             F = self.mdr.pull_off(control)["force"]
             return {"force": F, "ratio": F / self.pull_off_2d, "method": "mdr",
-                    "error": F / bem - 1, "depth": np.nan, "in_table": self.in_table}
-        if not self.in_table:
-            s_min = self.s_range[0]
+                    "error": F / ref - 1, "pull_off_2d": self.pull_off_2d,
+                    "depth": np.nan, "in_table": self.in_table}
+        if kind is None:
+            s_min = self.long_range[0]
             R, L, E = self.model.radius, self.model.length, self.model.estar
             raise OutOfRangeError(
                 "work", self.work, f"{s_min ** 3 * np.pi / 2 * E * L ** 3 / R ** 2:.6g} <= "
                 f"w J/m^2 (s = b_c/L >= {s_min:g})", unit="J/m^2",
-                hint=f"s = b_c/L = {self.s:.3g} is below the BEM table, where the ratio "
-                     "to the 2D JKR value falls as s decreases (the ends peel first) and "
-                     "is not extrapolated; method='mdr' gives the rule of Hess (error not "
-                     "measured there), jkr_cylinder_pull_off the 2D law per unit length")
-        ratio = self._column(f"ratio_{control}")
+                hint=f"s = b_c/L = {self.s:.3g} is below the long roller's table (its "
+                     f"end model, calibrated and checked on the BEM, is given for s >= "
+                     f"{s_min:g}); the ratio to the 2D JKR value keeps falling there; "
+                     "method='mdr' gives the rule of Hess (error not measured there), "
+                     "jkr_cylinder_pull_off the 2D law per unit length")
         try:
             mdr, mdr_note = self.mdr.pull_off(control)["force"], ""
         except OutOfRangeError as exc:     # e.g. beyond the model's range of depth
             mdr, mdr_note = np.nan, str(exc).splitlines()[0]
         depth = np.nan
-        if control == "depth":
+        if control == "depth" and kind == "bem":
             depth = self._column("d_tilde_off") * self.model.length ** 2 / self.model.radius
-        return {"force": ratio * self.pull_off_2d, "ratio": ratio, "method": "bem",
-                "error": 0.0, "mdr_force": mdr, "mdr_error": mdr / bem - 1,
-                "mdr_note": mdr_note,
-                "depth": depth, "in_table": True}
+        return {"force": ref, "ratio": ratio, "method": kind, "error": error,
+                "pull_off_2d": self.pull_off_2d, "mdr_force": mdr,
+                "mdr_error": mdr / ref - 1, "mdr_note": mdr_note,
+                "depth": depth, "in_table": self.in_table}
 
     def zero_load(self):
         """State at zero load: the 2D JKR half-width and the MDR's half-length and depth.

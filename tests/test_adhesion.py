@@ -124,26 +124,32 @@ def test_2d_jkr_pull_off_is_the_minimum_of_its_law():
     assert res.fun == pytest.approx(F, rel=1e-12)
 
 
-def test_long_roller_below_the_table_is_refused_and_the_mdr_named():
-    """A long roller (s = b_c/L = 1e-3, below the BEM table): the corrected pull-off is
-    refused with the parameter and the range named (the whole roller's ratio to the 2D
-    value falls as s decreases: it is not extrapolated); method='mdr' gives the rule of
-    Hess by name, its error not measured there (NaN); per unit length the 2D law is
-    jkr_cylinder_pull_off (the BEM's long strip follows it within 1 %:
-    tests/test_adhesion_bem.py). The plain rule misses the 2D value by more than 10 %
-    (its edge term scales with the MDR half-length ~ L, not with b; its pull-off lies
-    beyond d = 0.15 R here, so the model is asked with extrapolate=True)."""
+def test_long_roller_below_the_table_gets_the_end_model_and_the_mdr_its_error():
+    """A long roller (s = b_c/L = 1e-3, below the BEM table): the pull-off is the long
+    roller's end model (method 'end-model', tables/adhesion_long_roller.csv, with its
+    stated error; tests/test_adhesion_long.py), below the 2D JKR value times L (the ends
+    peel first); method='mdr' gives the rule of Hess by name with its error against it.
+    The plain rule misses by more than 10 % (its edge term scales with the MDR
+    half-length ~ L, not with b; its pull-off lies beyond d = 0.15 R here, so the model
+    is asked with extrapolate=True). Below s = 1e-3 the pull-off is refused with the
+    parameter and the range named, and the rule of Hess has no measured error (NaN)."""
     Rr, L, Ee = 1e-3, 0.2, 2.7e6
     w = math.pi / 2 * 1e-3 ** 3 * Ee * L ** 3 / Rr ** 2
     c = CylinderAdhesion(get_model("universal", Rr, L, Ee, extrapolate=True), w)
     assert c.s == pytest.approx(1e-3, rel=1e-9)
-    with pytest.raises(OutOfRangeError, match="work.*below the BEM table"):
-        c.pull_off("force")
+    r = c.pull_off("force")
+    assert r["method"] == "end-model" and 0 < r["error"] < 0.06   # stated 5.6 % at 1e-3
+    assert 0.5 < r["ratio"] < 1 and r["pull_off_2d"] == c.pull_off_2d
     res = c.pull_off("force", method="mdr")
-    assert res["method"] == "mdr" and math.isnan(res["error"])
+    assert res["method"] == "mdr"
+    assert res["error"] == pytest.approx(res["force"] / r["force"] - 1, rel=1e-12)
     F2, _ = jkr_cylinder_pull_off(Rr, Ee, w)
     assert res["force"] == pytest.approx(c.mdr.pull_off("force")["force"], rel=1e-12)
     assert abs(res["force"] / L / F2 - 1) > 0.1
+    c2 = CylinderAdhesion(get_model("universal", Rr, L, Ee, extrapolate=True), w / 8)
+    with pytest.raises(OutOfRangeError, match="work.*below the long roller's table"):
+        c2.pull_off("force")
+    assert math.isnan(c2.pull_off("force", method="mdr")["error"])
 
 
 def test_corrected_values_are_the_table_at_its_nodes():

@@ -44,22 +44,47 @@ def test_bem_columns_are_the_library_values(capsys):
 
 
 def test_columns_are_the_library_values(capsys):
-    """Below the BEM table (s = 0.0067) the corrected pull-off is not given (NaN, the
-    row's note says why) and the MDR's error is not measured; the MDR pull-off, zero
-    load, the depth at the load with adhesion and the Tabor parameter equal the
-    library's."""
+    """Below the BEM table (s = 0.0067) the pull-off is the long roller's end model
+    (the row's note says so) with its stated error, beside the 2D JKR value times L, and
+    the MDR's error is measured against it; the MDR pull-off, zero load, the depth at
+    the load with adhesion and the Tabor parameter equal the library's."""
     row = _row(capsys, CASE + ["--load", "10mN", "--work-of-adhesion", "40mJ/m^2"])
     E = effective_modulus(2e6, 0.5)
     m = get_model("universal", 0.5e-3, 2e-3, E)
     mdr = AdhesiveContact.from_model(m, 0.04)
-    assert row["pull_off_force"] is None or np.isnan(row["pull_off_force"])
-    assert row["pull_off_mdr_error"] is None or np.isnan(row["pull_off_mdr_error"])
+    c = CylinderAdhesion(m, 0.04)
+    f, d = c.pull_off("force"), c.pull_off("depth")
+    assert f["method"] == "end-model"
+    assert row["pull_off_force"] == pytest.approx(f["force"], rel=1e-12)
+    assert row["pull_off_depth_ctrl"] == pytest.approx(d["force"], rel=1e-12)
+    assert row["pull_off_error"] == pytest.approx(max(f["error"], d["error"]), rel=1e-12)
+    assert row["pull_off_2d"] == pytest.approx(c.pull_off_2d, rel=1e-12)
+    assert row["pull_off_mdr_error"] == pytest.approx(f["mdr_error"], rel=1e-12)
     assert "below the BEM table" in json.dumps(row)
+    assert "end model" in json.dumps(row)
     assert row["pull_off_mdr"] == pytest.approx(mdr.pull_off("force")["force"], rel=1e-12)
     assert row["zero_load_depth"] == pytest.approx(mdr.zero_load()["depth"], rel=1e-12)
     assert row["depth_adhesive"] == pytest.approx(mdr.depth_at_force(0.01), rel=1e-12)
     assert row["tabor"] == pytest.approx(tabor_parameter(0.5e-3, 0.04, E), rel=1e-12)
     assert row["depth_adhesive"] > row["depth"], "adhesion pulls the roller in deeper"
+
+
+def test_below_the_long_roller_table_no_pull_off_and_no_bare_mdr(capsys):
+    """s = b_c/L below 1e-3 (R 5 mm, L 200 mm, w 1 mJ/m^2: s = 9e-5): neither the pull-off
+    nor the rule of Hess is printed (its error is measured nowhere there: it is never
+    the only pull-off shown without one); the 2D JKR value times L is, and the note
+    says why."""
+    argv = ["calc", "--radius", "5mm", "--length", "200mm", "--modulus", "2MPa",
+            "--poisson", "0.5", "--model", "universal", "--load", "10mN",
+            "--work-of-adhesion", "1mJ/m^2"]
+    row = _row(capsys, argv)
+    for key in ("pull_off_force", "pull_off_mdr", "pull_off_error"):
+        assert row[key] is None or np.isnan(row[key])
+    m = get_model("universal", 5e-3, 0.2, effective_modulus(2e6, 0.5))
+    c = CylinderAdhesion(m, 1e-3)
+    assert c.s < 1e-3
+    assert row["pull_off_2d"] == pytest.approx(c.pull_off_2d, rel=1e-12)
+    assert "below the long roller's table" in json.dumps(row)
 
 
 def test_depth_given_gives_the_adhesive_force(capsys):

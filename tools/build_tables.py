@@ -26,6 +26,10 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
 ``adhesion``
     Pull-off force of the finite cylinder with JKR adhesion, adhesive BEM against the
     MDR's rule of Hess: tables/adhesion_cylinder.csv (tools.studies.adhesion_study).
+``adhesion-long``
+    Pull-off of long rollers below that table (s = b_c/L down to 1e-3): an end model
+    calibrated on the BEM and checked by BEM runs below the table:
+    tables/adhesion_long_roller.csv (tools.studies.adhesion_long_study).
 ``bearing``
     Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
     spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
@@ -51,6 +55,7 @@ SUBCOMMANDS = {
     "stress": "tools.studies.stress_study",
     "accuracy": "tools.studies.accuracy",
     "adhesion": "tools.studies.adhesion_study",
+    "adhesion-long": "tools.studies.adhesion_long_study",
     "bearing": "tools.studies.bearing_study",
 }
 

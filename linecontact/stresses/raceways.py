@@ -252,10 +252,34 @@ class RacewayCaseCheck:
 
 
 def noted_case_check(stresses, hardness):
-    """(:func:`case_check` of `stresses` against `hardness` or None, the note to show):
-    the check refused (its message the note), no case depth found
-    (:data:`NO_CASE_DEPTH`, for a case given by its depth), none needed
-    (:data:`NO_CASE_NEEDED`), else no note."""
+    """The case-hardening check of one contact's stresses with the note a result shows.
+
+    Parameters
+    ----------
+    stresses : SubsurfaceStresses
+        One contact's subsurface stresses (:func:`roller_stresses` or
+        :func:`line_contact_stresses`).
+    hardness : HardnessProfile
+        The part's hardness against depth.
+
+    Returns
+    -------
+    check : CaseCheck or None
+        :func:`case_check` of `stresses` against `hardness`; None where the check
+        refused (the hardness or the stresses outside its range).
+    note : str
+        The refusal's message; :data:`NO_CASE_DEPTH` where no case depth suffices (a
+        case given by its depth); :data:`NO_CASE_NEEDED` where the core alone carries
+        the load; else "".
+
+    Examples
+    --------
+    >>> from linecontact.stresses import HardnessProfile, line_contact_stresses
+    >>> light = line_contact_stresses(1e3, 5e-3, 10e-3, 115.38e9)
+    >>> check, note = noted_case_check(light, HardnessProfile(700.0, 1e-3, 350.0))
+    >>> check.min_case_depth, note
+    (0.0, 'CHD min: 0, none needed (the core hardness carries the load)')
+    """
     try:
         c = case_check(stresses, hardness)
     except OutOfRangeError as exc:

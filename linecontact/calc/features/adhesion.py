@@ -3,9 +3,12 @@
 ``--work-of-adhesion W`` (J/m^2, mJ/m^2, N/m; a sweep too)
     JKR-type adhesion (linecontact.adhesion): the pull-off force under force and under
     depth control, for a straight cylinder from the adhesive BEM table (method 'bem',
-    :class:`linecontact.adhesion.CylinderAdhesion`, tables/adhesion_cylinder.csv; inside
-    its range of s = b_c/L only) and by the MDR's rule of Hess on the row's model
-    (method 'mdr': its plain value, with the error the BEM measured); the state at zero load (the 2D JKR half-width and the MDR's depth);
+    :class:`linecontact.adhesion.CylinderAdhesion`, tables/adhesion_cylinder.csv) and
+    below it, down to s = b_c/L = 1e-3, the long roller's end model
+    (tables/adhesion_long_roller.csv) with its stated error, beside the 2D JKR value
+    times L; and by the MDR's rule of Hess on the row's model (method 'mdr': its plain
+    value, with the error measured against those; not printed where neither gives a
+    value); the state at zero load (the 2D JKR half-width and the MDR's depth);
     the depth at the given load, or the force at the given depth, with adhesion (rule
     of Hess, stable branch); and the Tabor parameter (z0 = 0.3 nm), flagged where JKR
     does not apply. One contact only (not with the raceways); not with a viscoelastic
@@ -49,6 +52,8 @@ parameters = (
 fields = {
     "pull_off_force": Field("Fc BEM F-ctrl", "N", "mN", 1e3),
     "pull_off_depth_ctrl": Field("Fc BEM d-ctrl", "N", "mN", 1e3),
+    "pull_off_error": Field("Fc err", "-", "%", 100.0),
+    "pull_off_2d": Field("Fc 2D x L", "N", "mN", 1e3),
     "pull_off_mdr": Field("Fc MDR", "N", "mN", 1e3),
     "pull_off_mdr_error": Field("MDR err", "-", "%", 100.0),
     "zero_load_half_width": Field("b0 (2D JKR)", "m", "um", 1e6),
@@ -65,11 +70,15 @@ notes = {
                 "tensile) under force and depth control of the finite cylinder, method "
                 "'bem': the adhesive BEM's table (tables/adhesion_cylinder.csv; detachment "
                 "where the energy release rate at the contact edge exceeds w) relative to "
-                "the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L (Barquins 1988), given for "
-                "0.025 <= s = b_c/L <= 0.5 only; "
-                "Fc MDR: method 'mdr', the rule of Hess on the model's MDR profile (Popov & "
-                "Hess 2015), force control, MDR err: its error measured against the BEM "
-                "(inside the table only); b0: 2D JKR contact "
+                "the 2D JKR value -3 (pi E* R w^2/16)^(1/3) L (Barquins 1988; printed as "
+                "Fc 2D x L) for 0.025 <= s = b_c/L <= 0.5, and for 1e-3 <= s < 0.025 the "
+                "long roller's end model (tables/adhesion_long_roller.csv: the ends peel "
+                "first, the energy release rate of the line-loaded strip's end growing "
+                "as ln(L/b); calibrated on the BEM and checked by BEM runs below its "
+                "table), Fc err: its stated error (0: the BEM's own, in its table's "
+                "header); Fc MDR: method 'mdr', the rule of Hess on the model's MDR "
+                "profile (Popov & Hess 2015), force control, MDR err: its error measured "
+                "against Fc BEM (not printed where Fc BEM is not given); b0: 2D JKR contact "
                 "half-width at zero load (32 R^2 w/(pi E*))^(1/3); d0 MDR: depth at zero "
                 "load by the rule of Hess; F adh / d adh: force at the given depth / depth "
                 "at the given load with adhesion (rule of Hess, stable branch: the "
@@ -173,28 +182,40 @@ def columns(model, rows, normal, state):
         out["zero_load_half_width"][j] = ad.jkr_cylinder_zero_load_half_width(
             model.radius, model.estar, w)
         if getattr(model, "key", "") not in ad.CYLINDER_MODELS:
+            if np.isfinite(out["pull_off_mdr"][j]):
+                out["pull_off_mdr"][j] = np.nan
+                note(j, "Fc MDR not printed: the rule of Hess's error is measured for a "
+                        "straight cylinder only (adhesive BEM), not for this model")
             continue
         sub = [""]
 
         def bem(_, w=w):
             c = ad.CylinderAdhesion(model, w)
-            if not c.in_table:
-                return [np.nan, np.nan, np.nan, c.s, c.s_range[0]]
+            out2d = [c.s, c.s_range[0], c.pull_off_2d]
+            if not c.in_table and c.s < c.long_range[0]:
+                return [np.nan, np.nan, np.nan, np.nan] + out2d
             f, d = c.pull_off("force"), c.pull_off("depth")
-            return [f["force"], d["force"], f["mdr_error"], c.s, c.s_range[0]]
+            return [f["force"], d["force"], f["mdr_error"], max(f["error"], d["error"])
+                    ] + out2d
 
-        v = each(bem, np.arange(1), sub, width=5, missing=_MISSING)[0]
+        v = each(bem, np.arange(1), sub, width=7, missing=_MISSING)[0]
         note(j, "Fc (BEM): " + short(sub[0]) if sub[0] else "")
         out["pull_off_force"][j], out["pull_off_depth_ctrl"][j] = v[0], v[1]
-        out["pull_off_mdr_error"][j] = v[2]
+        out["pull_off_mdr_error"][j], out["pull_off_error"][j] = v[2], v[3]
+        out["pull_off_2d"][j] = v[6]
         if state.given[r] == "load" and state.value[r] < v[0] and np.isfinite(
                 out["depth_adhesive"][j]):
             note(j, f"the finite roller's pull-off (BEM) Fc = {_eng(v[0], 'N')} is above "
                     "this load: the MDR's state here is beyond the roller's pull-off")
-        if v[3] < v[4]:
-            note(j, f"Fc BEM: s = b_c/L = {v[3]:.3g} below the BEM table (s >= {v[4]:g}), "
-                    "not given: the roller's ratio to the 2D JKR value falls there (its "
-                    "ends peel first); Fc MDR's error not measured there")
+        if v[4] < v[5] and np.isfinite(v[0]):
+            note(j, f"Fc BEM: s = b_c/L = {v[4]:.3g} below the BEM table (s >= {v[5]:g}): "
+                    "the long roller's end model, its ends peeling first, with its stated "
+                    "error (Fc err)")
+        elif v[4] < v[5]:
+            note(j, f"Fc BEM: s = b_c/L = {v[4]:.3g} below the long roller's table, not "
+                    "given (the ratio to the 2D JKR value keeps falling there); Fc MDR not "
+                    "printed: its error is not measured there")
+            out["pull_off_mdr"][j] = np.nan
     return out
 
 

@@ -47,6 +47,14 @@ Speed
     (tqdm when installed, else a plain line) is shown on stderr for batches of at
     least :data:`PROGRESS_ROWS` rows when stderr is a terminal, or always with
     ``--progress``; ``--no-progress`` hides it.
+
+On a cluster
+    ``--scheduler ADDRESS`` (a running dask cluster) or ``--workers N`` (a local one),
+    or ``args.client`` (:func:`linecontact.calc.frame.calc_frame`'s ``client=``): the
+    file is read and checked here as always, the rows are evaluated on the workers
+    (:mod:`linecontact.calc.spread`), and the output is written here by the same code:
+    the same bytes (docs/cluster.md). A cluster's bar is shown on a terminal whatever
+    the batch's size.
 """
 
 from __future__ import annotations

@@ -7,6 +7,7 @@ Each test states the fact it checks and why its tolerance.
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 
@@ -323,6 +324,20 @@ def test_batch_rows_sharing_a_roller_are_one_sweep_equal_to_one_by_one(capsys, t
                 scale = {"moment_N_m": 1e-9 * together[k]["force_N"] * 0.014,
                          "tilt_rad": 1e-12}.get(name, 0.0)
                 assert a == pytest.approx(b, rel=1e-8, abs=scale), (k, name)
+
+
+def test_tilted_roller_table_says_what_its_negative_depth_is(capsys):
+    """A roller tilted by 1 deg (L = 10 mm) is pressed in at its loaded end, with its
+    centre lifted off: d < 0 at x = 0. The table's notes say that d is the centre's
+    approach and how far the loaded end goes in (the profiled roller's note was held
+    back for a --json-only block and never printed); the row gives the approach."""
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--length", "10mm",
+                             "--estar", "115GPa", "--load", "1kN", "--tilt", "1deg")
+    assert status == 0, err
+    row = next(line for line in out.splitlines() if line.startswith("Profiled roller"))
+    assert float(re.split(r"\s{2,}", row)[2]) < 0, row      # model, F [kN], d [um]
+    note = next(line for line in out.splitlines() if line.startswith("Note: profiled"))
+    assert "depth at the roller's centre" in note and "from first contact" in note
 
 
 def test_a_tilted_rollers_depth_says_it_is_at_the_centre_and_gives_the_approach(capsys):

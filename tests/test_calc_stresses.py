@@ -95,3 +95,24 @@ def test_stresses_no_prints_no_stress_note(capsys):
     assert status == 0 and "Note: stresses" not in out
     status, out, _ = _main(capsys, *BASE, "--stresses", "yes")
     assert status == 0 and out.count("Note: stresses") == 1
+
+
+def test_stress_field_is_never_dropped_without_a_word(capsys, tmp_path):
+    """--stress-field is the section field of a contact solved by slices, in the JSON
+    of one case or a sweep. Asked of a straight roller under a law, the JSON says in
+    the row's place that it has none (it was left out without a word); with a CSV
+    batch, which has no place for it, and --linear, which a batch has no sweep for,
+    the command is refused before anything is written."""
+    from linecontact.calc.cli import main
+
+    case = ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa"]
+    assert main(case + ["--load", "1kN", "--stresses", "yes", "--stress-field", "0mm",
+                        "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert "no section field" in doc["stresses"][0]["rows"][0]["section"]["note"]
+    src = tmp_path / "c.csv"
+    src.write_text("load\n1kN\n", encoding="utf-8")
+    for extra in (["--stresses", "yes", "--stress-field", "0mm"], ["--linear"]):
+        assert main(case + [str(src), "-o", str(tmp_path / "o.csv")] + extra) == 2
+        assert extra[-1 if extra == ["--linear"] else -2] in capsys.readouterr().err
+        assert not (tmp_path / "o.csv").exists()

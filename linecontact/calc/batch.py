@@ -110,10 +110,17 @@ def _unread_lookalikes(path, header, names, known, table=None):
             close = difflib.get_close_matches(h, list(BY_NAME), n=1, cutoff=0.75)
             match = close[0] if close and close[0] not in known else None
         if match is not None:
+            from .._units import DIMENSIONS
+
+            # the example in the matched input's own kind (10kN under radial_load)
+            kind = BY_NAME[match].kind
+            example = DIMENSIONS[kind][2].split(",")[0] if kind in DIMENSIONS else ""
+            unit = (f"write the unit in each cell, e.g. {example} under {match!r}; "
+                    if example and not example.replace(".", "").isdigit() else "")
             raise BatchError(
                 f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
-                f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
-                "under 'radius'; rename the column if it is your own)")
+                f"read; did you mean {match!r}? ({unit}rename the column if it is your "
+                "own)")
     return earlier
 
 
@@ -416,11 +423,19 @@ def run_batch(args, argv, specs, options, table=CALC):
         cells[p.name] = col
     # an input written to the JSON output only, given without --json (as an option or
     # in any cell of its column): refused once, before any row is computed
-    render.refuse_json_only(
-        PARAMETERS, {p.name: next((c for c in cells[p.name] if c.strip()), None)
-                     for p in PARAMETERS if p.json_only and p.name in cells},
-        args.json, lambda name: (option_name(name) if options.get(name) is not None
-                                 else f"column {header[known[name]]!r}"))
+    json_only = {p.name: next((c for c in cells[p.name] if c.strip()), None)
+                 for p in PARAMETERS if p.json_only and p.name in cells}
+    named = (lambda name: option_name(name) if options.get(name) is not None
+             else f"column {header[known[name]]!r}")
+    render.refuse_json_only(PARAMETERS, json_only, args.json, named)
+    # with --json too: a batch's JSON is one flat row per case, without the blocks of
+    # one case's JSON where such an input's result goes (it ran and dropped the field)
+    for p in PARAMETERS:
+        if p.json_only and json_only.get(p.name) is not None:
+            raise InputError(named(p.name), json_only[p.name],
+                             f"one case or a sweep with --json ({p.json_only} is a block "
+                             "of its JSON)", "a batch's JSON has one flat row per case "
+                             "and no blocks: it would not be written anywhere")
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})
@@ -500,7 +515,10 @@ def _result_layout(results, cases, si, multi):
     estar = render.scale("estar", cases.estar, si)
     cols.append(_col_name("estar", si))
     getters.append(("num", estar))
-    if np.any(cases.radius_eff != cases.radius):
+    # a column only where some row's contact radius differs from its roller's (a
+    # counter-body or raceways); a row that failed (NaN radius) is not such a row
+    reff_, r_ = np.asarray(cases.radius_eff, float), np.asarray(cases.radius, float)
+    if np.any((reff_ != r_) & ~(np.isnan(reff_) & np.isnan(r_))):
         cols.append(_col_name("radius_eff", si))
         reff = np.where(cases.whole(), np.nan, cases.radius_eff)  # per contact there
         getters.append(("num", render.scale("radius_eff", reff, si)))

@@ -148,6 +148,15 @@ def parse_model_option(spec):
             options[name] = _option_value(f"--model {key}:{name}", value.strip(),
                                           defaults[name],
                                           _option_kind(models.MODELS[key], name))
+        # the same model twice ('johnson,johnson:c=1': c = 1 is the default) gives two
+        # sets under one id: a batch's columns twice under one name, one lost on reading
+        same = repr((key, sorted({**defaults, **options}.items())))
+        earlier = next((t for t, k, o in parsed
+                        if repr((k, sorted({**_option_defaults(models.MODELS[k]),
+                                            **o}.items()))) == same), None)
+        if earlier is not None:
+            raise InputError("--model", spec, "each model once",
+                             f"{text!r} is the same model as {earlier!r}")
         parsed.append((text, key, options))
     return parsed
 

@@ -51,6 +51,7 @@ import io
 import json
 import math
 import numbers
+import re
 import tempfile
 from pathlib import Path
 
@@ -246,6 +247,9 @@ def _run(table, cases, options, specs, model, client=None):
                                  ) from None
         doc = json.loads(dst.read_text(encoding="utf-8"))
     rows = doc.pop("rows")
+    for r in rows:  # a conflict with a keyword, said as the frame's caller wrote it
+        if r.get("error"):
+            r["error"] = _keyword_words(r["error"])
     names = [k for k in rows[0] if k not in set(header)] if rows else []
     out = cases.copy()
     for name in names:
@@ -258,3 +262,20 @@ def _run(table, cases, options, specs, model, client=None):
                                   index=cases.index, dtype=object)
     out.attrs["linecontact"] = doc
     return out
+
+
+_CONFLICT = re.compile(r"conflicts with --([a-z0-9-]+) (.*?) on the command line \(the "
+                       r"option fills empty cells only; clear the cell or drop the "
+                       r"option\); valid: the cell or --\1, not both")
+
+
+def _keyword_words(text):
+    """The batch's conflict between a cell and an option, in the words of a call:
+    the keyword ``radial_load='5kN'`` of calc_frame/command_frame, not a command-line
+    option ``--radial-load`` the caller never typed."""
+    def words(m):
+        name = m[1].replace("-", "_")
+        return (f"conflicts with the keyword {name}={m[2]!r} (a keyword fills empty "
+                f"cells only; clear the cell or drop the keyword); valid: the cell or "
+                f"the keyword {name}, not both")
+    return _CONFLICT.sub(words, text)

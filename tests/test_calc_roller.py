@@ -223,16 +223,18 @@ def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
 def test_profiled_row_prints_where_the_error_is_known(capsys):
     """The coupled-slice row carries the note of tables/roller_accuracy.csv's covered
     range: R 5 mm, L 14 mm (L/D 1.4), 4.2 kN (300 N/mm) is a case of that table, inside;
-    L 50 mm (L/D 5) is beyond its longest roller (L/D 3), outside, named in the row."""
+    L 150 mm (L/(2R) 15) is beyond its longest roller (L/D 12), outside, named in the
+    row in the user's terms (the length and the contact's effective radius)."""
     base = ["calc", "--radius", "5mm", "--estar", "115.385GPa", "--load", "4.2kN",
             "--crown-radius", "500mm"]
     status, out, err = _main(capsys, *base, "--length", "14mm")
     assert status == 0, err
     row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
     assert "inside the range where this model's error was measured" in row
-    status, out, err = _main(capsys, *base, "--length", "50mm")
+    status, out, err = _main(capsys, *base, "--length", "150mm")
     row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
-    assert "L/D = 5 (measured 1.4-3)" in row and "outside the range" in row
+    assert "L/(2R) = 15 (roller length L = 150 mm, the contact's effective radius R = " \
+           "5 mm" in row and "(measured 0.5-12)" in row and "outside the range" in row
 
 
 def test_plain_calc_does_not_import_the_roller_model():

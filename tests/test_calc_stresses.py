@@ -60,15 +60,18 @@ def test_profiled_roller_section_field(capsys):
 
 
 def test_stress_note_checks_the_measured_range(capsys):
-    """A profiled roller of L/D = 1, below the stress table's measured 1.4-3: the row's
-    note says its stresses lie outside the measured range, not the measured errors as
-    if inside (the calc passes the row's roller to the range check)."""
-    status, out, err = _main(capsys, *BASE, "--crown-radius", "500mm", "--stresses",
+    """A profiled roller of L/(2R) = 15, beyond the stress table's measured 0.5-12: the
+    row's note says its stresses lie outside the measured range, in the user's terms
+    (the length and the contact's effective radius), not the measured errors as if
+    inside (the calc passes the row's roller to the range check)."""
+    base = [a if a != "10mm" else "150mm" for a in BASE]
+    status, out, err = _main(capsys, *base, "--crown-radius", "500mm", "--stresses",
                              "yes", "--json")
     assert status == 0, err
     note = json.loads(out)["models"][0]["rows"][0]["flags"]
-    assert "L/D = 1 (measured 1.4-3): outside the range where the 3D-corrected " \
-           "stresses were measured" in note, note
+    assert "L/(2R) = 15 (roller length L = 150 mm, the contact's effective radius R = " \
+           "5 mm: the roller's L/D on a flat) (measured 0.5-12): outside the range where " \
+           "the 3D-corrected stresses were measured" in note, note
 
 
 @pytest.mark.parametrize("extra,word", [

@@ -47,6 +47,14 @@ Speed
     (tqdm when installed, else a plain line) is shown on stderr for batches of at
     least :data:`PROGRESS_ROWS` rows when stderr is a terminal, or always with
     ``--progress``; ``--no-progress`` hides it.
+
+On a cluster
+    ``--scheduler ADDRESS`` (a running dask cluster) or ``--workers N`` (a local one),
+    or ``args.client`` (:func:`linecontact.calc.frame.calc_frame`'s ``client=``): the
+    file is read and checked here as always, the rows are evaluated on the workers
+    (:mod:`linecontact.calc.spread`), and the output is written here by the same code:
+    the same bytes (docs/cluster.md). A cluster's bar is shown on a terminal whatever
+    the batch's size.
 """
 
 from __future__ import annotations
@@ -316,6 +324,22 @@ class _CalcTable:
         return render.json_header(argv, results)
 
     @staticmethod
+    def groups(cases, errors):
+        """Per row its contact's group (:func:`~linecontact.calc.compute.group_rows`):
+        a batch on a cluster keeps each group in one part."""
+        from .compute import group_rows
+
+        return group_rows(cases, errors)[1]
+
+    @staticmethod
+    def merge(parts, rows, errors, cases, label=None):
+        """The results of the whole batch from its parts'
+        (:func:`~linecontact.calc.compute.merge_results`)."""
+        from .compute import merge_results
+
+        return merge_results(parts, rows, errors, cases, label)
+
+    @staticmethod
     def result_names():
         """Every name a result column of this command may have (a rerun's own)."""
         from .compute import all_fields
@@ -434,11 +458,25 @@ def run_batch(args, argv, specs, options, table=CALC):
             if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):
                 errors[i] = str(InputError(name, c, "one value per row in a batch",
                                            "a sweep"))
-    progress = _Progress(n, getattr(args, "progress", None)
-                         if getattr(args, "progress", None) is not None
-                         else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
+    spread = (getattr(args, "scheduler", None) is not None
+              or getattr(args, "workers", None) is not None
+              or getattr(args, "client", None) is not None)
+    shown = getattr(args, "progress", None)
+    progress = _Progress(n, shown if shown is not None else sys.stderr.isatty() and (
+        spread or n >= PROGRESS_ROWS))
     try:
-        results = table.evaluate(cases, errors, args, specs, progress)
+        if spread:  # the evaluation on a dask cluster: the same results
+            from .spread import evaluate_on_cluster
+
+            results = evaluate_on_cluster(
+                table, cells, errors, cases, model=getattr(args, "model", None),
+                specs=specs, scheduler=getattr(args, "scheduler", None),
+                workers=getattr(args, "workers", None),
+                connect_timeout=getattr(args, "connect_timeout", None),
+                client=getattr(args, "client", None), progress=progress,
+                label=lambda name: name)
+        else:
+            results = table.evaluate(cases, errors, args, specs, progress)
     finally:
         progress.close()
     si = args.si or args.json

@@ -725,12 +725,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     results.contact = bool(np.any(~whole & ok))
     # a feature none of whose rows is on (`--stresses no`) prints no note
     results.features = [f for f, st in active if np.any(st.rows)]
-    for f, st in active:
-        names = [c for c in f.fields if c in produced]
-        if getattr(st, "whole", None) is not None:
-            results.whole_columns += names
-        else:
-            results.extra += names
+    _sort_columns(results, active, produced)
     for f, st in active:
         results.blocks += f.blocks(st, results)
     return results
@@ -844,6 +839,17 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
         except (CombinationError, OutOfRangeError) as exc:
             refs = [(Refused("default", exc), None)]
     return sets, refs
+
+
+def _sort_columns(results, active, produced):
+    """Append each active feature's produced columns, in its field order, to
+    `results.whole_columns` (a whole-bearing state) or `results.extra` (per contact)."""
+    for f, st in active:
+        names = [c for c in f.fields if c in produced]
+        if getattr(st, "whole", None) is not None:
+            results.whole_columns += names
+        else:
+            results.extra += names
 
 
 def _no_overflow(results):
@@ -1131,12 +1137,7 @@ def merge_results(parts, rows, errors, cases, label=None):
     for p in parts:
         produced.update(p.whole_columns, p.extra)
     active = cases.active()
-    for f, st in active:  # as compute orders them
-        names = [c for c in f.fields if c in produced]
-        if getattr(st, "whole", None) is not None:
-            out.whole_columns += names
-        else:
-            out.extra += names
+    _sort_columns(out, active, produced)   # as compute orders them
     out.features = [f for f, st in active if np.any(st.rows)]
     keys = list(dict.fromkeys(b.key for p in parts for b in p.blocks))
     for bkey in keys:

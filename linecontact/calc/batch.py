@@ -541,10 +541,8 @@ def _result_layout(results, cases, si, multi):
             continue  # a block for --json only (e.g. q(x))
         n = len(results.errors)
         for f in b.fields:
-            vals = np.array([np.nan if r is None or r.get(f) is None else float(r[f])
-                             for r in b.rows])
             cols.append(f"{b.key}_{_col_name_of(f, b.fields[f], si)}")
-            getters.append(("num", vals if si else vals * b.fields[f].factor))
+            getters.append(_num_column(b.rows, f, b.fields[f], si))
         for t in b.text_columns:
             cols.append(f"{b.key}_{t}")
             getters.append(("text", ["" if r is None else r.get("text", {}).get(t, "")
@@ -555,6 +553,14 @@ def _result_layout(results, cases, si, multi):
     cols.append("error")
     getters.append(("text", results.errors))
     return cols, getters
+
+
+def _num_column(rows, name, field, si):
+    """('num', values over the rows): each row's `name` [SI], in the field's display
+    unit unless `si`; NaN for a row without it (refused, or no such output)."""
+    vals = np.array([np.nan if r is None or r.get(name) is None else float(r[name])
+                     for r in rows])
+    return "num", vals if si else vals * field.factor
 
 
 def _col_name_of(name, field, si):

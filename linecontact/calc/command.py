@@ -181,15 +181,13 @@ class Command:
         """Result column names and, for each, ('num' or 'text', values over the rows):
         every field (``NAME_UNIT``, as ``calc`` names them), the model used, the note,
         and ``error`` last."""
-        from .batch import _col_name_of
+        from .batch import _col_name_of, _num_column
 
         cols, getters = [], []
         rows = results.rows
         for name, f in self.fields.items():
-            vals = np.array([np.nan if r is None or r.get(name) is None else float(r[name])
-                             for r in rows])
             cols.append(_col_name_of(name, f, si))
-            getters.append(("num", vals if si else vals * f.factor))
+            getters.append(_num_column(rows, name, f, si))
         for t in TEXT_COLUMNS:
             cols.append(t)
             getters.append(("text", ["" if r is None else str(r.get(t, "")) for r in rows]))

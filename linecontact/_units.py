@@ -418,6 +418,12 @@ def _unit_factor(unit, kind):
         # unit (pint reads 'MM' as megamolar): unit names are case-sensitive
         result = (f"unknown unit {unit!r} (unit names are case-sensitive: "
                   + _did_you_mean(unit, kind)[2:])
+    elif (near := next(((k, n) for k, units in BUILTIN_UNITS.items() for n in units
+                        if n.casefold() == name.casefold()), None)) is not None:
+        # 'MM' for a force: a unit of ANOTHER kind in the wrong case; pint would
+        # explain it as megamolar ('[substance] / [length] ** 3'): say what it is
+        result = (f"expected {_a(kind)}, got {unit!r} (unit names are case-sensitive: "
+                  f"{near[1]!r} is {_a(near[0])})")
     elif kind in _BUILTIN_ONLY:
         result = (f"unknown unit {unit!r} for {_a(kind)} (the units understood are "
                   f"{', '.join(BUILTIN_UNITS[kind])})")

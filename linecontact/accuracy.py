@@ -132,7 +132,13 @@ def _roller(meta):
         end_gap=(_range_field(meta, "covered_infinite_end_gap_over_length")
                  if "covered_infinite_end_gap_over_length" in meta else None),
         off=_errors_field(meta, "runtime_error_off_ends"),
-        edge=_errors_field(meta, "runtime_error_edge_loaded"))
+        edge=_errors_field(meta, "runtime_error_edge_loaded"),
+        # optional (tables before issue 32 lack them): the end zone of a profile whose
+        # drop is infinite at the roller end, its own errors; None: not stated apart
+        zone=(_errors_field(meta, "runtime_error_end_zone")
+              if "runtime_error_end_zone" in meta else None),
+        zone_gap=(float(meta["end_zone_gap_over_length"])
+                  if "end_zone_gap_over_length" in meta else None))
 
 
 def roller_coverage():
@@ -145,12 +151,14 @@ def roller_coverage():
         ``l_over_d``, ``line_load`` (q/(E* D)), ``given_tilt``, ``free_tilt`` [rad],
         ``tilt_drop``, ``end_gap`` (or None) as (lo, hi); ``profiles`` (names);
         ``off`` and ``edge``: {output: largest relative error} off the ends and edge
-        loaded. None if the table or a field is missing.
+        loaded; ``zone`` the same within ``zone_gap`` L of an end where the profile's
+        drop is infinite (None for a table without them). None if the table or a
+        field is missing.
 
     Examples
     --------
     >>> roller_coverage()["l_over_d"]
-    (1.4, 3.0)
+    (0.5, 12.0)
     """
     return _read(ROLLER_ACCURACY, _roller)
 
@@ -182,7 +190,7 @@ def stress_coverage():
     --------
     >>> c = stress_coverage()
     >>> c["l_over_d"], c["errors"]["error_3d_off_ends"]["tresca"]
-    ((1.4, 3.0), 0.00583)
+    ((0.5, 12.0), 0.0109)
     """
     return _read(STRESS_ACCURACY, _stress)
 

@@ -79,7 +79,9 @@ from ._numerics import out
 from .checks import check_interval, check_positive
 from .errors import OutOfRangeError, UnknownNameError
 from .hertz import _KE, hertz_contact, hertz_eccentricity
-from .tangential import FRICTION, SHEAR_RATIO
+from .tangential import FRICTION
+from .tangential.laws import _check_beyond
+from .tangential.moduli import _ratio
 
 __all__ = [
     "DIRECTIONS",
@@ -107,11 +109,8 @@ _SERIES_TERMS = 40
 
 def _moduli(gstar, estar):
     """c_G = sum 1/G_i and c_nu = sum nu_i/G_i [1/Pa] from G* and E* (checked)."""
-    g = check_positive("gstar", gstar, "Pa")
-    e = check_positive("estar", estar, "Pa")
-    SHEAR_RATIO.check(np.asarray(g) / np.asarray(e),
-                      hint="G*/E* of bodies with Poisson ratios in [0, 0.5] "
-                           "(effective_shear_modulus, effective_modulus)")
+    _ratio(gstar, estar)    # G*, E* > 0 and G*/E* in [2/3, 1]: the tangential laws' check
+    g, e = np.asarray(gstar, dtype=float), np.asarray(estar, dtype=float)
     return 4.0 / g - 2.0 / e, 4.0 / g - 4.0 / e
 
 
@@ -519,8 +518,7 @@ def slip_force(shift, normal_force, friction, stiffness, *, beyond="raise"):
     C. Cattaneo (1938); R. D. Mindlin (1949); K. L. Johnson, Contact Mechanics (1985),
     section 7.2.
     """
-    if beyond not in ("raise", "saturate"):
-        raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
+    _check_beyond(beyond)
     P = check_positive("normal_force", normal_force, "N")
     mu = FRICTION.check(friction, name="friction")
     k = check_positive("stiffness", stiffness, "N/m")
@@ -771,8 +769,7 @@ class EllipticalTangentialContact:
 
     def _amplitude(self, amplitude, beyond="raise"):
         u0 = check_positive("amplitude", amplitude, "m")
-        if beyond not in ("raise", "saturate"):
-            raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
+        _check_beyond(beyond)
         if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
             raise OutOfRangeError("amplitude", float(np.max(u0)),
                                   f"(0, {self.gross_slip_shift:.6g}] m", unit="m",

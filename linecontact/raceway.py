@@ -556,7 +556,7 @@ def _law_solution(get_model, key, R_in, R_out, L, E, force, deflection, clearanc
     ki, ko = np.asarray(ri["stiffness"]), np.asarray(ro["stiffness"])
     return RacewaySolution(
         force=out(np.asarray(F, dtype=float)), deflection=out(di + do),
-        stiffness=out(1.0 / (1.0 / ki + 1.0 / ko)), depth_inner=out(di),
+        stiffness=out(_in_series(ki, ko)), depth_inner=out(di),
         depth_outer=out(do), stiffness_inner=out(ki), stiffness_outer=out(ko),
         peak_pressure_inner=hertz_peak_pressure(F, R_in, L, E),
         peak_pressure_outer=hertz_peak_pressure(F, R_out, L, E),
@@ -578,7 +578,7 @@ def _force_at_deflection(mi, mo, delta):
             F = math.exp(lnF)
             ri, ro = mi.evaluate(force=F), mo.evaluate(force=F)
             d = float(ri["depth"] + ro["depth"])
-            k = 1.0 / (1.0 / float(ri["stiffness"]) + 1.0 / float(ro["stiffness"]))
+            k = _in_series(float(ri["stiffness"]), float(ro["stiffness"]))
             err = math.log(d / dl)
             if abs(err) <= 1e-13:
                 break
@@ -684,12 +684,18 @@ def _contacts_solution(model, si, so, R_in, R_out, misalignment, free, clearance
         model=f"{model} ({si.method}, {si.n_slices} slices)", notes=notes)
 
 
+def _in_series(k1, k2):
+    """Stiffness of two springs in series, 1/(1/k1 + 1/k2) [N/m]: the roller's inner and
+    outer contacts carry the same load and their approaches add."""
+    return 1.0 / (1.0 / k1 + 1.0 / k2)
+
+
 def _series_stiffness(si, so, free):
     """dF/d delta of the roller: contacts in series at fixed tilt, or with the tilt
     free (moment balance kept: dM_in = dM_out, d theta_out = -d theta_in)."""
     Ki, Ko = si.stiffness_matrix, so.stiffness_matrix
     if not free:
-        return 1.0 / (1.0 / Ki[0, 0] + 1.0 / Ko[0, 0])
+        return _in_series(Ki[0, 0], Ko[0, 0])
     # unknowns (dd_in, dd_out, dtheta) for dF = 1
     A = np.array([[Ki[0, 0], 0.0, Ki[0, 1]],
                   [0.0, Ko[0, 0], -Ko[0, 1]],

@@ -110,3 +110,71 @@ def test_a_bad_spectrum_file_names_the_row_and_column(capsys, tmp_path):
     path.write_text("time_share,radial_load\n0.5,10kN\n0.5,20kN\n", encoding="utf-8")
     assert main(BASE + ["--spectrum", str(path)]) == 2       # shares of time, no speed
     assert "speed" in capsys.readouterr().err
+
+
+def test_header_keeps_the_clearance_as_given_beside_the_operating_one(capsys):
+    """P_d in the header line is the clearance the user gave (40 um); the operating
+    clearance after a 20 um shaft fit and 10 K (40 - 16.949 - 8.4 = 14.651 um,
+    docs/bearing_life.md) is named as such beside it, never in its place."""
+    fits = ["--shaft-interference", "20um", "--bore", "50mm", "--temperature-difference",
+            "10K"]
+    assert main(BASE + fits) == 0
+    head = capsys.readouterr().out.splitlines()[0]
+    assert "P_d = 40 um (operating 14.65" in head, head
+    assert main(BASE) == 0
+    head = capsys.readouterr().out.splitlines()[0]
+    assert "P_d = 40 um," in head and "operating" not in head, head
+
+
+def test_text_notes_explain_only_what_was_computed(capsys, tmp_path):
+    """A plain bearing's text says nothing of flanges, films, duty cycles or a case
+    check it did not compute (each of those notes came with every bearing); with
+    their inputs, each note is there; the JSON header keeps every note."""
+    words = {"flanges": "Note: axial load:", "film": "Note: EHL film",
+             "spectrum": "Note: duty cycle:", "modified": "Note: L_nm ="}
+    assert main(BASE) == 0
+    out = capsys.readouterr().out
+    assert not [w for w in words.values() if w in out], out
+    path = _spectrum(tmp_path)
+    assert main(BASE + LIFE + FLANGES + ["--spectrum", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert all(w in out for w in words.values()), out
+    assert main(BASE + ["--json"]) == 0
+    assert set(words) <= set(json.loads(capsys.readouterr().out)["notes"])
+
+
+def test_help_names_the_default_slice_counts_and_the_life_outputs(capsys):
+    """`linecontact bearing --help` gives the slice counts the factory uses when none
+    is given (it sent the reader to RadialRollerBearing, whose default moved to the
+    factory's), and its description names the life outputs the options add."""
+    from linecontact.roller.solvers import DEFAULT_SLICES
+
+    try:
+        main(["bearing", "--help"])
+    except SystemExit:
+        pass
+    text = " ".join(capsys.readouterr().out.split()).replace("- ", "-")  # argparse's wrap
+    for model, n in DEFAULT_SLICES.items():
+        assert f"{n} for {model}" in text, (model, n)
+    for word in ("EHL film", "L_nm", "static safety", "operating clearance", "duty cycle"):
+        assert word in text, word
+
+
+def test_a_spectrum_file_is_refused_in_its_own_words(capsys, tmp_path):
+    """A duty-cycle file whose time shares lack a speed, or do not sum to 1, is refused
+    naming --spectrum, the file's column and the remedy (a speed column or --speed,
+    fractions summing to 1), not the library's keyword shares='revolutions' or its
+    argument time_shares; a --speed fills the cases without one."""
+    path = tmp_path / "cases.csv"
+    path.write_text("time_share,radial_load\n0.8,10kN\n0.2,20kN\n", encoding="utf-8")
+    assert main(BASE + ["--spectrum", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--spectrum" in err and "--speed" in err, err
+    assert "shares=" not in err and "rows [1, 2] have none" in err, err
+    assert main(BASE + ["--spectrum", str(path), "--speed", "1500rpm"]) == 0
+    capsys.readouterr()
+    path.write_text("time_share,radial_load,speed\n80,10kN,1500rpm\n20,20kN,750rpm\n",
+                    encoding="utf-8")
+    assert main(BASE + ["--spectrum", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "time_share column sums to 100" in err and "time_shares" not in err, err

@@ -226,15 +226,24 @@ def test_docs_misalignment_table_matches_the_solve():
 
 
 def test_stress_note_checks_the_measured_range():
-    """D = L rollers: each contact's equivalent roller (effective radius) has L/D of
-    1.1 (inner) and 0.91 (outer), below the stress table's 1.4-3, so the bearing's
-    stress notes say so instead of quoting the measured errors as if inside."""
+    """D = L rollers: each contact's equivalent roller (effective radius R = 4.5 mm
+    inner, 5.5 mm outer) has L/(2R) of 1.1 and 0.91, inside the stress table's 0.5-10
+    since issue 32's wide set, so the notes quote the measured errors; a longer roller
+    (L = 150 mm: L/(2R) 17 and 14) is outside, and the note names the geometry in the
+    user's terms (the roller's length and each contact's effective radius)."""
     b = RadialRollerBearing(20, 0.1, 0.01, 0.01, estar=115.38e9, profile="iso16281")
     notes = b.solve(10e3).notes
-    assert any(n.startswith("stress (inner contact): L/D = 1.1 (measured 1.4-3): "
-                            "outside") for n in notes), notes
-    assert any(n.startswith("stress (outer contact): L/D = 0.91 (measured 1.4-3): "
-                            "outside") for n in notes), notes
+    for side in ("inner", "outer"):
+        assert any(n.startswith(f"stress ({side} contact): 3D-corrected stresses "
+                                "against") and "largest errors" in n for n in notes), notes
+    b = RadialRollerBearing(20, 0.1, 0.01, 0.15, estar=115.38e9, profile="iso16281")
+    notes = b.solve(10e3).notes
+    assert any(n.startswith("stress (inner contact): L/(2R) = 17 (roller length L = "
+                            "150 mm, the contact's effective radius R = 4.5 mm") and
+               "outside" in n for n in notes), notes
+    assert any(n.startswith("stress (outer contact): L/(2R) = 14 (roller length L = "
+                            "150 mm, the contact's effective radius R = 5.5 mm") and
+               "outside" in n for n in notes), notes
 
 
 def test_misalignment_inside_its_range_is_solved():

@@ -187,7 +187,7 @@ def test_a_json_only_input_in_a_batch_without_json_is_refused_once(tmp_path, how
     """--stress-field writes a block of the --json output only: a CSV batch without
     --json (the option, or a filled cell of its column) is refused once up front, as
     the one case is (one line naming the input and 'with --json', status 2, nothing
-    written); with --json the batch runs. The rule is the parameter's declaration
+    written); with --json too, as the batch's JSON has no place for it. The rule is the parameter's declaration
     (Parameter.json_only), the same for every door."""
     case = "radius,length,estar,load,profile,stresses"
     cells = "5mm,10mm,115GPa,1kN,iso16281,yes"
@@ -202,8 +202,11 @@ def test_a_json_only_input_in_a_batch_without_json_is_refused_once(tmp_path, how
     assert status == 2 and out == "" and len(err.splitlines()) == 1, err
     named = "--stress-field" if how == "option" else "column 'stress_field'"
     assert err.split(": error: ")[1].startswith(named) and "with --json" in err
+    # with --json too: the batch's JSON has one flat row per case and no blocks, so
+    # the field would be computed and written nowhere (it ran with status 0)
     status, out, err = _calc([str(path), *extra, "--json"])
-    assert status == 0, err
+    assert status == 2 and out == "" and len(err.splitlines()) == 1, err
+    assert err.split(": error: ")[1].startswith(named) and "no blocks" in err
 
 
 @pytest.mark.parametrize("spelled", ["same", "dot", "absolute"])
@@ -630,3 +633,34 @@ def test_plot_follows_one_rule_for_every_command(tmp_path, door):
     if door.name == "bearing":
         status, _, err = _calc([*case, "--figure", "x.png"], door.name)
         assert status == 2 and "--figure is now --plot" in err
+
+
+def test_a_unit_header_is_answered_with_a_cell_of_that_parameters_kind(tmp_path):
+    """The advice for 'NAME [mm]' shows a cell of NAME's own kind (1kN under
+    'radial_load'), never '5mm under radius' whatever the column (a length for a force),
+    and none for a pure number or a word, which have no unit to move. One table: every
+    parameter of every door."""
+    from linecontact._units import DIMENSIONS
+
+    path = tmp_path / "units.csv"
+    failed = []
+    for door in DOORS:
+        for name in door.parameters:
+            path.write_text(f"{name} [mm],other\n5,x\n")
+            status, out, err = _calc([str(path)], door.name)
+            kind = next(p.kind for p in _parameters(door) if p.name == name)
+            example = DIMENSIONS.get(kind, ("", "", ""))[2].split(",")[0]
+            if example and not example.replace(".", "").isdigit():
+                if f"e.g. {example} under {name!r}" not in err:
+                    failed.append((door.name, name, err))
+            elif "write the unit" in err:
+                failed.append((door.name, name, err))
+    assert not failed, failed
+
+
+def _parameters(door):
+    if door.name == "calc":
+        from linecontact.calc.cases import PARAMETERS
+        return PARAMETERS
+    from linecontact.calc.subcommands import SUBCOMMANDS
+    return next(m for m in SUBCOMMANDS if m.name == door.name).parameters

@@ -7,6 +7,7 @@ Each test states the fact it checks and why its tolerance.
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 
@@ -222,16 +223,18 @@ def test_profile_file_cells_follow_the_one_input_rule(capsys, tmp_path):
 def test_profiled_row_prints_where_the_error_is_known(capsys):
     """The coupled-slice row carries the note of tables/roller_accuracy.csv's covered
     range: R 5 mm, L 14 mm (L/D 1.4), 4.2 kN (300 N/mm) is a case of that table, inside;
-    L 50 mm (L/D 5) is beyond its longest roller (L/D 3), outside, named in the row."""
+    L 150 mm (L/(2R) 15) is beyond its longest roller (L/D 12), outside, named in the
+    row in the user's terms (the length and the contact's effective radius)."""
     base = ["calc", "--radius", "5mm", "--estar", "115.385GPa", "--load", "4.2kN",
             "--crown-radius", "500mm"]
     status, out, err = _main(capsys, *base, "--length", "14mm")
     assert status == 0, err
     row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
     assert "inside the range where this model's error was measured" in row
-    status, out, err = _main(capsys, *base, "--length", "50mm")
+    status, out, err = _main(capsys, *base, "--length", "150mm")
     row = next(r for r in out.splitlines() if r.startswith("Profiled roller"))
-    assert "L/D = 5 (measured 1.4-3)" in row and "outside the range" in row
+    assert "L/(2R) = 15 (roller length L = 150 mm, the contact's effective radius R = " \
+           "5 mm" in row and "(measured 0.5-12)" in row and "outside the range" in row
 
 
 def test_plain_calc_does_not_import_the_roller_model():
@@ -323,6 +326,20 @@ def test_batch_rows_sharing_a_roller_are_one_sweep_equal_to_one_by_one(capsys, t
                 scale = {"moment_N_m": 1e-9 * together[k]["force_N"] * 0.014,
                          "tilt_rad": 1e-12}.get(name, 0.0)
                 assert a == pytest.approx(b, rel=1e-8, abs=scale), (k, name)
+
+
+def test_tilted_roller_table_says_what_its_negative_depth_is(capsys):
+    """A roller tilted by 1 deg (L = 10 mm) is pressed in at its loaded end, with its
+    centre lifted off: d < 0 at x = 0. The table's notes say that d is the centre's
+    approach and how far the loaded end goes in (the profiled roller's note was held
+    back for a --json-only block and never printed); the row gives the approach."""
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--length", "10mm",
+                             "--estar", "115GPa", "--load", "1kN", "--tilt", "1deg")
+    assert status == 0, err
+    row = next(line for line in out.splitlines() if line.startswith("Profiled roller"))
+    assert float(re.split(r"\s{2,}", row)[2]) < 0, row      # model, F [kN], d [um]
+    note = next(line for line in out.splitlines() if line.startswith("Note: profiled"))
+    assert "depth at the roller's centre" in note and "from first contact" in note
 
 
 def test_a_tilted_rollers_depth_says_it_is_at_the_centre_and_gives_the_approach(capsys):

@@ -60,15 +60,18 @@ def test_profiled_roller_section_field(capsys):
 
 
 def test_stress_note_checks_the_measured_range(capsys):
-    """A profiled roller of L/D = 1, below the stress table's measured 1.4-3: the row's
-    note says its stresses lie outside the measured range, not the measured errors as
-    if inside (the calc passes the row's roller to the range check)."""
-    status, out, err = _main(capsys, *BASE, "--crown-radius", "500mm", "--stresses",
+    """A profiled roller of L/(2R) = 15, beyond the stress table's measured 0.5-12: the
+    row's note says its stresses lie outside the measured range, in the user's terms
+    (the length and the contact's effective radius), not the measured errors as if
+    inside (the calc passes the row's roller to the range check)."""
+    base = [a if a != "10mm" else "150mm" for a in BASE]
+    status, out, err = _main(capsys, *base, "--crown-radius", "500mm", "--stresses",
                              "yes", "--json")
     assert status == 0, err
     note = json.loads(out)["models"][0]["rows"][0]["flags"]
-    assert "L/D = 1 (measured 1.4-3): outside the range where the 3D-corrected " \
-           "stresses were measured" in note, note
+    assert "L/(2R) = 15 (roller length L = 150 mm, the contact's effective radius R = " \
+           "5 mm: the roller's L/D on a flat) (measured 0.5-12): outside the range where " \
+           "the 3D-corrected stresses were measured" in note, note
 
 
 @pytest.mark.parametrize("extra,word", [
@@ -95,3 +98,24 @@ def test_stresses_no_prints_no_stress_note(capsys):
     assert status == 0 and "Note: stresses" not in out
     status, out, _ = _main(capsys, *BASE, "--stresses", "yes")
     assert status == 0 and out.count("Note: stresses") == 1
+
+
+def test_stress_field_is_never_dropped_without_a_word(capsys, tmp_path):
+    """--stress-field is the section field of a contact solved by slices, in the JSON
+    of one case or a sweep. Asked of a straight roller under a law, the JSON says in
+    the row's place that it has none (it was left out without a word); with a CSV
+    batch, which has no place for it, and --linear, which a batch has no sweep for,
+    the command is refused before anything is written."""
+    from linecontact.calc.cli import main
+
+    case = ["calc", "--radius", "5mm", "--length", "10mm", "--estar", "115GPa"]
+    assert main(case + ["--load", "1kN", "--stresses", "yes", "--stress-field", "0mm",
+                        "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert "no section field" in doc["stresses"][0]["rows"][0]["section"]["note"]
+    src = tmp_path / "c.csv"
+    src.write_text("load\n1kN\n", encoding="utf-8")
+    for extra in (["--stresses", "yes", "--stress-field", "0mm"], ["--linear"]):
+        assert main(case + [str(src), "-o", str(tmp_path / "o.csv")] + extra) == 2
+        assert extra[-1 if extra == ["--linear"] else -2] in capsys.readouterr().err
+        assert not (tmp_path / "o.csv").exists()

@@ -1004,6 +1004,10 @@ def test_every_option_as_a_csv_column_runs_or_says_why_per_row(capsys, tmp_path)
                          [list(case.values()) + [_sample(name, tmp_path, sample)],
                           list(case.values()) + [""]])
         status, out, err = _main(capsys, command, src, "--json")
+        if name == "stress_field":  # a block of one case's JSON: a batch has none for it
+            if not (status == 2 and "column 'stress_field'" in err and not out):
+                failed.append((command, name, status, err))
+            continue
         rows = json.loads(out)["rows"] if out else []
         if not (status in (0, 2) and len(rows) == 2 and rows[1]["error"] == ""):
             failed.append((command, name, status, err))
@@ -1156,3 +1160,38 @@ def test_model_options_take_the_unit_their_docstring_gives():
     n = parse_model_option("iso16281-slicing:n_slices=40")[0][2]["n_slices"]
     assert n == 40 and type(n) is int
     assert parse_model_option("johnson:c=johnson1985")[0][2]["c"] == "johnson1985"
+
+
+@pytest.mark.parametrize("spec,again", [("universal,universal", "'universal'"),
+                                        ("johnson,johnson:c=1", "'johnson:c=1'")])
+def test_a_model_named_twice_is_refused(capsys, tmp_path, spec, again):
+    """The same model twice in --model ('johnson:c=1' is johnson at its default) gave
+    two result sets under one id: a batch wrote each column name twice, so a reader
+    (csv.DictReader, pandas, the JSON rows) kept one and lost the other without a word.
+    It is refused in one line naming the repeat; distinct options are not."""
+    src = _write_csv(tmp_path / "c.csv", ["radius", "length", "estar", "load"],
+                     [["5mm", "10mm", "115GPa", "1kN"]])
+    status, out, err = _main(capsys, "calc", src, "--model", spec)
+    assert status == 2 and f"{again} is the same model as" in err and not out, err
+    status, out, err = _main(capsys, "calc", src, "--model", "johnson,johnson:c=0.72")
+    header = out.splitlines()[0].split(",")
+    assert status == 0 and len(header) == len(set(header)), err
+
+
+def test_a_swept_radius_or_length_has_its_column(capsys):
+    """A sweep over the radius (or the length), alone or in a grid with the load, gives
+    each row its value in a column: the rows of R = 5 and 10 mm at the same load were
+    printed without it (radius and length are fields the text table does not print),
+    so they could not be told apart."""
+    status, out, err = _main(capsys, "calc", "--radius", "5mm:10mm:2", "--length", "10mm",
+                             "--estar", "115GPa", "--load", "1kN:2kN:2", "--model",
+                             "universal")
+    assert status == 0, err
+    lines = out.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("model"))
+    assert "radius [mm]" in lines[head]
+    assert [line.split()[3] for line in lines[head + 1:head + 5]] == ["5", "5", "10", "10"]
+    status, out, err = _main(capsys, "calc", "--radius", "5mm", "--length",
+                             "10mm:20mm:2", "--estar", "115GPa", "--load", "1kN",
+                             "--model", "universal")
+    assert status == 0 and "length [mm]" in out, err

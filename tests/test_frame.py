@@ -53,7 +53,8 @@ def test_results_are_the_librarys_and_the_batchs(tmp_path, capsys):
     # a filled cell that differs from the option is an error in its row, as in a CSV
     # batch (docs/inputs.md), never silently overridden either way
     for i in (10, 11):
-        assert "conflicts with --load" in out.loc[i, "error"], out.loc[i, "error"]
+        assert "conflicts with the keyword load='700N'" in out.loc[i, "error"], \
+            out.loc[i, "error"]
         assert math.isnan(out.loc[i, "depth_m"])
     # the bad row says why and the others are computed
     assert "radius" in out.loc[12, "error"] and math.isnan(out.loc[12, "depth_m"])
@@ -71,7 +72,10 @@ def test_results_are_the_librarys_and_the_batchs(tmp_path, capsys):
                 assert float(r[col]) == pytest.approx(f[col], rel=5e-6), col
             else:
                 assert math.isnan(f[col])
-        assert r["error"] == f["error"]
+        # the same error, each in its door's words (an option there, a keyword here)
+        assert r["error"] == f["error"] or (
+            "--load 700N on the command line" in r["error"]
+            and "the keyword load='700N'" in f["error"]), (r["error"], f["error"])
     assert out.attrs["linecontact"]["units"]["depth"] == "m"
 
 
@@ -130,3 +134,27 @@ def test_a_frame_without_rows_gives_an_empty_frame_with_the_result_columns(door)
     one = door.frame(pd.DataFrame({first: [None]}))
     assert len(empty) == 0 and list(empty.columns) == list(one.columns)
     assert "error" in empty.columns and empty.attrs["linecontact"]
+
+
+def test_result_columns_do_not_depend_on_which_rows_fail():
+    """The result columns are those of the computed contacts: a row refused for its
+    radius (NaN there) adds no `radius_eff` column (NaN != NaN made it look like a
+    counter-body), and an empty frame has the columns of a one-row frame."""
+    good = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "estar": ["115GPa"],
+                         "load": ["1kN"]})
+    bad = pd.concat([good, good.assign(radius=["-5mm"])], ignore_index=True)
+    cols = list(calc_frame(good).columns)
+    assert list(calc_frame(bad).columns) == cols
+    assert list(calc_frame(good.iloc[:0]).columns) == cols
+    assert "radius_eff_m" in calc_frame(good.assign(radius2=["20mm"])).columns
+
+
+def test_a_conflict_with_a_keyword_is_said_as_a_keyword():
+    """calc_frame(cases, load=...) against a filled, different cell: the row's error
+    names the keyword the caller gave (load='...'), not a command-line option
+    '--load ... on the command line' the caller never typed."""
+    cases = pd.DataFrame({"radius": ["5mm"], "length": ["10mm"], "estar": ["115GPa"],
+                          "load": ["2kN"]})
+    err = calc_frame(cases, load="1kN")["error"][0]
+    assert "the keyword load='1kN'" in err and "command line" not in err, err
+    assert "--load" not in err, err

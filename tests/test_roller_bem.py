@@ -311,17 +311,48 @@ def test_shipped_roller_accuracy_table_is_consistent_and_meets_the_targets():
         np.testing.assert_allclose(c[f"{m}_err_p_max"], c[f"{m}_p_max"] / c["bem_p_max"] - 1,
                                    rtol=1e-12, atol=1e-15)
     end = c["bem_nx"] == rs.END_GRIDS[1][0]
+    dense = c["case_set"] == 0
     for name in ("change_depth", "change_moment", "change_p_max"):
-        assert np.max(np.abs(c[f"bem_{name}"][off & ~end])) < 3e-3, name
+        assert np.max(np.abs(c[f"bem_{name}"][dense & off & ~end])) < 3e-3, name
     for name, bound in (("change_depth", 3e-3), ("change_moment", 1e-2),
                         ("change_p_max", 0.15)):
-        assert np.max(np.abs(c[f"bem_{name}"][end]), initial=0) < bound, name
-    assert np.max(np.abs(c["rt_err_depth"][off])) < 0.01
-    assert np.max(np.abs(c["rt_err_moment"][off & given])) < 0.01
-    assert np.max(np.abs(c["rt_err_tilt"][off & free])) < 0.01
-    assert np.max(np.abs(c["rt_err_p_max"][off])) < 0.02
-    assert np.max(np.abs(c["rt_err_depth"][off])) < 5e-3
-    assert np.max(np.abs(c["rt_err_moment"][off & given])) < 5e-3
+        assert np.max(np.abs(c[f"bem_{name}"][dense & end]), initial=0) < bound, name
+    assert np.max(np.abs(c["rt_err_depth"][dense & off])) < 0.01
+    assert np.max(np.abs(c["rt_err_moment"][dense & off & given])) < 0.01
+    assert np.max(np.abs(c["rt_err_tilt"][dense & off & free])) < 0.01
+    assert np.max(np.abs(c["rt_err_p_max"][dense & off])) < 0.02
+    assert np.max(np.abs(c["rt_err_depth"][dense & off])) < 5e-3
+    assert np.max(np.abs(c["rt_err_moment"][dense & off & given])) < 5e-3
+    # the wide set (issue 32: L/D 0.5-12, q/(E* D) 3e-6-3e-3, tilts to 3 mrad): its
+    # BEM changes off the ends are below 12 % in peak pressure (the lightest straight
+    # roller with end relief at L/D 12, the relief's start on the third grid: 11.5 %;
+    # end-zone rows 3.9 %), 0.3 % in deflection, 1.5 % in moment (an end-zone row:
+    # 1.4 %); the runtime is within 0.2 % in deflection, 1 % in moment and 3.5 % in
+    # peak pressure (measured 0.10 %, 0.73 %, 3.23 %)
+    wide = c["case_set"] == 1
+    assert np.max(np.abs(c["bem_change_p_max"][wide & off & ~end])) < 0.12
+    assert np.max(np.abs(c["bem_change_p_max"][wide & off & end])) < 0.05
+    assert np.max(np.abs(c["bem_change_depth"][wide & off])) < 3e-3
+    assert np.max(np.abs(c["bem_change_moment"][wide & off])) < 0.015
+    assert np.max(np.abs(c["rt_err_depth"][wide & off])) < 2e-3
+    assert np.max(np.abs(c["rt_err_moment"][wide & off & given])) < 0.01
+    assert np.max(np.abs(c["rt_err_p_max"][wide & off])) < 0.035
+    # the stated errors are bounds: |error| + |grid change| per row, and the header's
+    # runtime_error_* fields are their largest by the class the runtime states, times
+    # the margin MARGIN (the cases sample the range)
+    for k in rs.BOUNDS:
+        np.testing.assert_allclose(c[f"rt_bound_{k}"], np.abs(c[f"rt_err_{k}"])
+                                   + np.abs(c[f"bem_change_{k}"]), rtol=1e-12, atol=0)
+    rte = c["rt_edge"] > 0
+    gap = c["bem_end_gap"] / c["roller_length"]
+    inf_end = np.isin(c["profile"], [rs.CODES["iso16281"], rs.CODES["lundberg"]])
+    clear = ~(inf_end & (gap < rs.END_ZONE / 2))
+    stated = {k: float(v) for k, v in (item.split() for item in
+                                       t.meta["runtime_error_off_ends"].split(","))}
+    assert stated["depth"] == pytest.approx(
+        rs.MARGIN * np.max(c["rt_bound_depth"][~rte & clear]), rel=2e-3)
+    assert stated["p_max"] == pytest.approx(
+        rs.MARGIN * np.max(c["rt_bound_p_max"][~rte & clear & off]), rel=2e-3)
 
 
 @pytest.mark.slow
@@ -390,7 +421,7 @@ def test_study_command_writes_its_table_and_no_figure_with_an_empty_name(tmp_pat
     from tools.build_tables import main as build_tables
     monkeypatch.chdir(tmp_path)
     out = tmp_path / "out"
-    assert build_tables(["roller", "--quick", "--n-x", "16", "--n-y", "8",
+    assert build_tables(["roller", "--quick", "--no-wide", "--n-x", "16", "--n-y", "8",
                          "--check-every", "0", "--workers", "1", "--no-progress",
                          "--figure", "", "--out", str(out)]) == 0
     assert sorted(p.name for p in tmp_path.rglob("*") if p.is_file()) == \
@@ -453,7 +484,11 @@ def test_bem_from_keeps_the_bem_runs_provenance_when_rebuilt(tmp_path):
                          "--figure", "", "--no-progress", "--out", str(tmp_path)]) == 0
     new = read_table("roller_accuracy", directory=tmp_path)
     assert new.meta["bem_from"] == shipped.meta["bem_from"], new.meta["bem_from"]
-    assert "--bem-from" not in new.meta["bem_from"]
+    # the dense rows' BEM run reused nothing; the wide rows' run (issue 32) computed
+    # those rows while reusing the dense ones, and the line says which rows are whose
+    assert "--bem-from" not in new.meta["bem_from"].split("the other rows:")[-1]
+    assert new.meta["bem_from"].startswith("rows of case_set 1: the bem_* columns "
+                                           "computed by")
     for k in ("rt_depth", "rt_p_max"):
         np.testing.assert_allclose(new.columns[k], shipped.columns[k], rtol=1e-6,
                                    err_msg=k)

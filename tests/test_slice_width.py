@@ -91,3 +91,15 @@ def test_end_relief_with_a_corner_radius_converges(line_load):
     ref = maxima(400)
     for n in (50, 100, 200):
         assert maxima(n) == pytest.approx(ref, rel=5e-3), n
+
+
+def test_bearing_case_check_of_an_edge_loaded_roller_is_said_once(capsys):
+    """The case check asked of a bearing whose most loaded roller is edge loaded is
+    not reported, and its note says so in plain words, once ('case check, case check
+    not reported' came from prefixing the calculator's own 'case check' text)."""
+    hard = ["--surface-hardness", "700", "--case-depth", "0.5mm", "--core-hardness", "350"]
+    assert main(BEARING + ["--n-slices", "20"] + hard + ["--json"]) == 0
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    assert row["case_ratio"] is None
+    assert "case check not reported: inner contact: edge loaded" in row["note"]
+    assert "case check, case check" not in row["note"]

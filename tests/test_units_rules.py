@@ -431,3 +431,17 @@ def test_a_count_is_a_whole_number_never_rounded(cells):
             assert "valid: an integer" in str(exc)
         else:
             assert v == int(v) and v > 0
+
+
+@pytest.mark.parametrize("text,kind,unit,other", [("5MM", "force", "'mm'", "a length"),
+                                                 ("5MM", "pressure", "'mm'", "a length"),
+                                                 ("5KN", "length", "'kN'", "a force"),
+                                                 ("2MRAD", "length", "'mrad'", "an angle")])
+def test_a_unit_of_another_kind_in_the_wrong_case_is_named_by_its_kind(text, kind, unit,
+                                                                       other):
+    """'5MM' given for a force is neither a force nor, as pint would explain it, a
+    concentration ('[substance] / [length] ** 3'): the message says that unit names are
+    case-sensitive and which kind the unit it matches apart from case is."""
+    msg = _refused(text, kind)
+    assert "case-sensitive" in msg and f"{unit} is {other}" in msg, msg
+    assert "substance" not in msg and "molar" not in msg, msg

@@ -30,6 +30,10 @@ tools.studies.runner (a local Dask cluster, or ``--scheduler ADDRESS``; checkpoi
     Pull-off of long rollers below that table (s = b_c/L down to 1e-3): an end model
     calibrated on the BEM and checked by BEM runs below the table:
     tables/adhesion_long_roller.csv (tools.studies.adhesion_long_study).
+``population``
+    Drawn rollers of cylindrical, needle and cam-follower bearings at 2-50 % of their
+    ISO 281 ratings: does each stated error of the runtime bound its difference to the
+    3D BEM? tables/population_check.csv (tools.studies.population_study).
 ``bearing``
     Cylindrical roller bearings of the NU 2.. series, universal curve against the ISO
     spring law: tables/bearing_stiffness.csv (tools.studies.bearing_study).
@@ -57,6 +61,7 @@ SUBCOMMANDS = {
     "adhesion": "tools.studies.adhesion_study",
     "adhesion-long": "tools.studies.adhesion_long_study",
     "bearing": "tools.studies.bearing_study",
+    "population": "tools.studies.population_study",
 }
 
 

@@ -13,7 +13,7 @@ import numpy as np
 from .._numerics import serial_blas
 from ..models import DEFAULT_SLICE_MODEL, SLICE_MODELS
 from ..profiles import TILT_RANGE
-from ..raceway import (Raceways, _contacts_solution, effective_radii,
+from ..raceway import (Raceways, _contacts_solution, _in_series, effective_radii,
                        roller_between_raceways)
 from ..errors import CombinationError, OutOfRangeError, UnknownNameError
 from ..checks import Interval, check_interval, check_positive
@@ -1426,7 +1426,7 @@ class RadialRollerBearing:
         d_out = outer.delta_of(Fi)
         k_out = outer.force(d_out)[1]
         delta = np.array([r.depth for r in ti]) + d_out
-        k = 1.0 / (1.0 / np.array([r.stiffness for r in ti]) + 1.0 / k_out)
+        k = _in_series(np.array([r.stiffness for r in ti]), k_out)
         law = _Law(Fi, delta, k)
         dr = self._equilibrium(law, F)
         # the tabulated equilibrium polished with exact solves of the loaded rollers:

@@ -47,6 +47,14 @@ Speed
     (tqdm when installed, else a plain line) is shown on stderr for batches of at
     least :data:`PROGRESS_ROWS` rows when stderr is a terminal, or always with
     ``--progress``; ``--no-progress`` hides it.
+
+On a cluster
+    ``--scheduler ADDRESS`` (a running dask cluster) or ``--workers N`` (a local one),
+    or ``args.client`` (:func:`linecontact.calc.frame.calc_frame`'s ``client=``): the
+    file is read and checked here as always, the rows are evaluated on the workers
+    (:mod:`linecontact.calc.spread`), and the output is written here by the same code:
+    the same bytes (docs/cluster.md). A cluster's bar is shown on a terminal whatever
+    the batch's size.
 """
 
 from __future__ import annotations
@@ -102,10 +110,17 @@ def _unread_lookalikes(path, header, names, known, table=None):
             close = difflib.get_close_matches(h, list(BY_NAME), n=1, cutoff=0.75)
             match = close[0] if close and close[0] not in known else None
         if match is not None:
+            from .._units import DIMENSIONS
+
+            # the example in the matched input's own kind (10kN under radial_load)
+            kind = BY_NAME[match].kind
+            example = DIMENSIONS[kind][2].split(",")[0] if kind in DIMENSIONS else ""
+            unit = (f"write the unit in each cell, e.g. {example} under {match!r}; "
+                    if example and not example.replace(".", "").isdigit() else "")
             raise BatchError(
                 f"{str(path)!r}: column {header[j]!r} is not an input and would not be "
-                f"read; did you mean {match!r}? (write the unit in each cell, e.g. 5mm "
-                "under 'radius'; rename the column if it is your own)")
+                f"read; did you mean {match!r}? ({unit}rename the column if it is your "
+                "own)")
     return earlier
 
 
@@ -309,6 +324,22 @@ class _CalcTable:
         return render.json_header(argv, results)
 
     @staticmethod
+    def groups(cases, errors):
+        """Per row its contact's group (:func:`~linecontact.calc.compute.group_rows`):
+        a batch on a cluster keeps each group in one part."""
+        from .compute import group_rows
+
+        return group_rows(cases, errors)[1]
+
+    @staticmethod
+    def merge(parts, rows, errors, cases, label=None):
+        """The results of the whole batch from its parts'
+        (:func:`~linecontact.calc.compute.merge_results`)."""
+        from .compute import merge_results
+
+        return merge_results(parts, rows, errors, cases, label)
+
+    @staticmethod
     def result_names():
         """Every name a result column of this command may have (a rerun's own)."""
         from .compute import all_fields
@@ -392,11 +423,19 @@ def run_batch(args, argv, specs, options, table=CALC):
         cells[p.name] = col
     # an input written to the JSON output only, given without --json (as an option or
     # in any cell of its column): refused once, before any row is computed
-    render.refuse_json_only(
-        PARAMETERS, {p.name: next((c for c in cells[p.name] if c.strip()), None)
-                     for p in PARAMETERS if p.json_only and p.name in cells},
-        args.json, lambda name: (option_name(name) if options.get(name) is not None
-                                 else f"column {header[known[name]]!r}"))
+    json_only = {p.name: next((c for c in cells[p.name] if c.strip()), None)
+                 for p in PARAMETERS if p.json_only and p.name in cells}
+    named = (lambda name: option_name(name) if options.get(name) is not None
+             else f"column {header[known[name]]!r}")
+    render.refuse_json_only(PARAMETERS, json_only, args.json, named)
+    # with --json too: a batch's JSON is one flat row per case, without the blocks of
+    # one case's JSON where such an input's result goes (it ran and dropped the field)
+    for p in PARAMETERS:
+        if p.json_only and json_only.get(p.name) is not None:
+            raise InputError(named(p.name), json_only[p.name],
+                             f"one case or a sweep with --json ({p.json_only} is a block "
+                             "of its JSON)", "a batch's JSON has one flat row per case "
+                             "and no blocks: it would not be written anywhere")
     render.refuse_input_as_output(args.output, {c.strip() for p in PARAMETERS
                                                 if p.kind == "path" and p.name in cells
                                                 for c in cells[p.name]})
@@ -419,11 +458,25 @@ def run_batch(args, argv, specs, options, table=CALC):
             if ":" in c and (not errors[i] or name in errors[i].split(" ")[0]):
                 errors[i] = str(InputError(name, c, "one value per row in a batch",
                                            "a sweep"))
-    progress = _Progress(n, getattr(args, "progress", None)
-                         if getattr(args, "progress", None) is not None
-                         else (n >= PROGRESS_ROWS and sys.stderr.isatty()))
+    spread = (getattr(args, "scheduler", None) is not None
+              or getattr(args, "workers", None) is not None
+              or getattr(args, "client", None) is not None)
+    shown = getattr(args, "progress", None)
+    progress = _Progress(n, shown if shown is not None else sys.stderr.isatty() and (
+        spread or n >= PROGRESS_ROWS))
     try:
-        results = table.evaluate(cases, errors, args, specs, progress)
+        if spread:  # the evaluation on a dask cluster: the same results
+            from .spread import evaluate_on_cluster
+
+            results = evaluate_on_cluster(
+                table, cells, errors, cases, model=getattr(args, "model", None),
+                specs=specs, scheduler=getattr(args, "scheduler", None),
+                workers=getattr(args, "workers", None),
+                connect_timeout=getattr(args, "connect_timeout", None),
+                client=getattr(args, "client", None), progress=progress,
+                label=lambda name: name)
+        else:
+            results = table.evaluate(cases, errors, args, specs, progress)
     finally:
         progress.close()
     si = args.si or args.json
@@ -462,7 +515,10 @@ def _result_layout(results, cases, si, multi):
     estar = render.scale("estar", cases.estar, si)
     cols.append(_col_name("estar", si))
     getters.append(("num", estar))
-    if np.any(cases.radius_eff != cases.radius):
+    # a column only where some row's contact radius differs from its roller's (a
+    # counter-body or raceways); a row that failed (NaN radius) is not such a row
+    reff_, r_ = np.asarray(cases.radius_eff, float), np.asarray(cases.radius, float)
+    if np.any((reff_ != r_) & ~(np.isnan(reff_) & np.isnan(r_))):
         cols.append(_col_name("radius_eff", si))
         reff = np.where(cases.whole(), np.nan, cases.radius_eff)  # per contact there
         getters.append(("num", render.scale("radius_eff", reff, si)))
@@ -485,10 +541,8 @@ def _result_layout(results, cases, si, multi):
             continue  # a block for --json only (e.g. q(x))
         n = len(results.errors)
         for f in b.fields:
-            vals = np.array([np.nan if r is None or r.get(f) is None else float(r[f])
-                             for r in b.rows])
             cols.append(f"{b.key}_{_col_name_of(f, b.fields[f], si)}")
-            getters.append(("num", vals if si else vals * b.fields[f].factor))
+            getters.append(_num_column(b.rows, f, b.fields[f], si))
         for t in b.text_columns:
             cols.append(f"{b.key}_{t}")
             getters.append(("text", ["" if r is None else r.get("text", {}).get(t, "")
@@ -499,6 +553,14 @@ def _result_layout(results, cases, si, multi):
     cols.append("error")
     getters.append(("text", results.errors))
     return cols, getters
+
+
+def _num_column(rows, name, field, si):
+    """('num', values over the rows): each row's `name` [SI], in the field's display
+    unit unless `si`; NaN for a row without it (refused, or no such output)."""
+    vals = np.array([np.nan if r is None or r.get(name) is None else float(r[name])
+                     for r in rows])
+    return "num", vals if si else vals * field.factor
 
 
 def _col_name_of(name, field, si):

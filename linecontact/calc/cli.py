@@ -166,9 +166,25 @@ def build_parser():
                      "rows or more, on a terminal)")
     out.add_argument("--no-progress", dest="progress", action="store_false",
                      help="no progress bar")
+    _add_cluster_options(calc)
     for command in _commands().values():
-        _add_command(sub, command)
+        _add_cluster_options(_add_command(sub, command))
     return parser
+
+
+def _add_cluster_options(parser):
+    """A batch on a dask cluster (:mod:`linecontact.calc.spread`): the same output."""
+    g = parser.add_argument_group(
+        "batch on a dask cluster (pip install 'linecontact[cluster]'; docs/cluster.md)")
+    g.add_argument("--scheduler", metavar="ADDRESS",
+                   help="evaluate the CSV batch's rows on the dask cluster of this "
+                   "scheduler (tcp://HOST:PORT); the output is the same, byte for byte")
+    g.add_argument("--workers", metavar="N",
+                   help="evaluate the CSV batch's rows on a local dask cluster of N "
+                   "worker processes (listening on 127.0.0.1 only)")
+    g.add_argument("--connect-timeout", metavar="SECONDS",
+                   help="with --scheduler: give up (exit 2) when the address does not "
+                   "answer as a dask scheduler within this time (default 60)")
 
 
 def _commands():
@@ -359,6 +375,54 @@ def _check_plot_name(path):
         raise OutOfRangeError("--plot", path, "a name ending in .png, .svg or .pdf")
 
 
+#: The options that say where a batch runs, not what it computes.
+_CLUSTER_OPTIONS = ("--scheduler", "--workers", "--connect-timeout")
+
+
+def _without_cluster_options(argv):
+    """The command line without the cluster's options (with their values): the JSON
+    header's ``command`` says what was computed, the same wherever it ran, so that a
+    batch on a cluster writes the serial batch's bytes."""
+    out, skip = [], False
+    for tok in argv:
+        if skip:
+            skip = False
+            continue
+        name = tok.split("=", 1)[0]
+        if len(name) > 4 and sum(o.startswith(name) for o in _CLUSTER_OPTIONS) == 1:
+            skip = "=" not in tok      # argparse's abbreviations too (--sched)
+            continue
+        out.append(tok)
+    return out
+
+
+def _check_cluster_options(args):
+    """The cluster's options: with a CSV batch only, --scheduler or --workers (not
+    both), their values read (a bad one: one line, exit 2, before the file is read)."""
+    given = [o for o, v in (("--scheduler", args.scheduler), ("--workers", args.workers),
+                            ("--connect-timeout", args.connect_timeout)) if v is not None]
+    if not given:
+        return
+    if args.csv is None:
+        raise _Failed(f"{given[0]} runs a CSV batch on a dask cluster; give the FILE.csv "
+                      "(one case or a sweep is computed in this process)")
+    if args.scheduler is not None and args.workers is not None:
+        raise _Failed("--scheduler and --workers: give one (--workers N starts a local "
+                      "cluster; the workers of --scheduler are the cluster's own)")
+    if args.connect_timeout is not None and args.scheduler is None:
+        raise _Failed("--connect-timeout is the time to reach --scheduler; give that "
+                      "address too (or leave the option out)")
+    from .cluster import (check_connect_timeout, check_scheduler_address,
+                          check_workers_option, require_distributed)
+
+    if args.scheduler is not None:
+        check_scheduler_address(args.scheduler)
+        args.connect_timeout = check_connect_timeout(args.connect_timeout)
+    else:
+        args.workers = check_workers_option(args.workers)
+    require_distributed("--scheduler" if args.scheduler is not None else "--workers")
+
+
 class _Failed(Exception):
     """A one-line error message already composed."""
 
@@ -396,6 +460,7 @@ def main(argv=None):
         if args.csv is None:  # a batch checks its columns too (batch.run_batch)
             render.refuse_json_only(parameters, {p.name: getattr(args, p.name)
                                                  for p in parameters}, args.json)
+        _check_cluster_options(args)
         if args.csv is not None:
             from .batch import CALC, run_batch
 
@@ -404,7 +469,7 @@ def main(argv=None):
                               "the batch's output into linecontact.plot instead)")
 
             options = {p.name: getattr(args, p.name) for p in parameters}
-            return run_batch(args, argv, specs, options,
+            return run_batch(args, _without_cluster_options(argv), specs, options,
                              CALC if command is None else command)
         if command is not None:
             return _command_one(command, args, argv)
@@ -413,6 +478,11 @@ def main(argv=None):
         _error(str(exc), name)
         return 2
     except ValueError as exc:
+        from .cluster import ClusterError
+
+        if isinstance(exc, ClusterError):
+            _error(str(exc), name)
+            return exc.exit_code
         # InputError, BatchError (ours) or the library's OutOfRangeError
         from .._units import InputError
         from ..errors import CombinationError, OutOfRangeError, UnknownNameError

@@ -28,7 +28,7 @@ import numpy as np
 
 from .feature import RAW_KINDS, Fail, option_name
 
-__all__ = ["Command", "CommandResults"]
+__all__ = ["Command", "CommandResults", "command_named"]
 
 #: The text columns of a subcommand's row, after its fields (then ``error``): the
 #: model or method the row was solved with (not ``model``: a subcommand may take a
@@ -48,6 +48,27 @@ class CommandResults:
         self.objects = [None] * n
         self.rows = [None] * n
         self.models = {}
+
+    @classmethod
+    def merged(cls, parts, rows, errors, cases):
+        """The results of a whole batch from those of parts of its rows
+        (:meth:`Command.evaluate` on each alone, the batch on a cluster; a row's
+        solution depends on that row alone): `rows` the rows each part holds, in
+        order, consecutive ranges in row order (so that the models come in the order
+        of their first row, as a serial run registers them). `errors`, the whole
+        batch's, is updated in place."""
+        if sum(len(r) for r in rows) != len(errors):
+            raise ValueError(f"CommandResults.merged: the parts hold "
+                             f"{sum(len(r) for r in rows)} rows, the batch {len(errors)}")
+        out = cls(len(errors), errors, cases)
+        for p, r in zip(parts, rows):
+            for k, i in enumerate(list(r)):
+                errors[i] = p.errors[k]
+                out.objects[i] = p.objects[k]
+                out.rows[i] = p.rows[k]
+            for mid, entry in p.models.items():
+                out.models.setdefault(mid, entry)
+        return out
 
 
 class _Entry:
@@ -140,20 +161,33 @@ class Command:
         reason = getattr(exc, "hint", "") or "out of range"
         return f"{label(name)} = {typed!r}: {reason}; valid: {exc.valid}"
 
+    # -- the batch on a cluster (linecontact.calc.spread) ---------------------------
+    def __reduce__(self):
+        """Pickled by name (a task for a worker): the worker's own subcommand."""
+        return command_named, (self.name,)
+
+    @staticmethod
+    def groups(cases, errors):
+        """None: every row is solved alone (the parts may be any ranges)."""
+        return None
+
+    @staticmethod
+    def merge(parts, rows, errors, cases, label=None):
+        """The results of the whole batch from its parts' (:meth:`CommandResults.merged`)."""
+        return CommandResults.merged(parts, rows, errors, cases)
+
     # -- the batch's columns and header --------------------------------------------
     def layout(self, results, cases, si):
         """Result column names and, for each, ('num' or 'text', values over the rows):
         every field (``NAME_UNIT``, as ``calc`` names them), the model used, the note,
         and ``error`` last."""
-        from .batch import _col_name_of
+        from .batch import _col_name_of, _num_column
 
         cols, getters = [], []
         rows = results.rows
         for name, f in self.fields.items():
-            vals = np.array([np.nan if r is None or r.get(name) is None else float(r[name])
-                             for r in rows])
             cols.append(_col_name_of(name, f, si))
-            getters.append(("num", vals if si else vals * f.factor))
+            getters.append(_num_column(rows, name, f, si))
         for t in TEXT_COLUMNS:
             cols.append(t)
             getters.append(("text", ["" if r is None else str(r.get(t, "")) for r in rows]))
@@ -220,3 +254,11 @@ class Command:
         from .figure import draw_command
 
         return draw_command(self, results, path)
+
+
+def command_named(name):
+    """The :class:`Command` of the registered subcommand `name`
+    (:data:`linecontact.calc.subcommands.SUBCOMMANDS`)."""
+    from .subcommands import SUBCOMMANDS
+
+    return Command(next(m for m in SUBCOMMANDS if m.name == name))

@@ -148,6 +148,15 @@ def parse_model_option(spec):
             options[name] = _option_value(f"--model {key}:{name}", value.strip(),
                                           defaults[name],
                                           _option_kind(models.MODELS[key], name))
+        # the same model twice ('johnson,johnson:c=1': c = 1 is the default) gives two
+        # sets under one id: a batch's columns twice under one name, one lost on reading
+        same = repr((key, sorted({**defaults, **options}.items())))
+        earlier = next((t for t, k, o in parsed
+                        if repr((k, sorted({**_option_defaults(models.MODELS[k]),
+                                            **o}.items()))) == same), None)
+        if earlier is not None:
+            raise InputError("--model", spec, "each model once",
+                             f"{text!r} is the same model as {earlier!r}")
         parsed.append((text, key, options))
     return parsed
 
@@ -502,7 +511,8 @@ class Results:
             for f in CONTACT_COLUMNS:
                 s["fields"][f] = np.full(n, np.nan)
         self.models = {}
-        self.errors = errors
+        self.origins = {}       # model id -> (first row of the group that
+        self.errors = errors    # registered it, its set): merge_results
         self.cases = cases
         self.label = label
         self.whole = False
@@ -552,6 +562,43 @@ def _build_contact(parts, key, options):
                    **options)
 
 
+def _group_key(cases, errors, composed):
+    """(key, parts_of, ok): per row the values that make one contact (rows of equal
+    key are evaluated together, groups in the order of their keys), the parts a
+    feature composes per row, and the rows without an error. `composed`: the active
+    features that compose a contact (profile, tilt, raceways)."""
+    n = len(errors)
+    # rows whose contact a feature composes: one integer code per distinct set of
+    # parts, in the order of their first row, so that they group with their own kind
+    codes = np.zeros(n)
+    parts_of = {}
+    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
+    if composed:
+        seen = {}
+        for i in np.flatnonzero(ok):
+            extra = {}
+            for f, st in composed:
+                if st.rows[i]:
+                    extra.update(st.parts(i))
+            if extra:
+                key = tuple(sorted(extra.items()))
+                codes[i] = seen.setdefault(key, len(seen) + 1)
+                parts_of[i] = extra
+    v, P = cases.values, cases.present
+
+    def col(a):
+        a = np.asarray(a, dtype=float)
+        return np.where(np.isnan(a), -1.0, a)
+
+    key = np.stack([col(cases.radius_eff), col(cases.length), col(cases.estar), codes,
+                    col(cases.radius), col(np.where(P["radius2"], v["radius2"], np.nan)),
+                    col(np.where(P["modulus"], v["modulus"], np.nan)),
+                    col(np.where(P["poisson"], v["poisson"], np.nan)),
+                    col(np.where(P["modulus2"], v["modulus2"], np.nan)),
+                    col(np.where(P["poisson2"], v["poisson2"], np.nan))], axis=1)
+    return key, parts_of, ok
+
+
 def compute(cases, errors, specs, *, first_only=False, progress=None, label=None):
     """Evaluate the selected models and the active features for every good row.
 
@@ -580,34 +627,7 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     n = len(errors)
     active = cases.active()
     composed = [(f, st) for f, st in active if getattr(st, "parts", None) is not None]
-    # rows whose contact a feature composes (profile, tilt, raceways): one integer code
-    # per distinct set of parts, so that they group with their own kind
-    codes = np.zeros(n)
-    parts_of = {}
-    ok = np.fromiter(map(operator.not_, errors), dtype=bool, count=n)
-    if composed:
-        seen = {}
-        for i in np.flatnonzero(ok):
-            extra = {}
-            for f, st in composed:
-                if st.rows[i]:
-                    extra.update(st.parts(i))
-            if extra:
-                key = tuple(sorted(extra.items()))
-                codes[i] = seen.setdefault(key, len(seen) + 1)
-                parts_of[i] = extra
-    v, P = cases.values, cases.present
-
-    def col(a):
-        a = np.asarray(a, dtype=float)
-        return np.where(np.isnan(a), -1.0, a)
-
-    key = np.stack([col(cases.radius_eff), col(cases.length), col(cases.estar), codes,
-                    col(cases.radius), col(np.where(P["radius2"], v["radius2"], np.nan)),
-                    col(np.where(P["modulus"], v["modulus"], np.nan)),
-                    col(np.where(P["poisson"], v["poisson"], np.nan)),
-                    col(np.where(P["modulus2"], v["modulus2"], np.nan)),
-                    col(np.where(P["poisson2"], v["poisson2"], np.nan))], axis=1)
+    key, parts_of, ok = _group_key(cases, errors, composed)
     rows = np.flatnonzero(ok)
     from ..models import DEFAULT_MODEL
 
@@ -653,8 +673,10 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
             fast = None
     if fast is not None and fast.any():
         i0 = np.flatnonzero(fast)[0]
+        covered = np.flatnonzero(fast)       # the first of them in the groups' order
+        at = int(covered[np.lexsort(key[covered].T[::-1])[0]])
         _register(results, _build(specs, cases.radius_eff[i0], cases.length[i0],
-                                  cases.estar[i0], first_only, default_key)[0])
+                                  cases.estar[i0], first_only, default_key)[0], at)
         rows = rows[~fast[rows]]          # the rest: per contact, below
         if progress is not None:
             progress(int(fast.sum()))
@@ -703,23 +725,21 @@ def compute(cases, errors, specs, *, first_only=False, progress=None, label=None
     results.contact = bool(np.any(~whole & ok))
     # a feature none of whose rows is on (`--stresses no`) prints no note
     results.features = [f for f, st in active if np.any(st.rows)]
-    for f, st in active:
-        names = [c for c in f.fields if c in produced]
-        if getattr(st, "whole", None) is not None:
-            results.whole_columns += names
-        else:
-            results.extra += names
+    _sort_columns(results, active, produced)
     for f, st in active:
         results.blocks += f.blocks(st, results)
     return results
 
 
-def _register(results, model):
-    """Name the single column set after its first model (as _evaluate_group does)."""
+def _register(results, model, at):
+    """Name the single column set after its first model (as _evaluate_group does);
+    `at`: the row of the evaluated ones whose group would come first."""
     s = results.sets[0]
     s["id"] = model_id(model)
     s["named"] = True
+    s["named_at"] = at
     results.models.setdefault(s["id"], model)
+    results.origins.setdefault(s["id"], (at, 0))
     if s.get("model") is None:
         s["model"] = model
 
@@ -819,6 +839,17 @@ def _composed_sets(cases, i0, extra, specs, default_specs, feature_sets, compose
         except (CombinationError, OutOfRangeError) as exc:
             refs = [(Refused("default", exc), None)]
     return sets, refs
+
+
+def _sort_columns(results, active, produced):
+    """Append each active feature's produced columns, in its field order, to
+    `results.whole_columns` (a whole-bearing state) or `results.extra` (per contact)."""
+    for f, st in active:
+        names = [c for c in f.fields if c in produced]
+        if getattr(st, "whole", None) is not None:
+            results.whole_columns += names
+        else:
+            results.extra += names
 
 
 def _no_overflow(results):
@@ -959,6 +990,7 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
                        else re.sub(r"[^a-z0-9.]+", "-", str(item[1] or obj.label).lower())
                        .strip("-"))
             s["named"] = True
+            s["named_at"] = int(g[0])       # the group that named it (merge_results)
         first = item[0]  # the model as built (its provenance even where it refused)
         if not isinstance(first, Refused) and item[1] is not None:
             first = _Entry(first, label)  # a composed contact: its model's entry
@@ -968,6 +1000,7 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
             mid = model_id(first)
             if mid not in results.models:
                 results.models[mid] = first
+                results.origins[mid] = (int(g[0]), j)
             if s.get("model") is None:  # the first contact's model: its JSON entry
                 s["model"] = first
         s["label"][g] = label
@@ -996,3 +1029,146 @@ def _evaluate_group(results, g, cases, active, whole, sets, refs, produced):
         for j, r in enumerate(per_set):
             with np.errstate(divide="ignore", invalid="ignore"):
                 results.sets[j]["fields"]["deviation"][g] = quantity(r) / ref_q - 1
+
+
+class Unmergeable(ValueError):
+    """Partial results (:func:`merge_results`) whose shape differs between the parts in
+    a way whose whole-batch value cannot be told from the parts (a message says how)."""
+
+
+def merge_results(parts, rows, errors, cases, label=None):
+    """The :class:`Results` of a whole batch from those of parts of its rows, each
+    computed by :func:`compute` on those rows alone (the batch on a cluster,
+    :mod:`linecontact.calc.spread`); the same as :func:`compute` on all the rows when
+    no part splits a group of :func:`group_rows` (a contact's rows are solved as one
+    sweep, each load warm-started from its neighbour's: equal to a row alone within
+    the solver's tolerance, not bit for bit).
+
+    Every value of a group depends on that group alone; what the whole batch decides
+    is taken from the parts: the fields of each set (a field some part lacks is none
+    there, as :func:`compute` fills it), the set's id (from the part whose group comes
+    first in the whole batch's order of the groups), the models (in that order: the
+    JSON header's), whether any row is whole or a single contact, the features'
+    columns (in the features' order, from `cases`, the whole batch's), the features'
+    blocks (their rows put in place).
+
+    Parameters
+    ----------
+    parts : list of Results
+        ``errors`` of each its rows' errors, ``cases`` unused.
+    rows : list of int arrays
+        The rows of the batch that each part holds, in the part's order; together
+        every row once.
+    errors : list of str
+        The whole batch's row errors: updated in place from the parts' (a model's
+        unexpected exception), and the merged result's ``errors``.
+    cases : Cases
+        The whole batch's cases.
+    label : callable, optional
+        As for :func:`compute`.
+
+    Returns
+    -------
+    Results
+
+    Raises
+    ------
+    Unmergeable
+        The parts chose different numbers of model sets, or comparisons.
+    """
+    import copy
+
+    from .feature import option_name
+
+    n = len(errors)
+    rows = [np.asarray(r, dtype=np.intp) for r in rows]
+    if sum(r.size for r in rows) != n or any(len(p.errors) != r.size
+                                             for p, r in zip(parts, rows)):
+        raise ValueError(f"merge_results: the parts hold {sum(r.size for r in rows)} "
+                         f"rows, the batch {n}")
+    # the whole batch's order of the groups (as compute evaluates them): a row's key
+    key = group_rows(cases, errors)[0]
+
+    def rank(row, part_rows):
+        """Where the group of a part's row comes in the whole batch's order."""
+        return tuple(key[part_rows[row]].tolist())
+
+    for p, r in zip(parts, rows):
+        for i, e in zip(r.tolist(), p.errors):
+            errors[i] = e
+    n_sets = {len(p.sets) for p in parts}
+    if len(n_sets) != 1:
+        raise Unmergeable(f"the parts chose {sorted(n_sets)} model sets")
+    if len({p.deviation for p in parts}) != 1:
+        raise Unmergeable("the parts differ on the deviation column")
+    out = Results(n, n_sets.pop(), errors, cases, label or option_name)
+    for j, s in enumerate(out.sets):
+        ps = [p.sets[j] for p in parts]
+        for q, r in zip(ps, rows):
+            for k, arr in q["fields"].items():
+                if k not in s["fields"]:
+                    s["fields"][k] = np.full(n, np.nan)
+                s["fields"][k][r] = arr
+            for k in ("note", "flags", "label", "solution"):
+                s[k][r] = q[k]
+        # named by the first group of the whole batch that evaluated it
+        named = sorted(((rank(q["named_at"], r), q["id"]) for q, r in zip(ps, rows)
+                        if q.get("named")), key=lambda t: t[0])
+        s["id"] = named[0][1] if named else ps[0]["id"]
+        if named:
+            s["named"] = True
+        for k in ("model", "key"):
+            found = next((q[k] for q in ps if q.get(k) is not None), None)
+            if found is not None:
+                s[k] = found
+    # the models in the order the whole batch's groups registered them
+    first = {}
+    for p, r in zip(parts, rows):
+        for mid, (row, j) in p.origins.items():
+            at = (rank(row, r), j)
+            if mid not in first or at < first[mid][0]:
+                first[mid] = (at, p.models[mid])
+    for mid in sorted(first, key=lambda m: first[m][0]):
+        out.models[mid] = first[mid][1]
+    out.whole = any(p.whole for p in parts)
+    out.contact = any(p.contact for p in parts)
+    out.deviation = parts[0].deviation
+    produced = set()
+    for p in parts:
+        produced.update(p.whole_columns, p.extra)
+    active = cases.active()
+    _sort_columns(out, active, produced)   # as compute orders them
+    out.features = [f for f, st in active if np.any(st.rows)]
+    keys = list(dict.fromkeys(b.key for p in parts for b in p.blocks))
+    for bkey in keys:
+        blocks = [next((b for b in p.blocks if b.key == bkey), None) for p in parts]
+        merged = copy.copy(next(b for b in blocks if b is not None))
+        merged.rows, merged.json_rows = [None] * n, [None] * n
+        for b, r in zip(blocks, rows):
+            if b is None:
+                continue
+            for k, i in enumerate(r.tolist()):
+                merged.rows[i] = b.rows[k]
+                if b.json_rows is not None:
+                    merged.json_rows[i] = b.json_rows[k]
+        out.blocks.append(merged)
+    return out
+
+
+def group_rows(cases, errors):
+    """(key, group): per row the values that make one contact (as :func:`compute`
+    groups the rows: a group's loads are solved as one sweep) and the number of its
+    group (groups numbered in the order of their first row; -1 for a row with an
+    error). A batch split into parts that keep each group whole computes the same
+    values as the whole (:func:`merge_results`)."""
+    composed = [(f, st) for f, st in cases.active()
+                if getattr(st, "parts", None) is not None]
+    key, _, ok = _group_key(cases, errors, composed)
+    group = np.full(len(errors), -1, dtype=np.intp)
+    good = np.flatnonzero(ok)
+    if good.size:
+        _, first, inverse = np.unique(key[good], axis=0, return_index=True,
+                                      return_inverse=True)
+        order = np.argsort(np.argsort(first, kind="stable"), kind="stable")
+        group[good] = order[np.ravel(inverse)]
+    return key, group

@@ -101,6 +101,9 @@ Adding a subcommand is one module plus one line
        ``notes``
            Mapping key -> one paragraph (the JSON header's notes, printed under the
            table).
+       ``note_fields`` (optional)
+           Mapping note key -> the field it explains: the text leaves out a note
+           whose field no row computed (the JSON header keeps every note).
        ``resolve(values, present, fail) -> State``
            The input rules over all rows, as a feature's (``fail`` refuses rows with
            one line); the State is handed to ``solve``.

@@ -26,6 +26,10 @@ and read back.
 :func:`command_frame` does the same for a subcommand's batch (``command_frame("bearing",
 cases)``: ``linecontact bearing FILE.csv``).
 
+On a dask cluster: ``calc_frame(cases, client=client)`` (or a dask DataFrame of cases,
+evaluated on the current distributed client) splits the rows into ranges evaluated on
+the workers (:mod:`linecontact.calc.spread`) and returns the same DataFrame.
+
 pandas is optional (``pip install 'linecontact[pandas]'``) and imported only here,
 never on the one-case path.
 
@@ -47,6 +51,7 @@ import io
 import json
 import math
 import numbers
+import re
 import tempfile
 from pathlib import Path
 
@@ -73,16 +78,43 @@ def _cell(value):
     return str(value)
 
 
-def calc_frame(cases, *, model=None, **options):
+def _on_client(cases, client, func):
+    """(pandas cases, client): a dask DataFrame's rows gathered here (the cases are
+    text; the evaluation is what goes to the cluster), and the client to evaluate
+    them on: `client`, else for a dask DataFrame the current distributed client."""
+    if client is None and not hasattr(cases, "npartitions"):
+        return cases, None
+    from .cluster import ClusterError, require_distributed
+
+    require_distributed("client" if client is not None else "a dask DataFrame")
+    if client is None:
+        from distributed import get_client
+        try:
+            client = get_client()
+        except ValueError:
+            raise ClusterError(f"{func}: a dask DataFrame is evaluated on a distributed "
+                               "client: give client= (distributed.Client(ADDRESS)) or "
+                               "create one first") from None
+    if hasattr(cases, "npartitions"):
+        cases = client.compute(cases).result()
+    return cases, client
+
+
+def calc_frame(cases, *, model=None, client=None, **options):
     """Evaluate every row of `cases` by the CSV batch's rules; the results as a DataFrame.
 
     Parameters
     ----------
-    cases : pandas.DataFrame
+    cases : pandas.DataFrame or dask.dataframe.DataFrame
         One case per row; columns named like the batch's (see the module docstring).
+        A dask DataFrame's rows are evaluated on the cluster of `client` (default: the
+        current distributed client).
     model : str, optional
         Models as ``--model`` takes them (``"johnson:c=0.72,universal"``, ``"all"``);
         default the batch's: the best estimate only.
+    client : distributed.Client, optional
+        Evaluate the rows on this client's dask cluster, split into ranges of rows
+        (:mod:`linecontact.calc.spread`): the same DataFrame as without.
     **options
         Values for empty or missing cells, by parameter name (``estar="115GPa"``).
 
@@ -95,17 +127,20 @@ def calc_frame(cases, *, model=None, **options):
     ------
     ValueError
         A frame the batch refuses as a whole, or an option value it refuses (one line,
-        naming it); an unknown option name.
+        naming it); an unknown option name; with a cluster, a
+        :class:`~linecontact.calc.cluster.ClusterError` (no dask installed, no client,
+        a worker with other linecontact code, a lost scheduler).
     """
     from .batch import CALC
     from .compute import parse_model_option
 
-    _check_frame(cases, PARAMETERS, "calc_frame", ["cases", "model"], options)
+    cases, client = _on_client(cases, client, "calc_frame")
+    _check_frame(cases, PARAMETERS, "calc_frame", ["cases", "model", "client"], options)
     specs = parse_model_option(model)
-    return _run(CALC, cases, options, specs, model)
+    return _run(CALC, cases, options, specs, model, client)
 
 
-def command_frame(command, cases, **options):
+def command_frame(command, cases, *, client=None, **options):
     """A subcommand's batch (``linecontact bearing FILE.csv``) on a DataFrame, by
     exactly that batch's rules (see the module docstring).
 
@@ -114,9 +149,11 @@ def command_frame(command, cases, **options):
     command : str
         The subcommand's name (:data:`linecontact.calc.subcommands.SUBCOMMANDS`), e.g.
         ``"bearing"``.
-    cases : pandas.DataFrame
+    cases : pandas.DataFrame or dask.dataframe.DataFrame
         One case per row; columns named like the subcommand's options without the
-        dashes (``pitch_diameter``).
+        dashes (``pitch_diameter``); a dask DataFrame as for :func:`calc_frame`.
+    client : distributed.Client, optional
+        Evaluate the rows on this client's dask cluster (as :func:`calc_frame`).
     **options
         Values for empty or missing cells, by parameter name.
 
@@ -148,8 +185,10 @@ def command_frame(command, cases, **options):
         from ..errors import UnknownNameError
         raise UnknownNameError("command", command, sorted(by_name))
     table = Command(by_name[command])
-    _check_frame(cases, table.parameters, "command_frame", ["command", "cases"], options)
-    return _run(table, cases, options, None, None)
+    cases, client = _on_client(cases, client, "command_frame")
+    _check_frame(cases, table.parameters, "command_frame", ["command", "cases", "client"],
+                 options)
+    return _run(table, cases, options, None, None, client)
 
 
 def _check_frame(cases, parameters, func, keywords, options):
@@ -171,7 +210,7 @@ def _check_frame(cases, parameters, func, keywords, options):
             "cases.columns = cases.columns.get_level_values(-1)")
 
 
-def _run(table, cases, options, specs, model):
+def _run(table, cases, options, specs, model, client=None):
     """The batch of `table` (the calculator's or a subcommand's) on the frame's cells,
     JSON output (SI, full precision) read back into the frame's columns."""
     import pandas as pd
@@ -197,7 +236,8 @@ def _run(table, cases, options, specs, model):
             for row in cases.itertuples(index=False, name=None):
                 w.writerow([_cell(v) for v in row])
         args = argparse.Namespace(csv=str(src), model=model, progress=False, si=True,
-                                  json=True, output=str(dst), plot=None, linear=False)
+                                  json=True, output=str(dst), plot=None, linear=False,
+                                  client=client)
         # the batch's "N of M rows failed" line: the error column says it, row by row
         with contextlib.redirect_stderr(io.StringIO()):
             try:
@@ -207,6 +247,9 @@ def _run(table, cases, options, specs, model):
                                  ) from None
         doc = json.loads(dst.read_text(encoding="utf-8"))
     rows = doc.pop("rows")
+    for r in rows:  # a conflict with a keyword, said as the frame's caller wrote it
+        if r.get("error"):
+            r["error"] = _keyword_words(r["error"])
     names = [k for k in rows[0] if k not in set(header)] if rows else []
     out = cases.copy()
     for name in names:
@@ -219,3 +262,20 @@ def _run(table, cases, options, specs, model):
                                   index=cases.index, dtype=object)
     out.attrs["linecontact"] = doc
     return out
+
+
+_CONFLICT = re.compile(r"conflicts with --([a-z0-9-]+) (.*?) on the command line \(the "
+                       r"option fills empty cells only; clear the cell or drop the "
+                       r"option\); valid: the cell or --\1, not both")
+
+
+def _keyword_words(text):
+    """The batch's conflict between a cell and an option, in the words of a call:
+    the keyword ``radial_load='5kN'`` of calc_frame/command_frame, not a command-line
+    option ``--radial-load`` the caller never typed."""
+    def words(m):
+        name = m[1].replace("-", "_")
+        return (f"conflicts with the keyword {name}={m[2]!r} (a keyword fills empty "
+                f"cells only; clear the cell or drop the keyword); valid: the cell or "
+                f"the keyword {name}, not both")
+    return _CONFLICT.sub(words, text)

@@ -210,16 +210,20 @@ _INPUT_UNITS = {"length": ("mm", 1e3), "force": ("kN", 1e-3), "pressure": ("GPa"
                 "count": ("-", 1.0)}
 
 
-def swept_inputs(cases):
+def swept_inputs(cases, shown=None):
     """The inputs that vary between the rows of a sweep and are not an output column
-    already (e.g. the tilt of a load x tilt grid): [(Parameter, SI array)]."""
+    already (e.g. the tilt of a load x tilt grid): [(Parameter, SI array)]. `shown`:
+    the output columns printed (default: every field; a swept radius or length, fields
+    the table does not print, then gets no column and its rows could not be told
+    apart)."""
     from .cases import PARAMETERS
 
+    shown = FIELDS if shown is None else shown
     out = []
     for p in PARAMETERS:
         col = cases.cells.get(p.name)
         if (isinstance(col, np.ndarray) and p.name not in ("load", "depth")
-                and p.name not in FIELDS and len(col) > 1 and np.any(col != col[0])):
+                and p.name not in shown and len(col) > 1 and np.any(col != col[0])):
             out.append((p, col))
     return out
 
@@ -232,7 +236,7 @@ def table_text(cases, present, results, si):
 
     given = str(cases.given[0])
     cols = columns_of(results, given)
-    swept = swept_inputs(cases)
+    swept = swept_inputs(cases, cols)
     heads = []
     for p, _ in swept:
         u = DIMENSIONS[p.kind][1] if si else _INPUT_UNITS[p.kind][0]
@@ -262,7 +266,10 @@ def table_text(cases, present, results, si):
 
 
 def _block_note(results, text):
-    return any(b.note == text for b in results.blocks)
+    """Whether a block prints `text` under its own table (a block without rows, e.g.
+    the profiled roller's q(x) for --json only, prints no table and no note)."""
+    return any(b.note == text and any(r is not None for r in b.rows)
+               for b in results.blocks)
 
 
 def blocks_text(blocks, given, si):
@@ -440,7 +447,12 @@ def command_text(command, cases, results, si):
                     [v * f], scale=None if size is None else size * f)[0])
             table.append(cells + [row.get("note", "")])
         lines += aligned(table)
-    lines += [""] + [f"Note: {t}" for t in command.notes.values()]
+    # a note on an output no row computed (the flanges' without an axial load) is
+    # left out of the text; the JSON header keeps them all
+    needs = getattr(module, "note_fields", {})
+    lines += [""] + [f"Note: {t}" for k, t in command.notes.items()
+                     if k not in needs or any(r and r.get(needs[k]) is not None
+                                              for r in results.rows)]
     if n == 1:
         lines += [f"Note: {t}" for t in results.rows[0].get("notes", ())]
     return "\n".join(lines) + "\n"

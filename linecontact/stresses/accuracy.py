@@ -102,7 +102,8 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
     Returns (note, error): error maps each measure to the largest |rt/3D - 1| of
     tables/stress_accuracy.csv for this kind of case (3D-corrected or strips, with or
     without friction, off the ends or edge loaded), None outside the measured range
-    (L/D, q/(E* D), tilt, profile, friction), which the note names."""
+    (L/(2R), q/(E* 2R) with R the contact's effective radius, tilt, profile, friction),
+    which the note names."""
     cov = _accuracy()
     where = "a 3D field below the 3D BEM pressure (tables/stress_accuracy.csv)"
     what = "3D-corrected stresses" if three_d else "slice (plane-strain) stresses"
@@ -111,10 +112,15 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
     outside = []
     if roller is not None:
         D = 2 * roller.radius
-        checks = [("L/D", roller.length / D, cov["l_over_d"]),
-                  ("mean line load q/(E* D)",
-                   solution.force / (roller.length * roller.estar * D), cov["line_load"])]
-        outside += [f"{n} = {v:.2g} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
+        # L/(2R) in the user's terms: R is the contact's effective radius (the
+        # roller's on a flat; with a raceway's curvature added otherwise)
+        ld = (f"L/(2R) = {roller.length / D:.2g} (roller length L = "
+              f"{roller.length * 1e3:.4g} mm, the contact's effective radius R = "
+              f"{roller.radius * 1e3:.4g} mm: the roller's L/D on a flat)")
+        qn = solution.force / (roller.length * roller.estar * D)
+        checks = [(ld, roller.length / D, cov["l_over_d"]),
+                  (f"mean line load q/(E* 2R) = {qn:.2g}", qn, cov["line_load"])]
+        outside += [f"{n} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
                     in checks if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5)]
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:

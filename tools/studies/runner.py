@@ -50,17 +50,19 @@ import tempfile
 import zipfile
 from pathlib import Path
 
+# one definition of the code a worker runs, shared with the calculator's batches
+from linecontact.calc.cluster import linecontact_fingerprint
+
 __all__ = ["add_runner_arguments", "run_study", "run_study_from_args", "table_meta",
            "wall_time_line", "code_version", "ship_study_code", "check_same_linecontact",
            "linecontact_fingerprint", "worker_environment", "check_workers",
            "StudyError", "WorkerMismatch", "check_scheduler_address",
            "DEFAULT_WORKERS", "DEFAULT_CONNECT_TIMEOUT"]
 
-#: Worker processes of the default LocalCluster (the 2 cores of the reference machine).
-DEFAULT_WORKERS = 2
-
-#: Seconds to reach a ``--scheduler`` and hear it answer as a dask scheduler.
-DEFAULT_CONNECT_TIMEOUT = 60.0
+#: Worker processes of the default LocalCluster (the 2 cores of the reference machine)
+#: and the seconds to reach a ``--scheduler`` and hear it answer as a dask scheduler:
+#: the calculator's batches' (linecontact.calc.cluster).
+from linecontact.calc.cluster import DEFAULT_CONNECT_TIMEOUT, DEFAULT_WORKERS  # noqa: E402
 
 
 class StudyError(RuntimeError):
@@ -172,25 +174,6 @@ def _save(folder, task, result):
 #: The repository root: the parent of the ``tools`` package.
 _TOOLS = Path(__file__).resolve().parents[1]
 _REPO = _TOOLS.parent
-
-
-def linecontact_fingerprint():
-    """SHA-1 of the Python sources of the linecontact package that this interpreter
-    imports (relative paths and bytes of every ``*.py``, the data tables excluded),
-    with its version: two processes compute the same numbers only if these agree.
-
-    >>> linecontact_fingerprint().startswith("linecontact ")
-    True
-    """
-    import linecontact
-    root = Path(linecontact.__file__).resolve().parent
-    digest = hashlib.sha1()
-    for path in sorted(root.rglob("*.py")):
-        rel = path.relative_to(root)
-        if rel.parts[0] == "tables" or "__pycache__" in rel.parts:
-            continue
-        digest.update(rel.as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-    return f"linecontact {linecontact.__version__} sha1 {digest.hexdigest()[:12]}"
 
 
 def _zip_tools(folder):
@@ -352,134 +335,44 @@ def check_same_linecontact(client, expected=None):
     check_workers(client, env)
 
 
-#: URL schemes of dask's comms that a ``--scheduler`` address may use.
-_SCHEMES = ("tcp", "tls", "ws", "wss", "ucx", "inproc")
+#: What leaving --scheduler out does, in the address's refusals.
+_WITHOUT = "for a local cluster"
 
 
-def _bad_address(scheduler, why):
-    return StudyError(f"--scheduler {scheduler!r}: {why}", exit_code=2)
+def _study_error(exc):
+    """A ClusterError of linecontact.calc.cluster as the runner's StudyError."""
+    return StudyError(str(exc), exit_code=exc.exit_code)
 
 
 def check_scheduler_address(scheduler):
     """The address `scheduler` as ``(scheme, host, port)``; a StudyError (exit 2) with
-    one line when it is empty or not a dask scheduler address with a host and a port.
+    one line when it is empty or not a dask scheduler address with a host and a port
+    (the rules of :func:`linecontact.calc.cluster.check_scheduler_address`, shared with
+    the calculator's batches).
 
     >>> check_scheduler_address("tcp://127.0.0.1:8786")
     ('tcp', '127.0.0.1', 8786)
     >>> check_scheduler_address("10.0.0.5:8786")
     ('tcp', '10.0.0.5', 8786)
     """
-    example = "e.g. tcp://HOST:8786 (leave the option out for a local cluster)"
-    if not isinstance(scheduler, str) or not scheduler.strip():
-        raise _bad_address(scheduler, f"empty: give the address of a running dask "
-                                      f"scheduler, {example}")
-    text = scheduler.strip()
-    scheme, _, rest = text.rpartition("://")
-    scheme = scheme.lower() or "tcp"
-    if scheme not in _SCHEMES:
-        hint = (" (that is a web address: the scheduler's own port is printed by "
-                "'dask scheduler' as 'Scheduler at: tcp://...')"
-                if scheme in ("http", "https") else "")
-        raise _bad_address(scheduler, f"the scheme {scheme!r} is not one of dask's "
-                                      f"{', '.join(_SCHEMES)}{hint}; {example}")
-    if scheme == "inproc":
-        return scheme, rest, None
-    host, sep, port = rest.rpartition(":")
-    host = host.strip("[]")          # an IPv6 literal, [::1]:8786
-    if not sep or not host or not port.isdigit() or not 0 < int(port) < 65536 \
-            or any(c in host for c in "/ ?#@"):
-        raise _bad_address(scheduler, f"not HOST:PORT after the scheme; {example}")
-    return scheme, host, int(port)
-
-
-async def _identify(address, timeout):
-    """The scheduler's answer to dask's ``identity`` request at `address`."""
-    from distributed.comm import connect
-    comm = await connect(address, timeout=timeout)
+    from linecontact.calc.cluster import ClusterError, check_scheduler_address as check
     try:
-        await comm.write({"op": "identity", "reply": True})
-        return await comm.read()
-    finally:
-        comm.abort()
-
-
-def _probe_scheduler(scheduler, timeout):
-    """StudyError (exit 2), within about `timeout` seconds, unless a dask scheduler
-    answers at `scheduler`: nothing listening, an unknown host, another server (an
-    HTTP port would otherwise hold the client for minutes) or a dask worker each get
-    their one line."""
-    import asyncio
-    import socket
-    from concurrent.futures import ThreadPoolExecutor, TimeoutError as FutureTimeout
-    scheme, host, port = check_scheduler_address(scheduler)
-    if scheme in ("tcp", "tls", "ws", "wss"):
-        try:
-            socket.create_connection((host, port), timeout=timeout).close()
-        except ConnectionRefusedError:
-            raise _bad_address(scheduler, f"nothing listens on port {port} of {host} "
-                                          f"(connection refused): start the scheduler "
-                                          f"(dask scheduler --host {host} --port {port}) "
-                                          f"or correct the address") from None
-        except socket.gaierror as exc:
-            raise _bad_address(scheduler, f"unknown host {host!r} ({exc.strerror})") \
-                from None
-        except (socket.timeout, OSError) as exc:
-            raise _bad_address(scheduler, f"no connection to {host}:{port} within "
-                                          f"{timeout:g} s ({exc}); is the host up "
-                                          f"and the port open?") from None
-    if scheme != "tcp":
-        return                      # the handshake needs the client's TLS/UCX setup
-    address = "tcp://" + scheduler.strip().rpartition("://")[2]   # [::1]:P kept as is
-    pool = ThreadPoolExecutor(1)    # its own event loop: safe under a running one
-    try:
-        reply = pool.submit(asyncio.run, asyncio.wait_for(
-            _identify(address, timeout), timeout)).result(timeout + 5)
-        why = ""
-    except (FutureTimeout, asyncio.TimeoutError, TimeoutError):
-        reply, why = None, f"no reply to dask's handshake within {timeout:g} s"
-    except Exception as exc:        # noqa: BLE001 - a non-dask peer breaks the
-        reply = None                # handshake in many ways; each is named
-        why = f"dask's handshake failed: {type(exc).__name__}: {exc}"
-    finally:
-        pool.shutdown(wait=False)
-    kind = reply.get("type") if isinstance(reply, dict) else None
-    if kind != "Scheduler":
-        what = (f"is a dask {kind}, not the scheduler" if kind else
-                f"does not answer as a dask scheduler ({why or 'an unknown reply'}: "
-                f"another kind of server, a web port?)")
-        raise _bad_address(scheduler, f"{host}:{port} {what}; give the address that "
-                                      f"'dask scheduler' prints as 'Scheduler at:'")
+        return check(scheduler, _WITHOUT)
+    except ClusterError as exc:
+        raise _study_error(exc) from None
 
 
 def _client(scheduler, workers, connect_timeout=None):
-    from dask.distributed import Client, LocalCluster
-    timeout = float(DEFAULT_CONNECT_TIMEOUT if connect_timeout is None
-                    else connect_timeout)
-    if scheduler is not None:
-        _probe_scheduler(scheduler, timeout)
-        try:
-            return Client(scheduler.strip(), timeout=f"{timeout}s"), None
-        except (OSError, TimeoutError) as exc:
-            raise _bad_address(scheduler, f"no dask client connection within "
-                                          f"{timeout:g} s ({exc})") from None
-    import dask
-    # dask's nannies set MALLOC_TRIM_THRESHOLD_=65536 in the workers' environment
-    # (config distributed.nanny.pre-spawn-environ). Setting it switches off glibc's
-    # dynamic mmap threshold, so every array above 128 KiB (a 512 x 512 grid is
-    # 2 MiB) is mmap'ed and unmapped again: 1.76 million against 64 000 page faults,
-    # 13 % more CPU, for one L/R of the paper study at 512 x 512
-    # (tools/benchmarks/results/paper_study.txt). None leaves glibc's default (a
-    # value the user exported is still passed on: dask prefers os.environ).
-    with dask.config.set({"distributed.nanny.pre-spawn-environ."
-                          "MALLOC_TRIM_THRESHOLD_": None}):
-        cluster = LocalCluster(n_workers=int(workers or DEFAULT_WORKERS),
-                               threads_per_worker=1, processes=True,
-                               host="127.0.0.1",          # nothing listens outside
-                               dashboard_address=None,    # no dashboard: not needed,
-                               # but the scheduler's HTTP server (health, metrics)
-                               # runs anyway: on loopback, a free port (not 8787)
-                               scheduler_kwargs={"dashboard_address": "127.0.0.1:0"})
-    return Client(cluster), cluster
+    """(client, local cluster or None) by :func:`linecontact.calc.cluster.start_client`
+    (the probe of a --scheduler within the connect timeout; the local cluster on
+    127.0.0.1 without dask's MALLOC_TRIM_THRESHOLD_), its refusals as StudyErrors."""
+    from linecontact.calc.cluster import ClusterError, start_client
+    try:
+        return start_client(scheduler, workers or DEFAULT_WORKERS,
+                            DEFAULT_CONNECT_TIMEOUT if connect_timeout is None
+                            else connect_timeout, without=_WITHOUT, quiet=False)
+    except ClusterError as exc:
+        raise _study_error(exc) from None
 
 
 def run_study(func, tasks, *, scheduler=None, workers=None, checkpoint=None,
@@ -587,42 +480,12 @@ def _lost_scheduler(scheduler, checkpoint, done, total):
                       f"{scheduler} ...'), then {again}")
 
 
-#: Loggers of the client side of distributed whose messages on a lost connection
-#: (tracebacks of the reconnection attempts) the runner replaces by its own line.
-_CLIENT_LOGGERS = ("distributed.client", "distributed.comm", "distributed.core",
-                   "distributed.batched", "distributed.utils")
-
-
-class _Quiet:
-    """Drop every record of the loggers `names` inside the block (a filter: distributed
-    resets their levels when a client starts). After a lost scheduler the client's
-    reconnection task logs its traceback when ``client.close()`` cancels it, which
-    the runner does inside the block."""
-
-    def __init__(self, names, active=True):
-        import logging
-        self.loggers = [logging.getLogger(n) for n in names] if active else []
-
-    @staticmethod
-    def filter(record):
-        return False
-
-    def __enter__(self):
-        for lg in self.loggers:
-            lg.addFilter(self.filter)
-        return self
-
-    def __exit__(self, exc_type, exc, tb):
-        for lg in self.loggers:
-            lg.removeFilter(self.filter)
-        return False
-
-
 def _run_on_dask(func, todo, scheduler, workers, checkpoint, done, bar,
                  connect_timeout=None, total=None):
     # with a remote scheduler every connection fault reaches the user as one line
     # of the runner's (StudyError): distributed's own logged tracebacks would bury it
-    with _Quiet(_CLIENT_LOGGERS, active=scheduler is not None):
+    from linecontact.calc.cluster import quiet_client_logs
+    with quiet_client_logs(active=scheduler is not None):
         _run_on_client(func, todo, scheduler, workers, checkpoint, done, bar,
                        connect_timeout, total)
 

@@ -52,14 +52,14 @@ parameters = (
               "(aligned), free between raceways", group, positive=False, words=("free",)),
 )
 
-NAMES = tuple(p.name for p in parameters)
-
 NOTE = ("profiled roller: coupled slices (Hertz strips across, exact half-space "
         "coupling along the axis; linecontact.roller), 50 slices graded towards the "
-        "contact's ends; M: moment about the "
-        "roller centre; p max: peak pressure (not printed where the contact reaches a "
-        "roller end: singular there on a half-space, 'edge'); ISO 16281 slicing: "
-        "uncoupled slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
+        "contact's ends; d: the depth at the roller's centre x = 0 (negative "
+        "where a tilt lifts the centre off; the row's note then gives the approach "
+        "from first contact); M: moment about the roller centre; p max: peak pressure "
+        "(not printed where the contact reaches a roller end: singular there on a "
+        "half-space; the row's note names the end); ISO 16281 slicing: uncoupled "
+        "slices of the standard, steel only. Accuracy: docs/profiled_rollers.md.")
 
 notes = {"profiled_roller": NOTE}
 

@@ -364,6 +364,12 @@ def _measured_as(model):
                            profile=c.profile)
 
 
+#: Why a row has no section field: it is drawn from the slices of one contact.
+SECTION_UNSOLVED = ("--stress-field: no section field for this row: the field is that "
+                    "of one contact solved by slices (a profiled or tilted roller, or "
+                    "--model profiled-roller on a flat or a second body)")
+
+
 def _is_slices(sol):
     """A slice solution of one contact (linecontact.roller.RollerSolution)."""
     return sol is not None and hasattr(sol, "half_width") and hasattr(sol, "q") \
@@ -380,7 +386,10 @@ def blocks(state, results):
     json_rows = []
     for i, sol in enumerate(sols):
         if not state.rows[i] or not _is_slices(sol):
-            json_rows.append(None)
+            # --stress-field asked of a row that has no slices (a law, or a roller
+            # between raceways): say so rather than leave the field out without a word
+            asked = state.rows[i] and np.isfinite(state.section[i])
+            json_rows.append({"section": {"note": SECTION_UNSOLVED}} if asked else None)
             continue
         try:
             s = roller_stresses(sol, float(state.mu[i]), float(state.nu[i]))

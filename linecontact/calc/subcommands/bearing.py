@@ -38,8 +38,11 @@ help = "load distribution, stiffness and rating life of a radial roller bearing"
 description = ("Load distribution over the rollers, ring displacement, radial stiffness, "
                "load zone, peak pressure, subsurface stresses and rating lives (ISO 281, "
                "ISO 16281) of a radial cylindrical or needle roller bearing under a "
-               "radial load (and a tilting moment or a misalignment), with the "
-               "case-hardening check of the most loaded roller. A value is a number "
+               "radial load (and a tilting moment or a misalignment); given their "
+               "inputs, the EHL film, modified lives L_nm and L_nmr, static safety, "
+               "operating clearance after fits and warming, flange contacts under an "
+               "axial load, a duty cycle's life and the case-hardening check of the "
+               "most loaded roller. A value is a number "
                "with one unit name ('70mm', '10kN'); bare numbers are SI.")
 epilog = ("Sweeps: --NAME START:STOP:N (any numeric option) gives N bearings, spaced "
           "geometrically (--linear: evenly); two sweeps give the grid. Batch: FILE.csv "
@@ -88,8 +91,9 @@ parameters = (
     Parameter("model", "text", "contact law of each contact: universal (default for a "
               "straight roller), iso16281 (the ISO spring), profiled-roller (default "
               "for a profile), iso16281-slicing, any key of linecontact calc", _MODEL),
-    Parameter("n_slices", "count", "slices of a slice model (default: the "
-              "bearing's, linecontact.bearing.RadialRollerBearing)", _MODEL,
+    Parameter("n_slices", "count", "slices of a slice model (default: "
+              "50 for profiled-roller, 30 for iso16281-slicing; "
+              "linecontact.roller.solvers.DEFAULT_SLICES)", _MODEL,
               bounds="bearing.SLICE_COUNT"),
     Parameter("rating", "force", "basic dynamic load rating C_r (default: ISO 281 "
               "from the geometry)", _MODEL),
@@ -217,6 +221,11 @@ optional = ("case_ratio", "case_ratio_depth", "min_case_depth", "operating_clear
             "spectrum_life_modified", "spectrum_life_modified_reference",
             "spectrum_hours_iso281")
 
+#: The output each optional note explains: left out of the text when no row has it.
+note_fields = {"film": "film_minimum_inner", "modified": "life_modified",
+               "flanges": "max_flange_force", "spectrum": "spectrum_life_iso281",
+               "case": "case_ratio"}
+
 notes = {
     "clearance": "P_d is the radial internal clearance (ISO 5753-1), Harris' diametral "
                  "clearance d_o - d_i - 2D; roller j's approach is delta_r cos psi_j - "
@@ -314,8 +323,27 @@ def resolve(values, present, fail):
         if isinstance(read[path], str):
             fail(np.arange(n) == i, "spectrum", "a CSV of load cases (time_share or "
                  "revolution_share, radial_load, ...)", read[path])
-        else:
-            spectra[i] = read[path]
+            continue
+        cases, shares = read[path]
+        from ...bearing.spectrum import SHARE_TOLERANCE
+
+        column = "time_share" if shares == "time" else "revolution_share"
+        total = sum(c["share"] for c in cases)
+        if abs(total - 1.0) > SHARE_TOLERANCE:   # the library's rule, in file terms
+            fail(np.arange(n) == i, "spectrum", f"a {column} column summing to 1 "
+                 "(fractions, not percent)", f"its {column} column sums to {total:.6g}")
+            continue
+        # shares of time count revolutions at each case's speed: the file's speed
+        # column or the bearing's speed; said here in the user's words (the library
+        # would name its keyword shares='revolutions')
+        slow = [k + 1 for k, c in enumerate(cases) if c["speed"] is None]
+        if shares == "time" and slow and not P["speed"][i]:
+            fail(np.arange(n) == i, "spectrum", f"a speed for every case: a speed "
+                 f"column in the file, or {fail.label('speed')} for the bearing; or "
+                 "revolution_share instead of time_share", f"time_share needs each case's speed to count its "
+                 f"revolutions; rows {slow} have none")
+            continue
+        spectra[i] = read[path]
     return State(np.ones(n, bool), estar=estar, hardness=hardness, spectra=spectra)
 
 
@@ -511,7 +539,8 @@ def row(obj, state, i):
                          + ", outer ".join(f"{checks[k].max_ratio:.4g}"
                                            if checks[k] is not None else "-"
                                            for k in ("inner", "outer")) + ")")
-        notes += [f"case check, {t}" for t in texts]
+        notes += [t if t.startswith("case check") else f"case check, {t}"
+                  for t in texts]
     out["model_used"] = s.model
     out["notes"] = notes
     out["note"] = "; ".join(notes)
@@ -547,16 +576,23 @@ def describe(obj, si):
     b, s = obj.bearing, obj.solution
     sc = scales(obj)
     M = format_numbers([s.moment], 6, sc["moment"])[0]
+    # P_d as given; the operating clearance after fits and warming beside it (the load
+    # distribution's), never in its place
+    given = getattr(b, "internal_clearance", b.clearance)
+    factor, unit = (1.0, "m") if si else (1e6, "um")
+    pd = f"{given * factor:.6g} {unit}"
+    if given != b.clearance:
+        pd += f" (operating {b.clearance * factor:.6g} {unit})"
     if si:
         th = format_numbers([s.tilt], 6, sc["tilt"])[0]
         return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter:.6g} m, "
                 f"D = {b.roller_diameter:.6g} m, L = {b.length:.6g} m, P_d = "
-                f"{b.clearance:.6g} m, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
+                f"{pd}, E* = {b.estar:.6g} Pa, profile {b.profile.label}, "
                 f"F_r = {s.radial_load:.6g} N, M = {M} N m, theta = {th} rad")
     th = format_numbers([s.tilt * 1e3], 6, sc["tilt"] * 1e3)[0]
     return (f"radial roller bearing: Z = {b.rollers}, d_m = {b.pitch_diameter * 1e3:.6g} "
             f"mm, D = {b.roller_diameter * 1e3:.6g} mm, L = {b.length * 1e3:.6g} mm, "
-            f"P_d = {b.clearance * 1e6:.6g} um, E* = {b.estar / 1e9:.5g} GPa, profile "
+            f"P_d = {pd}, E* = {b.estar / 1e9:.5g} GPa, profile "
             f"{b.profile.label}, F_r = {s.radial_load:.6g} N, M = {M} N m, "
             f"theta = {th} mrad")
 

@@ -1,6 +1,6 @@
 """The commands whose CSV batches (and DataFrames) keep the calculator's input rules:
 ``linecontact calc`` and every subcommand (``linecontact bearing``). The input-rule
-tests (tests/test_calc_inputs.py, tests/test_cli.py, tests/test_frame.py) are
+tests (tests/test_command_input_contracts.py, tests/test_cli.py, tests/test_frame.py) are
 parametrised over :data:`DOORS`: one valid case of each, the load column of each (the
 column the tests vary), and how to read the load back from a result row.
 """

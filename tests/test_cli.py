@@ -366,7 +366,7 @@ def test_one_case_imports_pint_only_for_unusual_units_and_never_pandas(results):
     assert "pint" in dyne and "pandas" not in dyne
     # nor (in the built-in units; pint's own import of a unit outside them loads it)
     # scipy: a one-case call, profiled or not, solves with the C engine where its
-    # extension is built (it loads in 1-3 ms; test_roller_engine.py checks
+    # extension is built (it loads in 1-3 ms; test_slice_kernels_c_equal_numpy.py checks
     # that a default solve takes it), else with numpy
     profiled = _imported(_ok(results, "profiled_importtime").stderr)
     assert "linecontact" in profiled

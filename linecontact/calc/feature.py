@@ -130,7 +130,7 @@ Adding a subcommand is one module plus one line
     batch with every rule of ``calc`` (:func:`linecontact.calc.batch.run_batch`:
     docs/batch.md, docs/inputs.md) and the DataFrame
     (:func:`linecontact.calc.frame.command_frame`) pick it up; its batch is held to
-    the calculator's input-rule tests (tests/test_calc_inputs.py, parametrised over
+    the calculator's input-rule tests (tests/test_command_input_contracts.py, parametrised over
     the commands).
 """
 

@@ -1,6 +1,6 @@
 /*
  * The weighted corner sums of Love's rectangles (the 3D correction of the subsurface
- * stresses, linecontact/stresses.py: _love_weighted, the numpy reference) in C99, one
+ * stresses, linecontact/stresses/love.py: _love_weighted, the numpy reference) in C99, one
  * fused loop per point with no temporaries: at each point p (offset py along the
  * slice, depth z > 0) and for the corners c (offsets X_c along the roller, cy_c
  * across, weights w_c), Y = py - cy_c, rho = sqrt(Y^2 + X^2 + z^2) and

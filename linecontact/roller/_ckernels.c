@@ -11,7 +11,7 @@
  * scaled system, the force and moment sums, the step, its mask and the damped
  * update), which numpy's many small array operations made cost more than the loops
  * above. Results agree with numpy's to rounding (the order of sums differs;
- * tests/test_roller_engine.py).
+ * tests/test_slice_kernels_c_equal_numpy.py).
  *
  * IEEE double arithmetic: built without -ffast-math and with -ffp-contract=off (no
  * fused multiply-adds), so that every operation rounds as numpy's does.
@@ -1003,7 +1003,7 @@ static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT, "_ckernels",
     "The compiled engine: the coupled-slice kernels and linearisation (engine 'c'; "
     "linecontact/roller/_cengine.py wraps them) and the stresses' corner sums "
-    "(love_sums, corners; linecontact/stresses.py wraps them), in C.", -1, methods};
+    "(love_sums, corners; linecontact/stresses/love.py wraps them), in C.", -1, methods};
 
 /* the SHA-256 of both sources as setup.py read them (linecontact/_engine.py compares it
  * with the files beside the built module: a stale build is not used) */

@@ -340,8 +340,9 @@ def resolve(values, present, fail):
         if shares == "time" and slow and not P["speed"][i]:
             fail(np.arange(n) == i, "spectrum", f"a speed for every case: a speed "
                  f"column in the file, or {fail.label('speed')} for the bearing; or "
-                 "revolution_share instead of time_share", f"time_share needs each case's speed to count its "
-                 f"revolutions; rows {slow} have none")
+                 "revolution_share instead of time_share",
+                 f"time_share needs each case's speed to count its revolutions; rows "
+                 f"{slow} have none")
             continue
         spectra[i] = read[path]
     return State(np.ones(n, bool), estar=estar, hardness=hardness, spectra=spectra)

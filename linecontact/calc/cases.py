@@ -237,6 +237,16 @@ def parse_columns(parameters, cells, n, label=option_name):
     return values, present, raw, errors
 
 
+def refuse_estar_with_moduli(present, fail):
+    """Refuse the rows that give E* and any of the moduli or Poisson's ratios (E* is
+    either given or computed by Eq. 3, never both): the rule of every command that
+    takes materials (``calc``, ``bearing``)."""
+    for name in ("modulus", "poisson", "modulus2", "poisson2"):
+        fail(present["estar"] & present[name], name,
+             f"either {fail.label('estar')} or the moduli and Poisson's ratios, not both",
+             f"conflicts with {fail.label('estar')}")
+
+
 def _resolve(cases, errors, fail):
     """The rules: the core's, each feature's resolve, then E* and the contact radius."""
     v, P, n = cases.values, cases.present, cases.n
@@ -251,10 +261,7 @@ def _resolve(cases, errors, fail):
     fail(~P["length"], "length", "a length > 0 (e.g. 10mm)", "missing")
 
     # materials: E* directly, or Eq. 3 from the moduli
-    for name in ("modulus", "poisson", "modulus2", "poisson2"):
-        fail(P["estar"] & P[name], name,
-             f"either {label('estar')} or the moduli and Poisson's ratios, not both",
-             f"conflicts with {label('estar')}")
+    refuse_estar_with_moduli(P, fail)
     pair = f"{label('modulus2')} and {label('poisson2')} together, or neither (rigid roller)"
     fail(P["modulus2"] & ~P["poisson2"], "poisson2", pair,
          f"missing (needed with {label('modulus2')})")

@@ -28,6 +28,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..cases import BY_NAME as _CALC
+from ..cases import refuse_estar_with_moduli
 from ..feature import Block, Field, Parameter, State
 from ..features.stresses import HARDNESS, hardness_of
 
@@ -284,10 +285,7 @@ def resolve(values, present, fail):
     n = len(P["rollers"])
     for nm in _REQUIRED:
         fail(~P[nm], nm, f"a value (e.g. {_EXAMPLES[nm]})", "missing")
-    for nm in ("modulus", "poisson", "modulus2", "poisson2"):
-        fail(P["estar"] & P[nm], nm,
-             f"either {label('estar')} or the moduli and Poisson's ratios, not both",
-             f"conflicts with {label('estar')}")
+    refuse_estar_with_moduli(P, fail)
     fail(~P["modulus"] & (P["modulus2"] | P["poisson2"]), "modulus",
          f"the rings' {label('modulus')} and {label('poisson')} with the rollers'",
          f"missing (needed with {label('modulus2')})")

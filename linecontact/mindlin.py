@@ -80,7 +80,7 @@ from .checks import check_interval, check_positive
 from .errors import OutOfRangeError, UnknownNameError
 from .hertz import _KE, hertz_contact, hertz_eccentricity
 from .tangential import FRICTION
-from .tangential.laws import _check_beyond
+from .tangential.laws import _amplitude, _check_beyond
 from .tangential.moduli import _ratio
 
 __all__ = [
@@ -768,11 +768,6 @@ class EllipticalTangentialContact:
         return out(W + 4 * self.gross_slip_force * np.maximum(u0 - ustar, 0.0))
 
     def _amplitude(self, amplitude, beyond="raise"):
-        u0 = check_positive("amplitude", amplitude, "m")
-        _check_beyond(beyond)
-        if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
-            raise OutOfRangeError("amplitude", float(np.max(u0)),
-                                  f"(0, {self.gross_slip_shift:.6g}] m", unit="m",
-                                  hint="beyond gross slip the contact slides; "
-                                       "beyond='saturate' adds the sliding part")
-        return u0
+        return _amplitude(amplitude, beyond, self.gross_slip_shift,
+                          "beyond gross slip the contact slides; beyond='saturate' "
+                          "adds the sliding part")

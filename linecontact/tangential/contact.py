@@ -23,7 +23,7 @@ from ..checks import check_interval, check_positive
 from ..errors import OutOfRangeError, UnknownNameError
 from .cylinder_table import (_DIRECTIONS, cylinder_stiffness_ratios,
                              cylinder_tangential_table)
-from .laws import _METHODS, _check_beyond, _friction, _ft
+from .laws import _METHODS, _amplitude, _check_beyond, _friction, _ft
 from .moduli import _ratio
 
 __all__ = ["TangentialContact"]
@@ -465,14 +465,9 @@ class TangentialContact:
 
     # -- cyclic loading (Masing) ----------------------------------------------------
     def _amplitude(self, amplitude, beyond):
-        u0 = check_positive("amplitude", amplitude, "m")
-        _check_beyond(beyond)
-        if beyond == "raise" and np.any(u0 > self.gross_slip_shift * (1 + 1e-12)):
-            raise OutOfRangeError("amplitude", float(np.max(u0)),
-                                  f"(0, {self.gross_slip_shift:.6g}] m", unit="m",
-                                  hint="beyond gross slip; beyond='saturate' adds the "
-                                       "sliding (Coulomb) part of the loop")
-        return u0
+        return _amplitude(amplitude, beyond, self.gross_slip_shift,
+                          "beyond gross slip; beyond='saturate' adds the sliding "
+                          "(Coulomb) part of the loop")
 
     def unloading(self, shift, amplitude, *, beyond="raise"):
         r"""Masing unloading branch from (u0, F0): F_t = F0 - 2 f((u0 - u)/2) [N].

@@ -330,6 +330,17 @@ def _check_beyond(beyond):
         raise UnknownNameError("beyond", beyond, ("raise", "saturate"))
 
 
+def _amplitude(amplitude, beyond, gross_slip_shift, hint):
+    """A fretting amplitude u0 > 0 [m], checked against the gross-slip shift when
+    ``beyond="raise"`` (`hint` ends the refusal: what beyond gross slip means there)."""
+    u0 = check_positive("amplitude", amplitude, "m")
+    _check_beyond(beyond)
+    if beyond == "raise" and np.any(u0 > gross_slip_shift * (1 + 1e-12)):
+        raise OutOfRangeError("amplitude", float(np.max(u0)),
+                              f"(0, {gross_slip_shift:.6g}] m", unit="m", hint=hint)
+    return u0
+
+
 def _ft(model, d, shift, mu, r, beyond):
     """F_t(u) = mu [F(d) - F(d - r|u|/mu)] sign(u) with the gross-slip policy."""
     _check_beyond(beyond)

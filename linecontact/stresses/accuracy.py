@@ -96,6 +96,28 @@ def reaches_end(solution):
     return bool(min(start - lo, hi - end) < 0.5 * h)
 
 
+def _relief_outside(roller, cov):
+    """What of an end relief lies outside the measured range (list of phrases): a
+    dub-off (no corner radius), the corner radius over the contact's effective radius,
+    the relief length over L (the table's covered_end_relief_* fields; none for a
+    table without them or another profile)."""
+    prof = roller.profile
+    if getattr(prof, "key", None) != "end-relief" or cov.get("relief_corner") is None:
+        return []
+    if prof.corner_radius is None:
+        return ["an end relief without a corner radius (a dub-off; measured: corner "
+                "radii)"]
+    out = []
+    for name, v, (lo, hi) in (
+            ("corner radius over the contact's effective radius r/R",
+             prof.corner_radius / roller.radius, cov["relief_corner"]),
+            ("relief length over the roller length l/L",
+             prof.relief_length / roller.length, cov["relief_fraction"])):
+        if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5):
+            out.append(f"{name} = {v:.3g} (measured {lo:.3g}-{hi:.3g})")
+    return out
+
+
 def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
     """The measured error of the roller stresses for this solution and its note.
 
@@ -125,6 +147,7 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:
             outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
+        outside += _relief_outside(roller, cov)
     method = getattr(solution, "method", "coupled slices")
     if method != "coupled slices":
         # the study solved every case by ProfiledRoller; another slice model's loads
@@ -140,7 +163,9 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         outside.append(f"|tilt| = {th:.3g} rad (measured {lo:.3g}-{hi:.3g} rad)")
     edge = reaches_end(solution)
     key = _ERROR_KEYS[(bool(three_d), friction > 0, edge)]
-    e = cov["errors"].get(key)
+    # a profile measured apart (the end relief) has its own errors
+    pkey = getattr(getattr(roller, "profile", None), "key", None)
+    e = cov["errors"].get(f"{key}.{pkey}", cov["errors"].get(key))
     state = ("contact at (or within half a slice of) a roller end" if edge
              else "contact off the ends") + (", with traction" if friction > 0 else "")
     if e is None:

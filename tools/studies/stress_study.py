@@ -34,7 +34,13 @@ Cases: the roller study's rollers and profiles (tools/studies/roller_study.py; D
 the ISO profile; line loads 100, 800 and 2000 N/mm; tilts 0 and 2 mrad: 36 cases; and
 every WIDE_EVERY-th case of the roller study's wide set (issue 32: L/D 0.5-12,
 q/(E* D) 3e-6-3e-3, tilts 0-3 mrad; each L/D, load, profile and tilt at least once):
-27 cases. ``--quick``: 6 dense and 4 wide. Friction 0.4 is not in the study: there
+27 cases; and the relief set (issue 32: straight rollers with a corner-radius end
+relief, drawn as tools/studies/population_study.py draws the rollers of cylindrical
+and needle roller bearings and cam followers at 2-50 % of their ratings, seed 7,
+RELIEF_SET): 36 cases. The end relief's stated errors are apart (``error_*.end-relief``:
+the pressure's local peak at the junction of the straight part and the corner
+radius is resolved to about 2 % by the default slices). ``--quick``: 6 dense, 4 wide
+and 3 relief. Friction 0.4 is not in the study: there
 the largest shear sits at the surface, and the reference's near-surface traction field
 (planes z/b = 0.01, 0.02 extrapolated to z = 0, SURFACE_OVER_B) gave a surface von Mises
 7.5 % below the exact plane-strain value on a long light contact (SURFACE_FRICTION).
@@ -52,8 +58,8 @@ from linecontact.roller.slices import DEFAULT_N_SLICES
 
 from ..bem.roller import grid_convergence, solve_roller_force
 from ..bem.stress import MEASURES, StressField
-from .roller_study import (DIAMETER, ESTAR, ROLLERS, add_grid_arguments, task_profile,
-                           wide_tasks)
+from .roller_study import (DIAMETER, ESTAR, RELIEF, ROLLERS, add_grid_arguments,
+                           task_profile, wide_tasks)
 from .runner import add_runner_arguments, run_study_from_args, table_meta, wall_time_line
 
 REPO = Path(__file__).resolve().parents[2]
@@ -97,12 +103,43 @@ STUDY_WALL = ("352 s for 48 cases + about 360 s for 12 more in an earlier, inter
 SURFACE_OVER_B = (0.01, 0.02)
 #: every k-th case of the roller study's wide set (tools.studies.roller_study.wide_tasks)
 WIDE_EVERY = 6
+#: the relief set: end-relief rollers drawn as the population check draws them
+#: (tools.studies.population_study.population_tasks with the profile fixed): per
+#: family (cylindrical, needle, cam follower) and the draw's seed, other than the
+#: population check's (32), which then tests the stated errors off these cases
+RELIEF_SET = dict(per_family=12, seed=7)
+#: the profile whose stress errors are stated apart (error_*.end-relief fields): at the
+#: junction of the straight part and its corner radius the pressure has a local peak
+#: that 50 slices resolve to about 2 % (the smooth profiles: 0.3 %)
+APART = "end-relief"
 
 
-def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False, wide=True):
+def relief_tasks(n_x=128, n_y=32, tol=1e-7, per_family=RELIEF_SET["per_family"],
+                 seed=RELIEF_SET["seed"]):
+    """The relief set (case_set 2): straight rollers with a corner-radius end relief of
+    cylindrical and needle roller bearings and cam followers, drawn as the population
+    check draws its rollers (relief 0.1-0.2 L, corner radius 20-100 mm, 2-50 % of the
+    rating, tilts to 3 mrad; tools.studies.population_study), on the contact's
+    effective radius."""
+    from .population_study import population_tasks
+
+    out = []
+    for t in population_tasks(per_family, seed, profile="end-relief"):
+        kw = t["profile_kw"]
+        out.append(dict(key=f"R{seed}-{t['key']}", roller=t["family"],
+                        profile=PROFILES[5], radius=t["radius"], length=t["length"],
+                        estar=t["estar"], force=t["force"], tilt=t["tilt"],
+                        relief=dict(relief_fraction=kw["relief_length"] / t["length"],
+                                    corner_radius=kw["corner_radius"]),
+                        n_x=n_x, n_y=n_y, tol=tol, case_set=2))
+    return out
+
+
+def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False, wide=True, relief=True):
     """The cases (picklable dicts with a unique 'key'): the dense set and, with `wide`,
     every WIDE_EVERY-th case of the roller study's wide set (L/D 0.5-12, q/(E* D)
-    1e-5-3e-3, tilts 0-3 mrad; each L/D and load at least once)."""
+    1e-5-3e-3, tilts 0-3 mrad; each L/D and load at least once), and with `relief`
+    the relief set (:func:`relief_tasks`; ``quick``: 1 per family)."""
     combos = [("A", PROFILES[k]) for k in range(1, 6)] + [("B", "iso16281")]
     loads = LINE_LOADS[::2] if quick else LINE_LOADS
     tilts = TILTS[::2] if quick else TILTS
@@ -120,6 +157,9 @@ def study_tasks(n_x=128, n_y=32, tol=1e-7, quick=False, wide=True):
                                   n_y=n_y, tol=tol, case_set=0))
     if wide:
         tasks += wide_tasks(n_x, n_y, tol, quick)[::WIDE_EVERY]
+    if relief:
+        tasks += relief_tasks(n_x, n_y, tol,
+                              **(dict(per_family=1) if quick else {}))
     return tasks
 
 
@@ -262,13 +302,16 @@ def add_arguments(parser):
                         "cases and 7 of the wide set")
     parser.add_argument("--no-wide", action="store_true",
                         help="the dense set only (L = 14, 30 mm)")
+    parser.add_argument("--no-relief", action="store_true",
+                        help="without the relief set (drawn end-relief rollers)")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for stress_accuracy.csv (default tables/)")
     add_runner_arguments(parser)
 
 
 def _units():
-    u = {"roller_length": "m", "profile": "-", "force": "N", "line_load": "N/m",
+    u = {"roller_length": "m", "radius": "m", "relief_fraction": "-",
+         "corner_radius": "m", "profile": "-", "force": "N", "line_load": "N/m",
          "tilt": "rad", "bem_edge": "-", "rt_edge": "-", "bem_half_width": "m",
          "bem_p_max": "Pa", "bem_nx": "-", "bem_ny": "-"}
     for m in MEASURES:
@@ -291,7 +334,11 @@ def tabulate(tasks, results):
     units = _units()
     col = {k: [] for k in units}
     for t, r in zip(tasks, results):
-        row = dict(roller_length=t["length"], profile=CODES[t["profile"]],
+        rel = t.get("relief", RELIEF) if t["profile"] == PROFILES[5] else None
+        row = dict(roller_length=t["length"], radius=t["radius"],
+                   relief_fraction=rel["relief_fraction"] if rel else 0.0,
+                   corner_radius=rel["corner_radius"] if rel else 0.0,
+                   profile=CODES[t["profile"]],
                    force=t["force"], line_load=t["force"] / t["length"], tilt=t["tilt"],
                    case_set=t.get("case_set", 0),
                    crown_radius=t.get("crown_radius", 0.5))
@@ -301,7 +348,11 @@ def tabulate(tasks, results):
     return {k: np.array(v) for k, v in col.items()}
 
 
-def summarise(col):
+def summarise(col, rows=None):
+    """The largest bounds (off the ends, edge loaded; frictionless, with friction, the
+    strips alone) over the cases where `rows` (a mask; default every case)."""
+    if rows is not None:
+        col = {k: v[rows] for k, v in col.items()}
     # edge loaded: on either BEM grid, or by the runtime's own flag (its contact within
     # half a slice of an end: what the runtime can know and states per result)
     edge = (col["bem_edge"] > 0) | (col["rt_edge"] > 0)
@@ -327,15 +378,16 @@ def summarise(col):
         s[f"fr_off_{m}"] = float(ef[~edge].max()) if (~edge).any() else float("nan")
         s[f"fr_edge_{m}"] = float(ef[edge].max()) if edge.any() else float("nan")
     ratio = col["rt_stress_cpu"] / col["rt_solve_cpu"]
-    s["time_ratio_median"] = float(np.median(ratio))
-    s["time_ratio_max"] = float(ratio.max())
+    s["time_ratio_median"] = float(np.median(ratio)) if ratio.size else float("nan")
+    s["time_ratio_max"] = float(ratio.max()) if ratio.size else float("nan")
     return s
 
 
 def run(args):
     from linecontact.tables import write_table
 
-    tasks = study_tasks(args.n_x, args.n_y, args.tol, args.quick, wide=not args.no_wide)
+    tasks = study_tasks(args.n_x, args.n_y, args.tol, args.quick, wide=not args.no_wide,
+                        relief=not args.no_relief)
     t0 = time.perf_counter()
     results = run_study_from_args(run_case, tasks, args, desc="stress study")
     wall = time.perf_counter() - t0
@@ -343,16 +395,39 @@ def run(args):
     results0 = results
     results = [{k: v for k, v in r.items() if k != "resumed"} for r in results]
     col = tabulate(tasks, results)
-    s = summarise(col)
+    # the error_* fields: over the dense and wide sets (every profile, as before the
+    # relief set); the error_*.end-relief fields: over every end-relief case, the
+    # relief set's included, and never below the former
+    s = summarise(col, rows=col["case_set"] != 2)
+    relief = col["profile"] == CODES[PROFILES[5]]
+    sa = summarise(col, rows=relief)
     units = ", ".join(f"{k} [{u}]" for k, u in _units().items())
-    D = DIAMETER
+    D = 2 * col["radius"]          # the contact's effective radius, doubled
     qn = col["line_load"] / (ESTAR * D)
     lo, hi = float(qn.min()), float(qn.max())
-    ld = [float(col["roller_length"].min() / D), float(col["roller_length"].max() / D)]
+    ld = [float(np.min(col["roller_length"] / D)), float(np.max(col["roller_length"] / D))]
     tmax = float(np.max(np.abs(col["tilt"])))
+    rc = col["corner_radius"][relief] / col["radius"][relief]
+    rf = col["relief_fraction"][relief]
 
-    def errs(prefix):
+    def errs(prefix, s=s):
         return ", ".join(f"{m} {s[f'{prefix}_{m}']:.3g}" for m in MEASURES)
+
+    def stated(prefix):
+        """(the all-profile field, the end-relief field) of one class, MARGIN times
+        the largest bound"""
+        whole = {m: MARGIN * s[f"{prefix}_{m}"] for m in MEASURES}
+        apart = {m: max(whole[m], MARGIN * sa[f"{prefix}_{m}"]) for m in MEASURES}
+        return tuple(", ".join(f"{m} {v[m]:.3g}" for m in MEASURES)
+                     for v in (whole, apart))
+
+    fields = {}
+    for key, prefix in (("error_3d_off_ends", "off"), ("error_3d_edge_loaded", "edge"),
+                        ("error_3d_friction_off_ends", "fr_off"),
+                        ("error_3d_friction_edge_loaded", "fr_edge"),
+                        ("slice_error_off_ends", "strip_off"),
+                        ("slice_error_edge_loaded", "strip_edge")):
+        fields[key], fields[f"{key}.{APART}"] = stated(prefix)
 
     meta = table_meta(
         args.command_line,
@@ -378,7 +453,7 @@ def run(args):
                   "the runtime's comes within half a slice of one (linecontact.stresses."
                   "reaches_end); either counts as edge loaded in the header's errors; rt_*_cpu, rt_*_seconds: CPU and "
                   "wall time of the runtime contact solve and of its stresses",
-        cases=f"D = {D * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa, nu = {POISSON:g}, "
+        cases=f"D = {DIAMETER * 1e3:g} mm, E* = {ESTAR / 1e9:g} GPa, nu = {POISSON:g}, "
               f"friction 0, {', '.join(f'{mu:g}' for mu in FRICTIONS)}; dense set: L = 14 mm: circular crown (Rc 500 mm), iso16281, lundberg and "
               "johns-gohar (design 800 N/mm), straight with end relief (0.15 L, corner "
               "radius 50 mm); L = 30 mm: iso16281; line loads "
@@ -387,6 +462,12 @@ def run(args):
               + (f"; wide set: every {WIDE_EVERY}th case of the roller study's wide "
                  "set (tools/studies/roller_study.py, wide_tasks: L/D 0.5-12, q/(E* D) "
                  "1e-5-3e-3, profiles 1-5, tilts 0, 1, 3 mrad)" if not args.no_wide else "")
+              + (f"; relief set: {int((col['case_set'] == 2).sum())} straight rollers "
+                 "with a corner-radius end relief drawn as the population check draws "
+                 f"them (seed {RELIEF_SET['seed']}; relief_tasks: cylindrical, needle "
+                 "and cam-follower rollers at 2-50 % of their ratings, relief 0.1-0.2 L, "
+                 "corner radius 20-100 mm, tilts 0-3 mrad; L/D and the load on the "
+                 "contact's effective radius)" if not args.no_relief else "")
               + (" (quick subset)" if args.quick else ""),
         grid=f"BEM: adapted window (contact box x 1.25, |y| <= 1.25 b), {args.n_x} x "
              f"{args.n_y} and {2 * args.n_x} x {2 * args.n_y} cells (the finer the "
@@ -405,25 +486,27 @@ def run(args):
                       f"largest depth difference over b off the ends: {errs('dz_off')}; "
                       f"edge loaded ({s['n_edge']} cases): {errs('edge')}; the strips "
                       f"alone: off the ends {errs('strip_off')}, edge loaded "
-                      f"{errs('strip_edge')}",
+                      f"{errs('strip_edge')} (the dense and wide sets, every profile); "
+                      f"the end-relief profile over its {int(relief.sum())} cases (the "
+                      f"relief set's included; the error_*.{APART} fields, never below the "
+                      f"all-profile ones): off the ends ({sa['n_off']} cases) "
+                      f"{errs('off', sa)}, with friction {errs('fr_off', sa)}, edge loaded "
+                      f"({sa['n_edge']} cases) {errs('edge', sa)}",
         timing=f"runtime stresses (3D-corrected) over the runtime contact solve, CPU: "
                f"median {s['time_ratio_median']:.3g}, largest {s['time_ratio_max']:.3g}",
         covered=f"L/D {ld[0]:g}-{ld[-1]:g}; mean line load q/(E* D) {lo:.2g}-{hi:.2g}; "
                 f"tilts 0-{tmax * 1e3:g} mrad; profiles {', '.join(PROFILE_KEYS)}; "
-                f"friction 0-{max(FRICTIONS):g}",
+                f"friction 0-{max(FRICTIONS):g}; end relief: corner radius over the "
+                f"contact's effective radius {rc.min():.3g}-{rc.max():.3g}, relief length "
+                f"{rf.min():.3g}-{rf.max():.3g} L",
         covered_l_over_d=f"{ld[0]:.6g}, {ld[-1]:.6g}",
         covered_line_load_over_estar_d=f"{lo:.6g}, {hi:.6g}",
         covered_tilt_rad=f"0, {tmax:.6g}",
         covered_friction=f"0, {max(FRICTIONS):g}",
         covered_profiles=", ".join(PROFILE_KEYS),
-        error_3d_off_ends=", ".join(f"{m} {MARGIN * s[f'off_{m}']:.3g}" for m in MEASURES),
-        error_3d_edge_loaded=", ".join(f"{m} {MARGIN * s[f'edge_{m}']:.3g}" for m in MEASURES),
-        error_3d_friction_off_ends=", ".join(f"{m} {MARGIN * s[f'fr_off_{m}']:.3g}" for m in MEASURES),
-        error_3d_friction_edge_loaded=", ".join(f"{m} {MARGIN * s[f'fr_edge_{m}']:.3g}"
-                                                for m in MEASURES),
-        slice_error_off_ends=", ".join(f"{m} {MARGIN * s[f'strip_off_{m}']:.3g}" for m in MEASURES),
-        slice_error_edge_loaded=", ".join(f"{m} {MARGIN * s[f'strip_edge_{m}']:.3g}"
-                                          for m in MEASURES),
+        covered_end_relief_corner_radius_over_radius=f"{rc.min():.6g}, {rc.max():.6g}",
+        covered_end_relief_fraction=f"{rf.min():.6g}, {rf.max():.6g}",
+        **fields,
         wall_time=wall_line + (f"; the study's measured wall time: {STUDY_WALL}"
                                if any(r.get("resumed") for r in results0) else ""),
     )

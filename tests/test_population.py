@@ -92,7 +92,7 @@ def test_the_population_shares_do_not_regress():
     c = t.columns
     m = re.match(r"(\d+) of (\d+) outputs .*?; (\d+) of those", t.meta["result"])
     stated0, n0, hold0 = (int(v) for v in m.groups())
-    tasks = ps.population_tasks(_per_family(c), 32)
+    tasks = ps.table_population(c)
     n = n_stated = n_hold = 0
     for i, task in enumerate(tasks):
         rt = ps.runtime_outputs(task)
@@ -115,7 +115,7 @@ def test_one_drawn_case_per_family_still_holds(family):
     the stated errors with today's code. The full population: pytest -m slow
     (test_the_population_check_holds_when_rerun)."""
     c = read_table("population_check").columns
-    tasks = ps.population_tasks(_per_family(c), 32)
+    tasks = ps.table_population(c)
     # the fastest case of the family whose every stated output held when shipped
     rows = [i for i, t in enumerate(tasks) if t["family"] == family
             and all(c[f"holds_{k}"][i] != 0 for k in OUTPUTS)]
@@ -125,10 +125,6 @@ def test_one_drawn_case_per_family_still_holds(family):
         d, s = r[f"diff_{k}"], rt[f"stated_{k}"]
         if np.isfinite(d) and c[f"holds_{k}"][i] >= 0:
             assert np.isfinite(s) and d <= s, (family, k, d, s)
-
-
-def _per_family(c):
-    return int(c["family"].size // len(ps.FAMILIES))
 
 
 @pytest.mark.slow

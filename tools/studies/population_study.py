@@ -8,7 +8,8 @@ that grid -- the rollers of real bearings at the loads of their ratings -- and c
 per output, that the runtime states an error and that the stated error bounds the
 output's difference to a converged 3D reference.
 
-The population (seeded, ``--seed``; ``--per-family`` cases per family):
+The population (seeded, ``--seeds``, one draw per seed; ``--per-family`` cases per
+family and seed):
 
 - cylindrical roller bearings: roller diameter D_we 5-30 mm, L_we/D_we 0.8-1.5,
   D_we/D_pw 0.12-0.25, Z rollers at a pitch of 1.25 D_we;
@@ -153,12 +154,24 @@ def population_tasks(per_family=20, seed=32, profile=None):
             tilt = 0.0 if rng.uniform() < 1 / 3 else float(rng.uniform(0, MAX_TILT))
             mu = float(rng.uniform(0, MAX_FRICTION))
             tasks.append(dict(
-                key=f"P-{family}-{i}", family=family, profile=kind, profile_kw=kw,
+                key=f"P{seed}-{family}-{i}", seed=seed, family=family, profile=kind, profile_kw=kw,
                 radius=b["radius"], length=L, roller_diameter=b["roller_diameter"],
                 estar=ESTAR, force=roller_load(b, frac), load_fraction=frac,
                 rating=b["rating"], tilt=tilt, friction=mu, n_x=128, n_y=32,
                 tol=1e-7, check=False))
     return tasks
+
+
+def population(per_family=20, seeds=(32, 33)):
+    """The cases of every seed's draw, seed by seed (the table's row order)."""
+    return [t for seed in seeds for t in population_tasks(per_family, seed)]
+
+
+def table_population(columns):
+    """The cases of a population_check table's rows, from its ``seed`` and ``family``
+    columns."""
+    seeds = list(dict.fromkeys(int(v) for v in columns["seed"]))
+    return population(int(columns["family"].size // (len(FAMILIES) * len(seeds))), seeds)
 
 
 def build_profile(task):
@@ -287,7 +300,7 @@ def run_case(task):
 
 
 COLUMNS_UNITS = {
-    "family": "-", "profile": "-", "radius": "m", "roller_diameter": "m", "length": "m",
+    "seed": "-", "family": "-", "profile": "-", "radius": "m", "roller_diameter": "m", "length": "m",
     "l_over_d": "-", "force": "N", "load_fraction": "-", "rating": "N", "tilt": "rad",
     "friction": "-", "line_load_over_estar_d": "-", "edge": "-", "bem_edge": "-",
     "end_grids": "-",
@@ -308,7 +321,8 @@ def tabulate(tasks, results, runtime):
             # what the runtime withholds now (no number printed) is not an output
             if rt[k] is None or (isinstance(rt[k], float) and np.isnan(rt[k])):
                 r[f"diff_{k}"] = np.nan
-        row = dict(family=FAMILY_CODES[t["family"]], profile=PROFILE_CODES[t["profile"]],
+        row = dict(seed=t["seed"], family=FAMILY_CODES[t["family"]],
+                   profile=PROFILE_CODES[t["profile"]],
                    radius=t["radius"], roller_diameter=t["roller_diameter"],
                    length=t["length"], l_over_d=t["length"] / t["roller_diameter"],
                    force=t["force"], load_fraction=t["load_fraction"],
@@ -348,7 +362,10 @@ def summarise(col):
 def add_arguments(parser):
     parser.add_argument("--per-family", type=int, default=20,
                         help="cases per family (default 20: 60 cases)")
-    parser.add_argument("--seed", type=int, default=32, help="the draw's seed (32)")
+    parser.add_argument("--seeds", default="32,33",
+                        help="the draws' seeds, comma-separated (default 32,33: two "
+                             "independent populations; the stress study's relief set "
+                             "is drawn with seed 7)")
     parser.add_argument("--out", type=Path, default=REPO / "tables",
                         help="folder for population_check.csv (default tables/)")
     add_runner_arguments(parser)
@@ -357,7 +374,8 @@ def add_arguments(parser):
 def run(args):
     from linecontact.tables import read_table, write_table
 
-    tasks = population_tasks(args.per_family, args.seed)
+    seeds = [int(v) for v in args.seeds.split(",")]
+    tasks = population(args.per_family, seeds)
     t0 = time.perf_counter()
     results = run_study_from_args(run_case, tasks, args, desc="population check")
     wall = time.perf_counter() - t0
@@ -398,7 +416,8 @@ def run(args):
                   "bem_edge: the BEM's (either grid); end_grids: 1 where the depth, "
                   "moment, peak and edge flag come from the roller study's end grids "
                   "(a logarithmic profile's contact within two cells of a roller end)",
-        cases=f"{args.per_family} per family, seed {args.seed}: module docstring of "
+        cases=f"{args.per_family} per family and seed, seeds "
+              f"{', '.join(str(v) for v in seeds)}: module docstring of "
               "tools/studies/population_study.py",
         grid="BEM: the roller study's adapted window, 128 x 32 and 256 x 64 cells (a "
              "logarithmic profile's contact within two cells of an end: 4096 x 16 and "

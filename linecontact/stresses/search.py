@@ -56,6 +56,13 @@ _SHRINK = 2.5
 #: slices where p0 rises towards the end)
 _STRIDE_PARTS = 4
 _COARSE_SLICES = 1
+#: off the ends, how many best slices of each measure (by its score at the strip's
+#: optimum point) get the zoomed search: near a narrow pressure peak (an end relief's
+#: junction with the straight part) the best-scored slice is not always the one whose
+#: zoomed 3D worst is largest; with one, a cam follower's relief peak came out 8 %
+#: below the search below every slice, with two equal to it (tools/studies/
+#: stress_study.py's relief set)
+_TOP = 2
 #: p0's local maxima within this factor of the largest are candidates too
 _PEAK_MARGIN = 1.1
 #: where the contact reaches an end, each measure is also scored at these depths
@@ -428,10 +435,10 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     st = {}
     near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
     for name in names:
-        # the best two slices by their one point, each given the first (coarse)
-        # window below; the better goes on to the zooms
+        # the best slices by their one point (_TOP, or _COARSE_SLICES where the contact
+        # reaches an end), each given the zoomed search; the best result is the worst
         top = sorted(score[name], key=score[name].get,
-                     reverse=True)[:_COARSE_SLICES if wide else 1]
+                     reverse=True)[:_COARSE_SLICES if wide else _TOP]
         if every:
             top = sorted(score[name])
         # and the best of p0's largest +-2 (the former search's choice: off the ends

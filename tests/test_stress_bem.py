@@ -166,7 +166,8 @@ def test_long_strip_traction_reproduces_the_plane_strain_traction_field():
 def test_surface_closed_forms_equal_the_point_force_integrals_off_the_rectangle():
     """Off the loaded 1 x 0.5 rectangle the surface closed forms equal the integral of
     Boussinesq's and Cerruti's point-force stresses at z = 0 over it (regular there),
-    every component, to quadrature accuracy (1e-10)."""
+    every component, to quadrature accuracy (1e-10); a point on a line through an
+    edge is refused."""
     from tools.bem.stress import (cerruti_point_stresses, surface_pressure_stresses,
                                   surface_traction_stresses)
     for x, y in ((1.3, -0.4), (-0.7, 1.6), (0.2, 0.9)):
@@ -177,6 +178,9 @@ def test_surface_closed_forms_equal_the_point_force_integrals_off_the_rectangle(
                 q = dblquad(lambda yy, xx: point(x - xx, y - yy, 0.0, NU)[c],
                             -0.5, 0.5, -0.25, 0.25, epsabs=1e-12, epsrel=1e-10)[0]
                 assert float(s[c]) == pytest.approx(q, abs=1e-10), (x, y, c)
+    # on a line through an edge the surface field is singular: refused, not a nan
+    with pytest.raises(ValueError, match="edge"):
+        surface_traction_stresses(0.5, 3.0, 1.0, 0.5, NU)
 
 
 def test_surface_pressure_field_is_the_limit_of_loves_field():

@@ -178,6 +178,9 @@ def _stress(meta):
                     if "covered_end_relief_corner_radius_over_radius" in meta else None),
                 relief_fraction=(_range_field(meta, "covered_end_relief_fraction")
                                  if "covered_end_relief_fraction" in meta else None),
+                # optional: the friction above which the high-friction errors apply
+                high_friction_above=(float(meta["high_friction_above"])
+                                     if "high_friction_above" in meta else None),
                 errors=errs)
 
 
@@ -191,7 +194,9 @@ def stress_coverage():
         ``l_over_d``, ``line_load`` (q/(E* D)), ``tilt`` [rad], ``friction`` as
         (lo, hi); ``profiles`` (names); ``relief_corner`` (corner radius over the
         contact's effective radius) and ``relief_fraction`` (relief length over L) of
-        the end reliefs measured, as (lo, hi) or None; ``errors``: {field: {measure:
+        the end reliefs measured, as (lo, hi) or None; ``high_friction_above``: the
+        friction above which the ``error_3d_high_friction_*`` fields apply (or None);
+        ``errors``: {field: {measure:
         largest relative error}} for each ``error_*`` and ``slice_error_*`` field (a
         field ``<name>.<profile key>`` holds that profile's own errors). None if the
         table or a field is missing.

@@ -163,11 +163,18 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         outside.append(f"|tilt| = {th:.3g} rad (measured {lo:.3g}-{hi:.3g} rad)")
     edge = reaches_end(solution)
     key = _ERROR_KEYS[(bool(three_d), friction > 0, edge)]
+    high = cov.get("high_friction_above")
+    if high is not None and friction > high:
+        # the largest shear at or near the surface: its own class (measured to the
+        # table's largest friction)
+        key = key.replace("_friction_", "_high_friction_")
     # a profile measured apart (the end relief) has its own errors
     pkey = getattr(getattr(roller, "profile", None), "key", None)
     e = cov["errors"].get(f"{key}.{pkey}", cov["errors"].get(key))
     state = ("contact at (or within half a slice of) a roller end" if edge
-             else "contact off the ends") + (", with traction" if friction > 0 else "")
+             else "contact off the ends") + (
+        "" if friction <= 0 else ", with traction" if high is None or friction <= high
+        else f", with traction of friction above {high:g}")
     if e is None:
         outside.append(f"{state} (not measured for the {what})")
         return (f"{'; '.join(outside)}: the {what}' error against {where} is not "

@@ -31,7 +31,7 @@ steel on steel. The profile is drawn among a circular crown (the crown's end dro
 Johns-Gohar's (designed for the roller load at F_r = 0.3 C_r) and a straight roller with
 end relief (0.1-0.2 L at each end, tangent corner radius 20-100 mm); the tilt is 0 for
 one case in three, else uniform up to 3 mrad; the friction of the stresses uniform
-0-0.2 (the stress table's range; MAX_FRICTION).
+0-0.4 (the stress table's range; MAX_FRICTION).
 
 Per case, the outputs and their references:
 
@@ -76,10 +76,10 @@ PROFILE_KINDS = ("circular", "iso16281", "lundberg", "johns-gohar", "end-relief"
 PROFILE_CODES = {k: i + 1 for i, k in enumerate(PROFILE_KINDS)}
 LOAD_FRACTIONS = (0.02, 0.5)          #: F_r / C_r, log-uniform
 MAX_TILT = 3e-3                       #: [rad]
-#: the friction of the stresses: to 0.2, the range the stress table measures (at 0.4
-#: the largest shear reaches the surface, where the 3D reference's traction field is
-#: not yet resolved: tools/studies/stress_study.py, SURFACE_FRICTION)
-MAX_FRICTION = 0.2
+#: the friction of the stresses: to 0.4, the range the stress table measures (from
+#: 0.25 the largest shear may reach the surface, where the 3D reference is the exact
+#: surface field of its cells: tools/studies/stress_study.py, SURFACE_FRICTION)
+MAX_FRICTION = 0.4
 DESIGN_FRACTION = 0.3                 #: F_r / C_r of the Lundberg, Johns-Gohar design
 #: the outputs checked per case (roller outputs, then stress maxima)
 ROLLER_OUTPUTS = ("depth", "moment", "p_max")

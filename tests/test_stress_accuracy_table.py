@@ -28,13 +28,17 @@ def test_the_stated_stress_errors_are_the_tables_largest_bounds():
     assert relief.sum() >= 36 and (c["case_set"] == 2).sum() >= 36
     for m in MEASURES:
         b = np.abs(c[f"err_{m}"]) + np.abs(c[f"bem_change_{m}"])
-        tags = [f"mu{int(round(mu * 10))}" for mu in FRICTIONS]
+        tags = [f"mu{int(round(mu * 10))}" for mu in FRICTIONS if mu <= 0.2]
         bf = np.max([np.abs(c[f"err_{g}_{m}"]) + np.abs(c[f"bem_change_{g}_{m}"])
                      for g in tags], axis=0)
+        hf = np.max([np.abs(c[f"err_{g}_{m}"]) + np.abs(c[f"bem_change_{g}_{m}"])
+                     for g in ("mu2", "mu3", "mu4")], axis=0)
         for key, val, sel in (("error_3d_off_ends", b, ~edge),
                               ("error_3d_edge_loaded", b, edge),
                               ("error_3d_friction_off_ends", bf, ~edge),
-                              ("error_3d_friction_edge_loaded", bf, edge)):
+                              ("error_3d_friction_edge_loaded", bf, edge),
+                              ("error_3d_high_friction_off_ends", hf, ~edge),
+                              ("error_3d_high_friction_edge_loaded", hf, edge)):
             whole = MARGIN * val[sel & base].max()
             assert abs(_errors(meta, key)[m] / whole - 1) < 5e-3, (key, m)
             apart = max(whole, MARGIN * val[sel & relief].max(initial=0.0))
@@ -83,3 +87,23 @@ def test_the_stress_table_covers_the_rollers_users_bring():
     assert lo <= 1e-5 * (1 + 1e-6) and hi >= 3e-3 * (1 - 1e-6)
     assert float(meta["covered_tilt_rad"].split(",")[1]) >= 3e-3 * (1 - 1e-6)
     assert max(_errors(meta, "error_3d_off_ends").values()) < 0.015 * MARGIN
+
+
+def test_friction_above_the_split_gets_the_high_friction_errors():
+    """Above the table's high_friction_above (0.2; from 0.25 the largest shear may sit
+    at the surface) the runtime states the high-friction class (measured at 0.2, 0.3,
+    0.4), up to it the friction class, beyond the measured 0.4 none."""
+    from linecontact.accuracy import stress_coverage
+    from linecontact.profiles import CircularCrownProfile
+    from linecontact.roller import ProfiledRoller
+    from linecontact.stresses import roller_stresses
+
+    cov = stress_coverage()
+    assert cov["high_friction_above"] == 0.2 and cov["friction"] == (0.0, 0.4)
+    m = ProfiledRoller(5e-3, 10e-3, 115.385e9, CircularCrownProfile(10e-3, 0.5))
+    sol = m.at_force(3000.0)
+    for mu, key in ((0.2, "error_3d_friction_off_ends"),
+                    (0.3, "error_3d_high_friction_off_ends"),
+                    (0.4, "error_3d_high_friction_off_ends")):
+        assert roller_stresses(sol, mu, 0.3, roller=m).error == cov["errors"][key], mu
+    assert roller_stresses(sol, 0.41, 0.3, roller=m).error is None

@@ -8,8 +8,9 @@ below candidate slices (p0's largest and its neighbours, p0's other peaks; where
 contact reaches a roller end also spread slices, p0's local maxima and a climb along
 the roller). ``search="every slice"`` runs the same zoomed grid search below every
 loaded slice, so the difference is what the choice of slices misses. The rollers:
-the stress study's 36 (tools/studies/stress_study.py: five profiles at L = 14 mm and
-ISO 16281 at 30 mm, 100/800/2000 N/mm, tilt 0 and 2 mrad), three named edge-loaded
+the stress study's 106 (tools/studies/stress_study.py: the dense set, five profiles at
+L = 14 mm and ISO 16281 at 30 mm, 100/800/2000 N/mm, tilt 0 and 2 mrad; the wide set's
+27, L/D 0.5-12; the relief set's 36 drawn end reliefs), three named edge-loaded
 rollers (a circular crown at 35.8 kN and 1.86 mrad; Lundberg 25.4 kN, 1.2 mrad, 162
 slices; ISO 16281 60.5 kN, 1.76 mrad) and ``--random`` rollers whose contact reaches an
 end (the five profiles in turn, L 14 or 30 mm, 300-2500 N/mm log-uniform, tilt
@@ -36,10 +37,10 @@ def rollers(n_random, seed):
     from linecontact.roller import ProfiledRoller, roller_contact
     from linecontact.stresses import reaches_end
     from tools.studies import stress_study as ss
-    from tools.studies.roller_study import make_profile
+    from tools.studies.roller_study import make_profile, task_profile
     out = []
     for t in ss.study_tasks():
-        prof = make_profile(t["profile"], t["length"], t["radius"], t["estar"])
+        prof = task_profile(t)      # the task's own crown radius and end relief
         model = ProfiledRoller(t["radius"], t["length"], t["estar"], prof)
         out.append((t["key"], model.at_force(t["force"], tilt=t["tilt"]), model))
     out.append(("circular crown 35.8 kN 1.86 mrad",
@@ -101,7 +102,7 @@ def main(argv=None):
     lines = [f"bench_stress_search: linecontact {linecontact.__version__}, Python "
              f"{platform.python_version()}, numpy {np.__version__}, "
              f"{time.strftime('%Y-%m-%d')}",
-             f"rollers: 36 study, 3 named, {args.random} random reaching an end (seed "
+             f"rollers: {len(cases) - 3 - args.random} study, 3 named, {args.random} random reaching an end (seed "
              f"{args.seed}); {count[False]} with the contact off the ends, {count[True]} "
              f"at an end; mu 0, nu 0.3",
              "largest shortfall of the candidates' worst below the worst of a search "

@@ -22,6 +22,9 @@ def test_the_drawn_population_is_the_one_described():
     the same seed draws the same cases."""
     tasks = ps.population_tasks(20, 32)
     assert repr(tasks) == repr(ps.population_tasks(20, 32))
+    assert all(t["seed"] == 33 for t in ps.population_tasks(2, 33))
+    # the friction reaches the high-friction class (above 0.2) of the stress table
+    assert ps.MAX_FRICTION == 0.4 and max(t["friction"] for t in tasks) > 0.3
     span = {"cylindrical": (0.8, 1.5), "needle": (3.0, 10.0), "cam-follower": (0.5, 0.8)}
     for t in tasks:
         lo, hi = span[t["family"]]

@@ -289,8 +289,9 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     every local maximum of p0 with its neighbours, each measure's best then climbing
     along the roller to a local maximum of the scanned slices, and every measure
     scored at shallower points too, z = _SHALLOW_Z b, where the worst lies near an
-    end); the best slice of each measure and the best of p0's largest +-2 (the
-    former search's choice) each get a 5 x 5 grid in (y, z) around its better point
+    end); the _TOP best slices of each measure (_COARSE_SLICES where the contact
+    reaches an end) and the best of p0's largest +-2 (the former search's choice)
+    each get a 5 x 5 grid in (y, z) around its better point
     (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each); the
     best is the worst.
     Measures whose strip optimum lies within 0.1 b of the surface keep the strip's

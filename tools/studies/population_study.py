@@ -127,8 +127,10 @@ def roller_load(bearing, fraction):
 
 def population_tasks(per_family=20, seed=32, profile=None):
     """The drawn cases (picklable dicts with a unique 'key'): module docstring. With
-    `profile` (one of PROFILE_KINDS) every case gets that profile, its parameters drawn
-    as the population's (the same draws otherwise: the stress study's relief set)."""
+    `profile` (one of PROFILE_KINDS) every case gets that profile, drawn from the
+    population's distributions (another sequence than the unforced draw of the same
+    seed: each profile consumes its own number of draws; the stress study's relief
+    set)."""
     rng = np.random.default_rng(seed)
     tasks = []
     for family in FAMILIES:

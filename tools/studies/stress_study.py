@@ -110,10 +110,9 @@ SURFACE_FRICTION = 0.25
 MARGIN = 1.5
 #: the last full run's time (1 worker, niced, the shared 2-core VM), quoted in the header
 #: of a table rebuilt from its checkpoints
-STUDY_WALL = ("352 s for 48 cases + about 360 s for 12 more in an earlier, interrupted "
-              "run (1 worker, niced, load average 6-10), 2026-11-29; the 3 cases of "
-              "L/D 12 in 28 s, and those of q/(E* D) = 3e-6 in the run this line heads "
-              "(its wall time above)")
+STUDY_WALL = ("186 s for 106 cases, the relief set on 64 x 32 / 128 x 64 cells (1 worker, "
+              "load average 3-6 from other jobs on the 2-core VM), 2026-11-29; the "
+              "relief set's 36 on 128 x 32 / 256 x 64 cells 355 s")
 #: every k-th case of the roller study's wide set (tools.studies.roller_study.wide_tasks)
 WIDE_EVERY = 6
 #: the relief set: end-relief rollers drawn as the population check draws them

@@ -67,18 +67,16 @@ def test_the_shipped_population_check_is_consistent():
     assert f"{n_hold} of those" in t.meta["result"]
 
 
-@pytest.mark.xfail(strict=True, reason="issue 32's criterion is met for the share "
-                   "stated (297 of 300, 99.0 %) but not for the bound: 17 of the 297 "
-                   "exceed it: 12 stress maxima of straight rollers with end relief "
-                   "(corner radius 20-100 mm, relief 0.1-0.2 L; the studies sample one "
-                   "relief, 50 mm and 0.15 L) by up to 2.7x, and 5 peak pressures of "
-                   "ISO 16281 / Lundberg rollers the runtime holds off the ends where the "
-                   "3D BEM's contact reaches an end cell (a singular peak); measured "
-                   "shares asserted in test_the_population_shares_do_not_regress")
 def test_the_shipped_population_check_meets_issue_32():
     """Issue 32's criterion: at least 95 % of the outputs get a stated error and every
-    stated error bounds its difference to the 3D BEM."""
+    stated error bounds its difference to the 3D BEM (the table's two populations,
+    seeds 32 and 33, each alone too: the second is no sample of the first)."""
     c = read_table("population_check").columns
+    for seed in (32, 33):
+        rows = c["seed"] == seed
+        h = np.concatenate([c[f"holds_{k}"][rows] for k in OUTPUTS])
+        h = h[h > -2]
+        assert (h >= 0).mean() >= 0.95 and np.all(h[h >= 0] == 1), seed
     h = np.concatenate([c[f"holds_{k}"] for k in OUTPUTS])
     h = h[h > -2]
     assert (h >= 0).mean() >= 0.95 and np.all(h[h >= 0] == 1)

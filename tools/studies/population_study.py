@@ -87,8 +87,8 @@ STRESS_OUTPUTS = ("tresca", "von_mises", "orthogonal_shear")
 #: the last full run's time, quoted in the header of a table rebuilt from its
 #: checkpoints (a rebuild after the accuracy tables changed re-reads the stated errors
 #: only)
-STUDY_WALL = ("857 s for 120 cases with 1 worker (local dask cluster; other jobs kept "
-              "the 2-core VM at load average 3-6), 2026-11-29")
+STUDY_WALL = ("323 s for 120 cases with 1 worker (local dask cluster; the stress study "
+              "ran beside it on the 2-core VM), 2026-11-29")
 
 
 def _draw_bearing(rng, family):

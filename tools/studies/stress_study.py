@@ -111,9 +111,8 @@ SURFACE_FRICTION = 0.25
 MARGIN = 1.5
 #: the last full run's time (1 worker, niced, the shared 2-core VM), quoted in the header
 #: of a table rebuilt from its checkpoints
-STUDY_WALL = ("186 s for 106 cases, the relief set on 64 x 32 / 128 x 64 cells (1 worker, "
-              "load average 3-6 from other jobs on the 2-core VM), 2026-11-29; the "
-              "relief set's 36 on 128 x 32 / 256 x 64 cells 355 s")
+STUDY_WALL = ("202 s for 106 cases with 1 worker (local dask cluster; the population "
+              "check ran beside it on the 2-core VM), 2026-11-29")
 #: every k-th case of the roller study's wide set (tools.studies.roller_study.wide_tasks)
 WIDE_EVERY = 6
 #: the relief set: end-relief rollers drawn as the population check draws them

@@ -443,7 +443,8 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     near_k = [kk for kk in range(k - 2, k + 3) if kk in score[names[0]]]
     for name in names:
         # the best slices by their one point (_TOP, or _COARSE_SLICES where the contact
-        # reaches an end), each given the zoomed search; the best result is the worst
+        # reaches an end), each given the first grid (off the ends the _ZOOMED best of
+        # them then the zooms, at an end all); the best result is the worst
         top = sorted(score[name], key=score[name].get,
                      reverse=True)[:_COARSE_SLICES if wide else _TOP]
         if every:
@@ -470,7 +471,7 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
                 c["val"], c["by"], c["bz"] = float(v[i]), pts[key][1][i], pts[key][2][i]
             c["hy"] /= _SHRINK
             c["hz"] /= _SHRINK
-        if it == 0 and _ZOOMED is not None:
+        if it == 0 and _ZOOMED is not None and not wide and not every:
             # after the first (coarse) grid, the best _ZOOMED candidates go on
             st = {name: sorted(c, key=lambda d: d["val"], reverse=True)[:_ZOOMED]
                   for name, c in st.items()}

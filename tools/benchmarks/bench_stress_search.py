@@ -85,6 +85,7 @@ def main(argv=None):
     below = 0
     import linecontact.stresses.search as search
     former = {m: (0.0, "") for m in MEASURES}
+    above = 0.0
     for label, sol, model in cases:
         end = bool(sol.edge_loaded or reaches_end(sol))
         count[end] += 1
@@ -98,6 +99,7 @@ def main(argv=None):
         for m in MEASURES:
             r = e[m]["value"] / a[m]["value"] - 1
             below += r < -1e-12
+            above = max(above, -r)
             if r > short[end][m][0]:
                 short[end][m] = (r, f"{label}: slice {a[m]['slice']} against "
                                     f"{e[m]['slice']}")
@@ -136,7 +138,9 @@ def main(argv=None):
     for m in MEASURES:
         r, where = former[m]
         lines.append(f"    {m:18s} {r:8.3%}  {where}")
-    lines.append(f"every-slice results below the candidates' (must be none): {below}")
+    lines.append(f"every-slice results below the candidates' (the every-slice search "
+                 f"starts each slice's zooms from its own best point, so it is no strict "
+                 f"upper bound): {below}, by at most {above:.3%}")
     lines.append(f"CPU: candidates {t_cand:.2f} s, every slice {t_every:.1f} s "
                  f"({t_every / t_cand:.0f} times) over {len(cases)} rollers")
     text = "\n".join(lines) + "\n"

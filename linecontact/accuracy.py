@@ -171,6 +171,16 @@ def _stress(meta):
                 tilt=_range_field(meta, "covered_tilt_rad"),
                 friction=_range_field({"f": meta.get("covered_friction", "0, 0")}, "f"),
                 profiles=_names_field(meta, "covered_profiles"),
+                # optional (tables before issue 32's relief set lack them): the end
+                # relief's measured corner radii (over R) and relief lengths (over L)
+                relief_corner=(_range_field(
+                    meta, "covered_end_relief_corner_radius_over_radius")
+                    if "covered_end_relief_corner_radius_over_radius" in meta else None),
+                relief_fraction=(_range_field(meta, "covered_end_relief_fraction")
+                                 if "covered_end_relief_fraction" in meta else None),
+                # optional: the friction above which the high-friction errors apply
+                high_friction_above=(float(meta["high_friction_above"])
+                                     if "high_friction_above" in meta else None),
                 errors=errs)
 
 
@@ -182,9 +192,14 @@ def stress_coverage():
     -------
     dict or None
         ``l_over_d``, ``line_load`` (q/(E* D)), ``tilt`` [rad], ``friction`` as
-        (lo, hi); ``profiles`` (names); ``errors``: {field: {measure: largest relative
-        error}} for each ``error_*`` and ``slice_error_*`` field. None if the table or
-        a field is missing.
+        (lo, hi); ``profiles`` (names); ``relief_corner`` (corner radius over the
+        contact's effective radius) and ``relief_fraction`` (relief length over L) of
+        the end reliefs measured, as (lo, hi) or None; ``high_friction_above``: the
+        friction above which the ``error_3d_high_friction_*`` fields apply (or None);
+        ``errors``: {field: {measure:
+        largest relative error}} for each ``error_*`` and ``slice_error_*`` field (a
+        field ``<name>.<profile key>`` holds that profile's own errors). None if the
+        table or a field is missing.
 
     Examples
     --------

@@ -65,6 +65,36 @@ SUBCOMMANDS = {
 }
 
 
+#: runner options that change where and how a study runs, never its table: left out of
+#: the table's ``generated_by`` (the command that regenerates it), with their values
+_RUN_ONLY = {"--checkpoint": 1, "--scheduler": 1, "--workers": 1, "--connect-timeout": 1,
+             "--resume": 0, "--no-progress": 0, "--out": 1}
+
+
+def regenerating_command(argv):
+    """The command line that regenerates a table: `argv` without the runner options of
+    _RUN_ONLY (a checkpoint folder, a scheduler's address, the worker count, the
+    output folder: where and how it ran, not what it computed).
+
+    Examples
+    --------
+    >>> regenerating_command(["stress", "--n-x", "64", "--checkpoint", "/tmp/c",
+    ...                       "--resume", "--workers=1"])
+    'python -m tools.build_tables stress --n-x 64'
+    """
+    out, skip = [], 0
+    for a in argv:
+        if skip:
+            skip -= 1
+            continue
+        name = a.split("=", 1)[0]
+        if name in _RUN_ONLY:
+            skip = _RUN_ONLY[name] if "=" not in a else 0
+            continue
+        out.append(a)
+    return "python -m tools.build_tables " + " ".join(out)
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else list(argv)
     if not argv or argv[0] not in SUBCOMMANDS:
@@ -78,7 +108,7 @@ def main(argv=None):
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     module.add_arguments(parser)
     args = parser.parse_args(argv[1:])
-    args.command_line = "python -m tools.build_tables " + " ".join(argv)
+    args.command_line = regenerating_command(argv)
     from tools.studies.runner import StudyError
     try:
         return module.run(args) or 0

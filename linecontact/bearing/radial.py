@@ -5,6 +5,7 @@ tilted rollers) and :class:`BearingSolution`; the method is the package docstrin
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -54,6 +55,15 @@ LAMINAE = 20
 _TOP = 2.05
 
 
+@functools.lru_cache(maxsize=1)
+def _load_zone_rule():
+    """The load-zone integral's 400-point Gauss-Legendre rule on [0, 1], computed on
+    first use and kept (numpy's leggauss solves a 400 x 400 eigenproblem: tens of ms
+    per call, over a second on a loaded machine)."""
+    t, w = np.polynomial.legendre.leggauss(400)
+    return 0.5 * (t + 1.0), 0.5 * w
+
+
 def load_zone_integral(epsilon, exponent=10 / 9):
     r"""Stribeck's radial load-zone integral J_r(epsilon) (Harris and Kotzalas 2007).
 
@@ -98,9 +108,7 @@ def load_zone_integral(epsilon, exponent=10 / 9):
     # psi = arccos(1 - 2 eps t^2)... substitute cos psi = 1 - 2 eps s, s in [0, 1]:
     # dpsi = 2 eps ds / sin psi; sin psi = sqrt(4 eps s (1 - eps s)); s = t^2 removes
     # the 1/sqrt(s) singularity: ds = 2 t dt.
-    t, w = np.polynomial.legendre.leggauss(400)
-    t = 0.5 * (t + 1.0)
-    w = 0.5 * w
+    t, w = _load_zone_rule()
     s = t * t
     cos = 1.0 - 2.0 * eps * s
     integrand = (1.0 - s) ** n * cos * 2.0 * eps * 2.0 * t / np.sqrt(

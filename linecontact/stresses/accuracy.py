@@ -96,14 +96,41 @@ def reaches_end(solution):
     return bool(min(start - lo, hi - end) < 0.5 * h)
 
 
+def _relief_outside(roller, cov):
+    """What of an end relief lies outside the measured range (list of phrases): a
+    dub-off (no corner radius), the corner radius over the contact's effective radius,
+    the relief length over L (the table's covered_end_relief_* fields; none for a
+    table without them or another profile)."""
+    prof = roller.profile
+    if (getattr(prof, "key", None) != "end-relief" or cov.get("relief_corner") is None
+            or cov.get("relief_fraction") is None):
+        return []
+    if prof.corner_radius is None:
+        return ["an end relief without a corner radius (a dub-off; measured: corner "
+                "radii)"]
+    out = []
+    for name, v, (lo, hi) in (
+            ("corner radius over the contact's effective radius r/R",
+             prof.corner_radius / roller.radius, cov["relief_corner"]),
+            ("relief length over the roller length l/L",
+             prof.relief_length / roller.length, cov["relief_fraction"])):
+        if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5):
+            out.append(f"{name} = {v:.3g} (measured {lo:.3g}-{hi:.3g})")
+    return out
+
+
 def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
     """The measured error of the roller stresses for this solution and its note.
 
     Returns (note, error): error maps each measure to the largest |rt/3D - 1| of
-    tables/stress_accuracy.csv for this kind of case (3D-corrected or strips, with or
-    without friction, off the ends or edge loaded), None outside the measured range
-    (L/(2R), q/(E* 2R) with R the contact's effective radius, tilt, profile, friction),
-    which the note names."""
+    tables/stress_accuracy.csv for this kind of case (3D-corrected or strips; without
+    friction, with friction up to the table's ``high_friction_above`` or above it; off
+    the ends or edge loaded), the profile's own where the table measured it apart
+    (``<field>.<profile key>``: the end relief), the largest over every profile where
+    `roller` (so the profile) is not given; None outside the measured range (L/(2R),
+    q/(E* 2R) with R the contact's effective radius, tilt, profile, friction; an end
+    relief's corner radius over R and relief length over L, or a dub-off), which the
+    note names."""
     cov = _accuracy()
     where = "a 3D field below the 3D BEM pressure (tables/stress_accuracy.csv)"
     what = "3D-corrected stresses" if three_d else "slice (plane-strain) stresses"
@@ -125,6 +152,7 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:
             outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
+        outside += _relief_outside(roller, cov)
     method = getattr(solution, "method", "coupled slices")
     if method != "coupled slices":
         # the study solved every case by ProfiledRoller; another slice model's loads
@@ -140,9 +168,22 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         outside.append(f"|tilt| = {th:.3g} rad (measured {lo:.3g}-{hi:.3g} rad)")
     edge = reaches_end(solution)
     key = _ERROR_KEYS[(bool(three_d), friction > 0, edge)]
-    e = cov["errors"].get(key)
+    high = cov.get("high_friction_above")
+    if high is not None and friction > high:
+        # the largest shear at or near the surface: its own class (measured to the
+        # table's largest friction)
+        key = key.replace("_friction_", "_high_friction_")
+    # a profile measured apart (the end relief) has its own errors; without the model
+    # (its profile unknown) the largest of every profile's
+    pkey = getattr(getattr(roller, "profile", None), "key", None)
+    e = cov["errors"].get(f"{key}.{pkey}", cov["errors"].get(key))
+    if roller is None and e is not None:
+        fields = [v for k, v in cov["errors"].items() if k == key or k.startswith(key + ".")]
+        e = {m: max(f[m] for f in fields) for m in e}
     state = ("contact at (or within half a slice of) a roller end" if edge
-             else "contact off the ends") + (", with traction" if friction > 0 else "")
+             else "contact off the ends") + (
+        "" if friction <= 0 else ", with traction" if high is None or friction <= high
+        else f", with traction of friction above {high:g}")
     if e is None:
         outside.append(f"{state} (not measured for the {what})")
         return (f"{'; '.join(outside)}: the {what}' error against {where} is not "

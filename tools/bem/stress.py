@@ -47,6 +47,16 @@ no longer than z/2 near the field point, checked on Boussinesq's load against Lo
 closed form), convolved like the pressure's (:meth:`StressField.plane` with
 ``traction``).
 
+The surface z = 0: both loads in closed form (:func:`surface_pressure_stresses`,
+Love's corner functions in their limit z -> 0; :func:`surface_traction_stresses`,
+Cerruti's surface point-force stresses integrated over the rectangle by corner
+primitives), exact at the cell centres with the local terms (sigma_z = -p,
+tau_yz = -q in the loaded cell) and the principal values of the in-plane
+components; convolved like a depth plane (:meth:`StressField.surface`). Checked
+against the quadratures off the rectangle, against the limits z -> 0 of the depth
+planes, and, on a long strip, against McEwen's plane-strain surface values
+(tests/test_stress_bem.py).
+
 References
 ----------
 A. E. H. Love, "The stress produced in a semi-infinite solid by pressure on part of the
@@ -228,6 +238,144 @@ def traction_rectangle_stresses(x, y, z, dx, dy, poisson=0.3, direction="y"):
                 tau_xy=f["tau_xy"], tau_xz=f["tau_yz"], tau_yz=f["tau_xz"])
 
 
+def _edge_offsets(x, y, dx, dy):
+    """The offsets X, Y (4, ...) of the points from the rectangle's corners and the
+    corner signs, in the order of Love's sum (module docstring); refuses a point on
+    a line through an edge, where the surface field is singular (log) or undefined."""
+    a, b = 0.5 * float(dx), 0.5 * float(dy)
+    x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+    X = np.stack([x + a, x + a, x - a, x - a])
+    Y = np.stack([y + b, y - b, y + b, y - b])
+    if np.any(X == 0) or np.any(Y == 0):
+        raise ValueError("surface stresses: a field point lies on a line x = +-dx/2 or "
+                         "y = +-dy/2 through the rectangle's edges, where the surface "
+                         "field is singular; evaluate off those lines (e.g. at the "
+                         "centres of a grid of such cells)")
+    s = np.array([1.0, -1.0, -1.0, 1.0]).reshape((4,) + (1,) * x.ndim)
+    return X, Y, s, (np.abs(x) < a) & (np.abs(y) < b)
+
+
+def surface_pressure_stresses(x, y, dx, dy, poisson=0.3):
+    """Stresses on the surface z = 0 of a uniform unit pressure on a dx-by-dy
+    rectangle centred at 0 (Love 1929 at z = 0).
+
+    Love's corner functions (module docstring) have finite limits as z -> 0 wherever
+    the offsets X, Y from the corner are both non-zero, i.e. off the lines through
+    the rectangle's edges; the terms with a factor z vanish, and
+
+        d(psi1)/dz  : -(pi/2) sign(X) sign(Y)  (its corner sum: -2 pi inside, 0 outside)
+        d2(H1)/dx2  :  atan(Y/X)        d2(H1)/dy2 : atan(X/Y)      d2(H1)/dxdy : ln r
+
+    with r = sqrt(X^2 + Y^2), so that
+
+        sigma_x = [2 nu d(psi1)/dz - (1 - 2 nu) d2(H1)/dx2] / (2 pi),
+        sigma_y = [2 nu d(psi1)/dz - (1 - 2 nu) d2(H1)/dy2] / (2 pi),
+        sigma_z = d(psi1)/dz / (2 pi) = -1 inside, 0 outside,
+        tau_xy  = -(1 - 2 nu) d2(H1)/dxdy / (2 pi),  tau_xz = tau_yz = 0.
+
+    Inside, sigma_x + sigma_y = -(1 + 2 nu) (Johnson 1985, section 3.2: the local
+    term of Boussinesq's surface field; the rest, (1 - 2 nu)/(2 pi r^2) radial and
+    its negative hoop, integrates to the atan terms). At the centre of a long cell
+    (dx >> dy) sigma_x -> -2 nu, sigma_y -> -1: plane strain.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Field points relative to the rectangle's centre, off the lines x = +-dx/2,
+        y = +-dy/2 [m].
+    dx, dy : float
+        Rectangle sides [m].
+    poisson : float
+        Poisson's ratio [-].
+
+    Returns
+    -------
+    dict
+        Component name -> stress per unit pressure [-] (compression negative).
+    """
+    nu = float(poisson)
+    X, Y, s, inside = _edge_offsets(x, y, dx, dy)
+    k = 1.0 / (2.0 * np.pi)
+    pz = -2.0 * np.pi * inside
+    hxx = (s * np.arctan(Y / X)).sum(0)
+    hyy = (s * np.arctan(X / Y)).sum(0)
+    hxy = (s * 0.5 * np.log(X * X + Y * Y)).sum(0)
+    zero = np.zeros(pz.shape)
+    return dict(sigma_x=k * (2 * nu * pz - (1 - 2 * nu) * hxx),
+                sigma_y=k * (2 * nu * pz - (1 - 2 * nu) * hyy),
+                sigma_z=k * pz, tau_xy=-k * (1 - 2 * nu) * hxy, tau_xz=zero,
+                tau_yz=zero.copy())
+
+
+def surface_traction_stresses(x, y, dx, dy, poisson=0.3, direction="y"):
+    """Stresses on the surface z = 0 of a uniform unit tangential traction on a
+    dx-by-dy rectangle centred at 0, in closed form.
+
+    Cerruti's point force Q_x (:func:`cerruti_point_stresses`; Johnson 1985, section
+    3.3) at z = 0 (rho = r = sqrt(x^2 + y^2), rho + z = r) leaves on the surface
+
+        sigma_x = -[2 (1 - 2 nu) x/r^3 + 6 nu x^3/r^5] / (2 pi),
+        sigma_y = -6 nu x y^2 / (2 pi r^5),
+        tau_xy  = -[(1 - 2 nu) y/r^3 + 6 nu x^2 y/r^5] / (2 pi),
+
+    and sigma_z = tau_xz = tau_yz = 0 off the point. Over the rectangle each kernel
+    K is Love's signed corner sum of a primitive F with d2F/dXdY = K (X, Y the
+    offsets from a corner, r^2 = X^2 + Y^2; A = asinh(Y/|X|), B = asinh(X/|Y|), which
+    are ln(Y + r) and ln(X + r) less a function of one offset that the corner sum
+    cancels):
+
+        x/r^3 : -A,   x^3/r^5 : -(2 A + Y/r)/3,   x y^2/r^5 : -(A - Y/r)/3,
+        y/r^3 : -B,   x^2 y/r^5 : -(B - X/r)/3,
+
+    so that (the 1 - 2 nu terms combine)
+
+        sigma_x = sum [2 A + 2 nu Y/r] / (2 pi),   sigma_y = sum 2 nu [A - Y/r] / (2 pi),
+        tau_xy  = sum [B - 2 nu X/r] / (2 pi).
+
+    The kernels are odd (in x for sigma_x, sigma_y; in y for tau_xy) at every depth,
+    so a neighbourhood of the field point symmetric about it contributes nothing at
+    any z and the limit z -> 0 of the field inside the rectangle is this principal
+    value (0 at its centre); the local terms are those of the boundary condition:
+    tau_xz = -1 inside (the module's sign: Cerruti's tau_xz integrates to -Q_x over
+    a depth plane), sigma_z = tau_yz = 0 (their point kernels z^2 x/rho^5, x y z/rho^5
+    are odd as well). `direction` 'y' exchanges x and y (the traction in +y).
+
+    Parameters
+    ----------
+    x, y : array_like
+        Field points relative to the rectangle's centre, off the lines x = +-dx/2,
+        y = +-dy/2 [m].
+    dx, dy : float
+        Rectangle sides [m].
+    poisson : float
+        Poisson's ratio [-].
+    direction : {'x', 'y'}
+        The traction's direction.
+
+    Returns
+    -------
+    dict
+        Component name -> stress per unit traction [-] (tension positive).
+    """
+    if direction not in ("x", "y"):
+        raise ValueError(f"direction = {direction!r} is not 'x' or 'y'")
+    if direction == "y":
+        f = surface_traction_stresses(y, x, dy, dx, poisson, "x")
+        return dict(sigma_x=f["sigma_y"], sigma_y=f["sigma_x"], sigma_z=f["sigma_z"],
+                    tau_xy=f["tau_xy"], tau_xz=f["tau_yz"], tau_yz=f["tau_xz"])
+    nu = float(poisson)
+    X, Y, s, inside = _edge_offsets(x, y, dx, dy)
+    k = 1.0 / (2.0 * np.pi)
+    r = np.sqrt(X * X + Y * Y)
+    A = np.arcsinh(Y / np.abs(X))
+    B = np.arcsinh(X / np.abs(Y))
+    zero = np.zeros(inside.shape)
+    return dict(sigma_x=k * (s * (2 * A + 2 * nu * Y / r)).sum(0),
+                sigma_y=k * (s * 2 * nu * (A - Y / r)).sum(0),
+                sigma_z=zero, tau_xy=k * (s * (B - 2 * nu * X / r)).sum(0),
+                tau_xz=-1.0 * inside, tau_yz=zero.copy())
+
+
 def measures(f):
     """Tresca (max shear), von Mises and orthogonal shear |tau_yz| of a field dict
     (:func:`linecontact.stresses.stress_measures`, the measures' one home)."""
@@ -321,6 +469,40 @@ class StressField:
         if not keep:
             self._ops.pop(float(z), None)
             self._ops.pop(("t", float(z)), None)
+        return out if traction is None else (out, tout)
+
+    def surface_operators(self):
+        """The twelve convolution operators of the surface z = 0: the pressure's and
+        the traction's in +y (:func:`surface_pressure_stresses`,
+        :func:`surface_traction_stresses`: closed forms at every offset, the
+        cell-centre offsets lying off the cells' edge lines), kept for reuse."""
+        if "s" not in self._ops:
+            kp = surface_pressure_stresses(self._X, self._Y, self.dx, self.dy,
+                                           self.poisson)
+            kt = surface_traction_stresses(self._X, self._Y, self.dx, self.dy,
+                                           self.poisson, direction="y")
+            for key, k in (("s", kp), ("st", kt)):
+                self._ops[key] = {c: DCFFTOperator(*self.shape, self.dx, self.dy,
+                                                   backend=self.backend,
+                                                   workers=self.workers,
+                                                   kernel_wrapped=k[c])
+                                  for c in COMPONENTS}
+        return self._ops["s"], self._ops["st"]
+
+    def surface(self, pressure, traction=None, keep=False):
+        """Six stress components on the surface z = 0 at the cell centres below the
+        cell pressures [Pa], as :meth:`plane` (with `traction`, cell tractions in +y
+        [Pa]: a pair (pressure's, traction's)); exact for the piecewise-constant
+        cells, local terms included (sigma_z = -p, tau_yz = -q in the cell)."""
+        ops, tops = self.surface_operators()
+        phat = ops[COMPONENTS[0]].transform(np.asarray(pressure, dtype=float))
+        out = {c: ops[c].from_transform(phat) for c in COMPONENTS}
+        if traction is not None:
+            that = tops[COMPONENTS[0]].transform(np.asarray(traction, dtype=float))
+            tout = {c: tops[c].from_transform(that) for c in COMPONENTS}
+        if not keep:
+            self._ops.pop("s", None)
+            self._ops.pop("st", None)
         return out if traction is None else (out, tout)
 
     def maxima(self, pressure, depths):

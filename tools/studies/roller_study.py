@@ -151,9 +151,11 @@ FREE_TILT = ("offset circular crown", "asymmetric crown")
 CODES = {v: k for k, v in PROFILES.items()}
 
 
-def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR, crown_radius=CROWN_RADIUS):
+def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR, crown_radius=CROWN_RADIUS,
+                 relief=None):
     """The profile object (linecontact.profiles) of a study case, by name
-    (`crown_radius` [m]: the circular crown's)."""
+    (`crown_radius` [m]: the circular crown's; `relief`: the end relief's
+    ``relief_fraction`` (of L) and ``corner_radius`` [m], default RELIEF)."""
     from linecontact import profiles as lp
     if name == "circular crown":
         return lp.CircularCrownProfile(length, crown_radius=crown_radius)
@@ -165,8 +167,9 @@ def make_profile(name, length, radius=DIAMETER / 2, estar=ESTAR, crown_radius=CR
         return lp.JohnsGoharProfile(length, radius, estar,
                                     design_force=DESIGN_LINE_LOAD * length)
     if name == "straight with end relief":
-        return lp.EndReliefProfile(length, corner_radius=RELIEF["corner_radius"],
-                                   relief_length=RELIEF["relief_fraction"] * length)
+        rel = RELIEF if relief is None else relief
+        return lp.EndReliefProfile(length, corner_radius=rel["corner_radius"],
+                                   relief_length=rel["relief_fraction"] * length)
     if name == "offset circular crown":
         return lp.CircularCrownProfile(length, crown_radius=CROWN_RADIUS,
                                        offset=CROWN_OFFSET)
@@ -187,9 +190,10 @@ def wide_crown_radius(length):
 
 
 def task_profile(task):
-    """The profile object of a task dict (its crown radius where it carries one)."""
+    """The profile object of a task dict (its crown radius and end relief where it
+    carries them)."""
     return make_profile(task["profile"], task["length"], task["radius"], task["estar"],
-                        task.get("crown_radius", CROWN_RADIUS))
+                        task.get("crown_radius", CROWN_RADIUS), task.get("relief"))
 
 
 def wide_tasks(n_x=128, n_y=32, tol=1e-7, quick=False):

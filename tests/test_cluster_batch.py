@@ -146,7 +146,7 @@ def test_frames_with_a_client(tmp_path, scheduler):
 
 def test_dask_dataframe_of_cases(tmp_path, scheduler):
     """A dask DataFrame of cases is evaluated on the current client: the serial frame
-    of its rows."""
+    of its rows, dtypes included (dask's pyarrow strings back to pandas' own)."""
     pytest.importorskip("dask.dataframe")    # needs pyarrow
     import dask.dataframe as dd
     from dask.distributed import Client

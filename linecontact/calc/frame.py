@@ -97,6 +97,13 @@ def _on_client(cases, client, func):
                                "create one first") from None
     if hasattr(cases, "npartitions"):
         cases = client.compute(cases).result()
+        # dask keeps text as pyarrow strings with pd.NA (its "dataframe.convert-string"
+        # setting): back to pandas' own text dtype, so that the result equals the one
+        # of the same rows as a pandas DataFrame, dtypes included
+        import pandas as pd
+        text = {c: "str" for c, t in cases.dtypes.items() if isinstance(t, pd.StringDtype)}
+        if text:
+            cases = cases.astype(text)
     return cases, client
 
 

@@ -61,7 +61,9 @@ def _load_zone_rule():
     first use and kept (numpy's leggauss solves a 400 x 400 eigenproblem: tens of ms
     per call, over a second on a loaded machine)."""
     t, w = np.polynomial.legendre.leggauss(400)
-    return 0.5 * (t + 1.0), 0.5 * w
+    t, w = 0.5 * (t + 1.0), 0.5 * w
+    t.flags.writeable = w.flags.writeable = False      # shared by every call
+    return t, w
 
 
 def load_zone_integral(epsilon, exponent=10 / 9):

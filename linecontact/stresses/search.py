@@ -63,9 +63,10 @@ _COARSE_SLICES = 1
 #: the straight part) the best-scored slice is not always the one whose 3D worst is
 #: largest. Over the 68 rollers off the ends of tools/benchmarks/bench_stress_search.py
 #: (the stress study's 106 with the relief set's drawn end reliefs) the largest
-#: shortfall below the search under every slice was 8.2 % with one slice searched,
-#: 5.2 % with two, 0.042 % with every candidate's coarse grid and the best one zoomed
-#: (0.007 % with every candidate zoomed), at 1.45 times one slice's search (2.2 times)
+#: shortfall below the search under every slice was 8.216 % with the former choice
+#: (the best-scored slice and the best of p0's largest +-2 zoomed) and 0.042 % with
+#: every candidate's first grid and the best zoomed
+#: (tools/benchmarks/results/stress_search.txt)
 _TOP = None
 _ZOOMED = 1
 #: p0's local maxima within this factor of the largest are candidates too
@@ -296,10 +297,10 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
     scored at shallower points too, z = _SHALLOW_Z b, where the worst lies near an
     end); each measure's candidate slices (the _TOP best, all by default, of which
     the _ZOOMED best after the first grid go on to the zooms; _COARSE_SLICES where
-    the contact reaches an end) and the best of p0's largest +-2 (the former search's choice)
-    each get a 5 x 5 grid in (y, z) around its better point
-    (+-0.4 b, +-0.3 b), then three zooms of a 3 x 3 grid (window / 2.5 each); the
-    best is the worst.
+    the contact reaches an end) and the best of p0's largest +-2 (the former search's
+    choice) each get a 5 x 5 grid in (y, z) around its better point (+-0.4 b, +-0.3
+    b), then (off the ends the _ZOOMED best of them after that grid) three zooms of a
+    3 x 3 grid (window / 2.5 each); the best is the worst.
     Measures whose strip optimum lies within 0.1 b of the surface keep the strip's
     value (None here).
 
@@ -449,9 +450,11 @@ def _worst_3d(x, b, p0, mu, nu, m, wide=False, every=False):
                      reverse=True)[:_COARSE_SLICES if wide else _TOP]
         if every:
             top = sorted(score[name])
-        # and the best of p0's largest +-2 (the former search's choice: off the ends
-        # the result is never below it; at an end its zooms may start from a
-        # shallower point and end up to ~0.7 % below the former search's)
+        # and the best of p0's largest +-2 (the former search's choice; at an end its
+        # zooms may start from a shallower point and end up to ~0.7 % below the
+        # former search's; off the ends, where only the best after the first grid
+        # is zoomed, it was never below the former choice over bench_stress_search's
+        # 68 rollers, though that is not guaranteed)
         kk = max(near_k, key=score[name].get)
         top += [kk] if kk not in top else []
         st[name] = [dict(k=kk, val=score[name][kk], by=start[name][kk][0],

@@ -4,7 +4,8 @@ processes started separately on 127.0.0.1; wall times, and whether each cluster 
 output equals the serial one byte for byte.
 
     python -m tools.benchmarks.bench_cluster_batch [--calc-rows 10000]
-        [--bearing-rows 1000] [--workers 1,2] [--out tools/benchmarks/results/cluster_batch.txt]
+        [--bearing-rows 1000] [--workers 1,2] [--no-serial]
+        [--out tools/benchmarks/results/cluster_batch.txt]
 
 Wall time is what a batch costs its user; on a shared machine it moves with the load
 (printed: the load average before and after, from /proc/loadavg), so the CPU time of
@@ -151,9 +152,11 @@ def main(argv=None):
                          "hours): no byte-for-byte comparison, the output's rows counted")
     a = ap.parse_args(argv)
     counts = [int(k) for k in a.workers.split(",")]
-    lines = [f"# cluster_batch: wall time of a batch serial and on a dask scheduler with "
-             f"k worker processes (1 thread each), all on this machine, 127.0.0.1; "
-             f"'same' = the output equals the serial one byte for byte",
+    lines = [f"# cluster_batch: wall time of a batch {'serial and ' if a.serial else ''}"
+             f"on a dask scheduler with k worker processes (1 thread each), all on this "
+             f"machine, 127.0.0.1; "
+             + ("'same' = the output equals the serial one byte for byte" if a.serial else
+                "no serial run (--no-serial): the output's lines counted"),
              "# command: python -m tools.benchmarks.bench_cluster_batch "
              + " ".join(argv if argv is not None else sys.argv[1:]),
              f"# {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "

@@ -10,7 +10,7 @@ the roller). ``search="every slice"`` runs the same zoomed grid search below eve
 loaded slice, so the difference is what the choice of slices misses. The rollers:
 the stress study's 106 (tools/studies/stress_study.py: the dense set, five profiles at
 L = 14 mm and ISO 16281 at 30 mm, 100/800/2000 N/mm, tilt 0 and 2 mrad; the wide set's
-27, L/D 0.5-12; the relief set's 36 drawn end reliefs), three named edge-loaded
+34, L/D 0.5-12; the relief set's 36 drawn end reliefs), three named edge-loaded
 rollers (a circular crown at 35.8 kN and 1.86 mrad; Lundberg 25.4 kN, 1.2 mrad, 162
 slices; ISO 16281 60.5 kN, 1.76 mrad) and ``--random`` rollers whose contact reaches an
 end (the five profiles in turn, L 14 or 30 mm, 300-2500 N/mm log-uniform, tilt

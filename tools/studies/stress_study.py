@@ -39,14 +39,15 @@ relief, drawn as tools/studies/population_study.py draws the rollers of cylindri
 and needle roller bearings and cam followers at 2-50 % of their ratings, seed 7,
 RELIEF_SET): 36 cases. The end relief's stated errors are apart (``error_*.end-relief``:
 the pressure's local peak at the junction of the straight part and the corner
-radius and the 3D correction below it are 2-6 % off on cam-follower rings whose
-corner radius is about their own radius, where the other profiles are within 1 %). ``--quick``: 6 dense, 4 wide
+radius is narrow: on cam-follower rings whose corner radius is about their own radius
+the reference changes by up to 2.8 % between its grids and the orthogonal shear with
+friction is up to 6 % high, where the other profiles' bounds are within 1.2 %). ``--quick``: 6 dense, 4 wide
 and 3 relief. Friction to 0.4 (FRICTIONS): from mu = 0.25 the largest shear may sit at
 the surface, where the reference is the exact surface field of its cells
 (tools.bem.stress.StressField.surface, SURFACE_FRICTION); the stated errors above
 mu = 0.2 are a class of their own (HIGH_FRICTION_ABOVE).
 
-Budget: see the table's ``wall_time`` header (run niced, 2 processes).
+Budget: see the table's ``wall_time`` header (1 worker process).
 """
 from __future__ import annotations
 
@@ -109,7 +110,7 @@ SURFACE_FRICTION = 0.25
 #: are the largest bound over the cases times this margin (the roller study's MARGIN:
 #: the cases sample the range; the population check tests them off the grid)
 MARGIN = 1.5
-#: the last full run's time (1 worker, niced, the shared 2-core VM), quoted in the header
+#: the last full run's time (1 worker, the shared 2-core VM), quoted in the header
 #: of a table rebuilt from its checkpoints
 STUDY_WALL = ("209 s for 106 cases with 1 worker (local dask cluster; the population "
               "check ran beside it on the 2-core VM), 2026-11-29")
@@ -127,8 +128,9 @@ RELIEF_SET = dict(per_family=12, seed=7)
 RELIEF_GRID = (128, 32)
 #: the profile whose stress errors are stated apart (error_*.end-relief fields): at the
 #: junction of the straight part and its corner radius the pressure has a narrow local
-#: peak, below which the 3D-corrected stresses are 2-6 % off on the relief set's
-#: cam-follower rings (the smooth profiles: within 1 %)
+#: peak: on the relief set's cam-follower rings the reference changes by up to 2.8 %
+#: between its grids and the orthogonal shear with friction is up to 6 % high (the
+#: other profiles' bounds: within 1.2 %)
 APART = "end-relief"
 
 

@@ -437,9 +437,8 @@ def run(args):
                f"stated error; {s['n_hold']} of those ({s['share_hold']:.1%}) hold "
                f"(diff <= stated); by output: {by}",
         outside=("; ".join(notes_out) if notes_out else "none"),
-        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers)
-        + (f"; the study's measured wall time: {STUDY_WALL}"
-           if any(r.get("resumed") for r in results) else ""),
+        wall_time=wall_time_line(wall, results, "cases", args.scheduler, args.workers,
+                                 measured=STUDY_WALL),
     )
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "population_check.csv"

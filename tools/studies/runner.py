@@ -548,11 +548,12 @@ def _run_on_client(func, todo, scheduler, workers, checkpoint, done, bar,
             cluster.close()
 
 
-def wall_time_line(wall, results, what, scheduler=None, workers=None):
+def wall_time_line(wall, results, what, scheduler=None, workers=None, measured=None):
     """The ``wall_time`` header line of a study's table, the same in every table:
     ``'W s for N WHAT with P processes (local dask cluster)'`` or ``'... on the dask
     cluster at ADDRESS'``, and how many results came from the checkpoints of an earlier
-    run (their time is not in W).
+    run (their time is not in W), then, if any did, `measured`: the study's last full
+    run's wall time as its module records it.
 
     >>> wall_time_line(12.3, [{}, {}], "depths", workers=2)
     '12 s for 2 depths with 2 processes (local dask cluster)'
@@ -567,6 +568,8 @@ def wall_time_line(wall, results, what, scheduler=None, workers=None):
     if resumed:
         line += (f"; {resumed} of them resumed from an earlier run's checkpoints "
                  "(not in this wall time)")
+        if measured:
+            line += f"; the study's measured wall time: {measured}"
     return line
 
 

@@ -96,6 +96,12 @@ def reaches_end(solution):
     return bool(min(start - lo, hi - end) < 0.5 * h)
 
 
+def _measured(value, lo, hi):
+    """Whether `value` lies in the measured range [lo, hi], with a relative margin of
+    1e-5 for the table's rounded bounds."""
+    return lo * (1 - 1e-5) <= value <= hi * (1 + 1e-5)
+
+
 def _relief_outside(roller, cov):
     """What of an end relief lies outside the measured range (list of phrases): a
     dub-off (no corner radius), the corner radius over the contact's effective radius,
@@ -114,7 +120,7 @@ def _relief_outside(roller, cov):
              prof.corner_radius / roller.radius, cov["relief_corner"]),
             ("relief length over the roller length l/L",
              prof.relief_length / roller.length, cov["relief_fraction"])):
-        if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5):
+        if not _measured(v, lo, hi):
             out.append(f"{name} = {v:.3g} (measured {lo:.3g}-{hi:.3g})")
     return out
 
@@ -148,7 +154,7 @@ def stress_accuracy(solution, friction=0.0, roller=None, three_d=True):
         checks = [(ld, roller.length / D, cov["l_over_d"]),
                   (f"mean line load q/(E* 2R) = {qn:.2g}", qn, cov["line_load"])]
         outside += [f"{n} (measured {lo:.2g}-{hi:.2g})" for n, v, (lo, hi)
-                    in checks if not lo * (1 - 1e-5) <= v <= hi * (1 + 1e-5)]
+                    in checks if not _measured(v, lo, hi)]
         key = getattr(roller.profile, "key", None)
         if key not in cov["profiles"]:
             outside.append(f"profile '{key}' (measured: {', '.join(cov['profiles'])})")
